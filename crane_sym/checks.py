@@ -1,0 +1,153 @@
+"""The three checks behind every verdict, in the order they run.
+
+1. ``symbolic``: the printed and the derived relation are the same, i.e. the
+   difference of their residuals simplifies to zero, or their ratio simplifies
+   to a nonzero factor free of the unknowns (same equation, rearranged).
+2. ``numeric``: the same question at seeded random points drawn from the
+   symbols' physical ranges, in mpmath at ``dps`` digits. Unknowns (time,
+   coordinates and their derivatives, defined quantities) are drawn twice per
+   point: two equivalent relations have one residual ratio at both draws.
+3. ``dimension``: every term of the printed relation has one dimension.
+
+Each returns a ``CheckOutcome`` whose ``status`` is ``pass``, ``fail`` or
+``inconclusive``; a failing outcome says what differs.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Iterable
+
+import mpmath
+import numpy as np
+import sympy as sp
+
+from .dimensions import check_equation, vector
+from .symbols import COORDINATE, DEFINED, TIME, SymbolTable
+
+PASS, FAIL, INCONCLUSIVE = "pass", "fail", "inconclusive"
+
+
+@dataclass(frozen=True)
+class CheckOutcome:
+    """Result of one check: which, how it came out, and what it saw."""
+
+    method: str
+    status: str
+    detail: str
+
+
+def residual(relation: sp.Eq) -> sp.Expr:
+    """``lhs - rhs`` of a relation."""
+    return relation.lhs - relation.rhs
+
+
+def _frozen(table: SymbolTable, exprs: Iterable[sp.Expr]) -> dict[sp.Basic, sp.Symbol]:
+    """Plain symbols for every coordinate x(t) and derivative in ``exprs``,
+    highest derivative first so substitution does not split them."""
+    found: set[sp.Basic] = set()
+    for expr in exprs:
+        found |= expr.atoms(sp.Derivative)
+        found |= {f for f in expr.atoms(sp.Function) if f in table}
+    ordered = sorted(found, key=lambda e: (-sp.count_ops(e) - len(e.args), sp.srepr(e)))
+    return {e: sp.Dummy(f"frz{i}", real=True) for i, e in enumerate(ordered)}
+
+
+def unknowns_of(table: SymbolTable) -> set[sp.Basic]:
+    """Symbols that are not data: time, coordinates, defined quantities."""
+    return {e.expr for e in table.with_role(TIME, COORDINATE, DEFINED)}
+
+
+def symbolic_equivalence(printed: sp.Eq, derived: sp.Eq,
+                         table: SymbolTable) -> CheckOutcome:
+    """Decide by simplification whether two relations are the same equation."""
+    rp, rd = residual(printed), residual(derived)
+    if sp.simplify(rp - rd) == 0:
+        return CheckOutcome("symbolic", PASS, "printed − derived simplifies to 0")
+    if sp.simplify(rp + rd) == 0:
+        return CheckOutcome("symbolic", PASS,
+                            "the same equation with its sides exchanged")
+    frozen = _frozen(table, (rp, rd))
+    ratio = sp.simplify(sp.cancel((rp / rd).xreplace(frozen)))
+    unknown = unknowns_of(table) | set(frozen.values())
+    if ratio.free_symbols.isdisjoint(unknown) and ratio.is_zero is False:
+        return CheckOutcome(
+            "symbolic", PASS,
+            f"the same equation multiplied by {sp.sstr(ratio)}")
+    return CheckOutcome("symbolic", INCONCLUSIVE,
+                        "simplification did not reduce the difference to 0")
+
+
+def _draw(entry, rng: np.random.Generator) -> float:
+    lo, hi = entry.sample_range
+    value = float(np.exp(rng.uniform(np.log(lo), np.log(hi))))
+    if entry.sign == "real" and rng.random() < 0.5:
+        value = -value
+    return value
+
+
+def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
+                        *, points: int = 6, dps: int = 30, seed: int = 2024,
+                        tol: float = 1e-20) -> CheckOutcome:
+    """Compare two relations at seeded physical points in mpmath."""
+    rp, rd = residual(printed), residual(derived)
+    frozen = _frozen(table, (rp, rd))
+    rp, rd = rp.xreplace(frozen), rd.xreplace(frozen)
+    unknown = [s for s in sorted(unknowns_of(table) | set(frozen.values()), key=str)
+               if s in rp.free_symbols | rd.free_symbols]
+    params = [e for e in table if e.expr in (rp.free_symbols | rd.free_symbols)
+              and e.expr not in unknown]
+    stray = (rp.free_symbols | rd.free_symbols) - set(unknown) - {e.expr for e in params}
+    if stray:
+        raise ValueError(f"symbols {sorted(map(str, stray))} are not in the symbol table")
+    args = [e.expr for e in params] + unknown
+    f_p = sp.lambdify(args, rp, modules="mpmath")
+    f_d = sp.lambdify(args, rd, modules="mpmath")
+    rng = np.random.default_rng(seed)
+    unknown_entries = {e.expr: e for e in table}
+    worst = mpmath.mpf(0)
+    with mpmath.workdps(dps):
+        for _ in range(points):
+            pvals = [mpmath.mpf(_draw(e, rng)) for e in params]
+            ratios = []
+            for _draw_no in range(2):
+                uvals = [mpmath.mpf(_draw(unknown_entries[u], rng)
+                                    if u in unknown_entries else rng.uniform(0.3, 3.0))
+                         for u in unknown]
+                a, b = f_p(*pvals, *uvals), f_d(*pvals, *uvals)
+                if b == 0:
+                    continue
+                ratios.append(a / b)
+            if len(ratios) < 2:
+                continue
+            r0, r1 = ratios
+            dev = abs(r0 - r1) / max(abs(r0), abs(r1), mpmath.mpf(10) ** -dps)
+            if r0 == 0 or dev > tol:
+                at = ", ".join(f"{e.name}={mpmath.nstr(v, 6)}" for e, v in zip(params, pvals))
+                if printed.lhs == derived.lhs:
+                    f_pv = sp.lambdify(args, printed.rhs.xreplace(frozen), modules="mpmath")
+                    f_dv = sp.lambdify(args, derived.rhs.xreplace(frozen), modules="mpmath")
+                    return CheckOutcome(
+                        "numeric", FAIL,
+                        f"at {at} the printed right-hand side is "
+                        f"{mpmath.nstr(f_pv(*pvals, *uvals), 8)}, the derived one "
+                        f"{mpmath.nstr(f_dv(*pvals, *uvals), 8)}")
+                return CheckOutcome(
+                    "numeric", FAIL,
+                    f"at {at} the printed/derived residual ratio is "
+                    f"{mpmath.nstr(r0, 8)} for one draw of the unknowns and "
+                    f"{mpmath.nstr(r1, 8)} for another: not the same relation")
+            worst = max(worst, dev)
+    return CheckOutcome(
+        "numeric", PASS,
+        f"same relation at {points} seeded points ({dps} digits), "
+        f"max deviation of the residual ratio {mpmath.nstr(worst, 2)}")
+
+
+def dimension_consistency(relation: sp.Eq, table: SymbolTable) -> CheckOutcome:
+    """Every term of ``relation``, as printed, has one dimension."""
+    dims = {k: vector(v) for k, v in table.dimensions().items()}
+    report = check_equation(relation.lhs, relation.rhs, dims)
+    if report.consistent:
+        return CheckOutcome("dimension", PASS, report.message)
+    offending = "; ".join(report.offending) or report.message
+    return CheckOutcome("dimension", FAIL, f"inconsistent: {offending}")

@@ -1,0 +1,120 @@
+"""The ``crane-sym`` command line."""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+from typing import Sequence
+
+from . import registry
+
+
+def _ids(names: Sequence[str]) -> list[str]:
+    return [registry.resolve(n) for n in names] if names else registry.ids()
+
+
+def cmd_list(args: argparse.Namespace) -> int:
+    rows = [{"id": i, "paper": registry.module(i).PAPER, "title": registry.module(i).TITLE}
+            for i in registry.ids()]
+    if args.format == "json":
+        print(json.dumps(rows, indent=2, ensure_ascii=False))
+    else:
+        for row in rows:
+            print(f"{row['id']:<18} {row['paper']:<28} {row['title']}")
+    return 0
+
+
+def cmd_audit(args: argparse.Namespace) -> int:
+    from .audit import audit
+    from .report import FORMATS
+    records, timings = [], []
+    for i in _ids(args.ids):
+        start = time.perf_counter()
+        d = registry.get(i)
+        built = time.perf_counter()
+        records += audit(d)
+        timings.append((i, built - start, time.perf_counter() - built))
+    print(FORMATS[args.format](records))
+    if args.profile:
+        for i, b, a in timings:
+            print(f"{i}: build {b:.2f} s, audit {a:.2f} s", file=sys.stderr)
+    return 0
+
+
+def cmd_walkthrough(args: argparse.Namespace) -> int:
+    from .walkthrough import walkthrough
+    text = walkthrough(registry.resolve(args.id))
+    if args.output:
+        Path(args.output).write_text(text, encoding="utf-8")
+        print(f"wrote {args.output}")
+    else:
+        print(text)
+    return 0
+
+
+def cmd_generate(args: argparse.Namespace) -> int:
+    from . import codegen
+    directory = Path(args.out) if args.out else codegen.default_directory()
+    files = codegen.rendered([registry.get(i) for i in registry.ids()])
+    if args.check:
+        bad = codegen.stale(files, directory)
+        for name in bad:
+            print(f"stale: {directory / name} differs from what the derivations produce")
+        if bad:
+            print("run `crane-sym generate` and commit generated/", file=sys.stderr)
+            return 1
+        print(f"generated/ is up to date ({len(files)} files in {directory})")
+        return 0
+    for path in codegen.write(files, directory):
+        print(f"wrote {path}")
+    return 0
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    from .scenes import load_scene, run_scene
+    scene = load_scene(args.scene)
+    report, figure = run_scene(scene, Path(args.out))
+    print(f"scene {scene.name}: {scene.title}")
+    for line in report.lines:
+        print(f"  {line}")
+    print(f"plot written to {figure}")
+    return 0
+
+
+def parser() -> argparse.ArgumentParser:
+    """The argument parser (exposed for documentation and tests)."""
+    top = argparse.ArgumentParser(prog="crane-sym", description=__doc__)
+    sub = top.add_subparsers(dest="command", required=True)
+    p = sub.add_parser("list", help="registered derivations")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.set_defaults(func=cmd_list)
+    p = sub.add_parser("audit", help="verdict on every published formula")
+    p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")
+    p.add_argument("--format", choices=("table", "json", "markdown"), default="table")
+    p.add_argument("--profile", action="store_true", help="time per derivation on stderr")
+    p.set_defaults(func=cmd_audit)
+    p = sub.add_parser("walkthrough", help="step-by-step derivation as Markdown")
+    p.add_argument("id")
+    p.add_argument("-o", "--output", help="write to this file instead of stdout")
+    p.set_defaults(func=cmd_walkthrough)
+    p = sub.add_parser("generate", help="write generated/ (or --check it)")
+    p.add_argument("--check", action="store_true", help="exit 1 if generated/ is stale")
+    p.add_argument("--out", help="folder to write to (default: the package's generated/)")
+    p.set_defaults(func=cmd_generate)
+    p = sub.add_parser("run", help="run a scene: print its results, write its plot")
+    p.add_argument("scene", help="scene name or path to a scene TOML file")
+    p.add_argument("--out", default=".", help="folder for the plot (default: .)")
+    p.set_defaults(func=cmd_run)
+    return top
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    args = parser().parse_args(argv)
+    try:
+        return args.func(args)
+    except (KeyError, ValueError) as err:
+        message = err.args[0] if isinstance(err, KeyError) and err.args else err
+        print(f"crane-sym: error: {message}", file=sys.stderr)
+        return 2

@@ -1,0 +1,134 @@
+"""The derivation model: steps tied to equation numbers, outputs for codegen.
+
+A derivation is built from physics by a module in ``crane_sym.derivations``;
+this module only holds the data types, so every paper shares one shape.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Sequence
+
+import sympy as sp
+
+from .published import PublishedFormula
+from .symbols import SymbolTable
+
+
+@dataclass(frozen=True)
+class Step:
+    """One step of a derivation.
+
+    Parameters
+    ----------
+    label : str
+        The paper's equation number as printed, e.g. ``"(4)"``; for a step the
+        paper does not number, a short name such as ``"rigid limit"``.
+    statement : sympy.Eq
+        What the step establishes.
+    how : str
+        How it was obtained, in one sentence.
+    why : str
+        Why the step is taken (for the walkthrough); optional.
+    title : str
+        A short heading for the walkthrough.
+    """
+
+    label: str
+    statement: sp.Eq
+    how: str
+    why: str = ""
+    title: str = ""
+
+    @property
+    def numbered(self) -> bool:
+        """True when the label is one of the paper's equation numbers."""
+        return self.label.startswith("(")
+
+
+@dataclass(frozen=True)
+class Output:
+    """A derived quantity to emit as a generated NumPy function.
+
+    ``args`` fixes the argument order of the generated function; every free
+    symbol of ``expr`` must be among them.
+    """
+
+    name: str
+    expr: sp.Expr
+    args: tuple[sp.Symbol, ...]
+    labels: tuple[str, ...]
+    summary: str
+    unit: str
+
+    def __post_init__(self) -> None:
+        missing = sorted(str(s) for s in self.expr.free_symbols - set(self.args))
+        if missing:
+            raise ValueError(
+                f"output {self.name}: free symbols {missing} are not arguments "
+                f"{[str(a) for a in self.args]}")
+
+
+@dataclass
+class Derivation:
+    """A paper rebuilt from its equations of motion.
+
+    Attributes
+    ----------
+    id : str
+        Registry id, also the name of the generated module.
+    paper : str
+        File name of the source paper.
+    title, citation : str
+        What the paper is.
+    model : str
+        The mechanical model in a few sentences (walkthrough introduction).
+    symbols : SymbolTable
+        Every symbol with dimension, unit, role and sampling range.
+    steps : list of Step
+        In the paper's order.
+    published : list of PublishedFormula
+        The paper's formulas, transcribed as printed.
+    outputs : list of Output
+        What ``crane-sym generate`` emits.
+    """
+
+    id: str
+    paper: str
+    title: str
+    citation: str
+    model: str
+    symbols: SymbolTable
+    steps: list[Step] = field(default_factory=list)
+    published: list[PublishedFormula] = field(default_factory=list)
+    outputs: list[Output] = field(default_factory=list)
+
+    def step(self, label: str) -> Step:
+        """The step with this label."""
+        for step in self.steps:
+            if step.label == label:
+                return step
+        raise KeyError(f"{self.id}: no step labelled {label!r}")
+
+    def output(self, name: str) -> Output:
+        """The output with this function name."""
+        for out in self.outputs:
+            if out.name == name:
+                return out
+        raise KeyError(f"{self.id}: no output named {name!r}")
+
+    def add(self, label: str, statement: sp.Eq, how: str, why: str = "",
+            title: str = "") -> sp.Eq:
+        """Append a step and return its statement, so a derivation reads
+        ``eq4 = d.add("(4)", ..., how="...")``."""
+        if any(s.label == label for s in self.steps):
+            raise ValueError(f"{self.id}: step {label!r} added twice")
+        self.steps.append(Step(label, statement, how, why, title))
+        return statement
+
+
+def rhs_of(steps: Sequence[Step], label: str) -> sp.Expr:
+    """Right-hand side of the step with ``label`` (helper for builders)."""
+    for step in steps:
+        if step.label == label:
+            return step.statement.rhs
+    raise KeyError(label)

@@ -1,0 +1,43 @@
+"""Which derivations exist, and where their modules are.
+
+Derivation modules are imported, and built, only when asked for.
+"""
+from __future__ import annotations
+
+import importlib
+from functools import lru_cache
+from types import ModuleType
+
+from .derivation import Derivation
+
+#: id -> module under ``crane_sym.derivations``, in paper order.
+DERIVATIONS: dict[str, str] = {
+    "travel_braking": "crane_sym.derivations.travel_braking",
+}
+#: Paper file-number prefixes accepted as ids on the command line.
+ALIASES: dict[str, str] = {"000": "travel_braking"}
+
+
+def ids() -> list[str]:
+    """Registered derivation ids, in paper order."""
+    return list(DERIVATIONS)
+
+
+def resolve(name: str) -> str:
+    """The id for ``name`` (an id or a paper number such as ``000``)."""
+    key = ALIASES.get(name, name)
+    if key not in DERIVATIONS:
+        known = ", ".join(f"{k} ({a})" for a, k in ALIASES.items())
+        raise KeyError(f"unknown derivation {name!r}; known: {known}")
+    return key
+
+
+def module(name: str) -> ModuleType:
+    """The derivation module for ``name``."""
+    return importlib.import_module(DERIVATIONS[resolve(name)])
+
+
+@lru_cache(maxsize=None)
+def get(name: str) -> Derivation:
+    """The built derivation for ``name`` (built once per process)."""
+    return module(name).build()

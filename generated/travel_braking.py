@@ -1,0 +1,296 @@
+"""Numeric functions for derivation 'travel_braking'. Generated; do not edit.
+
+Source: crane_sym.derivations.travel_braking (paper 000_4ef6efc8a81a3b06.txt:
+Dynamic loads when the travel mechanism of an overhead crane brakes).
+Equations: (1), (2), (6), (13), (14).
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    natural_frequency(m1, m2, c) -> [rad/s]    eq (6)
+    relative_displacement(t, m1, m2, c, P_t, W) -> [m]    eq (13)
+    elastic_force(t, m1, m2, c, P_t, W) -> [N]    eq (14)
+    peak_elastic_force(m1, m2, P_t, W) -> [N]    eq (14)
+    peak_time(m1, m2, c) -> [s]    eq (6), (14)
+    rigid_link_force(m1, m2, P_t, W) -> [N]    eq (14)
+    velocity_m1(t, m1, m2, c, P_t, W, v0) -> [m/s]    eq (1), (13)
+    velocity_m2(t, m1, m2, c, P_t, W, v0) -> [m/s]    eq (2), (13)
+"""
+
+import numpy as np
+
+__all__ = ['natural_frequency', 'relative_displacement', 'elastic_force', 'peak_elastic_force', 'peak_time', 'rigid_link_force', 'velocity_m1', 'velocity_m2']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def natural_frequency(m1, m2, c):
+    """Natural frequency p of the relative motion. Eq (6).
+
+    Parameters
+    ----------
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    c : array_like
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad/s], broadcast over the arguments.
+    """
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    return np.sqrt(c)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
+
+
+def relative_displacement(t, m1, m2, c, P_t, W):
+    """Stretch x2 - x1 of the elastic link. Eq (13).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the brake was applied [s], >= 0
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    c : array_like
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+    P_t : array_like
+        braking force [N], > 0
+    W : array_like
+        static travel resistance [N], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    x0 = m1 + m2
+    k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
+    k1 = -2*(-P_t*m2 + W*m1)/(c*x0)
+    return k1*np.sin(k0*t)**2
+
+
+def elastic_force(t, m1, m2, c, P_t, W):
+    """Force F(t) in the elastic link. Eq (14).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the brake was applied [s], >= 0
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    c : array_like
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+    P_t : array_like
+        braking force [N], > 0
+    W : array_like
+        static travel resistance [N], >= 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    x0 = m1 + m2
+    k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
+    k1 = -2*(-P_t*m2 + W*m1)/x0
+    return k1*np.sin(k0*t)**2
+
+
+def peak_elastic_force(m1, m2, P_t, W):
+    """Extreme link force F_max = F(pi/p); a maximum when P_t*m2 > W*m1. Eq (14).
+
+    Parameters
+    ----------
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    P_t : array_like
+        braking force [N], > 0
+    W : array_like
+        static travel resistance [N], >= 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    return 2*(P_t*m2 - W*m1)/(m1 + m2)
+
+
+def peak_time(m1, m2, c):
+    """Time t_max = pi/p of the extreme link force. Eq (6), (14).
+
+    Parameters
+    ----------
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    c : array_like
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+
+    Returns
+    -------
+    ndarray
+        [s], broadcast over the arguments.
+    """
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    return np.pi*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2))
+
+
+def rigid_link_force(m1, m2, P_t, W):
+    """Link force of a rigid drive (c -> oo), the static reference. Eq (14).
+
+    Parameters
+    ----------
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    P_t : array_like
+        braking force [N], > 0
+    W : array_like
+        static travel resistance [N], >= 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    return -(-P_t*m2 + W*m1)/(m1 + m2)
+
+
+def velocity_m1(t, m1, m2, c, P_t, W, v0):
+    """Velocity of the motor-side mass m1. Eq (1), (13).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the brake was applied [s], >= 0
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    c : array_like
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+    P_t : array_like
+        braking force [N], > 0
+    W : array_like
+        static travel resistance [N], >= 0
+    v0 : array_like
+        travel speed when braking begins [m/s], > 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
+    x0 = m1 + m2
+    x1 = np.sqrt(c)
+    x2 = 1/np.sqrt(m1)
+    x3 = np.sqrt(m2)
+    k0 = -(P_t + W)/x0
+    k1 = np.sqrt(x0)*x1*x2/x3
+    k2 = x2*x3*(-P_t*m2 + W*m1)/(x0**(3/2)*x1)
+    return k0*t + k2*np.sin(k1*t) + v0
+
+
+def velocity_m2(t, m1, m2, c, P_t, W, v0):
+    """Velocity of the crane-side mass m2. Eq (2), (13).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the brake was applied [s], >= 0
+    m1 : array_like
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+    m2 : array_like
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+    c : array_like
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+    P_t : array_like
+        braking force [N], > 0
+    W : array_like
+        static travel resistance [N], >= 0
+    v0 : array_like
+        travel speed when braking begins [m/s], > 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
+    x0 = m1 + m2
+    x1 = np.sqrt(c)
+    x2 = np.sqrt(m1)
+    x3 = 1/np.sqrt(m2)
+    k0 = -(P_t + W)/x0
+    k1 = np.sqrt(x0)*x1*x3/x2
+    k2 = -x2*x3*(-P_t*m2 + W*m1)/(x0**(3/2)*x1)
+    return k0*t + k2*np.sin(k1*t) + v0
