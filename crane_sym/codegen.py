@@ -7,15 +7,17 @@ as scalars before the array work.
 """
 from __future__ import annotations
 
+import inspect
+import re
 from pathlib import Path
 from typing import Iterable, Sequence
 
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
-from . import __version__
+from . import __version__, kernels
 from .derivation import Derivation, Output
-from .rewriting import DEFAULT_RULES, Rule, optimize
+from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
 from .symbols import TIME, SymbolTable
 
 
@@ -33,10 +35,59 @@ class _Printer(NumPyPrinter):
     def _print_Pi(self, expr: sp.Basic) -> str:
         return "np.pi"
 
+    def _print_diff_of_products(self, expr: sp.Basic) -> str:
+        return "_diff_of_products(" + ", ".join(self._print(a) for a in expr.args) + ")"
+
+    def _print_sin_phase(self, expr: sp.Basic) -> str:
+        return f"_sin_phase({self._print(expr.args[0])}, {self._print(expr.args[1])})"
+
+    def _print_cos_phase(self, expr: sp.Basic) -> str:
+        return f"_cos_phase({self._print(expr.args[0])}, {self._print(expr.args[1])})"
+
     def _print_Pow(self, expr: sp.Pow, rational: bool = False) -> str:
         if expr.exp == -1:
             return "1/" + self.parenthesize(expr.base, 1000)
         return super()._print_Pow(expr, rational=rational)
+
+
+class _DoubleDoublePrinter(_Printer):
+    """Prints a parameter-only expression as double-double kernel calls."""
+
+    def _print_Symbol(self, expr: sp.Symbol) -> str:
+        return f"_dd({expr.name})"
+
+    def _print_Integer(self, expr: sp.Integer) -> str:
+        return f"_dd({float(expr)!r})"
+
+    def _print_Rational(self, expr: sp.Rational) -> str:
+        return f"_dd_div(_dd({float(expr.p)!r}), _dd({float(expr.q)!r}))"
+
+    def _print_Pi(self, expr: sp.Basic) -> str:
+        return "(np.pi, 1.2246467991473532e-16)"
+
+    def _chain(self, kernel: str, args: Sequence[sp.Expr]) -> str:
+        text = self._print(args[0])
+        for arg in args[1:]:
+            text = f"{kernel}({text}, {self._print(arg)})"
+        return text
+
+    def _print_Add(self, expr: sp.Add, order: str | None = None) -> str:
+        return self._chain("_dd_add", sp.Add.make_args(expr))
+
+    def _print_Mul(self, expr: sp.Mul) -> str:
+        num, den = sp.fraction(expr)
+        text = self._chain("_dd_mul", sp.Mul.make_args(num))
+        return text if den == 1 else f"_dd_div({text}, {self._print(den)})"
+
+    def _print_Pow(self, expr: sp.Pow, rational: bool = False) -> str:
+        base, e = expr.base, expr.exp
+        if e == sp.S.Half:
+            return f"_dd_sqrt({self._print(base)})"
+        if e.is_Integer and e > 0:
+            return self._chain("_dd_mul", [base] * int(e))
+        if e.is_Rational and e < 0:
+            return f"_dd_div(_dd(1.0), {self._print(base ** -e)})"
+        raise ValueError(f"no double-double form for {expr}")
 
 
 def _printer() -> _Printer:
@@ -44,14 +95,18 @@ def _printer() -> _Printer:
                      "allow_unknown_functions": False})
 
 
-def hoist(expr: sp.Expr, varying: set[sp.Symbol]) -> tuple[list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
+def hoist(expr: sp.Expr, varying: set[sp.Symbol]
+          ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
     """Pull every parameter-only factor or term out of the array expression.
 
-    Returns ``(assignments, expr)``: scalar assignments ``k_i = ...`` that do
-    not depend on ``varying``, and the remaining expression in the ``k_i``.
+    Returns ``(assignments, phases, expr)``: scalar assignments ``k_i = ...``
+    that do not depend on ``varying``; double-double assignments for the
+    phase factors of ``sin_phase``/``cos_phase``; the remaining expression.
     """
     names = sp.numbered_symbols("k")
+    phases_names = sp.numbered_symbols("q")
     assignments: list[tuple[sp.Symbol, sp.Expr]] = []
+    phases: list[tuple[sp.Symbol, sp.Expr]] = []
 
     def fixed(e: sp.Expr) -> bool:
         return not (e.free_symbols & varying)
@@ -68,6 +123,13 @@ def hoist(expr: sp.Expr, varying: set[sp.Symbol]) -> tuple[list[tuple[sp.Symbol,
             return name(e)
         if e.is_Atom:
             return e
+        if isinstance(e, (sin_phase, cos_phase)):
+            for q, value in phases:
+                if value == e.args[1]:
+                    return e.func(e.args[0], q)
+            q = next(phases_names)
+            phases.append((q, e.args[1]))
+            return e.func(e.args[0], q)
         if isinstance(e, (sp.Add, sp.Mul)):
             consts = [a for a in e.args if fixed(a)]
             moving = [visit(a) for a in e.args if not fixed(a)]
@@ -78,33 +140,9 @@ def hoist(expr: sp.Expr, varying: set[sp.Symbol]) -> tuple[list[tuple[sp.Symbol,
         return e.func(*[visit(a) for a in e.args])
 
     if fixed(expr):
-        return [], expr
-    return assignments, visit(expr)
-
-
-_VALIDATE = '''
-def _checked(name, value, sign, what):
-    """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-    if sign == "positive" and not low > 0:
-        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
-    if sign == "nonnegative" and not low >= 0:
-        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
-'''
+        return [], [], expr
+    reduced = visit(expr)
+    return assignments, phases, reduced
 
 
 def _signature(out: Output) -> str:
@@ -112,12 +150,12 @@ def _signature(out: Output) -> str:
 
 
 def render_function(out: Output, table: SymbolTable,
-                    rules: Sequence[Rule] = DEFAULT_RULES) -> str:
+                    rules: Sequence[Rule] | None = None) -> str:
     """Source of one validated, vectorized NumPy function."""
     printer = _printer()
-    expr = optimize(out.expr, rules)
     varying = {e.expr for e in table.with_role(TIME)} & set(out.args)
-    assignments, body = hoist(expr, varying)
+    expr = optimize(out.expr, rules_for(varying) if rules is None else rules)
+    assignments, phases, body = hoist(expr, varying)
     subs, reduced = sp.cse([e for _, e in assignments] + [body],
                            symbols=sp.numbered_symbols("x"), order="canonical")
     entries = [table[a] for a in out.args]
@@ -144,6 +182,8 @@ def render_function(out: Output, table: SymbolTable,
                      f"{e.sign!r}, {what!r})")
     # A scalar that CSE reduced to a bare name is inlined, not re-assigned.
     alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom}
+    for sym, value in phases:
+        lines.append(f"    {sym} = {_DoubleDoublePrinter().doprint(value)}")
     for sym, value in subs:
         lines.append(f"    {sym} = {printer.doprint(value)}")
     for (k, _), value in zip(assignments, reduced[:-1]):
@@ -153,8 +193,15 @@ def render_function(out: Output, table: SymbolTable,
     return "\n".join(lines) + "\n"
 
 
+def _kernel_source(functions: Sequence[str]) -> str:
+    """Source of the kernels the function texts call, and their dependencies."""
+    called = set(re.findall(r"\b(_[a-z_]+)\(", "\n".join(functions)))
+    names = kernels.closure({"_checked"} | (called & set(kernels.DEPENDS)))
+    return "\n\n".join(inspect.getsource(getattr(kernels, n)) for n in names)
+
+
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
-                  rules: Sequence[Rule] = DEFAULT_RULES) -> str:
+                  rules: Sequence[Rule] | None = None) -> str:
     """Full source of ``generated/<d.id>.py``; deterministic for a given
     derivation and SymPy version."""
     outputs = list(d.outputs if outputs is None else outputs)
@@ -171,8 +218,9 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
               f"Functions and argument order:\n{listing}\n"
               '"""\n')
     names = ", ".join(repr(o.name) for o in outputs)
-    parts = [header, "import numpy as np\n", f"__all__ = [{names}]\n", _VALIDATE]
-    parts += ["\n" + render_function(o, d.symbols, rules) for o in outputs]
+    functions = ["\n" + render_function(o, d.symbols, rules) for o in outputs]
+    parts = [header, "import numpy as np\n", f"__all__ = [{names}]\n",
+             "\n" + _kernel_source(functions), *functions]
     return "\n".join(parts)
 
 

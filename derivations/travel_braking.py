@@ -339,3 +339,138 @@ PUBLISHED = [
              "a chain; its middle member c(x2 − x1) restates (3), so the "
              "transcription keeps the outer equality F = ..."),
 ]
+
+
+# --- Scenes ----------------------------------------------------------------------
+def scene_report(scene):
+    """Numbers and curves of a scene (see ``crane_sym.scenes``) for this model.
+
+    Uses the generated NumPy module, not SymPy.
+
+    Parameters
+    ----------
+    scene : crane_sym.scenes.Scene
+        With SI parameters ``m1, m2, c, P_t, W, v0`` and options
+        ``duration`` [s] and ``points``.
+
+    Returns
+    -------
+    crane_sym.scenes.SceneReport
+        Lines to print; ``values`` (SI): ``p``, ``f``, ``F_r``, ``F_max``,
+        ``t_max``, ``dynamic_factor``, ``F_max_over_P_t``, ``v1_min``,
+        ``v2_min``, ``t_slip_end`` and ``t_v2_zero`` (NaN when not reached
+        within the duration), ``t_stop_rigid``; panels "Elastic link force"
+        and "Velocities".
+    """
+    import math
+
+    import numpy as np
+
+    from crane_sym.generated import travel_braking as gen
+    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+
+    q = scene.parameters
+    load = {k: q[k] for k in ("m1", "m2", "c", "P_t", "W")}
+    rigid = {k: q[k] for k in ("m1", "m2", "P_t", "W")}
+    duration = scene.options["duration"]
+    times = np.linspace(0.0, duration, scene.options["points"])
+    force = gen.elastic_force(times, **load)
+    vel1 = gen.velocity_m1(times, v0=q["v0"], **load)
+    vel2 = gen.velocity_m2(times, v0=q["v0"], **load)
+
+    def first_zero(v):
+        """First time ``v`` reaches 0 on the grid (linear interpolation), or NaN."""
+        hits = np.flatnonzero(v <= 0.0)
+        if hits.size == 0:
+            return math.nan
+        i = int(hits[0])
+        if i == 0:
+            return float(times[0])
+        return float(times[i - 1] + (times[i] - times[i - 1]) * v[i - 1] / (v[i - 1] - v[i]))
+
+    freq = float(gen.natural_frequency(q["m1"], q["m2"], q["c"]))
+    link_rigid = float(gen.rigid_link_force(**rigid))
+    peak = float(gen.peak_elastic_force(**rigid))
+    peak_at = float(gen.peak_time(q["m1"], q["m2"], q["c"]))
+    values = {
+        "p": freq, "f": freq / (2 * math.pi), "F_r": link_rigid, "F_max": peak,
+        "t_max": peak_at, "dynamic_factor": peak / link_rigid,
+        "F_max_over_P_t": peak / q["P_t"],
+        "v1_min": float(vel1.min()), "v2_min": float(vel2.min()),
+        "t_slip_end": first_zero(vel1), "t_v2_zero": first_zero(vel2),
+        "t_stop_rigid": q["v0"] * (q["m1"] + q["m2"]) / (q["P_t"] + q["W"]),
+    }
+    span = f"0…{fq(duration, 's')}"
+    if math.isnan(values["t_slip_end"]):
+        slip = (f"brake slips throughout {span}: v1 > 0 "
+                f"(min v1 = {fq(values['v1_min'], 'm/s')})")
+    else:
+        slip = (f"brake stops slipping (v1 = 0) at t = {fq(values['t_slip_end'], 's')}; "
+                "the model is not valid after that")
+    if math.isnan(values["t_v2_zero"]):
+        moving = (f"crane moves throughout {span}: v2 > 0 "
+                  f"(min v2 = {fq(values['v2_min'], 'm/s')})")
+    else:
+        moving = (f"crane stops (v2 = 0) at t = {fq(values['t_v2_zero'], 's')}; "
+                  "the model is not valid after that")
+    lines = [
+        scene.title,
+        f"natural frequency      p = {fq(freq, 'rad/s')}, f = p/2π = {fq(values['f'], 'Hz')}",
+        f"rigid-drive link force F_r = {fq(link_rigid / 1e3, 'kN')}",
+        f"peak elastic force     F_max = {fq(peak / 1e3, 'kN')} "
+        f"at t_max = {fq(peak_at, 's')}",
+        f"dynamic factor         F_max/F_r = {fq(values['dynamic_factor'])}",
+        f"peak over brake force  F_max/P_t = {fq(values['F_max_over_P_t'])}",
+        f"validity               {slip}",
+        f"                       {moving}",
+        f"rigid crane stops after v0·(m1 + m2)/(P_t + W) = "
+        f"{fq(values['t_stop_rigid'], 's')}",
+    ]
+    if peak_at > duration:
+        lines.append(f"note: t_max lies beyond the plotted duration {fq(duration, 's')}")
+    elif peak_at > values["t_slip_end"]:
+        lines.append("note: t_max comes after the brake stops slipping; "
+                     "the peak is not reached")
+    panels = [
+        Panel("Elastic link force", "F [kN]", [
+            ("F(t)", times, force / 1e3),
+            ("F_r (rigid drive)", times, np.full_like(times, link_rigid / 1e3)),
+        ]),
+        Panel("Velocities", "v [m/s]", [
+            ("v1 (motor side, m1)", times, vel1),
+            ("v2 (crane side, m2)", times, vel2),
+        ]),
+    ]
+    return SceneReport(lines=lines, values=values, panels=panels)
+
+
+# --- Hard cases ---------------------------------------------------------------------
+def hard_cases(points: int = 400, seed: int = 20261121) -> dict[str, dict[str, "np.ndarray"]]:
+    """Seeded input grids where a naive closed form loses accuracy.
+
+    Returns case name -> columns (one array per argument of the outputs).
+    """
+    import numpy as np
+
+    rng = np.random.default_rng(seed)
+
+    def typical(n: int) -> dict[str, np.ndarray]:
+        log = lambda lo, hi: 10.0 ** rng.uniform(np.log10(lo), np.log10(hi), n)
+        return {"m1": log(1e2, 1e5), "m2": log(1e3, 1e6), "c": log(1e5, 1e9),
+                "P_t": log(1e4, 1e6), "W": log(1e2, 1e4), "v0": log(0.1, 5.0)}
+
+    def with_phase(cols: dict, phase: np.ndarray) -> dict:
+        m1, m2, c = cols["m1"], cols["m2"], cols["c"]
+        return {**cols, "t": phase / np.sqrt(c * (m1 + m2) / (m1 * m2))}
+
+    n = points
+    small_large = with_phase(typical(n), np.logspace(-9, 3, n))
+    ratio = typical(n)
+    ratio["m1"] = np.logspace(-6, 6, n) * ratio["m2"]
+    ratio = with_phase(ratio, 10.0 ** rng.uniform(-9, 3, n))
+    cancel = typical(n)
+    cancel["W"] = cancel["P_t"] * cancel["m2"] / cancel["m1"] * (1 + np.logspace(-12, -1, n))
+    cancel = with_phase(cancel, 10.0 ** rng.uniform(-3, 1, n))
+    return {"p·t from 1e-9 to 1e3": small_large,
+            "m1/m2 from 1e-6 to 1e6": ratio,
+            "P_t·m2 − W·m1 cancels (1e-12 … 1e-1)": cancel}

@@ -1,0 +1,140 @@
+"""Numeric kernels that generated modules carry with them.
+
+These are ordinary functions, tested here against mpmath; the code generator
+copies the source of the ones a module needs into it (``inspect.getsource``),
+so generated modules depend on NumPy alone. Double-double numbers are pairs
+``(hi, lo)`` of floats or arrays with ``hi + lo`` the value (Dekker, Knuth).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _two_sum(a, b):
+    """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
+    s = a + b
+    v = s - a
+    return s, (a - (s - v)) + (b - v)
+
+
+def _quick_two_sum(a, b):
+    """a + b as s + e exactly, for |a| >= |b| (Dekker)."""
+    s = a + b
+    return s, b - (s - a)
+
+
+def _two_product(a, b):
+    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
+    p = a * b
+    a_hi = a * 134217729.0
+    a_hi = a_hi - (a_hi - a)
+    b_hi = b * 134217729.0
+    b_hi = b_hi - (b_hi - b)
+    a_lo, b_lo = a - a_hi, b - b_hi
+    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
+
+
+def _diff_of_products(a, b, c, d):
+    """a*b - c*d to within a few ulp, even when the products nearly cancel."""
+    p, p_err = _two_product(a, b)
+    q, q_err = _two_product(c, d)
+    return (p - q) + (p_err - q_err)
+
+
+def _dd(x):
+    """A double as a double-double."""
+    return x, 0.0 * x
+
+
+def _dd_add(x, y):
+    """Sum of two double-doubles."""
+    s, e = _two_sum(x[0], y[0])
+    return _quick_two_sum(s, e + (x[1] + y[1]))
+
+
+def _dd_mul(x, y):
+    """Product of two double-doubles."""
+    p, e = _two_product(x[0], y[0])
+    return _quick_two_sum(p, e + (x[0] * y[1] + x[1] * y[0]))
+
+
+def _dd_div(x, y):
+    """Quotient of two double-doubles."""
+    q1 = x[0] / y[0]
+    r = _dd_add(x, _dd_mul((-q1, 0.0 * q1), y))
+    return _quick_two_sum(q1, r[0] / y[0])
+
+
+def _dd_sqrt(x):
+    """Square root of a positive double-double."""
+    q = np.sqrt(x[0])
+    p, e = _two_product(q, q)
+    return _quick_two_sum(q, ((x[0] - p) - e + x[1]) / (2.0 * q))
+
+
+def _phase(t, k):
+    """t*k for a double t and a double-double k, as (hi, lo)."""
+    hi, lo = _two_product(t, k[0])
+    return hi, lo + t * k[1]
+
+
+def _sin_phase(t, k):
+    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
+    hi, lo = _phase(t, k)
+    return np.sin(hi) + np.cos(hi) * lo
+
+
+def _cos_phase(t, k):
+    """cos(k*t), k a double-double: accurate where cos is near zero at large k*t."""
+    hi, lo = _phase(t, k)
+    return np.cos(hi) - np.sin(hi) * lo
+
+
+#: kernel -> kernels it calls, so a module carries only what it uses.
+DEPENDS = {
+    "_checked": (),
+    "_two_sum": (), "_quick_two_sum": (), "_two_product": (),
+    "_diff_of_products": ("_two_product",),
+    "_dd": (),
+    "_dd_add": ("_two_sum", "_quick_two_sum"),
+    "_dd_mul": ("_two_product", "_quick_two_sum"),
+    "_dd_div": ("_dd_add", "_dd_mul", "_quick_two_sum"),
+    "_dd_sqrt": ("_two_product", "_quick_two_sum"),
+    "_phase": ("_two_product",),
+    "_sin_phase": ("_phase",), "_cos_phase": ("_phase",),
+}
+
+
+def closure(names: set[str]) -> list[str]:
+    """``names`` and every kernel they depend on, in this module's order."""
+    needed: set[str] = set()
+    todo = list(names)
+    while todo:
+        name = todo.pop()
+        if name not in needed:
+            needed.add(name)
+            todo.extend(DEPENDS[name])
+    return [name for name in DEPENDS if name in needed]

@@ -1,0 +1,168 @@
+"""Core machinery: dimensions, checks that can fail, the audit's verdict logic,
+and the builders (Lagrange, elimination, ODE solution)."""
+import pytest
+import sympy as sp
+from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
+from sympy.physics.units import force, length, mass, time
+
+from crane_sym import audit as A
+from crane_sym.checks import (FAIL, PASS, dimension_consistency, numeric_equivalence,
+                              symbolic_equivalence)
+from crane_sym.derivation import Derivation, Output
+from crane_sym.dimensions import check_equation, dimension_of, format_vector, vector
+from crane_sym.elimination import relative_coordinate
+from crane_sym.lagrange import lagrange_equations
+from crane_sym.odes import solve_constant_coefficient
+from crane_sym.published import ASSUMPTION, Convention, PublishedFormula
+from crane_sym.symbols import COORDINATE, DEFINED, TIME, PhysicalSymbol, SymbolTable
+
+t = sp.Symbol("t", nonnegative=True)
+m, k, F0 = sp.symbols("m k F0", positive=True)
+x = sp.Function("x")(t)
+w, y = sp.symbols("w y", positive=True)
+TABLE = SymbolTable([
+    PhysicalSymbol(t, time, "s", "time", TIME, "nonnegative", (1e-3, 10)),
+    PhysicalSymbol(m, mass, "kg", "mass", sample_range=(1, 1e3)),
+    PhysicalSymbol(k, force / length, "N/m", "stiffness", sample_range=(1e2, 1e6)),
+    PhysicalSymbol(F0, force, "N", "force", sample_range=(1, 1e3)),
+    PhysicalSymbol(x, length, "m", "position", COORDINATE, "real"),
+    PhysicalSymbol(w, 1 / time, "rad/s", "frequency", DEFINED),
+    PhysicalSymbol(y, length, "m", "static deflection", DEFINED),
+])
+MOTION = sp.Eq(m * x.diff(t, 2) + k * x, F0)
+
+
+def test_dimension_vectors_and_format():
+    assert vector(force) == vector(mass * length / time ** 2)
+    assert format_vector(vector(force)) == "kg·m/s²"
+    dims = {e.expr: vector(e.dimension) for e in TABLE}
+    assert dimension_of(x.diff(t, 2), dims) == vector(length / time ** 2)
+    assert dimension_of(sp.sqrt(k / m), dims) == vector(1 / time)
+
+
+def test_dimension_check_names_the_offending_term():
+    dims = {e.expr: vector(e.dimension) for e in TABLE}
+    report = check_equation(m * x.diff(t, 2) + k * x + m * x, F0, dims)
+    assert not report.consistent
+    assert report.offending == ("m*x(t) [kg·m]",)
+    bad = check_equation(y, sp.cos(k * t), dims)
+    assert not bad.consistent and "must be dimensionless" in bad.message
+
+
+def test_symbolic_check_accepts_rearranged_and_scaled_equations():
+    scaled = sp.Eq(x.diff(t, 2) + k / m * x, F0 / m)
+    assert symbolic_equivalence(scaled, MOTION, TABLE).status == PASS
+    swapped = sp.Eq(F0, m * x.diff(t, 2) + k * x)
+    assert symbolic_equivalence(swapped, MOTION, TABLE).status == PASS
+
+
+def test_symbolic_and_numeric_checks_fail_on_a_wrong_coefficient():
+    wrong = sp.Eq(m * x.diff(t, 2) + 2 * k * x, F0)
+    assert symbolic_equivalence(wrong, MOTION, TABLE).status != PASS
+    outcome = numeric_equivalence(wrong, MOTION, TABLE)
+    assert outcome.status == FAIL and "ratio" in outcome.detail
+
+
+def test_numeric_check_reports_values_for_definitions():
+    outcome = numeric_equivalence(sp.Eq(w, sp.sqrt(k / m) * 1.001), sp.Eq(w, sp.sqrt(k / m)), TABLE)
+    assert outcome.status == FAIL and "right-hand side" in outcome.detail
+    ok = numeric_equivalence(sp.Eq(w, sp.sqrt(k) / sp.sqrt(m)), sp.Eq(w, sp.sqrt(k / m)), TABLE)
+    assert ok.status == PASS
+
+
+def test_dimension_check_on_relations():
+    assert dimension_consistency(MOTION, TABLE).status == PASS
+    assert dimension_consistency(sp.Eq(y, F0 * k), TABLE).status == FAIL
+
+
+def _toy(published):
+    d = Derivation("toy", "toy.txt", "toy", "", "", TABLE)
+    d.add("(1)", MOTION, "Newton's second law.")
+    d.add("(2)", sp.Eq(w, sp.sqrt(k / m)), "Coefficient of x over m.")
+    d.add("(3)", sp.Eq(y, F0 / k), "Static solution.")
+    d.published.extend(published)
+    return d
+
+
+def _verdicts(published):
+    return [(r.verdict, r.method) for r in A.audit(_toy(published))]
+
+
+def test_each_verdict_kind_comes_from_its_check():
+    W = sp.Symbol("W", positive=True)  # a printed name for w
+    TABLE.entries.append(PhysicalSymbol(W, 1 / time, "rad/s", "printed w", DEFINED))
+    try:
+        got = _verdicts([
+            PublishedFormula("(1)", "...", sp.Eq(m * x.diff(t, 2), F0 - k * x), "toy"),
+            PublishedFormula("(2)", "...", sp.Eq(W, sp.sqrt(k / m)), "toy",
+                             conventions=(Convention("W is w", sp.Eq(w, sp.sqrt(k / m))),)),
+            PublishedFormula("(3)", "...", sp.Eq(y, 2 * F0 / k), "toy"),
+            PublishedFormula("(3)", "...", sp.Eq(y, F0 * k), "toy"),
+            PublishedFormula("(3)", "...", None, "toy", not_checkable="OCR lost it"),
+            PublishedFormula("(3)", "...", sp.Eq(y, 0, evaluate=False), "toy", kind=ASSUMPTION),
+        ])
+    finally:
+        TABLE.entries.pop()
+    assert got == [(A.CONFIRMED, "symbolic"), (A.CONFIRMED_WITH_CONVENTION, "symbolic"),
+                   (A.DISCREPANCY, "numeric"), (A.DIMENSION_ERROR, "dimension"),
+                   (A.NOT_CHECKABLE, "none"), (A.REMARK, "numeric")]
+
+
+def test_discrepancy_gives_the_corrected_form():
+    (record,) = A.audit(_toy([PublishedFormula("(3)", "...", sp.Eq(y, 2 * F0 / k), "toy")]))
+    assert "derived form" in record.detail and "\\frac{F_{0}}{k}" in record.detail
+
+
+def test_a_transcription_must_be_a_sympy_equation_not_text():
+    with pytest.raises(TypeError, match="built in code"):
+        PublishedFormula("(1)", "x = 1", "__import__('os').system('echo no')", "toy")
+    with pytest.raises(ValueError, match="no transcription"):
+        PublishedFormula("(1)", "x = 1", None, "toy")
+
+
+def test_output_rejects_free_symbols_that_are_not_arguments():
+    with pytest.raises(ValueError, match=r"free symbols \['k'\]"):
+        Output("f", k * m, (m,), ("(1)",), "f", "N")
+
+
+def test_lagrange_matches_sympy_lagrangesmethod_on_conservative_part():
+    m1, m2, c = sp.symbols("m1 m2 c", positive=True)
+    q1, q2 = dynamicsymbols("q1 q2")
+    tt = dynamicsymbols._t
+    T = m1 * q1.diff(tt) ** 2 / 2 + m2 * q2.diff(tt) ** 2 / 2
+    V = c * (q2 - q1) ** 2 / 2
+    ours = lagrange_equations(T, V, [q1, q2], tt)
+    lm = LagrangesMethod(T - V, [q1, q2])
+    theirs = lm.form_lagranges_equations()
+    for eq, ref in zip(ours.equations, theirs):
+        assert sp.simplify(eq.lhs - eq.rhs - ref) == 0
+    assert sp.simplify(ours.mass_matrix() - lm.mass_matrix) == sp.zeros(2)
+
+
+def test_lagrange_dissipation_and_forces():
+    b = sp.Symbol("b", positive=True)
+    (eq,) = lagrange_equations(m * x.diff(t) ** 2 / 2, k * x ** 2 / 2, [x], t,
+                               {x: F0}, dissipation=b * x.diff(t) ** 2 / 2).equations
+    assert sp.expand(eq.lhs - (m * x.diff(t, 2) + b * x.diff(t) + k * x)) == 0
+    assert eq.rhs == F0
+    with pytest.raises(ValueError, match="non-coordinates"):
+        lagrange_equations(m * x.diff(t) ** 2 / 2, 0, [x], t, {sp.Symbol("z"): 1})
+
+
+def test_elimination_refuses_a_system_that_does_not_decouple():
+    m1, m2, c = sp.symbols("m1 m2 c", positive=True)
+    x1, x2, u = (sp.Function(n)(t) for n in ("x1", "x2", "u"))
+    eq1 = sp.Eq(m1 * x1.diff(t, 2) - c * (x2 - x1) + k * x1, 0)   # x1 grounded
+    eq2 = sp.Eq(m2 * x2.diff(t, 2) + c * (x2 - x1), 0)
+    with pytest.raises(ValueError, match="does not cancel"):
+        relative_coordinate(eq1, eq2, x1, x2, u)
+
+
+def test_constant_coefficient_solution_meets_equation_and_initial_conditions():
+    A_, B_ = sp.symbols("A B")
+    eq = sp.Eq(x.diff(t, 2) + w ** 2 * x, F0 / m)
+    sol = solve_constant_coefficient(eq, x, (A_, B_), initial={0: y, 1: 0})
+    assert sol.basis == (sp.cos(w * t), sp.sin(w * t))
+    u = sol.solution
+    assert sp.simplify(u.diff(t, 2) + w ** 2 * u - F0 / m) == 0
+    assert sp.simplify(u.subs(t, 0) - y) == 0 and u.diff(t).subs(t, 0) == 0

@@ -1,0 +1,87 @@
+"""The numeric kernels generated modules carry, against mpmath."""
+from fractions import Fraction
+
+import mpmath
+import numpy as np
+import pytest
+
+from crane_sym import kernels as k
+
+rng = np.random.default_rng(7)
+
+
+def test_two_product_is_exact():
+    a, b = rng.uniform(-1e6, 1e6, 500), rng.uniform(-1e3, 1e3, 500)
+    p, e = k._two_product(a, b)
+    for ai, bi, pi, ei in zip(a, b, p, e):
+        assert Fraction(pi) + Fraction(ei) == Fraction(ai) * Fraction(bi)
+
+
+def test_two_sum_is_exact():
+    a, b = rng.uniform(-1e6, 1e6, 500), rng.uniform(-1e-6, 1e-6, 500)
+    s, e = k._two_sum(a, b)
+    for ai, bi, si, ei in zip(a, b, s, e):
+        assert Fraction(si) + Fraction(ei) == Fraction(ai) + Fraction(bi)
+
+
+@pytest.mark.parametrize("gap", [1e-15, 1e-12, 1e-6, 1e-1, 1.0])
+def test_diff_of_products_when_products_nearly_cancel(gap):
+    a, b = rng.uniform(1e3, 1e6, 200), rng.uniform(1e3, 1e6, 200)
+    c = rng.uniform(1e3, 1e6, 200)
+    d = a * b / c * (1 + gap)
+    got = k._diff_of_products(a, b, c, d)
+    for ai, bi, ci, di, g in zip(a, b, c, d, got):
+        exact = Fraction(ai) * Fraction(bi) - Fraction(ci) * Fraction(di)
+        assert abs(Fraction(g) - exact) <= 4 * 2.0 ** -53 * abs(exact)
+
+
+def _mp(dd):
+    return mpmath.mpf(float(dd[0])) + mpmath.mpf(float(dd[1]))
+
+
+def test_double_double_arithmetic_to_30_digits():
+    with mpmath.workdps(40):
+        for x, y in rng.uniform(0.1, 1e4, (50, 2)):
+            X, Y = k._dd(x), k._dd(y)
+            mx, my = mpmath.mpf(x), mpmath.mpf(y)
+            for got, exact in [(k._dd_add(X, Y), mx + my), (k._dd_mul(X, Y), mx * my),
+                               (k._dd_div(X, Y), mx / my), (k._dd_sqrt(X), mpmath.sqrt(mx)),
+                               (k._dd_sqrt(k._dd_div(X, Y)), mpmath.sqrt(mx / my))]:
+                assert abs(_mp(got) - exact) <= mpmath.mpf(10) ** -30 * abs(exact)
+
+
+@pytest.mark.parametrize("kernel, zero_offset, exact_fn",
+                         [(k._sin_phase, 0.0, mpmath.sin), (k._cos_phase, 0.5, mpmath.cos)])
+def test_phase_kernels_keep_relative_accuracy_near_zeros(kernel, zero_offset, exact_fn):
+    # k*t lands within ~1e-16 of the zeros at phases up to 1e3, where one
+    # rounding of the phase would cost up to ~1e-3 relative error. The
+    # double-double phase leaves a few ulp plus its own rounding, 2**-104*|kt|.
+    q = k._dd_sqrt(k._dd(2.0))
+    with mpmath.workdps(40):
+        kk = mpmath.sqrt(2)
+        t = np.array([float(mpmath.pi * (j + zero_offset) / kk) for j in range(1, 300)])
+        got = kernel(t, q)
+        for ti, g in zip(t, got):
+            exact = exact_fn(kk * mpmath.mpf(float(ti)))
+            phase = float(kk) * ti
+            assert abs(g - exact) <= 1.5e-15 * abs(exact) + 4 * 2.0 ** -104 * phase
+
+
+def test_checked_messages():
+    with pytest.raises(ValueError, match=r"m1 must be > 0 \(mass, kg\)"):
+        k._checked("m1", [1.0, -2.0], "positive", "mass, kg")
+    with pytest.raises(ValueError, match="t must be >= 0"):
+        k._checked("t", -1e-300, "nonnegative", "time, s")
+    with pytest.raises(ValueError, match="c must be finite"):
+        k._checked("c", [1.0, np.nan], "positive", "stiffness, N/m")
+    with pytest.raises(ValueError, match="c must be finite"):
+        k._checked("c", np.inf, "positive", "stiffness, N/m")
+    with pytest.raises(TypeError, match="W must be a number.*string"):
+        k._checked("W", "1e3", "nonnegative", "force, N")
+    with pytest.raises(TypeError, match="dtype bool"):
+        k._checked("W", True, "nonnegative", "force, N")
+    assert k._checked("x", 3, "real", "x").dtype == float
+
+
+def test_closure_lists_dependencies_in_order():
+    assert k.closure({"_sin_phase"}) == ["_two_product", "_phase", "_sin_phase"]

@@ -1,0 +1,188 @@
+"""Paper 000 end to end: verdicts, generated code against mpmath and against an
+independent numerical integration of (1)-(2), hard cases, bad inputs."""
+import json
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from crane_sym import codegen, registry
+from crane_sym.audit import audit
+from crane_sym.cli import main
+from crane_sym.reference import accuracy
+
+integrate = pytest.importorskip("scipy.integrate")
+
+ID = "travel_braking"
+EXPECTED = {
+    "(1)": "confirmed", "(2)": "confirmed", "(3)": "confirmed", "(4)": "confirmed",
+    "(5)": "confirmed", "(6)": "confirmed_with_convention",
+    "(7)": "confirmed_with_convention", "(8)": "confirmed", "(9)": "confirmed",
+    "initial stretch": "remark", "initial relative velocity": "confirmed",
+    "(10)": "confirmed", "(11)": "confirmed", "(12)": "confirmed", "(13)": "confirmed",
+    "(14)": "confirmed",
+}
+
+
+@pytest.fixture(scope="module")
+def derivation():
+    return registry.get(ID)
+
+
+@pytest.fixture(scope="module")
+def records(derivation):
+    return {r.label: r for r in audit(derivation)}
+
+
+@pytest.fixture(scope="module")
+def gen():
+    import crane_sym.generated.travel_braking as module
+    return module
+
+
+def test_every_verdict(records):
+    assert {label: r.verdict for label, r in records.items()} == EXPECTED
+
+
+def test_conventions_say_what_the_print_gets_wrong(records):
+    assert "P in (6) is the frequency p" in records["(6)"].detail
+    seven = records["(7)"].detail
+    assert "dimension check: inconsistent" in seven and "kg²·m/s⁴" in seven
+    assert "W/c" in records["initial stretch"].detail.replace("\\frac{W}{c}", "W/c")
+
+
+def test_every_step_is_labelled_and_every_printed_formula_targets_a_step(derivation):
+    labels = [s.label for s in derivation.steps]
+    assert len(labels) == len(set(labels)) and all(s.how for s in derivation.steps)
+    for f in derivation.published:
+        derivation.step(f.target)
+    numbered = {s.label for s in derivation.steps if s.numbered}
+    assert numbered == {f"({i})" for i in range(1, 15)}
+
+
+def test_audit_json_has_the_required_records(capsys):
+    assert main(["audit", "000", "--format", "json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert {"derivation", "label", "verdict", "method", "detail"} <= set(rows[0])
+    labels = {r["label"] for r in rows}
+    assert {"(1)", "(2)", "(3)", "(4)", "(6)", "(8)", "(11)", "(12)", "(13)", "(14)"} <= labels
+    assert all(r["method"] in ("symbolic", "numeric", "dimension", "none") for r in rows)
+
+
+def test_list_json(capsys):
+    assert main(["list", "--format", "json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert {"id": ID, "paper": "000_4ef6efc8a81a3b06.txt",
+            "title": registry.module(ID).TITLE} in rows
+
+
+@pytest.mark.parametrize("case", list(registry.module(ID).hard_cases()))
+def test_generated_functions_on_hard_cases_against_mpmath(derivation, gen, case):
+    columns = registry.module(ID).hard_cases()[case]
+    bound = {"velocity_m1": 1e-13, "velocity_m2": 1e-13}  # v0 - a*t cancels as v -> 0
+    for out in derivation.outputs:
+        row = accuracy(out, getattr(gen, out.name), case, columns)
+        assert row.max_rel_error <= bound.get(out.name, 2e-15), (out.name, row)
+    force = accuracy(derivation.output("elastic_force"), gen.elastic_force, case, columns)
+    assert force.max_rel_error <= 1e-12
+
+
+def test_against_numerical_integration_of_1_and_2(gen):
+    m1, m2, c, P_t, W, v0 = 4.4e3, 110e3, 3.0e6, 24e3, 11e3, 80 / 60
+
+    def rhs(_, s):
+        x1, x2, v1, v2 = s
+        spring = c * (x2 - x1)
+        return [v1, v2, (-P_t + spring) / m1, (-W - spring) / m2]   # (1), (2)
+
+    t = np.linspace(0, 2.0, 401)
+    sol = integrate.solve_ivp(rhs, (0, 2.0), [0, 0, v0, v0], method="DOP853",
+                              t_eval=t, rtol=1e-13, atol=1e-16)
+    x1, x2, v1, v2 = sol.y
+    F = gen.elastic_force(t, m1, m2, c, P_t, W)
+    scale = np.max(np.abs(F))
+    assert np.max(np.abs(c * (x2 - x1) - F)) <= 1e-9 * scale
+    assert np.max(np.abs(v1 - gen.velocity_m1(t, m1, m2, c, P_t, W, v0))) <= 1e-10 * v0
+    assert np.max(np.abs(v2 - gen.velocity_m2(t, m1, m2, c, P_t, W, v0))) <= 1e-10 * v0
+    first_period = t < 2 * np.pi / gen.natural_frequency(m1, m2, c)
+    i = np.argmax(np.where(first_period, F, -np.inf))
+    assert abs(F[i] - gen.peak_elastic_force(m1, m2, P_t, W)) <= 1e-3 * scale
+    assert abs(t[i] - gen.peak_time(m1, m2, c)) <= t[1] - t[0]
+
+
+def test_limits_and_invariants(gen):
+    m1, m2, c, P_t, W = 2e3, 5e4, 1e7, 3e4, 5e3
+    p = gen.natural_frequency(m1, m2, c)
+    # Quadratic start: F ~ F_r p^2 t^2 / 2 for p t -> 0, no 0/0 or cancellation.
+    tiny = 1e-9 / p
+    F_r = gen.rigid_link_force(m1, m2, P_t, W)
+    assert gen.elastic_force(tiny, m1, m2, c, P_t, W) == pytest.approx(F_r * 1e-18 / 2, rel=1e-15)
+    assert gen.elastic_force(0.0, m1, m2, c, P_t, W) == 0.0
+    # Dynamic factor 2 and peak at pi/p.
+    t_max = gen.peak_time(m1, m2, c)
+    assert gen.elastic_force(t_max, m1, m2, c, P_t, W) == pytest.approx(2 * F_r, rel=1e-14)
+    # Symmetry: swapping the masses swaps the roles of P_t and W and flips F.
+    assert gen.natural_frequency(m1, m2, c) == pytest.approx(gen.natural_frequency(m2, m1, c), rel=1e-15)
+    assert gen.rigid_link_force(m1, m2, P_t, W) == pytest.approx(-gen.rigid_link_force(m2, m1, W, P_t), rel=1e-15)
+    # Momentum: m1 v1 + m2 v2 falls at the rate P_t + W.
+    t = np.linspace(0, 3, 50)
+    mom = m1 * gen.velocity_m1(t, m1, m2, c, P_t, W, 1.0) + m2 * gen.velocity_m2(t, m1, m2, c, P_t, W, 1.0)
+    assert np.allclose(mom, (m1 + m2) - (P_t + W) * t, rtol=1e-13, atol=1e-9)
+
+
+def test_vectorized_and_broadcast(gen):
+    t = np.linspace(0, 1, 7)[:, None]
+    m2 = np.array([1e4, 1e5, 1e6])
+    out = gen.elastic_force(t, 1e3, m2, 1e6, 1e4, 1e3)
+    assert out.shape == (7, 3)
+    assert out[3, 1] == gen.elastic_force(t[3, 0], 1e3, 1e5, 1e6, 1e4, 1e3)
+
+
+@pytest.mark.parametrize("bad, message", [
+    ({"m1": 0.0}, r"m1 must be > 0"), ({"m2": -1.0}, r"m2 must be > 0"),
+    ({"c": np.nan}, r"c must be finite"), ({"P_t": np.inf}, r"P_t must be finite"),
+    ({"W": -1.0}, r"W must be >= 0"), ({"t": [0.1, -0.1]}, r"t must be >= 0"),
+])
+def test_bad_inputs_raise_naming_the_parameter(gen, bad, message):
+    args = {"t": 0.1, "m1": 1e3, "m2": 1e5, "c": 1e6, "P_t": 1e4, "W": 1e3} | bad
+    with pytest.raises(ValueError, match=message):
+        gen.elastic_force(**args)
+
+
+def test_strings_are_rejected_not_evaluated(gen, tmp_path):
+    canary = tmp_path / "evaluated"
+    payload = f"__import__('pathlib').Path({str(canary)!r}).touch() or 1.0"
+    with pytest.raises(TypeError, match="m1 must be a number"):
+        gen.elastic_force(0.1, payload, 1e5, 1e6, 1e4, 1e3)
+    with pytest.raises(TypeError, match="c must be a number"):
+        gen.natural_frequency(1e3, 1e5, "1e6")
+    assert not canary.exists()
+
+
+def test_generate_is_deterministic_and_fresh(tmp_path):
+    derivations = [registry.get(i) for i in registry.ids()]
+    first = codegen.rendered(derivations)
+    assert codegen.rendered(derivations) == first
+    assert codegen.stale(first, codegen.default_directory()) == []
+    assert main(["generate", "--out", str(tmp_path)]) == 0
+    assert main(["generate", "--check", "--out", str(tmp_path)]) == 0
+    (tmp_path / f"{ID}.py").write_text("# edited by hand\n")
+    assert main(["generate", "--check", "--out", str(tmp_path)]) == 1
+
+
+def test_generated_module_imports_numpy_only():
+    code = ("import sys, crane_sym.generated.travel_braking as g; "
+            "bad = [m for m in ('sympy', 'mpmath', 'scipy', 'matplotlib') if m in sys.modules]; "
+            "print(bad)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert out.stdout.strip() == "[]"
+
+
+def test_generated_header_names_source_labels_order_and_sympy_version():
+    text = (codegen.default_directory() / f"{ID}.py").read_text()
+    head = text.split('"""')[1]
+    assert f"crane_sym.derivations.{ID}" in head and "000_4ef6efc8a81a3b06.txt" in head
+    assert "elastic_force(t, m1, m2, c, P_t, W) -> [N]    eq (14)" in head
+    assert f"SymPy {sp.__version__}" in head
