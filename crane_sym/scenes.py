@@ -286,7 +286,7 @@ def run_scene(scene: Scene, outdir: Path) -> tuple[SceneReport, Path]:
             ax.set(title=panel.title, xlabel=panel.xlabel, ylabel=panel.ylabel)
             ax.grid(True, alpha=0.4)
             if len(panel.curves) > 1:
-                ax.legend()
+                ax.legend(loc="lower right", framealpha=0.9)
         fig.suptitle(scene.title)
         fig.tight_layout()
         fig.savefig(path, dpi=120, metadata={"Software": None})

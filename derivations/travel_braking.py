@@ -106,7 +106,7 @@ def build() -> Derivation:
         title=TITLE,
         citation="V.F. Semenyuk, A.N. Vudvud, Odessa National Polytechnic University",
         model=MODEL, symbols=SYMBOLS)
-    T_, V_, dA = sp.symbols("T Pi delta_A")
+    T_, V_, dA = sp.Symbol("T"), sp.Symbol(r"\Pi"), sp.Symbol(r"\delta A")
     T = m1 * x1.diff(t) ** 2 / 2 + m2 * x2.diff(t) ** 2 / 2
     V = c * (x2 - x1) ** 2 / 2
     forces = {x1: -P_t, x2: -W}
@@ -114,7 +114,7 @@ def build() -> Derivation:
           "Lagrange's equations need T and Π of the model.", "Energies")
     d.add("potential energy", sp.Eq(V_, V),
           "Strain energy of the link, ½·c·(stretch)².")
-    d.add("virtual work", sp.Eq(dA, sum(Q * sp.Symbol(rf"\delta {q.func.__name__}")
+    d.add("virtual work", sp.Eq(dA, sum(Q * sp.Symbol(rf"\delta {sp.latex(q.func(t))}")
                                         for q, Q in forces.items())),
           "P_t acts on m1 and W on m2, both against +x.",
           "The generalized forces are the coefficients of the virtual displacements.")
@@ -124,7 +124,7 @@ def build() -> Derivation:
     d.add("(1)", eq1, "Lagrange's equation for x1 with Q1 = −P_t.",
           title="Equations of motion")
     d.add("(2)", eq2, "Lagrange's equation for x2 with Q2 = −W.")
-    d.add("(3)", sp.Eq(F, sp.diff(V, x2)), "The link force is ∂Π/∂x2 = c·(x2 − x1).",
+    d.add("(3)", sp.Eq(F, sp.factor(sp.diff(V, x2))), "The link force is ∂Π/∂x2 = c·(x2 − x1).",
           title="Force in the elastic link")
 
     rel = relative_coordinate(eq1, eq2, x1, x2, u)
@@ -414,7 +414,6 @@ def scene_report(scene):
         moving = (f"crane stops (v2 = 0) at t = {fq(values['t_v2_zero'], 's')}; "
                   "the model is not valid after that")
     lines = [
-        scene.title,
         f"natural frequency      p = {fq(freq, 'rad/s')}, f = p/2π = {fq(values['f'], 'Hz')}",
         f"rigid-drive link force F_r = {fq(link_rigid / 1e3, 'kN')}",
         f"peak elastic force     F_max = {fq(peak / 1e3, 'kN')} "
