@@ -72,6 +72,25 @@ def cmd_generate(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_accuracy(args: argparse.Namespace) -> int:
+    import importlib
+
+    from .reference import accuracy
+    print(f"{'function':<24} {'hard case':<40} {'points':>6}  max rel. error vs mpmath (50 digits)")
+    for i in _ids(args.ids):
+        cases = getattr(registry.module(i), "hard_cases", None)
+        if cases is None:
+            print(f"{i}: no hard cases defined")
+            continue
+        d = registry.get(i)
+        generated = importlib.import_module(f"crane_sym.generated.{i}")
+        for case, columns in cases().items():
+            for out in d.outputs:
+                row = accuracy(out, getattr(generated, out.name), case, columns)
+                print(f"{out.name:<24} {case:<40} {row.points:>6}  {row.max_rel_error:.2e}")
+    return 0
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from .scenes import load_scene, run_scene
     scene = load_scene(args.scene)
@@ -103,6 +122,9 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--check", action="store_true", help="exit 1 if generated/ is stale")
     p.add_argument("--out", help="folder to write to (default: the package's generated/)")
     p.set_defaults(func=cmd_generate)
+    p = sub.add_parser("accuracy", help="generated functions vs mpmath on the hard cases")
+    p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")
+    p.set_defaults(func=cmd_accuracy)
     p = sub.add_parser("run", help="run a scene: print its results, write its plot")
     p.add_argument("scene", help="scene name or path to a scene TOML file")
     p.add_argument("--out", default=".", help="folder for the plot (default: .)")

@@ -186,3 +186,12 @@ def test_generated_header_names_source_labels_order_and_sympy_version():
     assert f"crane_sym.derivations.{ID}" in head and "000_4ef6efc8a81a3b06.txt" in head
     assert "elastic_force(t, m1, m2, c, P_t, W) -> [N]    eq (14)" in head
     assert f"SymPy {sp.__version__}" in head
+
+
+def test_accuracy_command_prints_every_function_and_case(capsys):
+    assert main(["accuracy", "000"]) == 0
+    lines = capsys.readouterr().out.splitlines()[1:]
+    derivation = registry.get(ID)
+    assert len(lines) == len(derivation.outputs) * len(registry.module(ID).hard_cases())
+    errors = [float(line.split()[-1]) for line in lines if line.startswith("elastic_force")]
+    assert len(errors) == 3 and max(errors) <= 1e-12
