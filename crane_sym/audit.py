@@ -10,7 +10,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .checks import (FAIL, PASS, CheckOutcome,
+from .checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome,
                      dimension_consistency, numeric_equivalence,
                      symbolic_equivalence)
 from .derivation import Derivation
@@ -59,9 +59,14 @@ class _Comparison:
     outcomes: tuple[CheckOutcome, ...]
 
 
-def _compare(reading: sp.Eq, derived: sp.Eq, d: Derivation) -> _Comparison:
+def _compare(reading: sp.Eq, derived: sp.Eq, d: Derivation,
+             tolerance: float = 0.0) -> _Comparison:
+    num = numeric_equivalence(reading, derived, d.symbols, tol=max(tolerance, 1e-20))
+    if tolerance > 0:  # a rounded printed number: only numbers can decide
+        skipped = CheckOutcome("symbolic", INCONCLUSIVE,
+                               f"not tried: the print is rounded (tolerance {tolerance:g})")
+        return _Comparison(num.status == PASS, "numeric", (skipped, num))
     sym = symbolic_equivalence(reading, derived, d.symbols)
-    num = numeric_equivalence(reading, derived, d.symbols)
     if sym.status == PASS and num.status == FAIL:
         raise AuditError(f"{d.id}: symbolic and numeric checks disagree on "
                          f"{sp.sstr(reading)}: {num.detail}")
@@ -83,7 +88,7 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
     if f.printed is None:
         return record(NOT_CHECKABLE, "none", f.not_checkable)
     derived = d.step(f.target).statement
-    as_printed = _compare(f.printed, derived, d)
+    as_printed = _compare(f.printed, derived, d, f.tolerance)
     dim = dimension_consistency(f.printed, d.symbols)
     checks = as_printed.outcomes + (dim,)
     if as_printed.same and dim.status == PASS:
@@ -93,7 +98,7 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
                       f"{dim.detail}", checks)
     why_not = _why_not(as_printed, dim)
     for conv in f.conventions:
-        again = _compare(conv.reading, derived, d)
+        again = _compare(conv.reading, derived, d, f.tolerance)
         dim_again = dimension_consistency(conv.reading, d.symbols)
         if again.same and dim_again.status == PASS:
             return record(

@@ -57,6 +57,10 @@ class PublishedFormula:
         True when OCR damage forced a reconstruction from the text.
     not_checkable : str
         Reason, when ``printed`` is None.
+    tolerance : float
+        Relative tolerance of the numeric comparison. 0 (the default) means
+        exact; a number printed to a few digits takes half a unit of its last
+        digit relative to its value, and is then decided numerically only.
     """
 
     label: str
@@ -68,10 +72,13 @@ class PublishedFormula:
     kind: str = EQUATION
     reconstructed: bool = False
     not_checkable: str = ""
+    tolerance: float = 0.0
 
     def __post_init__(self) -> None:
         if self.kind not in (EQUATION, ASSUMPTION):
             raise ValueError(f"kind must be {EQUATION!r} or {ASSUMPTION!r}")
+        if not 0 <= self.tolerance < 1:
+            raise ValueError(f"{self.label}: tolerance must be in [0, 1)")
         if self.printed is None and not self.not_checkable:
             raise ValueError(f"{self.label}: no transcription and no reason why")
         for relation in [self.printed] + [c.reading for c in self.conventions]:

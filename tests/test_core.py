@@ -166,3 +166,26 @@ def test_constant_coefficient_solution_meets_equation_and_initial_conditions():
     u = sol.solution
     assert sp.simplify(u.diff(t, 2) + w ** 2 * u - F0 / m) == 0
     assert sp.simplify(u.subs(t, 0) - y) == 0 and u.diff(t).subs(t, 0) == 0
+
+
+def test_a_rounded_printed_number_is_judged_within_its_tolerance():
+    K = sp.Symbol("K", positive=True)
+    TABLE.entries.append(PhysicalSymbol(K, sp.S.One * time / time, "1", "factor", DEFINED))
+    try:
+        d = _toy([])
+        d.add("K", sp.Eq(K, sp.sqrt(2)), "A factor.")
+        printed = sp.Eq(K, sp.Float("1.414"))
+        loose = A.audit_formula(d, PublishedFormula("K", "1.414", printed, "toy",
+                                                    tolerance=5e-4))
+        tight = A.audit_formula(d, PublishedFormula("K", "1.414", printed, "toy",
+                                                    tolerance=1e-6))
+        exact = A.audit_formula(d, PublishedFormula("K", "1.414", printed, "toy"))
+    finally:
+        TABLE.entries.pop()
+    assert (loose.verdict, loose.method) == (A.CONFIRMED, "numeric")
+    assert "not tried: the print is rounded" in loose.checks[0].detail
+    assert (tight.verdict, tight.method) == (A.DISCREPANCY, "numeric")
+    assert "1.414" in tight.detail and "1.4142136" in tight.detail
+    assert exact.verdict == A.DISCREPANCY
+    with pytest.raises(ValueError, match="tolerance"):
+        PublishedFormula("K", "1.414", printed, "toy", tolerance=2.0)
