@@ -91,6 +91,41 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_bench(args: argparse.Namespace) -> int:
+    from . import bench, scenes
+    out_dir = Path(args.out)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    everything = []
+    for i in _ids(args.ids):
+        names = [n for n in scenes.list_scenes() if scenes.load_scene(n).derivation == i]
+        if not names or not registry.get(i).outputs:
+            print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)
+            continue
+        scene = scenes.load_scene(names[0])
+        d = registry.get(i)
+        rows = bench.bench(d, scene.parameters, scene.options["duration"], points=args.points)
+        big = bench.throughput(d, scene.parameters, scene.options["duration"],
+                               points=args.throughput_points)
+        everything += rows + big
+        md = out_dir / f"bench_{i}.md"
+        lines = [f"# Bench: {i} (scene {scene.name}, {args.points} points; times are this "
+                 "machine's, ratios from one run)", "", *[f"- {h}" for h in bench.headline(rows)],
+                 "", "## Throughput against one np.cos over the same array", "",
+                 bench.as_markdown(big), "", "## Every function and alternative", "",
+                 bench.as_markdown(rows), ""]
+        md.write_text("\n".join(lines), encoding="utf-8")
+        png = bench.plot(rows, out_dir / f"bench_{i}.png", f"{i}: time against error")
+        if args.format == "table":
+            print("\n".join(lines[:3 + len(bench.headline(rows))]))
+            for r in big:
+                print(f"  throughput {r.function:<24} {r.method:<10} {r.seconds * 1e3:8.1f} ms"
+                      f"  {r.ratio_to_generated:5.2f}x np.cos")
+            print(f"wrote {md} and {png}")
+    if args.format == "json":
+        print(json.dumps(bench.as_dicts(everything), indent=2))
+    return 0
+
+
 def cmd_run(args: argparse.Namespace) -> int:
     from .scenes import load_scene, run_scene
     scene = load_scene(args.scene)
@@ -125,6 +160,14 @@ def parser() -> argparse.ArgumentParser:
     p = sub.add_parser("accuracy", help="generated functions vs mpmath on the hard cases")
     p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")
     p.set_defaults(func=cmd_accuracy)
+    p = sub.add_parser("bench", help="speed against error, with SciPy alternatives")
+    p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--out", default="bench", help="folder for Markdown and PNG (default: bench/)")
+    p.add_argument("--points", type=int, default=2000, help="grid points for the comparison")
+    p.add_argument("--throughput-points", type=int, default=10**7,
+                   help="array length for the np.cos floor comparison")
+    p.set_defaults(func=cmd_bench)
     p = sub.add_parser("run", help="run a scene: print its results, write its plot")
     p.add_argument("scene", help="scene name or path to a scene TOML file")
     p.add_argument("--out", default=".", help="folder for the plot (default: .)")

@@ -68,6 +68,22 @@ class Output:
                 f"{[str(a) for a in self.args]}")
 
 
+@dataclass(frozen=True)
+class ODESystem:
+    """Equations of motion as a user would hand them to a numerical solver.
+
+    The bench integrates them with SciPy as the alternative to the generated
+    closed forms; ``quantities`` maps an output name to the expression, in the
+    coordinates and their first derivatives, that the output computes.
+    """
+
+    name: str
+    equations: tuple[sp.Eq, ...]
+    coordinates: tuple[sp.Expr, ...]
+    initial: tuple[tuple[sp.Expr, sp.Expr], ...]
+    quantities: tuple[tuple[str, sp.Expr], ...]
+
+
 @dataclass
 class Derivation:
     """A paper rebuilt from its equations of motion.
@@ -90,6 +106,8 @@ class Derivation:
         The paper's formulas, transcribed as printed.
     outputs : list of Output
         What ``crane-sym generate`` emits.
+    ode_systems : list of ODESystem
+        The equations of motion in solver-ready form, for the bench.
     """
 
     id: str
@@ -101,6 +119,7 @@ class Derivation:
     steps: list[Step] = field(default_factory=list)
     published: list[PublishedFormula] = field(default_factory=list)
     outputs: list[Output] = field(default_factory=list)
+    ode_systems: list[ODESystem] = field(default_factory=list)
 
     def step(self, label: str) -> Step:
         """The step with this label."""

@@ -18,7 +18,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics.units import force, length, mass, time, velocity
 
-from crane_sym.derivation import Derivation, Output
+from crane_sym.derivation import Derivation, ODESystem, Output
 from crane_sym.elimination import relative_coordinate
 from crane_sym.lagrange import lagrange_equations
 from crane_sym.odes import solve_constant_coefficient
@@ -220,6 +220,15 @@ def build() -> Derivation:
     d.published.extend(PUBLISHED)
     omega = sp.sqrt(rel.omega2)
     d.outputs.extend(_outputs(d, omega))
+    d.ode_systems.extend([
+        ODESystem("absolute coordinates, (1)-(2)", (eq1, eq2), (x1, x2),
+                  ((x1, 0), (x2, 0), (x1.diff(t), v0), (x2.diff(t), v0)),
+                  (("relative_displacement", x2 - x1), ("elastic_force", c * (x2 - x1)),
+                   ("velocity_m1", x1.diff(t)), ("velocity_m2", x2.diff(t)))),
+        ODESystem("relative coordinate, (4)", (rel.equation,), (u,),
+                  ((u, 0), (u.diff(t), 0)),
+                  (("relative_displacement", u), ("elastic_force", c * u))),
+    ])
     return d
 
 
