@@ -6,8 +6,6 @@ this module only holds the data types, so every paper shares one shape.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Sequence
-
 import sympy as sp
 
 from .published import PublishedFormula
@@ -143,11 +141,3 @@ class Derivation:
             raise ValueError(f"{self.id}: step {label!r} added twice")
         self.steps.append(Step(label, statement, how, why, title))
         return statement
-
-
-def rhs_of(steps: Sequence[Step], label: str) -> sp.Expr:
-    """Right-hand side of the step with ``label`` (helper for builders)."""
-    for step in steps:
-        if step.label == label:
-            return step.statement.rhs
-    raise KeyError(label)

@@ -6,7 +6,7 @@ check reads, and what the code generator turns into validated parameters.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Iterable, Iterator
+from typing import Iterator
 
 import sympy as sp
 from sympy.physics.units import Dimension
@@ -97,12 +97,3 @@ class SymbolTable:
     def dimensions(self) -> dict[sp.Basic, Dimension]:
         """Map from SymPy object to dimension, for the dimension check."""
         return {e.expr: e.dimension for e in self.entries}
-
-    def extended(self, more: Iterable[PhysicalSymbol]) -> "SymbolTable":
-        """A new table with ``more`` appended (names must stay unique)."""
-        table = SymbolTable(list(self.entries))
-        for entry in more:
-            if entry.name in table:
-                raise ValueError(f"symbol {entry.name} defined twice")
-            table.entries.append(entry)
-        return table
