@@ -112,7 +112,10 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
                       f"stated assumption ({f.provenance}); {why_not}; {corrected}",
                       checks)
     if dim.status == FAIL:
-        return record(DIMENSION_ERROR, "dimension", f"{dim.detail}; {corrected}", checks)
+        follows = (f"it does follow from step {f.target}, which carries the same error"
+                   if as_printed.same else why_not)
+        return record(DIMENSION_ERROR, "dimension", f"{dim.detail}; {follows}; {corrected}",
+                      checks)
     if not as_printed.same and as_printed.outcomes[1].status == FAIL:
         return record(DISCREPANCY, "numeric", f"{why_not}; {corrected}", checks)
     return record(NOT_CHECKABLE, "none",
