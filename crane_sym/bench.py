@@ -215,7 +215,6 @@ def headline(rows: Sequence[BenchRow], target: float = 1e-9) -> list[str]:
     for name in dict.fromkeys(r.function for r in rows):
         mine = [r for r in rows if r.function == name]
         gen = next(r for r in mine if r.method == "generated")
-        floor = next(r for r in mine if r.method == "np.cos floor")
         ok = [r for r in mine if r.method not in ("generated", "np.cos floor")
               and r.max_error_over_peak <= target]
         text = (f"{name}: {gen.points / gen.seconds:.3g} evals/s, max rel. error "

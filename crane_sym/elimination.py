@@ -23,6 +23,11 @@ class RelativeEquation:
     forcing: sp.Expr
 
     @property
+    def n(self) -> sp.Expr:
+        """Half the coefficient of u' (the ``damping`` of ``crane_sym.duhamel``)."""
+        return self.damping / 2
+
+    @property
     def equation(self) -> sp.Eq:
         t = self.u.args[0]
         return sp.Eq(self.u.diff(t, 2) + self.damping * self.u.diff(t)

@@ -15,6 +15,7 @@ The module does nothing on import; ``build()`` returns the ``Derivation``.
 """
 from __future__ import annotations
 
+import numpy as np
 import sympy as sp
 from sympy.physics.units import force, length, mass, time, velocity
 
@@ -453,13 +454,11 @@ def scene_report(scene):
 
 
 # --- Hard cases ---------------------------------------------------------------------
-def hard_cases(points: int = 400, seed: int = 20261121) -> dict[str, dict[str, "np.ndarray"]]:
+def hard_cases(points: int = 400, seed: int = 20261121) -> dict[str, dict[str, np.ndarray]]:
     """Seeded input grids where a naive closed form loses accuracy.
 
     Returns case name -> columns (one array per argument of the outputs).
     """
-    import numpy as np
-
     rng = np.random.default_rng(seed)
 
     def typical(n: int) -> dict[str, np.ndarray]:
