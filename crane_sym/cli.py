@@ -39,7 +39,10 @@ def cmd_audit(args: argparse.Namespace) -> int:
     print(FORMATS[args.format](records))
     if args.profile:
         for i, b, a in timings:
-            print(f"{i}: build {b:.2f} s, audit {a:.2f} s", file=sys.stderr)
+            print(f"{i}: build {b:.2f} s, audit {a:.2f} s; slowest steps:", file=sys.stderr)
+            steps = sorted(registry.get(i).steps, key=lambda s: -s.seconds)[:5]
+            for s in steps:
+                print(f"    {s.seconds:7.3f} s  {s.label}", file=sys.stderr)
     return 0
 
 

@@ -5,6 +5,7 @@ this module only holds the data types, so every paper shares one shape.
 """
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
 import sympy as sp
 
@@ -36,6 +37,7 @@ class Step:
     how: str
     why: str = ""
     title: str = ""
+    seconds: float = field(default=0.0, compare=False)
 
     @property
     def numbered(self) -> bool:
@@ -118,6 +120,7 @@ class Derivation:
     published: list[PublishedFormula] = field(default_factory=list)
     outputs: list[Output] = field(default_factory=list)
     ode_systems: list[ODESystem] = field(default_factory=list)
+    _clock: float = field(default_factory=time.perf_counter, repr=False, compare=False)
 
     def step(self, label: str) -> Step:
         """The step with this label."""
@@ -136,8 +139,11 @@ class Derivation:
     def add(self, label: str, statement: sp.Eq, how: str, why: str = "",
             title: str = "") -> sp.Eq:
         """Append a step and return its statement, so a derivation reads
-        ``eq4 = d.add("(4)", ..., how="...")``."""
+        ``eq4 = d.add("(4)", ..., how="...")``. The step records the time
+        spent since the previous one (``crane-sym audit --profile``)."""
         if any(s.label == label for s in self.steps):
             raise ValueError(f"{self.id}: step {label!r} added twice")
-        self.steps.append(Step(label, statement, how, why, title))
+        now = time.perf_counter()
+        self.steps.append(Step(label, statement, how, why, title, now - self._clock))
+        self._clock = now
         return statement
