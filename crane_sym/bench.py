@@ -102,6 +102,25 @@ def throughput(d: Derivation, parameters: dict[str, float], duration: float,
     return rows
 
 
+def scene_comparison(d: Derivation, scene, points: int = 10**6) -> list[str]:
+    """Size (SymPy operation count) and speed of the scene-specialized module
+    against the general one, for each output the scene asks for."""
+    from .specialize import module_name, operation_count, specialize
+    general = importlib.import_module(f"crane_sym.generated.{d.id}")
+    special = importlib.import_module(f"crane_sym.generated.{module_name(scene)[:-3]}")
+    t = np.linspace(0.0, scene.options["duration"], points)
+    lines = []
+    for out, small in zip([d.output(n) for n in scene.outputs], specialize(d, scene)):
+        args = [t if str(a) == "t" else scene.parameters[str(a)] for a in out.args]
+        big_time = _best_time(lambda: getattr(general, out.name)(*args), budget=1.0)
+        small_time = _best_time(lambda: getattr(special, out.name)(t), budget=1.0)
+        lines.append(f"{out.name}: operations {operation_count([out])} -> "
+                     f"{operation_count([small])}, time {big_time * 1e3:.1f} -> "
+                     f"{small_time * 1e3:.1f} ms on {points} points "
+                     f"({big_time / small_time:.2f}x faster)")
+    return lines
+
+
 def _first_order(system: ODESystem, params: Sequence[sp.Symbol]):
     """``f(t, y, *params)``, the initial-state function and quantity functions."""
     t = system.coordinates[0].args[0]

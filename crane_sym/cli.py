@@ -58,9 +58,17 @@ def cmd_walkthrough(args: argparse.Namespace) -> int:
 
 
 def cmd_generate(args: argparse.Namespace) -> int:
-    from . import codegen
-    directory = Path(args.out) if args.out else codegen.default_directory()
-    files = codegen.rendered([registry.get(i) for i in registry.ids()])
+    from . import codegen, specialize
+    from .generate import all_files
+    if args.scene:
+        from .scenes import load_scene
+        scene = load_scene(args.scene)
+        directory = Path(args.out or ".")
+        files = {specialize.module_name(scene):
+                 specialize.render_scene_module(registry.get(scene.derivation), scene)}
+    else:
+        directory = Path(args.out) if args.out else codegen.default_directory()
+        files = all_files()
     if args.check:
         bad = codegen.stale(files, directory)
         for name in bad:
@@ -110,9 +118,12 @@ def cmd_bench(args: argparse.Namespace) -> int:
         big = bench.throughput(d, scene.parameters, scene.options["duration"],
                                points=args.throughput_points)
         everything += rows + big
+        sized = bench.scene_comparison(d, scene, points=min(args.throughput_points, 10**6))
         md = out_dir / f"bench_{i}.md"
         lines = [f"# Bench: {i} (scene {scene.name}, {args.points} points; times are this "
                  "machine's, ratios from one run)", "", *[f"- {h}" for h in bench.headline(rows)],
+                 "", f"## Scene module {scene.name} against the general module", "",
+                 *[f"- {s}" for s in sized],
                  "", "## Throughput against one np.cos over the same array", "",
                  bench.as_markdown(big), "", "## Every function and alternative", "",
                  bench.as_markdown(rows), ""]
@@ -120,6 +131,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
         png = bench.plot(rows, out_dir / f"bench_{i}.png", f"{i}: time against error")
         if args.format == "table":
             print("\n".join(lines[:3 + len(bench.headline(rows))]))
+            print("\n".join(f"  scene module: {s}" for s in sized))
             for r in big:
                 print(f"  throughput {r.function:<24} {r.method:<10} {r.seconds * 1e3:8.1f} ms"
                       f"  {r.ratio_to_generated:5.2f}x np.cos")
@@ -158,7 +170,10 @@ def parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_walkthrough)
     p = sub.add_parser("generate", help="write generated/ (or --check it)")
     p.add_argument("--check", action="store_true", help="exit 1 if generated/ is stale")
-    p.add_argument("--out", help="folder to write to (default: the package's generated/)")
+    p.add_argument("--out", help="folder to write to (default: the package's generated/, "
+                   "or . with --scene)")
+    p.add_argument("--scene", help="write only the module specialized to this scene "
+                   "(name or TOML path)")
     p.set_defaults(func=cmd_generate)
     p = sub.add_parser("accuracy", help="generated functions vs mpmath on the hard cases")
     p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")

@@ -50,20 +50,24 @@ class _Printer(NumPyPrinter):
         return super()._print_Pow(expr, rational=rational)
 
 
+def _dd_literal(value: sp.Expr) -> str:
+    """A number as an exact double-double literal ``(hi, lo)``, from 50 digits."""
+    exact = sp.N(value, 50)
+    hi = float(exact)
+    lo = float(sp.N(exact - sp.Float(hi, 50), 50))
+    return f"({hi!r}, {lo!r})"
+
+
 class _DoubleDoublePrinter(_Printer):
     """Prints a parameter-only expression as double-double kernel calls."""
 
+    def _print(self, expr: sp.Basic, **kwargs) -> str:
+        if isinstance(expr, sp.Basic) and expr.is_number:
+            return _dd_literal(expr)
+        return super()._print(expr, **kwargs)
+
     def _print_Symbol(self, expr: sp.Symbol) -> str:
         return f"_dd({expr.name})"
-
-    def _print_Integer(self, expr: sp.Integer) -> str:
-        return f"_dd({float(expr)!r})"
-
-    def _print_Rational(self, expr: sp.Rational) -> str:
-        return f"_dd_div(_dd({float(expr.p)!r}), _dd({float(expr.q)!r}))"
-
-    def _print_Pi(self, expr: sp.Basic) -> str:
-        return "(np.pi, 1.2246467991473532e-16)"
 
     def _chain(self, kernel: str, args: Sequence[sp.Expr]) -> str:
         text = self._print(args[0])
@@ -201,9 +205,9 @@ def _kernel_source(functions: Sequence[str]) -> str:
 
 
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
-                  rules: Sequence[Rule] | None = None) -> str:
+                  rules: Sequence[Rule] | None = None, scene_note: str = "") -> str:
     """Full source of ``generated/<d.id>.py``; deterministic for a given
-    derivation and SymPy version."""
+    derivation and SymPy version. ``scene_note`` describes a specialization."""
     outputs = list(d.outputs if outputs is None else outputs)
     labels = sorted({lab for o in outputs for lab in o.labels},
                     key=lambda s: (not s.startswith("("), len(s), s))
@@ -212,6 +216,7 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     header = (f'"""Numeric functions for derivation {d.id!r}. Generated; do not edit.\n\n'
               f"Source: crane_sym.derivations.{d.id} (paper {d.paper}:\n"
               f"{d.title}).\n"
+              + (f"{scene_note}\n" if scene_note else "") +
               f"Equations: {', '.join(labels)}.\n"
               f"Printed by SymPy {sp.__version__} with crane_sym {__version__}; "
               "regenerate with `crane-sym generate`.\n\n"
@@ -237,10 +242,13 @@ def default_directory() -> Path:
     return Path(package.__file__).parent
 
 
-def rendered(derivations: Sequence[Derivation]) -> dict[str, str]:
-    """File name -> source for every derivation with outputs."""
+def rendered(derivations: Sequence[Derivation],
+             extra: dict[str, str] | None = None) -> dict[str, str]:
+    """File name -> source for every derivation with outputs, plus ``extra``
+    modules (scene-specialized ones), and the package's ``__init__``."""
     files = {f"{d.id}.py": render_module(d) for d in derivations if d.outputs}
-    files["__init__.py"] = render_package_init([d.id for d in derivations if d.outputs])
+    files.update(extra or {})
+    files["__init__.py"] = render_package_init([name[:-3] for name in files])
     return files
 
 

@@ -126,6 +126,19 @@ def sin_squared_form(expr: sp.Expr) -> sp.Expr:
     return sp.factor_terms(expr)
 
 
+def fold_constants(expr: sp.Expr) -> sp.Expr:
+    """Evaluate every numeric subexpression that is not a rational number at
+    40 digits (``pi*sqrt(858)/13 -> 7.0...``), so the printed constant is the
+    correctly rounded double; exponents are kept (``sqrt`` stays ``sqrt``)."""
+    if expr.is_Rational or (expr.is_Atom and not expr.is_number):
+        return expr
+    if expr.is_number:
+        return sp.Float(sp.N(expr, 40), 40)
+    if isinstance(expr, sp.Pow):
+        return sp.Pow(fold_constants(expr.base), expr.exp)
+    return expr.func(*[fold_constants(a) for a in expr.args])
+
+
 #: Rules every generated expression goes through, in order.
 DEFAULT_RULES: tuple[Rule, ...] = (
     sin_squared_form,
@@ -133,6 +146,7 @@ DEFAULT_RULES: tuple[Rule, ...] = (
     exact_difference_of_products,
     expm1_opt,
     log1p_opt,
+    fold_constants,
 )
 
 

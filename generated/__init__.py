@@ -3,4 +3,5 @@
 
 Modules:
     travel_braking
+    scene_overhead_crane_50t
 """

@@ -170,7 +170,7 @@ def relative_displacement(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_mul(_dd(2.0), _dd_sqrt(_dd(m1))), _dd_sqrt(_dd(m2))))
+    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_mul((2.0, 0.0), _dd_sqrt(_dd(m1))), _dd_sqrt(_dd(m2))))
     k0 = -2*_diff_of_products(W, m1, P_t, m2)/(c*(m1 + m2))
     return k0*_sin_phase(t, q0)**2
 
@@ -204,7 +204,7 @@ def elastic_force(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_mul(_dd(2.0), _dd_sqrt(_dd(m1))), _dd_sqrt(_dd(m2))))
+    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_mul((2.0, 0.0), _dd_sqrt(_dd(m1))), _dd_sqrt(_dd(m2))))
     k0 = -2*_diff_of_products(W, m1, P_t, m2)/(m1 + m2)
     return k0*_sin_phase(t, q0)**2
 
@@ -255,7 +255,7 @@ def peak_time(m1, m2, c):
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
-    return np.pi*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2))
+    return 3.141592653589793*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2))
 
 
 def rigid_link_force(m1, m2, P_t, W):

@@ -1,0 +1,65 @@
+"""Scene-specialized code: model only what a scene needs.
+
+A scene names the outputs it wants and gives every parameter a value. The
+specialized module keeps only those outputs, folds the values in as exact
+numbers (so SymPy removes every term that vanishes for the scene before
+printing) and leaves time as the only argument.
+"""
+from __future__ import annotations
+
+from typing import Callable
+
+import sympy as sp
+
+from .codegen import render_module
+from .derivation import Derivation, Output
+from .scenes import Scene, list_scenes, load_scene
+from .symbols import TIME
+
+
+def scene_values(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
+    """The scene's parameter values as exact SymPy numbers (SI)."""
+    return {d.symbols[name].expr: sp.Rational(value) for name, value in scene.parameters.items()}
+
+
+def specialize(d: Derivation, scene: Scene) -> list[Output]:
+    """The scene's outputs with its values folded in; time stays an argument."""
+    values = scene_values(d, scene)
+    keep = {e.expr for e in d.symbols.with_role(TIME)}
+    outputs = []
+    for name in scene.outputs:
+        out = d.output(name)
+        expr = out.expr.xreplace({s: v for s, v in values.items() if s in out.args})
+        args = tuple(a for a in out.args if a in keep or a not in values)
+        outputs.append(Output(out.name, expr, args, out.labels,
+                              f"{out.summary} Specialized to scene {scene.name!r}.", out.unit))
+    return outputs
+
+
+def module_name(scene: Scene) -> str:
+    """File name of the specialized module."""
+    return f"scene_{scene.name}.py"
+
+
+def render_scene_module(d: Derivation, scene: Scene) -> str:
+    """Source of the module specialized to ``scene``."""
+    given = ", ".join(f"{k} = {v!r} {d.symbols[k].unit}" for k, v in scene.parameters.items())
+    note = (f"Specialized to scene {scene.name!r} ({scene.title}): outputs "
+            f"{', '.join(scene.outputs)}; folded in: {given}.")
+    return render_module(d, specialize(d, scene), scene_note=note)
+
+
+def operation_count(outputs: list[Output]) -> int:
+    """SymPy operation count of the outputs' expressions (a size measure)."""
+    return sum(sp.count_ops(o.expr) for o in outputs)
+
+
+def shipped_scene_modules(get: Callable[[str], Derivation]) -> dict[str, str]:
+    """File name -> source of the specialized module of every shipped scene."""
+    files = {}
+    for name in list_scenes():
+        scene = load_scene(name)
+        d = get(scene.derivation)
+        if d.outputs:
+            files[module_name(scene)] = render_scene_module(d, scene)
+    return files
