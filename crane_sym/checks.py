@@ -63,6 +63,10 @@ def symbolic_equivalence(printed: sp.Eq, derived: sp.Eq,
     rp, rd = residual(printed), residual(derived)
     if sp.simplify(rp - rd) == 0:
         return CheckOutcome("symbolic", PASS, "printed − derived simplifies to 0")
+    if printed.lhs == derived.lhs and printed.lhs.free_symbols & unknowns_of(table):
+        # Both define the same quantity: only equal right-hand sides agree.
+        return CheckOutcome("symbolic", INCONCLUSIVE,
+                            "the right-hand sides did not simplify to the same expression")
     if sp.simplify(rp + rd) == 0:
         return CheckOutcome("symbolic", PASS,
                             "the same equation with its sides exchanged")
@@ -122,7 +126,8 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
     with mpmath.workdps(dps):
         for _ in range(points):
             pvals = [mpmath.mpf(_draw(e, rng)) for e in params]
-            at = ", ".join(f"{e.name}={mpmath.nstr(v, 6)}" for e, v in zip(params, pvals))
+            at = ", ".join(f"{e.name}={mpmath.nstr(v, 6)}" for e, v in zip(params, pvals)) \
+                or "a sampled point"
             if same_lhs:
                 uvals = draw_unknowns()
                 a, b = f_p(*pvals, *uvals), f_d(*pvals, *uvals)

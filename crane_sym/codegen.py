@@ -127,6 +127,8 @@ def hoist(expr: sp.Expr, varying: set[sp.Symbol]
             return name(e)
         if e.is_Atom:
             return e
+        if isinstance(e, sp.Piecewise):  # conditions stay as printed
+            return sp.Piecewise(*[(visit(branch), cond) for branch, cond in e.args])
         if isinstance(e, (sin_phase, cos_phase)):
             for q, value in phases:
                 if value == e.args[1]:

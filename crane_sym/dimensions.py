@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from typing import Mapping
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 from sympy.physics.units import Dimension
 from sympy.physics.units.systems.si import dimsys_SI
 
@@ -84,6 +85,18 @@ def dimension_of(expr: sp.Basic, dims: Mapping[sp.Basic, DimVec]) -> DimVec:
         return DIMENSIONLESS
     if isinstance(expr, sp.Symbol):
         raise KeyError(f"symbol {expr} has no dimension in the symbol table")
+    if isinstance(expr, AppliedUndef):  # S(theta) has the dimension of S(t)
+        for key, d in dims.items():
+            if isinstance(key, AppliedUndef) and key.func == expr.func:
+                return d
+        raise KeyError(f"function {expr.func} has no dimension in the symbol table")
+    if isinstance(expr, sp.Integral):
+        d = dimension_of(expr.function, dims)
+        for limits in expr.limits:
+            d = _mul(d, dimension_of(limits[0], dims))
+        return d
+    if isinstance(expr, sp.Piecewise):
+        return _common([branch for branch, _ in expr.args], dims, f"branches of {expr}")
     if isinstance(expr, sp.Derivative):
         d = dimension_of(expr.expr, dims)
         for var, count in expr.variable_count:

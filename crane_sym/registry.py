@@ -13,9 +13,10 @@ from .derivation import Derivation
 #: id -> module under ``crane_sym.derivations``, in paper order.
 DERIVATIONS: dict[str, str] = {
     "travel_braking": "crane_sym.derivations.travel_braking",
+    "hoist_startup": "crane_sym.derivations.hoist_startup",
 }
 #: Paper file-number prefixes accepted as ids on the command line.
-ALIASES: dict[str, str] = {"000": "travel_braking"}
+ALIASES: dict[str, str] = {"000": "travel_braking", "002": "hoist_startup"}
 
 
 def ids() -> list[str]:

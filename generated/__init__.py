@@ -3,5 +3,6 @@
 
 Modules:
     travel_braking
+    hoist_startup
     scene_overhead_crane_50t
 """

@@ -189,3 +189,16 @@ def test_a_rounded_printed_number_is_judged_within_its_tolerance():
     assert exact.verdict == A.DISCREPANCY
     with pytest.raises(ValueError, match="tolerance"):
         PublishedFormula("K", "1.414", printed, "toy", tolerance=2.0)
+
+
+def test_dimensions_of_integrals_piecewise_and_functions_of_other_arguments():
+    theta = sp.Symbol("theta", nonnegative=True)
+    S = sp.Function("S")
+    dims = {e.expr: vector(e.dimension) for e in TABLE}
+    dims[S(t)] = vector(force)
+    dims[theta] = vector(time)
+    impulse = sp.Integral(S(theta) * sp.sin(w * (t - theta)), (theta, 0, t))
+    assert dimension_of(impulse, dims) == vector(force * time)
+    assert dimension_of(sp.Piecewise((F0, t < 1), (2 * F0, True)), dims) == vector(force)
+    report = check_equation(y, sp.Piecewise((y, t < 1), (F0, True)), dims)
+    assert not report.consistent
