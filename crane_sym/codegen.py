@@ -38,6 +38,12 @@ class _Printer(NumPyPrinter):
     def _print_diff_of_products(self, expr: sp.Basic) -> str:
         return "_diff_of_products(" + ", ".join(self._print(a) for a in expr.args) + ")"
 
+    def _print_cos_remainder(self, expr: sp.Basic) -> str:
+        return f"_cos_remainder({self._print(expr.args[0])}, {int(expr.args[1])})"
+
+    def _print_sin_remainder(self, expr: sp.Basic) -> str:
+        return f"_sin_remainder({self._print(expr.args[0])}, {int(expr.args[1])})"
+
     def _print_sin_phase(self, expr: sp.Basic) -> str:
         return f"_sin_phase({self._print(expr.args[0])}, {self._print(expr.args[1])})"
 

@@ -113,6 +113,39 @@ def _cos_phase(t, k):
     return np.cos(hi) - np.sin(hi) * lo
 
 
+def _taylor_remainder(x, n, odd):
+    """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
+    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    x = np.asarray(x, dtype=float)
+    direct = np.cos(x) if odd == 0 else np.sin(x)
+    term = np.ones_like(x) if odd == 0 else x.copy()
+    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
+        direct = direct - term
+        m = 2 * k + odd
+        term = term * (-x * x) / ((m + 1) * (m + 2))
+    small = np.abs(x) < 2.0 * n + 2.0
+    if np.any(small):
+        xs, t = x[small], term[small]
+        total = np.zeros_like(xs)
+        for k in range(n, n + 60):  # |x| < 2n + 2: terms fall below 1e-17 of the first
+            total = total + t
+            m = 2 * k + odd
+            t = t * (-xs * xs) / ((m + 1) * (m + 2))
+        direct = np.array(direct, dtype=float)
+        direct[small] = total
+    return direct
+
+
+def _cos_remainder(x, n):
+    """cos(x) - sum_{k<n} (-1)**k x**(2k)/(2k)!, accurate at small |x|."""
+    return _taylor_remainder(x, n, 0)
+
+
+def _sin_remainder(x, n):
+    """sin(x) - sum_{k<n} (-1)**k x**(2k+1)/(2k+1)!, accurate at small |x|."""
+    return _taylor_remainder(x, n, 1)
+
+
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {
     "_checked": (),
@@ -125,6 +158,8 @@ DEPENDS = {
     "_dd_sqrt": ("_two_product", "_quick_two_sum"),
     "_phase": ("_two_product",),
     "_sin_phase": ("_phase",), "_cos_phase": ("_phase",),
+    "_taylor_remainder": (),
+    "_cos_remainder": ("_taylor_remainder",), "_sin_remainder": ("_taylor_remainder",),
 }
 
 

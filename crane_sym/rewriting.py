@@ -110,7 +110,7 @@ def accurate_phase(varying: set[sp.Symbol]) -> Rule:
     def rewrite(f: sp.Function) -> sp.Expr:
         arg = f.args[0]
         for t in sorted(varying & arg.free_symbols, key=str):
-            k = sp.simplify(arg / t)
+            k = sp.cancel(arg / t)
             if not (k.free_symbols & varying):
                 return (sin_phase if isinstance(f, sp.sin) else cos_phase)(t, k)
         return f
@@ -119,6 +119,122 @@ def accurate_phase(varying: set[sp.Symbol]) -> Rule:
         return expr.replace(lambda e: isinstance(e, (sp.sin, sp.cos)), rewrite)
 
     return rule
+
+
+def _taylor(x: sp.Expr, n: int, odd: int) -> sp.Expr:
+    return sum(((-1) ** k * x ** (2 * k + odd) / sp.factorial(2 * k + odd)
+                for k in range(n)), sp.Integer(0))
+
+
+class cos_remainder(sp.Function):
+    """``cos(x) − Σ_{k<n} (−1)^k x^{2k}/(2k)!``, evaluated by its series where
+    the difference cancels (small x)."""
+
+    nargs = 2
+
+    def _eval_rewrite_as_cos(self, x, n, **kwargs):
+        return sp.cos(x) - _taylor(x, int(n), 0)
+
+
+class sin_remainder(sp.Function):
+    """``sin(x) − Σ_{k<n} (−1)^k x^{2k+1}/(2k+1)!`` (``x − sin x`` is
+    ``−sin_remainder(x, 1)``)."""
+
+    nargs = 2
+
+    def _eval_rewrite_as_sin(self, x, n, **kwargs):
+        return sp.sin(x) - _taylor(x, int(n), 1)
+
+
+def taylor_remainder(varying: set[sp.Symbol]) -> Rule:
+    """Rule: ``c·cos(x) − c·(1 − x²/2 + …)`` → ``c·cos_remainder(x, n)``, and
+    likewise for sin, for ``x`` linear in one array argument. The responses
+    to polynomial loads are made of such differences; at small x they cancel
+    to nothing in floating point."""
+    def rewrite(add: sp.Add) -> sp.Expr:
+        windows = add.atoms(sp.Heaviside, sp.Piecewise)
+        if any(w.free_symbols & varying for w in windows):
+            return add  # a coefficient would depend on x; the children are visited
+        for f in sorted(add.atoms(sp.cos, sp.sin), key=sp.default_sort_key):
+            arg = f.args[0]
+            found = [v for v in sorted(varying, key=str) if arg.has(v)]
+            if len(found) != 1 or arg.has(diff_of_products, sin_phase, cos_phase):
+                continue
+            v = found[0]
+            slope = sp.diff(arg, v)
+            if slope == 0 or slope.has(v):
+                continue
+            x = sp.Dummy("x")
+            in_x = sp.expand(add.xreplace({v: (x - arg.subs(v, 0)) / slope}))
+            parts = sp.collect(in_x, f.func(x), evaluate=False)
+            c, rest = parts.get(f.func(x)), parts.get(sp.S.One, sp.S.Zero)
+            if c is None or c.has(x) or set(parts) - {f.func(x), sp.S.One}:
+                continue
+            odd = int(f.func is sp.sin)
+
+            def coefficient(power: int) -> sp.Expr:
+                if power == 0:
+                    return rest.as_independent(x, as_Add=True)[0]
+                return rest.coeff(x, power)
+
+            n = 0
+            while sp.cancel(coefficient(2 * n + odd)
+                            + c * (-1) ** n / sp.factorial(2 * n + odd)) == 0:
+                n += 1
+            if n < 2 - odd:  # 1 - cos x is left to cos_pair_to_sin_squared
+                continue
+            remainder = (sin_remainder if odd else cos_remainder)(x, n)
+            new = c * remainder + sp.expand(rest + c * _taylor(x, n, odd))
+            return new.xreplace({x: arg})
+        return add
+
+    memo: dict[sp.Basic, sp.Basic] = {}
+
+    def rule(expr: sp.Expr) -> sp.Expr:
+        # Top-down: the widest sum shows the longest Taylor polynomial.
+        if expr.is_Atom or not expr.has(sp.sin, sp.cos):
+            return expr
+        if expr not in memo:
+            new = rewrite(expr) if expr.is_Add else expr
+            memo[expr] = (rule(new) if new != expr
+                          else expr.func(*[rule(a) for a in expr.args]))
+        return memo[expr]
+
+    return rule
+
+
+def trig_difference_to_product(expr: sp.Expr) -> sp.Expr:
+    """``k·cos A − k·cos B → −2k·sin((A+B)/2)·sin((A−B)/2)`` (and the sine
+    analogue): the small factor sin((A−B)/2) is computed directly instead of
+    as the difference of two nearly equal cosines."""
+    def split(term: sp.Expr):
+        trig = [f for f in sp.Mul.make_args(term) if isinstance(f, (sp.cos, sp.sin))]
+        if len(trig) != 1:
+            return None
+        return trig[0].func, sp.Mul(*[f for f in sp.Mul.make_args(term) if f is not trig[0]]), trig[0].args[0]
+
+    def rewrite(add: sp.Add) -> sp.Expr:
+        terms = list(add.args)
+        parsed = [split(term) for term in terms]
+        for i, pi in enumerate(parsed):
+            for j in range(i + 1, len(terms)):
+                pj = parsed[j]
+                if pi is None or pj is None or pi[0] is not pj[0] or pi[2] == pj[2]:
+                    continue
+                if sp.expand(pi[1] + pj[1]) != 0:
+                    continue
+                func, k, a = pi
+                b = pj[2]
+                half_sum, half_diff = (a + b) / 2, (a - b) / 2
+                if func is sp.cos:
+                    product = -2 * k * sp.sin(half_sum) * sp.sin(half_diff)
+                else:
+                    product = 2 * k * sp.cos(half_sum) * sp.sin(half_diff)
+                rest = [t for n, t in enumerate(terms) if n not in (i, j)]
+                return sp.Add(product, *rest)
+        return add
+
+    return expr.replace(lambda e: e.is_Add and e.has(sp.sin, sp.cos), rewrite)
 
 
 def sin_squared_form(expr: sp.Expr) -> sp.Expr:
@@ -139,20 +255,48 @@ def fold_constants(expr: sp.Expr) -> sp.Expr:
     return expr.func(*[fold_constants(a) for a in expr.args])
 
 
+def factor_polynomials(varying: set[sp.Symbol]) -> Rule:
+    """Rule: a sum that is a polynomial of degree >= 2 in an array argument is
+    factored (``12t³/t_n³ − 24t²/t_n² + 12t/t_n → 12t(t − t_n)²/t_n³``), so
+    it does not cancel near its real roots."""
+    def rule(expr: sp.Expr) -> sp.Expr:
+        if expr.is_Atom:
+            return expr
+        if expr.is_Add:
+            for v in sorted(varying & expr.free_symbols, key=str):
+                if expr.is_polynomial(v) and sp.degree(expr, v) >= 2:
+                    factored = sp.factor(expr)
+                    if factored != expr and not factored.is_Add:
+                        return factored
+        return expr.func(*[rule(a) for a in expr.args])
+
+    return rule
+
+
+def _only_with(head: type, rule: Rule) -> Rule:
+    """``rule`` applied only to expressions that contain ``head`` (SymPy's
+    expm1/log1p optimizations are slow to find nothing)."""
+    def guarded(expr: sp.Expr) -> sp.Expr:
+        return rule(expr) if expr.has(head) else expr
+    guarded.__name__ = getattr(rule, "__name__", type(rule).__name__)
+    return guarded
+
+
 #: Rules every generated expression goes through, in order.
 DEFAULT_RULES: tuple[Rule, ...] = (
     sin_squared_form,
     cos_pair_to_sin_squared,
     exact_difference_of_products,
-    expm1_opt,
-    log1p_opt,
+    _only_with(sp.exp, expm1_opt),
+    _only_with(sp.log, log1p_opt),
     fold_constants,
 )
 
 
 def rules_for(varying: set[sp.Symbol]) -> tuple[Rule, ...]:
     """The rules for a function whose array arguments are ``varying``."""
-    return DEFAULT_RULES + (accurate_phase(varying),)
+    return ((factor_polynomials(varying), taylor_remainder(varying)) + DEFAULT_RULES[:2]
+            + (trig_difference_to_product,) + DEFAULT_RULES[2:] + (accurate_phase(varying),))
 
 
 def optimize(expr: sp.Expr, rules: Sequence[Rule] = DEFAULT_RULES) -> sp.Expr:

@@ -134,6 +134,39 @@ def _cos_phase(t, k):
     return np.cos(hi) - np.sin(hi) * lo
 
 
+def _taylor_remainder(x, n, odd):
+    """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
+    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    x = np.asarray(x, dtype=float)
+    direct = np.cos(x) if odd == 0 else np.sin(x)
+    term = np.ones_like(x) if odd == 0 else x.copy()
+    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
+        direct = direct - term
+        m = 2 * k + odd
+        term = term * (-x * x) / ((m + 1) * (m + 2))
+    small = np.abs(x) < 2.0 * n + 2.0
+    if np.any(small):
+        xs, t = x[small], term[small]
+        total = np.zeros_like(xs)
+        for k in range(n, n + 60):  # |x| < 2n + 2: terms fall below 1e-17 of the first
+            total = total + t
+            m = 2 * k + odd
+            t = t * (-xs * xs) / ((m + 1) * (m + 2))
+        direct = np.array(direct, dtype=float)
+        direct[small] = total
+    return direct
+
+
+def _cos_remainder(x, n):
+    """cos(x) - sum_{k<n} (-1)**k x**(2k)/(2k)!, accurate at small |x|."""
+    return _taylor_remainder(x, n, 0)
+
+
+def _sin_remainder(x, n):
+    """sin(x) - sum_{k<n} (-1)**k x**(2k+1)/(2k+1)!, accurate at small |x|."""
+    return _taylor_remainder(x, n, 1)
+
+
 def natural_frequency(m1, m2, C):
     """Natural circular frequency Omega of the rope stretch. Eq (2).
 
@@ -224,9 +257,8 @@ def dynamic_coefficient_ramp(t, Omega, t_n):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    k0 = 1/(Omega*t_n)
-    return k0*(Omega*t - _sin_phase(t, q0))
+    k0 = -1/(Omega*t_n)
+    return k0*_sin_remainder(Omega*t, 1)
 
 
 def dynamic_coefficient_pulse(t, Omega, theta):
@@ -249,10 +281,11 @@ def dynamic_coefficient_pulse(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
+    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
     x0 = -theta
-    return 2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_phase(t, q1)**2 + (np.cos(Omega*(t + x0)) - _cos_phase(t, q0))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))
+    x1 = (1/2)*Omega
+    k4 = 2*np.sin(theta*x1)
+    return k4*np.sin(x1*(2*t + x0))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)) + 2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_phase(t, q0)**2
 
 
 def pulse_peak_factor(Omega, theta):
@@ -317,12 +350,12 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    q0 = _dd(Omega)
     x0 = -theta
-    x1 = -_sin_phase(t, q0)
-    k2 = Omega*theta
-    k4 = 1/(Omega*theta)
-    return k4*((1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(Omega*t + x1) + (k2 + x1 + np.sin(Omega*(t + x0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))
+    x1 = (1/2)*Omega
+    k2 = -2*np.sin(theta*x1)
+    k3 = Omega*theta
+    k6 = 1/(Omega*theta)
+    return k6*(-(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_remainder(Omega*t, 1) + (k2*np.cos(x1*(2*t + x0)) + k3)*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))
 
 
 def ramp_hold_peak_factor(Omega, theta):
@@ -380,26 +413,23 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
+    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
     x0 = -tau_0
-    x1 = 1/(Omega)
-    x2 = 1/(tau_0)
-    x3 = x1*x2
-    x4 = 1/(m1)
-    x5 = g*m2
-    x6 = -t_n
-    x7 = v0*(m1 + m2)/t_n
-    x8 = _sin_phase(t, q1)**2
-    x9 = _sin_phase(t, q0)
-    x10 = _diff_of_products(t, Omega, Omega, tau_0)
-    k1 = (1/2)*Omega
-    k3 = -x3
-    k8 = -g
-    k9 = 2*x4*x5
-    k13 = -x4*x7
-    k14 = m1/(x5 + x7)
-    return k14*(k13*(-2*x8*(1 - (np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + (-np.cos(Omega*(t + x6)) + _cos_phase(t, q0))*(np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + k8*(x2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(-t + x1*x9) + (k3*np.sin(x10) + x3*x9 - 2*np.sin(k1*(t + x0))**2 - np.cos(x10))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k9*x8)
+    x1 = (1/2)*Omega
+    x2 = 1/(Omega*tau_0)
+    x3 = g*m2
+    x4 = 2/m1
+    x5 = -t_n
+    x6 = v0*(m1 + m2)/t_n
+    x7 = _sin_phase(t, q0)**2
+    k2 = -1/2*tau_0
+    k3 = 2*x2*np.sin(tau_0*x1)
+    k7 = -g
+    k8 = x3*x4
+    k13 = np.sin(t_n*x1)
+    k14 = x4*x6
+    k15 = m1/(x3 + x6)
+    return k15*(k14*(k13*np.sin(x1*(2*t + x5))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + x7*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))) + k7*(x2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_remainder(Omega*t, 1) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*x7)
 
 
 def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
@@ -437,29 +467,28 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
+    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
     x0 = -tau_0
-    x1 = 1/(Omega)
-    x2 = 1/(tau_0)
-    x3 = x1*x2
+    x1 = (1/2)*Omega
+    x2 = 1/(Omega)
+    x3 = x2/tau_0
     x4 = 1/(m1)
     x5 = g*m2
     x6 = -t_n
-    x7 = 1/(t_n)
-    x8 = v0*x7*(m1 + m2)
-    x9 = _sin_phase(t, q1)**2
-    x10 = -t
-    x11 = _sin_phase(t, q0)
-    x12 = _diff_of_products(t, Omega, Omega, tau_0)
-    k1 = (1/2)*Omega
-    k3 = -x3
-    k8 = -g
-    k9 = 2*x4*x5
-    k16 = -x1
-    k22 = x4*x8
-    k23 = m1/(x5 + x8)
-    return k23*(k22*(x7*((1 - (np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan)))*(x1*x11 + x10) + (k16*np.sin(Omega*(t + x6)) + x1*x11 + x6*np.cos(Omega*(t + x6)))*(np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + 2*x9*(1 - (np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) - (-np.cos(Omega*(t + x6)) + _cos_phase(t, q0))*(np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + k8*(x2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(x1*x11 + x10) + (k3*np.sin(x12) + x11*x3 - 2*np.sin(k1*(t + x0))**2 - np.cos(x12))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k9*x9)
+    x7 = 2*np.sin(t_n*x1)
+    x8 = 1/(t_n)
+    x9 = v0*x8*(m1 + m2)
+    x10 = _sin_phase(t, q0)**2
+    x11 = _sin_remainder(Omega*t, 1)
+    x12 = 2*t
+    k2 = -1/2*tau_0
+    k3 = 2*x3*np.sin(tau_0*x1)
+    k7 = -g
+    k8 = 2*x4*x5
+    k13 = x2*x7
+    k23 = x4*x9
+    k24 = m1/(x5 + x9)
+    return k24*(k23*(2*x10*(1 - (np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + x7*np.sin(x1*(x12 + x6))*(np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan)) + x8*(x11*x2*(1 - (np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + (k13*np.cos(x1*(x12 + x6)) + x6*np.cos(Omega*(t + x6)))*(np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan)))) + k7*(x11*x3*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*x10)
 
 
 def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
@@ -497,42 +526,41 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
+    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
     x0 = -tau_0
-    x1 = 1/(Omega)
-    x2 = 1/(tau_0)
-    x3 = x1*x2
+    x1 = (1/2)*Omega
+    x2 = 1/(Omega)
+    x3 = x2/tau_0
     x4 = 1/(m1)
     x5 = -t_n
-    x6 = 6/Omega**3
-    x7 = -x6
-    x8 = Omega**(-2.0)
-    x9 = 6*x8
-    x10 = t_n**2
-    x11 = 1/(x10)
-    x12 = 2*x8
-    x13 = _sin_phase(t, q1)**2
-    x14 = -t
-    x15 = _sin_phase(t, q0)
-    x16 = _diff_of_products(t, Omega, Omega, tau_0)
-    k1 = (1/2)*Omega
-    k3 = -x3
-    k8 = -g
-    k9 = 2*g*m2*x4
-    k14 = -t_n**3
-    k19 = -3*x1*x10
-    k21 = t_n*x9
-    k23 = -x11
-    k30 = -x1
-    k33 = 4*x8
-    k35 = -x10
-    k36 = -x12
-    k40 = -2*t_n*x1
-    k42 = 2/t_n
-    k43 = 12*v0*x11*x4*(m1 + m2)
-    k44 = m1/(g*m2)
-    return k44*(k43*(k23*((1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*(-t**3 + t*x9 + x15*x7) + (k14*np.cos(Omega*(t + x5)) + k19*np.sin(Omega*(t + x5)) + k21*np.cos(Omega*(t + x5)) + x15*x7 + x6*np.sin(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k42*((1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*(k33*x13 - t**2) + (k35*np.cos(Omega*(t + x5)) + k36*_cos_phase(t, q0) + k40*np.sin(Omega*(t + x5)) + x12*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) - (1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*(x1*x15 + x14) - (k30*np.sin(Omega*(t + x5)) + x1*x15 + x5*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k8*(x2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(x1*x15 + x14) + (k3*np.sin(x16) + x15*x3 - 2*np.sin(k1*(t + x0))**2 - np.cos(x16))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k9*x13)
+    x6 = Omega**(-3.0)
+    x7 = np.sin(t_n*x1)
+    x8 = t_n**2
+    x9 = Omega**(-2.0)
+    x10 = 1/(x8)
+    x11 = 2*x2
+    x12 = Omega*t
+    x13 = _sin_remainder(x12, 1)
+    x14 = 2*t
+    k2 = -1/2*tau_0
+    k3 = 2*x3*np.sin(tau_0*x1)
+    k7 = -g
+    k8 = 2*g*m2*x4
+    k10 = -t_n**3
+    k13 = -12*x6*x7
+    k15 = -3*x2*x8
+    k17 = 6*t_n*x9
+    k20 = 6*x6
+    k26 = x11*x7
+    k29 = -x8
+    k31 = -t_n*x11
+    k34 = 4*x7*x9
+    k37 = 2*x9
+    k38 = -2/t_n
+    k40 = -x2
+    k41 = 12*v0*x10*x4*(m1 + m2)
+    k42 = m1/(g*m2)
+    return k42*(k41*(k38*(k37*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_cos_remainder(x12, 2) - (k29*np.cos(Omega*(t + x5)) + k31*np.sin(Omega*(t + x5)) + k34*np.sin(x1*(x14 + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k40*x13*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + x10*(k20*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_sin_remainder(x12, 2) - (k10*np.cos(Omega*(t + x5)) + k13*np.cos(x1*(x14 + x5)) + k15*np.sin(Omega*(t + x5)) + k17*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) - (k26*np.cos(x1*(x14 + x5)) + x5*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k7*(x13*x3*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*_sin_phase(t, q0)**2)
 
 
 def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
@@ -570,65 +598,55 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
+    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
     x0 = -tau_0
-    x1 = 1/(Omega)
-    x2 = 1/(tau_0)
-    x3 = x1*x2
+    x1 = (1/2)*Omega
+    x2 = 1/(Omega)
+    x3 = x2/tau_0
     x4 = 1/(m1)
     x5 = -t_n
     x6 = Omega**(-4.0)
-    x7 = 120*x6
+    x7 = t_n**4
     x8 = Omega**(-2.0)
-    x9 = 20*x8
-    x10 = 120/Omega**5
-    x11 = t_n**4
-    x12 = t_n**3
-    x13 = Omega**(-3.0)
-    x14 = t_n**2
-    x15 = 1/(x12)
-    x16 = 2*x8
-    x17 = 12*x8
-    x18 = 24*x6
-    x19 = 6*x13
-    x20 = -x19
-    x21 = 6*x8
-    x22 = _sin_phase(t, q1)**2
-    x23 = _sin_phase(t, q0)
-    x24 = _diff_of_products(t, Omega, Omega, tau_0)
-    x25 = t**2
-    x26 = _cos_phase(t, q0)
-    x27 = t**3
-    k1 = (1/2)*Omega
-    k3 = -x3
-    k8 = -g
-    k9 = 2*g*m2*x4
-    k11 = -x7
-    k15 = -t_n**5
-    k17 = -x10
-    k20 = -t_n*x7
-    k22 = -5*x1*x11
-    k24 = x12*x9
-    k26 = 60*x13*x14
-    k30 = 4*x8
-    k32 = -x14
-    k33 = -x16
-    k37 = -2*t_n*x1
-    k40 = -48*x6
-    k43 = -x11
-    k45 = -x18
-    k48 = -4*x1*x12
-    k50 = x14*x17
-    k52 = 24*t_n*x13
-    k54 = -3/x14
-    k59 = -x12
-    k64 = -3*x1*x14
-    k66 = t_n*x21
-    k68 = 3/t_n
-    k69 = 60*v0*x15*x4*(m1 + m2)
-    k70 = m1/(g*m2)
-    return k70*(k69*(k54*((1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*(k40*x22 - t**4 + x17*x25) + (k43*np.cos(Omega*(t + x5)) + k45*np.cos(Omega*(t + x5)) + k48*np.sin(Omega*(t + x5)) + k50*np.cos(Omega*(t + x5)) + k52*np.sin(Omega*(t + x5)) + x18*x26)*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k68*((1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*(t*x21 + x20*x23 - x27) + (k59*np.cos(Omega*(t + x5)) + k64*np.sin(Omega*(t + x5)) + k66*np.cos(Omega*(t + x5)) + x19*np.sin(Omega*(t + x5)) + x20*x23)*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + x15*((1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*(k11*t - t**5 + x10*x23 + x27*x9) + (k15*np.cos(Omega*(t + x5)) + k17*np.sin(Omega*(t + x5)) + k20*np.cos(Omega*(t + x5)) + k22*np.sin(Omega*(t + x5)) + k24*np.cos(Omega*(t + x5)) + k26*np.sin(Omega*(t + x5)) + x10*x23)*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) - (1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*(k30*x22 - x25) - (k32*np.cos(Omega*(t + x5)) + k33*x26 + k37*np.sin(Omega*(t + x5)) + x16*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k8*(x2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(-t + x1*x23) + (k3*np.sin(x24) + x23*x3 - 2*np.sin(k1*(t + x0))**2 - np.cos(x24))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k9*x22)
+    x9 = t_n**3
+    x10 = Omega**(-3.0)
+    x11 = t_n**2
+    x12 = Omega**(-5.0)
+    x13 = np.sin(t_n*x1)
+    x14 = 1/(x9)
+    x15 = Omega*t
+    x16 = 2*t
+    k2 = -1/2*tau_0
+    k3 = 2*x3*np.sin(tau_0*x1)
+    k7 = -g
+    k8 = 2*g*m2*x4
+    k10 = -t_n**5
+    k12 = -120*t_n*x6
+    k14 = -5*x2*x7
+    k16 = 20*x8*x9
+    k18 = 60*x10*x11
+    k21 = 240*x12*x13
+    k24 = 120*x12
+    k27 = -x11
+    k29 = -2*t_n*x2
+    k32 = 4*x13*x8
+    k35 = -x9
+    k38 = -12*x10*x13
+    k40 = -3*x11*x2
+    k42 = 6*t_n*x8
+    k45 = 6*x10
+    k46 = -3/t_n
+    k48 = -x7
+    k51 = -48*x13*x6
+    k53 = -4*x2*x9
+    k55 = 12*x11*x8
+    k57 = 24*t_n*x10
+    k60 = 24*x6
+    k61 = -3/x11
+    k63 = 2*x8
+    k64 = 60*v0*x14*x4*(m1 + m2)
+    k65 = m1/(g*m2)
+    return k65*(k64*(k46*(k45*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 2) - (k35*np.cos(Omega*(t + x5)) + k38*np.cos(x1*(x16 + x5)) + k40*np.sin(Omega*(t + x5)) + k42*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k61*(k60*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 3) + (k48*np.cos(Omega*(t + x5)) + k51*np.sin(x1*(x16 + x5)) + k53*np.sin(Omega*(t + x5)) + k55*np.cos(Omega*(t + x5)) + k57*np.sin(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k63*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 2) + x14*(k24*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 3) + (k10*np.cos(Omega*(t + x5)) + k12*np.cos(Omega*(t + x5)) + k14*np.sin(Omega*(t + x5)) + k16*np.cos(Omega*(t + x5)) + k18*np.sin(Omega*(t + x5)) + k21*np.cos(x1*(x16 + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) - (k27*np.cos(Omega*(t + x5)) + k29*np.sin(Omega*(t + x5)) + k32*np.sin(x1*(x16 + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k7*(x3*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 1) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*_sin_phase(t, q0)**2)
 
 
 def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
@@ -663,18 +681,21 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
-    q1 = _dd(Omega)
-    x0 = 2*v0
-    x1 = g*t_n
+    q0 = _dd(Omega)
+    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
+    x0 = 1/(m1)
+    x1 = g*m2
     x2 = -t_n
-    x3 = _cos_phase(t, q1)
-    x4 = _sin_phase(t, q0)**2
-    k5 = -v0
-    k7 = -x0
-    k8 = 2*x1
-    k9 = 1/(v0 + x1)
-    return k9*(k5*x3*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k7*x4*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k8*x4 + v0*np.cos(Omega*(t + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x0*x4 + x1*x3)
+    x3 = (1/2)*Omega
+    x4 = m1 + m2
+    x5 = v0*x4/t_n
+    x6 = _sin_phase(t, q1)**2
+    k0 = x0*x1
+    k5 = np.sin(t_n*x3)
+    k6 = x0*x5
+    k7 = 2*m1/x4
+    k8 = x4/(g*m1 + x1 + x5)
+    return k8*(g*_cos_phase(t, q0) + k7*(g*x6 + k0*x6 + k6*(k5*np.sin(x3*(2*t + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x6*(1 - (np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan))))))
 
 
 def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
@@ -711,20 +732,23 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     q0 = _dd(Omega)
     q1 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = Omega*v0
-    x1 = -t_n
-    x2 = Omega*g*t_n**2
-    x3 = t_n*x0
-    x4 = 2*x3
-    x5 = _cos_phase(t, q0)
-    x6 = _sin_phase(t, q1)**2
-    k0 = -x0
-    k3 = -v0
-    k7 = 2*x2
-    k10 = -x3
-    k12 = -x4
-    k13 = 1/(Omega*t_n*(g*t_n + v0))
-    return k13*(k0*t + k10*x5*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)) + k12*x6*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)) + k3*np.sin(Omega*(t + x1))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)) + k7*x6 + t*x0*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)) + v0*_sin_phase(t, q0) + x2*x5 + x4*x6)
+    x0 = 2*g
+    x1 = 1/(m1)
+    x2 = -t_n
+    x3 = (1/2)*Omega
+    x4 = 1/(Omega)
+    x5 = 2*np.sin(t_n*x3)
+    x6 = 1/(t_n)
+    x7 = m1 + m2
+    x8 = v0*x6*x7
+    x9 = _sin_phase(t, q1)**2
+    x10 = 2*t
+    k1 = m2*x0*x1
+    k6 = x4*x5
+    k16 = x1*x8
+    k17 = m1/x7
+    k18 = x7/(g*m1 + g*m2 + x8)
+    return k18*(g*_cos_phase(t, q0) + k17*(k1*x9 + k16*(x5*np.sin(x3*(x10 + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x6*(x4*(1 - (np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)))*_sin_remainder(Omega*t, 1) + (k6*np.cos(x3*(x10 + x2)) + x2*np.cos(Omega*(t + x2)))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan))) + 2*x9*(1 - (np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)))) + x0*x9))
 
 
 def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
@@ -761,38 +785,37 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     q0 = _dd(Omega)
     q1 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = 72*v0
-    x1 = Omega**3
-    x2 = 12*v0
-    x3 = x1*x2
-    x4 = Omega*x0
-    x5 = -t_n
-    x6 = t_n**4
-    x7 = g*x1*x6
-    x8 = t_n*v0
-    x9 = Omega*x8
-    x10 = 96*x9
-    x11 = t_n**2
-    x12 = x11*x3
-    x13 = 24*x1*x8
-    x14 = _sin_phase(t, q0)
-    x15 = t**3
-    x16 = t**2
-    x17 = _cos_phase(t, q0)
-    x18 = _sin_phase(t, q1)**2
-    k0 = -x0
-    k1 = -x3
-    k6 = -x7
-    k7 = -x10
-    k9 = -x4
-    k10 = -x12
-    k11 = -2*x7
-    k14 = Omega**2*x11*x2
-    k17 = -x13
-    k22 = 24*x9
-    k24 = 48*x9
-    k27 = -1/(g*x1*x6)
-    return k27*(k0*x14 + k1*x15 + k10*t + k11*x18 + k14*x14 + k17*x16*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + k22*np.cos(Omega*(t + x5))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + k24*x17*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + k6*x17 + k7*x18 + k9*t*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + t*x12*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + t*x4 + x0*np.sin(Omega*(t + x5))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + x10*x18*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + x13*x16 + x15*x3*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))
+    x0 = 1/(m1)
+    x1 = -t_n
+    x2 = (1/2)*Omega
+    x3 = Omega**(-3.0)
+    x4 = np.sin(t_n*x2)
+    x5 = 1/(Omega)
+    x6 = t_n**2
+    x7 = Omega**(-2.0)
+    x8 = 1/(x6)
+    x9 = 2*x5
+    x10 = m1 + m2
+    x11 = _sin_phase(t, q1)**2
+    x12 = Omega*t
+    x13 = 2*t
+    k0 = g*m2*x0
+    k2 = -t_n**3
+    k5 = -12*x3*x4
+    k7 = -3*x5*x6
+    k9 = 6*t_n*x7
+    k12 = 6*x3
+    k18 = x4*x9
+    k21 = -x6
+    k23 = -t_n*x9
+    k26 = 4*x4*x7
+    k29 = 2*x7
+    k30 = -2/t_n
+    k32 = -x5
+    k33 = 6*v0*x0*x10*x8
+    k34 = 2*m1/x10
+    k35 = 1/(g)
+    return k35*(g*_cos_phase(t, q0) + k34*(g*x11 + k0*x11 + k33*(k30*(k29*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_cos_remainder(x12, 2) - (k21*np.cos(Omega*(t + x1)) + k23*np.sin(Omega*(t + x1)) + k26*np.sin(x2*(x1 + x13)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) + k32*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x12, 1) + x8*(k12*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x12, 2) - (k2*np.cos(Omega*(t + x1)) + k5*np.cos(x2*(x1 + x13)) + k7*np.sin(Omega*(t + x1)) + k9*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) - (k18*np.cos(x2*(x1 + x13)) + x1*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))))
 
 
 def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
@@ -829,56 +852,52 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     q0 = _dd(Omega)
     q1 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = 7200*v0
-    x1 = Omega*x0
-    x2 = -t_n
-    x3 = Omega**5
-    x4 = v0*x3
-    x5 = 60*x4
-    x6 = Omega**3*v0
-    x7 = 1200*x6
-    x8 = t_n**6
-    x9 = g*x3*x8
-    x10 = 2160*t_n*x6
-    x11 = t_n**2
-    x12 = 1080*x11
-    x13 = Omega**2*v0
-    x14 = t_n**3
-    x15 = x14*x6
-    x16 = 240*x15
-    x17 = 180*x4
-    x18 = x11*x17
-    x19 = x14*x5
-    x20 = t_n*x17
-    x21 = x12*x6
-    x22 = Omega*t_n*v0
-    x23 = 8640*x22
-    x24 = _sin_phase(t, q0)
-    x25 = t**3
-    x26 = t**2
-    x27 = t**4
-    x28 = t**5
-    x29 = _cos_phase(t, q0)
-    x30 = _sin_phase(t, q1)**2
-    k1 = -x1
-    k4 = -x0
-    k5 = -x5
-    k8 = -x10
-    k10 = -x7
-    k11 = -x12*x13
-    k12 = -x16
-    k13 = -x18
-    k14 = 2*x9
-    k24 = -x23
-    k26 = -4320*x22
-    k29 = -2880*x22
-    k31 = -x21
-    k33 = -x20
-    k35 = -x19
-    k37 = 120*x15
-    k44 = 360*x11*x13
-    k47 = 1/(g*x3*x8)
-    return k47*(k1*t + k10*x25*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k11*x24 + k12*x30 + k13*x25 + k14*x30 + k24*x30*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k26*x29*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k29*np.cos(Omega*(t + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k31*t*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k33*x27*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k35*x26*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k37*x29*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k4*np.sin(Omega*(t + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k44*np.sin(Omega*(t + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + k5*x28 + k8*x26 + t*x1*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + t*x21 + x0*x24 + x10*x26*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x16*x30*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x18*x25*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x19*x26 + x20*x27 + x23*x30 + x25*x7 + x28*x5*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x29*x9)
+    x0 = 1/(m1)
+    x1 = -t_n
+    x2 = Omega**(-4.0)
+    x3 = 1/(Omega)
+    x4 = t_n**4
+    x5 = Omega**(-2.0)
+    x6 = t_n**3
+    x7 = Omega**(-3.0)
+    x8 = t_n**2
+    x9 = (1/2)*Omega
+    x10 = Omega**(-5.0)
+    x11 = np.sin(t_n*x9)
+    x12 = 1/(x6)
+    x13 = m1 + m2
+    x14 = _sin_phase(t, q1)**2
+    x15 = Omega*t
+    x16 = 2*t
+    k0 = g*m2*x0
+    k2 = -t_n**5
+    k4 = -120*t_n*x2
+    k6 = -5*x3*x4
+    k8 = 20*x5*x6
+    k10 = 60*x7*x8
+    k13 = 240*x10*x11
+    k16 = 120*x10
+    k19 = -x8
+    k21 = -2*t_n*x3
+    k24 = 4*x11*x5
+    k27 = -x6
+    k30 = -12*x11*x7
+    k32 = -3*x3*x8
+    k34 = 6*t_n*x5
+    k37 = 6*x7
+    k38 = -3/t_n
+    k40 = -x4
+    k43 = -48*x11*x2
+    k45 = -4*x3*x6
+    k47 = 12*x5*x8
+    k49 = 24*t_n*x7
+    k52 = 24*x2
+    k53 = -3/x8
+    k55 = 2*x5
+    k56 = 30*v0*x0*x12*x13
+    k57 = 2*m1/x13
+    k58 = 1/(g)
+    return k58*(g*_cos_phase(t, q0) + k57*(g*x14 + k0*x14 + k56*(k38*(k37*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 2) - (k27*np.cos(Omega*(t + x1)) + k30*np.cos(x9*(x1 + x16)) + k32*np.sin(Omega*(t + x1)) + k34*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) + k53*(k52*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 3) + (k40*np.cos(Omega*(t + x1)) + k43*np.sin(x9*(x1 + x16)) + k45*np.sin(Omega*(t + x1)) + k47*np.cos(Omega*(t + x1)) + k49*np.sin(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) + k55*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 2) + x12*(k16*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 3) + (k10*np.sin(Omega*(t + x1)) + k13*np.cos(x9*(x1 + x16)) + k2*np.cos(Omega*(t + x1)) + k4*np.cos(Omega*(t + x1)) + k6*np.sin(Omega*(t + x1)) + k8*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) - (k19*np.cos(Omega*(t + x1)) + k21*np.sin(Omega*(t + x1)) + k24*np.sin(x9*(x1 + x16)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))))
 
 
 def optimal_coefficient_from_weight_a1(t, t_n):
@@ -1033,15 +1052,15 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    x0 = g*t_n**4
+    x0 = -tau_0
     x1 = tau_0*v0
     x2 = 12*x1
-    k0 = -tau_0
-    k1 = -x0
-    k3 = -24*t_n*x1
-    k4 = t_n**2*x2 + x0
-    k5 = 1/(t_n**3*tau_0*v0)
-    return k5*t*(k1*(np.select([np.less_equal(k0 + t, 0),True], [0,1], default=np.nan)) + k3*t + k4 + t**2*x2)
+    k0 = -t_n
+    k4 = -24*t_n*x1
+    k5 = g*t_n**4 + t_n**2*x2
+    k6 = 1/(tau_0*v0)
+    k7 = t_n**(-3.0)
+    return k7*t*(k6*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(k4*t + k5 + t**2*x2) + 12*(k0 + t)**2*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))
 
 
 def optimal_coefficient_from_weight_a4(t, t_n):
@@ -1092,14 +1111,15 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    x0 = g*t_n**6
+    x0 = -tau_0
     x1 = tau_0*v0
     x2 = 60*x1
     x3 = 180*x1
-    k0 = -tau_0
-    k3 = -t_n*x3
-    k4 = -t_n**3*x2
-    k5 = t_n**2*x3
-    k6 = -x0
-    k7 = -1/(t_n**5*tau_0*v0)
-    return k7*t*(k3*t**3 + k4*t + k5*t**2 + k6 + t**4*x2 + x0*(np.select([np.less_equal(k0 + t, 0),True], [0,1], default=np.nan)))
+    k0 = -t_n
+    k4 = -t_n*x3
+    k5 = -t_n**3*x2
+    k6 = t_n**2*x3
+    k7 = -g*t_n**6
+    k8 = 1/(tau_0*v0)
+    k9 = -1/t_n**5
+    return k9*t*(k8*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(k4*t**3 + k5*t + k6*t**2 + k7 + t**4*x2) + 60*t*(k0 + t)**3*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))

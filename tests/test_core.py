@@ -202,3 +202,27 @@ def test_dimensions_of_integrals_piecewise_and_functions_of_other_arguments():
     assert dimension_of(sp.Piecewise((F0, t < 1), (2 * F0, True)), dims) == vector(force)
     report = check_equation(y, sp.Piecewise((y, t < 1), (F0, True)), dims)
     assert not report.consistent
+
+
+def test_rewrite_rules_produce_the_stable_forms():
+    from crane_sym.rewriting import rules_for, optimize
+    T, tn, th = sp.symbols("T t_n theta", positive=True)
+    rules = rules_for({t})
+    # x - sin x, and its higher analogues, become Taylor remainders
+    assert "sin_remainder(t*w, 1)" in str(optimize((w * t - sp.sin(w * t)) / (w * tn), rules))
+    assert "cos_remainder(t*w, 2)" in str(optimize(t ** 2 / 2 - (1 - sp.cos(w * t)) / w ** 2, rules))
+    # a difference of cosines becomes a product with the small factor sin(w*theta/2)
+    diff = optimize(sp.cos(w * (t - th)) - sp.cos(w * t), rules)
+    assert "sin(theta*w/2)" in str(diff) and "cos(" not in str(diff)
+    # a polynomial in t is factored at its roots
+    assert optimize(12 * t ** 3 / tn ** 3 - 24 * t ** 2 / tn ** 2 + 12 * t / tn, rules) \
+        == 12 * t * (t - tn) ** 2 / tn ** 3
+    # and every rewrite is an identity
+    for expr in [(w * t - sp.sin(w * t)) / (w * tn), sp.cos(w * (t - th)) - sp.cos(w * t),
+                 t ** 3 / 6 - (w * t - sp.sin(w * t)) / w ** 3]:
+        new = optimize(expr, rules)
+        R = sp.Rational
+        for point in [{t: R(3, 10), w: 2, tn: R(7, 10), th: R(1, 10)},
+                      {t: R(17, 10), w: R(1, 2), tn: R(11, 10), th: R(9, 10)}]:
+            assert abs(complex(new.subs(point).rewrite(sp.sin).rewrite(sp.cos).evalf(30))
+                       - complex(expr.subs(point).evalf(30))) < 1e-25

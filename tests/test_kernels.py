@@ -85,3 +85,17 @@ def test_checked_messages():
 
 def test_closure_lists_dependencies_in_order():
     assert k.closure({"_sin_phase"}) == ["_two_product", "_phase", "_sin_phase"]
+
+
+@pytest.mark.parametrize("n", [1, 2, 3, 5])
+@pytest.mark.parametrize("odd", [0, 1])
+def test_taylor_remainders_against_mpmath(n, odd):
+    xs = np.concatenate([-np.logspace(-8, 1.7, 40), np.logspace(-8, 1.7, 40)])
+    got = k._taylor_remainder(xs, n, odd)
+    with mpmath.workdps(150):  # the remainder of x = 1e-8 is ~1e-90: digits are needed
+        for x, g in zip(xs, got):
+            X = mpmath.mpf(float(x))
+            f = mpmath.cos(X) if odd == 0 else mpmath.sin(X)
+            exact = f - sum((-1) ** j * X ** (2 * j + odd) / mpmath.factorial(2 * j + odd)
+                            for j in range(n))
+            assert abs(g - exact) <= 4e-15 * abs(exact)
