@@ -171,7 +171,7 @@ def render_function(out: Output, table: SymbolTable,
     subs, reduced = sp.cse([e for _, e in assignments] + [body],
                            symbols=sp.numbered_symbols("x"), order="canonical")
     entries = [table[a] for a in out.args]
-    width = max(len(e.name) for e in entries)
+    width = max((len(e.name) for e in entries), default=0)
     params = "\n".join(
         f"    {e.name} : array_like\n        {e.description} [{e.unit}]"
         + {"positive": ", > 0", "nonnegative": ", >= 0"}.get(e.sign, "")

@@ -95,6 +95,10 @@ def dimension_of(expr: sp.Basic, dims: Mapping[sp.Basic, DimVec]) -> DimVec:
         for limits in expr.limits:
             d = _mul(d, dimension_of(limits[0], dims))
         return d
+    if isinstance(expr, sp.Abs):
+        return dimension_of(expr.args[0], dims)
+    if isinstance(expr, (sp.Min, sp.Max)):
+        return _common(list(expr.args), dims, f"arguments of {expr}")
     if isinstance(expr, sp.Piecewise):
         return _common([branch for branch, _ in expr.args], dims, f"branches of {expr}")
     if isinstance(expr, sp.Derivative):

@@ -14,9 +14,11 @@ from .derivation import Derivation
 DERIVATIONS: dict[str, str] = {
     "travel_braking": "crane_sym.derivations.travel_braking",
     "hoist_startup": "crane_sym.derivations.hoist_startup",
+    "drum_drive": "crane_sym.derivations.drum_drive",
 }
 #: Paper file-number prefixes accepted as ids on the command line.
-ALIASES: dict[str, str] = {"000": "travel_braking", "002": "hoist_startup"}
+ALIASES: dict[str, str] = {"000": "travel_braking", "002": "hoist_startup",
+                           "004": "drum_drive"}
 
 
 def ids() -> list[str]:

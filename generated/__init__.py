@@ -4,5 +4,7 @@
 Modules:
     travel_braking
     hoist_startup
+    drum_drive
+    scene_drum_drive_example
     scene_overhead_crane_50t
 """

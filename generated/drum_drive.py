@@ -1,0 +1,423 @@
+"""Numeric functions for derivation 'drum_drive'. Generated; do not edit.
+
+Source: crane_sym.derivations.drum_drive (paper 004_f118c513e0426caf.txt:
+Dynamic model of a drive with a driving drum).
+Equations: (7), (12), (13), (18), (19), (21).
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    branch_effective_mass(q, L) -> [kg]    eq (7)
+    drive_chain_frequency_1(I1, I2, I3, C1, C2) -> [rad/s]    eq (13)
+    drive_chain_frequency_2(I1, I2, I3, C1, C2) -> [rad/s]    eq (13)
+    running_tight_force(M0, D, F0, C_t, C_z, C_y) -> [N]    eq (12)
+    running_slack_force(M0, D, F0, C_t, C_z, C_y) -> [N]    eq (12)
+    running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y) -> [m]    eq (12)
+    drum_torque(F1, F2, D) -> [N*m]    eq (18)
+    traction_margin(F1, F2, mu, alpha) -> [1]    eq (19)
+    least_mu_alpha(F1, F2) -> [1]    eq (19)
+    pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3) -> [N]    eq (21)
+"""
+
+import numpy as np
+
+__all__ = ['branch_effective_mass', 'drive_chain_frequency_1', 'drive_chain_frequency_2', 'running_tight_force', 'running_slack_force', 'running_drum_shaft_deflection', 'drum_torque', 'traction_margin', 'least_mu_alpha', 'pulsating_force']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _two_sum(a, b):
+    """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
+    s = a + b
+    v = s - a
+    return s, (a - (s - v)) + (b - v)
+
+
+def _quick_two_sum(a, b):
+    """a + b as s + e exactly, for |a| >= |b| (Dekker)."""
+    s = a + b
+    return s, b - (s - a)
+
+
+def _two_product(a, b):
+    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
+    p = a * b
+    a_hi = a * 134217729.0
+    a_hi = a_hi - (a_hi - a)
+    b_hi = b * 134217729.0
+    b_hi = b_hi - (b_hi - b)
+    a_lo, b_lo = a - a_hi, b - b_hi
+    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
+
+
+def _dd(x):
+    """A double as a double-double."""
+    return x, 0.0 * x
+
+
+def _dd_add(x, y):
+    """Sum of two double-doubles."""
+    s, e = _two_sum(x[0], y[0])
+    return _quick_two_sum(s, e + (x[1] + y[1]))
+
+
+def _dd_mul(x, y):
+    """Product of two double-doubles."""
+    p, e = _two_product(x[0], y[0])
+    return _quick_two_sum(p, e + (x[0] * y[1] + x[1] * y[0]))
+
+
+def _dd_div(x, y):
+    """Quotient of two double-doubles."""
+    q1 = x[0] / y[0]
+    r = _dd_add(x, _dd_mul((-q1, 0.0 * q1), y))
+    return _quick_two_sum(q1, r[0] / y[0])
+
+
+def _phase(t, k):
+    """t*k for a double t and a double-double k, as (hi, lo)."""
+    hi, lo = _two_product(t, k[0])
+    return hi, lo + t * k[1]
+
+
+def _sin_phase(t, k):
+    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
+    hi, lo = _phase(t, k)
+    return np.sin(hi) + np.cos(hi) * lo
+
+
+def branch_effective_mass(q, L):
+    """Effective mass q*L/3 of a span moved at one point (linear speed (6)). Eq (7).
+
+    Parameters
+    ----------
+    q : array_like
+        mass of one metre of the traction element [kg/m], > 0
+    L : array_like
+        length of a branch (of the span in (7)) [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [kg], broadcast over the arguments.
+    """
+    q = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
+    L = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
+    return (1/3)*L*q
+
+
+def drive_chain_frequency_1(I1, I2, I3, C1, C2):
+    """Lower elastic natural frequency of the free-free chain I1-C1-I2-C2-I3. Eq (13).
+
+    Parameters
+    ----------
+    I1 : array_like
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+    I2 : array_like
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+    I3 : array_like
+        moment of inertia of the driving drum [kg*m^2], > 0
+    C1 : array_like
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+    C2 : array_like
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad/s], broadcast over the arguments.
+    """
+    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
+    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
+    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
+    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
+    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    x0 = C1*I3
+    x1 = C2*I1
+    x2 = I1*x0 + I2*x0 + I2*x1 + I3*x1
+    x3 = 1/(I1)
+    x4 = 1/(I2)
+    x5 = 1/(I3)
+    x6 = I1 + I2 + I3
+    x7 = 1/(np.sqrt(I1)*np.sqrt(I2)*np.sqrt(I3))
+    return 1.4142135623730951*np.sqrt(C1)*np.sqrt(C2)*np.sqrt(x6)*x7*np.sqrt(1/(x2*x3*x4*x5 + x7*np.sqrt(-4*C1*C2*x6 + x2**2*x3*x4*x5)))
+
+
+def drive_chain_frequency_2(I1, I2, I3, C1, C2):
+    """Higher elastic natural frequency of the free-free chain I1-C1-I2-C2-I3. Eq (13).
+
+    Parameters
+    ----------
+    I1 : array_like
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+    I2 : array_like
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+    I3 : array_like
+        moment of inertia of the driving drum [kg*m^2], > 0
+    C1 : array_like
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+    C2 : array_like
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad/s], broadcast over the arguments.
+    """
+    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
+    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
+    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
+    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
+    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    x0 = C1*I3
+    x1 = C2*I1
+    x2 = I1*x0 + I2*x0 + I2*x1 + I3*x1
+    x3 = 1/(I1)
+    x4 = 1/(I2)
+    x5 = 1/(I3)
+    return 0.7071067811865476*np.sqrt(x2*x3*x4*x5 + np.sqrt(-4*C1*C2*(I1 + I2 + I3) + x2**2*x3*x4*x5)/(np.sqrt(I1)*np.sqrt(I2)*np.sqrt(I3)))
+
+
+def running_tight_force(M0, D, F0, C_t, C_z, C_y):
+    """Tight-branch force F1 in steady running. Eq (12).
+
+    Parameters
+    ----------
+    M0 : array_like
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+    D : array_like
+        diameter of the driving drum, D = 2r [m], > 0
+    F0 : array_like
+        pretension of both branches at rest [N], > 0
+    C_t : array_like
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+    C_z : array_like
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+    C_y : array_like
+        bending stiffness of the drum shaft at the drum [N/m], > 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
+    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
+    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    x0 = C_t*C_y
+    x1 = C_y*C_z
+    x2 = 4*C_t*C_z
+    x3 = D*F0
+    return (2*M0*x0 + M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
+
+
+def running_slack_force(M0, D, F0, C_t, C_z, C_y):
+    """Slack-branch force F2 in steady running. Eq (12).
+
+    Parameters
+    ----------
+    M0 : array_like
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+    D : array_like
+        diameter of the driving drum, D = 2r [m], > 0
+    F0 : array_like
+        pretension of both branches at rest [N], > 0
+    C_t : array_like
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+    C_z : array_like
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+    C_y : array_like
+        bending stiffness of the drum shaft at the drum [N/m], > 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
+    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
+    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    x0 = C_t*C_y
+    x1 = C_y*C_z
+    x2 = 4*C_t*C_z
+    x3 = D*F0
+    return (-2*M0*x1 - M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
+
+
+def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y):
+    """Drum-shaft deflection y in steady running. Eq (12).
+
+    Parameters
+    ----------
+    M0 : array_like
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+    D : array_like
+        diameter of the driving drum, D = 2r [m], > 0
+    F0 : array_like
+        pretension of both branches at rest [N], > 0
+    C_t : array_like
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+    C_z : array_like
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+    C_y : array_like
+        bending stiffness of the drum shaft at the drum [N/m], > 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
+    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
+    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    x0 = D*F0
+    return 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z))
+
+
+def drum_torque(F1, F2, D):
+    """Torque (F1 - F2)*D/2 of the branch forces on the drum. Eq (18).
+
+    Parameters
+    ----------
+    F1 : array_like
+        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0
+    F2 : array_like
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
+    D : array_like
+        diameter of the driving drum, D = 2r [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [N*m], broadcast over the arguments.
+    """
+    F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
+    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
+    D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
+    return (1/2)*D*(F1 - F2)
+
+
+def traction_margin(F1, F2, mu, alpha):
+    """Margin exp(mu*alpha) - 1.25*F1/F2 of the traction condition; > 0 holds. Eq (19).
+
+    Parameters
+    ----------
+    F1 : array_like
+        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0
+    F2 : array_like
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
+    mu : array_like
+        friction coefficient between element and drum [1], > 0
+    alpha : array_like
+        wrap angle of the element on the drum [rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    F1    = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
+    F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
+    mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'wrap angle of the element on the drum, rad')
+    return -5/4*F1/F2 + np.exp(alpha*mu)
+
+
+def least_mu_alpha(F1, F2):
+    """Least mu*alpha that satisfies the traction condition (19). Eq (19).
+
+    Parameters
+    ----------
+    F1 : array_like
+        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0
+    F2 : array_like
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
+    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
+    return np.log(F1) - np.log(F2) + 0.22314355131420976
+
+
+def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
+    """Pulsating load F'(t) of (21), as printed. Eq (21).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+    F1_t : array_like
+        amplitude F_1(t) of the pulsating load (21) [N], > 0
+    F2_t : array_like
+        amplitude F_2(t) of the pulsating load (21) [N], > 0
+    F3_t : array_like
+        amplitude F_3(t) of the pulsating load (21) [N], > 0
+    F4_t : array_like
+        amplitude F_4(t) of the pulsating load (21) [N], > 0
+    K1 : array_like
+        constant K_1 of (21) (pretension at the load) [N], > 0
+    K2 : array_like
+        constant K_2 of (21) (pretension at the load) [N], > 0
+    K3 : array_like
+        constant K_3 of (21) (pretension at the load) [N], > 0
+    K4 : array_like
+        constant K_4 of (21) (pretension at the load) [N], > 0
+    t_3 : array_like
+        stop time t_3 of the transporter in (21) [s], > 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    t    = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    F1_t = _checked('F1_t', F1_t, 'positive', 'amplitude F_1(t) of the pulsating load (21), N')
+    F2_t = _checked('F2_t', F2_t, 'positive', 'amplitude F_2(t) of the pulsating load (21), N')
+    F3_t = _checked('F3_t', F3_t, 'positive', 'amplitude F_3(t) of the pulsating load (21), N')
+    F4_t = _checked('F4_t', F4_t, 'positive', 'amplitude F_4(t) of the pulsating load (21), N')
+    K1   = _checked('K1', K1, 'positive', 'constant K_1 of (21) (pretension at the load), N')
+    K2   = _checked('K2', K2, 'positive', 'constant K_2 of (21) (pretension at the load), N')
+    K3   = _checked('K3', K3, 'positive', 'constant K_3 of (21) (pretension at the load), N')
+    K4   = _checked('K4', K4, 'positive', 'constant K_4 of (21) (pretension at the load), N')
+    t_3  = _checked('t_3', t_3, 'positive', 'stop time t_3 of the transporter in (21), s')
+    q0 = _dd_div((3.141592653589793, 1.2246467991473532e-16), _dd(t_3))
+    x0 = _sin_phase(t, q0)
+    k0 = -K2
+    k1 = -K4
+    k2 = (1/4)*F1_t
+    k3 = (1/4)*F3_t
+    k4 = (1/4)*K1 + (1/4)*K3
+    return k2*x0 + k3*x0 + k4 - 1/4*abs(F2_t*x0 + k0) - 1/4*abs(F4_t*x0 + k1)

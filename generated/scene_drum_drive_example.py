@@ -1,0 +1,80 @@
+"""Numeric functions for derivation 'drum_drive'. Generated; do not edit.
+
+Source: crane_sym.derivations.drum_drive (paper 004_f118c513e0426caf.txt:
+Dynamic model of a drive with a driving drum).
+Specialized to scene 'drum_drive_example' (Driving drum of a closed-rope installation: start under a pulsating load): outputs pulsating_force; folded in: I1 = 13.0 kg*m^2, I2 = 3.0 kg*m^2, I3 = 50.0 kg*m^2, C1 = 20000.0 N*m/rad, C2 = 50000.0 N*m/rad, C_y = 20000000.0 N/m, C_t = 50000.0 N/m, C_z = 50000.0 N/m, q = 2.4 kg/m, L = 600.0 m, D = 0.5 m, M0 = 440.0 N*m, F0 = 20000.0 N, F1 = 21760.0 N, F2 = 20000.0 N, mu = 0.2 1, alpha = 3.141592653589793 rad, F1_t = 1200.0 N, F2_t = 1200.0 N, F3_t = 600.0 N, F4_t = 600.0 N, K1 = 800.0 N, K2 = 800.0 N, K3 = 400.0 N, K4 = 400.0 N, t_3 = 3.0 s.
+Equations: (21).
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    pulsating_force(t) -> [N]    eq (21)
+"""
+
+import numpy as np
+
+__all__ = ['pulsating_force']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _two_product(a, b):
+    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
+    p = a * b
+    a_hi = a * 134217729.0
+    a_hi = a_hi - (a_hi - a)
+    b_hi = b * 134217729.0
+    b_hi = b_hi - (b_hi - b)
+    a_lo, b_lo = a - a_hi, b - b_hi
+    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
+
+
+def _phase(t, k):
+    """t*k for a double t and a double-double k, as (hi, lo)."""
+    hi, lo = _two_product(t, k[0])
+    return hi, lo + t * k[1]
+
+
+def _sin_phase(t, k):
+    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
+    hi, lo = _phase(t, k)
+    return np.sin(hi) + np.cos(hi) * lo
+
+
+def pulsating_force(t):
+    """Pulsating load F'(t) of (21), as printed. Specialized to scene 'drum_drive_example'. Eq (21).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    q0 = (1.0471975511965979, -1.072081766451091e-16)
+    x0 = _sin_phase(t, q0)
+    return 450*x0 - 150*abs(3*x0 - 2) + 300

@@ -1,0 +1,306 @@
+"""Paper 004 (drive with a driving drum): every verdict, the model against
+independent routes (SymPy's LagrangesMethod, scipy quadrature, numpy
+eigenvalues, a long simulation against the steady-running steps), the
+simulation's energy balance and the scene of the paper's example."""
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
+
+from crane_sym import registry
+from crane_sym.audit import audit
+from crane_sym.derivations import drum_drive as m
+from crane_sym.derivations import drum_drive_published as pub
+from crane_sym.lagrange import lagrange_equations
+
+integrate = pytest.importorskip("scipy.integrate")
+
+PAPER_TEXT = Path("/work/shared/seeds") / m.PAPER
+SCENE = Path(m.__file__).parent / "scenes" / "drum_drive_example.toml"
+
+EXPECTED = {
+    "(1), coordinates": "discrepancy",
+    "(1), φ": "confirmed_with_convention",
+    "(1), z": "confirmed_with_convention",
+    "(1), y": "confirmed_with_convention",
+    "(2)": "discrepancy",
+    "(3)": "dimension_error",
+    "(3), second member": "dimension_error",
+    "(4)": "confirmed",
+    "(5)": "confirmed",
+    "(6)": "confirmed",
+    "(7)": "dimension_error",
+    "(8)": "dimension_error",
+    "(9)": "not_checkable",
+    "(9), δA_1": "dimension_error",
+    "(9), δA_2": "discrepancy",
+    "(9), δA_3": "discrepancy",
+    "(10), Q1": "discrepancy",
+    "(10), Q2": "discrepancy",
+    "(10), Q3": "discrepancy",
+    "(10), Q1 vs (9)": "discrepancy",
+    "(10), Q2 vs (9)": "discrepancy",
+    "(10), Q3 vs (9)": "confirmed",
+    "(11)": "confirmed_with_convention",
+    "(12), row 1": "dimension_error",
+    "(12), row 2": "dimension_error",
+    "(12), row 3": "dimension_error",
+    "(13)": "dimension_error",
+    "(13), k": "dimension_error",
+    "(14)": "confirmed",
+    "(14), homogeneous equation": "discrepancy",
+    "(14), y1": "confirmed",
+    "(15)": "not_checkable",
+    "(16)": "not_checkable",
+    "(17)": "dimension_error",
+    "(18)": "confirmed",
+    "(19)": "remark",
+    "(20)": "discrepancy",
+    "(21)": "confirmed",
+    "initial state": "remark",
+}
+
+#: The example's simulation-only values (SI), as in the scene file.
+EXAMPLE = {"I1": 13.0, "I2": 3.0, "I3": 50.0, "C1": 2e4, "C2": 5e4, "nu1": 20.0,
+           "nu2": 50.0, "m3": 800.0, "m_L": 2500.0, "C_y": 2e7, "nu_y": 1.3e4,
+           "C_t": 5e4, "C_z": 5e4, "nu_z": 500.0, "nu_t": 400.0, "q": 2.4, "L": 600.0,
+           "r": 0.25, "D": 0.5, "M0": 440.0, "F0": 2e4}
+
+
+@pytest.fixture(scope="module")
+def derivation():
+    return m.build()
+
+
+@pytest.fixture(scope="module")
+def records(derivation):
+    return {r.label: r for r in audit(derivation)}
+
+
+@pytest.fixture(scope="module")
+def registered():
+    """The scene loader asks the registry; register drum_drive if it is not yet."""
+    with pytest.MonkeyPatch.context() as mp:
+        if "drum_drive" not in registry.DERIVATIONS:
+            mp.setitem(registry.DERIVATIONS, "drum_drive", "crane_sym.derivations.drum_drive")
+            mp.setitem(registry.ALIASES, "004", "drum_drive")
+        yield
+
+
+@pytest.fixture(scope="module")
+def scene(registered):
+    from crane_sym.scenes import load_scene
+    return load_scene(SCENE)
+
+
+@pytest.fixture(scope="module")
+def report(scene):
+    return m.scene_report(scene)
+
+
+def _f(d, name):
+    out = d.output(name)
+    return sp.lambdify(out.args, out.expr, "numpy")
+
+
+# --- Audit ---------------------------------------------------------------------
+def test_every_verdict(records):
+    assert {label: r.verdict for label, r in records.items()} == EXPECTED
+
+
+def test_details_name_what_the_print_gets_wrong(records):
+    assert "∂Φ/∂q̇" in records["(1), φ"].detail
+    assert "dy/dt**2 [m/s²]" in records["(3)"].detail
+    assert "dl*dm/(2*dt) [kg·m/s]" in records["(3), second member"].detail
+    assert re.search(r"1 \[1\]; Derivative\([yz]\(t\), t\)\*\*2 \[m²/s²\]", records["(7)"].detail)
+    assert "Pi [kg·m²/s²]" in records["(8)"].detail
+    assert "-g*m3 [kg·m/s²]" in records["(9), δA_1"].detail
+    assert "F_{1} + F_{2}" in records["(10), Q3"].detail
+    assert "y1 − y2 ≡ y" in records["(11)"].detail
+    for row in ("(12), row 1", "(12), row 2", "(12), row 3"):
+        assert "C1*(Derivative(" in records[row].detail
+    assert "m1*Derivative(phi1(t), (t, 2)) [kg/s²]" in records["(12), row 1"].detail
+    assert "C3*Derivative(y(t), t)" in records["(13)"].detail
+    assert "[1/kg¹ᐟ²·s]" in records["(13), k"].detail
+    assert "Derivative(w(x, t), (x, 2)) [1/m]" in records["(17)"].detail
+    assert "1.25" in records["(19)"].detail
+    assert "F_{2} + g m_{sum} \\mu_{op} + \\nu_{t} v_{s}" in records["(20)"].detail
+
+
+def test_every_record_is_of_a_known_kind_and_targets_a_step(derivation):
+    for f in derivation.published:
+        if f.printed is not None:
+            derivation.step(f.target)
+        else:
+            assert f.not_checkable
+
+
+@pytest.mark.skipif(not PAPER_TEXT.is_file(), reason="the paper's text is not on this machine")
+def test_printed_latex_is_verbatim(derivation):
+    text = " ".join(PAPER_TEXT.read_text(encoding="utf-8").split())
+    for f in derivation.published:
+        assert " ".join(f.latex.split()) in text, f.label
+
+
+def test_steps_in_paper_order_and_every_equation_audited(derivation):
+    numbers = [int(re.match(r"\((\d+)\)", s.label).group(1))
+               for s in derivation.steps if s.numbered]
+    assert numbers == sorted(numbers)
+    assert all(s.how for s in derivation.steps)
+    audited = {int(re.match(r"\((\d+)\)", f.label).group(1))
+               for f in derivation.published if f.label.startswith("(")}
+    assert audited == set(range(1, 22))
+
+
+def test_transcriptions_keep_the_print(derivation):
+    by = {f.label: f for f in derivation.published}
+    assert by["(19)"].printed.lhs.has(sp.Rational(5, 4))
+    assert by["(13)"].printed.lhs.has(pub.C3)
+    assert by["(8)"].printed.rhs.has(pub.phi4.diff(m.t))
+
+
+# --- The model against independent routes -----------------------------------------
+def test_lagrange_matches_lagrangesmethod_on_conservative_part():
+    e = m.model_energies()
+    t0 = dynamicsymbols._t
+    Lag = (e["T"] - e["Pi"]).xreplace({m.t: t0})
+    qs = [c.xreplace({m.t: t0}) for c in m.COORDS]
+    theirs = LagrangesMethod(Lag, qs).form_lagranges_equations()
+    ours = lagrange_equations(e["T"], e["Pi"], m.COORDS, m.t).equations
+    for eq, ref in zip(ours, theirs):
+        assert sp.expand((eq.lhs - eq.rhs).xreplace({m.t: t0}) - ref) == 0
+
+
+def test_equations_of_motion_are_symmetric_and_dissipative(derivation):
+    make = m._rhs_functions(derivation)
+    _, _, _, (M, C, K) = make(EXAMPLE, lambda tt: 0.0)
+    for X in (M, C, K):
+        assert np.allclose(X, X.T, rtol=1e-14, atol=0)
+    assert np.all(np.linalg.eigvalsh(M) > 0) and np.all(np.linalg.eigvalsh(C) >= -1e-9)
+    # One rigid-body mode: the running of drive and element together.
+    rigid = np.array([1, 1, 1, 0, EXAMPLE["r"]])
+    assert np.allclose(K @ rigid, 0, atol=1e-9)
+
+
+def test_effective_mass_against_quadrature(derivation):
+    rng = np.random.default_rng(4)
+    m_eff = _f(derivation, "branch_effective_mass")
+    T7 = sp.lambdify([m.q, m.L, pub.delta_y, m.y.diff(m.t), m.z.diff(m.t)],
+                     derivation.step("(7)").statement.rhs)
+    for _ in range(20):
+        q, L, dl, vy, vz = rng.uniform(0.5, 20), rng.uniform(10, 3e3), rng.uniform(10, 3e3), \
+            rng.normal(), rng.normal()
+        apex_y, apex_z = rng.uniform(0.01, 0.99) * L, rng.uniform(0.01, 0.99) * dl
+
+        def span(v, apex, end):
+            left = integrate.quad(lambda s: q * (v * s / apex) ** 2 / 2, 0, apex)[0]
+            right = integrate.quad(lambda s: q * (v * (end - s) / (end - apex)) ** 2 / 2,
+                                   apex, end)[0]
+            return left + right
+
+        assert span(vy, apex_y, L) == pytest.approx(m_eff(q, L) * vy**2 / 2, rel=1e-12)
+        assert span(vy, apex_y, L) + span(vz, apex_z, dl) == pytest.approx(
+            T7(q, L, dl, vy, vz), rel=1e-12)
+
+
+def test_branch_energy_against_quadrature():
+    rng = np.random.default_rng(5)
+    Tb = sp.lambdify([m.q, m.L, m.v_A, m.v_B], m.branch_energy())
+    for _ in range(20):
+        q, L, va, vb = rng.uniform(0.5, 20), rng.uniform(10, 3e3), rng.normal(), rng.normal()
+        ref = integrate.quad(lambda s: q * (va + (vb - va) * s / L) ** 2 / 2, 0, L)[0]
+        assert Tb(q, L, va, vb) == pytest.approx(ref, rel=1e-12)
+
+
+def test_chain_frequencies_against_numpy_eigvals(derivation):
+    rng = np.random.default_rng(2010)
+    w1, w2 = (_f(derivation, f"drive_chain_frequency_{i}") for i in (1, 2))
+    for _ in range(200):
+        I = 10.0 ** rng.uniform(-1, 3, 3)
+        C1, C2 = 10.0 ** rng.uniform(2, 7, 2)
+        K = np.array([[C1, -C1, 0], [-C1, C1 + C2, -C2], [0, -C2, C2]])
+        lam = np.sort(np.linalg.eigvals(np.diag(1 / I) @ K).real)
+        assert abs(lam[0]) <= 1e-9 * lam[2]
+        ref = np.sqrt(lam[1:])
+        got = np.array([w1(*I, C1, C2), w2(*I, C1, C2)])
+        assert np.allclose(got, ref, rtol=1e-9), (I, C1, C2)
+    # The example: I = 13, 3, 50 kg·m², C1 = 20, C2 = 50 kN·m/rad.
+    assert w1(13, 3, 50, 2e4, 5e4) == pytest.approx(37.176, rel=1e-4)
+    assert w2(13, 3, 50, 2e4, 5e4) == pytest.approx(156.49, rel=1e-4)
+
+
+def test_k_of_13_is_the_geometric_mean_of_the_chain_frequencies(derivation):
+    k = sp.lambdify([m.I1, m.I2, m.I3, m.C1, m.C2], derivation.step("(13), k").statement.rhs)
+    w1, w2 = (_f(derivation, f"drive_chain_frequency_{i}") for i in (1, 2))
+    args = (13, 3, 50, 2e4, 5e4)
+    assert k(*args) == pytest.approx(math.sqrt(w1(*args) * w2(*args)), rel=1e-12)
+
+
+def test_pulsating_force_and_its_min_form(derivation):
+    F = _f(derivation, "pulsating_force")
+    lows = sp.lambdify([m.t, m.F1_t, m.K1, m.F3_t, m.K3, m.t_3],
+                       derivation.step("(21), min form").statement.rhs, "numpy")
+    tt = np.linspace(0, 12, 1201)
+    got = F(tt, 1200, 1200, 600, 600, 800, 800, 400, 400, 3.0)
+    assert np.allclose(got, lows(tt, 1200, 800, 600, 400, 3.0), rtol=0, atol=1e-9)
+    assert got.max() == pytest.approx(600) and got.min() == pytest.approx(-900)
+    assert np.all(got[(tt > 3.01) & (tt < 5.99)] < 0)      # the sine is not rectified
+
+
+def test_drum_torque_and_traction_outputs(derivation):
+    torque, margin, least = (_f(derivation, n) for n in
+                             ("drum_torque", "traction_margin", "least_mu_alpha"))
+    assert torque(21.76e3, 20e3, 0.5) == pytest.approx(440.0, rel=1e-12)
+    F1, F2 = 30e3, 12e3
+    assert margin(F1, F2, least(F1, F2), 1.0) == pytest.approx(0.0, abs=1e-12)
+    assert margin(F1, F2, 0.2, math.pi) == pytest.approx(math.exp(0.2 * math.pi) - 3.125)
+
+
+def test_steady_running_against_a_long_simulation(derivation):
+    make = m._rhs_functions(derivation)
+    W = 500.0
+    rhs, jac, energy, _ = make(EXAMPLE, lambda tt: W)
+    sol = integrate.solve_ivp(rhs, (0, 250), np.zeros(12), method="LSODA", jac=jac,
+                              rtol=1e-10, atol=1e-12)
+    x = sol.y[:, -1]
+    r = EXAMPLE["r"]
+    F1 = EXAMPLE["F0"] + EXAMPLE["C_t"] * (r * x[2] - x[3] - x[4])
+    F2 = EXAMPLE["F0"] + EXAMPLE["C_z"] * (x[4] - x[3] - r * x[2])
+    running = {n: _f(derivation, n) for n in ("running_tight_force", "running_slack_force",
+                                             "running_drum_shaft_deflection")}
+    args = [EXAMPLE[n] for n in ("M0", "D", "F0", "C_t", "C_z", "C_y")]
+    assert F1 == pytest.approx(running["running_tight_force"](*args), rel=1e-6)
+    assert F2 == pytest.approx(running["running_slack_force"](*args), rel=1e-6)
+    assert x[3] == pytest.approx(running["running_drum_shaft_deflection"](*args), rel=1e-6)
+    v_s = sp.lambdify([m.M0, m.r, m.W, m.nu_t], derivation.step("steady running")
+                      .statement.rhs)(EXAMPLE["M0"], r, W, EXAMPLE["nu_t"])
+    assert x[9] == pytest.approx(v_s, rel=1e-6)
+
+
+# --- The example ------------------------------------------------------------------
+def test_simulation_energy_balance(report):
+    # work of the given forces − dissipated energy = T + Π, to 1e-8 of the work
+    assert report.values["energy_error"] < 1e-8
+
+
+def test_example_against_the_papers_fig3(report):
+    v = report.values
+    assert v["y_max"] < 0.010                         # "within 10 mm"
+    assert v["f_empty_1"] > v["f_loaded_1"]           # a lighter run raises the frequency
+    assert v["drum_torque"] == pytest.approx(440.0)   # (18) at the scene's F1, F2
+    assert v["running_F1"] - v["running_F2"] == pytest.approx(2 * 440 / 0.5, rel=1e-12)
+    assert v["rest_y"] == pytest.approx(v["running_y"], rel=1e-12)
+
+
+def test_scene_loads_and_runs(scene, tmp_path):
+    from crane_sym.scenes import run_scene
+    assert scene.parameters["C1"] == 2e4 and scene.parameters["D"] == 0.5
+    assert scene.options["duration"] == 10.0
+    rep, path = run_scene(scene, tmp_path)
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert len(rep.panels) == 4 and any("energy balance" in line for line in rep.lines)
+    assert rep.values["run_time"] > 0
