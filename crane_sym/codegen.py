@@ -166,10 +166,17 @@ def render_function(out: Output, table: SymbolTable,
     """Source of one validated, vectorized NumPy function."""
     printer = _printer()
     varying = {e.expr for e in table.with_role(TIME)} & set(out.args)
-    expr = optimize(out.expr, rules_for(varying) if rules is None else rules)
-    assignments, phases, body = hoist(expr, varying)
-    subs, reduced = sp.cse([e for _, e in assignments] + [body],
-                           symbols=sp.numbered_symbols("x"), order="canonical")
+    rules = rules_for(varying) if rules is None else rules
+    shape = out.expr.shape if isinstance(out.expr, sp.MatrixBase) else None
+    if shape is None:
+        expr = optimize(out.expr, rules)
+        assignments, phases, body = hoist(expr, varying)
+        subs, reduced = sp.cse([e for _, e in assignments] + [body],
+                               symbols=sp.numbered_symbols("x"), order="canonical")
+    else:  # a matrix: its elements share one CSE, no hoisting
+        assignments, phases = [], []
+        subs, reduced = sp.cse([optimize(e, rules) for e in out.expr],
+                               symbols=sp.numbered_symbols("x"), order="canonical")
     entries = [table[a] for a in out.args]
     width = max((len(e.name) for e in entries), default=0)
     params = "\n".join(
@@ -186,7 +193,9 @@ def render_function(out: Output, table: SymbolTable,
              "    Returns",
              "    -------",
              "    ndarray",
-             f"        [{out.unit}], broadcast over the arguments.",
+             f"        [{out.unit}], " + (f"shape {tuple(shape)} followed by the broadcast "
+                                        "shape of the arguments." if shape else
+                                        "broadcast over the arguments."),
              '    """']
     for e in entries:
         what = f"{e.description}, {e.unit}".replace('"', "'")
@@ -201,7 +210,11 @@ def render_function(out: Output, table: SymbolTable,
     for (k, _), value in zip(assignments, reduced[:-1]):
         if k not in alias:
             lines.append(f"    {k} = {printer.doprint(value)}")
-    lines.append(f"    return {printer.doprint(reduced[-1].xreplace(alias))}")
+    if shape is not None:
+        elements = ", ".join(printer.doprint(e) for e in reduced)
+        lines.append(f"    return _matrix({tuple(shape)}, [{elements}])")
+    else:
+        lines.append(f"    return {printer.doprint(reduced[-1].xreplace(alias))}")
     return "\n".join(lines) + "\n"
 
 

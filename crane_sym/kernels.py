@@ -146,6 +146,13 @@ def _sin_remainder(x, n):
     return _taylor_remainder(x, n, 1)
 
 
+def _matrix(shape, elements):
+    """Row-major ``elements`` as an array of ``shape`` followed by the
+    broadcast shape of the elements (a matrix per input point)."""
+    flat = np.broadcast_arrays(*[np.asarray(e, dtype=float) for e in elements])
+    return np.stack(flat).reshape(tuple(shape) + flat[0].shape)
+
+
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {
     "_checked": (),
@@ -158,6 +165,7 @@ DEPENDS = {
     "_dd_sqrt": ("_two_product", "_quick_two_sum"),
     "_phase": ("_two_product",),
     "_sin_phase": ("_phase",), "_cos_phase": ("_phase",),
+    "_matrix": (),
     "_taylor_remainder": (),
     "_cos_remainder": ("_taylor_remainder",), "_sin_remainder": ("_taylor_remainder",),
 }

@@ -197,8 +197,10 @@ def load_scene(path_or_name: str | Path) -> Scene:
     if len(set(outputs)) != len(outputs):
         raise SceneError(f"{where}: an output is listed twice in {outputs}")
 
-    needed = {a for o in derivation.outputs for a in o.args}
-    entries = [e for e in derivation.symbols if e.expr in needed and e.role != TIME]
+    # Required: what the scene's outputs take; allowed: what any output takes.
+    required = {a for o in derivation.outputs if o.name in outputs for a in o.args}
+    allowed = {a for o in derivation.outputs for a in o.args}
+    entries = [e for e in derivation.symbols if e.expr in allowed and e.role != TIME]
     raw = _table(data, "parameters", where)
     names = [e.name for e in entries]
     for key in raw:
@@ -209,6 +211,8 @@ def load_scene(path_or_name: str | Path) -> Scene:
                              f"{derivation_id!r} takes {', '.join(names)}")
     parameters: dict[str, float] = {}
     for entry in entries:
+        if entry.name not in raw and entry.expr not in required:
+            continue
         if entry.name not in raw:
             raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}, "
                              f"{entry.unit}) is missing")

@@ -46,6 +46,8 @@ STIFF, DAMP = force / length, force * time / length
 t = sp.Symbol("t", nonnegative=True)
 phi1, phi2, phi3, y, z = (sp.Function(n)(t) for n in ("phi1", "phi2", "phi3", "y", "z"))
 COORDS = (phi1, phi2, phi3, y, z)
+#: State of the simulation, (q, q'): plain symbols for the generated right-hand side.
+STATE = sp.symbols("s1:11", real=True)
 (I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, C_t, C_z, nu_y, nu_z, nu_t, q, L, r, D,
  M0, F0, F1, F2, mu, alpha, g, m_sum, mu_op, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4,
  t_3) = sp.symbols("I1 I2 I3 C1 C2 nu1 nu2 m3 m_L C_y C_t C_z nu_y nu_z nu_t q L r D M0 "
@@ -109,6 +111,13 @@ MODEL_SYMBOLS = [
         (t_3, time, "s", "stop time t_3 of the transporter in (21)", (0.5, 30.0))]),
     *_entries(PARAMETER, "real", [
         (W, force, "N", "resistance of the loads to the motion of the run", (10, 1e5))]),
+    *_entries(PARAMETER, "real", [
+        (state, dim, unit, f"state {i}: {what}")
+        for i, (state, (dim, unit, what)) in enumerate(zip(STATE, [
+            (ONE, "rad", "φ1"), (ONE, "rad", "φ2"), (ONE, "rad", "φ3"), (length, "m", "y"),
+            (length, "m", "z"), (1 / time, "rad/s", "dφ1/dt"), (1 / time, "rad/s", "dφ2/dt"),
+            (1 / time, "rad/s", "dφ3/dt"), (velocity, "m/s", "dy/dt"),
+            (velocity, "m/s", "dz/dt")]), 1)]),
     *_entries(COORDINATE, "real", [
         (phi1, ONE, "rad", "angle of the motor rotor"),
         (phi2, ONE, "rad", "angle of the intermediate mass"),
@@ -516,6 +525,50 @@ def _outputs(d: Derivation) -> list[Output]:
         Output("pulsating_force", rhs("(21)"),
                (t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3), ("(21)",),
                "Pulsating load F'(t) of (21), as printed.", "N"),
+        *_simulation_outputs(d),
+    ]
+
+
+def _linear_system(d: Derivation):
+    """(12) as M·q̈ + C·q̇ + K·q = F(W), q = (φ1, φ2, φ3, y, z), from the steps."""
+    rows = [d.step(f"(12), {n}").statement for n in ("φ1", "φ2", "φ3", "y", "z")]
+    qs, vs, accs = STATE[:5], STATE[5:], sp.symbols("a0:5")
+    frozen = ({c.diff(t, 2): a for c, a in zip(COORDS, accs)}
+              | {c.diff(t): v for c, v in zip(COORDS, vs)} | dict(zip(COORDS, qs)))
+    res = [sp.expand((e.lhs - e.rhs).xreplace(frozen)) for e in rows]
+    M, C, K = (sp.Matrix([[sp.diff(r_, s_) for s_ in group] for r_ in res])
+               for group in (accs, vs, qs))
+    F = -sp.Matrix([r_.xreplace({s_: 0 for s_ in accs + vs + qs}) for r_ in res])
+    return M, C, K, F
+
+
+def _simulation_outputs(d: Derivation) -> list[Output]:
+    """State derivative and Jacobian of (12) for SciPy's integrators, and the
+    matrices the energy balance needs."""
+    M, C, K, F = _linear_system(d)
+    Minv = M.inv()
+    n = len(COORDS)
+    J = sp.Matrix(sp.BlockMatrix([[sp.zeros(n), sp.eye(n)],
+                                  [-Minv * K, -Minv * C]]))
+    f = J * sp.Matrix(STATE) + sp.Matrix.vstack(sp.zeros(n, 1), Minv * F)
+    J, f = J.applyfunc(sp.factor), f.applyfunc(sp.factor)
+
+    def ordered(*exprs: sp.Expr) -> tuple:
+        free = set().union(*(e.free_symbols for e in exprs))
+        return tuple(e.expr for e in d.symbols if e.expr in free)
+
+    return [
+        Output("state_derivative", f, ordered(f), ("(12)",),
+               "Right-hand side d(state)/dt of (12) for scipy.integrate.solve_ivp; state "
+               "(phi1, phi2, phi3, y, z, and their rates) = (s1, ..., s10).", "SI"),
+        Output("state_jacobian", J, ordered(J), ("(12)",),
+               "Jacobian of state_derivative (constant: the model is linear).", "SI"),
+        Output("mass_matrix", M, ordered(M), ("(12)",), "Mass matrix M of (12).", "SI"),
+        Output("damping_matrix", C, ordered(C), ("(12)",), "Damping matrix C of (12).", "SI"),
+        Output("stiffness_matrix", K, ordered(K), ("(12)",), "Stiffness matrix K of (12).",
+               "SI"),
+        Output("generalized_forces", F, ordered(F), ("(10)", "(12)"),
+               "Generalized forces F(W) of (12).", "SI"),
     ]
 
 # --- Scenes ------------------------------------------------------------------
@@ -524,53 +577,54 @@ SIM_OPTIONS = ("m3", "m_L", "nu1", "nu2", "nu_y", "nu_z", "nu_t")
 
 
 def _rhs_functions(d: Derivation):
-    """NumPy right-hand side, Jacobian and energy of (12), lambdified from the steps.
+    """Right-hand side, Jacobian and energy of (12) from the generated module.
 
-    The equations are linear: M·q̈ + C·q̇ + K·q = F(W) with q = (φ1, φ2, φ3, y, z).
-    The state is (q, q̇, E_in, E_d): E_in = ∫F·q̇ dt is the work of the given
-    forces, E_d = ∫q̇·C·q̇ dt = ∫2Φ dt the dissipated energy.
+    The state is (q, q̇, E_in, E_d): q̇ and q̈ come from the generated
+    ``state_derivative``; E_in = ∫F·q̇ dt is the work of the given forces and
+    E_d = ∫q̇·C·q̇ dt = ∫2Φ dt the dissipated energy.
 
     Returns
     -------
     make(values, load) -> (rhs, jac, energy, matrices)
         ``values``: SI values by symbol name; ``load``: W as a function of t.
     """
+    import importlib
+
     import numpy as np
 
-    rows = [d.step(f"(12), {n}").statement for n in ("φ1", "φ2", "φ3", "y", "z")]
-    qs, vs, accs = sp.symbols("q0:5"), sp.symbols("v0:5"), sp.symbols("a0:5")
-    frozen = ({p.diff(t, 2): a for p, a in zip(COORDS, accs)}
-              | {p.diff(t): v for p, v in zip(COORDS, vs)} | dict(zip(COORDS, qs)))
-    res = [sp.expand((e.lhs - e.rhs).xreplace(frozen)) for e in rows]
-    M, C, K = (sp.Matrix([[sp.diff(r_, s) for s in group] for r_ in res])
-               for group in (accs, vs, qs))
-    F = -sp.Matrix([r_.xreplace({s: 0 for s in accs + vs + qs}) for r_ in res])
-    free = set().union(*(X.free_symbols for X in (M, C, K, F)))
-    args = [e.expr for e in d.symbols if e.expr in free and e.expr != W]
-    f_mck = sp.lambdify(args, (M, C, K), "numpy")
-    f_force = sp.lambdify(args + [W], F, "numpy")
+    generated = importlib.import_module(f"crane_sym.generated.{d.id}")
+    order = {o.name: [str(a) for a in o.args] for o in d.outputs}
+    n = len(COORDS)
 
     def make(values: dict, load):
-        vals = [values[a.name] for a in args]
-        Mn, Cn, Kn = (np.asarray(X, dtype=float) for X in f_mck(*vals))
-        Minv = np.linalg.inv(Mn)
-        n = len(COORDS)
-        A = np.zeros((2 * n + 2, 2 * n + 2))
-        A[:n, n:2 * n] = np.eye(n)
-        A[n:2 * n, :n], A[n:2 * n, n:2 * n] = -Minv @ Kn, -Minv @ Cn
+        def call(name: str, **more) -> np.ndarray:
+            given = {**values, **more}
+            return getattr(generated, name)(*[given[a] for a in order[name]])
+
+        Mn, Cn, Kn = (call(name) for name in ("mass_matrix", "damping_matrix",
+                                             "stiffness_matrix"))
+        Jn = call("state_jacobian")
+        # The model is linear: f(x, W) = J·x + f0 + W·fW and F(W) = F0 + W·FW, all
+        # taken from the generated functions once per parameter set.
+        rest = {str(s_): 0.0 for s_ in STATE}
+        f0 = call("state_derivative", W=0.0, **rest).ravel()
+        fW = call("state_derivative", W=1.0, **rest).ravel() - f0
+        F0n = call("generalized_forces", W=0.0).ravel()
+        FWn = call("generalized_forces", W=1.0).ravel() - F0n
 
         def force(tt):
-            return np.asarray(f_force(*vals, load(tt)), dtype=float).ravel()
+            return F0n + load(tt) * FWn
 
         def rhs(tt, x):
-            v, Fn = x[n:2 * n], force(tt)
-            dx = A @ x
-            dx[n:2 * n] += Minv @ Fn
-            dx[2 * n], dx[2 * n + 1] = Fn @ v, v @ Cn @ v
+            dx = np.empty(2 * n + 2)
+            dx[:2 * n] = Jn @ x[:2 * n] + f0 + load(tt) * fW
+            v = x[n:2 * n]
+            dx[2 * n], dx[2 * n + 1] = force(tt) @ v, v @ Cn @ v
             return dx
 
         def jac(tt, x):
-            J = A.copy()
+            J = np.zeros((2 * n + 2, 2 * n + 2))
+            J[:2 * n, :2 * n] = Jn
             J[2 * n, n:2 * n], J[2 * n + 1, n:2 * n] = force(tt), 2 * Cn @ x[n:2 * n]
             return J
 

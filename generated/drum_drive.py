@@ -2,7 +2,7 @@
 
 Source: crane_sym.derivations.drum_drive (paper 004_f118c513e0426caf.txt:
 Dynamic model of a drive with a driving drum).
-Equations: (7), (12), (13), (18), (19), (21).
+Equations: (7), (10), (12), (13), (18), (19), (21).
 Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
 
 Functions and argument order:
@@ -16,11 +16,17 @@ Functions and argument order:
     traction_margin(F1, F2, mu, alpha) -> [1]    eq (19)
     least_mu_alpha(F1, F2) -> [1]    eq (19)
     pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3) -> [N]    eq (21)
+    state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r, M0, F0, W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10) -> [SI]    eq (12)
+    state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r) -> [SI]    eq (12)
+    mass_matrix(I1, I2, I3, m3, m_L, q, L, r) -> [SI]    eq (12)
+    damping_matrix(nu1, nu2, nu_y, nu_z, nu_t, r) -> [SI]    eq (12)
+    stiffness_matrix(C1, C2, C_y, C_t, C_z, r) -> [SI]    eq (12)
+    generalized_forces(M0, F0, W) -> [SI]    eq (10), (12)
 """
 
 import numpy as np
 
-__all__ = ['branch_effective_mass', 'drive_chain_frequency_1', 'drive_chain_frequency_2', 'running_tight_force', 'running_slack_force', 'running_drum_shaft_deflection', 'drum_torque', 'traction_margin', 'least_mu_alpha', 'pulsating_force']
+__all__ = ['branch_effective_mass', 'drive_chain_frequency_1', 'drive_chain_frequency_2', 'running_tight_force', 'running_slack_force', 'running_drum_shaft_deflection', 'drum_torque', 'traction_margin', 'least_mu_alpha', 'pulsating_force', 'state_derivative', 'state_jacobian', 'mass_matrix', 'damping_matrix', 'stiffness_matrix', 'generalized_forces']
 
 
 def _checked(name, value, sign, what):
@@ -104,6 +110,13 @@ def _sin_phase(t, k):
     """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
     hi, lo = _phase(t, k)
     return np.sin(hi) + np.cos(hi) * lo
+
+
+def _matrix(shape, elements):
+    """Row-major ``elements`` as an array of ``shape`` followed by the
+    broadcast shape of the elements (a matrix per input point)."""
+    flat = np.broadcast_arrays(*[np.asarray(e, dtype=float) for e in elements])
+    return np.stack(flat).reshape(tuple(shape) + flat[0].shape)
 
 
 def branch_effective_mass(q, L):
@@ -421,3 +434,371 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
     k3 = (1/4)*F3_t
     k4 = (1/4)*K1 + (1/4)*K3
     return k2*x0 + k3*x0 + k4 - 1/4*abs(F2_t*x0 + k0) - 1/4*abs(F4_t*x0 + k1)
+
+
+def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r, M0, F0, W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10):
+    """Right-hand side d(state)/dt of (12) for scipy.integrate.solve_ivp; state (phi1, phi2, phi3, y, z, and their rates) = (s1, ..., s10). Eq (12).
+
+    Parameters
+    ----------
+    I1 : array_like
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+    I2 : array_like
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+    I3 : array_like
+        moment of inertia of the driving drum [kg*m^2], > 0
+    C1 : array_like
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+    C2 : array_like
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+    nu1 : array_like
+        resistance coefficient of the C1 shaft [N*m*s/rad], > 0
+    nu2 : array_like
+        resistance coefficient of the C2 shaft [N*m*s/rad], > 0
+    m3 : array_like
+        mass of the drum with its shaft's share (moves with y) [kg], > 0
+    m_L : array_like
+        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0
+    C_y : array_like
+        bending stiffness of the drum shaft at the drum [N/m], > 0
+    nu_y : array_like
+        resistance coefficient of the drum-shaft bending [N*s/m], > 0
+    C_t : array_like
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+    C_z : array_like
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+    nu_z : array_like
+        resistance coefficient of the slack branch's stretching [N*s/m], > 0
+    nu_t : array_like
+        running resistance of the element per unit speed [N*s/m], > 0
+    q : array_like
+        mass of one metre of the traction element [kg/m], > 0
+    L : array_like
+        length of a branch (of the span in (7)) [m], > 0
+    r : array_like
+        radius of the driving drum [m], > 0
+    M0 : array_like
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+    F0 : array_like
+        pretension of both branches at rest [N], > 0
+    W : array_like
+        resistance of the loads to the motion of the run [N]
+    s1 : array_like
+        state 1: φ1 [rad]
+    s2 : array_like
+        state 2: φ2 [rad]
+    s3 : array_like
+        state 3: φ3 [rad]
+    s4 : array_like
+        state 4: y [m]
+    s5 : array_like
+        state 5: z [m]
+    s6 : array_like
+        state 6: dφ1/dt [rad/s]
+    s7 : array_like
+        state 7: dφ2/dt [rad/s]
+    s8 : array_like
+        state 8: dφ3/dt [rad/s]
+    s9 : array_like
+        state 9: dy/dt [m/s]
+    s10 : array_like
+        state 10: dz/dt [m/s]
+
+    Returns
+    -------
+    ndarray
+        [SI], shape (10, 1) followed by the broadcast shape of the arguments.
+    """
+    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
+    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
+    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
+    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
+    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    nu1  = _checked('nu1', nu1, 'positive', 'resistance coefficient of the C1 shaft, N*m*s/rad')
+    nu2  = _checked('nu2', nu2, 'positive', 'resistance coefficient of the C2 shaft, N*m*s/rad')
+    m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
+    m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
+    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    nu_y = _checked('nu_y', nu_y, 'positive', 'resistance coefficient of the drum-shaft bending, N*s/m')
+    C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
+    C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
+    nu_z = _checked('nu_z', nu_z, 'positive', "resistance coefficient of the slack branch's stretching, N*s/m")
+    nu_t = _checked('nu_t', nu_t, 'positive', 'running resistance of the element per unit speed, N*s/m')
+    q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
+    L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
+    r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    M0   = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
+    F0   = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
+    W    = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N')
+    s1   = _checked('s1', s1, 'real', 'state 1: φ1, rad')
+    s2   = _checked('s2', s2, 'real', 'state 2: φ2, rad')
+    s3   = _checked('s3', s3, 'real', 'state 3: φ3, rad')
+    s4   = _checked('s4', s4, 'real', 'state 4: y, m')
+    s5   = _checked('s5', s5, 'real', 'state 5: z, m')
+    s6   = _checked('s6', s6, 'real', 'state 6: dφ1/dt, rad/s')
+    s7   = _checked('s7', s7, 'real', 'state 7: dφ2/dt, rad/s')
+    s8   = _checked('s8', s8, 'real', 'state 8: dφ3/dt, rad/s')
+    s9   = _checked('s9', s9, 'real', 'state 9: dy/dt, m/s')
+    s10  = _checked('s10', s10, 'real', 'state 10: dz/dt, m/s')
+    x0 = C1*s2
+    x1 = nu1*s7
+    x2 = C2*s2
+    x3 = nu2*s7
+    x4 = 3*I3
+    x5 = L*q
+    x6 = 2*x5
+    x7 = r**2
+    x8 = x6*x7
+    x9 = 1/(I3*x6 + L**2*q**2*x7 + m_L*x4 + m_L*x8)
+    x10 = 3*m_L
+    x11 = r*x5
+    x12 = C_t*s4
+    x13 = r*x10
+    x14 = C_t*s5
+    x15 = C_z*s5
+    x16 = nu_z*s10
+    x17 = nu_t*s10
+    x18 = 3*x11
+    x19 = 3*x5*x7
+    x20 = r**3
+    return _matrix((10, 1), [s6, s7, s8, s9, s10, -(C1*s1 - M0 + nu1*s6 - x0 - x1)/I1, (C1*s1 + C2*s3 + nu1*s6 + nu2*s8 - x0 - x1 - x2 - x3)/I2, -x9*(2*C2*L*q*s3 + 3*C2*m_L*s3 + 3*C_t*L*q*s3*x7 + 3*C_t*m_L*s3*x7 + 3*C_z*L*q*r*s4 + 3*C_z*L*q*s3*x7 + 3*C_z*m_L*r*s4 + 3*C_z*m_L*s3*x7 + 2*L*nu2*q*s8 + 3*L*nu_z*q*r*s9 + 3*L*nu_z*q*s8*x7 - W*x11 + 3*m_L*nu2*s8 + 3*m_L*nu_z*r*s9 + 3*m_L*nu_z*s8*x7 - x10*x2 - x10*x3 - x11*x17 - x12*x13 - x12*x18 - x13*x14 - x13*x15 - x13*x16 - x14*x18 - x15*x18 - x16*x18 - x2*x6 - x3*x6), 3*(C_t*r*s3 - C_y*s4 - C_z*r*s3 - C_z*s4 + C_z*s5 + 2*F0 - nu_y*s9 - nu_z*r*s8 + nu_z*s10 - nu_z*s9 - x12 - x14)/(3*m3 + x6), x9*(C2*L*q*r*s3 + 3*C_t*I3*r*s3 + 3*C_t*L*q*s3*x20 + 3*C_z*I3*r*s3 + 3*C_z*I3*s4 + 3*C_z*L*q*s3*x20 + 3*C_z*L*q*s4*x7 + 3*I3*nu_z*r*s8 + 3*I3*nu_z*s9 + L*nu2*q*r*s8 + 3*L*nu_z*q*s8*x20 + 3*L*nu_z*q*s9*x7 - W*x4 - W*x8 - x11*x2 - x11*x3 - x12*x19 - x12*x4 - x14*x19 - x14*x4 - x15*x19 - x15*x4 - x16*x19 - x16*x4 - x17*x4 - x17*x8)])
+
+
+def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r):
+    """Jacobian of state_derivative (constant: the model is linear). Eq (12).
+
+    Parameters
+    ----------
+    I1 : array_like
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+    I2 : array_like
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+    I3 : array_like
+        moment of inertia of the driving drum [kg*m^2], > 0
+    C1 : array_like
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+    C2 : array_like
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+    nu1 : array_like
+        resistance coefficient of the C1 shaft [N*m*s/rad], > 0
+    nu2 : array_like
+        resistance coefficient of the C2 shaft [N*m*s/rad], > 0
+    m3 : array_like
+        mass of the drum with its shaft's share (moves with y) [kg], > 0
+    m_L : array_like
+        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0
+    C_y : array_like
+        bending stiffness of the drum shaft at the drum [N/m], > 0
+    nu_y : array_like
+        resistance coefficient of the drum-shaft bending [N*s/m], > 0
+    C_t : array_like
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+    C_z : array_like
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+    nu_z : array_like
+        resistance coefficient of the slack branch's stretching [N*s/m], > 0
+    nu_t : array_like
+        running resistance of the element per unit speed [N*s/m], > 0
+    q : array_like
+        mass of one metre of the traction element [kg/m], > 0
+    L : array_like
+        length of a branch (of the span in (7)) [m], > 0
+    r : array_like
+        radius of the driving drum [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [SI], shape (10, 10) followed by the broadcast shape of the arguments.
+    """
+    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
+    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
+    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
+    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
+    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    nu1  = _checked('nu1', nu1, 'positive', 'resistance coefficient of the C1 shaft, N*m*s/rad')
+    nu2  = _checked('nu2', nu2, 'positive', 'resistance coefficient of the C2 shaft, N*m*s/rad')
+    m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
+    m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
+    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    nu_y = _checked('nu_y', nu_y, 'positive', 'resistance coefficient of the drum-shaft bending, N*s/m')
+    C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
+    C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
+    nu_z = _checked('nu_z', nu_z, 'positive', "resistance coefficient of the slack branch's stretching, N*s/m")
+    nu_t = _checked('nu_t', nu_t, 'positive', 'running resistance of the element per unit speed, N*s/m')
+    q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
+    L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
+    r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    x0 = 1/(I1)
+    x1 = C1*x0
+    x2 = nu1*x0
+    x3 = 1/(I2)
+    x4 = 3*m_L
+    x5 = L*q
+    x6 = 2*x5
+    x7 = r**2
+    x8 = x6*x7
+    x9 = 1/(I3*x4 + I3*x6 + L**2*q**2*x7 + m_L*x8)
+    x10 = x9*(x4 + x6)
+    x11 = x4*x7
+    x12 = x5*x7
+    x13 = 3*x12
+    x14 = C_t*x13 + C_z*x13
+    x15 = C_t - C_z
+    x16 = 3*x15
+    x17 = r*x9
+    x18 = x17*(m_L + x5)
+    x19 = C_t + C_z
+    x20 = 3*x19
+    x21 = nu_z*x4
+    x22 = 3*nu_z
+    x23 = x12*x22
+    x24 = 3/(3*m3 + x6)
+    x25 = x15*x24
+    x26 = nu_z*x24
+    x27 = C2*x5
+    x28 = 3*I3
+    x29 = x9*(I3 + x12)
+    x30 = nu2*x5
+    x31 = nu_z*x28 + x23
+    return _matrix((10, 10), [0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, -x1, x1, 0, 0, 0, -x2, x2, 0, 0, 0, C1*x3, -x3*(C1 + C2), C2*x3, 0, 0, nu1*x3, -x3*(nu1 + nu2), nu2*x3, 0, 0, 0, C2*x10, -x9*(C2*x4 + C2*x6 + C_t*x11 + C_z*x11 + x14), x16*x18, x18*x20, 0, nu2*x10, -x9*(nu2*x4 + nu2*x6 + x21*x7 + x23), -x18*x22, x17*(nu_t*x5 + x21 + x22*x5), 0, 0, r*x25, -x24*(C_y + x19), -x25, 0, 0, -r*x26, -x24*(nu_y + nu_z), x26, 0, -x17*x27, x17*(C_t*x28 + C_z*x28 + x14 + x27), -x16*x29, -x20*x29, 0, -x17*x30, x17*(x30 + x31), x22*x29, -x9*(nu_t*x28 + nu_t*x8 + x31)])
+
+
+def mass_matrix(I1, I2, I3, m3, m_L, q, L, r):
+    """Mass matrix M of (12). Eq (12).
+
+    Parameters
+    ----------
+    I1 : array_like
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+    I2 : array_like
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+    I3 : array_like
+        moment of inertia of the driving drum [kg*m^2], > 0
+    m3 : array_like
+        mass of the drum with its shaft's share (moves with y) [kg], > 0
+    m_L : array_like
+        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0
+    q : array_like
+        mass of one metre of the traction element [kg/m], > 0
+    L : array_like
+        length of a branch (of the span in (7)) [m], > 0
+    r : array_like
+        radius of the driving drum [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [SI], shape (5, 5) followed by the broadcast shape of the arguments.
+    """
+    I1  = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
+    I2  = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
+    I3  = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
+    m3  = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
+    m_L = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
+    q   = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
+    L   = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
+    r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    x0 = L*q
+    x1 = (2/3)*x0
+    x2 = (1/3)*r*x0
+    return _matrix((5, 5), [I1, 0, 0, 0, 0, 0, I2, 0, 0, 0, 0, 0, I3 + r**2*x1, 0, x2, 0, 0, 0, m3 + x1, 0, 0, 0, x2, 0, m_L + x1])
+
+
+def damping_matrix(nu1, nu2, nu_y, nu_z, nu_t, r):
+    """Damping matrix C of (12). Eq (12).
+
+    Parameters
+    ----------
+    nu1 : array_like
+        resistance coefficient of the C1 shaft [N*m*s/rad], > 0
+    nu2 : array_like
+        resistance coefficient of the C2 shaft [N*m*s/rad], > 0
+    nu_y : array_like
+        resistance coefficient of the drum-shaft bending [N*s/m], > 0
+    nu_z : array_like
+        resistance coefficient of the slack branch's stretching [N*s/m], > 0
+    nu_t : array_like
+        running resistance of the element per unit speed [N*s/m], > 0
+    r : array_like
+        radius of the driving drum [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [SI], shape (5, 5) followed by the broadcast shape of the arguments.
+    """
+    nu1  = _checked('nu1', nu1, 'positive', 'resistance coefficient of the C1 shaft, N*m*s/rad')
+    nu2  = _checked('nu2', nu2, 'positive', 'resistance coefficient of the C2 shaft, N*m*s/rad')
+    nu_y = _checked('nu_y', nu_y, 'positive', 'resistance coefficient of the drum-shaft bending, N*s/m')
+    nu_z = _checked('nu_z', nu_z, 'positive', "resistance coefficient of the slack branch's stretching, N*s/m")
+    nu_t = _checked('nu_t', nu_t, 'positive', 'running resistance of the element per unit speed, N*s/m')
+    r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    x0 = -nu1
+    x1 = -nu2
+    x2 = nu_z*r
+    x3 = -x2
+    x4 = -nu_z
+    return _matrix((5, 5), [nu1, x0, 0, 0, 0, x0, nu1 + nu2, x1, 0, 0, 0, x1, nu2 + nu_z*r**2, x2, x3, 0, 0, x2, nu_y + nu_z, x4, 0, 0, x3, x4, nu_t + nu_z])
+
+
+def stiffness_matrix(C1, C2, C_y, C_t, C_z, r):
+    """Stiffness matrix K of (12). Eq (12).
+
+    Parameters
+    ----------
+    C1 : array_like
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+    C2 : array_like
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+    C_y : array_like
+        bending stiffness of the drum shaft at the drum [N/m], > 0
+    C_t : array_like
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+    C_z : array_like
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+    r : array_like
+        radius of the driving drum [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [SI], shape (5, 5) followed by the broadcast shape of the arguments.
+    """
+    C1  = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
+    C2  = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
+    r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    x0 = -C1
+    x1 = -C2
+    x2 = r**2
+    x3 = C_t - C_z
+    x4 = -r*x3
+    x5 = C_t + C_z
+    x6 = -r*x5
+    return _matrix((5, 5), [C1, x0, 0, 0, 0, x0, C1 + C2, x1, 0, 0, 0, x1, C2 + C_t*x2 + C_z*x2, x4, x6, 0, 0, x4, C_y + x5, x3, 0, 0, x6, x3, x5])
+
+
+def generalized_forces(M0, F0, W):
+    """Generalized forces F(W) of (12). Eq (10), (12).
+
+    Parameters
+    ----------
+    M0 : array_like
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+    F0 : array_like
+        pretension of both branches at rest [N], > 0
+    W : array_like
+        resistance of the loads to the motion of the run [N]
+
+    Returns
+    -------
+    ndarray
+        [SI], shape (5, 1) followed by the broadcast shape of the arguments.
+    """
+    M0 = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
+    F0 = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
+    W  = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N')
+    return _matrix((5, 1), [M0, 0, 0, 2*F0, -W])
