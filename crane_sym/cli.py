@@ -61,11 +61,15 @@ def cmd_generate(args: argparse.Namespace) -> int:
     from . import codegen, specialize
     from .generate import all_files
     if args.scene:
+        from .drive_law import drive_law_files, is_drive_law_scene
         from .scenes import load_scene
-        scene = load_scene(args.scene)
         directory = Path(args.out or ".")
-        files = {specialize.module_name(scene):
-                 specialize.render_scene_module(registry.get(scene.derivation), scene)}
+        if is_drive_law_scene(args.scene):
+            files = drive_law_files(args.scene)
+        else:
+            scene = load_scene(args.scene)
+            files = {specialize.module_name(scene):
+                     specialize.render_scene_module(registry.get(scene.derivation), scene)}
     else:
         directory = Path(args.out) if args.out else codegen.default_directory()
         files = all_files()
@@ -103,12 +107,13 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from . import bench, scenes
+    from . import bench, drive_law, scenes
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     everything = []
     for i in _ids(args.ids):
-        names = [n for n in scenes.list_scenes() if scenes.load_scene(n).derivation == i]
+        names = [n for n in scenes.list_scenes() if not drive_law.is_drive_law_scene(n)
+                 and scenes.load_scene(n).derivation == i]
         if not names or not registry.get(i).outputs:
             print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)
             continue

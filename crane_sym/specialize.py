@@ -56,8 +56,12 @@ def operation_count(outputs: list[Output]) -> int:
 
 def shipped_scene_modules(get: Callable[[str], Derivation]) -> dict[str, str]:
     """File name -> source of the specialized module of every shipped scene."""
+    from .drive_law import drive_law_files, is_drive_law_scene
     files = {}
     for name in list_scenes():
+        if is_drive_law_scene(name):
+            files.update(drive_law_files(name))
+            continue
         scene = load_scene(name)
         d = get(scene.derivation)
         if d.outputs:

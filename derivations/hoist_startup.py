@@ -40,6 +40,8 @@ from crane_sym.symbols import (COORDINATE, DEFINED, TIME, PhysicalSymbol,
                                SymbolTable)
 from crane_sym.variational import euler_poisson
 
+from .hoist_startup_scenes import scene_report  # noqa: F401  (crane-sym run)
+
 ID = "hoist_startup"
 PAPER = "002_f8509f3826f601de.txt"
 TITLE = ("Duhamel's integral for the start-up of a crane hoist: "

@@ -6,5 +6,9 @@ Modules:
     hoist_startup
     drum_drive
     scene_drum_drive_example
+    scene_hoist_drive_laws
+    scene_hoist_fig3
+    scene_hoist_fig5
+    scene_hoist_user_drive_law
     scene_overhead_crane_50t
 """

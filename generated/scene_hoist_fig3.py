@@ -1,0 +1,79 @@
+"""Numeric functions for derivation 'hoist_startup'. Generated; do not edit.
+
+Source: crane_sym.derivations.hoist_startup (paper 002_f8509f3826f601de.txt:
+Duhamel's integral for the start-up of a crane hoist: rope loads and dynamic factors).
+Specialized to scene 'hoist_fig3' (Paper 002, Fig. 3: rope displacement under a suddenly applied load): outputs dynamic_coefficient_instant; folded in: m1 = 2000.0 kg, m2 = 8000.0 kg, C = 1000000.0 N/m, Omega = 25.0 rad/s.
+Equations: (38).
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    dynamic_coefficient_instant(t) -> [1]    eq (38)
+"""
+
+import numpy as np
+
+__all__ = ['dynamic_coefficient_instant']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _two_product(a, b):
+    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
+    p = a * b
+    a_hi = a * 134217729.0
+    a_hi = a_hi - (a_hi - a)
+    b_hi = b * 134217729.0
+    b_hi = b_hi - (b_hi - b)
+    a_lo, b_lo = a - a_hi, b - b_hi
+    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
+
+
+def _phase(t, k):
+    """t*k for a double t and a double-double k, as (hi, lo)."""
+    hi, lo = _two_product(t, k[0])
+    return hi, lo + t * k[1]
+
+
+def _sin_phase(t, k):
+    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
+    hi, lo = _phase(t, k)
+    return np.sin(hi) + np.cos(hi) * lo
+
+
+def dynamic_coefficient_instant(t):
+    """K_din(t) under a suddenly applied constant load. Specialized to scene 'hoist_fig3'. Eq (38).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    q0 = (12.5, 0.0)
+    return 2*_sin_phase(t, q0)**2

@@ -1,0 +1,83 @@
+"""Numeric functions for derivation 'hoist_startup'. Generated; do not edit.
+
+Source: crane_sym.derivations.hoist_startup (paper 002_f8509f3826f601de.txt:
+Duhamel's integral for the start-up of a crane hoist: rope loads and dynamic factors).
+Specialized to scene 'hoist_fig5' (Paper 002, Fig. 5: rope displacement under a linearly growing load): outputs dynamic_coefficient_ramp; folded in: m1 = 2000.0 kg, m2 = 8000.0 kg, C = 1000000.0 N/m, t_n = 1.0 s, Omega = 25.0 rad/s.
+Equations: (42).
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    dynamic_coefficient_ramp(t) -> [1]    eq (42)
+"""
+
+import numpy as np
+
+__all__ = ['dynamic_coefficient_ramp']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _taylor_remainder(x, n, odd):
+    """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
+    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    x = np.asarray(x, dtype=float)
+    direct = np.cos(x) if odd == 0 else np.sin(x)
+    term = np.ones_like(x) if odd == 0 else x.copy()
+    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
+        direct = direct - term
+        m = 2 * k + odd
+        term = term * (-x * x) / ((m + 1) * (m + 2))
+    small = np.abs(x) < 2.0 * n + 2.0
+    if np.any(small):
+        xs, t = x[small], term[small]
+        total = np.zeros_like(xs)
+        for k in range(n, n + 60):  # |x| < 2n + 2: terms fall below 1e-17 of the first
+            total = total + t
+            m = 2 * k + odd
+            t = t * (-xs * xs) / ((m + 1) * (m + 2))
+        direct = np.array(direct, dtype=float)
+        direct[small] = total
+    return direct
+
+
+def _sin_remainder(x, n):
+    """sin(x) - sum_{k<n} (-1)**k x**(2k+1)/(2k+1)!, accurate at small |x|."""
+    return _taylor_remainder(x, n, 1)
+
+
+def dynamic_coefficient_ramp(t):
+    """K_din(t) under a linearly growing load, over the static deflection at t_n. Specialized to scene 'hoist_fig5'. Eq (42).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    return -1/25*_sin_remainder(25*t, 1)

@@ -1,0 +1,248 @@
+"""Numeric functions for derivation 'hoist_startup'. Generated; do not edit.
+
+Source: crane_sym.derivations.hoist_startup (paper 002_f8509f3826f601de.txt:
+Duhamel's integral for the start-up of a crane hoist: rope loads and dynamic factors).
+Drive law of scene 'hoist_user_drive_law' (Hoist start-up with a jerk-limited 3-piece drive law, lifting from weight), from_weight:
+a(t) [m/s^2] = [0, 1/4): 2*t; [1/4, 1): 1/2; [1, 5/4): 5/2 - 2*t; 0 elsewhere.
+Folded in (SI): m1 = 2000 kg, m2 = 8000 kg, C = 1000000 N/m, g = 981/100 m/s^2.
+Equations: (1), (2), (15), (18), (23), (24), (25), (27), (28), (31), (57).
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    drive_acceleration(t) -> [m/s^2]    eq (28), (31)
+    drive_speed(t) -> [m/s]    eq (28), (31)
+    relative_forcing(t) -> [m/s^2]    eq (2), (31)
+    rope_stretch(t) -> [m]    eq (15), (23)
+    rope_stretch_rate(t) -> [m/s]    eq (18), (23)
+    rope_force(t) -> [N]    eq (24)
+    dynamic_coefficient(t) -> [1]    eq (25), (27)
+    load_acceleration(t) -> [m/s^2]    eq (1), (57)
+"""
+
+import numpy as np
+
+__all__ = ['drive_acceleration', 'drive_speed', 'relative_forcing', 'rope_stretch', 'rope_stretch_rate', 'rope_force', 'dynamic_coefficient', 'load_acceleration']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _two_product(a, b):
+    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
+    p = a * b
+    a_hi = a * 134217729.0
+    a_hi = a_hi - (a_hi - a)
+    b_hi = b * 134217729.0
+    b_hi = b_hi - (b_hi - b)
+    a_lo, b_lo = a - a_hi, b - b_hi
+    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
+
+
+def _phase(t, k):
+    """t*k for a double t and a double-double k, as (hi, lo)."""
+    hi, lo = _two_product(t, k[0])
+    return hi, lo + t * k[1]
+
+
+def _sin_phase(t, k):
+    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
+    hi, lo = _phase(t, k)
+    return np.sin(hi) + np.cos(hi) * lo
+
+
+def _taylor_remainder(x, n, odd):
+    """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
+    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    x = np.asarray(x, dtype=float)
+    direct = np.cos(x) if odd == 0 else np.sin(x)
+    term = np.ones_like(x) if odd == 0 else x.copy()
+    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
+        direct = direct - term
+        m = 2 * k + odd
+        term = term * (-x * x) / ((m + 1) * (m + 2))
+    small = np.abs(x) < 2.0 * n + 2.0
+    if np.any(small):
+        xs, t = x[small], term[small]
+        total = np.zeros_like(xs)
+        for k in range(n, n + 60):  # |x| < 2n + 2: terms fall below 1e-17 of the first
+            total = total + t
+            m = 2 * k + odd
+            t = t * (-xs * xs) / ((m + 1) * (m + 2))
+        direct = np.array(direct, dtype=float)
+        direct[small] = total
+    return direct
+
+
+def _sin_remainder(x, n):
+    """sin(x) - sum_{k<n} (-1)**k x**(2k+1)/(2k+1)!, accurate at small |x|."""
+    return _taylor_remainder(x, n, 1)
+
+
+def drive_acceleration(t):
+    """Drive acceleration a(t) of the scene's law. Eq (28), (31).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s^2], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    x0 = 2*t
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,1/2,5/2 - x0,0], default=np.nan)
+
+
+def drive_speed(t):
+    """Drive speed v(t), the integral of a(t) (rigid hoist). Eq (28), (31).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    x0 = t**2
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,2.5*t - 1.0*x0 - 1.0625,1/2], default=np.nan)
+
+
+def relative_forcing(t):
+    """Load S(t) = P/m1 + Q/m2 of the stretch equation, lifting from weight. Eq (2), (31).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s^2], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    x0 = 10*t
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0 + 981/20,1031/20,1231/20 - x0,981/20], default=np.nan)
+
+
+def rope_stretch(t):
+    """Rope stretch x(t) = x1 - x2 by Duhamel's integral, lifting from weight. Eq (15), (23).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    x0 = 25*t
+    x1 = 2.1237622053565318e-05*np.cos(x0 - 25/8)
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [981/12500 - 2/3125*_sin_remainder(x0, 1),1031/12500 - x1,-x1 + (2/3125)*_sin_remainder(x0 - 25, 1) + 1031/12500,981/12500 - 2.81703877964031e-06*np.sin(x0 - 125/8)], default=np.nan)
+
+
+def rope_stretch_rate(t):
+    """Stretch rate dx/dt, lifting from weight. Eq (18), (23).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    q0 = (12.5, 0.0)
+    x0 = 25*t
+    x1 = np.sin(x0 - 25/8)
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*_sin_phase(t, q0)**2,0.0005309405513391329*x1,0.0005309405513391329*x1 - 4/125*np.sin((25/2)*t - 25/2)**2,-7.042596949100774e-05*np.cos(x0 - 125/8)], default=np.nan)
+
+
+def rope_force(t):
+    """Rope force C x(t), lifting from weight. Eq (24).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    x0 = 25*t
+    x1 = 21.237622053565318*np.cos(x0 - 25/8)
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [78480 - 640*_sin_remainder(x0, 1),82480 - x1,-x1 + 640*_sin_remainder(x0 - 25, 1) + 82480,78480 - 2.81703877964031*np.sin(x0 - 125/8)], default=np.nan)
+
+
+def dynamic_coefficient(t):
+    """Dynamic coefficient K_din(t), lifting from weight. Eq (25), (27).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    x0 = 25*t
+    x1 = 0.0002706119018038394*np.cos(x0 - 25/8)
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [1 - 8/981*_sin_remainder(x0, 1),1031/981 - x1,-x1 + (8/981)*_sin_remainder(x0 - 25, 1) + 1031/981,1 - 3.589498954689488e-05*np.sin(x0 - 125/8)], default=np.nan)
+
+
+def load_acceleration(t):
+    """Load acceleration (C x - Q)/m2, lifting from weight. Eq (1), (57).
+
+    Parameters
+    ----------
+    t : array_like
+        time from the start of the drive [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s^2], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    x0 = 25*t
+    x1 = 0.0026547027566956646*np.cos(x0 - 25/8)
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [-2/25*_sin_remainder(x0, 1),1/2 - x1,-x1 + (2/25)*_sin_remainder(x0 - 25, 1) + 1/2,-0.0003521298474550387*np.sin(x0 - 125/8)], default=np.nan)

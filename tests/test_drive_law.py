@@ -1,0 +1,274 @@
+"""A user's piecewise-polynomial drive law (crane_sym.drive_law): the generated
+module against direct integration of the two-mass hoist and against quadrature
+of Duhamel's integral; continuity at the breakpoints; scene validation."""
+import importlib.util
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from crane_sym import drive_law as dl
+from crane_sym.scenes import SceneError, scenes_directory
+
+integrate = pytest.importorskip("scipy.integrate")
+
+EXAMPLE = "hoist_user_drive_law"
+HEAD = """\
+[scene]
+name = "probe"
+derivation = "hoist_startup"
+title = "probe"
+[parameters]
+m1 = "2 t"
+m2 = "8 t"
+C = "1.0e6 N/m"
+g = "9.81 m/s^2"
+"""
+LAW = """\
+[drive_law]
+lifting = "{lifting}"
+breakpoints = [0.0, 0.25, 1.0, 1.25]
+coefficients = [[0.0, 2.0], [0.5], [0.5, -2.0]]
+"""
+OPTIONS = '[options]\nduration = "2.5 s"\npoints = 501\n'
+
+
+def _write(tmp_path: Path, text: str, name: str = "probe.toml") -> Path:
+    path = tmp_path / name
+    path.write_text(text, encoding="utf-8")
+    return path
+
+
+def _import(source: str, path: Path):
+    path.write_text(source, encoding="utf-8")
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@pytest.fixture(scope="module", params=[dl.FROM_WEIGHT, dl.PICKUP])
+def case(request, tmp_path_factory):
+    """(scene, response, generated module) for the example law in both lifting cases."""
+    tmp = tmp_path_factory.mktemp(request.param)
+    if request.param == dl.FROM_WEIGHT:
+        scene = dl.load_drive_law_scene(EXAMPLE)
+    else:
+        scene = dl.load_drive_law_scene(_write(
+            tmp, HEAD + LAW.format(lifting="pickup") + OPTIONS))
+    module = _import(dl.render_drive_law_module(scene), tmp / "scene_module.py")
+    return scene, scene.response(), module
+
+
+def _numbers(scene):
+    return tuple(float(v) for v in (scene.m1, scene.m2, scene.C, scene.g))
+
+
+def _acceleration(t: float) -> float:
+    """The example law, written out by hand: 2 t, 0.5, 0.5 - 2 (t - 1), then 0."""
+    if t < 0.25:
+        return 2.0 * t
+    if t < 1.0:
+        return 0.5
+    if t < 1.25:
+        return 0.5 - 2.0 * (t - 1.0)
+    return 0.0
+
+
+def _resistance(t: float, scene, tau0: float | None) -> float:
+    weight = float(scene.m2 * scene.g)
+    return weight if tau0 is None else weight * min(t / tau0, 1.0)
+
+
+def test_example_scene_reads_in_si():
+    scene = dl.load_drive_law_scene(EXAMPLE)
+    assert (scene.m1, scene.m2, scene.C, scene.g) == (2000, 8000, 10**6, sp.Rational(981, 100))
+    assert scene.breakpoints == (0, sp.Rational(1, 4), 1, sp.Rational(5, 4))
+    assert scene.coefficients == ((0, 2), (sp.Rational(1, 2),), (sp.Rational(1, 2), -2))
+    assert len(scene.coefficients) == 3                          # a 3-piece law
+    assert scene.lifting == dl.FROM_WEIGHT and scene.duration == 2.5
+    assert dl.is_drive_law_scene(EXAMPLE)
+    assert not dl.is_drive_law_scene("overhead_crane_50t")
+
+
+def test_generated_functions_take_time_only_and_validate(case):
+    scene, response, module = case
+    assert module.__all__ == ["drive_acceleration", "drive_speed", "relative_forcing",
+                              "rope_stretch", "rope_stretch_rate", "rope_force",
+                              "dynamic_coefficient", "load_acceleration"]
+    with pytest.raises(ValueError, match="t must be >= 0"):
+        module.rope_stretch(-1.0)
+    t = np.linspace(0.0, 2.5, 11)
+    for name in module.__all__:
+        assert getattr(module, name)(t).shape == t.shape
+    assert response.final_speed == sp.Rational(1, 2)
+    assert module.drive_speed(2.0) == pytest.approx(0.5, rel=1e-14)
+    assert np.allclose(module.drive_acceleration(t), [_acceleration(x) for x in t],
+                       rtol=0, atol=1e-15)
+
+
+def test_against_direct_integration_of_the_two_mass_system(case):
+    """(1): m1 x1'' + C (x1 - x2) = P(t), m2 x2'' - C (x1 - x2) = -Q(t),
+    P = (m1 + m2) a + m2 g, by DOP853 at rtol 1e-12, piece by piece."""
+    scene, response, module = case
+    m1, m2, C, g = _numbers(scene)
+    tau0 = None if response.contact_time is None else float(response.contact_time)
+
+    def rhs(t, y):
+        x1, x2, v1, v2 = y
+        rope = C * (x1 - x2)
+        return [v1, v2, ((m1 + m2) * _acceleration(t) + m2 * g - rope) / m1,
+                (rope - _resistance(t, scene, tau0)) / m2]
+
+    cuts = sorted({0.0, 0.25, 1.0, 1.25, 2.5} | ({tau0} if tau0 else set()))
+    y = [0.0 if tau0 else m2 * g / C, 0.0, 0.0, 0.0]
+    times, stretch, rate = [], [], []
+    for lo, hi in zip(cuts[:-1], cuts[1:]):
+        grid = np.linspace(lo, hi, 60)
+        sol = integrate.solve_ivp(rhs, (lo, hi), y, method="DOP853", t_eval=grid,
+                                  rtol=1e-12, atol=1e-16)
+        assert sol.success
+        y = sol.y[:, -1]
+        times.append(grid)
+        stretch.append(sol.y[0] - sol.y[1])
+        rate.append(sol.y[2] - sol.y[3])
+    t = np.concatenate(times)
+    x, v = np.concatenate(stretch), np.concatenate(rate)
+    assert np.max(np.abs(module.rope_stretch(t) - x)) <= 1e-9 * np.max(np.abs(x))
+    assert np.max(np.abs(module.rope_stretch_rate(t) - v)) <= 1e-8 * np.max(np.abs(v))
+    force = C * x
+    assert np.max(np.abs(module.rope_force(t) - force)) <= 1e-9 * np.max(force)
+    ref = float(response.reference)
+    assert np.max(np.abs(module.dynamic_coefficient(t) - force / ref)) <= 1e-9 * np.max(
+        force / ref)
+    load = (force - np.array([_resistance(s, scene, tau0) for s in t])) / m2
+    assert np.max(np.abs(module.load_acceleration(t) - load)) <= 1e-8 * np.max(np.abs(load))
+
+
+@pytest.mark.filterwarnings("ignore::scipy.integrate.IntegrationWarning")
+def test_against_quadrature_of_the_duhamel_integral(case):
+    """(21), (23): x = x0 cos Ωt + (1/Ω) ∫_0^t S(θ) sin Ω(t - θ) dθ, by quadrature."""
+    scene, response, module = case
+    m1, m2, C, g = _numbers(scene)
+    omega = float(response.omega)
+    tau0 = None if response.contact_time is None else float(response.contact_time)
+    x0 = 0.0 if tau0 else m2 * g / C
+
+    def forcing(s):
+        return ((m1 + m2) * _acceleration(s) + m2 * g) / m1 + _resistance(s, scene, tau0) / m2
+
+    rng = np.random.default_rng(20261121)
+    cuts = [0.25, 1.0, 1.25] + ([tau0] if tau0 else [])
+    for t in np.concatenate([rng.uniform(0.0, 2.5, 12), cuts]):
+        inside = [c for c in cuts if c < t]
+        value, error = integrate.quad(lambda s: forcing(s) * np.sin(omega * (t - s)), 0.0, t,
+                                      points=inside or None, epsabs=0.0, epsrel=1e-12,
+                                      limit=200)
+        x = x0 * np.cos(omega * t) + value / omega
+        assert module.rope_stretch(t) == pytest.approx(x, rel=1e-10, abs=1e-14)
+        assert module.relative_forcing(t) == pytest.approx(forcing(t), rel=1e-13)
+
+
+def test_stretch_and_rate_are_continuous_at_every_breakpoint(case):
+    scene, response, module = case
+    pieces, t = response.stretch.pieces, response.t
+    assert len(pieces) == (5 if scene.lifting == dl.PICKUP else 4)
+    for left, right in zip(pieces[:-1], pieces[1:]):
+        b = left.end
+        assert b == right.start
+        for order in (0, 1):
+            jump = (left.expr.diff(t, order) - right.expr.diff(t, order)).subs(t, b)
+            assert abs(sp.N(jump, 50)) < 1e-40
+        below, above = np.nextafter(float(b), 0.0), np.nextafter(float(b), 9.0)
+        for func in (module.rope_stretch, module.rope_stretch_rate):
+            scale = np.max(np.abs(func(np.linspace(0.0, 2.5, 501))))
+            assert abs(func(above) - func(below)) <= 1e-13 * scale
+
+
+def test_strings_in_the_law_are_refused_without_evaluation(tmp_path):
+    marker = tmp_path / "evaluated"
+    payload = f"__import__('pathlib').Path({str(marker)!r}).touch() or 1"
+    for breakpoints, coefficients in (
+            ("[0.0, 0.25, 1.0, 1.25]", f'[[0.0, "{payload}"], [0.5], [0.5, -2.0]]'),
+            ("[0.0, 0.25, 1.0, 1.25]", '[[0.0, 2.0], "[0.5]", [0.5, -2.0]]'),
+            (f'[0.0, "{payload}", 1.0, 1.25]', "[[0.0, 2.0], [0.5], [0.5, -2.0]]")):
+        law = (f'[drive_law]\nlifting = "from_weight"\nbreakpoints = {breakpoints}\n'
+               f"coefficients = {coefficients}\n")
+        path = _write(tmp_path, HEAD + law + OPTIONS)
+        with pytest.raises(SceneError, match="string|not strings|sequence of numbers"):
+            dl.load_drive_law_scene(path)
+    with pytest.raises(TypeError, match="never evaluated"):
+        dl.drive_law([0, 1], [["1 + 1"]])
+    assert not marker.exists()
+
+
+@pytest.mark.parametrize("law, message", [
+    (LAW.format(lifting="sideways"), "lifting must be"),
+    (LAW.format(lifting="pickup").replace("[0.5], ", ""), "coefficients needs 3 rows"),
+    (LAW.format(lifting="pickup").replace("1.0, 1.25]", "0.2, 1.25]"), "must increase"),
+    (LAW.format(lifting="pickup") + 'time_unit = "m"\n', "time_unit"),
+    (LAW.format(lifting="pickup") + "shape = 3\n", r"unknown keys \['shape'\]"),
+])
+def test_bad_laws_name_what_is_wrong(tmp_path, law, message):
+    with pytest.raises(SceneError, match=message):
+        dl.load_drive_law_scene(_write(tmp_path, HEAD + law + OPTIONS))
+
+
+def test_bad_system_data_and_tables_are_named(tmp_path):
+    law = LAW.format(lifting="from_weight")
+    with pytest.raises(SceneError, match="missing \\['g'\\]"):
+        dl.load_drive_law_scene(_write(tmp_path, HEAD.replace('g = "9.81 m/s^2"\n', "")
+                                       + law + OPTIONS))
+    with pytest.raises(SceneError, match="parameter 'C'"):
+        dl.load_drive_law_scene(_write(tmp_path, HEAD.replace("N/m", "N") + law + OPTIONS))
+    with pytest.raises(SceneError, match=r"unknown tables \['extra'\]"):
+        dl.load_drive_law_scene(_write(tmp_path, HEAD + law + OPTIONS + "[extra]\n"))
+    with pytest.raises(SceneError, match="drives the model of 'hoist_startup'"):
+        dl.load_drive_law_scene(_write(tmp_path, HEAD.replace(
+            '"hoist_startup"', '"travel_braking"') + law + OPTIONS))
+
+
+def test_units_of_the_law_are_converted(tmp_path):
+    """The same law in ms and mm/s²: c_kj in mm/s² per ms^j."""
+    law = ('[drive_law]\nlifting = "from_weight"\ntime_unit = "ms"\n'
+           'acceleration_unit = "mm/s^2"\nbreakpoints = [0, 250, 1000, 1250]\n'
+           "coefficients = [[0, 2.0], [500], [500, -2.0]]\n")
+    scene = dl.load_drive_law_scene(_write(tmp_path, HEAD + law + OPTIONS))
+    example = dl.load_drive_law_scene(EXAMPLE)
+    assert scene.breakpoints == example.breakpoints
+    assert scene.coefficients == example.coefficients
+
+
+def test_pickup_needs_a_law_that_ends_at_a_speed():
+    law = dl.drive_law([0, 1], [[-1]])           # ends at v = -1 m/s
+    with pytest.raises(ValueError, match="tau_0"):
+        dl.respond(law, 2000, 8000, 10**6, 9.81, dl.PICKUP)
+    with pytest.raises(ValueError, match="lifting must be"):
+        dl.respond(law, 2000, 8000, 10**6, 9.81, "hanging")
+
+
+def test_paper_law_a3_matches_the_general_generated_function():
+    """a_3 of (30) given as a user law: the same K as the derivation's function."""
+    import crane_sym.generated.hoist_startup as gen
+    v0, t_n, m1, m2, C, g = (sp.Rational(1, 4), 1, 2000, 8000, 10**6, sp.Rational(981, 100))
+    law = dl.drive_law([0, t_n], [[0, 12 * v0, -24 * v0, 12 * v0]])
+    tau0 = m2 * g / (C * v0)
+    for lifting in (dl.PICKUP, dl.FROM_WEIGHT):
+        response = dl.respond(law, m1, m2, C, g, lifting, contact_time=tau0)
+        k = sp.lambdify(response.t, response.dynamic_coefficient(), "numpy")
+        t = np.linspace(0.0, 2.0, 801)
+        args = (25.0,) + ((float(tau0),) if lifting == dl.PICKUP else ())
+        ref = getattr(gen, f"dynamic_coefficient_{lifting}_a3")(t, *args, 2000.0, 8000.0,
+                                                                 9.81, 0.25, 1.0)
+        assert np.max(np.abs(k(t) - ref)) <= 1e-12 * np.max(np.abs(ref))
+
+
+def test_cli_files_are_deterministic_and_named_by_the_scene(tmp_path):
+    files = dl.drive_law_files(EXAMPLE)
+    assert list(files) == ["scene_hoist_user_drive_law.py"]
+    assert files == dl.drive_law_files(scenes_directory() / f"{EXAMPLE}.toml")
+    text = files["scene_hoist_user_drive_law.py"]
+    assert "Drive law of scene 'hoist_user_drive_law'" in text
+    assert "def rope_stretch(t):" in text and "eval(" not in text
+    assert "scene_hoist_user_drive_law.py" in dl.shipped_drive_law_modules()
