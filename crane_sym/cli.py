@@ -147,9 +147,14 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
+    from .drive_law import is_drive_law_scene
     from .scenes import load_scene, run_scene
-    scene = load_scene(args.scene)
-    report, figure = run_scene(scene, Path(args.out))
+    if is_drive_law_scene(args.scene):
+        from .drive_law_run import run_drive_law_scene
+        scene, report, figure = run_drive_law_scene(args.scene, Path(args.out))
+    else:
+        scene = load_scene(args.scene)
+        report, figure = run_scene(scene, Path(args.out))
     print(f"scene {scene.name}: {scene.title}")
     for line in report.lines:
         print(f"  {line}")

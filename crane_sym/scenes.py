@@ -274,15 +274,21 @@ def run_scene(scene: Scene, outdir: Path) -> tuple[SceneReport, Path]:
     if not isinstance(report, SceneReport) or not report.panels:
         raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
 
+    path = plot_report(report, scene.title, Path(outdir) / f"{scene.name}.png")
+    return report, path
+
+
+def plot_report(report: SceneReport, title: str, path: Path) -> Path:
+    """Write the report's panels, one subplot each, to the PNG ``path``."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    outdir = Path(outdir)
-    outdir.mkdir(parents=True, exist_ok=True)
-    path = outdir / f"{scene.name}.png"
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
     n = len(report.panels)
-    fig, axes = plt.subplots(n, 1, figsize=(8, 3.2 * n), squeeze=False)
+    fig, axes = plt.subplots(n, 1, figsize=(8, 3.2 * n), squeeze=False,
+                             layout="constrained")
     try:
         for ax, panel in zip(axes[:, 0], report.panels):
             for label, x, y in panel.curves:
@@ -291,9 +297,8 @@ def run_scene(scene: Scene, outdir: Path) -> tuple[SceneReport, Path]:
             ax.grid(True, alpha=0.4)
             if len(panel.curves) > 1:
                 ax.legend(loc="lower right", framealpha=0.9)
-        fig.suptitle(scene.title)
-        fig.tight_layout()
+        fig.suptitle(title)
         fig.savefig(path, dpi=120, metadata={"Software": None})
     finally:
         plt.close(fig)
-    return report, path
+    return path

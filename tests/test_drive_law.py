@@ -272,3 +272,24 @@ def test_cli_files_are_deterministic_and_named_by_the_scene(tmp_path):
     assert "Drive law of scene 'hoist_user_drive_law'" in text
     assert "def rope_stretch(t):" in text and "eval(" not in text
     assert "scene_hoist_user_drive_law.py" in dl.shipped_drive_law_modules()
+
+
+def test_run_writes_the_module_and_a_plot_and_bounds_the_samples(tmp_path):
+    """`crane-sym run` on a drive-law scene: the module it writes is the one
+    `generate --scene` gives, and the guaranteed K_max bounds every sample."""
+    from crane_sym.drive_law_run import run_drive_law_scene
+    law = ('[drive_law]\nlifting = "from_weight"\nbreakpoints = [0.0, 0.3]\n'
+           "coefficients = [[1.0]]\n")
+    path = _write(tmp_path, HEAD + law + '[options]\nduration = "0.6 s"\npoints = 301\n')
+    scene, report, figure = run_drive_law_scene(path, tmp_path / "out")
+    assert figure.is_file() and figure.stat().st_size > 0
+    written = (tmp_path / "out" / "scene_probe.py").read_text(encoding="utf-8")
+    assert written == dl.drive_law_files(path)["scene_probe.py"]
+    module = _import(written, tmp_path / "again.py")
+    t = np.linspace(0.0, 0.6, 301)
+    k = module.dynamic_coefficient(t)
+    assert report.values["certified"] == 1.0
+    assert np.max(k) <= report.values["K_max"] * (1 + 1e-12)
+    # a step a = 1 m/s² from weight: rope force m2 (g + a (1 - cos Ωt)) over the
+    # rigid load's m2 (g + a) (27) peaks at (g + 2a)/(g + a)
+    assert report.values["K_max"] == pytest.approx((9.81 + 2.0) / (9.81 + 1.0), rel=1e-9)
