@@ -10,6 +10,7 @@ from __future__ import annotations
 from typing import Callable, Sequence
 
 import sympy as sp
+from sympy.codegen.cfunctions import log1p
 from sympy.codegen.rewriting import expm1_opt, log1p_opt
 
 Rule = Callable[[sp.Expr], sp.Expr]
@@ -282,13 +283,25 @@ def _only_with(head: type, rule: Rule) -> Rule:
     return guarded
 
 
+def log1p_form(expr: sp.Expr) -> sp.Expr:
+    """``log(1 + x) → log1p(x)`` (SymPy's ``log1p_opt``), log by log, taken only
+    where it finds such a term: elsewhere ``log1p_opt`` expands ``log(a/b)`` into
+    ``log(a) − log(b)``, which cancels when a ≈ b."""
+    swaps = {}
+    for term in expr.atoms(sp.log):
+        found = log1p_opt(term)
+        if found.has(log1p):
+            swaps[term] = found
+    return expr.xreplace(swaps) if swaps else expr
+
+
 #: Rules every generated expression goes through, in order.
 DEFAULT_RULES: tuple[Rule, ...] = (
     sin_squared_form,
     cos_pair_to_sin_squared,
     exact_difference_of_products,
     _only_with(sp.exp, expm1_opt),
-    _only_with(sp.log, log1p_opt),
+    log1p_form,
     fold_constants,
 )
 

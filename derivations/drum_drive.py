@@ -29,9 +29,12 @@ from sympy.physics.units.dimensions import Dimension
 
 from crane_sym.derivation import Derivation, Output
 from crane_sym.lagrange import lagrange_equations
+from crane_sym.modal import eigenvalues_2x2, relative_dynamic_matrix
 from crane_sym.odes import solve_constant_coefficient
 from crane_sym.symbols import (COORDINATE, DEFINED, PARAMETER, TIME,
                                PhysicalSymbol, SymbolTable)
+
+from .drum_drive_hard_cases import hard_cases  # noqa: F401  (crane-sym accuracy)
 
 ID = "drum_drive"
 PAPER = "004_f118c513e0426caf.txt"
@@ -422,11 +425,20 @@ def _frequencies(d: Derivation, eqs: dict, pub) -> None:
           "a quadratic in ω² for the two elastic modes.")
     a2, a1, a0 = sp.Poly(sp.cancel(char / lam), lam).all_coeffs()
     b, c = sp.factor(-a1 / a2), sp.factor(a0 / a2)
-    root = sp.sqrt(b**2 - 4 * c)
-    d.add("ω2", sp.Eq(omega_2, sp.sqrt((b + root) / 2)),
-          "The larger root of the quadratic in ω².")
-    d.add("ω1", sp.Eq(omega_1, sp.sqrt(2 * c / (b + root))),
-          "The smaller root as c/ω2² (Vieta), which avoids b − √(b² − 4c).")
+    A = relative_dynamic_matrix(sp.diag(I1, I2, I3), K)
+    twists = sp.Matrix([sp.Function(f"theta_{k}")(t) for k in (1, 2)])
+    d.add("drive-chain relative twists", sp.Eq(twists.diff(t, 2), -A * twists),
+          "The twists θ1 = φ1 − φ2, θ2 = φ2 − φ3 remove the rigid rotation: θ̈ = −A·θ.",
+          "Its eigenvalues are the roots ω² of the quadratic; its discriminant "
+          "(a11 − a22)² + 4·a12·a21 is a sum of non-negative terms (a12·a21 = C1·C2/I2²).")
+    small, large = eigenvalues_2x2(A)
+    assert sp.simplify(small + large - b) == 0 and sp.simplify(small * large - c) == 0
+    d.add("ω2", sp.Eq(omega_2, sp.sqrt(large)),
+          "The larger eigenvalue of A; its sum and product with the smaller are b and c.",
+          "b² − 4c would cancel when the two frequencies are close (and can round to a "
+          "negative number there); the sum of squares cannot.")
+    d.add("ω1", sp.Eq(omega_1, sp.sqrt(small)),
+          "The smaller root as det A/ω2² (Vieta), which avoids b − √(b² − 4c).")
     d.add("(13), k", sp.Eq(pub.k, c**sp.Rational(1, 4)),
           "Vieta: ω1²·ω2² = C1·C2·(I1 + I2 + I3)/(I1·I2·I3); its fourth root, the geometric "
           "mean of ω1 and ω2, is the one frequency of the printed shape.")

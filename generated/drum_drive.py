@@ -165,15 +165,10 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2):
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    x0 = C1*I3
-    x1 = C2*I1
-    x2 = I1*x0 + I2*x0 + I2*x1 + I3*x1
-    x3 = 1/(I1)
-    x4 = 1/(I2)
-    x5 = 1/(I3)
-    x6 = I1 + I2 + I3
-    x7 = 1/(np.sqrt(I1)*np.sqrt(I2)*np.sqrt(I3))
-    return 1.4142135623730951*np.sqrt(C1)*np.sqrt(C2)*np.sqrt(x6)*x7*np.sqrt(1/(x2*x3*x4*x5 + x7*np.sqrt(-4*C1*C2*x6 + x2**2*x3*x4*x5)))
+    x0 = I1 + I2
+    x1 = C1*x0/I1
+    x2 = C2*(I2 + I3)/I3
+    return 1.4142135623730951*np.sqrt(C1)*np.sqrt(C2)*np.sqrt(I3 + x0)/(np.sqrt(I1)*np.sqrt(I3)*np.sqrt(x1 + x2 + np.sqrt(4*C1*C2 + (x1 - x2)**2)))
 
 
 def drive_chain_frequency_2(I1, I2, I3, C1, C2):
@@ -202,13 +197,9 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2):
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    x0 = C1*I3
-    x1 = C2*I1
-    x2 = I1*x0 + I2*x0 + I2*x1 + I3*x1
-    x3 = 1/(I1)
-    x4 = 1/(I2)
-    x5 = 1/(I3)
-    return 0.7071067811865476*np.sqrt(x2*x3*x4*x5 + np.sqrt(-4*C1*C2*(I1 + I2 + I3) + x2**2*x3*x4*x5)/(np.sqrt(I1)*np.sqrt(I2)*np.sqrt(I3)))
+    x0 = C1*(I1 + I2)/I1
+    x1 = C2*(I2 + I3)/I3
+    return 0.7071067811865476*np.sqrt(x0 + x1 + np.sqrt(4*C1*C2 + (x0 - x1)**2))/np.sqrt(I2)
 
 
 def running_tight_force(M0, D, F0, C_t, C_z, C_y):
@@ -382,7 +373,7 @@ def least_mu_alpha(F1, F2):
     """
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
-    return np.log(F1) - np.log(F2) + 0.22314355131420976
+    return np.log((5/4)*F1/F2)
 
 
 def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
