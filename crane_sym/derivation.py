@@ -84,6 +84,20 @@ class ODESystem:
     quantities: tuple[tuple[str, sp.Expr], ...]
 
 
+@dataclass(frozen=True)
+class Switch:
+    """A part of the model a scene can turn off (``[options] <name> = false``).
+
+    Turning it off fixes the parameters in ``off`` (usually to 0) before the
+    scene's values are folded in, so the terms they carry vanish from the
+    specialized code instead of being evaluated as zeros.
+    """
+
+    name: str
+    description: str
+    off: tuple[tuple[sp.Symbol, sp.Expr], ...]
+
+
 @dataclass
 class Derivation:
     """A paper rebuilt from its equations of motion.
@@ -108,6 +122,8 @@ class Derivation:
         What ``crane-sym generate`` emits.
     ode_systems : list of ODESystem
         The equations of motion in solver-ready form, for the bench.
+    switches : dict of str to Switch
+        Parts of the model a scene may turn off.
     """
 
     id: str
@@ -120,6 +136,7 @@ class Derivation:
     published: list[PublishedFormula] = field(default_factory=list)
     outputs: list[Output] = field(default_factory=list)
     ode_systems: list[ODESystem] = field(default_factory=list)
+    switches: dict[str, Switch] = field(default_factory=dict)
     _clock: float = field(default_factory=time.perf_counter, repr=False, compare=False)
 
     def step(self, label: str) -> Step:

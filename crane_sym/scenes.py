@@ -14,6 +14,9 @@ parameter values with units, and options such as the simulated duration::
     duration = "1.5 s"
     points = 1501
 
+Optional: ``[scene] inputs`` lists parameters left as arguments of the
+scene's functions, and ``[options] <switch> = false`` turns off a part of the
+model the derivation declares in ``Derivation.switches`` (e.g. ``damping``).
 Values are converted to SI by :func:`crane_sym.units.convert`; they are parsed,
 never evaluated. Scenes shipped with the package live in
 ``crane_sym/derivations/scenes/`` (``derivations/scenes/`` in a clone).
@@ -31,13 +34,14 @@ import numpy as np
 from sympy.physics.units import time as _TIME
 
 from . import registry, units
-from .symbols import TIME
+from .symbols import STATE, TIME
 
 __all__ = ["Panel", "Scene", "SceneError", "SceneReport", "format_quantity",
            "list_scenes", "load_scene", "run_scene", "scenes_directory"]
 
 _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
 _SCENE_KEYS = ("name", "derivation", "title", "outputs")
+_OPTIONAL_SCENE_KEYS = ("inputs",)
 _TABLES = ("scene", "parameters", "options")
 _MAX_POINTS = 1_000_000
 
@@ -64,6 +68,11 @@ class Scene:
         ``duration`` (float, s), ``points`` (int) and any other raw values.
     path : Path
         The TOML file the scene was read from.
+    inputs : tuple of str
+        Parameters the scene leaves as arguments of its functions
+        (``[scene] inputs``, e.g. a load that varies in time).
+    switched_off : tuple of str
+        Switches of the derivation turned off (``[options] <switch> = false``).
     """
 
     name: str
@@ -73,6 +82,8 @@ class Scene:
     parameters: dict[str, float]
     options: dict[str, Any]
     path: Path
+    inputs: tuple[str, ...] = ()
+    switched_off: tuple[str, ...] = ()
 
 
 @dataclass
@@ -170,7 +181,7 @@ def load_scene(path_or_name: str | Path) -> Scene:
     missing = [k for k in _SCENE_KEYS if k not in head]
     if missing:
         raise SceneError(f"{where}: [scene] lacks {missing}")
-    unknown = sorted(set(head) - set(_SCENE_KEYS))
+    unknown = sorted(set(head) - set(_SCENE_KEYS) - set(_OPTIONAL_SCENE_KEYS))
     if unknown:
         raise SceneError(f"{where}: unknown [scene] keys {unknown}")
     name = head["name"]
@@ -197,12 +208,21 @@ def load_scene(path_or_name: str | Path) -> Scene:
     if len(set(outputs)) != len(outputs):
         raise SceneError(f"{where}: an output is listed twice in {outputs}")
 
-    # Required: what the scene's outputs take; allowed: what any output takes.
+    # Required: what the scene's outputs take, less what a switch fixes or the
+    # scene keeps as an input; allowed: what any output takes.
     required = {a for o in derivation.outputs if o.name in outputs for a in o.args}
     allowed = {a for o in derivation.outputs for a in o.args}
-    entries = [e for e in derivation.symbols if e.expr in allowed and e.role != TIME]
+    entries = [e for e in derivation.symbols
+               if e.expr in allowed and e.role not in (TIME, STATE)]
     raw = _table(data, "parameters", where)
     names = [e.name for e in entries]
+    options = _options(_table(data, "options", where), where)
+    switched_off = _switched_off(derivation, options, where)
+    fixed = {str(s) for name in switched_off for s, _ in derivation.switches[name].off}
+    inputs = _inputs(head.get("inputs", []), {str(a) for a in required}, where)
+    for key in sorted((fixed | set(inputs)) & set(raw)):
+        why = "is an input of the scene" if key in inputs else "is fixed by a switch"
+        raise SceneError(f"{where}: parameter {key!r} {why}; remove it from [parameters]")
     for key in raw:
         if key not in names:
             close = difflib.get_close_matches(key, names, n=3)
@@ -211,7 +231,8 @@ def load_scene(path_or_name: str | Path) -> Scene:
                              f"{derivation_id!r} takes {', '.join(names)}")
     parameters: dict[str, float] = {}
     for entry in entries:
-        if entry.name not in raw and entry.expr not in required:
+        if entry.name not in raw and (entry.expr not in required
+                                      or entry.name in fixed or entry.name in inputs):
             continue
         if entry.name not in raw:
             raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}, "
@@ -222,7 +243,31 @@ def load_scene(path_or_name: str | Path) -> Scene:
         except units.UnitError as exc:
             raise SceneError(f"{where}: {exc}") from None
     return Scene(name, derivation_id, head["title"], tuple(outputs), parameters,
-                 _options(_table(data, "options", where), where), path)
+                 options, path, inputs, switched_off)
+
+
+def _switched_off(derivation, options: dict[str, Any], where: str) -> tuple[str, ...]:
+    """Names of the derivation's switches the options turn off (true/false only)."""
+    off = []
+    for name in derivation.switches:
+        if name in options:
+            if not isinstance(options[name], bool):
+                raise SceneError(f"{where}: option {name!r} must be true or false, "
+                                 f"got {options[name]!r}")
+            if not options[name]:
+                off.append(name)
+    return tuple(off)
+
+
+def _inputs(raw: Any, takes: set[str], where: str) -> tuple[str, ...]:
+    """``[scene] inputs``: parameters of the outputs left as arguments."""
+    if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
+        raise SceneError(f"{where}: inputs must be a list of parameter names")
+    for name in raw:
+        if name not in takes:
+            raise SceneError(f"{where}: input {name!r} is not a parameter of the scene's "
+                             f"outputs ({', '.join(sorted(takes))})")
+    return tuple(raw)
 
 
 def _table(data: dict[str, Any], key: str, where: str) -> dict[str, Any]:

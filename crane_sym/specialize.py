@@ -14,7 +14,7 @@ import sympy as sp
 from .codegen import render_module
 from .derivation import Derivation, Output
 from .scenes import Scene, list_scenes, load_scene
-from .symbols import TIME
+from .symbols import STATE, TIME
 
 
 def scene_values(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
@@ -22,10 +22,17 @@ def scene_values(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
     return {d.symbols[name].expr: sp.Rational(value) for name, value in scene.parameters.items()}
 
 
+def switched_off(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Expr]:
+    """The parameters the scene's switched-off switches fix, with their values."""
+    return {s: v for name in scene.switched_off for s, v in d.switches[name].off}
+
+
 def specialize(d: Derivation, scene: Scene) -> list[Output]:
-    """The scene's outputs with its values folded in; time stays an argument."""
-    values = scene_values(d, scene)
-    keep = {e.expr for e in d.symbols.with_role(TIME)}
+    """The scene's outputs with its values and switches folded in; time and the
+    scene's inputs stay arguments."""
+    values = {**scene_values(d, scene), **switched_off(d, scene)}
+    keep = {e.expr for e in d.symbols.with_role(TIME, STATE)} | {
+        d.symbols[name].expr for name in scene.inputs}
     outputs = []
     for name in scene.outputs:
         out = d.output(name)
@@ -46,6 +53,11 @@ def render_scene_module(d: Derivation, scene: Scene) -> str:
     given = ", ".join(f"{k} = {v!r} {d.symbols[k].unit}" for k, v in scene.parameters.items())
     note = (f"Specialized to scene {scene.name!r} ({scene.title}): outputs "
             f"{', '.join(scene.outputs)}; folded in: {given}.")
+    for name in scene.switched_off:
+        fixed = ", ".join(f"{s} = {v}" for s, v in d.switches[name].off)
+        note += f"\nSwitched off: {name} ({d.switches[name].description}: {fixed})."
+    if scene.inputs:
+        note += f"\nInputs left as arguments: {', '.join(scene.inputs)}."
     return render_module(d, specialize(d, scene), scene_note=note)
 
 

@@ -16,8 +16,9 @@ PARAMETER = "parameter"    # data of the problem (masses, stiffness, forces)
 TIME = "time"              # the independent variable
 COORDINATE = "coordinate"  # an unknown function of time, x(t)
 DEFINED = "defined"        # a quantity a step defines (p, A, B, F, ...)
+STATE = "state"            # a component of the state vector a solver passes in
 
-_ROLES = (PARAMETER, TIME, COORDINATE, DEFINED)
+_ROLES = (PARAMETER, TIME, COORDINATE, DEFINED, STATE)
 _SIGNS = ("positive", "nonnegative", "real")
 
 

@@ -27,12 +27,13 @@ from sympy.physics.units import (acceleration, energy, force, length, mass, time
                                  velocity)
 from sympy.physics.units.dimensions import Dimension
 
-from crane_sym.derivation import Derivation, Output
+from crane_sym.derivation import Derivation, Output, Switch
 from crane_sym.lagrange import lagrange_equations
 from crane_sym.modal import eigenvalues_2x2, relative_dynamic_matrix
 from crane_sym.odes import solve_constant_coefficient
 from crane_sym.symbols import (COORDINATE, DEFINED, PARAMETER, TIME,
                                PhysicalSymbol, SymbolTable)
+from crane_sym.symbols import STATE as STATE_ROLE
 
 from .drum_drive_hard_cases import hard_cases  # noqa: F401  (crane-sym accuracy)
 
@@ -64,9 +65,14 @@ W = sp.Symbol("W", real=True)
                             "Delta mu_alpha_min", real=True)
 
 
+#: Damping coefficients: >= 0, since 0 turns a damper off (switch "damping").
+DAMPERS = (nu1, nu2, nu_y, nu_z, nu_t)
+
+
 def _entries(role: str, sign: str, rows) -> list[PhysicalSymbol]:
     """Table rows (symbol, dimension, unit, description[, sample range])."""
-    return [PhysicalSymbol(row[0], row[1], row[2], row[3], role, sign,
+    return [PhysicalSymbol(row[0], row[1], row[2], row[3], role,
+                           "nonnegative" if row[0] in DAMPERS else sign,
                            row[4] if len(row) > 4 else (0.5, 2.0)) for row in rows]
 
 
@@ -114,7 +120,7 @@ MODEL_SYMBOLS = [
         (t_3, time, "s", "stop time t_3 of the transporter in (21)", (0.5, 30.0))]),
     *_entries(PARAMETER, "real", [
         (W, force, "N", "resistance of the loads to the motion of the run", (10, 1e5))]),
-    *_entries(PARAMETER, "real", [
+    *_entries(STATE_ROLE, "real", [
         (state, dim, unit, f"state {i}: {what}")
         for i, (state, (dim, unit, what)) in enumerate(zip(STATE, [
             (ONE, "rad", "φ1"), (ONE, "rad", "φ2"), (ONE, "rad", "φ3"), (length, "m", "y"),
@@ -284,6 +290,9 @@ def build() -> Derivation:
           "Initial state of the example")
     d.published.extend(pub.published(e))
     d.outputs.extend(_outputs(d))
+    d.switches["damping"] = Switch(
+        "damping", "the Rayleigh dissipation Φ of (11)",
+        tuple((nu, sp.S.Zero) for nu in DAMPERS))
     return d
 
 

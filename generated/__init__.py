@@ -6,6 +6,7 @@ Modules:
     hoist_startup
     drum_drive
     scene_drum_drive_example
+    scene_drum_drive_undamped
     scene_hoist_drive_laws
     scene_hoist_fig3
     scene_hoist_fig5

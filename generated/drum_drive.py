@@ -443,9 +443,9 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     C2 : array_like
         torsional stiffness, intermediate mass to drum [N*m/rad], > 0
     nu1 : array_like
-        resistance coefficient of the C1 shaft [N*m*s/rad], > 0
+        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0
     nu2 : array_like
-        resistance coefficient of the C2 shaft [N*m*s/rad], > 0
+        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0
     m3 : array_like
         mass of the drum with its shaft's share (moves with y) [kg], > 0
     m_L : array_like
@@ -453,15 +453,15 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     C_y : array_like
         bending stiffness of the drum shaft at the drum [N/m], > 0
     nu_y : array_like
-        resistance coefficient of the drum-shaft bending [N*s/m], > 0
+        resistance coefficient of the drum-shaft bending [N*s/m], >= 0
     C_t : array_like
         longitudinal stiffness of the tight (incoming) branch [N/m], > 0
     C_z : array_like
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
     nu_z : array_like
-        resistance coefficient of the slack branch's stretching [N*s/m], > 0
+        resistance coefficient of the slack branch's stretching [N*s/m], >= 0
     nu_t : array_like
-        running resistance of the element per unit speed [N*s/m], > 0
+        running resistance of the element per unit speed [N*s/m], >= 0
     q : array_like
         mass of one metre of the traction element [kg/m], > 0
     L : array_like
@@ -505,16 +505,16 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    nu1  = _checked('nu1', nu1, 'positive', 'resistance coefficient of the C1 shaft, N*m*s/rad')
-    nu2  = _checked('nu2', nu2, 'positive', 'resistance coefficient of the C2 shaft, N*m*s/rad')
+    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad')
+    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad')
     m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
     m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
     C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    nu_y = _checked('nu_y', nu_y, 'positive', 'resistance coefficient of the drum-shaft bending, N*s/m')
+    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m')
     C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    nu_z = _checked('nu_z', nu_z, 'positive', "resistance coefficient of the slack branch's stretching, N*s/m")
-    nu_t = _checked('nu_t', nu_t, 'positive', 'running resistance of the element per unit speed, N*s/m')
+    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
+    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
     q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
@@ -571,9 +571,9 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     C2 : array_like
         torsional stiffness, intermediate mass to drum [N*m/rad], > 0
     nu1 : array_like
-        resistance coefficient of the C1 shaft [N*m*s/rad], > 0
+        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0
     nu2 : array_like
-        resistance coefficient of the C2 shaft [N*m*s/rad], > 0
+        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0
     m3 : array_like
         mass of the drum with its shaft's share (moves with y) [kg], > 0
     m_L : array_like
@@ -581,15 +581,15 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     C_y : array_like
         bending stiffness of the drum shaft at the drum [N/m], > 0
     nu_y : array_like
-        resistance coefficient of the drum-shaft bending [N*s/m], > 0
+        resistance coefficient of the drum-shaft bending [N*s/m], >= 0
     C_t : array_like
         longitudinal stiffness of the tight (incoming) branch [N/m], > 0
     C_z : array_like
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
     nu_z : array_like
-        resistance coefficient of the slack branch's stretching [N*s/m], > 0
+        resistance coefficient of the slack branch's stretching [N*s/m], >= 0
     nu_t : array_like
-        running resistance of the element per unit speed [N*s/m], > 0
+        running resistance of the element per unit speed [N*s/m], >= 0
     q : array_like
         mass of one metre of the traction element [kg/m], > 0
     L : array_like
@@ -607,16 +607,16 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    nu1  = _checked('nu1', nu1, 'positive', 'resistance coefficient of the C1 shaft, N*m*s/rad')
-    nu2  = _checked('nu2', nu2, 'positive', 'resistance coefficient of the C2 shaft, N*m*s/rad')
+    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad')
+    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad')
     m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
     m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
     C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    nu_y = _checked('nu_y', nu_y, 'positive', 'resistance coefficient of the drum-shaft bending, N*s/m')
+    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m')
     C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    nu_z = _checked('nu_z', nu_z, 'positive', "resistance coefficient of the slack branch's stretching, N*s/m")
-    nu_t = _checked('nu_t', nu_t, 'positive', 'running resistance of the element per unit speed, N*s/m')
+    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
+    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
     q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
@@ -702,15 +702,15 @@ def damping_matrix(nu1, nu2, nu_y, nu_z, nu_t, r):
     Parameters
     ----------
     nu1 : array_like
-        resistance coefficient of the C1 shaft [N*m*s/rad], > 0
+        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0
     nu2 : array_like
-        resistance coefficient of the C2 shaft [N*m*s/rad], > 0
+        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0
     nu_y : array_like
-        resistance coefficient of the drum-shaft bending [N*s/m], > 0
+        resistance coefficient of the drum-shaft bending [N*s/m], >= 0
     nu_z : array_like
-        resistance coefficient of the slack branch's stretching [N*s/m], > 0
+        resistance coefficient of the slack branch's stretching [N*s/m], >= 0
     nu_t : array_like
-        running resistance of the element per unit speed [N*s/m], > 0
+        running resistance of the element per unit speed [N*s/m], >= 0
     r : array_like
         radius of the driving drum [m], > 0
 
@@ -719,11 +719,11 @@ def damping_matrix(nu1, nu2, nu_y, nu_z, nu_t, r):
     ndarray
         [SI], shape (5, 5) followed by the broadcast shape of the arguments.
     """
-    nu1  = _checked('nu1', nu1, 'positive', 'resistance coefficient of the C1 shaft, N*m*s/rad')
-    nu2  = _checked('nu2', nu2, 'positive', 'resistance coefficient of the C2 shaft, N*m*s/rad')
-    nu_y = _checked('nu_y', nu_y, 'positive', 'resistance coefficient of the drum-shaft bending, N*s/m')
-    nu_z = _checked('nu_z', nu_z, 'positive', "resistance coefficient of the slack branch's stretching, N*s/m")
-    nu_t = _checked('nu_t', nu_t, 'positive', 'running resistance of the element per unit speed, N*s/m')
+    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad')
+    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad')
+    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m')
+    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
+    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
     r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
     x0 = -nu1
     x1 = -nu2

@@ -53,3 +53,55 @@ def test_shipped_scene_modules_are_generated_and_fresh(scene):
     from crane_sym import codegen
     on_disk = codegen.default_directory() / "scene_overhead_crane_50t.py"
     assert on_disk.read_text() == files["scene_overhead_crane_50t.py"]
+
+
+# --- switches and inputs (paper 004: damping off, the load W left as an argument)
+UNDAMPED = "drum_drive_undamped"
+
+
+def test_switched_off_damping_leaves_no_damping_code(tmp_path):
+    scene = scenes.load_scene(UNDAMPED)
+    assert scene.switched_off == ("damping",) and scene.inputs == ("W",)
+    assert main(["generate", "--scene", UNDAMPED, "--out", str(tmp_path)]) == 0
+    path = tmp_path / f"scene_{UNDAMPED}.py"
+    code = path.read_text().split('"""', 2)[2]          # after the module docstring
+    assert not any(f"nu{x}" in code for x in ("1", "2", "_y", "_z", "_t"))
+    special = _load(path)
+    d = registry.get(scene.derivation)
+    small = specialize.specialize(d, scene)
+    assert specialize.operation_count(small) < specialize.operation_count(
+        [d.output(n) for n in scene.outputs]) / 5
+    import crane_sym.generated.drum_drive as general
+    p = {**scene.parameters, **{n: 0.0 for n in ("nu1", "nu2", "nu_y", "nu_z", "nu_t")}}
+    order = [str(a) for a in d.output("state_derivative").args]
+    rng = np.random.default_rng(3)
+    for _ in range(5):
+        state = dict(zip([f"s{i}" for i in range(1, 11)], rng.normal(size=10) * 1e-3))
+        W = float(rng.uniform(1e3, 1e4))
+        expected = general.state_derivative(*[{**p, **state, "W": W}[a] for a in order])
+        got = special.state_derivative(W, *state.values())
+        assert np.allclose(got, expected, rtol=1e-13, atol=1e-13 * np.max(np.abs(expected)))
+    jac_order = [str(a) for a in d.output("state_jacobian").args]
+    assert np.allclose(special.state_jacobian(),
+                       general.state_jacobian(*[p[a] for a in jac_order]), rtol=1e-14)
+
+
+def _scene_text(options: str, extra_parameters: str = "", inputs: str = '["W"]') -> str:
+    text = (scenes.scenes_directory() / f"{UNDAMPED}.toml").read_text()
+    text = text.replace('inputs = ["W"]', f"inputs = {inputs}")
+    text = text.replace("damping = false", options)
+    return text.replace("[parameters]\n", "[parameters]\n" + extra_parameters)
+
+
+@pytest.mark.parametrize("options, extra, inputs, message", [
+    ('damping = "off"', "", '["W"]', "option 'damping' must be true or false"),
+    ("damping = false", 'nu1 = "20 N*m*s/rad"\n', '["W"]', "'nu1' is fixed by a switch"),
+    ("damping = false", 'W = "1 kN"\n', '["W"]', "'W' is an input of the scene"),
+    ("damping = false", "", '["mu"]', "input 'mu' is not a parameter"),
+    ("damping = true", "", '["W"]', "parameter 'nu1'.*is missing"),
+])
+def test_switch_and_input_errors_name_the_key(tmp_path, options, extra, inputs, message):
+    path = tmp_path / "scene.toml"
+    path.write_text(_scene_text(options, extra, inputs))
+    with pytest.raises(scenes.SceneError, match=message):
+        scenes.load_scene(path)
