@@ -11,8 +11,6 @@ import pytest
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
 
-from crane_sym import registry
-from crane_sym.audit import audit
 from crane_sym.derivations import drum_drive as m
 from crane_sym.derivations import drum_drive_published as pub
 from crane_sym.lagrange import lagrange_equations
@@ -71,14 +69,7 @@ EXAMPLE = {"I1": 13.0, "I2": 3.0, "I3": 50.0, "C1": 2e4, "C2": 5e4, "nu1": 20.0,
            "r": 0.25, "D": 0.5, "M0": 440.0, "F0": 2e4}
 
 
-@pytest.fixture(scope="module")
-def derivation():
-    return m.build()
-
-
-@pytest.fixture(scope="module")
-def records(derivation):
-    return {r.label: r for r in audit(derivation)}
+DERIVATION = m.ID
 
 
 @pytest.fixture(scope="module")

@@ -10,7 +10,6 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import crane_sym.generated.drum_drive as gen
-from crane_sym import registry
 from crane_sym.derivations.drum_drive_hard_cases import hard_cases
 from crane_sym.reference import accuracy, mp_values
 
@@ -24,9 +23,7 @@ WELL_CONDITIONED = {"branch_effective_mass": 2, "drive_chain_frequency_1": 6,
                     "drum_torque": 2}
 
 
-@pytest.fixture(scope="module")
-def derivation():
-    return registry.get("drum_drive")
+DERIVATION = "drum_drive"
 
 
 @pytest.fixture(scope="module")

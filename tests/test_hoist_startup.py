@@ -10,7 +10,6 @@ import pytest
 import sympy as sp
 
 from crane_sym import codegen
-from crane_sym.audit import audit
 from crane_sym.derivations import hoist_startup as m
 from crane_sym.derivations import hoist_startup_published as pub
 
@@ -90,14 +89,7 @@ EXPECTED = {
 }
 
 
-@pytest.fixture(scope="module")
-def derivation():
-    return m.build()
-
-
-@pytest.fixture(scope="module")
-def records(derivation):
-    return {r.label: r for r in audit(derivation)}
+DERIVATION = m.ID
 
 
 def rhs_of(d, label):
