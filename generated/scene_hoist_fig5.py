@@ -38,26 +38,45 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _taylor_tail(x, n, odd):
+    """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
+    x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
+    of the first: as many terms as the largest |x| needs, at most 60."""
+    x2 = -x * x
+    t = np.ones_like(x) if odd == 0 else x.copy()
+    for k in range(n):  # the first term, (-1)**n x**(2n+odd)/(2n+odd)!
+        m = 2 * k + odd
+        t *= x2
+        t /= (m + 1) * (m + 2)
+    reach, bound = float(np.max(-x2, initial=0.0)), 1.0
+    total = np.zeros_like(x)
+    for k in range(n, n + 60):
+        total += t
+        m = 2 * k + odd
+        t *= x2
+        t /= (m + 1) * (m + 2)
+        bound *= reach / ((m + 1) * (m + 2))  # >= |next term / first| at every x
+        if bound < 1e-17:
+            break
+    return total
+
+
 def _taylor_remainder(x, n, odd):
     """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
     term x**(2n-2+odd): by the series where the direct difference cancels."""
     x = np.asarray(x, dtype=float)
+    small = np.abs(x) < 2.0 * n + 2.0
+    if small.all():  # no mask, no direct difference
+        return _taylor_tail(x, n, odd)
     direct = np.cos(x) if odd == 0 else np.sin(x)
     term = np.ones_like(x) if odd == 0 else x.copy()
     for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
         direct = direct - term
         m = 2 * k + odd
         term = term * (-x * x) / ((m + 1) * (m + 2))
-    small = np.abs(x) < 2.0 * n + 2.0
     if np.any(small):
-        xs, t = x[small], term[small]
-        total = np.zeros_like(xs)
-        for k in range(n, n + 60):  # |x| < 2n + 2: terms fall below 1e-17 of the first
-            total = total + t
-            m = 2 * k + odd
-            t = t * (-xs * xs) / ((m + 1) * (m + 2))
         direct = np.array(direct, dtype=float)
-        direct[small] = total
+        direct[small] = _taylor_tail(x[small], n, odd)
     return direct
 
 

@@ -99,3 +99,45 @@ def test_taylor_remainders_against_mpmath(n, odd):
             exact = f - sum((-1) ** j * X ** (2 * j + odd) / mpmath.factorial(2 * j + odd)
                             for j in range(n))
             assert abs(g - exact) <= 4e-15 * abs(exact)
+
+
+@pytest.mark.parametrize("n", [1, 2, 3])
+@pytest.mark.parametrize("odd", [0, 1])
+def test_taylor_remainders_of_small_arguments_only(n, odd):
+    # every |x| < 2n + 2: the series alone, with as many terms as the largest needs
+    for top in (1e-3, 0.5, 2.0 * n + 1.9):
+        xs = np.linspace(-top, top, 41)
+        got = k._taylor_remainder(xs, n, odd)
+        with mpmath.workdps(80):
+            for x, g in zip(xs, got):
+                X = mpmath.mpf(float(x))
+                f = mpmath.cos(X) if odd == 0 else mpmath.sin(X)
+                exact = f - sum((-1) ** j * X ** (2 * j + odd) / mpmath.factorial(2 * j + odd)
+                                for j in range(n))
+                assert abs(g - exact) <= 4e-15 * abs(exact)
+    assert k._taylor_remainder(0.5, n, odd).shape == ()
+
+
+@pytest.mark.parametrize("kind", [float, complex])
+def test_compensated_cumsum_against_exact_prefix_sums(kind):
+    # terms of wildly different sizes that cancel: the plain cumsum loses digits
+    r = np.random.default_rng(3)
+    a = r.standard_normal(4000) * 10.0 ** r.integers(-8, 9, 4000)
+    a = np.concatenate([a, -a[::-1]]) + 1e-3 * r.standard_normal(8000)
+    if kind is complex:
+        a = a + 1j * np.roll(a, 17)
+    s = np.cumsum(a)
+    assert np.array_equal(k._two_sum(s[:-1], a[1:])[0], s[1:])   # cumsum adds left to right
+    got = k._compensated_cumsum(a)
+    parts = (np.real, np.imag) if kind is complex else (np.real,)
+    for part in parts:
+        exact = np.cumsum([Fraction(x) for x in part(a)])
+        err = [abs(Fraction(g) - e) for g, e in zip(part(got), exact)]
+        scale = np.cumsum(np.abs(part(a)))
+        # Sum2's bound: one rounding of the sum plus (n eps)^2 times sum |a|
+        gamma2 = (a.size * 2.0 ** -53) ** 2
+        assert all(e <= 2 * 2.0 ** -53 * abs(x) + gamma2 * sc
+                   for e, x, sc in zip(err, exact, scale))
+        plain = max(float(abs(Fraction(g) - e) / max(abs(e), Fraction(1, 10**30)))
+                    for g, e in zip(part(s), exact))
+        assert plain > 1e-12                  # the case is hard for np.cumsum
