@@ -91,7 +91,10 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
     import importlib
 
     from .reference import accuracy
-    print(f"{'function':<24} {'hard case':<40} {'points':>6}  max rel. error vs mpmath (50 digits)")
+    # cond.·u: condition number times 2**-53 at the worst point (the error input
+    # rounding alone causes); over target: largest error / max(1e-15, 2 cond.·u).
+    print(f"{'function':<34} {'hard case':<40} {'points':>6} {'cond.·u':>9} "
+          f"{'over target':>11}  max rel. error vs mpmath (50 digits)")
     for i in _ids(args.ids):
         cases = getattr(registry.module(i), "hard_cases", None)
         if cases is None:
@@ -102,7 +105,8 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
         for case, columns in cases().items():
             for out in (o for o in d.outputs if not o.expr.is_Matrix):
                 row = accuracy(out, getattr(generated, out.name), case, columns)
-                print(f"{out.name:<24} {case:<40} {row.points:>6}  {row.max_rel_error:.2e}")
+                print(f"{out.name:<34} {case:<40} {row.points:>6} {row.bound:9.2e} "
+                      f"{row.excess:11.2f}  {row.max_rel_error:.2e}")
     return 0
 
 

@@ -17,12 +17,16 @@ from sympy.printing.numpy import NumPyPrinter
 
 from . import __version__, kernels
 from .derivation import Derivation, Output
+from .entire import Z, plan
 from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
 from .symbols import TIME, SymbolTable
 
 
 class _Printer(NumPyPrinter):
-    """NumPy printer that writes ``np.`` and full double precision floats."""
+    """NumPy printer that writes ``np.`` and full double precision floats;
+    ``entire`` nodes become calls of module helpers named in ``helpers``."""
+
+    _default_settings = {**NumPyPrinter._default_settings, "helpers": None}
 
     def _module_format(self, fqn: str, register: bool = True) -> str:
         if fqn.startswith("numpy."):
@@ -54,6 +58,29 @@ class _Printer(NumPyPrinter):
         if expr.exp == -1:
             return "1/" + self.parenthesize(expr.base, 1000)
         return super()._print_Pow(expr, rational=rational)
+
+    def _print_offset_wave(self, expr: sp.Basic) -> str:
+        return "_offset_wave(" + ", ".join(self._print(a) for a in expr.args) + ")"
+
+    def _print_wave(self, expr: sp.Basic) -> str:
+        return "_wave(" + ", ".join(self._print(a) for a in expr.args) + ")"
+
+    def _print_exact_phase(self, expr: sp.Basic) -> str:
+        k, t, c = (self._print(a) for a in expr.args)
+        return f"_exact_phase({k}, {t})" if expr.args[2] == 0 else f"_exact_phase({k}, {t}, {c})"
+
+    def _print_phase_sin(self, expr: sp.Basic) -> str:
+        return f"_sin_pair({self._print(expr.args[0])}, {float(expr.args[1])!r})"
+
+    def _print_phase_cos(self, expr: sp.Basic) -> str:
+        return f"_cos_pair({self._print(expr.args[0])}, {float(expr.args[1])!r})"
+
+    def _print_entire(self, expr: sp.Basic) -> str:
+        helpers = self._settings["helpers"]
+        key = int(expr.args[1])
+        if key not in helpers:
+            helpers[key] = f"_entire_{len(helpers) + 1}"
+        return f"{helpers[key]}({self._print(expr.args[0])})"
 
 
 def _dd_literal(value: sp.Expr) -> str:
@@ -100,9 +127,39 @@ class _DoubleDoublePrinter(_Printer):
         raise ValueError(f"no double-double form for {expr}")
 
 
-def _printer() -> _Printer:
+def _printer(helpers: dict[int, str] | None = None) -> _Printer:
     return _Printer({"fully_qualified_modules": True, "inline": True,
-                     "allow_unknown_functions": False})
+                     "allow_unknown_functions": False,
+                     "helpers": {} if helpers is None else helpers})
+
+
+def render_helper(key: int, name: str) -> str:
+    """Source of the module-level function that evaluates one ``entire`` node:
+    the closed form where it is accurate, the Taylor series below the cutoff."""
+    p = plan(key)
+    zs = sp.Symbol("z_")
+    # each sin(q z), cos(q z) pair is computed once, from the phase pair w
+    multiples = sorted({sp.cancel(f.args[0] / Z) for f in p.printed.atoms(sp.sin, sp.cos)})
+    names = {q: (sp.Symbol(f"s{i}"), sp.Symbol(f"c{i}")) for i, q in enumerate(multiples)}
+    closed = p.printed.replace(
+        lambda e: isinstance(e, (sp.sin, sp.cos)),
+        lambda e: names[sp.cancel(e.args[0] / Z)][0 if isinstance(e, sp.sin) else 1])
+    closed = _printer().doprint(closed.xreplace({Z: zs}))
+    trig = "".join(f"    {s}, {c} = _sincos_pair(w, {float(q)!r})\n"
+                   for q, (s, c) in names.items())
+    coeffs = ", ".join(repr(c) for c in p.coeffs)
+    lead = f"z**{p.power}" if p.power else "1"
+    return (f"def {name}(z):\n"
+            f'    """{sp.sstr(p.printed)}:\n'
+            f"    entire, ~{lead} at 0; its Taylor series where |z| < {p.cutoff!r}.\n"
+            f'    z is a phase: a pair (hi, lo) or a double."""\n'
+            f"    z, z_lo = _pair(z)\n"
+            f"    small = np.abs(z) < {p.cutoff!r}\n"
+            f"    z_ = np.where(small, {p.cutoff!r}, z)\n"
+            f"    w = (z_, np.where(small, 0.0, z_lo))\n"
+            + trig +
+            f"    return _taylor_where({closed}, small, z, {p.power}, {p.step},\n"
+            f"                         ({coeffs},))\n")
 
 
 def hoist(expr: sp.Expr, varying: set[sp.Symbol]
@@ -162,11 +219,15 @@ def _signature(out: Output) -> str:
 
 
 def render_function(out: Output, table: SymbolTable,
-                    rules: Sequence[Rule] | None = None) -> str:
-    """Source of one validated, vectorized NumPy function."""
-    printer = _printer()
+                    rules: Sequence[Rule] | None = None,
+                    helpers: dict[int, str] | None = None) -> str:
+    """Source of one validated, vectorized NumPy function; the ``entire``
+    helpers it calls are named in ``helpers`` (key -> name)."""
+    printer = _printer(helpers)
     varying = {e.expr for e in table.with_role(TIME)} & set(out.args)
-    rules = rules_for(varying) if rules is None else rules
+    scales = frozenset(a for a in out.args if a not in varying and any(
+        table[a].dimension == table[v].dimension for v in varying))
+    rules = rules_for(varying, scales) if rules is None else rules
     shape = out.expr.shape if isinstance(out.expr, sp.MatrixBase) else None
     if shape is None:
         expr = optimize(out.expr, rules)
@@ -244,9 +305,11 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
               f"Functions and argument order:\n{listing}\n"
               '"""\n')
     names = ", ".join(repr(o.name) for o in outputs)
-    functions = ["\n" + render_function(o, d.symbols, rules) for o in outputs]
+    helpers: dict[int, str] = {}
+    functions = ["\n" + render_function(o, d.symbols, rules, helpers) for o in outputs]
+    helper_source = ["\n" + render_helper(key, name) for key, name in helpers.items()]
     parts = [header, "import numpy as np\n", f"__all__ = [{names}]\n",
-             "\n" + _kernel_source(functions), *functions]
+             "\n" + _kernel_source(functions + helper_source), *helper_source, *functions]
     return "\n".join(parts)
 
 

@@ -186,6 +186,88 @@ def _compensated_cumsum(a):
     return s
 
 
+def _taylor_where(values, small, z, power, step, coeffs):
+    """``values`` with the entries where ``small`` replaced by
+    z**power * sum_k coeffs[k] * z**(step*k) (Horner): an entire function by
+    its Taylor series where its closed form cancels."""
+    values = np.array(values, dtype=float)
+    if np.any(small):
+        zs = np.asarray(z, dtype=float)[small]
+        zz = zs * zs if step == 2 else zs
+        total = np.full_like(zs, coeffs[-1])
+        for c in coeffs[-2::-1]:
+            total = total * zz + c
+        values[small] = total * zs ** power
+    return values
+
+
+def _exact_phase(k, t, c=0.0):
+    """k*(t - c) as a pair (hi, lo) with hi + lo correct to ~2**-104
+    relative: t - c by TwoSum, the product by TwoProduct. A phase at long
+    times or just after a switch, where one rounding is a large error of a
+    sine near its zeros."""
+    s, e = _two_sum(t, -c)
+    p, pe = _two_product(k, s)
+    return _quick_two_sum(p, pe + k * e)
+
+
+def _pair(z):
+    """A phase as (hi, lo): a pair from _exact_phase, or a double."""
+    return z if isinstance(z, tuple) else (z, 0.0 * np.asarray(z))
+
+
+def _sin_pair(z, q):
+    """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
+    hi, lo = _pair(z)
+    a = q * hi
+    return np.sin(a) + np.cos(a) * (q * lo)
+
+
+def _cos_pair(z, q):
+    """cos(q*z) for a phase pair z (q a power of two)."""
+    hi, lo = _pair(z)
+    a = q * hi
+    return np.cos(a) - np.sin(a) * (q * lo)
+
+
+def _sincos_pair(z, q):
+    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once."""
+    hi, lo = _pair(z)
+    a, d = q * hi, q * lo
+    s, c = np.sin(a), np.cos(a)
+    return s + c * d, c - s * d
+
+
+def _wave(b, c, x):
+    """b*cos(x) + c*sin(x) for a phase pair x, the two products summed with
+    one rounding (TwoProduct): the wave is accurate near its zeros."""
+    s, co = _sincos_pair(x, 1.0)
+    p, p_err = _two_product(b, co)
+    q, q_err = _two_product(c, s)
+    return (p + q) + (p_err + q_err)
+
+
+def _offset_wave(level, gap, b, c, x):
+    """level + b*cos(x) + c*sin(x) without cancellation where the wave swings
+    back towards zero; x is a phase pair. Written level + a*cos(x - d)
+    (|d| <= pi/2, a = ±hypot(b, c)); where level and a*cos(x - d) have
+    opposite signs it is s*gap/(|level| + |a|) + s*|a|*(1 + q*cos(x - d)),
+    s = sign(level), q = s*sign(a), the last factor as 2*cos(...)**2 or
+    2*sin(...)**2. The caller supplies gap = level**2 - b**2 - c**2 accurately."""
+    hi, lo = _pair(x)
+    sb = np.where(b < 0, -1.0, 1.0)
+    r = np.hypot(b, c)
+    theta, err = _two_sum(hi, -np.arctan2(c * sb, np.abs(b)))
+    lo = err + lo
+    cos_theta = np.cos(theta) - np.sin(theta) * lo
+    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)
+    s = np.where(level < 0, -1.0, 1.0)
+    q = s * sb
+    half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
+    back = s * (gap / (np.abs(level) + r) + 2.0 * r * half * half)
+    return np.where(q * cos_theta >= 0, level + sb * r * cos_theta, back)
+
+
 def _matrix(shape, elements):
     """Row-major ``elements`` as an array of ``shape`` followed by the
     broadcast shape of the elements (a matrix per input point)."""
@@ -210,6 +292,11 @@ DEPENDS = {
     "_taylor_tail": (),
     "_taylor_remainder": ("_taylor_tail",),
     "_cos_remainder": ("_taylor_remainder",), "_sin_remainder": ("_taylor_remainder",),
+    "_taylor_where": (),
+    "_exact_phase": ("_two_sum", "_two_product", "_quick_two_sum"),
+    "_pair": (), "_sin_pair": ("_pair",), "_cos_pair": ("_pair",),
+    "_sincos_pair": ("_pair",), "_wave": ("_sincos_pair", "_two_product"),
+    "_offset_wave": ("_pair", "_two_sum"),
 }
 
 

@@ -256,19 +256,57 @@ def fold_constants(expr: sp.Expr) -> sp.Expr:
     return expr.func(*[fold_constants(a) for a in expr.args])
 
 
-def factor_polynomials(varying: set[sp.Symbol]) -> Rule:
-    """Rule: a sum that is a polynomial of degree >= 2 in an array argument is
-    factored (``12t³/t_n³ − 24t²/t_n² + 12t/t_n → 12t(t − t_n)²/t_n³``), so
-    it does not cancel near its real roots."""
+def factor_polynomials(varying: set[sp.Symbol], scales: frozenset = frozenset()) -> Rule:
+    """Rule: a sum that is a polynomial in an array argument is factored
+    (``12t³/t_n³ − 24t²/t_n² + 12t/t_n → 12t(t − t_n)²/t_n³``, ``1 − t/t_n →
+    −(t − t_n)/t_n``), so it does not cancel near its real roots. ``scales`` are parameters of the
+    argument's dimension (t_n for t): terms are grouped by their joint degree
+    in the argument and its scales, and factored group by group, so
+    ``g·t·t_n⁴ + 12τ_0·v0·t(t − t_n)²`` is not mixed into one polynomial
+    that cancels."""
+    def factored(add: sp.Expr) -> sp.Expr | None:
+        new = sp.factor(add)
+        if not new.is_Atom:
+            new = new.func(*new.args)   # factor may leave -1·(1/2)·(...) unevaluated
+        return new if new != add and not new.is_Add else None
+
+    def paired(terms: list[sp.Expr], v: sp.Symbol) -> set[sp.Symbol]:
+        """Symbols whose power rises as v's falls, term by term (t_n in
+        ``t³/t_n³ − 2t²/t_n² + t/t_n``): scales even when none are given."""
+        powers = [term.as_powers_dict() for term in terms]
+        found = set()
+        for s in set().union(*(term.free_symbols for term in terms)) - {v}:
+            sums = {sp.sympify(p.get(v, 0) + p.get(s, 0)) for p in powers}
+            if len(sums) == 1 and len({p.get(s, 0) for p in powers}) > 1:
+                found.add(s)
+        return found
+
+    def signature(term: sp.Expr, skip: set) -> tuple:
+        """The term's other parameters with their powers (numbers, the
+        argument and its scales left out)."""
+        return tuple(sorted((str(b), str(e)) for b, e in term.as_powers_dict().items()
+                            if not b.is_number and b not in skip))
+
     def rule(expr: sp.Expr) -> sp.Expr:
         if expr.is_Atom:
             return expr
         if expr.is_Add:
             for v in sorted(varying & expr.free_symbols, key=str):
-                if expr.is_polynomial(v) and sp.degree(expr, v) >= 2:
-                    factored = sp.factor(expr)
-                    if factored != expr and not factored.is_Add:
-                        return factored
+                if not (expr.is_polynomial(v) and sp.degree(expr, v) >= 1):
+                    continue
+                terms = sp.Add.make_args(sp.expand(expr))
+                skip = set(scales) | {v} | paired(list(terms), v)
+                groups: dict[tuple, list[sp.Expr]] = {}
+                for term in terms:
+                    groups.setdefault(signature(term, skip), []).append(term)
+                if len(groups) == 1:
+                    new = factored(expr)
+                    if new is not None:
+                        return new
+                    continue
+                parts = [factored(sp.Add(*g)) or sp.Add(*g) for _, g in sorted(groups.items())]
+                if sp.Add(*parts) != expr:
+                    return sp.Add(*parts, evaluate=False)
         return expr.func(*[rule(a) for a in expr.args])
 
     return rule
@@ -306,9 +344,13 @@ DEFAULT_RULES: tuple[Rule, ...] = (
 )
 
 
-def rules_for(varying: set[sp.Symbol]) -> tuple[Rule, ...]:
-    """The rules for a function whose array arguments are ``varying``."""
-    return ((factor_polynomials(varying), taylor_remainder(varying)) + DEFAULT_RULES[:2]
+def rules_for(varying: set[sp.Symbol], scales: frozenset = frozenset()) -> tuple[Rule, ...]:
+    """The rules for a function whose array arguments are ``varying``;
+    ``scales`` are its other arguments of the same dimension."""
+    from .windows import window_pieces
+    return ((window_pieces(varying), factor_polynomials(varying, scales),
+             taylor_remainder(varying))
+            + DEFAULT_RULES[:2]
             + (trig_difference_to_product,) + DEFAULT_RULES[2:] + (accurate_phase(varying),))
 
 

@@ -85,13 +85,6 @@ def _two_product(a, b):
     return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
 
 
-def _diff_of_products(a, b, c, d):
-    """a*b - c*d to within a few ulp, even when the products nearly cancel."""
-    p, p_err = _two_product(a, b)
-    q, q_err = _two_product(c, d)
-    return (p - q) + (p_err - q_err)
-
-
 def _dd(x):
     """A double as a double-double."""
     return x, 0.0 * x
@@ -126,12 +119,6 @@ def _sin_phase(t, k):
     """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
     hi, lo = _phase(t, k)
     return np.sin(hi) + np.cos(hi) * lo
-
-
-def _cos_phase(t, k):
-    """cos(k*t), k a double-double: accurate where cos is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.cos(hi) - np.sin(hi) * lo
 
 
 def _taylor_tail(x, n, odd):
@@ -176,14 +163,320 @@ def _taylor_remainder(x, n, odd):
     return direct
 
 
-def _cos_remainder(x, n):
-    """cos(x) - sum_{k<n} (-1)**k x**(2k)/(2k)!, accurate at small |x|."""
-    return _taylor_remainder(x, n, 0)
-
-
 def _sin_remainder(x, n):
     """sin(x) - sum_{k<n} (-1)**k x**(2k+1)/(2k+1)!, accurate at small |x|."""
     return _taylor_remainder(x, n, 1)
+
+
+def _taylor_where(values, small, z, power, step, coeffs):
+    """``values`` with the entries where ``small`` replaced by
+    z**power * sum_k coeffs[k] * z**(step*k) (Horner): an entire function by
+    its Taylor series where its closed form cancels."""
+    values = np.array(values, dtype=float)
+    if np.any(small):
+        zs = np.asarray(z, dtype=float)[small]
+        zz = zs * zs if step == 2 else zs
+        total = np.full_like(zs, coeffs[-1])
+        for c in coeffs[-2::-1]:
+            total = total * zz + c
+        values[small] = total * zs ** power
+    return values
+
+
+def _exact_phase(k, t, c=0.0):
+    """k*(t - c) as a pair (hi, lo) with hi + lo correct to ~2**-104
+    relative: t - c by TwoSum, the product by TwoProduct. A phase at long
+    times or just after a switch, where one rounding is a large error of a
+    sine near its zeros."""
+    s, e = _two_sum(t, -c)
+    p, pe = _two_product(k, s)
+    return _quick_two_sum(p, pe + k * e)
+
+
+def _pair(z):
+    """A phase as (hi, lo): a pair from _exact_phase, or a double."""
+    return z if isinstance(z, tuple) else (z, 0.0 * np.asarray(z))
+
+
+def _sin_pair(z, q):
+    """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
+    hi, lo = _pair(z)
+    a = q * hi
+    return np.sin(a) + np.cos(a) * (q * lo)
+
+
+def _sincos_pair(z, q):
+    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once."""
+    hi, lo = _pair(z)
+    a, d = q * hi, q * lo
+    s, c = np.sin(a), np.cos(a)
+    return s + c * d, c - s * d
+
+
+def _wave(b, c, x):
+    """b*cos(x) + c*sin(x) for a phase pair x, the two products summed with
+    one rounding (TwoProduct): the wave is accurate near its zeros."""
+    s, co = _sincos_pair(x, 1.0)
+    p, p_err = _two_product(b, co)
+    q, q_err = _two_product(c, s)
+    return (p + q) + (p_err + q_err)
+
+
+def _offset_wave(level, gap, b, c, x):
+    """level + b*cos(x) + c*sin(x) without cancellation where the wave swings
+    back towards zero; x is a phase pair. Written level + a*cos(x - d)
+    (|d| <= pi/2, a = ±hypot(b, c)); where level and a*cos(x - d) have
+    opposite signs it is s*gap/(|level| + |a|) + s*|a|*(1 + q*cos(x - d)),
+    s = sign(level), q = s*sign(a), the last factor as 2*cos(...)**2 or
+    2*sin(...)**2. The caller supplies gap = level**2 - b**2 - c**2 accurately."""
+    hi, lo = _pair(x)
+    sb = np.where(b < 0, -1.0, 1.0)
+    r = np.hypot(b, c)
+    theta, err = _two_sum(hi, -np.arctan2(c * sb, np.abs(b)))
+    lo = err + lo
+    cos_theta = np.cos(theta) - np.sin(theta) * lo
+    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)
+    s = np.where(level < 0, -1.0, 1.0)
+    q = s * sb
+    half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
+    back = s * (gap / (np.abs(level) + r) + 2.0 * r * half * half)
+    return np.where(q * cos_theta >= 0, level + sb * r * cos_theta, back)
+
+
+def _entire_1(z):
+    """1 - 4*sin(z/2)**2/z**2:
+    entire, ~z**2 at 0; its Taylor series where |z| < 4.0.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 4.0
+    z_ = np.where(small, 4.0, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 0.5)
+    return _taylor_where(-4*s0**2/z_**2 + 1, small, z, 2, 2,
+                         (0.08333333333333333, -0.002777777777777778, 4.96031746031746e-05, -5.511463844797178e-07, 4.17535139757362e-09, -2.294149119545945e-11, 9.55895466477477e-14, -3.123841393717245e-16, 8.22063524662433e-19, -1.779358278490115e-21, 3.2234751421922368e-24, -4.959192526449595e-27, 6.559778474139676e-30, -7.539975257631811e-33, 7.600781509709487e-36,))
+
+
+def _entire_2(z):
+    """-sin(z)/z:
+    entire, ~1 at 0; its Taylor series where |z| < 0.42044820762685725.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 0.42044820762685725
+    z_ = np.where(small, 0.42044820762685725, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-s0/z_, small, z, 0, 2,
+                         (-1.0, 0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13,))
+
+
+def _entire_3(z):
+    """2*sin(z/2)**2/z:
+    entire, ~z**1 at 0; its Taylor series where |z| < 0.015625.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 0.015625
+    z_ = np.where(small, 0.015625, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 0.5)
+    return _taylor_where(2*s0**2/z_, small, z, 1, 2,
+                         (0.5, -0.041666666666666664, 0.001388888888888889, -2.48015873015873e-05,))
+
+
+def _entire_4(z):
+    """z - sin(z):
+    entire, ~z**3 at 0; its Taylor series where |z| < 2.378414230005442.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 2.378414230005442
+    z_ = np.where(small, 2.378414230005442, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-s0 + z_, small, z, 3, 2,
+                         (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18, -1.9572941063391263e-20, 3.868170170630684e-23, -6.446950284384474e-26,))
+
+
+def _entire_5(z):
+    """-cos(z) + sin(z)/z:
+    entire, ~z**2 at 0; its Taylor series where |z| < 1.681792830507429.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 1.681792830507429
+    z_ = np.where(small, 1.681792830507429, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-c0 + s0/z_, small, z, 2, 2,
+                         (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906, -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09, 1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16, -3.9145882126782523e-19, 8.509974375387505e-22,))
+
+
+def _entire_6(z):
+    """-sin(z) + 2*sin(z/2)**2/z:
+    entire, ~z**1 at 0; its Taylor series where |z| < 2.8284271247461903.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 2.8284271247461903
+    z_ = np.where(small, 2.8284271247461903, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 0.5)
+    s1, c1 = _sincos_pair(w, 1.0)
+    return _taylor_where(2*s0**2/z_ - s1, small, z, 1, 2,
+                         (-0.5, 0.125, -0.006944444444444444, 0.00017361111111111112, -2.48015873015873e-06, 2.296443268665491e-08, -1.4911969277048643e-10, 7.169215998581078e-13, -2.6552651846596585e-15, 7.809603484293113e-18, -1.8683261924146203e-20, 3.706996413521072e-23, -6.198990658061994e-26, 8.855700940088562e-29, -1.0932964123566126e-31,))
+
+
+def _entire_7(z):
+    """1 - sin(z)/z:
+    entire, ~z**2 at 0; its Taylor series where |z| < 2.378414230005442.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 2.378414230005442
+    z_ = np.where(small, 2.378414230005442, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-s0/z_ + 1, small, z, 2, 2,
+                         (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18, -1.9572941063391263e-20, 3.868170170630684e-23, -6.446950284384474e-26,))
+
+
+def _entire_8(z):
+    """sin(z)/(2*z) + 2*cos(z)/z**2 + z**(-2) - 3*sin(z)/z**3:
+    entire, ~z**2 at 0; its Taylor series where |z| < 3.363585661014858.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 3.363585661014858
+    z_ = np.where(small, 3.363585661014858, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(2*c0/z_**2 + (1/2)*s0/z_ - 3*s0/z_**3 + z_**(-2.0), small, z, 2, 2,
+                         (-0.025, 0.001984126984126984, -5.787037037037037e-05, 9.018759018759019e-07, -8.832474110251888e-09, 5.964787710819457e-11, -2.952030117062797e-13, 1.118006393540909e-15, -3.3469729218399058e-18, 8.123157358324436e-21, -1.6310784219492718e-23, 2.755106959138664e-26, -3.969796973143149e-29, 4.937467668707283e-32, -5.355096063658957e-35,))
+
+
+def _entire_9(z):
+    """cos(z)/(6*z) - 2*sin(z)/(3*z**2) - cos(z)/z**3 + z**(-3):
+    entire, ~z**1 at 0; its Taylor series where |z| < 3.363585661014858.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 3.363585661014858
+    z_ = np.where(small, 3.363585661014858, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where((1/6)*c0/z_ - c0/z_**3 - 2/3*s0/z_**2 + z_**(-3.0), small, z, 1, 2,
+                         (-0.013888888888888888, 0.002777777777777778, -0.0001240079365079365, 2.57201646090535e-06, -3.131513548180215e-08, 2.5235640315005394e-10, -1.4497747908241734e-12, 6.24768278743449e-15, -2.0962619878892042e-17, 5.63463454855203e-20, -1.241037929744011e-22, 2.2812285621668135e-25, -3.553213340158991e-28, 4.750184412308041e-31, -5.510566594539378e-34,))
+
+
+def _entire_10(z):
+    """z/4 - 3/(2*z) + 3*sin(z)/(2*z**2):
+    entire, ~z**3 at 0; its Taylor series where |z| < 4.756828460010884.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 4.756828460010884
+    z_ = np.where(small, 4.756828460010884, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where((3/2)*s0/z_**2 + (1/4)*z_ - (3/2)/z_, small, z, 3, 2,
+                         (0.0125, -0.00029761904761904765, 4.133597883597884e-06, -3.757816257816258e-08, 2.408856575523242e-10, -1.1470745597729724e-12, 4.217185881518281e-15, -1.2330952869936495e-17, 2.935941159508689e-20, -5.802255255946026e-23, 9.67042542657671e-26, -1.3775534795693318e-28, 1.6964944329671575e-31, -1.8241875623302768e-34, 1.7274503431157926e-37, -1.4516389437947837e-40,))
+
+
+def _entire_11(z):
+    """cos(z)/z + 2/z - 3*sin(z)/z**2:
+    entire, ~z**3 at 0; its Taylor series where |z| < 3.363585661014858.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 3.363585661014858
+    z_ = np.where(small, 3.363585661014858, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(c0/z_ - 3*s0/z_**2 + 2/z_, small, z, 3, 2,
+                         (0.016666666666666666, -0.0007936507936507937, 1.6534391534391536e-05, -2.0041686708353376e-07, 1.6059043836821615e-09, -9.17659647818378e-12, 3.936040156083729e-14, -1.3153016394598927e-16, 3.523129391410427e-19, -7.736340341261368e-22, 1.4183290625645841e-24, -2.204085567310931e-27, 2.9405903504764064e-30, -3.4051501163498504e-33,))
+
+
+def _entire_12(z):
+    """-sin(z)/4 - cos(z)/z - 1/(2*z) + 3*sin(z)/(2*z**2):
+    entire, ~z**3 at 0; its Taylor series where |z| < 3.363585661014858.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 3.363585661014858
+    z_ = np.where(small, 3.363585661014858, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-c0/z_ - 1/4*s0 + (3/2)*s0/z_**2 - (1/2)/z_, small, z, 3, 2,
+                         (0.0125, -0.000992063492063492, 2.8935185185185186e-05, -4.5093795093795094e-07, 4.416237055125944e-09, -2.9823938554097285e-11, 1.4760150585313984e-13, -5.590031967704545e-16, 1.6734864609199529e-18, -4.061578679162218e-21, 8.155392109746359e-24, -1.377553479569332e-26, 1.9848984865715744e-29, -2.4687338343536413e-32, 2.6775480318294786e-35,))
+
+
+def _entire_13(z):
+    """-cos(z)/(24*z**2) + 3*sin(z)/(8*z**3) + 3*cos(z)/(2*z**4) + z**(-4) - 5*sin(z)/(2*z**5):
+    entire, ~z**2 at 0; its Taylor series where |z| < 4.756828460010884.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 4.756828460010884
+    z_ = np.where(small, 4.756828460010884, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-1/24*c0/z_**2 + (3/2)*c0/z_**4 + (3/8)*s0/z_**3 - 5/2*s0/z_**5 + z_**(-4.0), small, z, 2, 2,
+                         (-0.0001984126984126984, 1.3778659611992945e-05, -3.5072951739618406e-07, 4.8177131510464845e-09, -4.205940052500899e-11, 2.558426101454424e-13, -1.150888934527406e-15, 3.992879976931817e-18, -1.102428498629745e-20, 2.4820758594880223e-23, -4.646947071080546e-26, 7.351475876191016e-29, -9.960064090323311e-32, 1.168908065508353e-34, -1.2000215268703545e-37, 1.0869128428012994e-40, -8.750908515376675e-44,))
+
+
+def _entire_14(z):
+    """-(3/(10*z**3) - 2/z**5)*sin(z/2)**2 + sin(z)/(60*z**2) + 1/(10*z**3) - 3*sin(z)/(5*z**4):
+    entire, ~z**1 at 0; its Taylor series where |z| < 5.656854249492381.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 5.656854249492381
+    z_ = np.where(small, 5.656854249492381, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 0.5)
+    s1, c1 = _sincos_pair(w, 1.0)
+    return _taylor_where(-s0**2*((3/10)/z_**3 - 2/z_**5) + (1/60)*s1/z_**2 - 3/5*s1/z_**4 + (1/10)/z_**3, small, z, 1, 2,
+                         (-0.0001388888888888889, 2.48015873015873e-05, -9.645061728395062e-07, 1.75364758698092e-08, -1.8926730236254046e-10, 1.3669305170627923e-12, -7.106739170706734e-15, 2.795015983852272e-17, -8.620990859284605e-20, 2.1436109695578373e-22, -4.391364982171116e-25, 7.543745245260627e-28, -1.1027213814286523e-30, 1.3886627818239233e-33, -1.5225273122167623e-36, 1.4666929772859888e-39, -1.2513799176988645e-42, 9.523047502027558e-46, -6.504598011727247e-49,))
+
+
+def _entire_15(z):
+    """-z**2/2 + 10 - 60/z**2 + 60*sin(z)/z**3:
+    entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 4.756828460010884
+    z_ = np.where(small, 4.756828460010884, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(60*s0/z_**3 - 1/2*z_**2 + 10 - 60/z_**2, small, z, 4, 2,
+                         (-0.011904761904761904, 0.00016534391534391533, -1.503126503126503e-06, 9.635426302092969e-09, -4.58829823909189e-11, 1.6868743526073125e-13, -4.932381147974598e-16, 1.1743764638034756e-18, -2.3209021023784103e-21, 3.868170170630684e-24, -5.510213918277328e-27, 6.78597773186863e-30, -7.296750249321107e-33, 6.909801372463171e-36, -5.806555775179134e-39,))
+
+
+def _entire_16(z):
+    """-12 + 36*cos(z)/z**2 + 144/z**2 - 180*sin(z)/z**3:
+    entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 4.756828460010884
+    z_ = np.where(small, 4.756828460010884, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(36*c0/z_**2 - 180*s0/z_**3 - 12 + 144/z_**2, small, z, 4, 2,
+                         (-0.014285714285714285, 0.0003968253968253968, -5.411255411255411e-06, 4.625004625004625e-08, -2.752978943455134e-10, 1.214549533877265e-12, -4.143200164298662e-15, 1.1274014052513367e-17, -2.5065742705686833e-20, 4.6418042047568206e-23, -7.273482372126072e-26, 9.771807933890828e-29, -1.1382930388940928e-31, 1.1608466305738125e-34, -1.0451800395322443e-37, 8.369810126384338e-41,))
+
+
+def _entire_17(z):
+    """3 - 9*sin(z)/z - 72*cos(z)/z**2 - 108/z**2 + 180*sin(z)/z**3:
+    entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 4.756828460010884
+    z_ = np.where(small, 4.756828460010884, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-72*c0/z_**2 - 9*s0/z_ + 180*s0/z_**3 + 3 - 108/z_**2, small, z, 4, 2,
+                         (-0.010714285714285714, 0.000496031746031746, -9.46969696969697e-06, 1.0406260406260406e-07, -7.570692094501618e-10, 3.9472859851011115e-12, -1.5537000616119984e-14, 4.791455972318181e-17, -1.1906227785201244e-19, 2.436947207497331e-22, -4.182252363972492e-25, 6.107379958681767e-28, -7.683478012535127e-31, 8.416138071660142e-34, -8.100145306374893e-37, 6.905093354267079e-40,))
+
+
+def _entire_18(z):
+    """-cos(z) + 9*sin(z)/z + 36*cos(z)/z**2 + 24/z**2 - 60*sin(z)/z**3:
+    entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 4.756828460010884
+    z_ = np.where(small, 4.756828460010884, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-c0 + 36*c0/z_**2 + 9*s0/z_ - 60*s0/z_**3 + 24/z_**2, small, z, 4, 2,
+                         (-0.004761904761904762, 0.00033068783068783067, -8.417508417508417e-06, 1.1562511562511562e-07, -1.0094256126002158e-09, 6.140222643490617e-12, -2.7621334428657748e-14, 9.582911944636362e-17, -2.645828396711388e-19, 5.956982062771254e-22, -1.115267297059331e-24, 1.7643542102858438e-27, -2.3904153816775947e-30, 2.8053793572200472e-33, -2.880051664488851e-36, 2.6085908227231188e-39, -2.100218043690402e-42,))
 
 
 def natural_frequency(m1, m2, C):
@@ -300,11 +593,10 @@ def dynamic_coefficient_pulse(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = -theta
-    x1 = (1/2)*Omega
-    k4 = 2*np.sin(theta*x1)
-    return k4*np.sin(x1*(2*t + x0))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)) + 2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_phase(t, q0)**2
+    x0 = Omega*theta
+    k0 = 2*np.sin((1/2)*x0)**2
+    k1 = np.sin(x0)
+    return np.select([np.less_equal(t, theta),True], [2*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k0, k1, _exact_phase(Omega, t, theta))], default=np.nan)
 
 
 def pulse_peak_factor(Omega, theta):
@@ -369,12 +661,12 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    x0 = -theta
-    x1 = (1/2)*Omega
-    k2 = -2*np.sin(theta*x1)
-    k3 = Omega*theta
-    k6 = 1/(Omega*theta)
-    return k6*(-(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_remainder(Omega*t, 1) + (k2*np.cos(x1*(2*t + x0)) + k3)*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))
+    x0 = Omega*theta
+    k0 = 1/(Omega*theta)
+    k1 = _entire_1(x0)
+    k2 = _entire_2(x0)
+    k3 = _entire_3(x0)
+    return np.select([np.less_equal(t, theta),True], [k0*_entire_4(_exact_phase(Omega, t)),_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta))], default=np.nan)
 
 
 def ramp_hold_peak_factor(Omega, theta):
@@ -432,23 +724,25 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = -tau_0
-    x1 = (1/2)*Omega
-    x2 = 1/(Omega*tau_0)
-    x3 = g*m2
-    x4 = 2/m1
-    x5 = -t_n
-    x6 = v0*(m1 + m2)/t_n
-    x7 = _sin_phase(t, q0)**2
-    k2 = -1/2*tau_0
-    k3 = 2*x2*np.sin(tau_0*x1)
-    k7 = -g
-    k8 = x3*x4
-    k13 = np.sin(t_n*x1)
-    k14 = x4*x6
-    k15 = m1/(x3 + x6)
-    return k15*(k14*(k13*np.sin(x1*(2*t + x5))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)) + x7*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))) + k7*(x2*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_remainder(Omega*t, 1) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*x7)
+    x0 = g*t_n
+    x1 = m2*x0
+    x2 = 1/(m1*v0 + m2*v0 + x1)
+    x3 = 2*x2
+    x4 = v0*(m1 + m2)
+    x5 = x3*x4
+    x6 = Omega*t_n
+    x7 = m1*x0*x2
+    x8 = Omega*tau_0
+    x9 = _exact_phase(Omega, t)
+    x10 = _sin_pair(x9, 0.5)**2
+    k0 = x1*x3
+    k2 = x5*np.sin((1/2)*x6)**2
+    k3 = x2*x4*np.sin(x6)
+    k4 = x7/(Omega*tau_0)
+    k5 = _entire_1(x8)
+    k6 = _entire_2(x8)
+    k7 = _entire_3(x8)
+    return k0*x10 + np.select([np.less_equal(t, tau_0),True], [k4*_entire_4(x9),x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x10*x5,_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
 
 
 def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
@@ -486,28 +780,23 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = -tau_0
-    x1 = (1/2)*Omega
-    x2 = 1/(Omega)
-    x3 = x2/tau_0
-    x4 = 1/(m1)
-    x5 = g*m2
-    x6 = -t_n
-    x7 = 2*np.sin(t_n*x1)
-    x8 = 1/(t_n)
-    x9 = v0*x8*(m1 + m2)
-    x10 = _sin_phase(t, q0)**2
-    x11 = _sin_remainder(Omega*t, 1)
-    x12 = 2*t
-    k2 = -1/2*tau_0
-    k3 = 2*x3*np.sin(tau_0*x1)
-    k7 = -g
-    k8 = 2*x4*x5
-    k13 = x2*x7
-    k23 = x4*x9
-    k24 = m1/(x5 + x9)
-    return k24*(k23*(2*x10*(1 - (np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + x7*np.sin(x1*(x12 + x6))*(np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan)) + x8*(x11*x2*(1 - (np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan))) + (k13*np.cos(x1*(x12 + x6)) + x6*np.cos(Omega*(t + x6)))*(np.select([np.less_equal(t + x6, 0),True], [0,1], default=np.nan)))) + k7*(x11*x3*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*x10)
+    x0 = g*t_n
+    x1 = m2*x0
+    x2 = 1/(m1*v0 + m2*v0 + x1)
+    x3 = v0*x2*(m1 + m2)
+    x4 = Omega*t_n
+    x5 = m1*x0*x2
+    x6 = Omega*tau_0
+    x7 = _exact_phase(Omega, t)
+    k0 = 2*x1*x2
+    k1 = 1/(t_n)
+    k3 = x3*_entire_5(x4)
+    k4 = -x3*_entire_6(x4)
+    k5 = x5/(Omega*tau_0)
+    k6 = _entire_1(x6)
+    k7 = _entire_2(x6)
+    k8 = _entire_3(x6)
+    return k0*_sin_pair(x7, 0.5)**2 + np.select([np.less_equal(t, tau_0),True], [k5*_entire_4(x7),x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x3*(k1*(-t + t_n)*_entire_7(x7) + _entire_5(x7)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan)
 
 
 def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
@@ -545,41 +834,24 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = -tau_0
-    x1 = (1/2)*Omega
-    x2 = 1/(Omega)
-    x3 = x2/tau_0
-    x4 = 1/(m1)
-    x5 = -t_n
-    x6 = Omega**(-3.0)
-    x7 = np.sin(t_n*x1)
-    x8 = t_n**2
-    x9 = Omega**(-2.0)
-    x10 = 1/(x8)
-    x11 = 2*x2
-    x12 = Omega*t
-    x13 = _sin_remainder(x12, 1)
-    x14 = 2*t
-    k2 = -1/2*tau_0
-    k3 = 2*x3*np.sin(tau_0*x1)
-    k7 = -g
-    k8 = 2*g*m2*x4
-    k10 = -t_n**3
-    k13 = -12*x6*x7
-    k15 = -3*x2*x8
-    k17 = 6*t_n*x9
-    k20 = 6*x6
-    k26 = x11*x7
-    k29 = -x8
-    k31 = -t_n*x11
-    k34 = 4*x7*x9
-    k37 = 2*x9
-    k38 = -2/t_n
-    k40 = -x2
-    k41 = 12*v0*x10*x4*(m1 + m2)
-    k42 = m1/(g*m2)
-    return k42*(k41*(k38*(k37*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_cos_remainder(x12, 2) - (k29*np.cos(Omega*(t + x5)) + k31*np.sin(Omega*(t + x5)) + k34*np.sin(x1*(x14 + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k40*x13*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + x10*(k20*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_sin_remainder(x12, 2) - (k10*np.cos(Omega*(t + x5)) + k13*np.cos(x1*(x14 + x5)) + k15*np.sin(Omega*(t + x5)) + k17*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) - (k26*np.cos(x1*(x14 + x5)) + x5*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k7*(x13*x3*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*_sin_phase(t, q0)**2)
+    x0 = 1/(Omega)
+    x1 = 1/(m2)
+    x2 = m1*x1
+    x3 = Omega*tau_0
+    x4 = 1/(t_n)
+    x5 = v0*x1*(m1 + m2)/g
+    x6 = Omega*t_n
+    x7 = x4*x5
+    x8 = _exact_phase(Omega, t)
+    x9 = -t + t_n
+    k0 = x0*x2/tau_0
+    k1 = _entire_1(x3)
+    k2 = _entire_2(x3)
+    k3 = _entire_3(x3)
+    k7 = 48*x0*x5/t_n**2
+    k8 = -24*x7*_entire_8(x6)
+    k9 = -72*x7*_entire_9(x6)
+    return np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x8),x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k7*(x4*x9*(x4*x9*_entire_10(x8) + _entire_11(x8)) + _entire_12(x8)),_wave(k8, k9, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x8, 0.5)**2
 
 
 def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
@@ -617,55 +889,23 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = -tau_0
-    x1 = (1/2)*Omega
-    x2 = 1/(Omega)
-    x3 = x2/tau_0
-    x4 = 1/(m1)
-    x5 = -t_n
-    x6 = Omega**(-4.0)
-    x7 = t_n**4
-    x8 = Omega**(-2.0)
-    x9 = t_n**3
-    x10 = Omega**(-3.0)
-    x11 = t_n**2
-    x12 = Omega**(-5.0)
-    x13 = np.sin(t_n*x1)
-    x14 = 1/(x9)
-    x15 = Omega*t
-    x16 = 2*t
-    k2 = -1/2*tau_0
-    k3 = 2*x3*np.sin(tau_0*x1)
-    k7 = -g
-    k8 = 2*g*m2*x4
-    k10 = -t_n**5
-    k12 = -120*t_n*x6
-    k14 = -5*x2*x7
-    k16 = 20*x8*x9
-    k18 = 60*x10*x11
-    k21 = 240*x12*x13
-    k24 = 120*x12
-    k27 = -x11
-    k29 = -2*t_n*x2
-    k32 = 4*x13*x8
-    k35 = -x9
-    k38 = -12*x10*x13
-    k40 = -3*x11*x2
-    k42 = 6*t_n*x8
-    k45 = 6*x10
-    k46 = -3/t_n
-    k48 = -x7
-    k51 = -48*x13*x6
-    k53 = -4*x2*x9
-    k55 = 12*x11*x8
-    k57 = 24*t_n*x10
-    k60 = 24*x6
-    k61 = -3/x11
-    k63 = 2*x8
-    k64 = 60*v0*x14*x4*(m1 + m2)
-    k65 = m1/(g*m2)
-    return k65*(k64*(k46*(k45*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 2) - (k35*np.cos(Omega*(t + x5)) + k38*np.cos(x1*(x16 + x5)) + k40*np.sin(Omega*(t + x5)) + k42*np.cos(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k61*(k60*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 3) + (k48*np.cos(Omega*(t + x5)) + k51*np.sin(x1*(x16 + x5)) + k53*np.sin(Omega*(t + x5)) + k55*np.cos(Omega*(t + x5)) + k57*np.sin(Omega*(t + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k63*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 2) + x14*(k24*(1 - (np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 3) + (k10*np.cos(Omega*(t + x5)) + k12*np.cos(Omega*(t + x5)) + k14*np.sin(Omega*(t + x5)) + k16*np.cos(Omega*(t + x5)) + k18*np.sin(Omega*(t + x5)) + k21*np.cos(x1*(x16 + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) - (k27*np.cos(Omega*(t + x5)) + k29*np.sin(Omega*(t + x5)) + k32*np.sin(x1*(x16 + x5)))*(np.select([np.less_equal(t + x5, 0),True], [0,1], default=np.nan))) + k7*(x3*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 1) + (k3*np.cos(Omega*(k2 + t)) - 2*np.sin(x1*(t + x0))**2 - np.cos(_diff_of_products(t, Omega, Omega, tau_0)))*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))) + k8*_sin_phase(t, q0)**2)
+    x0 = 1/(m2)
+    x1 = m1*x0
+    x2 = Omega*tau_0
+    x3 = 1/(t_n)
+    x4 = v0*x0*(m1 + m2)/g
+    x5 = Omega*t_n
+    x6 = x3*x4
+    x7 = _exact_phase(Omega, t)
+    x8 = -t + t_n
+    k0 = x1/(Omega*tau_0)
+    k1 = _entire_1(x2)
+    k2 = _entire_2(x2)
+    k3 = _entire_3(x2)
+    k8 = -120*x4/(Omega**2*t_n**3)
+    k9 = -2880*x6*_entire_13(x5)
+    k10 = -7200*x6*_entire_14(x5)
+    return np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x7),x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k8*(x3*x8*(x3*x8*(x3*x8*_entire_15(x7) + _entire_16(x7)) + _entire_17(x7)) + _entire_18(x7)),_wave(k9, k10, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x7, 0.5)**2
 
 
 def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
@@ -700,21 +940,15 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = 1/(m1)
-    x1 = g*m2
-    x2 = -t_n
-    x3 = (1/2)*Omega
-    x4 = m1 + m2
-    x5 = v0*x4/t_n
-    x6 = _sin_phase(t, q1)**2
-    k0 = x0*x1
-    k5 = np.sin(t_n*x3)
-    k6 = x0*x5
-    k7 = 2*m1/x4
-    k8 = x4/(g*m1 + x1 + x5)
-    return k8*(g*_cos_phase(t, q0) + k7*(g*x6 + k0*x6 + k6*(k5*np.sin(x3*(2*t + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x6*(1 - (np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan))))))
+    x0 = g*t_n
+    x1 = 1/(v0 + x0)
+    x2 = v0*x1
+    x3 = 2*x2
+    x4 = Omega*t_n
+    k1 = x3*np.sin((1/2)*x4)**2
+    k2 = x2*np.sin(x4)
+    k3 = x0*x1
+    return k3 + np.select([np.less_equal(t, t_n),True], [x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k1, k2, _exact_phase(Omega, t, t_n))], default=np.nan)
 
 
 def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
@@ -749,25 +983,16 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = 2*g
-    x1 = 1/(m1)
-    x2 = -t_n
-    x3 = (1/2)*Omega
-    x4 = 1/(Omega)
-    x5 = 2*np.sin(t_n*x3)
-    x6 = 1/(t_n)
-    x7 = m1 + m2
-    x8 = v0*x6*x7
-    x9 = _sin_phase(t, q1)**2
-    x10 = 2*t
-    k1 = m2*x0*x1
-    k6 = x4*x5
-    k16 = x1*x8
-    k17 = m1/x7
-    k18 = x7/(g*m1 + g*m2 + x8)
-    return k18*(g*_cos_phase(t, q0) + k17*(k1*x9 + k16*(x5*np.sin(x3*(x10 + x2))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)) + x6*(x4*(1 - (np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)))*_sin_remainder(Omega*t, 1) + (k6*np.cos(x3*(x10 + x2)) + x2*np.cos(Omega*(t + x2)))*(np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan))) + 2*x9*(1 - (np.select([np.less_equal(t + x2, 0),True], [0,1], default=np.nan)))) + x0*x9))
+    x0 = g*t_n
+    x1 = 1/(v0 + x0)
+    x2 = v0*x1
+    x3 = Omega*t_n
+    x4 = _exact_phase(Omega, t)
+    k0 = 1/(t_n)
+    k2 = x2*_entire_5(x3)
+    k3 = -x2*_entire_6(x3)
+    k4 = x0*x1
+    return k4 + np.select([np.less_equal(t, t_n),True], [x2*(k0*(-t + t_n)*_entire_7(x4) + _entire_5(x4)),_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
 
 
 def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
@@ -802,39 +1027,16 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = 1/(m1)
-    x1 = -t_n
-    x2 = (1/2)*Omega
-    x3 = Omega**(-3.0)
-    x4 = np.sin(t_n*x2)
-    x5 = 1/(Omega)
-    x6 = t_n**2
-    x7 = Omega**(-2.0)
-    x8 = 1/(x6)
-    x9 = 2*x5
-    x10 = m1 + m2
-    x11 = _sin_phase(t, q1)**2
-    x12 = Omega*t
-    x13 = 2*t
-    k0 = g*m2*x0
-    k2 = -t_n**3
-    k5 = -12*x3*x4
-    k7 = -3*x5*x6
-    k9 = 6*t_n*x7
-    k12 = 6*x3
-    k18 = x4*x9
-    k21 = -x6
-    k23 = -t_n*x9
-    k26 = 4*x4*x7
-    k29 = 2*x7
-    k30 = -2/t_n
-    k32 = -x5
-    k33 = 6*v0*x0*x10*x8
-    k34 = 2*m1/x10
-    k35 = 1/(g)
-    return k35*(g*_cos_phase(t, q0) + k34*(g*x11 + k0*x11 + k33*(k30*(k29*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_cos_remainder(x12, 2) - (k21*np.cos(Omega*(t + x1)) + k23*np.sin(Omega*(t + x1)) + k26*np.sin(x2*(x1 + x13)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) + k32*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x12, 1) + x8*(k12*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x12, 2) - (k2*np.cos(Omega*(t + x1)) + k5*np.cos(x2*(x1 + x13)) + k7*np.sin(Omega*(t + x1)) + k9*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) - (k18*np.cos(x2*(x1 + x13)) + x1*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))))
+    x0 = 1/(t_n)
+    x1 = v0/g
+    x2 = Omega*t_n
+    x3 = x0*x1
+    x4 = _exact_phase(Omega, t)
+    x5 = -t + t_n
+    k2 = 48*x1/(Omega*t_n**2)
+    k3 = -24*x3*_entire_8(x2)
+    k4 = -72*x3*_entire_9(x2)
+    return np.select([np.less_equal(t, t_n),True], [k2*(x0*x5*(x0*x5*_entire_10(x4) + _entire_11(x4)) + _entire_12(x4)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
 
 
 def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
@@ -869,54 +1071,16 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    q0 = _dd(Omega)
-    q1 = _dd_div(_dd(Omega), (2.0, 0.0))
-    x0 = 1/(m1)
-    x1 = -t_n
-    x2 = Omega**(-4.0)
-    x3 = 1/(Omega)
-    x4 = t_n**4
-    x5 = Omega**(-2.0)
-    x6 = t_n**3
-    x7 = Omega**(-3.0)
-    x8 = t_n**2
-    x9 = (1/2)*Omega
-    x10 = Omega**(-5.0)
-    x11 = np.sin(t_n*x9)
-    x12 = 1/(x6)
-    x13 = m1 + m2
-    x14 = _sin_phase(t, q1)**2
-    x15 = Omega*t
-    x16 = 2*t
-    k0 = g*m2*x0
-    k2 = -t_n**5
-    k4 = -120*t_n*x2
-    k6 = -5*x3*x4
-    k8 = 20*x5*x6
-    k10 = 60*x7*x8
-    k13 = 240*x10*x11
-    k16 = 120*x10
-    k19 = -x8
-    k21 = -2*t_n*x3
-    k24 = 4*x11*x5
-    k27 = -x6
-    k30 = -12*x11*x7
-    k32 = -3*x3*x8
-    k34 = 6*t_n*x5
-    k37 = 6*x7
-    k38 = -3/t_n
-    k40 = -x4
-    k43 = -48*x11*x2
-    k45 = -4*x3*x6
-    k47 = 12*x5*x8
-    k49 = 24*t_n*x7
-    k52 = 24*x2
-    k53 = -3/x8
-    k55 = 2*x5
-    k56 = 30*v0*x0*x12*x13
-    k57 = 2*m1/x13
-    k58 = 1/(g)
-    return k58*(g*_cos_phase(t, q0) + k57*(g*x14 + k0*x14 + k56*(k38*(k37*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 2) - (k27*np.cos(Omega*(t + x1)) + k30*np.cos(x9*(x1 + x16)) + k32*np.sin(Omega*(t + x1)) + k34*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) + k53*(k52*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 3) + (k40*np.cos(Omega*(t + x1)) + k43*np.sin(x9*(x1 + x16)) + k45*np.sin(Omega*(t + x1)) + k47*np.cos(Omega*(t + x1)) + k49*np.sin(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) + k55*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_cos_remainder(x15, 2) + x12*(k16*(1 - (np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))*_sin_remainder(x15, 3) + (k10*np.sin(Omega*(t + x1)) + k13*np.cos(x9*(x1 + x16)) + k2*np.cos(Omega*(t + x1)) + k4*np.cos(Omega*(t + x1)) + k6*np.sin(Omega*(t + x1)) + k8*np.cos(Omega*(t + x1)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan))) - (k19*np.cos(Omega*(t + x1)) + k21*np.sin(Omega*(t + x1)) + k24*np.sin(x9*(x1 + x16)))*(np.select([np.less_equal(t + x1, 0),True], [0,1], default=np.nan)))))
+    x0 = 1/(t_n)
+    x1 = v0/g
+    x2 = Omega*t_n
+    x3 = x0*x1
+    x4 = _exact_phase(Omega, t)
+    x5 = -t + t_n
+    k3 = -120*x1/(Omega**2*t_n**3)
+    k4 = -2880*x3*_entire_13(x2)
+    k5 = -7200*x3*_entire_14(x2)
+    return np.select([np.less_equal(t, t_n),True], [k3*(x0*x5*(x0*x5*(x0*x5*_entire_15(x4) + _entire_16(x4)) + _entire_17(x4)) + _entire_18(x4)),_wave(k4, k5, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
 
 
 def optimal_coefficient_from_weight_a1(t, t_n):
@@ -965,9 +1129,10 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    x0 = -tau_0
-    k1 = g*t_n/(tau_0*v0)
-    return (1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(k1*t + 1) + (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))
+    k0 = g*t_n
+    k1 = tau_0*v0
+    k2 = 1/(tau_0*v0)
+    return np.select([np.less_equal(t, tau_0),True], [k2*(k0*t + k1),1], default=np.nan)
 
 
 def optimal_coefficient_from_weight_a2(t, t_n):
@@ -987,8 +1152,9 @@ def optimal_coefficient_from_weight_a2(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    k0 = -1/t_n
-    return k0*t + 1
+    k0 = -t_n
+    k1 = -1/t_n
+    return k1*(k0 + t)
 
 
 def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0):
@@ -1017,10 +1183,12 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    x0 = -tau_0
-    x1 = -1/t_n
-    k2 = g*t_n/(tau_0*v0)
-    return (1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(k2*t + t*x1 + 1) + (t*x1 + 1)*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan))
+    x0 = -t_n
+    x1 = 1/(t_n)
+    k0 = g*t_n**2
+    k2 = -tau_0*v0
+    k3 = x1/(tau_0*v0)
+    return np.select([np.less_equal(t, tau_0),True], [k3*(k0*t + k2*(t + x0)),x1*(-t - x0)], default=np.nan)
 
 
 def optimal_coefficient_from_weight_a3(t, t_n):
@@ -1071,15 +1239,13 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    x0 = -tau_0
-    x1 = tau_0*v0
-    x2 = 12*x1
-    k0 = -t_n
-    k4 = -24*t_n*x1
-    k5 = g*t_n**4 + t_n**2*x2
-    k6 = 1/(tau_0*v0)
-    k7 = t_n**(-3.0)
-    return k7*t*(k6*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(k4*t + k5 + t**2*x2) + 12*(k0 + t)**2*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))
+    x0 = -t_n
+    x1 = t_n**(-3.0)
+    k1 = 12*tau_0*v0
+    k2 = g*t_n**4
+    k3 = x1/(tau_0*v0)
+    k5 = 12*x1
+    return np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*(t + x0)**2 + k2),k5*t*(t + x0)**2], default=np.nan)
 
 
 def optimal_coefficient_from_weight_a4(t, t_n):
@@ -1130,15 +1296,10 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    x0 = -tau_0
-    x1 = tau_0*v0
-    x2 = 60*x1
-    x3 = 180*x1
-    k0 = -t_n
-    k4 = -t_n*x3
-    k5 = -t_n**3*x2
-    k6 = t_n**2*x3
-    k7 = -g*t_n**6
-    k8 = 1/(tau_0*v0)
-    k9 = -1/t_n**5
-    return k9*t*(k8*(1 - (np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))*(k4*t**3 + k5*t + k6*t**2 + k7 + t**4*x2) + 60*t*(k0 + t)**3*(np.select([np.less_equal(t + x0, 0),True], [0,1], default=np.nan)))
+    x0 = -t_n
+    x1 = t_n**(-5.0)
+    k1 = -60*tau_0*v0
+    k2 = g*t_n**6
+    k3 = x1/(tau_0*v0)
+    k5 = -60*x1
+    return np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*t*(t + x0)**3 + k2),k5*t**2*(t + x0)**3], default=np.nan)

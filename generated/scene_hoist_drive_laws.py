@@ -49,6 +49,19 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _two_sum(a, b):
+    """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
+    s = a + b
+    v = s - a
+    return s, (a - (s - v)) + (b - v)
+
+
+def _quick_two_sum(a, b):
+    """a + b as s + e exactly, for |a| >= |b| (Dekker)."""
+    s = a + b
+    return s, b - (s - a)
+
+
 def _two_product(a, b):
     """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
     p = a * b
@@ -60,74 +73,113 @@ def _two_product(a, b):
     return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
 
 
-def _phase(t, k):
-    """t*k for a double t and a double-double k, as (hi, lo)."""
-    hi, lo = _two_product(t, k[0])
-    return hi, lo + t * k[1]
-
-
-def _sin_phase(t, k):
-    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.sin(hi) + np.cos(hi) * lo
-
-
-def _cos_phase(t, k):
-    """cos(k*t), k a double-double: accurate where cos is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.cos(hi) - np.sin(hi) * lo
-
-
-def _taylor_tail(x, n, odd):
-    """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
-    x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
-    of the first: as many terms as the largest |x| needs, at most 60."""
-    x2 = -x * x
-    t = np.ones_like(x) if odd == 0 else x.copy()
-    for k in range(n):  # the first term, (-1)**n x**(2n+odd)/(2n+odd)!
-        m = 2 * k + odd
-        t *= x2
-        t /= (m + 1) * (m + 2)
-    reach, bound = float(np.max(-x2, initial=0.0)), 1.0
-    total = np.zeros_like(x)
-    for k in range(n, n + 60):
-        total += t
-        m = 2 * k + odd
-        t *= x2
-        t /= (m + 1) * (m + 2)
-        bound *= reach / ((m + 1) * (m + 2))  # >= |next term / first| at every x
-        if bound < 1e-17:
-            break
-    return total
-
-
-def _taylor_remainder(x, n, odd):
-    """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
-    term x**(2n-2+odd): by the series where the direct difference cancels."""
-    x = np.asarray(x, dtype=float)
-    small = np.abs(x) < 2.0 * n + 2.0
-    if small.all():  # no mask, no direct difference
-        return _taylor_tail(x, n, odd)
-    direct = np.cos(x) if odd == 0 else np.sin(x)
-    term = np.ones_like(x) if odd == 0 else x.copy()
-    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
-        direct = direct - term
-        m = 2 * k + odd
-        term = term * (-x * x) / ((m + 1) * (m + 2))
+def _taylor_where(values, small, z, power, step, coeffs):
+    """``values`` with the entries where ``small`` replaced by
+    z**power * sum_k coeffs[k] * z**(step*k) (Horner): an entire function by
+    its Taylor series where its closed form cancels."""
+    values = np.array(values, dtype=float)
     if np.any(small):
-        direct = np.array(direct, dtype=float)
-        direct[small] = _taylor_tail(x[small], n, odd)
-    return direct
+        zs = np.asarray(z, dtype=float)[small]
+        zz = zs * zs if step == 2 else zs
+        total = np.full_like(zs, coeffs[-1])
+        for c in coeffs[-2::-1]:
+            total = total * zz + c
+        values[small] = total * zs ** power
+    return values
 
 
-def _cos_remainder(x, n):
-    """cos(x) - sum_{k<n} (-1)**k x**(2k)/(2k)!, accurate at small |x|."""
-    return _taylor_remainder(x, n, 0)
+def _exact_phase(k, t, c=0.0):
+    """k*(t - c) as a pair (hi, lo) with hi + lo correct to ~2**-104
+    relative: t - c by TwoSum, the product by TwoProduct. A phase at long
+    times or just after a switch, where one rounding is a large error of a
+    sine near its zeros."""
+    s, e = _two_sum(t, -c)
+    p, pe = _two_product(k, s)
+    return _quick_two_sum(p, pe + k * e)
 
 
-def _sin_remainder(x, n):
-    """sin(x) - sum_{k<n} (-1)**k x**(2k+1)/(2k+1)!, accurate at small |x|."""
-    return _taylor_remainder(x, n, 1)
+def _pair(z):
+    """A phase as (hi, lo): a pair from _exact_phase, or a double."""
+    return z if isinstance(z, tuple) else (z, 0.0 * np.asarray(z))
+
+
+def _sin_pair(z, q):
+    """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
+    hi, lo = _pair(z)
+    a = q * hi
+    return np.sin(a) + np.cos(a) * (q * lo)
+
+
+def _sincos_pair(z, q):
+    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once."""
+    hi, lo = _pair(z)
+    a, d = q * hi, q * lo
+    s, c = np.sin(a), np.cos(a)
+    return s + c * d, c - s * d
+
+
+def _wave(b, c, x):
+    """b*cos(x) + c*sin(x) for a phase pair x, the two products summed with
+    one rounding (TwoProduct): the wave is accurate near its zeros."""
+    s, co = _sincos_pair(x, 1.0)
+    p, p_err = _two_product(b, co)
+    q, q_err = _two_product(c, s)
+    return (p + q) + (p_err + q_err)
+
+
+def _entire_1(z):
+    """z - sin(z):
+    entire, ~z**3 at 0; its Taylor series where |z| < 2.378414230005442.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 2.378414230005442
+    z_ = np.where(small, 2.378414230005442, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 1.0)
+    return _taylor_where(-s0 + z_, small, z, 3, 2,
+                         (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18, -1.9572941063391263e-20, 3.868170170630684e-23, -6.446950284384474e-26,))
+
+
+def _entire_2(z):
+    """-z/25 + 2*sin(z/2)**2 + sin(z)/25:
+    entire, ~z**2 at 0; its Taylor series where |z| < 0.026278012976678578.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 0.026278012976678578
+    z_ = np.where(small, 0.026278012976678578, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 0.5)
+    s1, c1 = _sincos_pair(w, 1.0)
+    return _taylor_where(2*s0**2 + (1/25)*s1 - 1/25*z_, small, z, 2, 1,
+                         (0.5, -0.006666666666666667, -0.041666666666666664, 0.0003333333333333333, 0.001388888888888889, -7.936507936507936e-06, -2.48015873015873e-05, 1.1022927689594356e-07,))
+
+
+def _entire_3(z):
+    """z**3/100 - z**2/2 + 619*z/100 + 2*sin(z/2)**2 - 619*sin(z)/100:
+    entire, ~z**3 at 0; its Taylor series where |z| < 0.1767766952966369.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 0.1767766952966369
+    z_ = np.where(small, 0.1767766952966369, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 0.5)
+    s1, c1 = _sincos_pair(w, 1.0)
+    return _taylor_where(2*s0**2 - 619/100*s1 + (1/100)*z_**3 - 1/2*z_**2 + (619/100)*z_, small, z, 3, 1,
+                         (1.0416666666666667, -0.041666666666666664, -0.051583333333333335, 0.001388888888888889, 0.0012281746031746032, -2.48015873015873e-05, -1.7057980599647265e-05, 2.755731922398589e-07, 1.5507255090588425e-07, -2.08767569878681e-09, -9.94054813499258e-10,))
+
+
+def _entire_4(z):
+    """z**5/29450 - 3*z**4/1178 + 371*z**3/5890 - z**2/2 - 1113*z/2945 + 2*sin(z/2)**2 + 1113*sin(z)/2945:
+    entire, ~z**4 at 0; its Taylor series where |z| < 0.125.
+    z is a phase: a pair (hi, lo) or a double."""
+    z, z_lo = _pair(z)
+    small = np.abs(z) < 0.125
+    z_ = np.where(small, 0.125, z)
+    w = (z_, np.where(small, 0.0, z_lo))
+    s0, c0 = _sincos_pair(w, 0.5)
+    s1, c1 = _sincos_pair(w, 1.0)
+    return _taylor_where(2*s0**2 + (1113/2945)*s1 + (1/29450)*z_**5 - 3/1178*z_**4 + (371/5890)*z_**3 - 1/2*z_**2 - 1113/2945*z_, small, z, 4, 1,
+                         (-0.04421335597057159, 0.0031833616298811546, 0.001388888888888889, -7.498585172608941e-05, -2.48015873015873e-05, 1.041470162862353e-06, 2.755731922398589e-07, -9.467910571475936e-09, -2.08767569878681e-09, 6.069173443253806e-11,))
 
 
 def dynamic_coefficient_pickup_a1(t):
@@ -144,14 +196,10 @@ def dynamic_coefficient_pickup_a1(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (12.5, 0.0)
-    q1 = (25.0, 0.0)
-    x0 = (np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [0,1], default=np.nan))
-    x1 = _sin_phase(t, q0)**2
-    x2 = 25*t
-    x3 = _sin_remainder(x2, 1)
-    x4 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    return (3108913097059732764796651569152/100703913039958856128874132496575)*x0*x3 - 0.0870571492761878*x0*np.sin((25/2)*t - 17672124937801825/9007199254740992)**2 + 0.2858106195874641*x0 - 351843720888320/5698460903507231*x1*x4 + 2*x1 - 3108913097059732764796651569152/100703913039958856128874132496575*x3 + (175921860444160/5698460903507231)*x4*np.cos(x2 - 25) - 175921860444160/5698460903507231*x4*_cos_phase(t, q1)
+    x0 = _exact_phase(25, t)
+    x1 = _sin_pair(x0, 0.5)**2
+    x2 = _exact_phase(25, t, 706884997512073/2251799813685248)
+    return (11045078086126142/5698460903507231)*x1 + np.select([np.less_equal(t, 1),True], [(351843720888320/5698460903507231)*x1,_wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x2, 0.5)**2 + 0.0306871573751505*_sin_pair(x2, 1.0) + 0.21141077704121883], default=np.nan)
 
 
 def dynamic_coefficient_pickup_a2(t):
@@ -168,15 +216,9 @@ def dynamic_coefficient_pickup_a2(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (12.5, 0.0)
-    q1 = (25.0, 0.0)
-    x0 = (np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [0,1], default=np.nan))
-    x1 = _sin_phase(t, q0)**2
-    x2 = 25*t
-    x3 = _sin_remainder(x2, 1)
-    x4 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    x5 = (35184372088832/28492304517536155)*x4
-    return (3108913097059732764796651569152/100703913039958856128874132496575)*x0*x3 - 0.0870571492761878*x0*np.sin((25/2)*t - 17672124937801825/9007199254740992)**2 + 0.2858106195874641*x0 - 351843720888320/5698460903507231*x1*x4 + 2*x1 - x3*x5 - 2984556573177343469685909225472/100703913039958856128874132496575*x3 - 175921860444160/5698460903507231*x4*_cos_phase(t, q1) + (35184372088832/28492304517536155)*x4*_sin_phase(t, q1) - x5*np.sin(x2 - 25)
+    x0 = _exact_phase(25, t)
+    x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
+    return np.select([np.less_equal(t, 1),True], [(175921860444160/5698460903507231)*_entire_2(x0),_wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x1, 0.5)**2 + 0.0306871573751505*_sin_pair(x1, 1.0) + 0.21141077704121883], default=np.nan) + (11045078086126142/5698460903507231)*_sin_pair(x0, 0.5)**2
 
 
 def dynamic_coefficient_pickup_a3(t):
@@ -193,16 +235,9 @@ def dynamic_coefficient_pickup_a3(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (12.5, 0.0)
-    q1 = (25.0, 0.0)
-    x0 = (np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [0,1], default=np.nan))
-    x1 = 25*t
-    x2 = _cos_remainder(x1, 2)
-    x3 = _sin_remainder(x1, 1)
-    x4 = _sin_remainder(x1, 2)
-    x5 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    x6 = x1 - 25
-    return (562949953421312/17672124937801825)*x0*x3 + 0.04491518825424113*x0*np.cos(x1 - 17672124937801825/4503599627370496) + (1/4)*x0 + (1688849860263936/690317380382883875)*x2*x5 - 1688849860263936/690317380382883875*x2 + (422212465065984/27612695215315355)*x3*x5 - 4601191383648404306125559693312/97594999942899123751105573904575*x3 - 2533274790395904/17257934509572096875*x4*x5 + (2533274790395904/17257934509572096875)*x4 - 2533274790395904/17257934509572096875*x5*np.sin(x6) - 844424930131968/690317380382883875*x5*np.cos(x6) - 1688849860263936/690317380382883875*x5*_cos_phase(t, q1) - 261349515875844096/17257934509572096875*x5*_sin_phase(t, q1) + 2*_sin_phase(t, q0)**2
+    x0 = _exact_phase(25, t)
+    x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
+    return np.select([np.less_equal(t, 1),True], [(1688849860263936/690317380382883875)*_entire_3(x0),_wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
 
 
 def dynamic_coefficient_pickup_a4(t):
@@ -219,18 +254,9 @@ def dynamic_coefficient_pickup_a4(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (12.5, 0.0)
-    q1 = (25.0, 0.0)
-    x0 = (np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [0,1], default=np.nan))
-    x1 = 25*t
-    x2 = (844424930131968/138063476076576775)*_cos_remainder(x1, 2)
-    x3 = (30399297484750848/86289672547860484375)*_cos_remainder(x1, 3)
-    x4 = (562949953421312/17672124937801825)*_sin_remainder(x1, 1)
-    x5 = (7599824371187712/3451586901914419375)*_sin_remainder(x1, 2)
-    x6 = (10133099161583616/431448362739302421875)*_sin_remainder(x1, 3)
-    x7 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    x8 = x1 - 25
-    return x0*x4 + 0.04491518825424113*x0*np.cos(x1 - 17672124937801825/4503599627370496) + (1/4)*x0 - x2*x7 + x2 + x3*x7 - x3 - x4 + x5*x7 - x5 - x6*x7 + x6 + (306526249637904384/431448362739302421875)*x7*np.sin(x8) - 20266198323167232/86289672547860484375*x7*np.cos(x8) + (497366283847729152/86289672547860484375)*x7*_cos_phase(t, q1) - 939844947236880384/431448362739302421875*x7*_sin_phase(t, q1) + 2*_sin_phase(t, q0)**2
+    x0 = _exact_phase(25, t)
+    x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
+    return np.select([np.less_equal(t, 1),True], [-497366283847729152/86289672547860484375*_entire_4(x0),_wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
 
 
 def dynamic_coefficient_from_weight_a1(t):
@@ -247,9 +273,7 @@ def dynamic_coefficient_from_weight_a1(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (12.5, 0.0)
-    x0 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    return -0.0032963169657654417*x0*np.sin(25*t - 25/2) + (281474976710656/5663276531418399)*(1 - x0)*_sin_phase(t, q0)**2 + 5522539043063071/5663276531418399
+    return np.select([np.less_equal(t, 1),True], [(281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2,_wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
 
 
 def dynamic_coefficient_from_weight_a2(t):
@@ -266,12 +290,7 @@ def dynamic_coefficient_from_weight_a2(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (12.5, 0.0)
-    x0 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    x1 = 25*t
-    x2 = x1 - 25/2
-    x3 = 1 - x0
-    return -140737488355328/141581913285459975*x0*(0.13264379470240137*np.cos(x2) + 25*np.cos(x1 - 25)) - 0.0032963169657654417*x0*np.sin(x2) + (281474976710656/5663276531418399)*x3*_sin_phase(t, q0)**2 + (140737488355328/141581913285459975)*x3*_sin_remainder(x1, 1) + 5522539043063071/5663276531418399
+    return np.select([np.less_equal(t, 1),True], [(140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)),_wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
 
 
 def dynamic_coefficient_from_weight_a3(t):
@@ -288,14 +307,7 @@ def dynamic_coefficient_from_weight_a3(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (25.0, 0.0)
-    x0 = 25*t
-    x1 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    x2 = 1 - x1
-    x3 = x0 - 25
-    x4 = np.cos(x3)
-    x5 = np.sin(x3)
-    return (1688849860263936/138063476076576775)*x1*(25*x4 + 0.13264379470240137*np.cos(x0 - 25/2)) - 3377699720527872/3451586901914419375*x1*(623*x4 + 50*x5 + 2*_cos_phase(t, q0)) + (1688849860263936/86289672547860484375)*x1*(15475*x4 + 1869*x5 + 6*_sin_phase(t, q0)) - 6755399441055744/3451586901914419375*x2*_cos_remainder(x0, 2) - 1688849860263936/138063476076576775*x2*_sin_remainder(x0, 1) + (10133099161583616/86289672547860484375)*x2*_sin_remainder(x0, 2) + 1
+    return np.select([np.less_equal(t, 1),True], [(6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)),_wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))], default=np.nan) + 1
 
 
 def dynamic_coefficient_from_weight_a4(t):
@@ -312,16 +324,7 @@ def dynamic_coefficient_from_weight_a4(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (25.0, 0.0)
-    x0 = 25*t
-    x1 = (np.select([np.less_equal(t, 1),True], [0,1], default=np.nan))
-    x2 = 1 - x1
-    x3 = _sin_phase(t, q0)
-    x4 = x0 - 25
-    x5 = np.sin(x4)
-    x6 = np.cos(x4)
-    x7 = _cos_phase(t, q0)
-    return -5066549580791808/17257934509572096875*x1*(6*x3 + 1869*x5 + 15475*x6) + (1688849860263936/2157241813696512109375)*x1*(24*x3 - 383149*x5 - 1891225*x6) - 5066549580791808/431448362739302421875*x1*(-61900*x5 - 383149*x6 + 24*x7) + (1688849860263936/690317380382883875)*x1*(50*x5 + 623*x6 + 2*x7) + (3377699720527872/690317380382883875)*x2*_cos_remainder(x0, 2) - 121597189939003392/431448362739302421875*x2*_cos_remainder(x0, 3) - 30399297484750848/17257934509572096875*x2*_sin_remainder(x0, 2) + (40532396646334464/2157241813696512109375)*x2*_sin_remainder(x0, 3) + 1
+    return np.select([np.less_equal(t, 1),True], [-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)),_wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))], default=np.nan) + 1
 
 
 def optimal_coefficient_from_weight_a1(t):

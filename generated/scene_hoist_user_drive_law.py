@@ -150,7 +150,7 @@ def drive_speed(t):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     x0 = t**2
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,2.5*t - 1.0*x0 - 1.0625,1/2], default=np.nan)
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,(5/2)*t - x0 - 17/16,1/2], default=np.nan)
 
 
 def relative_forcing(t):

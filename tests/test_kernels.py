@@ -141,3 +141,76 @@ def test_compensated_cumsum_against_exact_prefix_sums(kind):
         plain = max(float(abs(Fraction(g) - e) / max(abs(e), Fraction(1, 10**30)))
                     for g, e in zip(part(s), exact))
         assert plain > 1e-12                  # the case is hard for np.cumsum
+
+
+def test_taylor_where_replaces_only_the_small_entries():
+    # sin(z)/z by its series below 0.5: the closed form elsewhere is kept as given.
+    coeffs = tuple(float((-1) ** k / mpmath.factorial(2 * k + 1)) for k in range(12))
+    z = np.concatenate([np.logspace(-12, 0.3, 60), [0.0]])
+    small = np.abs(z) < 0.5
+    closed = np.where(small, -7.0, np.sin(z) / np.where(small, 1.0, z))
+    got = k._taylor_where(closed, small, z, 0, 2, coeffs)
+    assert np.all(got[~small] == closed[~small])
+    with mpmath.workdps(40):
+        for zi, g in zip(z, got):
+            exact = mpmath.sinc(mpmath.mpf(float(zi)))
+            assert abs(g - exact) <= 2.5e-16 * abs(exact)
+    scalar = k._taylor_where(np.sin(0.25) / 0.25, np.abs(0.25) < 0.5, 0.25, 0, 2, coeffs)
+    assert scalar.shape == () and abs(float(scalar) - np.sin(0.25) / 0.25) < 3e-16
+
+
+@pytest.mark.parametrize("scale", [1e-3, 1.0, 1e3, 1e6])
+def test_exact_phase_is_the_product_to_double_double(scale):
+    kk = rng.uniform(0.5, 60.0, 200)
+    t = rng.uniform(0.0, scale, 200)
+    c = t * rng.uniform(0.0, 2.0, 200)              # t − c from cancelling to large
+    hi, lo = k._exact_phase(kk, t, c)
+    for ki, ti, ci, h, l in zip(kk, t, c, hi, lo):
+        exact = Fraction(ki) * (Fraction(ti) - Fraction(ci))
+        assert abs(Fraction(h) + Fraction(l) - exact) <= 2.0 ** -100 * abs(Fraction(ki) * Fraction(ti))
+
+
+@pytest.mark.parametrize("fn, exact_fn", [(k._sin_pair, mpmath.sin), (k._cos_pair, mpmath.cos)])
+def test_sine_of_a_phase_pair_near_its_zeros(fn, exact_fn):
+    # Phases up to 1e3 within 1e-12 of the zeros of sin and cos: a rounded
+    # phase would cost up to ~1e-1 relative error there, the pair a few ulp.
+    with mpmath.workdps(50):
+        for j in range(1, 300, 7):
+            zero = mpmath.pi * j + (0 if fn is k._sin_pair else mpmath.pi / 2)
+            for off in (mpmath.mpf("1e-12"), mpmath.mpf("-3e-9")):
+                z = zero + off
+                hi = float(z)
+                pair = (hi, float(z - hi))
+                for q in (1.0, 0.5):
+                    got = fn(pair, q)
+                    exact = exact_fn(q * z)
+                    assert abs(got - exact) <= 4e-16 * abs(exact) + 1e-31 * abs(z)
+
+
+def _mp_wave(level, b, c, x):
+    return mpmath.mpf(level) + mpmath.mpf(b) * mpmath.cos(x) + mpmath.mpf(c) * mpmath.sin(x)
+
+
+@pytest.mark.parametrize("depth", [1e-1, 1e-6, 1e-12])
+def test_offset_wave_near_its_minimum(depth):
+    # level + b cos x + c sin x with level = (1 + depth)·hypot(b, c): the wave
+    # swings down to depth·level. At the bottom the naive sum cancels ~1/depth;
+    # the kernel keeps a few ulp plus what the rounding of the phase offset
+    # atan2(c, b) costs through the slope r·sin(x − d) (the x-conditioning).
+    with mpmath.workdps(60):
+        for _ in range(40):
+            b, c = rng.uniform(-1, 1, 2)
+            r = mpmath.sqrt(mpmath.mpf(b) ** 2 + mpmath.mpf(c) ** 2)
+            level = float(r * (1 + mpmath.mpf(depth)))
+            gap = float(mpmath.mpf(level) ** 2 - r ** 2)
+            bottom = mpmath.atan2(c, b) + mpmath.pi          # where cos(x − d) = −1
+            for turn in (0, 7, 300):
+                for off in (mpmath.mpf(0), mpmath.mpf("1e-5"), mpmath.mpf("0.3"), mpmath.mpf(2)):
+                    x = bottom + 2 * mpmath.pi * turn + off
+                    hi = float(x)
+                    got = k._offset_wave(level, gap, b, c, (hi, float(x - hi)))
+                    exact = _mp_wave(level, b, c, x)
+                    slope = 4 * 2.0 ** -53 * r * abs(mpmath.sin(off)) * (abs(x) + 4)
+                    assert abs(got - exact) <= 8e-16 * abs(exact) + slope
+                    got = k._offset_wave(-level, gap, -b, -c, (hi, float(x - hi)))
+                    assert abs(got + exact) <= 8e-16 * abs(exact) + slope
