@@ -74,7 +74,10 @@ class ODESystem:
 
     The bench integrates them with SciPy as the alternative to the generated
     closed forms; ``quantities`` maps an output name to the expression, in the
-    coordinates and their first derivatives, that the output computes.
+    coordinates and their first derivatives, that the output computes (a name
+    that is no output marks a response without a closed form). ``inputs``
+    gives the time law of each input symbol of the equations (a load W = W(t),
+    say); whoever integrates substitutes it.
     """
 
     name: str
@@ -82,6 +85,7 @@ class ODESystem:
     coordinates: tuple[sp.Expr, ...]
     initial: tuple[tuple[sp.Expr, sp.Expr], ...]
     quantities: tuple[tuple[str, sp.Expr], ...]
+    inputs: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
 
 
 @dataclass(frozen=True)
@@ -124,6 +128,9 @@ class Derivation:
         The equations of motion in solver-ready form, for the bench.
     switches : dict of str to Switch
         Parts of the model a scene may turn off.
+    bench_parameters : dict of Symbol to Expr
+        Values the bench gives to arguments no scene of the derivation sets:
+        numbers (SI) or expressions in the scene parameters.
     """
 
     id: str
@@ -137,6 +144,7 @@ class Derivation:
     outputs: list[Output] = field(default_factory=list)
     ode_systems: list[ODESystem] = field(default_factory=list)
     switches: dict[str, Switch] = field(default_factory=dict)
+    bench_parameters: dict[sp.Symbol, sp.Expr] = field(default_factory=dict)
     _clock: float = field(default_factory=time.perf_counter, repr=False, compare=False)
 
     def step(self, label: str) -> Step:

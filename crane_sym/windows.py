@@ -409,7 +409,7 @@ def _stable_piece(piece: sp.Expr, t: sp.Symbol, anchor: sp.Expr,
         alpha = parts.pop(sp.S.One, sp.Integer(0))
         if parts or beta.has(x) or gamma.has(x) or alpha.has(x):
             return piece
-        cos_x, sin_x = phase_cos(phase, 1), phase_sin(phase, 1)
+        sin_x = phase_sin(phase, 1)
         if alpha == 0:
             return wave(_coefficient(beta), _coefficient(gamma), phase)
         offset = _offset(alpha, beta, gamma, phase)

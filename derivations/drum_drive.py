@@ -27,7 +27,7 @@ from sympy.physics.units import (acceleration, energy, force, length, mass, time
                                  velocity)
 from sympy.physics.units.dimensions import Dimension
 
-from crane_sym.derivation import Derivation, Output, Switch
+from crane_sym.derivation import Derivation, ODESystem, Output, Switch
 from crane_sym.lagrange import lagrange_equations
 from crane_sym.modal import eigenvalues_2x2, relative_dynamic_matrix
 from crane_sym.odes import solve_constant_coefficient
@@ -293,6 +293,8 @@ def build() -> Derivation:
     d.switches["damping"] = Switch(
         "damping", "the Rayleigh dissipation Φ of (11)",
         tuple((nu, sp.S.Zero) for nu in DAMPERS))
+    d.ode_systems.append(_load_response(d))
+    d.bench_parameters.update(BENCH_PARAMETERS)
     return d
 
 
@@ -591,6 +593,30 @@ def _simulation_outputs(d: Derivation) -> list[Output]:
         Output("generalized_forces", F, ordered(F), ("(10)", "(12)"),
                "Generalized forces F(W) of (12).", "SI"),
     ]
+
+
+# --- Bench -------------------------------------------------------------------
+#: Values the bench gives to arguments no scene sets [SI]: the drum radius from
+#: the scene's D, and one state and load of the order the example reaches
+#: (the grid of time-free functions perturbs each by a factor 1/2 ... 2).
+BENCH_PARAMETERS = {r: D / 2, W: sp.Float(1.0e3),
+                    **dict(zip(STATE, map(sp.Float, (10.0, 10.0, 10.0, 1e-3, 2.5,
+                                                     16.0, 16.0, 16.0, 1e-2, 4.0))))}
+
+
+def _load_response(d: Derivation) -> ODESystem:
+    """(12) from rest under W = F'(t) of (21): the example's response, which has
+    no closed form; the bench integrates it with the generated state derivative
+    and Jacobian against a modal mpmath solution."""
+    rest = tuple((c, 0) for c in COORDS) + tuple((c.diff(t), 0) for c in COORDS)
+    return ODESystem(
+        "(12) from rest, W = F'(t) of (21)",
+        tuple(d.step(f"(12), {n}").statement for n in ("φ1", "φ2", "φ3", "y", "z")),
+        COORDS, rest,
+        (("drum_shaft_displacement", y), ("run_speed", z.diff(t)),
+         ("tight_branch_force", F0 + C_t * model_energies()["e1"])),
+        ((W, d.step("(21)").statement.rhs),))
+
 
 # --- Scenes ------------------------------------------------------------------
 #: Simulation-only values a scene gives in [options] (not arguments of any output).

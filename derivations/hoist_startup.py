@@ -295,6 +295,8 @@ def build() -> Derivation:
     from crane_sym.derivations.hoist_startup_published import PUBLISHED
     d.published.extend(PUBLISHED)
     d.outputs.extend(_outputs(d, loads))
+    from crane_sym.derivations.hoist_startup_odes import attach
+    attach(d)   # ODE systems and bench parameters for `crane-sym bench`
     return d
 
 
