@@ -344,14 +344,23 @@ DEFAULT_RULES: tuple[Rule, ...] = (
 )
 
 
-def rules_for(varying: set[sp.Symbol], scales: frozenset = frozenset()) -> tuple[Rule, ...]:
+def rules_for(varying: set[sp.Symbol], scales: frozenset = frozenset(),
+              exact_phases: bool = False) -> tuple[Rule, ...]:
     """The rules for a function whose array arguments are ``varying``;
-    ``scales`` are its other arguments of the same dimension."""
+    ``scales`` are its other arguments of the same dimension.
+
+    A phase ``k·t`` is rounded once, which keeps ``sin(k·t)`` within twice its
+    condition bound (the error the rounding of ``t`` alone allows) at any
+    ``t``. ``exact_phases=True`` forms it in double-double instead
+    (:func:`accurate_phase`): about one ulp even near the zeros of the sine at
+    long times, at the price of a second transcendental call and a dozen array
+    operations (5-8 times the cost of the plain form)."""
     from .windows import window_pieces
     return ((window_pieces(varying), factor_polynomials(varying, scales),
              taylor_remainder(varying))
             + DEFAULT_RULES[:2]
-            + (trig_difference_to_product,) + DEFAULT_RULES[2:] + (accurate_phase(varying),))
+            + (trig_difference_to_product,) + DEFAULT_RULES[2:]
+            + ((accurate_phase(varying),) if exact_phases else ()))
 
 
 def optimize(expr: sp.Expr, rules: Sequence[Rule] = DEFAULT_RULES) -> sp.Expr:

@@ -52,66 +52,6 @@ def _checked(name, value, sign, what):
     return array
 
 
-def _two_sum(a, b):
-    """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
-    s = a + b
-    v = s - a
-    return s, (a - (s - v)) + (b - v)
-
-
-def _quick_two_sum(a, b):
-    """a + b as s + e exactly, for |a| >= |b| (Dekker)."""
-    s = a + b
-    return s, b - (s - a)
-
-
-def _two_product(a, b):
-    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
-    p = a * b
-    a_hi = a * 134217729.0
-    a_hi = a_hi - (a_hi - a)
-    b_hi = b * 134217729.0
-    b_hi = b_hi - (b_hi - b)
-    a_lo, b_lo = a - a_hi, b - b_hi
-    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
-
-
-def _dd(x):
-    """A double as a double-double."""
-    return x, 0.0 * x
-
-
-def _dd_add(x, y):
-    """Sum of two double-doubles."""
-    s, e = _two_sum(x[0], y[0])
-    return _quick_two_sum(s, e + (x[1] + y[1]))
-
-
-def _dd_mul(x, y):
-    """Product of two double-doubles."""
-    p, e = _two_product(x[0], y[0])
-    return _quick_two_sum(p, e + (x[0] * y[1] + x[1] * y[0]))
-
-
-def _dd_div(x, y):
-    """Quotient of two double-doubles."""
-    q1 = x[0] / y[0]
-    r = _dd_add(x, _dd_mul((-q1, 0.0 * q1), y))
-    return _quick_two_sum(q1, r[0] / y[0])
-
-
-def _phase(t, k):
-    """t*k for a double t and a double-double k, as (hi, lo)."""
-    hi, lo = _two_product(t, k[0])
-    return hi, lo + t * k[1]
-
-
-def _sin_phase(t, k):
-    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.sin(hi) + np.cos(hi) * lo
-
-
 def _matrix(shape, elements):
     """Row-major ``elements`` as an array of ``shape`` followed by the
     broadcast shape of the elements (a matrix per input point)."""
@@ -417,14 +357,13 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
     K3   = _checked('K3', K3, 'positive', 'constant K_3 of (21) (pretension at the load), N')
     K4   = _checked('K4', K4, 'positive', 'constant K_4 of (21) (pretension at the load), N')
     t_3  = _checked('t_3', t_3, 'positive', 'stop time t_3 of the transporter in (21), s')
-    q0 = _dd_div((3.141592653589793, 1.2246467991473532e-16), _dd(t_3))
-    x0 = _sin_phase(t, q0)
-    k0 = -K2
-    k1 = -K4
-    k2 = (1/4)*F1_t
-    k3 = (1/4)*F3_t
-    k4 = (1/4)*K1 + (1/4)*K3
-    return k2*x0 + k3*x0 + k4 - 1/4*abs(F2_t*x0 + k0) - 1/4*abs(F4_t*x0 + k1)
+    x0 = 3.141592653589793/t_3
+    k1 = -K2
+    k3 = -K4
+    k5 = (1/4)*F1_t
+    k7 = (1/4)*F3_t
+    k8 = (1/4)*K1 + (1/4)*K3
+    return k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3)
 
 
 def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r, M0, F0, W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10):

@@ -85,42 +85,6 @@ def _two_product(a, b):
     return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
 
 
-def _dd(x):
-    """A double as a double-double."""
-    return x, 0.0 * x
-
-
-def _dd_add(x, y):
-    """Sum of two double-doubles."""
-    s, e = _two_sum(x[0], y[0])
-    return _quick_two_sum(s, e + (x[1] + y[1]))
-
-
-def _dd_mul(x, y):
-    """Product of two double-doubles."""
-    p, e = _two_product(x[0], y[0])
-    return _quick_two_sum(p, e + (x[0] * y[1] + x[1] * y[0]))
-
-
-def _dd_div(x, y):
-    """Quotient of two double-doubles."""
-    q1 = x[0] / y[0]
-    r = _dd_add(x, _dd_mul((-q1, 0.0 * q1), y))
-    return _quick_two_sum(q1, r[0] / y[0])
-
-
-def _phase(t, k):
-    """t*k for a double t and a double-double k, as (hi, lo)."""
-    hi, lo = _two_product(t, k[0])
-    return hi, lo + t * k[1]
-
-
-def _sin_phase(t, k):
-    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.sin(hi) + np.cos(hi) * lo
-
-
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -545,8 +509,8 @@ def dynamic_coefficient_instant(t, Omega):
     """
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    q0 = _dd_div(_dd(Omega), (2.0, 0.0))
-    return 2*_sin_phase(t, q0)**2
+    k0 = (1/2)*Omega
+    return 2*np.sin(k0*t)**2
 
 
 def dynamic_coefficient_ramp(t, Omega, t_n):

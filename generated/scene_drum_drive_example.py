@@ -38,29 +38,6 @@ def _checked(name, value, sign, what):
     return array
 
 
-def _two_product(a, b):
-    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
-    p = a * b
-    a_hi = a * 134217729.0
-    a_hi = a_hi - (a_hi - a)
-    b_hi = b * 134217729.0
-    b_hi = b_hi - (b_hi - b)
-    a_lo, b_lo = a - a_hi, b - b_hi
-    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
-
-
-def _phase(t, k):
-    """t*k for a double t and a double-double k, as (hi, lo)."""
-    hi, lo = _two_product(t, k[0])
-    return hi, lo + t * k[1]
-
-
-def _sin_phase(t, k):
-    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.sin(hi) + np.cos(hi) * lo
-
-
 def pulsating_force(t):
     """Pulsating load F'(t) of (21), as printed. Specialized to scene 'drum_drive_example'. Eq (21).
 
@@ -75,6 +52,5 @@ def pulsating_force(t):
         [N], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (1.0471975511965979, -1.072081766451091e-16)
-    x0 = _sin_phase(t, q0)
+    x0 = np.sin(1.0471975511965979*t)
     return 450*x0 - 150*abs(3*x0 - 2) + 300

@@ -47,29 +47,6 @@ def _checked(name, value, sign, what):
     return array
 
 
-def _two_product(a, b):
-    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
-    p = a * b
-    a_hi = a * 134217729.0
-    a_hi = a_hi - (a_hi - a)
-    b_hi = b * 134217729.0
-    b_hi = b_hi - (b_hi - b)
-    a_lo, b_lo = a - a_hi, b - b_hi
-    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
-
-
-def _phase(t, k):
-    """t*k for a double t and a double-double k, as (hi, lo)."""
-    hi, lo = _two_product(t, k[0])
-    return hi, lo + t * k[1]
-
-
-def _sin_phase(t, k):
-    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.sin(hi) + np.cos(hi) * lo
-
-
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -204,10 +181,10 @@ def rope_stretch_rate(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    q0 = (12.5, 0.0)
-    x0 = 25*t
-    x1 = np.sin(x0 - 25/8)
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*_sin_phase(t, q0)**2,0.0005309405513391329*x1,0.0005309405513391329*x1 - 4/125*np.sin((25/2)*t - 25/2)**2,-7.042596949100774e-05*np.cos(x0 - 125/8)], default=np.nan)
+    x0 = (25/2)*t
+    x1 = 25*t
+    x2 = np.sin(x1 - 25/8)
+    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*np.sin(x0)**2,0.0005309405513391329*x2,0.0005309405513391329*x2 - 4/125*np.sin(x0 - 25/2)**2,-7.042596949100774e-05*np.cos(x1 - 125/8)], default=np.nan)
 
 
 def rope_force(t):

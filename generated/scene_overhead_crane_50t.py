@@ -40,29 +40,6 @@ def _checked(name, value, sign, what):
     return array
 
 
-def _two_product(a, b):
-    """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
-    p = a * b
-    a_hi = a * 134217729.0
-    a_hi = a_hi - (a_hi - a)
-    b_hi = b * 134217729.0
-    b_hi = b_hi - (b_hi - b)
-    a_lo, b_lo = a - a_hi, b - b_hi
-    return p, ((a_hi * b_hi - p) + a_hi * b_lo + a_lo * b_hi) + a_lo * b_lo
-
-
-def _phase(t, k):
-    """t*k for a double t and a double-double k, as (hi, lo)."""
-    hi, lo = _two_product(t, k[0])
-    return hi, lo + t * k[1]
-
-
-def _sin_phase(t, k):
-    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.sin(hi) + np.cos(hi) * lo
-
-
 def elastic_force(t):
     """Force F(t) in the elastic link. Specialized to scene 'overhead_crane_50t'. Eq (14).
 
@@ -77,8 +54,7 @@ def elastic_force(t):
         [N], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    q0 = (13.314380468978918, 2.0725079895853809e-16)
-    return (589000/13)*_sin_phase(t, q0)**2
+    return (589000/13)*np.sin(13.314380468978918*t)**2
 
 
 def velocity_m1(t):
@@ -95,8 +71,7 @@ def velocity_m1(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    q0 = (26.628760937957836, 4.1450159791707617e-16)
-    return -175/572*t - 0.1933473889602708*_sin_phase(t, q0) + 6004799503160661/4503599627370496
+    return -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
 
 
 def velocity_m2(t):
@@ -113,5 +88,4 @@ def velocity_m2(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    q0 = (26.628760937957836, 4.1450159791707617e-16)
-    return -175/572*t + 0.007733895558410831*_sin_phase(t, q0) + 6004799503160661/4503599627370496
+    return -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496

@@ -44,19 +44,6 @@ def _checked(name, value, sign, what):
     return array
 
 
-def _two_sum(a, b):
-    """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
-    s = a + b
-    v = s - a
-    return s, (a - (s - v)) + (b - v)
-
-
-def _quick_two_sum(a, b):
-    """a + b as s + e exactly, for |a| >= |b| (Dekker)."""
-    s = a + b
-    return s, b - (s - a)
-
-
 def _two_product(a, b):
     """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
     p = a * b
@@ -73,49 +60,6 @@ def _diff_of_products(a, b, c, d):
     p, p_err = _two_product(a, b)
     q, q_err = _two_product(c, d)
     return (p - q) + (p_err - q_err)
-
-
-def _dd(x):
-    """A double as a double-double."""
-    return x, 0.0 * x
-
-
-def _dd_add(x, y):
-    """Sum of two double-doubles."""
-    s, e = _two_sum(x[0], y[0])
-    return _quick_two_sum(s, e + (x[1] + y[1]))
-
-
-def _dd_mul(x, y):
-    """Product of two double-doubles."""
-    p, e = _two_product(x[0], y[0])
-    return _quick_two_sum(p, e + (x[0] * y[1] + x[1] * y[0]))
-
-
-def _dd_div(x, y):
-    """Quotient of two double-doubles."""
-    q1 = x[0] / y[0]
-    r = _dd_add(x, _dd_mul((-q1, 0.0 * q1), y))
-    return _quick_two_sum(q1, r[0] / y[0])
-
-
-def _dd_sqrt(x):
-    """Square root of a positive double-double."""
-    q = np.sqrt(x[0])
-    p, e = _two_product(q, q)
-    return _quick_two_sum(q, ((x[0] - p) - e + x[1]) / (2.0 * q))
-
-
-def _phase(t, k):
-    """t*k for a double t and a double-double k, as (hi, lo)."""
-    hi, lo = _two_product(t, k[0])
-    return hi, lo + t * k[1]
-
-
-def _sin_phase(t, k):
-    """sin(k*t), k a double-double: accurate where sin is near zero at large k*t."""
-    hi, lo = _phase(t, k)
-    return np.sin(hi) + np.cos(hi) * lo
 
 
 def natural_frequency(m1, m2, c):
@@ -170,9 +114,10 @@ def relative_displacement(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_mul((2.0, 0.0), _dd_sqrt(_dd(m1))), _dd_sqrt(_dd(m2))))
-    k0 = -2*_diff_of_products(W, m1, P_t, m2)/(c*(m1 + m2))
-    return k0*_sin_phase(t, q0)**2
+    x0 = m1 + m2
+    k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
+    k1 = -2*_diff_of_products(W, m1, P_t, m2)/(c*x0)
+    return k1*np.sin(k0*t)**2
 
 
 def elastic_force(t, m1, m2, c, P_t, W):
@@ -204,9 +149,10 @@ def elastic_force(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_mul((2.0, 0.0), _dd_sqrt(_dd(m1))), _dd_sqrt(_dd(m2))))
-    k0 = -2*_diff_of_products(W, m1, P_t, m2)/(m1 + m2)
-    return k0*_sin_phase(t, q0)**2
+    x0 = m1 + m2
+    k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
+    k1 = -2*_diff_of_products(W, m1, P_t, m2)/x0
+    return k1*np.sin(k0*t)**2
 
 
 def peak_elastic_force(m1, m2, P_t, W):
@@ -316,11 +262,14 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
-    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_sqrt(_dd(m1)), _dd_sqrt(_dd(m2))))
     x0 = m1 + m2
+    x1 = np.sqrt(c)
+    x2 = 1/np.sqrt(m1)
+    x3 = np.sqrt(m2)
     k0 = -(P_t + W)/x0
-    k1 = np.sqrt(m2)*_diff_of_products(W, m1, P_t, m2)/(np.sqrt(c)*np.sqrt(m1)*x0**(3/2))
-    return k0*t + k1*_sin_phase(t, q0) + v0
+    k1 = np.sqrt(x0)*x1*x2/x3
+    k2 = x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
+    return k0*t + k2*np.sin(k1*t) + v0
 
 
 def velocity_m2(t, m1, m2, c, P_t, W, v0):
@@ -355,8 +304,11 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
-    q0 = _dd_div(_dd_mul(_dd_sqrt(_dd(c)), _dd_sqrt(_dd_add(_dd(m1), _dd(m2)))), _dd_mul(_dd_sqrt(_dd(m1)), _dd_sqrt(_dd(m2))))
     x0 = m1 + m2
+    x1 = np.sqrt(c)
+    x2 = np.sqrt(m1)
+    x3 = 1/np.sqrt(m2)
     k0 = -(P_t + W)/x0
-    k1 = -np.sqrt(m1)*_diff_of_products(W, m1, P_t, m2)/(np.sqrt(c)*np.sqrt(m2)*x0**(3/2))
-    return k0*t + k1*_sin_phase(t, q0) + v0
+    k1 = np.sqrt(x0)*x1*x3/x2
+    k2 = -x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
+    return k0*t + k2*np.sin(k1*t) + v0

@@ -59,7 +59,9 @@ def test_every_generated_function_has_a_row_with_its_error(rows):
     d = registry.get("travel_braking")
     generated = {r.function: r for r in rows if r.method == "generated"}
     assert set(generated) == {o.name for o in d.outputs}
-    assert all(r.max_rel_error <= 2e-15 for r in generated.values())
+    # normwise: pointwise errors near the zeros of sin(p·t/2) are bounded by the
+    # conditioning instead (test_travel_braking, hard cases)
+    assert all(r.max_error_over_peak <= 2e-15 for r in generated.values())
     assert all(r.ratio_to_floor > 0 for r in generated.values())
     plain = {r.function for r in rows if r.kind == bench.LAMBDIFY}
     assert plain == set(generated)

@@ -29,9 +29,13 @@ def test_scene_module_matches_general_module(scene, tmp_path):
     p = scene.parameters
     t = np.linspace(0.0, 3.0, 2001)
     F = general.elastic_force(t, p["m1"], p["m2"], p["c"], p["P_t"], p["W"])
-    assert np.max(np.abs(special.elastic_force(t) - F)) <= 1e-15 * np.max(np.abs(F))
+    # The scene folds the phase rate exactly, the general module rounds it from
+    # m1, m2, c (a few ulp): the two agree to the phase's conditioning.
+    phase = general.natural_frequency(p["m1"], p["m2"], p["c"]) * t[-1] / 2
+    assert np.max(np.abs(special.elastic_force(t) - F)) <= \
+        8 * 2.0**-53 * (1 + phase) * np.max(np.abs(F))
     v1 = general.velocity_m1(t, p["m1"], p["m2"], p["c"], p["P_t"], p["W"], p["v0"])
-    assert np.max(np.abs(special.velocity_m1(t) - v1)) <= 4e-16 * p["v0"]
+    assert np.max(np.abs(special.velocity_m1(t) - v1)) <= 8 * 2.0**-53 * (1 + phase) * p["v0"]
     with pytest.raises(ValueError, match="t must be >= 0"):
         special.elastic_force(-1.0)
 
