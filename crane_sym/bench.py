@@ -251,15 +251,22 @@ def throughput(d: Derivation, values: dict[str, float], duration: float,
 def scene_comparison(d: Derivation, scene, points: int = 10**6) -> list[str]:
     """Size (SymPy operation count) and speed of the scene-specialized module
     against the general one, for each output the scene asks for."""
-    from .specialize import module_name, operation_count, specialize
+    from .specialize import module_name, operation_count, specialize, switched_off
     general = importlib.import_module(f"crane_sym.generated.{d.id}")
     special = importlib.import_module(f"crane_sym.generated.{module_name(scene)[:-3]}")
+    rng = np.random.default_rng(4)
+    values = {**scene.parameters,
+              **{str(k): float(v) for k, v in switched_off(d, scene).items()}}
     t = np.linspace(0.0, scene.options["duration"], points)
     lines = []
     for out, small in zip([d.output(n) for n in scene.outputs], specialize(d, scene)):
-        args = [t if str(a) == "t" else scene.parameters[str(a)] for a in out.args]
+        # what the scene leaves as arguments (time, inputs, state): sampled arrays
+        free = {str(a): t if str(a) == "t" else rng.uniform(0.5, 1.5, points)
+                for a in small.args}
+        args = [free[str(a)] if str(a) in free else values[str(a)] for a in out.args]
+        kept = [free[str(a)] for a in small.args]
         big_time = best_time(lambda: getattr(general, out.name)(*args), budget=0.5)
-        small_time = best_time(lambda: getattr(special, out.name)(t), budget=0.5)
+        small_time = best_time(lambda: getattr(special, out.name)(*kept), budget=0.5)
         lines.append(f"{out.name}: operations {operation_count([out])} -> "
                      f"{operation_count([small])}, time {big_time * 1e3:.1f} -> "
                      f"{small_time * 1e3:.1f} ms on {points} points "
