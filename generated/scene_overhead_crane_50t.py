@@ -20,6 +20,15 @@ __all__ = ['elastic_force', 'velocity_m1', 'velocity_m2']
 def _checked(name, value, sign, what):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
     finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
     if isinstance(value, (str, bytes)):
         raise TypeError(f"{name} must be a number or array of numbers "
                         f"({what}), got a string {value!r}")

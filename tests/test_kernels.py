@@ -83,6 +83,19 @@ def test_checked_messages():
     assert k._checked("x", 3, "real", "x").dtype == float
 
 
+@pytest.mark.parametrize("value", [2.5, 3, np.float64(2.5), np.array(2.5), [2.5]])
+def test_checked_plain_numbers_and_arrays_agree(value):
+    """The fast path for plain numbers gives what the array path gives."""
+    got = k._checked("m", value, "positive", "mass, kg")
+    assert got.dtype == float and np.array_equal(got, np.asarray(value, dtype=float))
+    for bad, message in [(-value if np.isscalar(value) else -np.asarray(value), "> 0"),
+                         (float("nan"), "finite"), (float("inf"), "finite"), (10**400, "finite")]:
+        with pytest.raises(ValueError, match=message):
+            k._checked("m", bad, "positive", "mass, kg")
+    with pytest.raises(ValueError, match=">= 0"):
+        k._checked("t", -0.5, "nonnegative", "time, s")
+
+
 def test_closure_lists_dependencies_in_order():
     assert k.closure({"_sin_phase"}) == ["_two_product", "_phase", "_sin_phase"]
 
