@@ -61,15 +61,8 @@ def cmd_generate(args: argparse.Namespace) -> int:
     from . import codegen, specialize
     from .generate import all_files
     if args.scene:
-        from .drive_law import drive_law_files, is_drive_law_scene
-        from .scenes import load_scene
         directory = Path(args.out or ".")
-        if is_drive_law_scene(args.scene):
-            files = drive_law_files(args.scene)
-        else:
-            scene = load_scene(args.scene)
-            files = {specialize.module_name(scene):
-                     specialize.render_scene_module(registry.get(scene.derivation), scene)}
+        files = specialize.scene_files(args.scene, registry.get)
     else:
         directory = Path(args.out) if args.out else codegen.default_directory()
         files = all_files()

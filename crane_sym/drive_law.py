@@ -40,13 +40,12 @@ from .codegen import render_module
 from .derivation import Derivation, Output
 from .duhamel import DuhamelResult, duhamel
 from .loads import DEFAULT_TIME, Piece, PiecewiseLoad, exact_number, piecewise_polynomial
-from .scenes import _SAFE_NAME, SceneError, _locate, _options, list_scenes
+from .scenes import _SAFE_NAME, SceneError, _locate, _options
 from .symbols import TIME, PhysicalSymbol, SymbolTable
 
 __all__ = ["DriveLawResponse", "DriveLawScene", "FROM_WEIGHT", "PICKUP", "drive_law",
            "drive_law_files", "drive_law_outputs", "is_drive_law_scene",
-           "load_drive_law_scene", "module_name", "render_drive_law_module", "respond",
-           "shipped_drive_law_modules"]
+           "load_drive_law_scene", "module_name", "render_drive_law_module", "respond"]
 
 FROM_WEIGHT = "from_weight"
 PICKUP = "pickup"
@@ -447,12 +446,3 @@ def drive_law_files(path_or_name: str | Path) -> dict[str, str]:
     """File name -> source for ``crane-sym generate --scene FILE`` of a drive-law scene."""
     scene = load_drive_law_scene(path_or_name)
     return {module_name(scene): render_drive_law_module(scene)}
-
-
-def shipped_drive_law_modules() -> dict[str, str]:
-    """File name -> source of every shipped scene that has a ``[drive_law]`` table."""
-    files: dict[str, str] = {}
-    for name in list_scenes():
-        if is_drive_law_scene(name):
-            files.update(drive_law_files(name))
-    return files

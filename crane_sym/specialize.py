@@ -66,16 +66,20 @@ def operation_count(outputs: list[Output]) -> int:
     return sum(sp.count_ops(o.expr) for o in outputs)
 
 
+def scene_files(path_or_name, get: Callable[[str], Derivation]) -> dict[str, str]:
+    """File name -> source of the module of one scene: a drive-law scene
+    (``crane_sym.drive_law``) or a scene of a derivation's outputs."""
+    from .drive_law import drive_law_files, is_drive_law_scene
+    if is_drive_law_scene(path_or_name):
+        return drive_law_files(path_or_name)
+    scene = load_scene(path_or_name)
+    d = get(scene.derivation)
+    return {module_name(scene): render_scene_module(d, scene)} if d.outputs else {}
+
+
 def shipped_scene_modules(get: Callable[[str], Derivation]) -> dict[str, str]:
     """File name -> source of the specialized module of every shipped scene."""
-    from .drive_law import drive_law_files, is_drive_law_scene
     files = {}
     for name in list_scenes():
-        if is_drive_law_scene(name):
-            files.update(drive_law_files(name))
-            continue
-        scene = load_scene(name)
-        d = get(scene.derivation)
-        if d.outputs:
-            files[module_name(scene)] = render_scene_module(d, scene)
+        files.update(scene_files(name, get))
     return files

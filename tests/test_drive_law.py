@@ -271,7 +271,9 @@ def test_cli_files_are_deterministic_and_named_by_the_scene(tmp_path):
     text = files["scene_hoist_user_drive_law.py"]
     assert "Drive law of scene 'hoist_user_drive_law'" in text
     assert "def rope_stretch(t):" in text and "eval(" not in text
-    assert "scene_hoist_user_drive_law.py" in dl.shipped_drive_law_modules()
+    from crane_sym import registry, specialize
+    shipped = specialize.shipped_scene_modules(registry.get)
+    assert shipped["scene_hoist_user_drive_law.py"] == text
 
 
 def test_run_writes_the_module_and_a_plot_and_bounds_the_samples(tmp_path):
