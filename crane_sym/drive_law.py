@@ -26,7 +26,6 @@ acceleration_unit per time_unit^j) and ``[options]`` (duration, points).
 """
 from __future__ import annotations
 
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Sequence
@@ -40,7 +39,7 @@ from .codegen import render_module
 from .derivation import Derivation, Output
 from .duhamel import DuhamelResult, duhamel
 from .loads import DEFAULT_TIME, Piece, PiecewiseLoad, exact_number, piecewise_polynomial
-from .scenes import _SAFE_NAME, SceneError, _locate, _options
+from .scenes import _SAFE_NAME, SceneError, _locate, _options, read_toml
 from .symbols import TIME, PhysicalSymbol, SymbolTable
 
 __all__ = ["DriveLawResponse", "DriveLawScene", "FROM_WEIGHT", "PICKUP", "drive_law",
@@ -312,16 +311,9 @@ class DriveLawScene:
         return respond(self.law(), self.m1, self.m2, self.C, self.g, self.lifting)
 
 
-def _read(path: Path) -> dict[str, Any]:
-    try:
-        return tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise SceneError(f"{path}: not valid TOML: {exc}") from None
-
-
 def is_drive_law_scene(path_or_name: str | Path) -> bool:
     """True when the scene file (a path or a shipped name) has a ``[drive_law]`` table."""
-    return isinstance(_read(_locate(path_or_name)).get("drive_law"), dict)
+    return isinstance(read_toml(_locate(path_or_name)).get("drive_law"), dict)
 
 
 def _table(data: dict, key: str, allowed: Sequence[str], required: Sequence[str],
@@ -368,7 +360,7 @@ def load_drive_law_scene(path_or_name: str | Path) -> DriveLawScene:
     not a number (text in the law is refused by type, never evaluated).
     """
     path = _locate(path_or_name)
-    data = _read(path)
+    data = read_toml(path)
     where = f"scene file {path.name!r}"
     extra = sorted(set(data) - set(_TABLES))
     if extra:

@@ -147,6 +147,14 @@ def _locate(path_or_name: str | Path) -> Path:
     return scenes_directory() / f"{text}.toml"
 
 
+def read_toml(path: Path) -> dict[str, Any]:
+    """The scene file's tables; SceneError if it is not valid UTF-8 TOML."""
+    try:
+        return tomllib.loads(path.read_text(encoding="utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise SceneError(f"{path}: not valid TOML: {exc}") from None
+
+
 def load_scene(path_or_name: str | Path) -> Scene:
     """Read and validate a scene.
 
@@ -169,10 +177,7 @@ def load_scene(path_or_name: str | Path) -> Scene:
         message names the parameter).
     """
     path = _locate(path_or_name)
-    try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise SceneError(f"{path}: not valid TOML: {exc}") from None
+    data = read_toml(path)
     where = f"scene file {path.name!r}"
     extra = sorted(set(data) - set(_TABLES))
     if extra:
