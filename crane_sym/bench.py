@@ -16,108 +16,28 @@ from __future__ import annotations
 
 import importlib
 import time
-from dataclasses import asdict, dataclass, replace
-from typing import Callable, Sequence
+from dataclasses import asdict, replace
+from typing import Sequence
 
 import numpy as np
 import sympy as sp
 
+from . import bench_duhamel, bench_linear, bench_odes, units
+from .bench_rows import (DUHAMEL, FLOOR, GENERATED, INTEGRATOR, LAMBDIFY, METHODS, NAN,
+                         REFERENCE, RTOLS, BenchRow, Target, best_time, errors, least_time)
 from .derivation import Derivation, Output
-from .reference import mp_values, relative_errors
+from .reference import mp_values
+from .specialize import module_name, operation_count, specialize, switched_off
 
-METHODS = ("RK45", "DOP853", "LSODA", "Radau")
-RTOLS = (1e-3, 1e-6, 1e-9, 1e-12)
-#: Row kinds: the generated function, its baselines, and the alternatives.
-GENERATED, FLOOR, LAMBDIFY = "generated", "floor", "lambdify"
-INTEGRATOR, DUHAMEL, REFERENCE = "integrator", "duhamel", "reference"
-NAN = float("nan")
-
-
-@dataclass(frozen=True)
-class BenchRow:
-    """One function evaluated one way on the grid.
-
-    ``ratio_to_generated`` is time per evaluation over the generated
-    function's; ``ratio_to_floor`` is time over one ``np.cos`` of the same length.
-    """
-
-    derivation: str
-    function: str
-    method: str
-    seconds: float
-    points: int
-    max_rel_error: float
-    ratio_to_generated: float
-    max_error_over_peak: float = NAN
-    ratio_to_floor: float = NAN
-    kind: str = ""
-
-
-@dataclass(frozen=True)
-class Target:
-    """The reference an alternative to one function is measured against:
-    exact values (mpf, element-major) at the grid indices ``check``."""
-
-    derivation: str
-    name: str
-    check: np.ndarray
-    exact: list
-    seconds: float = NAN      # the generated function on the whole grid
-    points: int = 1
-
-    def row(self, method: str, seconds: float, points: int, values: np.ndarray,
-            kind: str) -> BenchRow:
-        """A row for ``values`` (at ``check``) obtained in ``seconds`` for ``points``."""
-        rel, over = errors(values, self.exact)
-        ratio = (seconds / points) / (self.seconds / self.points)
-        return BenchRow(self.derivation, self.name, method, seconds, points, rel, ratio,
-                        over, kind=kind)
-
-
-def errors(values: np.ndarray, exact: list) -> tuple[float, float]:
-    """Worst relative error, and worst error over the largest |exact| (normwise:
-    meaningful where the quantity passes through zero)."""
-    values = np.asarray(values, dtype=float).ravel()
-    if values.size != len(exact):
-        values = np.broadcast_to(values, (len(exact),))
-    ref = np.array([float(e) for e in exact])
-    peak = np.max(np.abs(ref))
-    over = float(np.max(np.abs(values - ref)) / peak) if peak else float(np.max(np.abs(values)))
-    return float(np.max(relative_errors(values, exact))), over
-
-
-def best_time(f: Callable[[], object], budget: float = 0.3, repeats: int = 7) -> float:
-    """Least wall time of ``f`` over a few calls (first call included)."""
-    times = []
-    start = time.perf_counter()
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        f()
-        times.append(time.perf_counter() - t0)
-        if time.perf_counter() - start > budget and len(times) >= 2:
-            break
-    return min(times)
-
-
-def least_time(call: Callable[[], object], budget: float = 0.2, repeats: int = 3
-               ) -> tuple[float, object]:
-    """(least wall time, result) of ``call`` over up to ``repeats`` calls, no
-    more once ``budget`` seconds are spent: a slow alternative runs once."""
-    best, start = float("inf"), time.perf_counter()
-    for _ in range(repeats):
-        t0 = time.perf_counter()
-        result = call()
-        best = min(best, time.perf_counter() - t0)
-        if time.perf_counter() - start > budget:
-            break
-    return best, result
-
+__all__ = ["DUHAMEL", "FLOOR", "GENERATED", "INTEGRATOR", "LAMBDIFY", "METHODS", "NAN",
+           "REFERENCE", "RTOLS", "BenchRow", "Target", "as_dicts", "bench", "best_time",
+           "errors", "grid_values", "least_time", "scene_comparison", "scene_grid",
+           "throughput"]
 
 def grid_values(d: Derivation, scenes: Sequence) -> dict[str, float]:
     """Scalar values of the bench grid (SI): the scenes' parameters (the first
     scene that sets one wins), scene options that name a symbol of ``d``
     (simulation values), then ``d.bench_parameters`` for what no scene sets."""
-    from . import units
     values: dict[str, float] = {}
     for scene in scenes:
         for name, value in scene.parameters.items():
@@ -200,8 +120,6 @@ def bench(d: Derivation, values: dict[str, float], duration: float,
           methods: Sequence[str] = METHODS, rtols: Sequence[float] = RTOLS,
           seed: int = 1) -> list[BenchRow]:
     """Rows for every generated function and every alternative, one run."""
-    from . import bench_duhamel, bench_linear, bench_odes
-
     generated = importlib.import_module(f"crane_sym.generated.{d.id}")
     grid = scene_grid(values, duration, points, seed)
     rng = np.random.default_rng(seed + 1)
@@ -251,7 +169,6 @@ def throughput(d: Derivation, values: dict[str, float], duration: float,
 def scene_comparison(d: Derivation, scene, points: int = 10**6) -> list[str]:
     """Size (SymPy operation count) and speed of the scene-specialized module
     against the general one, for each output the scene asks for."""
-    from .specialize import module_name, operation_count, specialize, switched_off
     general = importlib.import_module(f"crane_sym.generated.{d.id}")
     special = importlib.import_module(f"crane_sym.generated.{module_name(scene)[:-3]}")
     rng = np.random.default_rng(4)
@@ -280,6 +197,3 @@ def as_dicts(rows: Sequence[BenchRow]) -> list[dict]:
     return [{k: (None if isinstance(v, float) and v != v else v) for k, v in asdict(r).items()}
             for r in rows]
 
-
-# Reporting lives in bench_report; these names stay importable from here.
-from .bench_report import as_markdown, headline, not_applicable, plot  # noqa: E402,F401

@@ -31,7 +31,7 @@ from typing import Callable, Sequence
 import numpy as np
 import sympy as sp
 
-from .bench import DUHAMEL, BenchRow, Target, least_time
+from .bench_rows import DUHAMEL, BenchRow, Target, least_time
 from .bench_odes import parameters, time_symbol
 from .derivation import ODESystem
 

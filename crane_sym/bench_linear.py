@@ -24,7 +24,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from .bench import INTEGRATOR, REFERENCE, BenchRow, Target
+from .bench_rows import INTEGRATOR, REFERENCE, BenchRow, Target
 from .bench_odes import integrate, parameters, time_symbol
 from .derivation import Derivation, ODESystem
 

@@ -15,7 +15,7 @@ from typing import Iterator, Sequence
 import numpy as np
 import sympy as sp
 
-from .bench import INTEGRATOR, BenchRow, Target, least_time
+from .bench_rows import INTEGRATOR, BenchRow, Target, least_time
 from .derivation import ODESystem
 
 

@@ -6,7 +6,7 @@ from pathlib import Path
 from statistics import median
 from typing import Sequence
 
-from .bench import DUHAMEL, GENERATED, INTEGRATOR, LAMBDIFY, REFERENCE, BenchRow
+from .bench_rows import DUHAMEL, GENERATED, INTEGRATOR, LAMBDIFY, REFERENCE, BenchRow
 
 ALTERNATIVES = (INTEGRATOR, DUHAMEL)
 

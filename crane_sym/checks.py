@@ -14,7 +14,6 @@ Each returns a ``CheckOutcome`` whose ``status`` is ``pass``, ``fail`` or
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Iterable
 
 import mpmath
@@ -22,18 +21,9 @@ import numpy as np
 import sympy as sp
 
 from .dimensions import check_equation, vector
+from .outcomes import FAIL, INCONCLUSIVE, PASS, CheckOutcome
 from .symbols import COORDINATE, DEFINED, TIME, SymbolTable
 
-PASS, FAIL, INCONCLUSIVE = "pass", "fail", "inconclusive"
-
-
-@dataclass(frozen=True)
-class CheckOutcome:
-    """Result of one check: which, how it came out, and what it saw."""
-
-    method: str
-    status: str
-    detail: str
 
 
 def residual(relation: sp.Eq) -> sp.Expr:

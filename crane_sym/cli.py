@@ -62,7 +62,7 @@ def cmd_generate(args: argparse.Namespace) -> int:
     from .generate import all_files
     if args.scene:
         directory = Path(args.out or ".")
-        files = specialize.scene_files(args.scene, registry.get)
+        files = specialize.scene_files(args.scene)
     else:
         directory = Path(args.out) if args.out else codegen.default_directory()
         files = all_files()
@@ -114,15 +114,14 @@ def _machine() -> str:
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from . import bench, drive_law, scenes
+    from . import bench, scenes
     from .bench_report import as_markdown, headline, not_applicable, plot
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     everything = []
     for i in _ids(args.ids):
-        chosen = [scenes.load_scene(n) for n in scenes.list_scenes()
-                  if not drive_law.is_drive_law_scene(n)]
-        chosen = [s for s in chosen if s.derivation == i]
+        chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
+                  if s.derivation == i and not s.load_table]
         d = registry.get(i)
         if not chosen or not d.outputs:
             print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)
@@ -189,14 +188,10 @@ def _bench_sampled(out_dir: Path, show: bool) -> None:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    from .drive_law import is_drive_law_scene
-    from .scenes import load_scene, run_scene
-    if is_drive_law_scene(args.scene):
-        from .drive_law_run import run_drive_law_scene
-        scene, report, figure = run_drive_law_scene(args.scene, Path(args.out))
-    else:
-        scene = load_scene(args.scene)
-        report, figure = run_scene(scene, Path(args.out))
+    from .scene_run import run_scene
+    from .scenes import load_scene
+    scene = load_scene(args.scene)
+    report, figure = run_scene(scene, Path(args.out))
     print(f"scene {scene.name}: {scene.title}")
     for line in report.lines:
         print(f"  {line}")
@@ -247,7 +242,8 @@ def parser() -> argparse.ArgumentParser:
     p.set_defaults(func=cmd_bench)
     p = sub.add_parser("run", help="run a scene: print its results, write its plot")
     p.add_argument("scene", help="scene name or path to a scene TOML file")
-    p.add_argument("--out", default=".", help="folder for the plot (default: .)")
+    p.add_argument("--out", default=".", help="folder for the scene module and the plot "
+                   "(default: .)")
     p.set_defaults(func=cmd_run)
     return top
 

@@ -7,6 +7,7 @@ as scalars before the array work.
 """
 from __future__ import annotations
 
+import importlib.util
 import inspect
 import re
 from pathlib import Path
@@ -321,9 +322,13 @@ def render_package_init(ids: Sequence[str]) -> str:
 
 
 def default_directory() -> Path:
-    """The folder of ``crane_sym.generated`` (``generated/`` in a clone)."""
-    import crane_sym.generated as package
-    return Path(package.__file__).parent
+    """The folder of ``crane_sym.generated`` (``generated/`` in a clone), found
+    without importing what is in it."""
+    spec = importlib.util.find_spec("crane_sym.generated")
+    if spec is None or not spec.submodule_search_locations:
+        raise KeyError("the package crane_sym.generated is not installed; run "
+                       "`pip install -e .` in the clone, or pass --out")
+    return Path(list(spec.submodule_search_locations)[0])
 
 
 def rendered(derivations: Sequence[Derivation],

@@ -7,10 +7,12 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
+from typing import Any, Callable, Mapping
+
 import sympy as sp
 
 from .published import PublishedFormula
-from .symbols import SymbolTable
+from .symbols import PhysicalSymbol, SymbolTable
 
 
 @dataclass(frozen=True)
@@ -100,6 +102,56 @@ class Switch:
     name: str
     description: str
     off: tuple[tuple[sp.Symbol, sp.Expr], ...]
+
+
+@dataclass(frozen=True)
+class SpecializedLoad:
+    """What a scene load becomes for one scene: the functions to print, the
+    note for the module header, and the symbols of their arguments."""
+
+    outputs: list[Output]
+    note: str
+    symbols: SymbolTable
+
+
+@dataclass(frozen=True)
+class SceneLoad:
+    """A load a scene gives as data, in a TOML table of its own.
+
+    One more kind of scene input beside parameter values, switches and
+    inputs: the scene reader hands the table to ``read``, and the specializer
+    hands the validated scene to ``specialize``, which returns the scene's
+    functions (e.g. the drive law a(t) of paper 002, convolved by Duhamel's
+    integral).
+    A paper package declares its loads in ``SCENE_LOADS`` (table -> SceneLoad),
+    readable without building the derivation.
+
+    Attributes
+    ----------
+    table : str
+        The TOML table, e.g. ``"drive_law"``.
+    description : str
+        One line: what the load is.
+    parameters : tuple of PhysicalSymbol
+        What the load's model needs from ``[parameters]`` (all required).
+    outputs : tuple of str
+        Names of the functions ``specialize`` returns, in order.
+    read : callable
+        ``read(table, where) -> data``: the table checked and converted (numbers
+        by type, units by ``crane_sym.units``); raises ``ValueError`` or
+        ``TypeError`` naming the key.
+    specialize : callable
+        ``specialize(scene) -> SpecializedLoad`` for a ``crane_sym.scenes.Scene``
+        whose ``load`` is what ``read`` returned and whose ``parameters`` (SI)
+        hold every one of ``parameters``.
+    """
+
+    table: str
+    description: str
+    parameters: tuple[PhysicalSymbol, ...]
+    outputs: tuple[str, ...]
+    read: Callable[[Mapping[str, Any], str], Any]
+    specialize: Callable[[Any], SpecializedLoad]
 
 
 @dataclass

@@ -20,6 +20,8 @@ from functools import lru_cache
 import mpmath
 import sympy as sp
 
+from .identities import cos_pair_to_sin_squared, fold_constants
+
 #: The variable every closed form is written in.
 Z = sp.Symbol("z", real=True)
 #: Unit roundoff of a double.
@@ -179,7 +181,6 @@ _ORDER = 400
 
 def stable_form(closed: sp.Expr) -> sp.Expr:
     """``closed`` as printed: 1 − cos z as 2 sin²(z/2), constants folded."""
-    from .rewriting import cos_pair_to_sin_squared, fold_constants
     return fold_constants(cos_pair_to_sin_squared(closed))
 
 

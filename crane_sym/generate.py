@@ -8,4 +8,4 @@ from . import codegen, registry, specialize
 def all_files() -> dict[str, str]:
     """File name -> source for the whole ``generated/`` folder."""
     derivations = [registry.get(i) for i in registry.ids()]
-    return codegen.rendered(derivations, specialize.shipped_scene_modules(registry.get))
+    return codegen.rendered(derivations, specialize.shipped_scene_modules())

@@ -8,7 +8,7 @@ import importlib
 from functools import lru_cache
 from types import ModuleType
 
-from .derivation import Derivation
+from .derivation import Derivation, SceneLoad
 
 #: id -> module under ``crane_sym.derivations``, in paper order.
 DERIVATIONS: dict[str, str] = {
@@ -38,6 +38,17 @@ def resolve(name: str) -> str:
 def module(name: str) -> ModuleType:
     """The derivation module for ``name``."""
     return importlib.import_module(DERIVATIONS[resolve(name)])
+
+
+def module_path(name: str) -> str:
+    """The file of the derivation's package (its ``__init__.py``)."""
+    return str(module(name).__file__)
+
+
+def scene_loads(name: str) -> dict[str, SceneLoad]:
+    """The loads a scene of this derivation may give as data (table -> SceneLoad),
+    from the package's ``SCENE_LOADS``; no build needed."""
+    return dict(getattr(module(name), "SCENE_LOADS", {}))
 
 
 @lru_cache(maxsize=None)

@@ -7,37 +7,20 @@ stable form is never patched into one function by hand.
 """
 from __future__ import annotations
 
-from typing import Callable, Sequence
+from typing import Sequence
 
 import sympy as sp
 from sympy.codegen.cfunctions import log1p
 from sympy.codegen.rewriting import expm1_opt, log1p_opt
 
-Rule = Callable[[sp.Expr], sp.Expr]
+from .identities import Rule, cos_pair_to_sin_squared, fold_constants
+from .windows import window_pieces
 
-
-def cos_pair_to_sin_squared(expr: sp.Expr) -> sp.Expr:
-    """``a·cos(x) − a → −2a·sin²(x/2)``: no ``1 − cos`` cancellation at small x.
-
-    Matches any sum that, collected in one ``cos(x)``, is ``a·cos(x) + b``
-    with ``a + b = 0``; other terms of the sum are kept.
-    """
-    def rewrite(add: sp.Add) -> sp.Expr:
-        for cos_x in sorted(add.atoms(sp.cos), key=sp.default_sort_key):
-            parts = sp.collect(add, cos_x, evaluate=False)
-            a = parts.get(cos_x)
-            if a is None or a.has(cos_x):
-                continue
-            b = parts.get(sp.S.One, sp.S.Zero)
-            # b may hold other terms too: split off the one that cancels a.
-            rest = sp.expand(b + a)
-            if sp.count_ops(rest) < sp.count_ops(sp.expand(b)) or rest == 0:
-                half = cos_x.args[0] / 2
-                return rest - 2 * a * sp.sin(half) ** 2
-        return add
-
-    return expr.replace(lambda e: e.is_Add and e.has(sp.cos), rewrite)
-
+__all__ = ["DEFAULT_RULES", "Rule", "accurate_phase", "cos_pair_to_sin_squared", "cos_phase",
+           "cos_remainder", "diff_of_products", "exact_difference_of_products",
+           "factor_polynomials", "fold_constants", "log1p_form", "optimize", "rules_for",
+           "sin_phase", "sin_remainder", "sin_squared_form", "taylor_remainder",
+           "trig_difference_to_product"]
 
 class diff_of_products(sp.Function):
     """``a·b − c·d``, to be evaluated with one rounding (Dekker's TwoProduct).
@@ -243,19 +226,6 @@ def sin_squared_form(expr: sp.Expr) -> sp.Expr:
     return sp.factor_terms(expr)
 
 
-def fold_constants(expr: sp.Expr) -> sp.Expr:
-    """Evaluate every numeric subexpression that is not a rational number at
-    40 digits (``pi*sqrt(858)/13 -> 7.0...``), so the printed constant is the
-    correctly rounded double; exponents are kept (``sqrt`` stays ``sqrt``)."""
-    if expr.is_Rational or (expr.is_Atom and not expr.is_number):
-        return expr
-    if expr.is_number:
-        return sp.Float(sp.N(expr, 40), 40)
-    if isinstance(expr, sp.Pow):
-        return sp.Pow(fold_constants(expr.base), expr.exp)
-    return expr.func(*[fold_constants(a) for a in expr.args])
-
-
 def factor_polynomials(varying: set[sp.Symbol], scales: frozenset = frozenset()) -> Rule:
     """Rule: a sum that is a polynomial in an array argument is factored
     (``12t³/t_n³ − 24t²/t_n² + 12t/t_n → 12t(t − t_n)²/t_n³``, ``1 − t/t_n →
@@ -355,7 +325,6 @@ def rules_for(varying: set[sp.Symbol], scales: frozenset = frozenset(),
     (:func:`accurate_phase`): about one ulp even near the zeros of the sine at
     long times, at the price of a second transcendental call and a dozen array
     operations (5-8 times the cost of the plain form)."""
-    from .windows import window_pieces
     return ((window_pieces(varying), factor_polynomials(varying, scales),
              taylor_remainder(varying))
             + DEFAULT_RULES[:2]

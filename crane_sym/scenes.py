@@ -15,11 +15,16 @@ parameter values with units, and options such as the simulated duration::
     points = 1501
 
 Optional: ``[scene] inputs`` lists parameters left as arguments of the
-scene's functions, and ``[options] <switch> = false`` turns off a part of the
-model the derivation declares in ``Derivation.switches`` (e.g. ``damping``).
+scene's functions, ``[options] <switch> = false`` turns off a part of the
+model the derivation declares in ``Derivation.switches`` (e.g. ``damping``),
+and a table named after one of the derivation's scene loads
+(``SCENE_LOADS`` of its package, e.g. ``[drive_law]`` of paper 002) gives a
+load as data, which the specializer turns into the scene's functions.
 Values are converted to SI by :func:`crane_sym.units.convert`; they are parsed,
-never evaluated. Scenes shipped with the package live in
-``crane_sym/derivations/scenes/`` (``derivations/scenes/`` in a clone).
+never evaluated, and checked against the sign the symbol table admits. This is
+stage 1 of the one scene pipeline (read and validate → ``specialize`` →
+generate → ``scene_run``). Scenes shipped with the package live in
+``derivations/<id>/scenes/`` of each paper.
 """
 from __future__ import annotations
 
@@ -34,10 +39,11 @@ import numpy as np
 from sympy.physics.units import time as _TIME
 
 from . import registry, units
-from .symbols import STATE, TIME
+from .derivation import SceneLoad
+from .symbols import STATE, TIME, PhysicalSymbol
 
 __all__ = ["Panel", "Scene", "SceneError", "SceneReport", "format_quantity",
-           "list_scenes", "load_scene", "run_scene", "scenes_directory"]
+           "list_scenes", "load_scene", "read_toml", "scene_path", "scenes_directory"]
 
 _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
 _SCENE_KEYS = ("name", "derivation", "title", "outputs")
@@ -73,6 +79,10 @@ class Scene:
         (``[scene] inputs``, e.g. a load that varies in time).
     switched_off : tuple of str
         Switches of the derivation turned off (``[options] <switch> = false``).
+    load_table : str
+        The table of a scene load (``"drive_law"``), or ``""``.
+    load : object
+        The load as its ``SceneLoad.read`` validated it, or None.
     """
 
     name: str
@@ -84,6 +94,8 @@ class Scene:
     path: Path
     inputs: tuple[str, ...] = ()
     switched_off: tuple[str, ...] = ()
+    load_table: str = ""
+    load: Any = None
 
 
 @dataclass
@@ -123,15 +135,34 @@ def format_quantity(value: float, unit: str = "", digits: int = 4) -> str:
     return f"{text} {unit}".rstrip()
 
 
-def scenes_directory() -> Path:
-    """The folder of the scenes shipped with the package."""
-    import crane_sym.derivations as package
-    return Path(package.__file__).parent / "scenes"
+def scenes_directory(derivation: str) -> Path:
+    """The folder of the scenes shipped with a derivation's package."""
+    return Path(registry.module_path(derivation)).parent / "scenes"
+
+
+def _shipped() -> dict[str, Path]:
+    """Name -> file of every shipped scene, over the registered derivations."""
+    found: dict[str, Path] = {}
+    for derivation in registry.ids():
+        for path in sorted(scenes_directory(derivation).glob("*.toml")):
+            if path.stem in found:
+                raise SceneError(f"scene name {path.stem!r} is shipped twice: "
+                                 f"{found[path.stem]} and {path}")
+            found[path.stem] = path
+    return found
 
 
 def list_scenes() -> list[str]:
     """Names of the shipped scenes, sorted."""
-    return sorted(p.stem for p in scenes_directory().glob("*.toml"))
+    return sorted(_shipped())
+
+
+def scene_path(name: str) -> Path:
+    """The file of the shipped scene ``name``."""
+    shipped = _shipped()
+    if not _SAFE_NAME.fullmatch(name) or name not in shipped:
+        raise SceneError(f"unknown scene {name!r}; known: {', '.join(sorted(shipped))}")
+    return shipped[name]
 
 
 def _locate(path_or_name: str | Path) -> Path:
@@ -142,9 +173,7 @@ def _locate(path_or_name: str | Path) -> Path:
         if not path.is_file():
             raise SceneError(f"no scene file {str(path)!r}")
         return path
-    if not _SAFE_NAME.fullmatch(text) or text not in list_scenes():
-        raise SceneError(f"unknown scene {text!r}; known: {', '.join(list_scenes())}")
-    return scenes_directory() / f"{text}.toml"
+    return scene_path(text)
 
 
 def read_toml(path: Path) -> dict[str, Any]:
@@ -173,17 +202,15 @@ def load_scene(path_or_name: str | Path) -> Scene:
     ------
     SceneError
         For unreadable TOML, missing or unknown keys, an unknown derivation or
-        output, and a missing, unknown or badly dimensioned parameter (the
-        message names the parameter).
+        output, a missing, unknown, badly dimensioned or out-of-sign parameter
+        (the message names the parameter), and a scene load that its
+        ``SceneLoad.read`` refuses (the message names the table).
     """
     path = _locate(path_or_name)
     data = read_toml(path)
     where = f"scene file {path.name!r}"
-    extra = sorted(set(data) - set(_TABLES))
-    if extra:
-        raise SceneError(f"{where}: unknown tables {extra}; expected {list(_TABLES)}")
     head = _table(data, "scene", where)
-    missing = [k for k in _SCENE_KEYS if k not in head]
+    missing = [k for k in ("name", "derivation", "title") if k not in head]
     if missing:
         raise SceneError(f"{where}: [scene] lacks {missing}")
     unknown = sorted(set(head) - set(_SCENE_KEYS) - set(_OPTIONAL_SCENE_KEYS))
@@ -200,55 +227,107 @@ def load_scene(path_or_name: str | Path) -> Scene:
         derivation_id = registry.resolve(str(head["derivation"]))
     except KeyError as exc:
         raise SceneError(f"{where}: {exc.args[0]}") from None
-    derivation = registry.get(derivation_id)
-    known_outputs = [o.name for o in derivation.outputs]
-    outputs = head["outputs"]
-    if not isinstance(outputs, list) or not outputs \
-            or not all(isinstance(o, str) for o in outputs):
-        raise SceneError(f"{where}: outputs must be a non-empty list of names")
-    for out in outputs:
-        if out not in known_outputs:
-            raise SceneError(f"{where}: unknown output {out!r} of derivation "
-                             f"{derivation_id!r}; known: {', '.join(known_outputs)}")
-    if len(set(outputs)) != len(outputs):
-        raise SceneError(f"{where}: an output is listed twice in {outputs}")
+    loads = registry.scene_loads(derivation_id)
+    extra = sorted(set(data) - set(_TABLES) - set(loads))
+    if extra:
+        raise SceneError(f"{where}: unknown tables {extra}; expected "
+                         f"{list(_TABLES) + sorted(loads)}")
+    given = [key for key in loads if key in data]
+    if len(given) > 1:
+        raise SceneError(f"{where}: give one scene load, not {given}")
+    options = _options(_table(data, "options", where), where)
+    raw = _table(data, "parameters", where)
+    if given:
+        return _load_scene_with_load(path, head, derivation_id, loads[given[0]], data,
+                                     raw, options, where)
 
+    if "outputs" not in head:
+        raise SceneError(f"{where}: [scene] lacks ['outputs']")
+    derivation = registry.get(derivation_id)
+    outputs = _outputs(head["outputs"], [o.name for o in derivation.outputs],
+                       derivation_id, where)
     # Required: what the scene's outputs take, less what a switch fixes or the
     # scene keeps as an input; allowed: what any output takes.
     required = {a for o in derivation.outputs if o.name in outputs for a in o.args}
     allowed = {a for o in derivation.outputs for a in o.args}
     entries = [e for e in derivation.symbols
                if e.expr in allowed and e.role not in (TIME, STATE)]
-    raw = _table(data, "parameters", where)
-    names = [e.name for e in entries]
-    options = _options(_table(data, "options", where), where)
     switched_off = _switched_off(derivation, options, where)
     fixed = {str(s) for name in switched_off for s, _ in derivation.switches[name].off}
     inputs = _inputs(head.get("inputs", []), {str(a) for a in required}, where)
     for key in sorted((fixed | set(inputs)) & set(raw)):
         why = "is an input of the scene" if key in inputs else "is fixed by a switch"
         raise SceneError(f"{where}: parameter {key!r} {why}; remove it from [parameters]")
+    needed = [e for e in entries if e.expr in required and e.name not in fixed | set(inputs)]
+    parameters = _parameters(raw, entries, needed, derivation_id, where)
+    return Scene(name, derivation_id, head["title"], tuple(outputs), parameters,
+                 options, path, inputs, switched_off)
+
+
+def _load_scene_with_load(path: Path, head: dict[str, Any], derivation_id: str,
+                          load: SceneLoad, data: dict[str, Any], raw: dict[str, Any],
+                          options: dict[str, Any], where: str) -> Scene:
+    """The rest of :func:`load_scene` for a scene that gives a load as data: the
+    load's own parameters, its outputs, its table read by ``load.read``."""
+    if "inputs" in head:
+        raise SceneError(f"{where}: a scene with [{load.table}] keeps no inputs")
+    outputs = _outputs(head.get("outputs", list(load.outputs)), list(load.outputs),
+                       f"{derivation_id}, [{load.table}]", where)
+    entries = list(load.parameters)
+    parameters = _parameters(raw, entries, entries, derivation_id, where)
+    table = data[load.table]
+    if not isinstance(table, dict):
+        raise SceneError(f"{where}: [{load.table}] must be a table")
+    try:
+        value = load.read(table, where)
+    except (TypeError, ValueError) as exc:
+        raise SceneError(f"{where}: [{load.table}] {exc}") from None
+    return Scene(head["name"], derivation_id, head["title"], tuple(outputs), parameters,
+                 options, path, load_table=load.table, load=value)
+
+
+def _outputs(raw: Any, known: list[str], owner: str, where: str) -> list[str]:
+    """``[scene] outputs``: a non-empty list of known names, none twice."""
+    if not isinstance(raw, list) or not raw or not all(isinstance(o, str) for o in raw):
+        raise SceneError(f"{where}: outputs must be a non-empty list of names")
+    for out in raw:
+        if out not in known:
+            raise SceneError(f"{where}: unknown output {out!r} of {owner!r}; "
+                             f"known: {', '.join(known)}")
+    if len(set(raw)) != len(raw):
+        raise SceneError(f"{where}: an output is listed twice in {raw}")
+    return list(raw)
+
+
+def _parameters(raw: dict[str, Any], entries: list[PhysicalSymbol],
+                needed: list[PhysicalSymbol], owner: str, where: str) -> dict[str, float]:
+    """``[parameters]`` in SI: every name known, every needed one given, each of
+    the right dimension and of the sign its symbol admits."""
+    names = [e.name for e in entries]
     for key in raw:
         if key not in names:
             close = difflib.get_close_matches(key, names, n=3)
             hint = f"did you mean {', '.join(map(repr, close))}? " if close else ""
             raise SceneError(f"{where}: unknown parameter {key!r}; {hint}"
-                             f"{derivation_id!r} takes {', '.join(names)}")
+                             f"{owner!r} takes {', '.join(names)}")
     parameters: dict[str, float] = {}
     for entry in entries:
-        if entry.name not in raw and (entry.expr not in required
-                                      or entry.name in fixed or entry.name in inputs):
-            continue
         if entry.name not in raw:
-            raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}, "
-                             f"{entry.unit}) is missing")
+            if entry in needed:
+                raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}, "
+                                 f"{entry.unit}) is missing")
+            continue
         try:
-            parameters[entry.name] = units.convert(entry.name, raw[entry.name],
-                                                   entry.dimension)
+            value = units.convert(entry.name, raw[entry.name], entry.dimension)
         except units.UnitError as exc:
             raise SceneError(f"{where}: {exc}") from None
-    return Scene(name, derivation_id, head["title"], tuple(outputs), parameters,
-                 options, path, inputs, switched_off)
+        bound = {"positive": (value > 0, "> 0"), "nonnegative": (value >= 0, ">= 0")}
+        ok, text = bound.get(entry.sign, (True, ""))
+        if not ok:
+            raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}) "
+                             f"must be {text}, got {raw[entry.name]!r}")
+        parameters[entry.name] = value
+    return parameters
 
 
 def _switched_off(derivation, options: dict[str, Any], where: str) -> tuple[str, ...]:
@@ -299,56 +378,3 @@ def _options(raw: dict[str, Any], where: str) -> dict[str, Any]:
                          f"got {points!r}")
     options.update(duration=duration, points=points)
     return options
-
-
-def run_scene(scene: Scene, outdir: Path) -> tuple[SceneReport, Path]:
-    """Evaluate a scene and plot it.
-
-    Parameters
-    ----------
-    scene : Scene
-        From :func:`load_scene`.
-    outdir : Path
-        Folder for the plot; created if needed.
-
-    Returns
-    -------
-    (SceneReport, Path)
-        The derivation's report and the PNG ``<outdir>/<scene.name>.png``.
-    """
-    module = registry.module(scene.derivation)
-    make = getattr(module, "scene_report", None)
-    if make is None:
-        raise SceneError(f"derivation {scene.derivation!r} has no scene_report()")
-    report = make(scene)
-    if not isinstance(report, SceneReport) or not report.panels:
-        raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
-
-    path = plot_report(report, scene.title, Path(outdir) / f"{scene.name}.png")
-    return report, path
-
-
-def plot_report(report: SceneReport, title: str, path: Path) -> Path:
-    """Write the report's panels, one subplot each, to the PNG ``path``."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    n = len(report.panels)
-    fig, axes = plt.subplots(n, 1, figsize=(8, 3.2 * n), squeeze=False,
-                             layout="constrained")
-    try:
-        for ax, panel in zip(axes[:, 0], report.panels):
-            for label, x, y in panel.curves:
-                ax.plot(x, y, label=label)
-            ax.set(title=panel.title, xlabel=panel.xlabel, ylabel=panel.ylabel)
-            ax.grid(True, alpha=0.4)
-            if len(panel.curves) > 1:
-                ax.legend(loc="lower right", framealpha=0.9)
-        fig.suptitle(title)
-        fig.savefig(path, dpi=120, metadata={"Software": None})
-    finally:
-        plt.close(fig)
-    return path

@@ -1,25 +1,35 @@
-"""Scene-specialized code: model only what a scene needs.
+"""Scene-specialized code: model only what a scene needs (stages 2 and 3 of
+the scene pipeline).
 
 A scene names the outputs it wants and gives every parameter a value. The
 specialized module keeps only those outputs, folds the values in as exact
 numbers (so SymPy removes every term that vanishes for the scene before
-printing) and leaves time as the only argument.
+printing) and leaves time, the scene's inputs and state as the only
+arguments. A scene that gives a load as data (``Scene.load``) is specialized
+by that load's ``SceneLoad.specialize``, the same stage for another input.
 """
 from __future__ import annotations
 
-from typing import Callable
+from dataclasses import replace
+from pathlib import Path
 
 import sympy as sp
 
+from . import registry
 from .codegen import render_module
-from .derivation import Derivation, Output
+from .derivation import Derivation, Output, SpecializedLoad
 from .scenes import Scene, list_scenes, load_scene
-from .symbols import STATE, TIME
+from .symbols import STATE, TIME, SymbolTable
+
+__all__ = ["module_name", "operation_count", "render_scene_module", "scene_files",
+           "scene_values", "shipped_scene_modules", "specialize", "specialize_load",
+           "switched_off"]
 
 
-def scene_values(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
-    """The scene's parameter values as exact SymPy numbers (SI)."""
-    return {d.symbols[name].expr: sp.Rational(value) for name, value in scene.parameters.items()}
+def scene_values(d: Derivation | SymbolTable, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
+    """The scene's parameter values as exact SymPy numbers (SI), by symbol."""
+    table = d.symbols if isinstance(d, Derivation) else d
+    return {table[name].expr: sp.Rational(value) for name, value in scene.parameters.items()}
 
 
 def switched_off(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Expr]:
@@ -27,9 +37,20 @@ def switched_off(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Expr]:
     return {s: v for name in scene.switched_off for s, v in d.switches[name].off}
 
 
+def specialize_load(scene: Scene) -> SpecializedLoad:
+    """The functions of a scene that gives a load as data (``scene.load``), only
+    those the scene asks for."""
+    load = registry.scene_loads(scene.derivation)[scene.load_table]
+    made = load.specialize(scene)
+    wanted = [o for o in made.outputs if o.name in scene.outputs]
+    return replace(made, outputs=wanted)
+
+
 def specialize(d: Derivation, scene: Scene) -> list[Output]:
-    """The scene's outputs with its values and switches folded in; time and the
-    scene's inputs stay arguments."""
+    """The scene's outputs with its values, switches and load folded in; time,
+    the scene's inputs and state stay arguments."""
+    if scene.load_table:
+        return specialize_load(scene).outputs
     values = {**scene_values(d, scene), **switched_off(d, scene)}
     keep = {e.expr for e in d.symbols.with_role(TIME, STATE)} | {
         d.symbols[name].expr for name in scene.inputs}
@@ -48,8 +69,15 @@ def module_name(scene: Scene) -> str:
     return f"scene_{scene.name}.py"
 
 
-def render_scene_module(d: Derivation, scene: Scene) -> str:
-    """Source of the module specialized to ``scene``."""
+def render_scene_module(scene: Scene) -> str:
+    """Source of the module specialized to ``scene`` (pure; deterministic)."""
+    if scene.load_table:
+        made = specialize_load(scene)
+        package = registry.module(scene.derivation)
+        d = Derivation(id=scene.derivation, paper=package.PAPER, title=package.TITLE,
+                       citation="", model="", symbols=made.symbols)
+        return render_module(d, made.outputs, scene_note=made.note)
+    d = registry.get(scene.derivation)
     given = ", ".join(f"{k} = {v!r} {d.symbols[k].unit}" for k, v in scene.parameters.items())
     note = (f"Specialized to scene {scene.name!r} ({scene.title}): outputs "
             f"{', '.join(scene.outputs)}; folded in: {given}.")
@@ -66,20 +94,15 @@ def operation_count(outputs: list[Output]) -> int:
     return sum(sp.count_ops(o.expr) for o in outputs)
 
 
-def scene_files(path_or_name, get: Callable[[str], Derivation]) -> dict[str, str]:
-    """File name -> source of the module of one scene: a drive-law scene
-    (``crane_sym.drive_law``) or a scene of a derivation's outputs."""
-    from .drive_law import drive_law_files, is_drive_law_scene
-    if is_drive_law_scene(path_or_name):
-        return drive_law_files(path_or_name)
+def scene_files(path_or_name: str | Path) -> dict[str, str]:
+    """File name -> source of the module of one scene (``generate --scene``)."""
     scene = load_scene(path_or_name)
-    d = get(scene.derivation)
-    return {module_name(scene): render_scene_module(d, scene)} if d.outputs else {}
+    return {module_name(scene): render_scene_module(scene)}
 
 
-def shipped_scene_modules(get: Callable[[str], Derivation]) -> dict[str, str]:
+def shipped_scene_modules() -> dict[str, str]:
     """File name -> source of the specialized module of every shipped scene."""
     files = {}
     for name in list_scenes():
-        files.update(scene_files(name, get))
+        files.update(scene_files(name))
     return files

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from .checks import FAIL, INCONCLUSIVE, PASS
+from .outcomes import FAIL, INCONCLUSIVE, PASS
 from .loads import Piece
 
 

@@ -11,7 +11,7 @@ import sympy as sp
 
 pytest.importorskip("scipy")
 
-from crane_sym import bench, bench_duhamel, bench_linear, registry, scenes  # noqa: E402
+from crane_sym import bench, bench_duhamel, bench_linear, bench_report, registry, scenes  # noqa: E402
 from crane_sym.cli import main  # noqa: E402
 from crane_sym.derivation import ODESystem  # noqa: E402
 
@@ -104,15 +104,15 @@ def test_duhamel_form_reads_the_relative_coordinate():
 
 def test_headline_and_table(rows):
     d = registry.get("travel_braking")
-    lines = bench.headline(rows)
+    lines = bench_report.headline(rows)
     assert lines[0].startswith("travel_braking: generated closed form against the fastest")
     assert "np.cos" in lines[0]
     assert len(lines) == 1 + len(d.outputs)
-    skipped = {(f, what) for f, what, _ in bench.not_applicable(d, rows)}
+    skipped = {(f, what) for f, what, _ in bench_report.not_applicable(d, rows)}
     assert ("peak_time", "SciPy integrators, Duhamel alternatives") in skipped
     assert ("velocity_m1", "Duhamel alternatives") in skipped
     assert ("elastic_force", "Duhamel alternatives") not in skipped
-    table = bench.as_markdown(rows).splitlines()
+    table = bench_report.as_markdown(rows).splitlines()
     assert len(table) == 2 + len(rows)
 
 

@@ -1,0 +1,87 @@
+"""Stage 4 of the scene pipeline: run a scene and plot it.
+
+Every scene takes the same path (``crane-sym run``): read and validate the
+TOML (``scenes.load_scene``) → specialize (``specialize``) → generate its
+module, written beside the plot as ``scene_<name>.py``, the file
+``crane-sym generate --scene`` writes → import that file and hand it to the
+derivation's ``scene_report(scene, module)`` → plot the report's panels.
+"""
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+from types import ModuleType
+
+from . import registry
+from .scenes import Scene, SceneError, SceneReport, load_scene
+from .specialize import module_name, render_scene_module
+
+__all__ = ["import_module_file", "plot_report", "run_scene"]
+
+
+def import_module_file(path: Path) -> ModuleType:
+    """Import the module the printer wrote at ``path`` (our own output, never
+    user text)."""
+    spec = importlib.util.spec_from_file_location(f"_crane_sym_scene_{path.stem}", path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, Path]:
+    """Evaluate a scene through its own generated module and plot it.
+
+    Parameters
+    ----------
+    scene : Scene, or a scene name or TOML path
+        From :func:`crane_sym.scenes.load_scene`, or what it reads.
+    outdir : Path
+        Folder for the module and the plot; created if needed.
+
+    Returns
+    -------
+    (SceneReport, Path)
+        The derivation's report (its last line names the module written) and
+        the PNG ``<outdir>/<scene.name>.png``.
+    """
+    if not isinstance(scene, Scene):
+        scene = load_scene(scene)
+    make = getattr(registry.module(scene.derivation), "scene_report", None)
+    if make is None:
+        raise SceneError(f"derivation {scene.derivation!r} has no scene_report()")
+    outdir = Path(outdir)
+    outdir.mkdir(parents=True, exist_ok=True)
+    source = outdir / module_name(scene)
+    source.write_text(render_scene_module(scene), encoding="utf-8")
+    report = make(scene, import_module_file(source))
+    if not isinstance(report, SceneReport) or not report.panels:
+        raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
+    report.lines.append(f"module written to {source}")
+    path = plot_report(report, scene.title, outdir / f"{scene.name}.png")
+    return report, path
+
+
+def plot_report(report: SceneReport, title: str, path: Path) -> Path:
+    """Write the report's panels, one subplot each, to the PNG ``path``."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    n = len(report.panels)
+    fig, axes = plt.subplots(n, 1, figsize=(8, 3.2 * n), squeeze=False,
+                             layout="constrained")
+    try:
+        for ax, panel in zip(axes[:, 0], report.panels):
+            for label, x, y in panel.curves:
+                ax.plot(x, y, label=label)
+            ax.set(title=panel.title, xlabel=panel.xlabel, ylabel=panel.ylabel)
+            ax.grid(True, alpha=0.4)
+            if len(panel.curves) > 1:
+                ax.legend(loc="lower right", framealpha=0.9)
+        fig.suptitle(title)
+        fig.savefig(path, dpi=120, metadata={"Software": None})
+    finally:
+        plt.close(fig)
+    return path
