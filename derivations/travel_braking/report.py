@@ -1,0 +1,107 @@
+"""What ``crane-sym run`` prints and plots for a scene of paper 000.
+
+Reads the generated NumPy module ``crane_sym.generated.travel_braking``, not
+the SymPy derivation; imports it only when a scene is run.
+"""
+from __future__ import annotations
+
+
+def scene_report(scene):
+    """Numbers and curves of a scene (see ``crane_sym.scenes``) for this model.
+
+    Uses the generated NumPy module, not SymPy.
+
+    Parameters
+    ----------
+    scene : crane_sym.scenes.Scene
+        With SI parameters ``m1, m2, c, P_t, W, v0`` and options
+        ``duration`` [s] and ``points``.
+
+    Returns
+    -------
+    crane_sym.scenes.SceneReport
+        Lines to print; ``values`` (SI): ``p``, ``f``, ``F_r``, ``F_max``,
+        ``t_max``, ``dynamic_factor``, ``F_max_over_P_t``, ``v1_min``,
+        ``v2_min``, ``t_slip_end`` and ``t_v2_zero`` (NaN when not reached
+        within the duration), ``t_stop_rigid``; panels "Elastic link force"
+        and "Velocities".
+    """
+    import math
+
+    import numpy as np
+
+    from crane_sym.generated import travel_braking as gen
+    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+
+    q = scene.parameters
+    load = {k: q[k] for k in ("m1", "m2", "c", "P_t", "W")}
+    rigid = {k: q[k] for k in ("m1", "m2", "P_t", "W")}
+    duration = scene.options["duration"]
+    times = np.linspace(0.0, duration, scene.options["points"])
+    force = gen.elastic_force(times, **load)
+    vel1 = gen.velocity_m1(times, v0=q["v0"], **load)
+    vel2 = gen.velocity_m2(times, v0=q["v0"], **load)
+
+    def first_zero(v):
+        """First time ``v`` reaches 0 on the grid (linear interpolation), or NaN."""
+        hits = np.flatnonzero(v <= 0.0)
+        if hits.size == 0:
+            return math.nan
+        i = int(hits[0])
+        if i == 0:
+            return float(times[0])
+        return float(times[i - 1] + (times[i] - times[i - 1]) * v[i - 1] / (v[i - 1] - v[i]))
+
+    freq = float(gen.natural_frequency(q["m1"], q["m2"], q["c"]))
+    link_rigid = float(gen.rigid_link_force(**rigid))
+    peak = float(gen.peak_elastic_force(**rigid))
+    peak_at = float(gen.peak_time(q["m1"], q["m2"], q["c"]))
+    values = {
+        "p": freq, "f": freq / (2 * math.pi), "F_r": link_rigid, "F_max": peak,
+        "t_max": peak_at, "dynamic_factor": peak / link_rigid,
+        "F_max_over_P_t": peak / q["P_t"],
+        "v1_min": float(vel1.min()), "v2_min": float(vel2.min()),
+        "t_slip_end": first_zero(vel1), "t_v2_zero": first_zero(vel2),
+        "t_stop_rigid": q["v0"] * (q["m1"] + q["m2"]) / (q["P_t"] + q["W"]),
+    }
+    span = f"0…{fq(duration, 's')}"
+    if math.isnan(values["t_slip_end"]):
+        slip = (f"brake slips throughout {span}: v1 > 0 "
+                f"(min v1 = {fq(values['v1_min'], 'm/s')})")
+    else:
+        slip = (f"brake stops slipping (v1 = 0) at t = {fq(values['t_slip_end'], 's')}; "
+                "the model is not valid after that")
+    if math.isnan(values["t_v2_zero"]):
+        moving = (f"crane moves throughout {span}: v2 > 0 "
+                  f"(min v2 = {fq(values['v2_min'], 'm/s')})")
+    else:
+        moving = (f"crane stops (v2 = 0) at t = {fq(values['t_v2_zero'], 's')}; "
+                  "the model is not valid after that")
+    lines = [
+        f"natural frequency      p = {fq(freq, 'rad/s')}, f = p/2π = {fq(values['f'], 'Hz')}",
+        f"rigid-drive link force F_r = {fq(link_rigid / 1e3, 'kN')}",
+        f"peak elastic force     F_max = {fq(peak / 1e3, 'kN')} "
+        f"at t_max = {fq(peak_at, 's')}",
+        f"dynamic factor         F_max/F_r = {fq(values['dynamic_factor'])}",
+        f"peak over brake force  F_max/P_t = {fq(values['F_max_over_P_t'])}",
+        f"validity               {slip}",
+        f"                       {moving}",
+        f"rigid crane stops after v0·(m1 + m2)/(P_t + W) = "
+        f"{fq(values['t_stop_rigid'], 's')}",
+    ]
+    if peak_at > duration:
+        lines.append(f"note: t_max lies beyond the plotted duration {fq(duration, 's')}")
+    elif peak_at > values["t_slip_end"]:
+        lines.append("note: t_max comes after the brake stops slipping; "
+                     "the peak is not reached")
+    panels = [
+        Panel("Elastic link force", "F [kN]", [
+            ("F(t)", times, force / 1e3),
+            ("F_r (rigid drive)", times, np.full_like(times, link_rigid / 1e3)),
+        ]),
+        Panel("Velocities", "v [m/s]", [
+            ("v1 (motor side, m1)", times, vel1),
+            ("v2 (crane side, m2)", times, vel2),
+        ]),
+    ]
+    return SceneReport(lines=lines, values=values, panels=panels)
