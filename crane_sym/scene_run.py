@@ -8,15 +8,18 @@ derivation's ``scene_report(scene, module)`` → plot the report's panels.
 """
 from __future__ import annotations
 
+import importlib
 import importlib.util
+import inspect
 from pathlib import Path
 from types import ModuleType
+from typing import Callable
 
 from . import registry
 from .scenes import Scene, SceneError, SceneReport, load_scene
 from .specialize import module_name, render_scene_module
 
-__all__ = ["import_module_file", "plot_report", "run_scene"]
+__all__ = ["import_module_file", "plot_report", "run_scene", "time_function"]
 
 
 def import_module_file(path: Path) -> ModuleType:
@@ -26,6 +29,23 @@ def import_module_file(path: Path) -> ModuleType:
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
     return module
+
+
+def time_function(scene: Scene, module: ModuleType, name: str) -> Callable:
+    """``name`` as a function of time alone: from the scene's own module when
+    the scene names it among its outputs, else from the paper's general
+    module ``crane_sym.generated.<id>`` with the scene's parameters filled in."""
+    if name in scene.outputs:
+        return getattr(module, name)
+    general = getattr(importlib.import_module(f"crane_sym.generated.{scene.derivation}"),
+                      name)
+    names = [p for p in inspect.signature(general).parameters if p != "t"]
+    missing = [p for p in names if p not in scene.parameters]
+    if missing:
+        raise SceneError(f"scene {scene.name!r}: {name} needs {missing}, which the scene "
+                         "does not give")
+    given = {p: scene.parameters[p] for p in names}
+    return lambda t: general(t, **given)
 
 
 def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, Path]:

@@ -1,21 +1,25 @@
 """What ``crane-sym run`` prints and plots for a scene of paper 000.
 
-Reads the generated NumPy module ``crane_sym.generated.travel_braking``, not
-the SymPy derivation; imports it only when a scene is run.
+Curves come from the scene's own generated module (the outputs it names),
+scalars from the general module ``crane_sym.generated.travel_braking``;
+never from SymPy. Imports happen only when a scene is run.
 """
 from __future__ import annotations
 
 
-def scene_report(scene):
+def scene_report(scene, module):
     """Numbers and curves of a scene (see ``crane_sym.scenes``) for this model.
 
-    Uses the generated NumPy module, not SymPy.
+    Uses the generated NumPy modules, not SymPy.
 
     Parameters
     ----------
     scene : crane_sym.scenes.Scene
         With SI parameters ``m1, m2, c, P_t, W, v0`` and options
         ``duration`` [s] and ``points``.
+    module : module
+        The scene's generated module (``scene_<name>.py``): the curves of the
+        outputs the scene names come from it.
 
     Returns
     -------
@@ -31,16 +35,15 @@ def scene_report(scene):
     import numpy as np
 
     from crane_sym.generated import travel_braking as gen
+    from crane_sym.scene_run import time_function
     from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
     q = scene.parameters
-    load = {k: q[k] for k in ("m1", "m2", "c", "P_t", "W")}
     rigid = {k: q[k] for k in ("m1", "m2", "P_t", "W")}
     duration = scene.options["duration"]
     times = np.linspace(0.0, duration, scene.options["points"])
-    force = gen.elastic_force(times, **load)
-    vel1 = gen.velocity_m1(times, v0=q["v0"], **load)
-    vel2 = gen.velocity_m2(times, v0=q["v0"], **load)
+    force, vel1, vel2 = (time_function(scene, module, name)(times)
+                         for name in ("elastic_force", "velocity_m1", "velocity_m2"))
 
     def first_zero(v):
         """First time ``v`` reaches 0 on the grid (linear interpolation), or NaN."""
