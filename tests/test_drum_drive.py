@@ -11,14 +11,17 @@ import pytest
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
 
-from crane_sym.derivations import drum_drive as m
-from crane_sym.derivations import drum_drive_published as pub
+from crane_sym.derivations import drum_drive
+from crane_sym.derivations.drum_drive import model as m
+from crane_sym.derivations.drum_drive import published as pub
+from crane_sym.derivations.drum_drive.report import _rhs_functions
 from crane_sym.lagrange import lagrange_equations
+from crane_sym.scenes import scenes_directory
 
 integrate = pytest.importorskip("scipy.integrate")
 
 PAPER_TEXT = Path("/work/shared/seeds") / m.PAPER
-SCENE = Path(m.__file__).parent / "scenes" / "drum_drive_example.toml"
+SCENE = scenes_directory() / "drum_drive_example.toml"
 
 EXPECTED = {
     "(1), coordinates": "discrepancy",
@@ -69,7 +72,7 @@ EXAMPLE = {"I1": 13.0, "I2": 3.0, "I3": 50.0, "C1": 2e4, "C2": 5e4, "nu1": 20.0,
            "r": 0.25, "D": 0.5, "M0": 440.0, "F0": 2e4}
 
 
-DERIVATION = m.ID
+DERIVATION = drum_drive.ID
 
 
 @pytest.fixture(scope="module")
@@ -80,7 +83,7 @@ def scene():
 
 @pytest.fixture(scope="module")
 def report(scene):
-    return m.scene_report(scene)
+    return drum_drive.scene_report(scene)
 
 
 def _f(d, name):
@@ -157,7 +160,7 @@ def test_lagrange_matches_lagrangesmethod_on_conservative_part():
 
 
 def test_equations_of_motion_are_symmetric_and_dissipative(derivation):
-    make = m._rhs_functions(derivation)
+    make = _rhs_functions(derivation)
     _, _, _, (M, C, K) = make(EXAMPLE, lambda tt: 0.0)
     for X in (M, C, K):
         assert np.allclose(X, X.T, rtol=1e-14, atol=0)
@@ -242,7 +245,7 @@ def test_drum_torque_and_traction_outputs(derivation):
 
 
 def test_steady_running_against_a_long_simulation(derivation):
-    make = m._rhs_functions(derivation)
+    make = _rhs_functions(derivation)
     W = 500.0
     rhs, jac, energy, _ = make(EXAMPLE, lambda tt: W)
     sol = integrate.solve_ivp(rhs, (0, 250), np.zeros(12), method="LSODA", jac=jac,

@@ -1,5 +1,5 @@
 """Paper 004's generated functions on hard cases: mpmath references on the
-seeded grids of ``drum_drive_hard_cases``, and properties of the generated
+seeded grids of ``drum_drive.hard_cases``, and properties of the generated
 system matrices and state derivative over parameter ratios 1e-8 … 1e8
 (symmetry, definiteness, energy balance, the Jacobian's block structure)."""
 import numpy as np
@@ -8,7 +8,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import crane_sym.generated.drum_drive as gen
-from crane_sym.derivations.drum_drive_hard_cases import hard_cases
+from crane_sym.derivations.drum_drive.hard_cases import hard_cases
 from crane_sym.reference import accuracy
 
 EPS = np.finfo(float).eps

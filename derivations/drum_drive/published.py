@@ -21,7 +21,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics.units import energy, force, length, mass, time, velocity
 
-from crane_sym.derivations.drum_drive import (
+from .model import (
     C1, C2, C_t, C_y, C_z, D, F1, F1_lim, F2, I1, I2, I3, L, M0, M_d, ONE, PAPER, Phi_, Pi_,
     ROT_DAMP, STIFF, T_, T_el, TORQUE, a_v, alpha, b_v, g, m3, m_sum, mu, mu_op, nu1, nu2,
     nu_t, nu_y, nu_z, phi1, phi2, phi3, q, r, t, v_xi, vy, vz, xi, y, y0, z, F_pulse, F1_t,
