@@ -17,9 +17,8 @@ from crane_sym.derivation import ODESystem  # noqa: E402
 
 
 def _scenes(derivation):
-    from crane_sym.drive_law import is_drive_law_scene
-    return [scenes.load_scene(n) for n in scenes.list_scenes()
-            if not is_drive_law_scene(n) and scenes.load_scene(n).derivation == derivation]
+    loaded = [scenes.load_scene(n) for n in scenes.list_scenes()]
+    return [s for s in loaded if not s.load_table and s.derivation == derivation]
 
 
 @pytest.fixture(scope="module")

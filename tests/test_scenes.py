@@ -7,7 +7,8 @@ import numpy as np
 import pytest
 
 from crane_sym.scenes import (Scene, SceneError, SceneReport, format_quantity,
-                              list_scenes, load_scene, run_scene, scenes_directory)
+                              list_scenes, load_scene, scenes_directory)
+from crane_sym.scene_run import run_scene
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 
@@ -40,7 +41,7 @@ def crane() -> Scene:
 
 def test_shipped_scene_is_listed():
     assert "overhead_crane_50t" in list_scenes()
-    assert (scenes_directory() / "overhead_crane_50t.toml").is_file()
+    assert (scenes_directory("travel_braking") / "overhead_crane_50t.toml").is_file()
 
 
 def test_50t_scene_loads_in_si(crane):
@@ -60,7 +61,7 @@ def test_50t_scene_loads_in_si(crane):
 
 
 def test_load_by_path_equals_load_by_name(crane):
-    by_path = load_scene(scenes_directory() / "overhead_crane_50t.toml")
+    by_path = load_scene(scenes_directory("travel_braking") / "overhead_crane_50t.toml")
     assert by_path.parameters == crane.parameters
     assert by_path.options == crane.options
 

@@ -46,13 +46,13 @@ def test_scene_module_is_smaller_and_takes_time_only(scene):
     assert [str(a) for o in small for a in o.args] == ["t"] * len(small)
     assert specialize.operation_count(small) < specialize.operation_count(
         [d.output(n) for n in scene.outputs])
-    text = specialize.render_scene_module(d, scene)
+    text = specialize.render_scene_module(scene)
     assert "def natural_frequency" not in text and "_diff_of_products" not in text
     assert "m2 = 110000.0 kg" in text
 
 
 def test_shipped_scene_modules_are_generated_and_fresh(scene):
-    files = specialize.shipped_scene_modules(registry.get)
+    files = specialize.shipped_scene_modules()
     assert "scene_overhead_crane_50t.py" in files
     from crane_sym import codegen
     on_disk = codegen.default_directory() / "scene_overhead_crane_50t.py"
@@ -91,7 +91,7 @@ def test_switched_off_damping_leaves_no_damping_code(tmp_path):
 
 
 def _scene_text(options: str, extra_parameters: str = "", inputs: str = '["W"]') -> str:
-    text = (scenes.scenes_directory() / f"{UNDAMPED}.toml").read_text()
+    text = (scenes.scenes_directory("drum_drive") / f"{UNDAMPED}.toml").read_text()
     text = text.replace('inputs = ["W"]', f"inputs = {inputs}")
     text = text.replace("damping = false", options)
     return text.replace("[parameters]\n", "[parameters]\n" + extra_parameters)

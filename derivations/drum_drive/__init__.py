@@ -28,6 +28,7 @@ Files:
   "damping" switch, bench parameters and the ODE system the bench integrates.
 - ``hard_cases.py``: seeded hard cases for ``crane-sym accuracy``.
 - ``report.py``: ``scene_report`` — the simulation of the example (Fig. 3).
+- ``report_state.py``: a scene of the state derivative alone, simulated.
 
 The package does nothing on import; ``build()`` returns the ``Derivation``.
 """

@@ -1,6 +1,10 @@
-"""What ``crane-sym run`` prints and plots for a scene of paper 004: the
-simulation of the example (Fig. 3) with the consistent model, through the
-generated state derivative, Jacobian and system matrices of (12).
+"""What ``crane-sym run`` prints and plots for a scene of paper 004.
+
+A scene that asks for ``pulsating_force`` is the example of the paper
+(Fig. 3): simulated with the consistent model through the generated state
+derivative, Jacobian and system matrices of (12), under the load of the
+scene's own module. A scene that asks for ``state_derivative`` is simulated
+with its own module alone (``report_state``).
 """
 from __future__ import annotations
 
@@ -77,7 +81,17 @@ def _rhs_functions(d: Derivation):
     return make
 
 
-def scene_report(scene):
+def scene_report(scene, module):
+    """Numbers and curves of a scene: the example of the paper (Fig. 3) when
+    the scene asks for ``pulsating_force``, else the simulation of the scene's
+    own state derivative (``report_state.state_report``)."""
+    if "pulsating_force" not in scene.outputs:
+        from .report_state import state_report
+        return state_report(scene, module)
+    return example_report(scene, module)
+
+
+def example_report(scene, module):
     """Simulate the example of the paper (Fig. 3) with the consistent model.
 
     Parameters
@@ -86,6 +100,9 @@ def scene_report(scene):
         SI parameters of the outputs; options ``duration``, ``points``, the
         simulation-only values ``SIM_OPTIONS`` and ``m_L_empty`` (mass of the run
         without loads), with units, and optionally ``method`` of ``solve_ivp``.
+    module : module
+        The scene's generated module: its ``pulsating_force(t)`` is the load W(t)
+        of (21) on the run.
 
     Returns
     -------
@@ -115,9 +132,7 @@ def scene_report(scene):
         args = sorted(expr.free_symbols, key=str)
         return sp.lambdify(args, expr, "numpy")(*[({**p, **at})[str(a)] for a in args])
 
-    pulse = d.output("pulsating_force")
-    f_pulse = sp.lambdify(pulse.args, pulse.expr, "numpy")
-    load = lambda tt: f_pulse(tt, *[p[str(a)] for a in pulse.args[1:]])  # noqa: E731
+    load = module.pulsating_force                  # W(t) of (21), the scene's own module
     make = _rhs_functions(d)
     rhs, jac, energy, (Mn, _, Kn) = make(p, load)
 
