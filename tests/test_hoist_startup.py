@@ -10,12 +10,13 @@ import pytest
 import sympy as sp
 
 from crane_sym import codegen
-from crane_sym.derivations import hoist_startup as m
-from crane_sym.derivations import hoist_startup_published as pub
+from crane_sym.derivations import hoist_startup as pkg
+from crane_sym.derivations.hoist_startup import model as m
+from crane_sym.derivations.hoist_startup import outputs, tables
 
 integrate = pytest.importorskip("scipy.integrate")
 
-PAPER_TEXT = Path("/work/shared/seeds") / m.PAPER
+PAPER_TEXT = Path("/work/shared/seeds") / pkg.PAPER
 
 EXPECTED = {
     "(1)": "confirmed", "(1), load": "confirmed",
@@ -82,14 +83,16 @@ EXPECTED = {
     "t4* (after (66))": "confirmed",
     "max k̃4 (after (66))": "confirmed_with_convention",   # printed as k̃_дин3
     "Table 2, columns": "remark", "Table 2, a_i term": "remark",
-    **{m.table1_label(i, f): "confirmed" for i in (2, 3, 4) for f in m.TABLE_COLUMNS},
+    **{tables.table1_label(i, f): "confirmed"
+       for i in (2, 3, 4) for f in tables.TABLE_COLUMNS},
     # k1, k2 reproduced; k3, k4 are printed as 1 + (66).
-    **{m.table2_label(i, v, tp, f): "confirmed" if i in (1, 2) else "discrepancy"
-       for i in m.TABLE2_ROWS for v, tp in m.TABLE2_BLOCKS for f in m.TABLE_COLUMNS},
+    **{tables.table2_label(i, v, tp, f): "confirmed" if i in (1, 2) else "discrepancy"
+       for i in tables.TABLE2_ROWS for v, tp in tables.TABLE2_BLOCKS
+       for f in tables.TABLE_COLUMNS},
 }
 
 
-DERIVATION = m.ID
+DERIVATION = pkg.ID
 
 
 def rhs_of(d, label):
@@ -122,7 +125,7 @@ def test_every_record_targets_a_step_and_labels_are_unique(derivation):
     for f in derivation.published:
         if f.printed is not None:
             derivation.step(f.target)
-        assert f.provenance.startswith(m.PAPER)
+        assert f.provenance.startswith(pkg.PAPER)
         assert not f.reconstructed or "reconstructed" in f.provenance
 
 
@@ -130,7 +133,7 @@ def test_printed_latex_is_verbatim():
     if not PAPER_TEXT.exists():
         pytest.skip(f"paper text {PAPER_TEXT} not available")
     text = PAPER_TEXT.read_text(encoding="utf-8")
-    for f in pub.PUBLISHED:
+    for f in pkg.published_formulas():
         assert f.latex in text, f.label
 
 
@@ -142,7 +145,7 @@ def test_symbol_table_covers_every_formula(derivation):
 
 
 def test_build_does_nothing_on_import():
-    assert not hasattr(m, "d") and callable(m.build)
+    assert not hasattr(pkg, "d") and callable(pkg.build)
 
 
 # --- verdicts ------------------------------------------------------------------------
@@ -333,7 +336,7 @@ def test_drive_law_coefficient_against_two_mass_integration(derivation, case, i)
 
 def test_windowed_matches_the_piecewise_at_breakpoints():
     pw = sp.Piecewise((m.t, m.t < 1), (2 - m.t, m.t < 3), (-1, True))
-    w = m.windowed(pw)
+    w = outputs.windowed(pw)
     for value in (0, 0.5, 2, 4):
         assert w.subs(m.t, value) == pw.subs(m.t, value)
     assert w.subs(m.t, 1) == 1 and w.subs(m.t, 3) == -1   # H(0) = 0: t <= b
@@ -346,19 +349,19 @@ def _decimal(text):
 
 
 def test_table1_reproduced(derivation):
-    for i, row in pub.TABLE1.items():
-        for frac, text in zip(m.TABLE_COLUMNS, row):
+    for i, row in tables.TABLE1.items():
+        for frac, text in zip(tables.TABLE_COLUMNS, row):
             value, half = _decimal(text)
-            derived = rhs_of(derivation, m.table1_label(i, frac))
+            derived = rhs_of(derivation, tables.table1_label(i, frac))
             assert abs(Decimal(str(sp.N(derived, 20))) - value) <= half, (i, frac)
 
 
 def test_table2_reproduced_and_its_extra_one(derivation):
-    for i in m.TABLE2_ROWS:
-        for block, row in zip(m.TABLE2_BLOCKS, pub.TABLE2[i]):
-            for frac, text in zip(m.TABLE_COLUMNS, row):
+    for i in tables.TABLE2_ROWS:
+        for block, row in zip(tables.TABLE2_BLOCKS, tables.TABLE2[i]):
+            for frac, text in zip(tables.TABLE_COLUMNS, row):
                 value, half = _decimal(text)
-                derived = rhs_of(derivation, m.table2_label(i, *block, frac))
+                derived = rhs_of(derivation, tables.table2_label(i, *block, frac))
                 shown = derived if i in (1, 2) else derived + 1     # rows 3, 4: 1 + (66)
                 if text == "59,8662":          # one digit too many: 59.865994...
                     half = Decimal("0.0005")
@@ -367,10 +370,10 @@ def test_table2_reproduced_and_its_extra_one(derivation):
 
 def test_table_cells_carry_the_tolerance_of_their_last_digit(derivation):
     cell = next(f for f in derivation.published
-                if f.label == m.table1_label(4, sp.Rational(1, 4)))
+                if f.label == tables.table1_label(4, sp.Rational(1, 4)))
     assert cell.tolerance == pytest.approx(0.00005 / 1.582)
     zero = next(f for f in derivation.published
-                if f.label == m.table1_label(3, sp.Integer(0)))
+                if f.label == tables.table1_label(3, sp.Integer(0)))
     assert zero.tolerance == 0
 
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from crane_sym import registry
-from crane_sym.derivations import hoist_startup_scenes as hss
+from crane_sym.derivations.hoist_startup import report as hss
 from crane_sym.scenes import SceneError, SceneReport, load_scene, run_scene, scenes_directory
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

@@ -19,8 +19,9 @@ The scene option ``figure`` selects what a scene reproduces:
     normalisation of Table 1 against (65), Table 1 and the two maxima printed
     after it.
 
-Nothing runs on import; the derivation modules are imported inside the
-functions (``hoist_startup`` imports this module).
+Nothing runs on import; the model and the published records
+(``published_optimum``, ``tables``) are imported inside the functions that
+read them.
 """
 from __future__ import annotations
 
@@ -165,7 +166,7 @@ def _exact(scene: Scene) -> dict[str, sp.Rational]:
 
 def law_polynomial(i: int, v0: sp.Rational, t_n: sp.Rational) -> sp.Expr:
     """a_i(t) of (30) with numbers, on :math:`0 \\le t < t_п` (0 after)."""
-    from crane_sym.derivations import hoist_startup as hs
+    from . import model as hs
     return sp.expand(hs.PRINTED_LAWS[i].subs({hs.v0: v0, hs.t_n: t_n}))
 
 
@@ -211,7 +212,8 @@ def _rigid(gen: ModuleType, case: str, i: int, times: np.ndarray, q: dict) -> np
 
 def _printed_maxima() -> dict[int, tuple[float, str]]:
     """The largest k̃_i^(opt) the paper states, per law: (value, where and how)."""
-    from crane_sym.derivations.hoist_startup_published import PUBLISHED, TABLE1
+    from .published_optimum import PUBLISHED
+    from .tables import TABLE1
     printed = {p.label: p.printed.rhs for p in PUBLISHED if p.printed is not None}
     cell = {i: max((float(c.replace(",", ".")), n / 4) for n, c in enumerate(row))
             for i, row in TABLE1.items()}

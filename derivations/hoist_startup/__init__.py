@@ -1,0 +1,74 @@
+"""Duhamel's integral for the start-up of a crane hoist: rope loads and dynamic factors.
+
+Source: ``002_f8509f3826f601de.txt`` — Yu. Chovnyuk, M. Dykteruk, S. Komotska,
+"Use of Duhamel's integral in the analysis of forced vibrations and dynamic
+loads of the elastic links of crane hoisting mechanisms at start-up"
+(in Ukrainian).
+
+The paper models the hoist as two masses (drive m1, load m2) joined by the
+rope of stiffness C, reduces the system to one equation in the stretch
+x = x1 − x2 (1)–(6), fixes the constants for lifting "with pick-up" (slack
+rope) and "from weight" (preloaded rope) (7)–(14), writes the response as a
+Duhamel integral (15)–(24), defines dynamic coefficients (25)–(27), the drive
+laws (28)–(31), works four classic loads (32)–(53) and closes with an
+Euler–Poisson "optimum" (54)–(66) and Tables 1–2.
+
+This package rebuilds every step from the energies and forces of the model,
+transcribes every printed formula, and emits the dynamic coefficient over time
+for each load case and for each drive law a_i in both lifting cases. It does
+nothing on import; ``build()`` returns the ``Derivation``.
+
+- ``model.py``: ID, PAPER, TITLE, symbols, symbol table, LaTeX names, the model
+  text, the test laws, the print's Duhamel integrals, the drive laws of (30).
+- ``steps.py``: steps (1)–(31); ``steps_load_cases.py``: (32)–(53);
+  ``steps_optimum.py``: (54)–(66).
+- ``published.py``: printed formulas (1)–(31); ``published_load_cases.py``:
+  (32)–(53); ``published_optimum.py``: (54)–(66) and the maxima after (66).
+- ``tables.py``: Tables 1–2, derived and printed.
+- ``outputs.py``: generated functions, ODE systems, bench parameters.
+- ``hard_cases.py``: seeded hard cases for ``crane-sym accuracy``.
+- ``report.py``: ``scene_report(scene)`` for ``crane-sym run``.
+"""
+from __future__ import annotations
+
+from crane_sym.derivation import Derivation
+from crane_sym.published import PublishedFormula
+
+from .hard_cases import hard_cases
+from .model import ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .report import scene_report
+from .steps import (drive_laws, duhamel_integral, dynamic_coefficients,
+                    equations_of_motion, initial_conditions)
+from .steps_load_cases import load_cases
+from .steps_optimum import optimum
+
+__all__ = ["ID", "PAPER", "TITLE", "LATEX_NAMES", "build", "hard_cases",
+           "published_formulas", "scene_report"]
+
+
+def published_formulas() -> list[PublishedFormula]:
+    """Every printed formula and table cell, in the paper's order (the
+    transcriptions are imported, and built, on the first call)."""
+    from . import published, published_load_cases, published_optimum, tables
+    return [*published.PUBLISHED, *published_load_cases.PUBLISHED,
+            *published_optimum.PUBLISHED, *tables.PUBLISHED]
+
+
+def build() -> Derivation:
+    """Rebuild eqs (1)–(66) and Tables 1–2 from the two-mass model."""
+    d = Derivation(id=ID, paper=PAPER, title=TITLE,
+                   citation="Yu. Chovnyuk, M. Dykteruk, S. Komotska (Kyiv)",
+                   model=MODEL, symbols=SYMBOLS)
+    eq1, eq2 = equations_of_motion(d)
+    initial_conditions(d, eq2)
+    duhamel_integral(d)
+    dynamic_coefficients(d, eq1, eq2)
+    drive_laws(d)
+    loads = load_cases(d)
+    optimum(d, eq1, eq2)
+    from . import outputs, tables
+    tables.derive_tables(d)
+    d.published.extend(published_formulas())
+    d.outputs.extend(outputs.code_outputs(d, loads))
+    outputs.attach(d)   # ODE systems and bench parameters for `crane-sym bench`
+    return d
