@@ -36,13 +36,17 @@ from crane_sym.published import PublishedFormula
 
 from .hard_cases import hard_cases
 from .model import ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .drive_law_scene import DRIVE_LAW
 from .report import scene_report
 from .steps import (drive_laws, duhamel_integral, dynamic_coefficients,
                     equations_of_motion, initial_conditions)
 from .steps_load_cases import load_cases
 from .steps_optimum import optimum
 
-__all__ = ["ID", "PAPER", "TITLE", "LATEX_NAMES", "build", "hard_cases",
+#: Loads a scene may give as data (crane_sym.derivation.SceneLoad).
+SCENE_LOADS = {DRIVE_LAW.table: DRIVE_LAW}
+
+__all__ = ["ID", "PAPER", "TITLE", "LATEX_NAMES", "SCENE_LOADS", "build", "hard_cases",
            "published_formulas", "scene_report"]
 
 

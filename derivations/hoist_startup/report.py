@@ -2,7 +2,7 @@
 
 ``scene_report(scene)`` evaluates the generated module
 ``crane_sym.generated.hoist_startup`` (by function name, never SymPy) for the
-curves, and the symbolic Duhamel response of ``crane_sym.drive_law`` for the
+curves, and the symbolic Duhamel response of ``drive_law`` for the
 maxima, which ``extrema.maximum_on_interval`` finds with a guarantee
 (symbolic critical points or interval arithmetic), never by sampling alone.
 The scene option ``figure`` selects what a scene reproduces:
@@ -33,7 +33,7 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
-from crane_sym import drive_law
+from . import drive_law
 from crane_sym.extrema import Extremum, maximum_on_interval
 from crane_sym.loads import DEFAULT_TIME, exact_number
 from crane_sym.scenes import Panel, Scene, SceneError, SceneReport
@@ -67,8 +67,12 @@ def _check_defined(scene: Scene, gen: ModuleType) -> None:
                     f"{derived!r}")
 
 
-def scene_report(scene: Scene) -> SceneReport:
+def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
     """Numbers and curves of a paper-002 scene (see ``crane_sym.scenes``).
+
+    A scene with its own ``[drive_law]`` is evaluated through its own module
+    (``drive_law_scene.drive_law_report``); the figure scenes read the
+    general module ``crane_sym.generated.hoist_startup``.
 
     Parameters
     ----------
@@ -84,6 +88,9 @@ def scene_report(scene: Scene) -> SceneReport:
         Always the values ``Omega`` [rad/s] and ``T`` [s]; the others are
         listed by :func:`fig3`, :func:`fig5`, :func:`drive_laws`.
     """
+    if scene.load_table == "drive_law":
+        from .drive_law_scene import drive_law_report
+        return drive_law_report(scene, module)
     figure = scene.options.get("figure")
     if figure not in FIGURES:
         raise SceneError(f"scene {scene.name!r}: option 'figure' must be one of "
@@ -171,7 +178,7 @@ def law_polynomial(i: int, v0: sp.Rational, t_n: sp.Rational) -> sp.Expr:
 
 
 def law_response(i: int, case: str, exact: dict[str, sp.Rational]) -> drive_law.DriveLawResponse:
-    """The symbolic response of the hoist to a_i, by ``crane_sym.drive_law``; the
+    """The symbolic response of the hoist to a_i, by ``drive_law``; the
     contact time is (29) with the scene's v0, as in the generated functions."""
     poly = sp.Poly(law_polynomial(i, exact["v0"], exact["t_n"]), DEFAULT_TIME)
     law = drive_law.drive_law([0, exact["t_n"]], [poly.all_coeffs()[::-1]])
