@@ -1,4 +1,4 @@
-"""A user's piecewise-polynomial drive law (crane_sym.drive_law): the generated
+"""A user's piecewise-polynomial drive law (paper 002, a scene load): the generated
 module against direct integration of the two-mass hoist and against quadrature
 of Duhamel's integral; continuity at the breakpoints; scene validation."""
 import importlib.util
@@ -8,8 +8,11 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import drive_law as dl
-from crane_sym.scenes import SceneError, scenes_directory
+from crane_sym.derivations.hoist_startup import drive_law as dl
+from crane_sym.derivations.hoist_startup import drive_law_scene as dls
+from crane_sym.scene_run import run_scene
+from crane_sym.scenes import SceneError, load_scene, scenes_directory
+from crane_sym.specialize import render_scene_module, scene_files
 
 integrate = pytest.importorskip("scipy.integrate")
 
@@ -53,16 +56,15 @@ def case(request, tmp_path_factory):
     """(scene, response, generated module) for the example law in both lifting cases."""
     tmp = tmp_path_factory.mktemp(request.param)
     if request.param == dl.FROM_WEIGHT:
-        scene = dl.load_drive_law_scene(EXAMPLE)
+        scene = load_scene(EXAMPLE)
     else:
-        scene = dl.load_drive_law_scene(_write(
-            tmp, HEAD + LAW.format(lifting="pickup") + OPTIONS))
-    module = _import(dl.render_drive_law_module(scene), tmp / "scene_module.py")
-    return scene, scene.response(), module
+        scene = load_scene(_write(tmp, HEAD + LAW.format(lifting="pickup") + OPTIONS))
+    module = _import(render_scene_module(scene), tmp / "scene_module.py")
+    return scene, dls.response(scene), module
 
 
 def _numbers(scene):
-    return tuple(float(v) for v in (scene.m1, scene.m2, scene.C, scene.g))
+    return tuple(float(scene.parameters[k]) for k in ("m1", "m2", "C", "g"))
 
 
 def _acceleration(t: float) -> float:
@@ -77,19 +79,20 @@ def _acceleration(t: float) -> float:
 
 
 def _resistance(t: float, scene, tau0: float | None) -> float:
-    weight = float(scene.m2 * scene.g)
+    weight = float(scene.parameters["m2"] * scene.parameters["g"])
     return weight if tau0 is None else weight * min(t / tau0, 1.0)
 
 
 def test_example_scene_reads_in_si():
-    scene = dl.load_drive_law_scene(EXAMPLE)
-    assert (scene.m1, scene.m2, scene.C, scene.g) == (2000, 8000, 10**6, sp.Rational(981, 100))
-    assert scene.breakpoints == (0, sp.Rational(1, 4), 1, sp.Rational(5, 4))
-    assert scene.coefficients == ((0, 2), (sp.Rational(1, 2),), (sp.Rational(1, 2), -2))
-    assert len(scene.coefficients) == 3                          # a 3-piece law
-    assert scene.lifting == dl.FROM_WEIGHT and scene.duration == 2.5
-    assert dl.is_drive_law_scene(EXAMPLE)
-    assert not dl.is_drive_law_scene("overhead_crane_50t")
+    scene = load_scene(EXAMPLE)
+    r = dls.response(scene)
+    assert (r.m1, r.m2, r.C, r.g) == (2000, 8000, 10**6, sp.Rational(981, 100))
+    assert scene.load.breakpoints == (0, sp.Rational(1, 4), 1, sp.Rational(5, 4))
+    assert scene.load.coefficients == ((0, 2), (sp.Rational(1, 2),), (sp.Rational(1, 2), -2))
+    assert len(scene.load.coefficients) == 3                     # a 3-piece law
+    assert scene.load.lifting == dl.FROM_WEIGHT and scene.options["duration"] == 2.5
+    assert scene.load_table == "drive_law"
+    assert load_scene("overhead_crane_50t").load_table == ""
 
 
 def test_generated_functions_take_time_only_and_validate(case):
@@ -173,7 +176,7 @@ def test_against_quadrature_of_the_duhamel_integral(case):
 def test_stretch_and_rate_are_continuous_at_every_breakpoint(case):
     scene, response, module = case
     pieces, t = response.stretch.pieces, response.t
-    assert len(pieces) == (5 if scene.lifting == dl.PICKUP else 4)
+    assert len(pieces) == (5 if scene.load.lifting == dl.PICKUP else 4)
     for left, right in zip(pieces[:-1], pieces[1:]):
         b = left.end
         assert b == right.start
@@ -197,7 +200,7 @@ def test_strings_in_the_law_are_refused_without_evaluation(tmp_path):
                f"coefficients = {coefficients}\n")
         path = _write(tmp_path, HEAD + law + OPTIONS)
         with pytest.raises(SceneError, match="string|not strings|sequence of numbers"):
-            dl.load_drive_law_scene(path)
+            load_scene(path)
     with pytest.raises(TypeError, match="never evaluated"):
         dl.drive_law([0, 1], [["1 + 1"]])
     assert not marker.exists()
@@ -212,20 +215,20 @@ def test_strings_in_the_law_are_refused_without_evaluation(tmp_path):
 ])
 def test_bad_laws_name_what_is_wrong(tmp_path, law, message):
     with pytest.raises(SceneError, match=message):
-        dl.load_drive_law_scene(_write(tmp_path, HEAD + law + OPTIONS))
+        load_scene(_write(tmp_path, HEAD + law + OPTIONS))
 
 
 def test_bad_system_data_and_tables_are_named(tmp_path):
     law = LAW.format(lifting="from_weight")
-    with pytest.raises(SceneError, match="missing \\['g'\\]"):
-        dl.load_drive_law_scene(_write(tmp_path, HEAD.replace('g = "9.81 m/s^2"\n', "")
+    with pytest.raises(SceneError, match="parameter 'g' .* is missing"):
+        load_scene(_write(tmp_path, HEAD.replace('g = "9.81 m/s^2"\n', "")
                                        + law + OPTIONS))
     with pytest.raises(SceneError, match="parameter 'C'"):
-        dl.load_drive_law_scene(_write(tmp_path, HEAD.replace("N/m", "N") + law + OPTIONS))
+        load_scene(_write(tmp_path, HEAD.replace("N/m", "N") + law + OPTIONS))
     with pytest.raises(SceneError, match=r"unknown tables \['extra'\]"):
-        dl.load_drive_law_scene(_write(tmp_path, HEAD + law + OPTIONS + "[extra]\n"))
-    with pytest.raises(SceneError, match="drives the model of 'hoist_startup'"):
-        dl.load_drive_law_scene(_write(tmp_path, HEAD.replace(
+        load_scene(_write(tmp_path, HEAD + law + OPTIONS + "[extra]\n"))
+    with pytest.raises(SceneError, match=r"unknown tables \['drive_law'\]"):
+        load_scene(_write(tmp_path, HEAD.replace(
             '"hoist_startup"', '"travel_braking"') + law + OPTIONS))
 
 
@@ -234,10 +237,10 @@ def test_units_of_the_law_are_converted(tmp_path):
     law = ('[drive_law]\nlifting = "from_weight"\ntime_unit = "ms"\n'
            'acceleration_unit = "mm/s^2"\nbreakpoints = [0, 250, 1000, 1250]\n'
            "coefficients = [[0, 2.0], [500], [500, -2.0]]\n")
-    scene = dl.load_drive_law_scene(_write(tmp_path, HEAD + law + OPTIONS))
-    example = dl.load_drive_law_scene(EXAMPLE)
-    assert scene.breakpoints == example.breakpoints
-    assert scene.coefficients == example.coefficients
+    scene = load_scene(_write(tmp_path, HEAD + law + OPTIONS))
+    example = load_scene(EXAMPLE)
+    assert scene.load.breakpoints == example.load.breakpoints
+    assert scene.load.coefficients == example.load.coefficients
 
 
 def test_pickup_needs_a_law_that_ends_at_a_speed():
@@ -265,28 +268,27 @@ def test_paper_law_a3_matches_the_general_generated_function():
 
 
 def test_cli_files_are_deterministic_and_named_by_the_scene(tmp_path):
-    files = dl.drive_law_files(EXAMPLE)
+    files = scene_files(EXAMPLE)
     assert list(files) == ["scene_hoist_user_drive_law.py"]
-    assert files == dl.drive_law_files(scenes_directory() / f"{EXAMPLE}.toml")
+    assert files == scene_files(scenes_directory("hoist_startup") / f"{EXAMPLE}.toml")
     text = files["scene_hoist_user_drive_law.py"]
     assert "Drive law of scene 'hoist_user_drive_law'" in text
     assert "def rope_stretch(t):" in text and "eval(" not in text
-    from crane_sym import registry, specialize
-    shipped = specialize.shipped_scene_modules(registry.get)
+    from crane_sym import specialize
+    shipped = specialize.shipped_scene_modules()
     assert shipped["scene_hoist_user_drive_law.py"] == text
 
 
 def test_run_writes_the_module_and_a_plot_and_bounds_the_samples(tmp_path):
     """`crane-sym run` on a drive-law scene: the module it writes is the one
     `generate --scene` gives, and the guaranteed K_max bounds every sample."""
-    from crane_sym.drive_law_run import run_drive_law_scene
     law = ('[drive_law]\nlifting = "from_weight"\nbreakpoints = [0.0, 0.3]\n'
            "coefficients = [[1.0]]\n")
     path = _write(tmp_path, HEAD + law + '[options]\nduration = "0.6 s"\npoints = 301\n')
-    scene, report, figure = run_drive_law_scene(path, tmp_path / "out")
+    report, figure = run_scene(path, tmp_path / "out")
     assert figure.is_file() and figure.stat().st_size > 0
     written = (tmp_path / "out" / "scene_probe.py").read_text(encoding="utf-8")
-    assert written == dl.drive_law_files(path)["scene_probe.py"]
+    assert written == scene_files(path)["scene_probe.py"]
     module = _import(written, tmp_path / "again.py")
     t = np.linspace(0.0, 0.6, 301)
     k = module.dynamic_coefficient(t)
