@@ -8,18 +8,11 @@ import pytest
 
 from crane_sym import registry
 from crane_sym.derivations.hoist_startup import report as hss
-from crane_sym.scenes import SceneError, SceneReport, load_scene, run_scene, scenes_directory
+from crane_sym.scene_run import run_scene
+from crane_sym.scenes import SceneError, SceneReport, load_scene, scenes_directory
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 SCENES = ("hoist_fig3", "hoist_fig5", "hoist_drive_laws")
-
-
-@pytest.fixture(autouse=True)
-def wired(monkeypatch):
-    """``run_scene`` finds ``scene_report`` on the derivation module (once
-    ``hoist_startup`` imports it, this changes nothing)."""
-    module = registry.module("hoist_startup")
-    monkeypatch.setattr(module, "scene_report", hss.scene_report, raising=False)
 
 
 @pytest.fixture(scope="module")
@@ -34,7 +27,7 @@ def test_each_scene_runs_and_writes_a_png(name, tmp_path, laws, monkeypatch):
     scene = load_scene(name)
     if name == "hoist_drive_laws":          # the report computed once, by the fixture
         monkeypatch.setattr(registry.module("hoist_startup"), "scene_report",
-                            lambda s: laws[1], raising=False)
+                            lambda s, m=None: laws[1], raising=False)
     report, png = run_scene(scene, tmp_path)
     assert isinstance(report, SceneReport) and report.panels and report.lines
     assert png == tmp_path / f"{name}.png"
@@ -45,7 +38,7 @@ def test_each_scene_runs_and_writes_a_png(name, tmp_path, laws, monkeypatch):
 
 def test_scene_files_are_shipped():
     for name in SCENES:
-        assert (scenes_directory() / f"{name}.toml").is_file()
+        assert (scenes_directory("hoist_startup") / f"{name}.toml").is_file()
         assert load_scene(name).options["figure"] in hss.FIGURES
 
 
@@ -120,7 +113,7 @@ def test_rigid_maxima_reproduce_the_numbers_printed_after_66(laws):
 
 
 def test_inconsistent_omega_is_refused(tmp_path):
-    text = (scenes_directory() / "hoist_fig3.toml").read_text(encoding="utf-8")
+    text = (scenes_directory("hoist_startup") / "hoist_fig3.toml").read_text(encoding="utf-8")
     path = tmp_path / "bad.toml"
     path.write_text(text.replace('Omega = "25 rad/s"', 'Omega = "26 rad/s"'),
                     encoding="utf-8")
@@ -129,7 +122,7 @@ def test_inconsistent_omega_is_refused(tmp_path):
 
 
 def test_unknown_figure_is_refused(tmp_path):
-    text = (scenes_directory() / "hoist_fig3.toml").read_text(encoding="utf-8")
+    text = (scenes_directory("hoist_startup") / "hoist_fig3.toml").read_text(encoding="utf-8")
     path = tmp_path / "bad.toml"
     path.write_text(text.replace('figure = "fig3"', 'figure = "fig4"'), encoding="utf-8")
     with pytest.raises(SceneError, match="option 'figure' must be one of"):
