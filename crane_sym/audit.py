@@ -1,8 +1,11 @@
 """Verdicts on published formulas, from checks that can fail.
 
 For each published formula the audit runs the symbolic, numeric and dimension
-checks on the print as transcribed; only when the print does not match does
-it try the formula's conventions. The verdict names the check that decided.
+checks on the print as transcribed and keeps that literal result in the record.
+Only when the literal print fails does it try the formula's readings, and only
+the kinds the reading policy allows (``published.READINGS``). The verdict
+names the check that decided, the basis it rests on and, for a finding, its
+cause.
 """
 from __future__ import annotations
 
@@ -10,25 +13,54 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
-from .checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome,
+from .checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome, difference,
                      dimension_consistency, numeric_equivalence,
                      symbolic_equivalence)
 from .derivation import Derivation
-from .published import ASSUMPTION, PublishedFormula
+from .latex import latex
+from .published import (ASSUMPTION, DEFINITION, Cause, Convention,
+                        PublishedFormula)
 
 CONFIRMED = "confirmed"
 CONFIRMED_WITH_CONVENTION = "confirmed_with_convention"
+RESTATED = "restated"
 DISCREPANCY = "discrepancy"
 DIMENSION_ERROR = "dimension_error"
 NOT_CHECKABLE = "not_checkable"
 REMARK = "remark"
-VERDICTS = (CONFIRMED, CONFIRMED_WITH_CONVENTION, DISCREPANCY, DIMENSION_ERROR,
-            NOT_CHECKABLE, REMARK)
+VERDICTS = (CONFIRMED, CONFIRMED_WITH_CONVENTION, RESTATED, DISCREPANCY,
+            DIMENSION_ERROR, NOT_CHECKABLE, REMARK)
+#: Verdicts that hold nothing to report: no cause.
+AGREEMENTS = (CONFIRMED, RESTATED)
+#: Verdicts that count as confirmations (never a ``definition`` record).
+CONFIRMATIONS = (CONFIRMED, CONFIRMED_WITH_CONVENTION)
+#: The cause given to a finding whose formula names none (a test forbids it).
+UNEXPLAINED = "unexplained"
+
+
+@dataclass(frozen=True)
+class Attempt:
+    """One reading of the print (the literal one first) against the derivation."""
+
+    reading: str            # "literal" or the policy's reading kind
+    note: str               # what the reading is
+    matches: bool           # same relation and consistent dimensions
+    summary: str            # one sentence on how it came out
+    derived: str            # LaTeX of the derived relation it was compared with
+    difference: str         # LaTeX of the simplified difference ("" if none or too big)
+    checks: tuple[CheckOutcome, ...]
+
+    def as_dict(self) -> dict:
+        """JSON-ready form."""
+        return {"reading": self.reading, "note": self.note, "matches": self.matches,
+                "summary": self.summary, "derived": self.derived,
+                "difference": self.difference,
+                "checks": [_check_dict(c) for c in self.checks]}
 
 
 @dataclass(frozen=True)
 class AuditRecord:
-    """The verdict on one published formula."""
+    """The verdict on one published formula, with what it rests on."""
 
     derivation: str
     label: str
@@ -36,14 +68,48 @@ class AuditRecord:
     method: str
     detail: str
     checks: tuple[CheckOutcome, ...] = field(default=())
+    basis: str = "model"
+    basis_note: str = ""
+    cause: Cause | None = None
+    printed: str = ""                       # LaTeX as printed
+    note: str = ""                          # the transcriber's note (provenance)
+    attempts: tuple[Attempt, ...] = ()      # literal first, then readings tried
+
+    @property
+    def literal(self) -> Attempt | None:
+        """How the print as printed came out (kept even when a reading decides)."""
+        return self.attempts[0] if self.attempts else None
+
+    @property
+    def reading(self) -> Attempt | None:
+        """The reading that decided a ``confirmed_with_convention`` verdict."""
+        return next((a for a in self.attempts[1:] if a.matches), None)
+
+    @property
+    def point(self) -> tuple[tuple[str, str], ...]:
+        """The sampled point at which the literal print fails numerically."""
+        lit = self.literal
+        return next((c.point for c in lit.checks if c.point), ()) if lit else ()
 
     def as_dict(self) -> dict:
         """JSON-ready form."""
         return {"derivation": self.derivation, "label": self.label,
                 "verdict": self.verdict, "method": self.method,
-                "detail": self.detail,
-                "checks": [{"method": c.method, "status": c.status,
-                            "detail": c.detail} for c in self.checks]}
+                "basis": self.basis, "basis_note": self.basis_note,
+                "cause": ({"id": self.cause.id, "sentence": self.cause.sentence}
+                          if self.cause else None),
+                "detail": self.detail, "printed": self.printed, "note": self.note,
+                "literal": self.literal.as_dict() if self.literal else None,
+                "readings": [a.as_dict() for a in self.attempts[1:]],
+                "point": dict(self.point),
+                "checks": [_check_dict(c) for c in self.checks]}
+
+
+def _check_dict(c: CheckOutcome) -> dict:
+    out = {"method": c.method, "status": c.status, "detail": c.detail}
+    if c.point:
+        out["point"] = dict(c.point)
+    return out
 
 
 @dataclass(frozen=True)
@@ -72,52 +138,72 @@ def _compare(reading: sp.Eq, derived: sp.Eq, d: Derivation,
     return _Comparison(num.status == PASS, "numeric", (sym, num))
 
 
-def _latex(expr: sp.Basic) -> str:
-    return sp.latex(expr)
+def _attempt(d: Derivation, f: PublishedFormula, reading: str, note: str,
+             relation: sp.Eq, target: str) -> tuple[Attempt, _Comparison, CheckOutcome]:
+    derived = d.step(target).statement
+    comp = _compare(relation, derived, d, f.tolerance)
+    dim = dimension_consistency(relation, d.symbols)
+    matches = comp.same and dim.status == PASS
+    diff = "" if comp.same else _difference_latex(relation, derived)
+    summary = (f"matches derived step {target} ({comp.method})" if matches
+               else _why_not(comp, dim))
+    attempt = Attempt(reading, note, matches, summary, latex(derived), diff,
+                      comp.outcomes + (dim,))
+    return attempt, comp, dim
+
+
+def _difference_latex(relation: sp.Eq, derived: sp.Eq) -> str:
+    diff = difference(relation, derived)
+    return "" if diff is None else latex(diff)
 
 
 def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
     """The verdict on one published formula of derivation ``d``."""
     def record(verdict: str, method: str, detail: str,
-               checks: tuple[CheckOutcome, ...] = ()) -> AuditRecord:
-        return AuditRecord(d.id, f.label, verdict, method, detail, checks)
+               attempts: tuple[Attempt, ...] = ()) -> AuditRecord:
+        cause = None
+        if verdict not in AGREEMENTS:
+            cause = f.cause or Cause(UNEXPLAINED, f"{d.id} {f.label}: the transcriber "
+                                                  "gave no cause for this finding")
+        checks = tuple(c for a in attempts for c in a.checks)
+        return AuditRecord(d.id, f.label, verdict, method, detail, checks, f.basis,
+                           f.basis_note, cause, f.latex, f.provenance, attempts)
 
     if f.printed is None:
         return record(NOT_CHECKABLE, "none", f.not_checkable)
-    derived = d.step(f.target).statement
-    as_printed = _compare(f.printed, derived, d, f.tolerance)
-    dim = dimension_consistency(f.printed, d.symbols)
-    checks = as_printed.outcomes + (dim,)
-    if as_printed.same and dim.status == PASS:
-        return record(CONFIRMED, as_printed.method,
-                      f"matches derived step {f.target}: "
-                      f"{as_printed.outcomes[0 if as_printed.method == 'symbolic' else 1].detail}; "
-                      f"{dim.detail}", checks)
-    why_not = _why_not(as_printed, dim)
+    literal, comp, dim = _attempt(d, f, "literal", "the print as printed", f.printed,
+                                  f.target)
+    if literal.matches:
+        verdict = RESTATED if f.basis == DEFINITION else CONFIRMED
+        return record(verdict, comp.method, f"as printed, {literal.summary}; "
+                      f"{dim.detail}", (literal,))
+    attempts = [literal]
     for conv in f.conventions:
-        again = _compare(conv.reading, derived, d, f.tolerance)
-        dim_again = dimension_consistency(conv.reading, d.symbols)
-        if again.same and dim_again.status == PASS:
-            return record(
-                CONFIRMED_WITH_CONVENTION, again.method,
-                f"as printed: {why_not}. Read with the convention '{conv.note}', "
-                f"it matches derived step {f.target} ({again.method}).",
-                checks + again.outcomes + (dim_again,))
-    corrected = f"derived form: ${_latex(derived)}$"
+        again, comp_r, _ = _attempt(d, f, conv.kind, conv.note, conv.reading,
+                                    conv.compare_to or f.target)
+        attempts.append(again)
+        if again.matches:
+            verdict = RESTATED if f.basis == DEFINITION else CONFIRMED_WITH_CONVENTION
+            return record(verdict, comp_r.method,
+                          f"as printed: {literal.summary}. Read with the {conv.kind} "
+                          f"'{conv.note}', it {again.summary}.", tuple(attempts))
+    tried = "".join(f" Read with the {a.reading} '{a.note}': {a.summary}."
+                    for a in attempts[1:])
     if f.kind == ASSUMPTION:
-        return record(REMARK, as_printed.method if not as_printed.same else "dimension",
-                      f"stated assumption ({f.provenance}); {why_not}; {corrected}",
-                      checks)
+        return record(REMARK, comp.method if not comp.same else "dimension",
+                      f"stated assumption; as printed: {literal.summary}.{tried}",
+                      tuple(attempts))
     if dim.status == FAIL:
-        follows = (f"it does follow from step {f.target}, which carries the same error"
-                   if as_printed.same else why_not)
-        return record(DIMENSION_ERROR, "dimension", f"{dim.detail}; {follows}; {corrected}",
-                      checks)
-    if not as_printed.same and as_printed.outcomes[1].status == FAIL:
-        return record(DISCREPANCY, "numeric", f"{why_not}; {corrected}", checks)
+        follows = (f"; the relation does follow from step {f.target}, which carries "
+                   "the same error" if comp.same else "")
+        return record(DIMENSION_ERROR, "dimension",
+                      f"as printed: {literal.summary}{follows}.{tried}", tuple(attempts))
+    if comp.outcomes[1].status == FAIL:
+        return record(DISCREPANCY, "numeric", f"as printed: {literal.summary}.{tried}",
+                      tuple(attempts))
     return record(NOT_CHECKABLE, "none",
-                  "neither check could decide: " + "; ".join(c.detail for c in checks),
-                  checks)
+                  "neither check could decide: "
+                  + "; ".join(c.detail for c in literal.checks), tuple(attempts))
 
 
 def _why_not(comp: _Comparison, dim: CheckOutcome) -> str:
@@ -127,10 +213,16 @@ def _why_not(comp: _Comparison, dim: CheckOutcome) -> str:
         parts.append(num.detail if num.status == FAIL else
                      "the comparison was inconclusive")
     if dim.status == FAIL:
-        parts.append("dimension check: " + dim.detail)
+        parts.append("dimensions: " + dim.detail)
     return "; ".join(parts) or "matches"
 
 
 def audit(d: Derivation) -> list[AuditRecord]:
     """Verdicts on every published formula of ``d``, in the paper's order."""
     return [audit_formula(d, f) for f in d.published]
+
+
+__all__ = ["AGREEMENTS", "CONFIRMATIONS", "CONFIRMED", "CONFIRMED_WITH_CONVENTION",
+           "DIMENSION_ERROR", "DISCREPANCY", "NOT_CHECKABLE", "REMARK", "RESTATED",
+           "UNEXPLAINED", "VERDICTS", "Attempt", "AuditRecord", "Convention",
+           "audit", "audit_formula"]

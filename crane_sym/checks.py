@@ -21,6 +21,7 @@ import numpy as np
 import sympy as sp
 
 from .dimensions import check_equation, vector
+from .latex import latex
 from .outcomes import FAIL, INCONCLUSIVE, PASS, CheckOutcome
 from .symbols import COORDINATE, DEFINED, TIME, SymbolTable
 
@@ -106,6 +107,12 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
     f_d = sp.lambdify(args, rd, modules="mpmath")
     rng = np.random.default_rng(seed)
     entries = {e.expr: e for e in table}
+    original = {v: k for k, v in frozen.items()}
+
+    def name_values(pvals: list, uvals: list) -> tuple[tuple[str, str], ...]:
+        named = [(latex(e.expr), v) for e, v in zip(params, pvals)]
+        named += [(latex(original.get(u, u)), v) for u, v in zip(unknown, uvals)]
+        return tuple((k, mpmath.nstr(v, 12)) for k, v in named)
 
     def draw_unknowns() -> list:
         return [mpmath.mpf(_draw(entries[u], rng) if u in entries else rng.uniform(0.3, 3.0))
@@ -116,35 +123,40 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
     with mpmath.workdps(dps):
         for _ in range(points):
             pvals = [mpmath.mpf(_draw(e, rng)) for e in params]
-            at = ", ".join(f"{e.name}={mpmath.nstr(v, 6)}" for e, v in zip(params, pvals)) \
-                or "a sampled point"
             if same_lhs:
                 uvals = draw_unknowns()
                 a, b = f_p(*pvals, *uvals), f_d(*pvals, *uvals)
                 dev = abs(a - b) / max(abs(b), tiny)
                 if dev > tol:
+                    point = name_values(pvals, uvals)
                     return CheckOutcome(
                         "numeric", FAIL,
-                        f"at {at} the printed right-hand side is {mpmath.nstr(a, 8)}, "
-                        f"the derived one {mpmath.nstr(b, 8)} (relative difference "
-                        f"{mpmath.nstr(dev, 3)}, tolerance {tol:g})")
+                        f"at {_at(point)} the printed right-hand side is "
+                        f"{mpmath.nstr(a, 12)}, the derived one {mpmath.nstr(b, 12)} "
+                        f"(relative difference {mpmath.nstr(dev, 3)}, tolerance {tol:g})",
+                        point=point)
             else:
-                ratios = []
+                ratios, draws = [], []
                 for _draw_no in range(2):
                     uvals = draw_unknowns()
                     a, b = f_p(*pvals, *uvals), f_d(*pvals, *uvals)
                     if b != 0:
                         ratios.append(a / b)
+                        draws.append(uvals)
                 if len(ratios) < 2:
                     continue
                 r0, r1 = ratios
                 dev = abs(r0 - r1) / max(abs(r0), abs(r1), tiny)
                 if r0 == 0 or dev > tol:
+                    second = ", ".join(f"{k} = {v}" for k, v in
+                                       name_values([], draws[1])) or "none"
+                    point = name_values(pvals, draws[0])
                     return CheckOutcome(
                         "numeric", FAIL,
-                        f"at {at} the printed/derived residual ratio is "
-                        f"{mpmath.nstr(r0, 8)} for one draw of the unknowns and "
-                        f"{mpmath.nstr(r1, 8)} for another: not the same relation")
+                        f"at {_at(point)} the printed/derived residual ratio is "
+                        f"{mpmath.nstr(r0, 12)}; with the unknowns drawn again "
+                        f"({second}) it is {mpmath.nstr(r1, 12)}: not the same relation",
+                        point=point)
             worst = max(worst, dev)
     what = "relative difference" if same_lhs else "deviation of the residual ratio"
     return CheckOutcome(
@@ -153,11 +165,36 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
         f"{mpmath.nstr(worst, 2)}" + (f" within tolerance {tol:g}" if tol > 1e-20 else ""))
 
 
+def _at(point: tuple[tuple[str, str], ...]) -> str:
+    return ", ".join(f"${k}$ = {v}" for k, v in point) or "every sampled point"
+
+
+def difference(printed: sp.Eq, derived: sp.Eq, *, max_ops: int = 300) -> sp.Expr | None:
+    """What differs, expanded so that shared terms cancel: printed − derived
+    right-hand sides when both define the same quantity, else the residuals
+    scaled to agree in one term (so a missing or extra term shows by itself).
+    ``None`` when the difference is too large to read."""
+    if printed.lhs == derived.lhs:
+        pairs = [(printed.rhs, derived.rhs)]
+    else:
+        rp, rd = residual(printed), residual(derived)
+        pairs = [(rp, rd), (rp, -rd)]
+        for term in sp.Add.make_args(sp.expand(rd)):
+            coeff = sp.expand(rp).coeff(term.as_coeff_Mul()[1])
+            if coeff != 0 and term.as_coeff_Mul()[0] != 0:
+                pairs.append((rp, rd * coeff / term.as_coeff_Mul()[0]))
+                break
+    best = None
+    for a, b in pairs:  # expand cancels what the two share; no trigsimp roulette
+        expanded = sp.expand(a - b)
+        for diff in (expanded, sp.factor_terms(expanded)):
+            if best is None or sp.count_ops(diff) < sp.count_ops(best):
+                best = diff
+    return best if best is not None and sp.count_ops(best) <= max_ops else None
+
+
 def dimension_consistency(relation: sp.Eq, table: SymbolTable) -> CheckOutcome:
     """Every term of ``relation``, as printed, has one dimension."""
     dims = {k: vector(v) for k, v in table.dimensions().items()}
     report = check_equation(relation.lhs, relation.rhs, dims)
-    if report.consistent:
-        return CheckOutcome("dimension", PASS, report.message)
-    offending = "; ".join(report.offending) or report.message
-    return CheckOutcome("dimension", FAIL, f"inconsistent: {offending}")
+    return CheckOutcome("dimension", PASS if report.consistent else FAIL, report.message)

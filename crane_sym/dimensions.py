@@ -16,6 +16,8 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.units import Dimension
 from sympy.physics.units.systems.si import dimsys_SI
 
+from .latex import latex
+
 #: Exponent vector: base-dimension name -> rational exponent (zeros dropped).
 DimVec = tuple[tuple[str, sp.Rational], ...]
 
@@ -164,17 +166,37 @@ def check_equation(lhs: sp.Expr, rhs: sp.Expr,
     try:
         d = _common(terms, dims, "terms of the equation")
     except DimensionMismatch as err:
-        offending = _minority(err.terms) if err.terms else ()
-        return DimensionReport(False, None, str(err), offending)
+        if not err.terms:
+            return DimensionReport(False, None, str(err))
+        offending, reference = _offending(lhs, err.terms)
+        message = "the term" + ("s " if len(offending) > 1 else " ") + ", ".join(offending)
+        message += (" differ" if len(offending) > 1 else " differs") + f" from {reference}"
+        return DimensionReport(False, None, message, offending)
     return DimensionReport(True, d, f"every term has dimension {format_vector(d)}")
 
 
-def _minority(found: list[tuple[sp.Expr, DimVec]]) -> tuple[str, ...]:
-    """Terms whose dimension differs from the most common one."""
+def _term(t: sp.Expr, d: DimVec) -> str:
+    return f"${latex(t)}$ [{format_vector(d)}]"
+
+
+def _offending(lhs: sp.Expr, found: list[tuple[sp.Expr, DimVec]]
+               ) -> tuple[tuple[str, ...], str]:
+    """The terms to blame, and what they are measured against.
+
+    A left-hand side of one term (the quantity the formula defines) sets the
+    dimension; otherwise the most common dimension does, and with a tie every
+    term is listed.
+    """
+    if len(sp.Add.make_args(lhs)) == 1 and lhs != 0 and found[0][0] == lhs:
+        ref = found[0][1]
+        return (tuple(_term(t, d) for t, d in found[1:] if d != ref),
+                f"the left-hand side {_term(*found[0])}")
     counts: dict[DimVec, int] = {}
     for _, d in found:
         counts[d] = counts.get(d, 0) + 1
     top = max(counts.values())
     majors = [d for d, n in counts.items() if n == top]
-    keep = (lambda d: True) if len(majors) > 1 else (lambda d: d != majors[0])
-    return tuple(f"{sp.sstr(t)} [{format_vector(d)}]" for t, d in found if keep(d))
+    if len(majors) > 1:
+        return (tuple(_term(t, d) for t, d in found), "each other (no majority)")
+    return (tuple(_term(t, d) for t, d in found if d != majors[0]),
+            f"the other terms' [{format_vector(majors[0])}]")

@@ -19,3 +19,6 @@ class CheckOutcome:
     method: str
     status: str
     detail: str
+    #: For a failed numeric check: every symbol's value at the failing point
+    #: (LaTeX name, value to 12 digits), so a reviewer can recompute by hand.
+    point: tuple[tuple[str, str], ...] = ()

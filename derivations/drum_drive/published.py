@@ -26,7 +26,7 @@ from .model import (
     ROT_DAMP, STIFF, T_, T_el, TORQUE, a_v, alpha, b_v, g, m3, m_sum, mu, mu_op, nu1, nu2,
     nu_t, nu_y, nu_z, phi1, phi2, phi3, q, r, t, v_xi, vy, vz, xi, y, y0, z, F_pulse, F1_t,
     F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3)
-from crane_sym.published import ASSUMPTION, Convention, PublishedFormula
+from crane_sym.published import (ASSUMPTION, Cause, Convention, DEFINITION, FITTED_VALUE, INTERNAL, LINE_BREAK_SIGN, LOST_MARK, OPERATOR_SCOPE, PublishedFormula, RECONSTRUCTED, SYMBOL_FOR_ANOTHER, printed)
 from crane_sym.symbols import COORDINATE, DEFINED, PARAMETER, PhysicalSymbol
 
 # --- The print's notation ------------------------------------------------------
@@ -174,11 +174,9 @@ LINIT = (r"z(0) = 0; y(0) = 0; \varphi(0) = 0; \dot{z}(0) = 0; \dot{y}(0) = 0; "
 LK = r"k = \sqrt{C_{екв} \cdot \frac{m_1 + m_2 + m_3}{m_1 \cdot m_2 \cdot m_3}}"
 
 
-def _printed(label: str, latex: str, printed: sp.Eq | None, note: str = "",
+def _printed(label: str, latex: str, relation: sp.Eq | None, note: str = "",
              **kwargs) -> PublishedFormula:
-    where = f"{PAPER}, eq {label}" if label.startswith("(") else f"{PAPER}, {label}"
-    return PublishedFormula(label, latex, printed, where + (f"; {note}" if note else ""),
-                            **kwargs)
+    return printed(PAPER, label, latex, relation, note, **kwargs)
 
 
 def _dot(f: sp.Expr, n: int = 1) -> sp.Expr:
@@ -221,7 +219,7 @@ def _lagrange_rows(e: dict) -> list[PublishedFormula]:
                else ""),
             conventions=(Convention(
                 "∂Φ/∂q in (1) means ∂Φ/∂q̇ (the Rayleigh term)",
-                sp.Eq(lhs, Q - sp.diff(R, _dot(qq)))),)))
+                sp.Eq(lhs, Q - sp.diff(R, _dot(qq))), LOST_MARK),)))
     return rows
 
 
@@ -329,7 +327,7 @@ def _motion_rows(e: dict) -> list[PublishedFormula]:
                  conventions=(Convention(
                      "φ4 ≡ φ3 (no fourth body), y1 − y2 ≡ y (the drum against its "
                      "bearing), z1 − z2 ≡ the slack branch's stretch z − y − r·φ3",
-                     sp.Eq(Phi_, read)),)),
+                     sp.Eq(Phi_, read), SYMBOL_FOR_ANOTHER),)),
         _printed("(12), row 1", L12, row1, note + "; the row for φ, checked against the "
                  "drum's equation", compare_to="(12), φ3"),
         _printed("(12), row 2", L12, row2, note + "; the row for z", compare_to="(12), z"),

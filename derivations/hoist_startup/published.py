@@ -23,7 +23,7 @@ from decimal import Decimal
 
 import sympy as sp
 
-from crane_sym.published import ASSUMPTION, Convention, PublishedFormula
+from crane_sym.published import (ASSUMPTION, Cause, Convention, DEFINITION, FITTED_VALUE, INTERNAL, LINE_BREAK_SIGN, LOST_MARK, OPERATOR_SCOPE, PublishedFormula, RECONSTRUCTED, SYMBOL_FOR_ANOTHER, printed)
 
 from .model import (A_LAW, C1, C2, INT_S, INT_S_COS, INT_S_Y, K, K1, K2, PAPER, P, P_at0,
                     P_d, Q, Q_0, Q_at0, S, S_at0, C, K_cell, Omega, T, Y, a, a_at0, g, m1,
@@ -32,11 +32,9 @@ from .model import (A_LAW, C1, C2, INT_S, INT_S_COS, INT_S_Y, K, K1, K2, PAPER, 
 _W = Omega
 
 
-def _printed(label: str, latex: str, printed: sp.Eq | None, note: str = "",
+def _printed(label: str, latex: str, relation: sp.Eq | None, note: str = "",
              **kwargs) -> PublishedFormula:
-    where = f"{PAPER}, eq {label}" if label.startswith("(") else f"{PAPER}, {label}"
-    return PublishedFormula(label, latex, printed, where + (f"; {note}" if note else ""),
-                            **kwargs)
+    return printed(PAPER, label, latex, relation, note, **kwargs)
 
 
 # The displays, verbatim (raw strings).
@@ -144,7 +142,9 @@ PUBLISHED = [
              "(m/s against m); (12) uses x(0) = Q(0)/C",
              conventions=(Convention("the first condition of (11) is on x(t)|_{t=0}; "
                                      "its dot is a slip (of print or OCR)",
-                                     sp.Eq(x0, Q_at0 / C)),)),
+                                     sp.Eq(x0, Q_at0 / C), LOST_MARK),),
+             cause=Cause("002-dot-on-x0", "(11) puts a dot on the initial displacement "
+                         "x(0): a velocity equated to a length")),
     _printed("(11), velocity", L11, sp.Eq(x0_dot, 0), "second condition",
              kind=ASSUMPTION),
     _printed("(12)", L12, sp.Eq(C1, Q_at0 / C - x_s0)),

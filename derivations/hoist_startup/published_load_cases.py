@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from crane_sym.published import ASSUMPTION, Convention, PublishedFormula
+from crane_sym.published import (ASSUMPTION, Cause, Convention, PublishedFormula, SYMBOL_FOR_ANOTHER)
 
 from .model import (INT_P, INT_P_REV, INT_P_Y16, INT_P_YF, K, Pbar, Pbar0, S, C, Y, Y2,
                     d_max, k, m, m1, m2, t, t_n, theta, theta_half, vt, x, x0, x0_dot,
@@ -67,12 +67,19 @@ _FORCE_Y = ("from (33) on, Y is the response to a unit impulse of the force P̄,
             "sin(Ωt)/(mΩ), and Y_1, Y_2 its integrals — not Y of (16)")
 
 
+Y_TWO_MEANINGS = Cause("002-Y-two-meanings", "from (33) on the paper uses the name Y "
+                       "of (16) (unit impulse of S) for the response to a unit impulse of "
+                       "the force P̄, which is smaller by the mass m")
+
+
 def _via_y(label: str, latex: str, printed_with_16, reading_per_force, target: str,
            note: str) -> PublishedFormula:
     """A member written with Y, Y_1 or Y_2: as printed Y is that of (16)."""
     return _printed(label, latex, sp.Eq(x, printed_with_16), note,
                     compare_to=target,
-                    conventions=(Convention(_FORCE_Y, sp.Eq(x, reading_per_force)),))
+                    conventions=(Convention(_FORCE_Y, sp.Eq(x, reading_per_force),
+                                            SYMBOL_FOR_ANOTHER),),
+                    cause=Y_TWO_MEANINGS)
 
 
 def _y_integrals(scale):
@@ -95,7 +102,8 @@ PUBLISHED = [
     _printed("(34)", L34, sp.Eq(x_s, INT_P_REV / (_W * m)), "outer members"),
     _printed("(34), via Y", L34, sp.Eq(x_s, INT_P_Y16),
              "first equality, with Y of (16)", compare_to="(34)",
-             conventions=(Convention(_FORCE_Y, sp.Eq(x_s, INT_P_YF)),)),
+             conventions=(Convention(_FORCE_Y, sp.Eq(x_s, INT_P_YF), SYMBOL_FOR_ANOTHER),),
+             cause=Y_TWO_MEANINGS),
     _printed("Y in (33)–(49)", L16, sp.Eq(Y, _sin / _W),
              "whole-paper remark: (16) defines Y as the response to a unit impulse of "
              "S (m/s² · s); (34), (39), (43), (44), (48), (49) use the same name for the "

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from crane_sym.published import ASSUMPTION, Convention
+from crane_sym.published import (ASSUMPTION, Cause, Convention, SYMBOL_FOR_ANOTHER)
 
 from .model import (K_OPT, P, Q, C, F_ref, a, dQdot_tau0, dk_tau0, g, k3_max, k4_max, k_d,
                     kt_d, m1, m2, t, t3_star, t4_star, t_n, tau0, v0, x1, x2)
@@ -123,5 +123,8 @@ PUBLISHED += [
           "text after (66): printed as k̃_дин3, in the sentence about the maximum "
           "of k̃_дин4", symbol=k3_max, latex=L_MAX4,
           conventions=(Convention("the subscript 3 of the second maximum is a slip "
-                                  "for 4", sp.Eq(k4_max, sp.Rational(20736, 10000))),)),
+                                  "for 4", sp.Eq(k4_max, sp.Rational(20736, 10000)),
+                                  SYMBOL_FOR_ANOTHER),),
+          cause=Cause("002-max-k4-subscript", "the text after (66) names the maximum of "
+                      "k̃_дин4 with the subscript 3")),
 ]

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 import sympy as sp
 
-from crane_sym.published import ASSUMPTION, Convention, PublishedFormula
+from crane_sym.published import (ASSUMPTION, Cause, Convention, DEFINITION, FITTED_VALUE, INTERNAL, LINE_BREAK_SIGN, LOST_MARK, OPERATOR_SCOPE, PublishedFormula, RECONSTRUCTED, SYMBOL_FOR_ANOTHER, printed)
 
 from .model import (PAPER, A, B, F, P, P_t, W, c, m1, m2, p, t, u0, u0_dot, x1,
                     x2, x_p)
@@ -13,11 +13,9 @@ from .model import (PAPER, A, B, F, P, P_t, W, c, m1, m2, p, t, u0, u0_dot, x1,
 
 # LaTeX copied verbatim from 000_4ef6efc8a81a3b06.txt; Russian words in it:
 # "где" = "where", "или" = "or". The OCR of this paper is clean.
-def _printed(label: str, latex: str, printed: sp.Eq, note: str = "",
+def _printed(label: str, latex: str, relation: sp.Eq | None, note: str = "",
              **kwargs) -> PublishedFormula:
-    where = f"{PAPER}, eq {label}" if label.startswith("(") else f"{PAPER}, {label}"
-    return PublishedFormula(label, latex, printed, where + (f"; {note}" if note else ""),
-                            **kwargs)
+    return printed(PAPER, label, latex, relation, note, **kwargs)
 
 
 _stretch = x2 - x1
@@ -40,7 +38,9 @@ PUBLISHED = [
              "printed with a capital P, while (5), (9), (10), (13), (14) use p",
              conventions=(Convention(
                  "P in (6) is the frequency p of (5); it is not the braking force P_t",
-                 sp.Eq(p, sp.sqrt((m1 + m2) / (m1 * m2) * c))),)),
+                 sp.Eq(p, sp.sqrt((m1 + m2) / (m1 * m2) * c)), SYMBOL_FOR_ANOTHER),),
+             cause=Cause("000-capital-P", "(6) prints the frequency p of (5) as a capital P, "
+                         "the letter of no quantity in the paper")),
     _printed("(7)", r"(x_2 - x_1)^* = \left( \frac{P_t}{m_1} - \frac{W}{m_2} \right) "
              r"\div \frac{m_1 + m_2}{m_1 \cdot m_2} c, \quad (7)",
              # Read as printed: ÷ and the product after it at equal precedence,
@@ -49,7 +49,10 @@ PUBLISHED = [
              "the divisor after ÷ is a fraction followed by the factor c",
              conventions=(Convention(
                  "÷ divides by the whole product (m1 + m2)/(m1·m2)·c that follows it",
-                 sp.Eq(x_p, (P_t / m1 - W / m2) / ((m1 + m2) / (m1 * m2) * c))),)),
+                 sp.Eq(x_p, (P_t / m1 - W / m2) / ((m1 + m2) / (m1 * m2) * c)),
+                 OPERATOR_SCOPE),),
+             cause=Cause("000-divide-scope", "(7) writes ÷ before a product; taken left "
+                         "to right, c multiplies instead of divides")),
     _printed("(8)", r"\text{или } (x_2 - x_1)^* = \frac{P_t m_2 - W m_1}{c(m_1 + m_2)}, \quad (8)",
              sp.Eq(x_p, _x_star)),
     _printed("(9)", r"(x_2 - x_1) = A \cos pt + B \sin pt + \frac{P_t m_2 - W m_1}"
