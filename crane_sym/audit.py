@@ -74,6 +74,7 @@ class AuditRecord:
     printed: str = ""                       # LaTeX as printed
     note: str = ""                          # the transcriber's note (provenance)
     attempts: tuple[Attempt, ...] = ()      # literal first, then readings tried
+    reconstructed: bool = False             # the print was rebuilt from OCR damage
 
     @property
     def literal(self) -> Attempt | None:
@@ -98,7 +99,10 @@ class AuditRecord:
                 "basis": self.basis, "basis_note": self.basis_note,
                 "cause": ({"id": self.cause.id, "sentence": self.cause.sentence}
                           if self.cause else None),
-                "detail": self.detail, "printed": self.printed, "note": self.note,
+                "detail": self.detail, "printed": self.printed,
+                "transcription": ("reconstructed from OCR damage" if self.reconstructed
+                                  else "as printed"),
+                "note": self.note,
                 "literal": self.literal.as_dict() if self.literal else None,
                 "readings": [a.as_dict() for a in self.attempts[1:]],
                 "point": dict(self.point),
@@ -167,7 +171,8 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
                                                   "gave no cause for this finding")
         checks = tuple(c for a in attempts for c in a.checks)
         return AuditRecord(d.id, f.label, verdict, method, detail, checks, f.basis,
-                           f.basis_note, cause, f.latex, f.provenance, attempts)
+                           f.basis_note, cause, f.latex, f.provenance, attempts,
+                           f.reconstructed)
 
     if f.printed is None:
         return record(NOT_CHECKABLE, "none", f.not_checkable)
@@ -189,6 +194,8 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
                           f"'{conv.note}', it {again.summary}.", tuple(attempts))
     tried = "".join(f" Read with the {a.reading} '{a.note}': {a.summary}."
                     for a in attempts[1:])
+    tried += f" Derived form: ${literal.derived}$." + (
+        f" Printed − derived: ${literal.difference}$." if literal.difference else "")
     if f.kind == ASSUMPTION:
         return record(REMARK, comp.method if not comp.same else "dimension",
                       f"stated assumption; as printed: {literal.summary}.{tried}",

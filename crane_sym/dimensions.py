@@ -135,7 +135,8 @@ def _require_dimensionless(arg: sp.Basic, dims: Mapping, where: sp.Basic) -> Non
     d = dimension_of(arg, dims)
     if d:
         raise DimensionMismatch(
-            f"argument {arg} of {where} has dimension {format_vector(d)}, "
+            f"the argument ${latex(arg)}$ of ${latex(where)}$ has dimension "
+            f"{format_vector(d)}, "
             "must be dimensionless", [(arg, d)])
 
 
@@ -166,8 +167,9 @@ def check_equation(lhs: sp.Expr, rhs: sp.Expr,
     try:
         d = _common(terms, dims, "terms of the equation")
     except DimensionMismatch as err:
-        if not err.terms:
-            return DimensionReport(False, None, str(err))
+        if len(err.terms) < 2:  # an argument that must be dimensionless
+            return DimensionReport(False, None, str(err),
+                                   tuple(_term(t, d) for t, d in err.terms))
         offending, reference = _offending(lhs, err.terms)
         message = "the term" + ("s " if len(offending) > 1 else " ") + ", ".join(offending)
         message += (" differ" if len(offending) > 1 else " differs") + f" from {reference}"

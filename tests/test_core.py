@@ -13,7 +13,7 @@ from crane_sym.dimensions import check_equation, dimension_of, format_vector, ve
 from crane_sym.elimination import relative_coordinate
 from crane_sym.lagrange import lagrange_equations
 from crane_sym.odes import solve_constant_coefficient
-from crane_sym.published import ASSUMPTION, Convention, PublishedFormula
+from crane_sym.published import ASSUMPTION, SYMBOL_FOR_ANOTHER, Convention, PublishedFormula
 from crane_sym.symbols import COORDINATE, DEFINED, TIME, PhysicalSymbol, SymbolTable
 
 t = sp.Symbol("t", nonnegative=True)
@@ -44,7 +44,13 @@ def test_dimension_check_names_the_offending_term():
     dims = {e.expr: vector(e.dimension) for e in TABLE}
     report = check_equation(m * x.diff(t, 2) + k * x + m * x, F0, dims)
     assert not report.consistent
-    assert report.offending == ("m*x(t) [kg·m]",)
+    assert report.offending == ("$m x$ [kg·m]",)
+    assert report.message.count("m x") == 1     # named once
+    # One term on the left sets the dimension: the terms that differ from it are
+    # blamed, even when they are the majority.
+    defined = check_equation(F0, m * x + k * x.diff(t), dims)
+    assert len(defined.offending) == 2 and "$m x$ [kg·m]" in defined.offending
+    assert "left-hand side $F_{0}$" in defined.message
     bad = check_equation(y, sp.cos(k * t), dims)
     assert not bad.consistent and "must be dimensionless" in bad.message
 
@@ -95,7 +101,8 @@ def test_each_verdict_kind_comes_from_its_check():
         got = _verdicts([
             PublishedFormula("(1)", "...", sp.Eq(m * x.diff(t, 2), F0 - k * x), "toy"),
             PublishedFormula("(2)", "...", sp.Eq(W, sp.sqrt(k / m)), "toy",
-                             conventions=(Convention("W is w", sp.Eq(w, sp.sqrt(k / m))),)),
+                             conventions=(Convention("W is w", sp.Eq(w, sp.sqrt(k / m)),
+                                                       SYMBOL_FOR_ANOTHER),)),
             PublishedFormula("(3)", "...", sp.Eq(y, 2 * F0 / k), "toy"),
             PublishedFormula("(3)", "...", sp.Eq(y, F0 * k), "toy"),
             PublishedFormula("(3)", "...", None, "toy", not_checkable="OCR lost it"),
@@ -110,7 +117,9 @@ def test_each_verdict_kind_comes_from_its_check():
 
 def test_discrepancy_gives_the_corrected_form():
     (record,) = A.audit(_toy([PublishedFormula("(3)", "...", sp.Eq(y, 2 * F0 / k), "toy")]))
-    assert "derived form" in record.detail and "\\frac{F_{0}}{k}" in record.detail
+    assert "Derived form" in record.detail and "\\frac{F_{0}}{k}" in record.detail
+    assert "Printed − derived: $\\frac{F_{0}}{k}$" in record.detail  # the term that differs
+    assert dict(record.point) .keys() == {"k", "F_{0}"}          # the point, every symbol
 
 
 def test_a_transcription_must_be_a_sympy_equation_not_text():
@@ -185,7 +194,7 @@ def test_a_rounded_printed_number_is_judged_within_its_tolerance():
     assert (loose.verdict, loose.method) == (A.CONFIRMED, "numeric")
     assert "not tried: the print is rounded" in loose.checks[0].detail
     assert (tight.verdict, tight.method) == (A.DISCREPANCY, "numeric")
-    assert "1.414" in tight.detail and "1.4142136" in tight.detail
+    assert "1.414" in tight.detail and "1.41421356237" in tight.detail
     assert exact.verdict == A.DISCREPANCY
     with pytest.raises(ValueError, match="tolerance"):
         PublishedFormula("K", "1.414", printed, "toy", tolerance=2.0)

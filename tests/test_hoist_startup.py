@@ -23,33 +23,35 @@ EXPECTED = {
     "(2)": "confirmed", "(2), Ω²": "confirmed", "(2), S(t)": "confirmed",
     "(3)": "confirmed", "(3), in x1 and x2": "confirmed",
     "(4)": "confirmed", "(5)": "confirmed", "(6)": "confirmed",
-    "(7)": "confirmed", "(7), velocity": "confirmed",
+    "(7)": "confirmed", "(7), velocity": "restated",   # adopted rest state
     "(8)": "discrepancy",                       # C1 = +x̃_*: sign slip
     "(8), middle": "confirmed", "(8), C2": "confirmed",
-    "(9)": "confirmed", "(10)": "confirmed",
+    # A minus repeated at a line break: literally a plus.
+    "(9)": "confirmed_with_convention", "(10)": "confirmed_with_convention",
     "(11)": "confirmed_with_convention",        # printed on ẋ(0), meant x(0)
-    "(11), velocity": "confirmed",
-    "(12)": "confirmed", "(12), C2": "confirmed", "(13)": "confirmed", "(14)": "confirmed",
+    "(11), velocity": "restated",
+    "(12)": "confirmed", "(12), C2": "confirmed", "(13)": "confirmed_with_convention",
+    "(14)": "confirmed",
     "(15)": "confirmed", "(16)": "confirmed", "(17)": "confirmed", "(18)": "confirmed",
     "(19)": "confirmed", "(19), via (2)": "confirmed",
     "(20)": "confirmed", "(20), velocity": "confirmed",
     "(21)": "confirmed", "(22)": "confirmed", "(23)": "confirmed", "(24)": "confirmed",
-    "(25)": "confirmed", "(25), via S(0)": "confirmed", "(26)": "confirmed",
+    "(25)": "restated", "(25), via S(0)": "confirmed", "(26)": "confirmed",
     "(27)": "dimension_error",                  # C/Ω multiplies Q(0) cos Ωt too
     "(28)": "remark", "(28), P(0)": "remark",   # full weight before lift-off
     "(28), Q(0)": "confirmed", "(28), Q(t)": "confirmed",
-    "(28), Q(t), t ≥ τ_0": "confirmed", "(28), Q_0": "confirmed",
+    "(28), Q(t), t ≥ τ_0": "restated", "(28), Q_0": "restated",
     "(29)": "confirmed",
     "(30), a_1": "confirmed", "(30), a_2": "remark",   # reaches v0/2 only
     "(30), a_3": "confirmed", "(30), a_4": "confirmed",
-    "(31)": "confirmed", "(31), P(0)": "confirmed", "(31), Q": "confirmed",
-    "(31), Q(0)": "confirmed", "S(t) after (31)": "confirmed",
-    "(32)": "confirmed", "(32), P̄": "confirmed", "(32), m": "confirmed",
+    "(31)": "confirmed", "(31), P(0)": "confirmed", "(31), Q": "restated",
+    "(31), Q(0)": "restated", "S(t) after (31)": "confirmed",
+    "(32)": "confirmed", "(32), P̄": "restated", "(32), m": "confirmed",
     "(33)": "confirmed", "(34)": "confirmed",
     "(34), via Y": "confirmed_with_convention", "Y in (33)–(49)": "remark",
     "(35)": "confirmed", "m Ω² = C (after (35))": "confirmed",
     "x_ст (after (35))": "confirmed", "(36)": "confirmed",
-    "(37)": "confirmed", "(37), second line": "confirmed", "(38)": "confirmed",
+    "(37)": "restated", "(37), second line": "restated", "(38)": "confirmed",
     "(39)": "confirmed_with_convention", "(39), Y_2": "confirmed",
     "(40)": "confirmed", "(40), in m and Ω": "confirmed", "(41)": "confirmed",
     "(42)": "confirmed",
@@ -68,7 +70,7 @@ EXPECTED = {
     "(53)": "discrepancy",                      # |sin(Ωθ/2)| missing
     "(54)": "discrepancy", "(55)": "confirmed",
     "(56)": "discrepancy",                      # −Q̈/m2 missing
-    "(57)": "confirmed", "(57), rope force": "confirmed",
+    "(57)": "confirmed", "(57), rope force": "restated",
     "K_дин normalisations": "remark",
     "(58)": "not_checkable", "(59)": "confirmed",
     "Q̈ ≡ 0 (before (60))": "confirmed", "Q̈ ≡ 0 at τ_0": "remark",
@@ -82,11 +84,13 @@ EXPECTED = {
     "t3* (after (66))": "confirmed", "max k̃3 (after (66))": "confirmed",
     "t4* (after (66))": "confirmed",
     "max k̃4 (after (66))": "confirmed_with_convention",   # printed as k̃_дин3
-    "Table 2, columns": "remark", "Table 2, a_i term": "remark",
     **{tables.table1_label(i, f): "confirmed"
        for i in (2, 3, 4) for f in tables.TABLE_COLUMNS},
-    # k1, k2 reproduced; k3, k4 are printed as 1 + (66).
-    **{tables.table2_label(i, v, tp, f): "confirmed" if i in (1, 2) else "discrepancy"
+    # k1, k2 reproduced only at fitted instants (k1 at t = 0 also as headed);
+    # k3, k4 are printed as 1 + (66).
+    **{tables.table2_label(i, v, tp, f): (
+        "discrepancy" if i in (3, 4) else "confirmed" if (i, f) == (1, 0)
+        else "confirmed_with_convention")
        for i in tables.TABLE2_ROWS for v, tp in tables.TABLE2_BLOCKS
        for f in tables.TABLE_COLUMNS},
 }
@@ -154,10 +158,12 @@ def test_every_verdict(records):
 
 
 def test_discrepancies_name_the_derived_form(records):
-    assert "derived form" in records["(8)"].detail
-    assert "Q_at0" in records["(27)"].detail and "m/s" in records["(27)"].detail
+    assert "Derived form" in records["(8)"].detail
+    assert "Q_{at0}" in records["(27)"].detail and "m/s" in records["(27)"].detail
     assert "left|" in records["(53)"].detail          # |sin(Ωθ/2)| in the derived form
-    assert "derived form" in records["(54)"].detail and "Q" in records["(54)"].detail
+    # (54): the one term that differs, and the point to recompute it at.
+    assert records["(54)"].literal.difference == r"\frac{\ddot{Q}}{m_{2}}"
+    assert {"m_{1}", "m_{2}", "C", r"\ddot{Q}"} <= dict(records["(54)"].point).keys()
     assert "subscript 3" in records["max k̃4 (after (66))"].detail
 
 

@@ -23,13 +23,29 @@ from decimal import Decimal
 
 import sympy as sp
 
-from crane_sym.published import (ASSUMPTION, Cause, Convention, DEFINITION, FITTED_VALUE, INTERNAL, LINE_BREAK_SIGN, LOST_MARK, OPERATOR_SCOPE, PublishedFormula, RECONSTRUCTED, SYMBOL_FOR_ANOTHER, printed)
+from crane_sym.published import (ASSUMPTION, DEFINITION, INTERNAL, LINE_BREAK_SIGN, LOST_MARK,
+                                 RECONSTRUCTED, Cause, Convention, PublishedFormula, printed)
 
 from .model import (A_LAW, C1, C2, INT_S, INT_S_COS, INT_S_Y, K, K1, K2, PAPER, P, P_at0,
                     P_d, Q, Q_0, Q_at0, S, S_at0, C, K_cell, Omega, T, Y, a, a_at0, g, m1,
                     m2, t, t_n, tau0, v0, x, x0, x0_dot, x1, x2, x_s, x_s0, x_s0_dot)
 
 _W = Omega
+# (9), (10), (13) break a line after a minus and repeat it on the next line.
+_LINE_BREAK = ("the minus before the line break is repeated after it, so the literal "
+               "print subtracts a negative term")
+_ONE_MINUS = "the minus repeated at the line break is one minus"
+MINUS_AT_LINE_BREAK = Cause(
+    "002-line-break-minus", "(9), (10) and (13) repeat the minus at a line break; read "
+    "literally, the two minuses make the last term positive")
+FULL_WEIGHT_FROM_START = Cause(
+    "002-28-full-weight", "(28) has the drive pull the full weight m2·g from t = 0, "
+    "while by its own Q(t) the load rests on the ground until τ_0; the rigid-hoist law "
+    "(55) gives (m1 + m2)·a_i + Q(t)")
+#: The laws (30) are shapes taken from ref. [7]; the check is their scaling.
+_SHAPE = {"basis": INTERNAL,
+          "basis_note": "the shape is ref. [7]'s; checked is the scaling the text "
+                        "states, ∫₀^tп a dt = v0"}
 
 
 def _printed(label: str, latex: str, relation: sp.Eq | None, note: str = "",
@@ -127,16 +143,25 @@ PUBLISHED = [
     _printed("(7)", L7, sp.Eq(x0, 0), "x(t)|_{t=0} = 0, equivalent to P_дин(0) = 0 "
              + _x_ic, kind=ASSUMPTION),
     _printed("(7), velocity", L7, sp.Eq(x0_dot, 0), "first condition " + _x_ic,
-             kind=ASSUMPTION),
+             kind=ASSUMPTION, basis=DEFINITION,
+             basis_note="the model adopts the rest state the text states"),
     _printed("(8)", L8, sp.Eq(C1, x_s0),
              "outer members of the first line, C_1 = x̃_*; its middle member −x_*(0) "
              "and (9), (12), (13), (14) all take x̃_* = x_*(0), so the last member "
-             "lacks a minus sign"),
+             "lacks a minus sign", cause=Cause(
+                 "002-8-sign", "the last member of (8) drops the minus of its middle "
+                 "member: C_1 = −x̃_*, as (9), (12)–(14) use it")),
     _printed("(8), middle", L8, sp.Eq(C1, -x_s0),
              "first line, C_1 = −x_*(t)|_{t=0}, with x_*(0) written x̃_*", compare_to="(8)"),
     _printed("(8), C2", L8, sp.Eq(C2, -x_s0_dot / _W), "second line, outer members"),
-    _printed("(9)", L9, sp.Eq(x, x_s - x_s0 * _cos - x_s0_dot * _sin / _W)),
-    _printed("(10)", L10, sp.Eq(P_d, C * x_s - C * x_s0 * _cos - C / _W * x_s0_dot * _sin)),
+    _printed("(9)", L9, sp.Eq(x, x_s - x_s0 * _cos - (-(x_s0_dot * _sin / _W))),
+             _LINE_BREAK, conventions=(Convention(
+                 _ONE_MINUS, sp.Eq(x, x_s - x_s0 * _cos - x_s0_dot * _sin / _W),
+                 LINE_BREAK_SIGN),), cause=MINUS_AT_LINE_BREAK),
+    _printed("(10)", L10, sp.Eq(P_d, C * x_s - C * x_s0 * _cos - (-(C / _W * x_s0_dot * _sin))),
+             _LINE_BREAK, conventions=(Convention(
+                 _ONE_MINUS, sp.Eq(P_d, C * x_s - C * x_s0 * _cos - C / _W * x_s0_dot * _sin),
+                 LINE_BREAK_SIGN),), cause=MINUS_AT_LINE_BREAK),
     _printed("(11)", L11, sp.Eq(x0_dot, Q_at0 / C),
              "the first condition is printed on ẋ(0), dimensionally impossible "
              "(m/s against m); (12) uses x(0) = Q(0)/C",
@@ -146,11 +171,16 @@ PUBLISHED = [
              cause=Cause("002-dot-on-x0", "(11) puts a dot on the initial displacement "
                          "x(0): a velocity equated to a length")),
     _printed("(11), velocity", L11, sp.Eq(x0_dot, 0), "second condition",
-             kind=ASSUMPTION),
+             kind=ASSUMPTION, basis=DEFINITION,
+             basis_note="the model adopts the rest state the text states"),
     _printed("(12)", L12, sp.Eq(C1, Q_at0 / C - x_s0)),
     _printed("(12), C2", L12, sp.Eq(C2, -x_s0_dot / _W)),
     _printed("(13)", L13, sp.Eq(x, x_s - x_s0 * _cos + Q_at0 / C * _cos
-                                - x_s0_dot * _sin / _W)),
+                                - (-(x_s0_dot * _sin / _W))),
+             _LINE_BREAK, conventions=(Convention(
+                 _ONE_MINUS, sp.Eq(x, x_s - x_s0 * _cos + Q_at0 / C * _cos
+                                   - x_s0_dot * _sin / _W), LINE_BREAK_SIGN),),
+             cause=MINUS_AT_LINE_BREAK),
     _printed("(14)", L14, sp.Eq(P_d, C * x_s - C * x_s0 * _cos + Q_at0 * _cos
                                 - C / _W * x_s0_dot * _sin)),
     _printed("(15)", L15, sp.Eq(x_s, INT_S_Y), "Y(t − θ) written out with (16)"),
@@ -164,10 +194,15 @@ PUBLISHED = [
     _printed("(20), velocity", L20, sp.Eq(x_s0_dot, 0)),
     _printed("(21)", L21, sp.Eq(x, INT_S / _W), "outer members"),
     _printed("(22)", L22, sp.Eq(P_d, C / _W * INT_S), "outer members"),
-    _printed("(23)", L23, sp.Eq(x, INT_S / _W + Q_at0 / C * _cos), "outer members"),
-    _printed("(24)", L24, sp.Eq(P_d, C / _W * INT_S + Q_at0 * _cos), "outer members"),
+    _printed("(23)", L23, sp.Eq(x, INT_S / _W + Q_at0 / C * _cos),
+             "outer members; the + repeated at the line break is +(+…), the same "
+             "literally, so no reading is needed"),
+    _printed("(24)", L24, sp.Eq(P_d, C / _W * INT_S + Q_at0 * _cos),
+             "outer members; the + repeated at the line break is +(+…), the same "
+             "literally, so no reading is needed"),
     _printed("(25)", L25, sp.Eq(K, P_d / ((m2 * P_at0 + m1 * Q_at0) / (m1 + m2))),
-             "outer members"),
+             "outer members", basis=DEFINITION,
+             basis_note="(25) defines K_дин; the step writes the same definition"),
     _printed("(25), via S(0)", L25, sp.Eq(K, P_d / (m1 * m2 / (m1 + m2) * S_at0)),
              "first equality"),
     _printed("(26)", L26, sp.Eq(K1, C / _W * INT_S / ((m2 * P_at0 + m1 * Q_at0)
@@ -175,40 +210,55 @@ PUBLISHED = [
     _printed("(27)", L27, sp.Eq(K2, C / _W * (INT_S + Q_at0 * _cos)
                                 / ((m2 * P_at0 + m1 * Q_at0) / (m1 + m2))),
              "the factor C/Ω stands before the whole fraction, so it multiplies "
-             "Q(0) cos Ωt as well; (24) has it on the integral only"),
+             "Q(0) cos Ωt as well; (24) has it on the integral only",
+             cause=Cause("002-27-factor-scope", "(27) puts the factor C/Ω before the "
+                         "whole numerator, so it multiplies Q(0)·cos Ωt too, which (24) "
+                         "does not")),
     _printed("(28)", L28, sp.Eq(P, (m1 + m2) * a + m2 * g),
              "first line: the drive pulls the full weight m2 g from t = 0 while the "
              "load still rests on the ground (Q < m2 g for t < τ_0); the rigid-hoist "
-             "law, the paper's own (55), gives (m1 + m2)·a_i + Q(t)", kind=ASSUMPTION),
+             "law, the paper's own (55), gives (m1 + m2)·a_i + Q(t)", kind=ASSUMPTION,
+             cause=FULL_WEIGHT_FROM_START),
     _printed("(28), P(0)", L28, sp.Eq(P_at0, (m1 + m2) * a_at0 + m2 * g),
              "second line; with Q(0) = 0 the rigid-hoist law gives (m1 + m2)·a_i(0)",
-             kind=ASSUMPTION),
+             kind=ASSUMPTION, cause=FULL_WEIGHT_FROM_START),
     _printed("(28), Q(0)", L28, sp.Eq(Q_at0, 0),
              "reconstructed: the OCR reads 'Q(t) = 0.' and then the two branches "
              "without their left-hand side; read as Q(0) = 0 and Q(t) = {...}, the "
              "only reading consistent with (29) and the text after it",
-             reconstructed=True),
+             reconstructed=True, basis=RECONSTRUCTED,
+             basis_note="the left-hand sides of (28)'s Q lines, lost in the OCR"),
     _printed("(28), Q(t)", L28, sp.Eq(Q, Q_0 * t / tau0),
              "reconstructed (see (28), Q(0)): Q(t) = Q_0 t/τ_0 for 0 ≤ t ≤ τ_0",
-             reconstructed=True),
+             reconstructed=True, basis=RECONSTRUCTED,
+             basis_note="the left-hand sides of (28)'s Q lines, lost in the OCR"),
     _printed("(28), Q(t), t ≥ τ_0", L28, sp.Eq(Q, Q_0),
              "reconstructed (see (28), Q(0)): Q(t) = Q_0 for t ≥ τ_0",
-             reconstructed=True),
-    _printed("(28), Q_0", r"Q_0 = m_2 g", sp.Eq(Q_0, m2 * g), "text after (28)"),
+             reconstructed=True, basis=DEFINITION,
+             basis_note="the model adopts the print: a lifted load weighs Q_0"),
+    _printed("(28), Q_0", r"Q_0 = m_2 g", sp.Eq(Q_0, m2 * g), "text after (28)",
+             basis=DEFINITION, basis_note="Q_0 is named the load's weight"),
     _printed("(29)", L29, sp.Eq(tau0, m2 * g / (C * v0))),
-    _printed("(30), a_1", L30, sp.Eq(A_LAW[1], v0 / t_n), kind=ASSUMPTION),
+    _printed("(30), a_1", L30, sp.Eq(A_LAW[1], v0 / t_n), kind=ASSUMPTION, **_SHAPE),
     _printed("(30), a_2", L30, sp.Eq(A_LAW[2], v0 / t_n * (1 - t / t_n)),
              "this a_2 brings the drive to v0/2 only by t_п (step '(30), speed of "
              "a_2'), while the text says t_п is the duration of the start to the steady "
-             "speed v0; the steps after (30) use the law as printed", kind=ASSUMPTION),
+             "speed v0; the steps after (30) use the law as printed", kind=ASSUMPTION,
+             **_SHAPE, cause=Cause("002-a2-half-speed", "the printed a_2 integrates to "
+                                   "v0/2 over t_п, while the text says every law reaches "
+                                   "the steady speed v0 at t_п")),
     _printed("(30), a_3", L30, sp.Eq(A_LAW[3], 12 * v0 * t / t_n ** 2 * (1 - t / t_n) ** 2),
-             kind=ASSUMPTION),
+             kind=ASSUMPTION, **_SHAPE),
     _printed("(30), a_4", L30, sp.Eq(A_LAW[4], 60 * v0 / t_n * (t / t_n) ** 2
-                                     * (1 - t / t_n) ** 3), kind=ASSUMPTION),
+                                     * (1 - t / t_n) ** 3), kind=ASSUMPTION, **_SHAPE),
     _printed("(31)", L31, sp.Eq(P, (m1 + m2) * a + m2 * g), "first line"),
     _printed("(31), P(0)", L31, sp.Eq(P_at0, (m1 + m2) * a_at0 + m2 * g), "second line"),
-    _printed("(31), Q", L31, sp.Eq(Q, m2 * g), "third line, outer members"),
-    _printed("(31), Q(0)", L31, sp.Eq(Q_at0, m2 * g), "third line, Q(0) = m2 g"),
+    _printed("(31), Q", L31, sp.Eq(Q, m2 * g), "third line, outer members",
+             basis=DEFINITION, basis_note="the model adopts the print: lifting from "
+             "weight, the resistance is the weight"),
+    _printed("(31), Q(0)", L31, sp.Eq(Q_at0, m2 * g), "third line, Q(0) = m2 g",
+             basis=DEFINITION, basis_note="the model adopts the print: lifting from "
+             "weight, the resistance is the weight"),
     _printed("S(t) after (31)", L_S, sp.Eq(S, P / m1 + Q / m2), "unnumbered",
              compare_to="(2), S(t)"),
 ]

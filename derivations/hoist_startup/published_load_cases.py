@@ -6,7 +6,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from crane_sym.published import (ASSUMPTION, Cause, Convention, PublishedFormula, SYMBOL_FOR_ANOTHER)
+from crane_sym.published import (ASSUMPTION, DEFINITION, SYMBOL_FOR_ANOTHER, Cause, Convention,
+                                 PublishedFormula)
 
 from .model import (INT_P, INT_P_REV, INT_P_Y16, INT_P_YF, K, Pbar, Pbar0, S, C, Y, Y2,
                     d_max, k, m, m1, m2, t, t_n, theta, theta_half, vt, x, x0, x0_dot,
@@ -95,7 +96,8 @@ _Y1m, _Y2m = _y_integrals(m)          # Y per unit force
 
 PUBLISHED = [
     _printed("(32)", L32, sp.Eq(x.diff(t, 2) + _W ** 2 * x, Pbar / m)),
-    _printed("(32), P̄", L32b, sp.Eq(Pbar, S * m), "unnumbered line after (32)"),
+    _printed("(32), P̄", L32b, sp.Eq(Pbar, S * m), "unnumbered line after (32)",
+             basis=DEFINITION, basis_note="the line defines P̄"),
     _printed("(32), m", L32b, sp.Eq(m, m1 * m2 / (m1 + m2)), "unnumbered line after (32)"),
     _printed("(33)", L33, sp.Eq(x, x0 * _cos + x0_dot * _sin / _W + INT_P / (_W * m)),
              "x_0 cos Ω·t read as x_0 cos(Ωt)"),
@@ -108,7 +110,7 @@ PUBLISHED = [
              "whole-paper remark: (16) defines Y as the response to a unit impulse of "
              "S (m/s² · s); (34), (39), (43), (44), (48), (49) use the same name for the "
              "response to a unit impulse of the force P̄ = m S, smaller by the factor m",
-             compare_to="Y per unit force", kind=ASSUMPTION),
+             compare_to="Y per unit force", kind=ASSUMPTION, cause=Y_TWO_MEANINGS),
     _printed("(35)", L35, sp.Eq(x, Pbar0 / (m * _W ** 2) * (1 - _cos)),
              "cos Ω t read as cos(Ωt)"),
     _printed("m Ω² = C (after (35))", r"m \cdot \Omega^2 = C", sp.Eq(m * _W ** 2, C),
@@ -116,9 +118,11 @@ PUBLISHED = [
     _printed("x_ст (after (35))", r"\bar{P}_0 / (m\Omega^2) = x_{\text{ст}}",
              sp.Eq(x_st, Pbar0 / (m * _W ** 2)), "text after (35)"),
     _printed("(36)", L36, sp.Eq(x, 2 * Pbar0 / (m * _W ** 2) * sp.sin(_W * t / 2) ** 2)),
-    _printed("(37)", L37, sp.Eq(K, C * x / (C * x_st)), "first member"),
+    _printed("(37)", L37, sp.Eq(K, C * x / (C * x_st)), "first member",
+             basis=DEFINITION, basis_note="(37) defines K_дин of the load cases"),
     _printed("(37), second line", L37b, sp.Eq(K, x / x_st),
-             "unnumbered line repeating (37)", compare_to="(37)"),
+             "unnumbered line repeating (37)", compare_to="(37)",
+             basis=DEFINITION, basis_note="(37) defines K_дин of the load cases"),
     _printed("(38)", L38, sp.Eq(K, 2 * sp.sin(_W * t / 2) ** 2), "Ω(t) read as Ωt"),
     _via_y("(39)", L39a, k * _Y2, k * _Y2m, "(39)",
            "x = ∫ k(t − θ) Y(θ) dθ = k Y_2(t) with Y_2 of the next line; the "
@@ -181,5 +185,8 @@ PUBLISHED = [
     _printed("(53)", L53, sp.Eq(d_max, 2 * _half / (_W * theta)),
              "reconstructed: the OCR's x_{cr} and x_{cm} are x_ст. The maximum over t "
              "of −2 cos(...)·sin(Ωθ/2)/(Ωθ) is 2|sin(Ωθ/2)|/(Ωθ); the print holds for "
-             "Ωθ ≤ 2π only and turns negative beyond", reconstructed=True),
+             "Ωθ ≤ 2π only and turns negative beyond", reconstructed=True,
+             cause=Cause("002-53-abs", "(53) gives the amplitude as 2 sin(Ωθ/2)/(Ωθ), "
+                         "which is negative for 2π < Ωθ < 4π, …; the amplitude is "
+                         "2|sin(Ωθ/2)|/(Ωθ)")),
 ]

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from crane_sym.published import (ASSUMPTION, Cause, Convention, SYMBOL_FOR_ANOTHER)
+from crane_sym.published import (ASSUMPTION, DEFINITION, INTERNAL, SYMBOL_FOR_ANOTHER, Cause,
+                                 Convention)
 
 from .model import (K_OPT, P, Q, C, F_ref, a, dQdot_tau0, dk_tau0, g, k3_max, k4_max, k_d,
                     kt_d, m1, m2, t, t3_star, t4_star, t_n, tau0, v0, x1, x2)
@@ -52,18 +53,26 @@ L_MAX3 = (r"\tilde{k}_{\text{дин3}}^{(\text{opt})}\left(\frac{t_n}{3}\right) 
           r"\text{ а максимальне значення}")
 L_MAX4 = r"\tilde{k}_{\text{дин3}}^{(\text{opt})}(0,4t_n) = 2,0736."
 
+MISSING_Q_DDOT = Cause("002-54-missing-Q-ddot", "(54) lacks the term −Q̈/m2 that "
+                       "eliminating x1 from (1) leaves, and (56), built on it, inherits "
+                       "the gap; both hold only where Q is linear in t")
+NO_EXTREMAL = Cause("002-61-no-extremal", "the laws a_3, a_4 of (30) have ä ≠ 0, so "
+                    "ẍ2 = a_i cannot satisfy (60), x2^(IV) = 0: (65), i = 3, 4 are no "
+                    "extremals of (58)")
+
 PUBLISHED = [
     _printed("(54)", L54, sp.Eq(x2.diff(t, 4) + _W ** 2 * x2.diff(t, 2),
                                 (P - Q) / (m1 * m2 / C)),
              "the term −Q̈/m2 is missing: (54) follows from (1) only where Q is linear "
-             "in t, which the paper assumes later, at (60)"),
+             "in t, which the paper assumes later, at (60)", cause=MISSING_Q_DDOT),
     _printed("(55)", L55, sp.Eq(P, (m1 + m2) * a + Q)),
     _printed("(56)", L56, sp.Eq(x2.diff(t, 4) + _W ** 2 * x2.diff(t, 2), _W ** 2 * a),
-             "inherits the missing −Q̈/m2 of (54)"),
+             "inherits the missing −Q̈/m2 of (54)", cause=MISSING_Q_DDOT),
     _printed("(57)", L57, sp.Eq(k_d, (m2 * x2.diff(t, 2) + Q) / (m2 * v0 / t_n)),
              "first member"),
     _printed("(57), rope force", L57, sp.Eq(k_d, C * (x1 - x2) / (m2 * v0 / t_n)),
-             "second member"),
+             "second member", basis=DEFINITION,
+             basis_note="(57) defines k_дин as the rope force over m2·v0/t_п"),
     _printed("K_дин normalisations", r"\left(m_2 \cdot \frac{v_0}{t_n} \right)",
              sp.Eq(F_ref, m2 * v0 / t_n),
              "whole-paper remark: one name, three references. (25) divides the rope "
@@ -72,17 +81,26 @@ PUBLISHED = [
              "(57)–(64) by m2 v0/t_п, which leaves the weight out of the reference but "
              "not out of the force, so k̃ of (64) reaches 1 + g t_п/v0 at τ_0 (20 to 80 "
              "in Table 2): the 'very large values' of conclusion 3",
-             compare_to="reference of (25), from weight", kind=ASSUMPTION),
+             compare_to="reference of (25), from weight", kind=ASSUMPTION,
+             basis=INTERNAL, basis_note="(57)'s reference against (25)'s",
+             cause=Cause("002-three-references", "K_дин is normalised three ways: (25) by "
+                         "the rigid rope force at t = 0, (37) by C·x_ст, (57)–(64) by "
+                         "m2·v0/t_п, which keeps the weight in the force but not in the "
+                         "reference")),
     _printed("(58)", L58, None,
              not_checkable="a criterion to be minimised (⇒ min), not a relation; its "
-             "Euler–Poisson equation (59) is checked"),
+             "Euler–Poisson equation (59) is checked",
+             cause=Cause("002-58-criterion", "(58) states a criterion to minimise, not a "
+                         "relation; what it implies is checked at (59)")),
     _printed("(59)", L59, sp.Eq(x2.diff(t, 4) * m2 + Q.diff(t, 2), 0)),
     _printed("Q̈ ≡ 0 (before (60))", r"\ddot{Q}(t) \equiv 0", sp.Eq(Q.diff(t, 2), 0),
              "text before (60), on each piece of Q", compare_to="Q̈ = 0 (before (60))"),
     _printed("Q̈ ≡ 0 at τ_0", r"\ddot{Q}(t) \equiv 0", sp.Eq(dQdot_tau0, 0),
              "text before (60): 'for any method of lifting'. With pick-up Q̇ jumps at "
              "τ_0, so Q̈ is a delta there and (60) holds on each side of τ_0 only",
-             compare_to="Q̇ at τ_0 (before (60))", kind=ASSUMPTION),
+             compare_to="Q̇ at τ_0 (before (60))", kind=ASSUMPTION,
+             cause=Cause("002-Q-kink-at-tau0", "with pick-up Q̇ jumps at τ_0, so Q̈ ≡ 0 "
+                         "'for any method of lifting' fails there: Q̈ holds a delta")),
     _printed("(60)", L60, sp.Eq(x2.diff(t, 4), 0)),
     _printed("(61)", L61, sp.Eq(x2.diff(t, 2), a), "the conclusion after ⇔"),
     *[_printed(f"(61), i = {i}", L61, sp.Eq(x2.diff(t, 4), 0),
@@ -90,7 +108,8 @@ PUBLISHED = [
                + (f"It does: a_{i} is linear in t." if i < 3 else
                   f"It does not: ä_{i} ≠ 0, so (56) and (60) have no common solution "
                   f"for a_{i}, and (65), i = {i} is no extremal of (58)"),
-               compare_to=f"(61), i = {i}", kind=ASSUMPTION) for i in range(1, 5)],
+               compare_to=f"(61), i = {i}", kind=ASSUMPTION,
+               cause=None if i < 3 else NO_EXTREMAL) for i in range(1, 5)],
     _printed("(62)", L62, sp.Eq(k_d, (m2 * a + Q) / (m2 * v0 / t_n))),
     _printed("(63)", L63, sp.Eq(kt_d, m2 * a / (m2 * v0 / t_n)), "lifting from weight"),
     _printed("(64)", L64, sp.Eq(kt_d, (m2 * a + m2 * g * t / tau0) / (m2 * v0 / t_n)),
@@ -101,7 +120,10 @@ PUBLISHED = [
              "the dynamic component of the rope force' (який враховує лише зміни у "
              "динамічній складовій пружної сили у канаті), which is continuous at τ_0; "
              "(64) keeps the weight before τ_0 and drops it after, a jump of g t_п/v0",
-             kind=ASSUMPTION),
+             kind=ASSUMPTION, cause=Cause(
+                 "002-64-jump", "(64) keeps the weight in k̃ before τ_0 and drops it "
+                 "after, a jump of g·t_п/v0, though k̃ is said to hold only the dynamic "
+                 "part of the rope force")),
     _printed("(65), i = 1", L65, sp.Eq(K_OPT[1], 1)),
     _printed("(65), i = 2", L65, sp.Eq(K_OPT[2], 1 - t / t_n)),
     _printed("(65), i = 3", L65, sp.Eq(K_OPT[3], 12 * t / t_n * (1 - t / t_n) ** 2)),

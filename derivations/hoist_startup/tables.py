@@ -7,15 +7,16 @@ of ``published`` (it uses their helpers); ``build()`` imports it when it runs.
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from decimal import Decimal
 
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.published import ASSUMPTION
+from crane_sym.published import FITTED_VALUE, Cause, Convention, PublishedFormula
 
 from .model import K_cell, col, g, t, t_a, t_n, tau0, v0
-from .published import _cell, _printed
+from .published import _cell
 from .steps import rhs
 
 
@@ -23,6 +24,9 @@ from .steps import rhs
 #: Table 2 as the numbers show it was computed (see ``derive_tables``).
 TABLE2_G = sp.Rational(981, 100)
 TABLE2_T_A = sp.Rational(1, 1000)
+#: The literal reading: the instant the header gives, standard gravity.
+STANDARD_G = sp.Rational(980665, 100000)
+AS_HEADED = ", as headed"
 
 
 def derive_tables(d: Derivation) -> None:
@@ -47,6 +51,11 @@ def derive_tables(d: Derivation) -> None:
                 fixed = {v0: speed, t_n: duration}
                 value = (a_part.subs(fixed).subs(t, TABLE2_T_A)
                          + g_part.subs(fixed).subs({g: TABLE2_G, t: frac * tau0}))
+                headed = law.subs(fixed).subs({g: STANDARD_G, t: frac * duration})
+                d.add(table2_label(i, speed, duration, frac) + AS_HEADED,
+                      sp.Eq(K_cell, headed),
+                      f"(66), i = {i} at t = {frac}·t_п in both terms, as the header "
+                      "t/t_п says, with standard gravity; τ_0 is not given.")
                 d.add(table2_label(i, speed, duration, frac), sp.Eq(K_cell, value),
                       f"(66), i = {i} with g = 9.81, t/τ_0 = {frac} in the g term, "
                       "t = 1 ms in the a_i term.")
@@ -124,20 +133,33 @@ TABLE2_NOTES = {
 
 PUBLISHED = [_cell(table1_label(i, frac), text, "Table 1, from (65)")
               for i, row in TABLE1.items() for frac, text in zip(TABLE_COLUMNS, row)]
-PUBLISHED += [
-    _printed("Table 2, columns", r"\frac{t}{t_{\text{п}}}", sp.Eq(col, t / t_n),
-             "Table 2 header; the caption says t ∈ [0, τ_0]", compare_to="Table 2, columns",
-             kind=ASSUMPTION),
-    _printed("Table 2, a_i term", r"t \in [0, \tau_0]", sp.Eq(t_a, t),
-             "Table 2 caption: each cell is (66) at one instant t, in both terms",
-             kind=ASSUMPTION),
-]
-PUBLISHED += [
-    _cell(table2_label(i, speed, duration, frac), text,
-          "Table 2, from (66)" + (f"; {TABLE2_NOTES[i]}" if i in TABLE2_NOTES else "")
-          + ("; the printed 59,8662 has one digit too many: 1 + (66) is 59.865994"
-             if text == "59,8662" else ""))
-    for i in TABLE2_ROWS
-    for (speed, duration), row in zip(TABLE2_BLOCKS, TABLE2[i])
-    for frac, text in zip(TABLE_COLUMNS, row)
-]
+#: The reading Table 2's numbers need (the literal one is its header, t/t_п).
+FITTED_INSTANTS = ("the instants fitted to the printed numbers: the column is t/τ_0 in "
+                   "the g term (the caption's t ∈ [0, τ_0]), the a_i term is taken at "
+                   "t = 1 ms, g = 9.81 m/s²")
+UNSTATED_INSTANTS = Cause(
+    "002-table2-instants", "Table 2's header gives the column as t/t_п and no τ_0; its "
+    "numbers follow from (66) only at instants fitted to them (t/τ_0 in the g term, "
+    "t = 1 ms in the a_i term, g = 9.81)")
+PLUS_ONE = Cause(
+    "002-table2-plus-one", "the rows k̃_дин3 and k̃_дин4 of Table 2 are 1 + (66) even "
+    "at the fitted instants: the table adds 1 to both rows")
+
+
+def _table2_cell(i: int, speed: sp.Rational, duration: sp.Integer, frac: sp.Rational,
+                 text: str) -> PublishedFormula:
+    label = table2_label(i, speed, duration, frac)
+    cell = _cell(label, text, "Table 2, from (66)"
+                 + (f"; {TABLE2_NOTES[i]}" if i in TABLE2_NOTES else "")
+                 + ("; the printed 59,8662 has one digit too many: 1 + (66) is 59.865994"
+                    if text == "59,8662" else ""),
+                 compare_to=label + AS_HEADED,
+                 cause=PLUS_ONE if i in TABLE2_NOTES else UNSTATED_INSTANTS)
+    fitted = Convention(FITTED_INSTANTS, cell.printed, FITTED_VALUE, compare_to=label)
+    return replace(cell, conventions=(fitted,))
+
+
+PUBLISHED += [_table2_cell(i, speed, duration, frac, text)
+              for i in TABLE2_ROWS
+              for (speed, duration), row in zip(TABLE2_BLOCKS, TABLE2[i])
+              for frac, text in zip(TABLE_COLUMNS, row)]

@@ -5,7 +5,8 @@ from __future__ import annotations
 
 import sympy as sp
 
-from crane_sym.published import (ASSUMPTION, Cause, Convention, DEFINITION, FITTED_VALUE, INTERNAL, LINE_BREAK_SIGN, LOST_MARK, OPERATOR_SCOPE, PublishedFormula, RECONSTRUCTED, SYMBOL_FOR_ANOTHER, printed)
+from crane_sym.published import (ASSUMPTION, DEFINITION, OPERATOR_SCOPE, SYMBOL_FOR_ANOTHER, Cause,
+                                 Convention, PublishedFormula, printed)
 
 from .model import (PAPER, A, B, F, P, P_t, W, c, m1, m2, p, t, u0, u0_dot, x1,
                     x2, x_p)
@@ -61,10 +62,14 @@ PUBLISHED = [
     _printed("initial stretch", r"x_2 - x_1 = 0;", sp.Eq(u0, 0),
              "initial conditions at t = 0, printed between (9) and (10); the "
              "step 'preloaded start' gives F(t) from the preloaded state",
-             compare_to="steady travel", kind=ASSUMPTION),
+             compare_to="steady travel", kind=ASSUMPTION, cause=Cause(
+                 "000-unstretched-start", "the print starts braking from an unstretched "
+                 "link, while steady travel against the resistance W stretches it by "
+                 "−W/c")),
     _printed("initial relative velocity", r"\dot{x}_2 - \dot{x}_1 = 0.", sp.Eq(u0_dot, 0),
              "initial conditions at t = 0, printed between (9) and (10)",
-             kind=ASSUMPTION),
+             kind=ASSUMPTION, basis=DEFINITION,
+             basis_note="the model adopts the equal speeds of steady travel"),
     _printed("(10)", r"(\dot{x}_2 - \dot{x}_1) = -pA \sin pt + pB \cos pt, \quad (10)",
              sp.Eq(_stretch.diff(t), -p * A * sp.sin(p * t) + p * B * sp.cos(p * t))),
     _printed("(11)", r"A = -\frac{P_t m_2 - W m_1}{c(m_1 + m_2)}, \quad (11)",
