@@ -154,7 +154,9 @@ def _table2_cell(i: int, speed: sp.Rational, duration: sp.Integer, frac: sp.Rati
                  + ("; the printed 59,8662 has one digit too many: 1 + (66) is 59.865994"
                     if text == "59,8662" else ""),
                  compare_to=label + AS_HEADED,
-                 cause=PLUS_ONE if i in TABLE2_NOTES else UNSTATED_INSTANTS)
+                 cause=(PLUS_ONE if i in TABLE2_NOTES
+                        else None if (i, frac) == (1, 0)  # 1 at t = 0 under any reading
+                        else UNSTATED_INSTANTS))
     fitted = Convention(FITTED_INSTANTS, cell.printed, FITTED_VALUE, compare_to=label)
     return replace(cell, conventions=(fitted,))
 

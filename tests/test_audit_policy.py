@@ -1,0 +1,124 @@
+"""The audit's policy, pinned on every paper: bases, readings, causes, mutations.
+
+- a ``definition`` record is never counted as a confirmation;
+- a reading always leaves the literal check in the record, and is named there;
+- every finding has a cause the transcriber gave, one sentence per cause id;
+- a transcription mutated by scaling one term flips to a finding.
+"""
+from __future__ import annotations
+
+import json
+from dataclasses import replace
+
+import pytest
+import sympy as sp
+
+from crane_sym import registry
+from crane_sym.audit import (AGREEMENTS, CONFIRMATIONS, CONFIRMED_WITH_CONVENTION,
+                             RESTATED, UNEXPLAINED, audit, audit_formula)
+from crane_sym.published import (BASES, DEFINITION, MODEL, READINGS, PublishedFormula)
+from crane_sym.report import as_json, as_markdown, by_cause, findings, summary
+
+PAPERS = registry.ids()
+
+
+@pytest.fixture(scope="module", params=PAPERS)
+def paper(request):
+    d = registry.get(request.param)
+    return d, audit(d)
+
+
+def test_every_record_has_a_basis_and_a_cause_key(paper):
+    _, records = paper
+    for item in json.loads(as_json(records)):
+        assert item["basis"] in BASES, item["label"]
+        assert "cause" in item, item["label"]
+        assert item["basis"] == MODEL or item["basis_note"], item["label"]
+
+
+def test_a_definition_is_never_a_confirmation(paper):
+    _, records = paper
+    for r in records:
+        if r.basis == DEFINITION:
+            assert r.verdict not in CONFIRMATIONS, r.label
+        if r.verdict == RESTATED:
+            assert r.basis == DEFINITION, r.label
+    restated = sum(r.verdict == RESTATED for r in records)
+    confirmations = sum(r.verdict in CONFIRMATIONS for r in records)
+    assert f"{confirmations} confirmations" in summary(records)
+    assert f"{restated} restated definitions (not counted" in summary(records)
+
+
+def test_a_reading_keeps_the_literal_check(paper):
+    _, records = paper
+    for r in records:
+        if r.verdict != CONFIRMED_WITH_CONVENTION:
+            continue
+        assert r.literal.reading == "literal" and not r.literal.matches, r.label
+        assert r.reading is not None and r.reading.reading in READINGS, r.label
+        assert set(r.literal.checks) <= set(r.checks), r.label
+        assert r.detail.startswith("as printed: ") and f"Read with the {r.reading.reading}" \
+            in r.detail, r.label
+
+
+def test_every_finding_has_a_cause(paper):
+    _, records = paper
+    for r in findings(records):
+        assert r.cause is not None and r.cause.id != UNEXPLAINED, (r.label, r.verdict)
+        assert r.cause.sentence.strip(), r.label
+    for cause_id, group in by_cause(records).items():
+        assert len({r.cause.sentence for r in group}) == 1, cause_id
+
+
+def test_no_cause_is_declared_where_nothing_is_found(paper):
+    d, records = paper
+    for f, r in zip(d.published, records):
+        if r.verdict in AGREEMENTS:
+            assert f.cause is None, f"{f.label}: declares {f.cause} but is {r.verdict}"
+
+
+def test_markdown_groups_findings_by_cause(paper):
+    _, records = paper
+    text = as_markdown(records)
+    for cause_id, group in by_cause(records).items():
+        assert f"### {cause_id} ({len(group)} record" in text
+    for r in findings(records):
+        if r.printed:
+            assert f"printed: ${r.printed}$" in text, r.label
+
+
+def _scaled(relation: sp.Eq) -> sp.Eq:
+    """The relation with one term scaled by 3/2 (``X = 0`` becomes ``X = 1``)."""
+    for side in ("rhs", "lhs"):
+        terms = sp.Add.make_args(getattr(relation, side))
+        if len(terms) > 1:
+            new = sp.Add(terms[0] * sp.Rational(3, 2), *terms[1:])
+            return (sp.Eq(relation.lhs, new, evaluate=False) if side == "rhs"
+                    else sp.Eq(new, relation.rhs, evaluate=False))
+    if relation.rhs == 0:
+        return sp.Eq(relation.lhs, 1, evaluate=False)
+    return sp.Eq(relation.lhs, relation.rhs * sp.Rational(3, 2), evaluate=False)
+
+
+def test_a_mutated_transcription_flips_to_a_finding(paper):
+    d, records = paper
+    checked = 0
+    for f, r in zip(d.published, records):
+        if r.verdict not in AGREEMENTS + (CONFIRMED_WITH_CONVENTION,):
+            continue
+        bad = replace(f, printed=_scaled(f.printed), conventions=tuple(
+            replace(c, reading=_scaled(c.reading)) for c in f.conventions))
+        again = audit_formula(d, bad)
+        assert again.verdict not in AGREEMENTS + (CONFIRMED_WITH_CONVENTION,), f.label
+        checked += 1
+    assert checked > 0
+
+
+def test_a_toy_definition_is_restated_and_its_mutation_is_found():
+    d = registry.get(PAPERS[0])
+    f = next(f for f in d.published if f.printed is not None and f.basis == MODEL
+             and audit_formula(d, f).verdict == "confirmed")
+    as_definition = replace(f, basis=DEFINITION, basis_note="toy: adopted")
+    assert audit_formula(d, as_definition).verdict == RESTATED
+    with pytest.raises(ValueError, match="basis_note"):
+        PublishedFormula("(x)", "", f.printed, "toy", basis=DEFINITION)
