@@ -85,7 +85,10 @@ def _symbols(d: Derivation, latex_names: dict) -> str:
 
 def _verdict_line(record: AuditRecord) -> str:
     """One sentence: the verdict, the check that decided it, and why."""
-    line = f"Verdict: **{record.verdict}** (decided by {record.method})"
+    line = (f"Verdict: **{record.verdict}** (decided by {record.method}; rests on: "
+            f"{record.basis}" + (f", {record.basis_note}" if record.basis_note else "") + ")")
+    if record.cause:
+        line += f". Cause `{record.cause.id}`: {record.cause.sentence}"
     return line + (f" — {record.detail}" if record.detail else "")
 
 
@@ -103,11 +106,13 @@ def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord]) -> list[st
 
 def _verdicts(d: Derivation, records: list[AuditRecord] | None) -> str:
     """Summary table: one row per audited (or, without records, published) formula."""
-    rows = ["| Formula | Verdict | Decided by |", "| --- | --- | --- |"]
+    rows = ["| Formula | Verdict | Decided by | Rests on | Cause |",
+            "| --- | --- | --- | --- | --- |"]
     if records is None:
-        rows += [f"| {_cell(f.label)} | not audited | — |" for f in d.published]
+        rows += [f"| {_cell(f.label)} | not audited | — | — | — |" for f in d.published]
     else:
-        rows += [f"| {_cell(r.label)} | {_cell(r.verdict)} | {_cell(r.method)} |"
+        rows += [f"| {_cell(r.label)} | {_cell(r.verdict)} | {_cell(r.method)} | "
+                 f"{_cell(r.basis)} | {_cell(r.cause.id) if r.cause else '—'} |"
                  for r in records]
     return "\n".join(rows)
 

@@ -106,8 +106,11 @@ def test_verdicts_in_summary_and_steps(built):
     _, records, _, text = built
     summary = _section(text, "Verdicts")
     for r in records:
-        assert f"| {r.label} | {r.verdict} | {r.method} |" in summary
-        assert f"Verdict: **{r.verdict}** (decided by {r.method}) — {r.detail}" in text
+        assert f"| {r.label} | {r.verdict} | {r.method} | {r.basis} |" in summary
+        assert f"Verdict: **{r.verdict}** (decided by {r.method}; rests on: {r.basis}" in text
+        assert r.detail in text
+        if r.cause:
+            assert f"Cause `{r.cause.id}`: {r.cause.sentence}" in text
 
 
 def test_deterministic(built):
