@@ -2,6 +2,7 @@
 independent routes (SymPy's LagrangesMethod, scipy quadrature, numpy
 eigenvalues, a long simulation against the steady-running steps), the
 simulation's energy balance and the scene of the paper's example."""
+import dataclasses
 import math
 import re
 from pathlib import Path
@@ -11,6 +12,8 @@ import pytest
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
 
+from crane_sym.audit import (AGREEMENTS, CONFIRMATIONS, UNEXPLAINED,
+                             audit_formula)
 from crane_sym.derivations import drum_drive
 from crane_sym.derivations.drum_drive import model as m
 from crane_sym.derivations.drum_drive import published as pub
@@ -23,47 +26,76 @@ integrate = pytest.importorskip("scipy.integrate")
 PAPER_TEXT = Path("/work/shared/seeds") / m.PAPER
 SCENE = scenes_directory("drum_drive") / "drum_drive_example.toml"
 
+#: Label -> (verdict, basis). Basis: M model, R reconstructed model (Fig. 1 is lost),
+#: I internal (dimensions, or the paper against its own line), D definition.
+M, R, I, D = "model", "reconstructed model", "internal", "definition"
 EXPECTED = {
-    "(1), coordinates": "discrepancy",
-    "(1), φ": "confirmed_with_convention",
-    "(1), z": "confirmed_with_convention",
-    "(1), y": "confirmed_with_convention",
-    "(2)": "discrepancy",
-    "(3)": "dimension_error",
-    "(3), second member": "dimension_error",
-    "(4)": "confirmed",
-    "(5)": "confirmed",
-    "(6)": "confirmed",
-    "(7)": "dimension_error",
-    "(8)": "dimension_error",
-    "(9)": "not_checkable",
-    "(9), δA_1": "dimension_error",
-    "(9), δA_2": "discrepancy",
-    "(9), δA_3": "discrepancy",
-    "(10), Q1": "discrepancy",
-    "(10), Q2": "discrepancy",
-    "(10), Q3": "discrepancy",
-    "(10), Q1 vs (9)": "discrepancy",
-    "(10), Q2 vs (9)": "discrepancy",
-    "(10), Q3 vs (9)": "confirmed",
-    "(11)": "confirmed_with_convention",
-    "(12), row 1": "dimension_error",
-    "(12), row 2": "dimension_error",
-    "(12), row 3": "dimension_error",
-    "(13)": "dimension_error",
-    "(13), k": "dimension_error",
-    "(14)": "confirmed",
-    "(14), homogeneous equation": "discrepancy",
-    "(14), y1": "confirmed",
-    "(15)": "not_checkable",
-    "(16)": "not_checkable",
-    "(17)": "dimension_error",
-    "(18)": "confirmed",
-    "(19)": "remark",
-    "(20)": "discrepancy",
-    "(21)": "confirmed",
-    "initial state": "remark",
+    "(1), coordinates": ("discrepancy", I),
+    "(1), φ": ("restated", D),
+    "(1), z": ("restated", D),
+    "(1), y": ("restated", D),
+    "(2)": ("discrepancy", R),
+    "(3)": ("dimension_error", I),
+    "(3), second member": ("dimension_error", I),
+    "(4)": ("restated", D),
+    "(5)": ("restated", D),
+    "(6)": ("restated", D),
+    "(7)": ("dimension_error", I),
+    "(8)": ("dimension_error", I),
+    "(9)": ("not_checkable", D),
+    "(9), δA_1": ("dimension_error", I),
+    "(9), δA_2": ("discrepancy", R),
+    "(9), δA_3": ("discrepancy", R),
+    "(10), Q1": ("discrepancy", R),
+    "(10), Q2": ("discrepancy", R),
+    "(10), Q3": ("discrepancy", R),
+    "(10), Q1 vs (9)": ("discrepancy", I),
+    "(10), Q2 vs (9)": ("discrepancy", I),
+    "(10), Q3 vs (9)": ("confirmed", I),
+    "(11)": ("confirmed_with_convention", R),
+    "(12), row 1": ("dimension_error", I),
+    "(12), row 2": ("dimension_error", I),
+    "(12), row 3": ("dimension_error", I),
+    "(13)": ("dimension_error", I),
+    "(13), k": ("dimension_error", I),
+    "(14)": ("restated", D),
+    "(14), homogeneous equation": ("discrepancy", I),
+    "(14), y1": ("confirmed", I),
+    "(15)": ("not_checkable", D),
+    "(16)": ("not_checkable", M),
+    "(17)": ("dimension_error", I),
+    "(18)": ("confirmed", M),
+    "(19)": ("remark", M),
+    "(20)": ("discrepancy", R),
+    "(21)": ("restated", D),
+    "initial state": ("remark", R),
 }
+#: Records that fail for one reason share one cause: cause id -> labels.
+CAUSES = {
+    "004-1-three-coordinates": {"(1), coordinates"},
+    "004-2-undefined-translations": {"(2)"},
+    "004-3-speed-not-squared": {"(3)", "(3), second member"},
+    "004-7-velocity-in-root": {"(7)"},
+    "004-8-velocities-in-potential": {"(8)"},
+    "004-only-a-definition": {"(9)", "(15)"},
+    "004-16-continuum-not-stated": {"(16)"},
+    "004-dA1-weight-without-arm": {"(9), δA_1", "(10), Q1 vs (9)"},
+    "004-y-force-difference": {"(9), δA_2", "(10), Q3"},
+    "004-z-force": {"(9), δA_3", "(10), Q2"},
+    "004-10-Q1-weight-moment": {"(10), Q1"},
+    "004-10-Q2-not-from-9": {"(10), Q2 vs (9)"},
+    "004-11-undefined-coordinates": {"(11)"},
+    "004-12-mixed-dimensions": {"(12), row 1", "(12), row 2", "(12), row 3"},
+    "004-13-stiffness-on-velocity": {"(13)"},
+    "004-13-k-three-masses": {"(13), k"},
+    "004-14-drops-C3": {"(14), homogeneous equation"},
+    "004-17-bare-second-derivative": {"(17)"},
+    "004-19-safety-factor": {"(19)"},
+    "004-20-traction-named-F1": {"(20)"},
+    "004-zero-state-not-at-rest": {"initial state"},
+}
+#: Agreeing records whose print no one-term scaling can change (none in 004).
+UNMUTABLE = ()
 
 #: The example's simulation-only values (SI), as in the scene file.
 EXAMPLE = {"I1": 13.0, "I2": 3.0, "I3": 50.0, "C1": 2e4, "C2": 5e4, "nu1": 20.0,
@@ -94,26 +126,101 @@ def _f(d, name):
 
 # --- Audit ---------------------------------------------------------------------
 def test_every_verdict(records):
-    assert {label: r.verdict for label, r in records.items()} == EXPECTED
+    assert {label: (r.verdict, r.basis) for label, r in records.items()} == EXPECTED
+
+
+def test_every_finding_has_its_cause(records):
+    findings = {label: r for label, r in records.items() if r.verdict not in AGREEMENTS}
+    for label, r in findings.items():
+        assert r.cause is not None and r.cause.id != UNEXPLAINED, label
+        assert r.cause.id.startswith("004-") and r.cause.sentence.endswith("."), label
+        assert pub.CAUSES[r.cause.id] is r.cause, label   # one object per cause
+    by_cause = {}
+    for label, r in findings.items():
+        by_cause.setdefault(r.cause.id, set()).add(label)
+    assert by_cause == CAUSES
+    for r in records.values():
+        if r.verdict in AGREEMENTS:
+            assert r.cause is None
+        if r.basis == "definition":
+            assert r.verdict not in CONFIRMATIONS, r.label
+        if r.basis != "model":
+            assert r.basis_note, r.label
+
+
+def test_readings_keep_the_literal_print(records):
+    for label in ("(1), φ", "(1), z", "(1), y", "(11)"):
+        r = records[label]
+        assert not r.literal.matches and r.reading is not None, label
+    # Readings tried and not enough: the lost mark does not make (3) or (7) an energy,
+    # nor does reading (20)'s F1 as the traction force remove the running resistance.
+    for label in ("(3)", "(7)", "(20)"):
+        r = records[label]
+        assert len(r.attempts) == 2 and not any(a.matches for a in r.attempts), label
+    assert "kg·m/s" in records["(3)"].attempts[1].summary
+    assert r"\nu_{t} v_{s}" in records["(20)"].attempts[1].difference
+
+
+def _scaled(f):
+    """``f`` with one term of its printed relation, and the same term of every reading,
+    multiplied by 3/2; ``None`` when no term is shared by the print and all readings."""
+    for side in ("rhs", "lhs"):
+        for term in sp.Add.make_args(getattr(f.printed, side)):
+            relations = [f.printed] + [c.reading for c in f.conventions]
+            if term == 0 or not all(term in sp.Add.make_args(getattr(rel, side))
+                                    for rel in relations):
+                continue
+
+            def scale(rel):
+                new = sp.Add(*[sp.Rational(3, 2) * a if a == term else a
+                               for a in sp.Add.make_args(getattr(rel, side))])
+                return (sp.Eq(rel.lhs, new, evaluate=False) if side == "rhs"
+                        else sp.Eq(new, rel.rhs, evaluate=False))
+
+            return dataclasses.replace(
+                f, printed=scale(f.printed),
+                conventions=tuple(dataclasses.replace(c, reading=scale(c.reading))
+                                  for c in f.conventions))
+    return None
+
+
+def test_a_mutated_print_is_no_longer_an_agreement(derivation, records):
+    """Every record that agrees (confirmed, restated, or under a reading) flips to a
+    finding when one term of its print is scaled by 3/2."""
+    agreeing = [f for f in derivation.published
+                if records[f.label].verdict in AGREEMENTS + CONFIRMATIONS]
+    assert len(agreeing) >= 12
+    skipped = []
+    for f in agreeing:
+        mutated = _scaled(f)
+        if mutated is None:
+            skipped.append(f.label)
+            continue
+        assert mutated.printed != f.printed
+        verdict = audit_formula(derivation, mutated).verdict
+        assert verdict not in AGREEMENTS + CONFIRMATIONS, (f.label, verdict)
+    assert tuple(skipped) == UNMUTABLE
 
 
 def test_details_name_what_the_print_gets_wrong(records):
     assert "∂Φ/∂q̇" in records["(1), φ"].detail
-    assert "dy/dt**2 [m/s²]" in records["(3)"].detail
-    assert "dl*dm/(2*dt) [kg·m/s]" in records["(3), second member"].detail
-    assert re.search(r"1 \[1\]; Derivative\([yz]\(t\), t\)\*\*2 \[m²/s²\]", records["(7)"].detail)
-    assert "Pi [kg·m²/s²]" in records["(8)"].detail
-    assert "-g*m3 [kg·m/s²]" in records["(9), δA_1"].detail
-    assert "F_{1} + F_{2}" in records["(10), Q3"].detail
+    assert r"$\frac{dy}{dt^{2}}$ [m/s²]" in records["(3)"].detail
+    assert r"$\frac{dl dm}{2 dt}$ [kg·m/s]" in records["(3), second member"].detail
+    assert re.search(r"\$1\$ \[1\], \$\\dot\{[yz]\}\^\{2\}\$ \[m²/s²\]",
+                     records["(7)"].detail)
+    # (8): the six elastic terms are blamed, not Π
+    assert r"differ from the left-hand side $\Pi$ [kg·m²/s²]" in records["(8)"].detail
+    assert r"$- g m_{3}$ [kg·m/s²]" in records["(9), δA_1"].detail
+    assert "F_{1} + F_{2}" in records["(10), Q3"].literal.derived
     assert "y1 − y2 ≡ y" in records["(11)"].detail
     for row in ("(12), row 1", "(12), row 2", "(12), row 3"):
-        assert "C1*(Derivative(" in records[row].detail
-    assert "m1*Derivative(phi1(t), (t, 2)) [kg/s²]" in records["(12), row 1"].detail
-    assert "C3*Derivative(y(t), t)" in records["(13)"].detail
+        assert r"$C_{1} \left(\ddot{" in records[row].detail
+    assert r"$m_{1} \ddot{\phi}_{1}$ [kg/s²]" in records["(12), row 1"].detail
+    assert r"$C_{3} \dot{y}$ [kg·m³/s³]" in records["(13)"].detail
     assert "[1/kg¹ᐟ²·s]" in records["(13), k"].detail
-    assert "Derivative(w(x, t), (x, 2)) [1/m]" in records["(17)"].detail
-    assert "1.25" in records["(19)"].detail
-    assert "F_{2} + g m_{sum} \\mu_{op} + \\nu_{t} v_{s}" in records["(20)"].detail
+    assert r"w{\left(x,t \right)}$ [1/m]" in records["(17)"].detail
+    assert "1.25" in records["(19)"].cause.sentence
+    assert r"F_{2} + g m_{sum} \mu_{op} + \nu_{t} v_{s}" in records["(20)"].literal.derived
 
 
 def test_every_record_is_of_a_known_kind_and_targets_a_step(derivation):

@@ -13,8 +13,18 @@ never defines (φ4, x_i, the y_i, z_i of (8), (11), (12), m1, m2, C3, ν3, C_е�
 ω, ε of (12), ϑ_z) are kept as printed (``PRINT_SYMBOLS``). A Σ is written out
 term by term, since the checks do not take a Sum.
 
-The transcriptions keep the print's errors; a ``Convention`` is used only for a
-reading of notation the print leaves open.
+The transcriptions keep the print's errors. A ``Convention`` is a reading of the
+policy (``crane_sym.published.READINGS``): it is tried only when the literal print
+fails, and a reading that does not match is kept in the record as well, to show
+that the print's error is more than the lost mark.
+
+Basis. Fig. 1 (the design scheme) is lost, so the model's pairing of coordinates
+and the directions of the branch forces are reconstructed (``MODEL``): a record
+measured against them has the basis ``reconstructed model``. A record decided by
+dimensions or by the paper's own earlier line is ``internal``; one whose derived
+step restates the print (a definition, a hypothesis adopted, a textbook form) is
+``definition`` and can only be ``restated``, never confirmed. Every finding has a
+``Cause`` (``CAUSES``); records that fail for the same reason share one.
 """
 from __future__ import annotations
 
@@ -26,7 +36,9 @@ from .model import (
     ROT_DAMP, STIFF, T_, T_el, TORQUE, a_v, alpha, b_v, g, m3, m_sum, mu, mu_op, nu1, nu2,
     nu_t, nu_y, nu_z, phi1, phi2, phi3, q, r, t, v_xi, vy, vz, xi, y, y0, z, F_pulse, F1_t,
     F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3)
-from crane_sym.published import (ASSUMPTION, Cause, Convention, DEFINITION, FITTED_VALUE, INTERNAL, LINE_BREAK_SIGN, LOST_MARK, OPERATOR_SCOPE, PublishedFormula, RECONSTRUCTED, SYMBOL_FOR_ANOTHER, printed)
+from crane_sym.published import (
+    ASSUMPTION, DEFINITION, INTERNAL, LOST_MARK, RECONSTRUCTED, SYMBOL_FOR_ANOTHER, Cause,
+    Convention, PublishedFormula, printed)
 from crane_sym.symbols import COORDINATE, DEFINED, PARAMETER, PhysicalSymbol
 
 # --- The print's notation ------------------------------------------------------
@@ -100,6 +112,124 @@ PRINT_SYMBOLS = [
         (a_ph, ONE, "rad", "initial phase a of (14)"),
         (kappa, 1 / length**2, "1/m^2", "coefficient of ∂²y/∂x² that (17) lacks (−N/EI)")]),
 ]
+
+# --- Why the findings are findings (one Cause per reason) ---------------------------
+FIG1 = ("Fig. 1 is lost: the coordinates and the directions of the branch forces are "
+        "reconstructed (MODEL: both branches leave the drum toward the line)")
+C_COORDINATES = Cause(
+    "004-1-three-coordinates",
+    "(1) has Lagrange equations for three coordinates φ, z, y only, while the paper's own "
+    "T (2), Π (8) and Φ (11) depend on three separate angles φ1, φ2, φ3 besides y and z, "
+    "so they need at least five.")
+C_RAYLEIGH_DOT = Cause(
+    "004-1-rayleigh-dot",
+    "(1) prints the Rayleigh term as ∂Φ/∂q, which is zero for a Φ of velocities; read "
+    "with the dot lost from q, ∂Φ/∂q̇, it is Lagrange's equation with dissipation.")
+C_KINETIC = Cause(
+    "004-2-undefined-translations",
+    "(2) gives the masses m_i translations ẋ_i that the paper never defines and counts "
+    "the drum's mass twice (in Σ m_i·ẋ_i² and in ½·m3·(ẏ − r·φ̇3)²), where the "
+    "reconstructed drive moves the drum by ẏ alone and the loaded run by ż.")
+C_MOMENTUM = Cause(
+    "004-3-speed-not-squared",
+    "(3) writes the kinetic energy of a piece dm as dm/2 times a speed, the root "
+    "√(ż² + ẏ²) (with dy/dt² printed for (dy/dt)²) and dl/dt, not times its square, so "
+    "both members are a momentum [kg·m/s], not an energy.")
+C_ROOT = Cause(
+    "004-7-velocity-in-root",
+    "(7) multiplies every integrand by √(1 + ẏ²) or √(1 + ż²), a number plus a squared "
+    "speed; with the dots the numerators lost (q·ẏ², q·ż² for q·y², q·z²) it is the "
+    "derived (7) times these roots, which would be 1 only as the arc-length factor "
+    "√(1 + slope²) of a flat span, a slope and not a velocity.")
+C_VELOCITY_POTENTIAL = Cause(
+    "004-8-velocities-in-potential",
+    "(8) builds the potential energy from velocity differences (φ̇_i − φ̇_(i+1), "
+    "ẏ1 − ẏ2, ż1 − ż2, φ̇3·r − ż) where the shafts' twists and the branches' stretches "
+    "belong, so every elastic term is in J/s², not J.")
+C_NOTHING = Cause(
+    "004-only-a-definition",
+    "The display only defines a symbol (Q_i = δA/δq_i in (9), y = y(x, t) in (15)), so "
+    "it states no relation to check; what (9) defines is checked in the δA lines after "
+    "it and in (10).")
+C_CONTINUUM = Cause(
+    "004-16-continuum-not-stated",
+    "(16) sets z = ϑ_z·t for the continuum model (17) of the drum's axis, which the paper "
+    "does not derive, with ϑ_z not defined, so the lumped model has nothing to compare "
+    "it with.")
+C_ARM = Cause(
+    "004-dA1-weight-without-arm",
+    "(9)'s δA_1 = (M_oб − m_б·g)·δφ subtracts the drum's weight [N] from a torque "
+    "[N·m]; (10) writes the same term m_б·g·r_б, so the two lines disagree by the arm "
+    "r_б.")
+C_DRUM_PULL = Cause(
+    "004-y-force-difference",
+    "For the drum's displacement y the print takes F1 − F2, but with both branches "
+    "leaving the drum toward the line (as reconstructed) both pull the drum the same "
+    "way, and the force is F1 + F2.")
+C_RUN_FORCE = Cause(
+    "004-z-force",
+    "For the run's displacement z the print has no F1 − F2 against the load resistance "
+    "W: its δz line after (9) has the drum's weight m3·g, (10)'s Q2 the sum F1 + F2, and "
+    "both subtract C_z·z, which the branch force F2 already holds.")
+C_Q1_MOMENT = Cause(
+    "004-10-Q1-weight-moment",
+    "(10)'s Q1 = M_oб − m_б·g·r_б gives the drum's weight a moment about the drum's own "
+    "axis, where it has none, and leaves out the moment −(F1 − F2)·r of the branch "
+    "forces on the drum.")
+C_Q2_NOT_FROM_9 = Cause(
+    "004-10-Q2-not-from-9",
+    "(10)'s Q2 = (F1 + F2) − C_z·z does not repeat the δz line after (9) it is said to "
+    "follow from ('Отже'), which gives m3·g − C_z·z.")
+C_UNDEFINED_RATES = Cause(
+    "004-11-undefined-coordinates",
+    "(11) uses φ4, y1, y2, z1, z2, which the paper never defines; read as φ3 (no fourth "
+    "body), the drum's y and the slack branch's stretch z − y − r·φ3, it is the "
+    "reconstructed Φ.")
+C_MIXED_12 = Cause(
+    "004-12-mixed-dimensions",
+    "(12) puts the torsional stiffnesses C_i on acceleration differences in every row (and "
+    "the torsional ν_i on linear velocities in the z and y rows, the masses m_i on "
+    "angular accelerations in the φ row), so no row has terms of one dimension.")
+C_STIFFNESS_ON_VELOCITY = Cause(
+    "004-13-stiffness-on-velocity",
+    "(13), said to neglect dissipation, has C_3·ẏ, the drum's stiffness times a "
+    "velocity, beside ÿ [m/s²]; no stiffness makes that term an acceleration.")
+C_K_THREE_MASSES = Cause(
+    "004-13-k-three-masses",
+    "(13)'s k = √(C_екв·(m1 + m2 + m3)/(m1·m2·m3)) is in 1/(kg^½·s) for any stiffness "
+    "C_екв: the two-mass formula √(C·(m1 + m2)/(m1·m2)) extended to three masses keeps "
+    "one mass too many in the denominator.")
+C_DROPS_C3 = Cause(
+    "004-14-drops-C3",
+    "The homogeneous equation after (14), ÿ1 + k²·y1 = 0, drops the C_3·ẏ term of the "
+    "(13) it claims to solve.")
+C_BARE_SECOND = Cause(
+    "004-17-bare-second-derivative",
+    "(17) adds ∂²y/∂x² [1/m] to ∂⁴y/∂x⁴ [1/m³] without a coefficient, so no choice of "
+    "the unstated a and b makes it consistent.")
+C_SAFETY = Cause(
+    "004-19-safety-factor",
+    "(19) is Euler's traction limit F1 ≤ F2·e^(μα) with an unnamed safety factor 1.25 "
+    "on F1, and it calls μ the element's resistance coefficient though it is the "
+    "friction coefficient on the drum.")
+C_TRACTION_F1 = Cause(
+    "004-20-traction-named-F1",
+    "(20) equates the tight-branch force F1 of (18)–(19) with the loads' resistance "
+    "Σ m_i·g·μ_оп, while the run's steady balance gives F1 − F2 = Σ m_i·g·μ_оп + "
+    "ν_t·v_s: the print's F1 is the traction force, without the element's running "
+    "resistance ν_t·ż of (11).")
+C_ZERO_STATE = Cause(
+    "004-zero-state-not-at-rest",
+    "The example starts from y(0) = 0, but the pretension F0 of both branches pulls the "
+    "drum toward the line, so the reconstructed drive rests with its shaft deflected by "
+    "2·F0·(C_t + C_z)/(C_t·C_y + 4·C_t·C_z + C_y·C_z) and the zero state is not at "
+    "rest.")
+#: Every cause of paper 004, by id.
+CAUSES = {c.id: c for c in (
+    C_COORDINATES, C_RAYLEIGH_DOT, C_KINETIC, C_MOMENTUM, C_ROOT, C_VELOCITY_POTENTIAL,
+    C_NOTHING, C_CONTINUUM, C_ARM, C_DRUM_PULL, C_RUN_FORCE, C_Q1_MOMENT, C_Q2_NOT_FROM_9,
+    C_UNDEFINED_RATES, C_MIXED_12, C_STIFFNESS_ON_VELOCITY, C_K_THREE_MASSES, C_DROPS_C3,
+    C_BARE_SECOND, C_SAFETY, C_TRACTION_F1, C_ZERO_STATE)}
 
 # --- The displays, verbatim --------------------------------------------------------
 L1 = (r"\left. \begin{aligned} \frac{d}{dt} \left(\frac{\partial T}{\partial \dot{\varphi}} "
@@ -206,6 +336,13 @@ def _sum(terms) -> sp.Expr:
     return sp.Add(*terms)
 
 
+LAGRANGE_FORM = (
+    "(1) restates Lagrange's equations of the second kind with Rayleigh's function, a "
+    "textbook form; both sides are built from the model's T, Π, Φ (the printed operator "
+    "on one, crane_sym.lagrange on the other), so the record tests only the printed "
+    "operator, not the paper's energies")
+
+
 def _lagrange_rows(e: dict) -> list[PublishedFormula]:
     T, V, R = e["T"], e["Pi"], e["Phi"]
     rows = []
@@ -219,8 +356,12 @@ def _lagrange_rows(e: dict) -> list[PublishedFormula]:
                else ""),
             conventions=(Convention(
                 "∂Φ/∂q in (1) means ∂Φ/∂q̇ (the Rayleigh term)",
-                sp.Eq(lhs, Q - sp.diff(R, _dot(qq))), LOST_MARK),)))
+                sp.Eq(lhs, Q - sp.diff(R, _dot(qq))), LOST_MARK),),
+            basis=DEFINITION, basis_note=LAGRANGE_FORM, cause=C_RAYLEIGH_DOT))
     return rows
+
+
+DIMENSIONS = "the verdict rests on the dimensions of the print's own terms"
 
 
 def _energy_rows(e: dict) -> list[PublishedFormula]:
@@ -238,6 +379,7 @@ def _energy_rows(e: dict) -> list[PublishedFormula]:
              + sp.Integral(q * z**2 / (2 * (y - delta_y)**2) * (s_tg - delta_y)**2 * rz,
                            (s_tg, y, delta_y)))
     phis = [phi1, phi2, phi3, phi4]
+    dotted = seven.xreplace({y**2: _dot(y)**2, z**2: _dot(z)**2})
     eight = (half * _sum(C * (_dot(phis[i]) - _dot(phis[i + 1]))**2
                          for i, C in enumerate((C1, C2, C3)))
              + half * C_y * (_dot(yp[0]) - _dot(yp[1]))**2
@@ -246,27 +388,46 @@ def _energy_rows(e: dict) -> list[PublishedFormula]:
     return [
         _printed("(2)", L2, sp.Eq(T_, T2),
                  "x_i are not defined; m3 is the drum's mass (I_i belong to m_i), so the "
-                 "drum's mass enters twice, once with ẏ − r·φ̇3"),
+                 "drum's mass enters twice, once with ẏ − r·φ̇3",
+                 basis=RECONSTRUCTED, basis_note=FIG1 + "; the derived T moves the drum by "
+                 "ẏ and the loaded run (mass m_L) by ż", cause=C_KINETIC),
         _printed("(3)", L3, sp.Eq(dT, dm / 2 * sp.sqrt(_dot(z)**2 + dy / dt**2)),
                  "first member; dy/dt² is printed, not (dy/dt)², and the root gives the "
-                 "speed, not its square"),
+                 "speed, not its square: the lost bracket alone does not make it an energy",
+                 conventions=(Convention(
+                     "(dy/dt)² for the printed dy/dt² (a bracket lost)",
+                     sp.Eq(dT, dm / 2 * sp.sqrt(_dot(z)**2 + _dot(y)**2)), LOST_MARK),),
+                 basis=INTERNAL, basis_note=DIMENSIONS, cause=C_MOMENTUM),
         _printed("(3), second member", L3, sp.Eq(dT, dm * dl / (2 * dt)),
                  "the last member, dm·dl/(2·dt) = dm·v/2 by (5): half a momentum",
-                 compare_to="(3)"),
-        _printed("(4)", L4, sp.Eq(dm, q * dl)),
-        _printed("(5)", L5, sp.Eq(v_z, dl / dt)),
+                 compare_to="(3)", basis=INTERNAL, basis_note=DIMENSIONS, cause=C_MOMENTUM),
+        _printed("(4)", L4, sp.Eq(dm, q * dl), basis=DEFINITION,
+                 basis_note="the definition of q (mass per metre), restated by step (4)"),
+        _printed("(5)", L5, sp.Eq(v_z, dl / dt), basis=DEFINITION,
+                 basis_note="the definition of the element's speed, restated by step (5)"),
         _printed("(6)", L6, sp.Eq(v_xi, a_v + b_v * xi),
-                 "the hypothesis of a linear speed distribution", kind=ASSUMPTION),
+                 "the hypothesis of a linear speed distribution", kind=ASSUMPTION,
+                 basis=DEFINITION, basis_note="the paper's hypothesis, adopted as printed "
+                 "by step (6); what it implies is checked in (7)"),
         _printed("(7)", L7, sp.Eq(T_el, seven),
-                 "the four integrals as printed, the last two over s = ξ·tg φ; the "
-                 "numerators are printed q·y², q·z² (displacements, where (3) "
-                 "needs ẏ², ż²) and the root holds a velocity, √(1 + ẏ²); with ẏ², ż² and "
-                 "the root taken as the arc-length factor of a flat span (1) the print is "
-                 "the derived (7)"),
+                 "the four integrals as printed, the last two over s = ξ·tg φ; the × and + "
+                 "repeated at the line breaks are read once, as the typesetting repeats "
+                 "them; the numerators are printed q·y², q·z² (displacements, where (3) "
+                 "needs ẏ², ż²) and the root holds a velocity, √(1 + ẏ²). The lost dots "
+                 "(a reading) do not suffice: the print is then the derived (7) times "
+                 "√(1 + ẏ²) or √(1 + ż²), and taking the root as 1 is the model's flat "
+                 "span, not a reading of the print",
+                 conventions=(Convention(
+                     "q·ẏ², q·ż² for the printed q·y², q·z² (dots lost)",
+                     sp.Eq(T_el, dotted), LOST_MARK),),
+                 basis=INTERNAL, basis_note=DIMENSIONS, cause=C_ROOT),
         _printed("(8)", L8, sp.Eq(Pi_, eight),
                  "Σ written out (i = 3 needs an undefined φ4); every elastic term has "
-                 "velocities where displacements belong, so each carries an extra 1/s², "
-                 "and the check reports Π as the odd one out among them; r_σ = r"),
+                 "velocities where displacements belong, so each carries an extra 1/s² "
+                 "against Π; r_σ = r. No reading of the policy removes a dot printed "
+                 "too many, and even without the dots and with (11)'s reading of φ4, y_i, "
+                 "z_i the tight branch's (φ3·r − z) lacks the drum's y",
+                 basis=INTERNAL, basis_note=DIMENSIONS, cause=C_VELOCITY_POTENTIAL),
     ]
 
 
@@ -276,25 +437,37 @@ def _force_rows() -> list[PublishedFormula]:
         _printed("(9)", L9, None, not_checkable=(
             "definitions Q = δA/δq of the generalized forces (right as definitions); they "
             "pair Q2 with z and Q3 with y, while the lines that follow compute δA_2 for δy "
-            "and δA_3 for δz")),
+            "and δA_3 for δz"), basis=DEFINITION,
+            basis_note="Q_i = δA_i/δq_i is the definition of a generalized force",
+            cause=C_NOTHING),
         _printed("(9), δA_1", L9b, sp.Eq(dA1, (M0 - m3 * g) * vphi),
-                 "first line after (9); m_σ (drum mass) read as m3"),
+                 "first line after (9); m_σ (drum mass) read as m3",
+                 basis=INTERNAL, basis_note=DIMENSIONS, cause=C_ARM),
         _printed("(9), δA_2", L9b, sp.Eq(dA2, (F1 - F2 - C_y * y) * vy),
-                 "second line; its condition 'y = const' must mean z = const"),
+                 "second line; its condition 'y = const' must mean z = const",
+                 basis=RECONSTRUCTED, basis_note=FIG1, cause=C_DRUM_PULL),
         _printed("(9), δA_3", L9b, sp.Eq(dA3, (m3 * g - C_z * z) * vz),
-                 "third line; C_y·y and C_z·z also stand in Π (8), so they count twice"),
+                 "third line; C_y·y and C_z·z also stand in Π (8), so they count twice",
+                 basis=RECONSTRUCTED, basis_note=FIG1, cause=C_RUN_FORCE),
     ]
     printed_q = {"Q1": (Q1, M0 - m3 * g * r), "Q2": (Q2, (F1 + F2) - C_z * z),
                  "Q3": (Q3, (F1 - F2) - C_y * y)}
+    against_model = {"Q1": C_Q1_MOMENT, "Q2": C_RUN_FORCE, "Q3": C_DRUM_PULL}
+    against_nine = {"Q1": C_ARM, "Q2": C_Q2_NOT_FROM_9, "Q3": None}
     for name, (sym, rhs) in printed_q.items():
         rows.append(_printed(f"(10), {name}", L10, sp.Eq(sym, rhs),
                              "against the model: the force of all given forces for the "
                              "coordinate (1) pairs with " + {"Q1": "φ", "Q2": "z",
-                                                              "Q3": "y"}[name]))
+                                                              "Q3": "y"}[name],
+                             basis=RECONSTRUCTED, basis_note=FIG1,
+                             cause=against_model[name]))
     for name, (sym, rhs) in printed_q.items():
         rows.append(_printed(f"(10), {name} vs (9)", L10, sp.Eq(sym, rhs),
                              "against the print's own δA line before it",
-                             compare_to=from_nine[name]))
+                             compare_to=from_nine[name], basis=INTERNAL,
+                             basis_note="(10) against the print's own δA line after (9), "
+                             "divided by its virtual displacement (step "
+                             f"'{from_nine[name]}')", cause=against_nine[name]))
     return rows
 
 
@@ -327,11 +500,15 @@ def _motion_rows(e: dict) -> list[PublishedFormula]:
                  conventions=(Convention(
                      "φ4 ≡ φ3 (no fourth body), y1 − y2 ≡ y (the drum against its "
                      "bearing), z1 − z2 ≡ the slack branch's stretch z − y − r·φ3",
-                     sp.Eq(Phi_, read), SYMBOL_FOR_ANOTHER),)),
-        _printed("(12), row 1", L12, row1, note + "; the row for φ, checked against the "
-                 "drum's equation", compare_to="(12), φ3"),
-        _printed("(12), row 2", L12, row2, note + "; the row for z", compare_to="(12), z"),
-        _printed("(12), row 3", L12, row3, note + "; the row for y", compare_to="(12), y"),
+                     sp.Eq(Phi_, read), SYMBOL_FOR_ANOTHER),),
+                 basis=RECONSTRUCTED, basis_note=FIG1 + "; the reading gives the undefined "
+                 "φ4, y1 − y2, z1 − z2 the meaning they have in that reconstruction",
+                 cause=C_UNDEFINED_RATES),
+        *[_printed(f"(12), row {i}", L12, row, note + what, compare_to=target,
+                   basis=INTERNAL, basis_note=DIMENSIONS, cause=C_MIXED_12)
+          for i, row, what, target in (
+              (1, row1, "; the row for φ, checked against the drum's equation", "(12), φ3"),
+              (2, row2, "; the row for z", "(12), z"), (3, row3, "; the row for y", "(12), y"))],
     ]
 
 
@@ -345,45 +522,69 @@ def _late_rows() -> list[PublishedFormula]:
     return [
         _printed("(13)", L13, sp.Eq(_dot(y, 2) + C3 * _dot(y) + k**2 * y, M0 / (m3 * r) + g),
                  "said to neglect dissipation, yet C3 (called the drum's stiffness) "
-                 "multiplies ẏ"),
+                 "multiplies ẏ", basis=INTERNAL, basis_note=DIMENSIONS + " (the derived "
+                 "step is the model's y equation, which the print does not match either)",
+                 cause=C_STIFFNESS_ON_VELOCITY),
         _printed("(13), k", LK, sp.Eq(k, sp.sqrt(C_ekv * (m1 + m2 + m3) / (m1 * m2 * m3))),
-                 "the 'where' clause of (13)"),
-        _printed("(14)", L14, sp.Eq(y, y_h + y_p), "y_1, y_2 of (14) are y_h, y_p here"),
+                 "the 'where' clause of (13)", basis=INTERNAL,
+                 basis_note=DIMENSIONS + ", whatever the stiffness C_екв; the derived step "
+                 "(13), k is chosen to have the printed shape (the geometric mean of the "
+                 "drive chain's two frequencies) and is no evidence either way",
+                 cause=C_K_THREE_MASSES),
+        _printed("(14)", L14, sp.Eq(y, y_h + y_p), "y_1, y_2 of (14) are y_h, y_p here",
+                 basis=DEFINITION, basis_note="y = y1 + y2 names the homogeneous and the "
+                 "particular solution; step (14) restates it"),
         _printed("(14), homogeneous equation", L14b,
                  sp.Eq(_dot(y_h, 2) + k**2 * y_h, 0),
                  "first member of the line after (14): the homogeneous equation of (13) "
-                 "as the print states it", compare_to="(13) as printed, homogeneous"),
+                 "as the print states it", compare_to="(13) as printed, homogeneous",
+                 basis=INTERNAL, basis_note="the print's own (13) with its right-hand side "
+                 "set to zero", cause=C_DROPS_C3),
         _printed("(14), y1", L14b, sp.Eq(y_h, A_y * sp.sin(k * t + a_ph)),
-                 "second member; A is the amplitude, a the initial phase"),
+                 "second member; A is the amplitude, a the initial phase", basis=INTERNAL,
+                 basis_note="the general solution (dsolve) of the print's own homogeneous "
+                 "equation ÿ1 + k²·y1 = 0, not of the model"),
         _printed("(15)", L15, None, not_checkable=(
-            "notation: the drum's bent axis is a function y(x, t); nothing to check")),
+            "notation: the drum's bent axis is a function y(x, t); nothing to check"),
+            basis=DEFINITION, basis_note="notation for the deflection of the drum's axis",
+            cause=C_NOTHING),
         _printed("(16)", L16, None, not_checkable=(
             "a kinematic assumption for (17), z = ϑ_z·t: the element's position moves "
             "uniformly; its z is not the lumped model's coordinate and ϑ_z is not "
-            "defined")),
+            "defined"), cause=C_CONTINUUM),
         _printed("(17)", L17, sp.Eq(w.diff(x_ax, 4) + a17 * w.diff(t, 2)
                                     + b17 * w.diff(x_ax, t) + w.diff(x_ax, 2), 0),
                  "y(x, t) written w; a and b are not given, so they get the dimensions "
-                 "that fit the first term; ∂²y/∂x² has no coefficient"),
+                 "that fit the first term; ∂²y/∂x² has no coefficient",
+                 basis=INTERNAL, basis_note=DIMENSIONS, cause=C_BARE_SECOND),
         _printed("(18)", L18, sp.Eq(M_d, (F1 - F2) * D / 2), "M_oδ is the drum torque"),
         _printed("(19)", L19, sp.Eq(sp.Rational(5, 4) * F1_lim / F2, sp.exp(mu * alpha)),
                  "the boundary of the printed inequality, F1 at its largest value F1_lim; "
                  "1.25 is a traction safety factor the text does not name, and μ is called "
                  "the element's resistance coefficient though it is its friction on the drum",
-                 kind=ASSUMPTION),
+                 kind=ASSUMPTION, cause=C_SAFETY),
         _printed("(20)", L20, sp.Eq(F1, m_sum * g * mu_op),
                  "Σ m_i(t) written m_sum; the print calls F1 the traction force, while "
-                 "(18)–(19) use it as the tight branch's force"),
+                 "(18)–(19) use it as the tight branch's force",
+                 conventions=(Convention(
+                     "F1 in (20) is the traction force F1 − F2 (one name for two forces)",
+                     sp.Eq(F1 - F2, m_sum * g * mu_op), SYMBOL_FOR_ANOTHER),),
+                 basis=RECONSTRUCTED, basis_note=FIG1 + "; the derived F1 is the run's "
+                 "equation (12) in steady running, with the running resistance ν_t·ż of "
+                 "(11)", cause=C_TRACTION_F1),
         _printed("(21)", L21, sp.Eq(F_pulse, _bracket(F1_t, K1, F2_t, K2)
                                     + _bracket(F3_t, K3, F4_t, K4)),
                  "an empirical load model, adopted by the model as step (21); |X| is written "
                  "as its definition, X for X ≥ 0 and −X otherwise, since the dimension "
                  "check does not take Abs; with F2 = F1, K2 = K1, F4 = F3, K4 = K3 it is "
                  "½·min(F1·sin, K1) + ½·min(F3·sin, K3), negative for half of each period "
-                 "2·t3 (step '(21), min form')", kind=ASSUMPTION),
+                 "2·t3 (step '(21), min form')", kind=ASSUMPTION, basis=DEFINITION,
+                 basis_note="an empirical load model, adopted as printed by step (21); "
+                 "what it implies is shown by step '(21), min form'"),
         _printed("initial state", LINIT, sp.Eq(y0, 0, evaluate=False),
                  "the zero initial state of the example; y(0) = 0 is checked",
-                 kind=ASSUMPTION),
+                 kind=ASSUMPTION, basis=RECONSTRUCTED, basis_note=FIG1 + "; the "
+                 "pretension F0 of both branches is the model's", cause=C_ZERO_STATE),
     ]
 
 
@@ -391,6 +592,9 @@ def published(e: dict) -> list[PublishedFormula]:
     """Every printed formula of paper 004, in the paper's order."""
     head = [_printed("(1), coordinates", L1, sp.Eq(n_q, 3),
                      "(1) has three equations, for φ, z, y ('φ, z, y – відповідні "
-                     "узагальнені координати'), while (2), (8), (11) use φ1, φ2, φ3")]
+                     "узагальнені координати'), while (2), (8), (11) use φ1, φ2, φ3",
+                     basis=INTERNAL, basis_note="(1) against the paper's own (2), (8), "
+                     "(11), which use φ1, φ2, φ3, y, z: the model's five coordinates",
+                     cause=C_COORDINATES)]
     return (head + _lagrange_rows(e) + _energy_rows(e) + _force_rows() + _motion_rows(e)
             + _late_rows())
