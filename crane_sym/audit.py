@@ -166,7 +166,8 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
     def record(verdict: str, method: str, detail: str,
                attempts: tuple[Attempt, ...] = ()) -> AuditRecord:
         cause = None
-        if verdict not in AGREEMENTS:
+        read = any(a.matches for a in attempts[1:])  # the literal print needed a reading
+        if verdict not in AGREEMENTS or read:
             cause = f.cause or Cause(UNEXPLAINED, f"{d.id} {f.label}: the transcriber "
                                                   "gave no cause for this finding")
         checks = tuple(c for a in attempts for c in a.checks)

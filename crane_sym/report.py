@@ -25,8 +25,9 @@ def counts_by_basis(records: Sequence[AuditRecord]) -> dict[str, dict[str, int]]
 
 
 def findings(records: Sequence[AuditRecord]) -> list[AuditRecord]:
-    """Records with something to report (every verdict but confirmed, restated)."""
-    return [r for r in records if r.verdict not in AGREEMENTS]
+    """Records with something to report: every verdict but confirmed and
+    restated, and a restated definition whose print needed a reading."""
+    return [r for r in records if r.cause is not None]
 
 
 def by_cause(records: Sequence[AuditRecord]) -> dict[str, list[AuditRecord]]:
@@ -49,12 +50,12 @@ def summary(records: Sequence[AuditRecord]) -> str:
              f"{c['restated']} restated definitions (not counted as confirmations), "
              f"{len(found)} findings from {len(causes)} causes"]
     for verdict in VERDICTS:
-        if verdict in AGREEMENTS:
-            continue
         rs = [r for r in found if r.verdict == verdict]
         if rs:
-            parts.append(f"{len(rs)} {verdict} records from "
-                         f"{len({r.cause.id for r in rs})} causes")
+            n = len({r.cause.id for r in rs})
+            extra = " (definitions whose print needed a reading)" if verdict in AGREEMENTS else ""
+            parts.append(f"{len(rs)} {verdict} record{'s' if len(rs) > 1 else ''}{extra} "
+                         f"from {n} cause{'s' if n > 1 else ''}")
     return "\n".join(parts)
 
 
