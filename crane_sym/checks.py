@@ -187,7 +187,10 @@ def difference(printed: sp.Eq, derived: sp.Eq, *, max_ops: int = 300) -> sp.Expr
     best = None
     for a, b in pairs:  # expand cancels what the two share; no trigsimp roulette
         expanded = sp.expand(a - b)
-        for diff in (expanded, sp.factor_terms(expanded)):
+        candidates = [expanded, sp.factor_terms(expanded)]
+        if sp.count_ops(expanded) <= max_ops // 3:  # common denominators cancel
+            candidates.append(sp.factor_terms(sp.cancel(expanded)))
+        for diff in candidates:
             if best is None or sp.count_ops(diff) < sp.count_ops(best):
                 best = diff
     return best if best is not None and sp.count_ops(best) <= max_ops else None
