@@ -127,7 +127,8 @@ class _Comparison:
 
 def _compare(reading: sp.Eq, derived: sp.Eq, d: Derivation,
              tolerance: float = 0.0) -> _Comparison:
-    num = numeric_equivalence(reading, derived, d.symbols, tol=max(tolerance, 1e-20))
+    num = numeric_equivalence(reading, derived, d.symbols, tol=max(tolerance, 1e-20),
+                              names=d.latex_names)
     if tolerance > 0:  # a rounded printed number: only numbers can decide
         skipped = CheckOutcome("symbolic", INCONCLUSIVE,
                                f"not tried: the print is rounded (tolerance {tolerance:g})")
@@ -146,19 +147,20 @@ def _attempt(d: Derivation, f: PublishedFormula, reading: str, note: str,
              relation: sp.Eq, target: str) -> tuple[Attempt, _Comparison, CheckOutcome]:
     derived = d.step(target).statement
     comp = _compare(relation, derived, d, f.tolerance)
-    dim = dimension_consistency(relation, d.symbols)
+    dim = dimension_consistency(relation, d.symbols, d.latex_names)
     matches = comp.same and dim.status == PASS
-    diff = "" if comp.same else _difference_latex(relation, derived)
+    diff = "" if comp.same else _difference_latex(relation, derived, d.latex_names)
     summary = (f"matches derived step {target} ({comp.method})" if matches
                else _why_not(comp, dim))
-    attempt = Attempt(reading, note, matches, summary, latex(derived), diff,
+    attempt = Attempt(reading, note, matches, summary,
+                      latex(derived, symbol_names=d.latex_names), diff,
                       comp.outcomes + (dim,))
     return attempt, comp, dim
 
 
-def _difference_latex(relation: sp.Eq, derived: sp.Eq) -> str:
+def _difference_latex(relation: sp.Eq, derived: sp.Eq, names: dict) -> str:
     diff = difference(relation, derived)
-    return "" if diff is None else latex(diff)
+    return "" if diff is None else latex(diff, symbol_names=names)
 
 
 def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:

@@ -67,7 +67,7 @@ def symbolic_equivalence(printed: sp.Eq, derived: sp.Eq,
     if ratio.free_symbols.isdisjoint(unknown) and ratio.is_zero is False:
         return CheckOutcome(
             "symbolic", PASS,
-            f"the same equation multiplied by {sp.sstr(ratio)}")
+            f"the same equation multiplied by ${latex(ratio)}$")
     return CheckOutcome("symbolic", INCONCLUSIVE,
                         "simplification did not reduce the difference to 0")
 
@@ -82,7 +82,7 @@ def _draw(entry, rng: np.random.Generator) -> float:
 
 def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
                         *, points: int = 6, dps: int = 30, seed: int = 2024,
-                        tol: float = 1e-20) -> CheckOutcome:
+                        tol: float = 1e-20, names: dict | None = None) -> CheckOutcome:
     """Compare two relations at seeded physical points in mpmath.
 
     When both define the same quantity (same left-hand side) their right-hand
@@ -110,8 +110,10 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
     original = {v: k for k, v in frozen.items()}
 
     def name_values(pvals: list, uvals: list) -> tuple[tuple[str, str], ...]:
-        named = [(latex(e.expr), v) for e, v in zip(params, pvals)]
-        named += [(latex(original.get(u, u)), v) for u, v in zip(unknown, uvals)]
+        tex = dict(names or {})
+        named = [(latex(e.expr, symbol_names=tex), v) for e, v in zip(params, pvals)]
+        named += [(latex(original.get(u, u), symbol_names=tex), v)
+                  for u, v in zip(unknown, uvals)]
         return tuple((k, mpmath.nstr(v, 12)) for k, v in named)
 
     def draw_unknowns() -> list:
@@ -196,8 +198,9 @@ def difference(printed: sp.Eq, derived: sp.Eq, *, max_ops: int = 300) -> sp.Expr
     return best if best is not None and sp.count_ops(best) <= max_ops else None
 
 
-def dimension_consistency(relation: sp.Eq, table: SymbolTable) -> CheckOutcome:
+def dimension_consistency(relation: sp.Eq, table: SymbolTable,
+                          names: dict | None = None) -> CheckOutcome:
     """Every term of ``relation``, as printed, has one dimension."""
     dims = {k: vector(v) for k, v in table.dimensions().items()}
-    report = check_equation(relation.lhs, relation.rhs, dims)
+    report = check_equation(relation.lhs, relation.rhs, dims, names)
     return CheckOutcome("dimension", PASS if report.consistent else FAIL, report.message)

@@ -183,6 +183,9 @@ class Derivation:
     bench_parameters : dict of Symbol to Expr
         Values the bench gives to arguments no scene of the derivation sets:
         numbers (SI) or expressions in the scene parameters.
+    latex_names : dict of Symbol to str
+        The LaTeX the paper uses for symbols whose SymPy name differs
+        (``Q_at0`` is printed ``Q(0)``): audit details and walkthroughs use it.
     """
 
     id: str
@@ -197,6 +200,7 @@ class Derivation:
     ode_systems: list[ODESystem] = field(default_factory=list)
     switches: dict[str, Switch] = field(default_factory=dict)
     bench_parameters: dict[sp.Symbol, sp.Expr] = field(default_factory=dict)
+    latex_names: dict[sp.Basic, str] = field(default_factory=dict)
     _clock: float = field(default_factory=time.perf_counter, repr=False, compare=False)
 
     def step(self, label: str) -> Step:

@@ -159,9 +159,10 @@ class DimensionReport:
     offending: tuple[str, ...] = ()
 
 
-def check_equation(lhs: sp.Expr, rhs: sp.Expr,
-                   dims: Mapping[sp.Basic, DimVec]) -> DimensionReport:
-    """Check that every term on both sides of ``lhs = rhs`` shares one dimension."""
+def check_equation(lhs: sp.Expr, rhs: sp.Expr, dims: Mapping[sp.Basic, DimVec],
+                   names: Mapping[sp.Basic, str] | None = None) -> DimensionReport:
+    """Check that every term on both sides of ``lhs = rhs`` shares one dimension;
+    offending terms are named in LaTeX (``names``: the paper's symbol names)."""
     terms = list(sp.Add.make_args(lhs)) + list(sp.Add.make_args(rhs))
     terms = [t for t in terms if t != 0]
     try:
@@ -169,20 +170,20 @@ def check_equation(lhs: sp.Expr, rhs: sp.Expr,
     except DimensionMismatch as err:
         if len(err.terms) < 2:  # an argument that must be dimensionless
             return DimensionReport(False, None, str(err),
-                                   tuple(_term(t, d) for t, d in err.terms))
-        offending, reference = _offending(lhs, err.terms)
+                                   tuple(_term(t, d, names) for t, d in err.terms))
+        offending, reference = _offending(lhs, err.terms, names)
         message = "the term" + ("s " if len(offending) > 1 else " ") + ", ".join(offending)
         message += (" differ" if len(offending) > 1 else " differs") + f" from {reference}"
         return DimensionReport(False, None, message, offending)
     return DimensionReport(True, d, f"every term has dimension {format_vector(d)}")
 
 
-def _term(t: sp.Expr, d: DimVec) -> str:
-    return f"${latex(t)}$ [{format_vector(d)}]"
+def _term(t: sp.Expr, d: DimVec, names: Mapping | None = None) -> str:
+    return f"${latex(t, symbol_names=dict(names or {}))}$ [{format_vector(d)}]"
 
 
-def _offending(lhs: sp.Expr, found: list[tuple[sp.Expr, DimVec]]
-               ) -> tuple[tuple[str, ...], str]:
+def _offending(lhs: sp.Expr, found: list[tuple[sp.Expr, DimVec]],
+               names: Mapping | None = None) -> tuple[tuple[str, ...], str]:
     """The terms to blame, and what they are measured against.
 
     A left-hand side of one term (the quantity the formula defines) sets the
@@ -191,14 +192,14 @@ def _offending(lhs: sp.Expr, found: list[tuple[sp.Expr, DimVec]]
     """
     if len(sp.Add.make_args(lhs)) == 1 and lhs != 0 and found[0][0] == lhs:
         ref = found[0][1]
-        return (tuple(_term(t, d) for t, d in found[1:] if d != ref),
-                f"the left-hand side {_term(*found[0])}")
+        return (tuple(_term(t, d, names) for t, d in found[1:] if d != ref),
+                f"the left-hand side {_term(*found[0], names)}")
     counts: dict[DimVec, int] = {}
     for _, d in found:
         counts[d] = counts.get(d, 0) + 1
     top = max(counts.values())
     majors = [d for d, n in counts.items() if n == top]
     if len(majors) > 1:
-        return (tuple(_term(t, d) for t, d in found), "each other (no majority)")
-    return (tuple(_term(t, d) for t, d in found if d != majors[0]),
+        return (tuple(_term(t, d, names) for t, d in found), "each other (no majority)")
+    return (tuple(_term(t, d, names) for t, d in found if d != majors[0]),
             f"the other terms' [{format_vector(majors[0])}]")

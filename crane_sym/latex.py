@@ -1,8 +1,10 @@
-"""LaTeX as a mechanics text writes it: x for x(t), ẋ and ẍ for its time derivatives.
+"""LaTeX as a mechanics text writes it: x for x(t), ẋ and ẍ for its time
+derivatives, a sum that starts with a positive term.
 
-SymPy prints a coordinate as ``x{\\left(t \\right)}`` and its derivative as
-``\\frac{d}{d t} x{\\left(t \\right)}``; a reader of a paper expects ``x`` and
-``\\dot{x}``. This printer changes only that, for functions of time alone.
+SymPy prints a coordinate as ``x{\\left(t \\right)}``, its derivative as
+``\\frac{d}{d t} x{\\left(t \\right)}``, ``x2 − x1`` as ``- x_{1} + x_{2}``
+and ``c·(x2 − x1)`` as ``- c (x_1 - x_2)``; a reader of a paper expects ``x``,
+``\\dot{x}``, ``x_2 - x_1`` and ``c (x_2 - x_1)``. This printer changes only that.
 """
 from __future__ import annotations
 
@@ -25,6 +27,32 @@ class _MechanicsPrinter(LatexPrinter):
             name = self._print(sp.Symbol(expr.func.__name__))
             return f"{name}^{{{exp}}}" if exp else name
         return super()._print_Function(expr, exp)
+
+    def _print_Add(self, expr, order=None):  # noqa: N802
+        terms = list(self._as_ordered_terms(expr, order=order))
+        first = next((i for i, t in enumerate(terms) if not t.could_extract_minus_sign()), 0)
+        terms.insert(0, terms.pop(first))         # lead with a positive term
+        tex = ""
+        for i, term in enumerate(terms):
+            if i and term.could_extract_minus_sign():
+                tex, term = tex + " - ", -term
+            elif i:
+                tex += " + "
+            term_tex = self._print(term)
+            tex += rf"\left({term_tex}\right)" if self._needs_add_brackets(term) else term_tex
+        return tex
+
+    def _print_Mul(self, expr):  # noqa: N802
+        # −c·(x1 − x2) reads better as c·(x2 − x1): move the sign into a sum.
+        sums = [f for f in expr.args if isinstance(f, sp.Add)]
+        coeff = expr.as_coeff_Mul()[0]
+        if coeff.is_negative and len(sums) == 1 and any(
+                a.could_extract_minus_sign() for a in sums[0].args):
+            flipped = sp.Add(*[-a for a in sums[0].args], evaluate=False)
+            rest = [-f if f.is_Number else f for f in expr.args if f is not sums[0]]
+            rest = [f for f in rest if f != 1]
+            return super()._print_Mul(sp.Mul(*rest, flipped, evaluate=False))
+        return super()._print_Mul(expr)
 
     def _print_Derivative(self, expr):  # noqa: N802
         f = expr.expr

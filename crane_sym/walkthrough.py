@@ -13,17 +13,35 @@ import re
 
 import sympy as sp
 
-from .audit import AuditRecord, audit
-from .derivation import Derivation
+from .audit import (CONFIRMED, CONFIRMED_WITH_CONVENTION, DIMENSION_ERROR, DISCREPANCY,
+                    NOT_CHECKABLE, REMARK, RESTATED, AuditRecord, audit)
+from .derivation import Derivation, Step
+from .latex import latex
 from .symbols import COORDINATE, DEFINED, PARAMETER, TIME
 
 #: Roles whose symbols are always listed; DEFINED ones only when a step uses them.
 _LISTED_ROLES = (PARAMETER, TIME, COORDINATE)
 
 
+_CYRILLIC = re.compile(r"[А-Яа-яЁёІіЇїЄєҐґ]+")
+_TEXT = re.compile(r"\\(?:text|mathrm)\{[^{}]*\}")
+
+
+def cyrillic_as_text(tex: str) -> str:
+    """``tex`` with each Cyrillic run outside ``\\text{}``/``\\mathrm{}`` wrapped
+    in ``\\text{}``, so that math renderers set it upright as a word."""
+    out, last = [], 0
+    for m in _TEXT.finditer(tex):
+        out.append(_CYRILLIC.sub(lambda c: rf"\text{{{c.group(0)}}}", tex[last:m.start()]))
+        out.append(m.group(0))
+        last = m.end()
+    out.append(_CYRILLIC.sub(lambda c: rf"\text{{{c.group(0)}}}", tex[last:]))
+    return "".join(out)
+
+
 def _tex(expr: sp.Basic, latex_names: dict) -> str:
-    """LaTeX of ``expr`` with the derivation's own symbol names."""
-    return sp.latex(expr, symbol_names=latex_names)
+    """LaTeX of ``expr`` as a mechanics text writes it, with the paper's names."""
+    return cyrillic_as_text(latex(expr, symbol_names=latex_names))
 
 
 def _statement_tex(statement: sp.Basic, latex_names: dict) -> str:
@@ -36,7 +54,7 @@ def _statement_tex(statement: sp.Basic, latex_names: dict) -> str:
 
 def _display(tex: str) -> str:
     """A display formula with ``$$`` on lines of their own."""
-    return f"$$\n{tex.strip()}\n$$"
+    return f"$$\n{cyrillic_as_text(tex.strip())}\n$$"
 
 
 def _cell(text: str) -> str:
@@ -46,7 +64,7 @@ def _cell(text: str) -> str:
 
 def _math_cell(tex: str) -> str:
     """Inline math safe inside a table cell (``|`` written as ``\\vert``)."""
-    return "$" + " ".join(tex.split()).replace("|", r"\vert ") + "$"
+    return "$" + " ".join(cyrillic_as_text(tex).split()).replace("|", r"\vert ") + "$"
 
 
 def _fenced(text: str) -> str:
@@ -83,13 +101,38 @@ def _symbols(d: Derivation, latex_names: dict) -> str:
     return "\n".join(rows)
 
 
+_SAYS = {
+    CONFIRMED: "the print, as printed, follows from the derivation",
+    CONFIRMED_WITH_CONVENTION: "as printed it does not follow; read as below, it does",
+    RESTATED: "the step restates the printed definition, so nothing could fail",
+    DISCREPANCY: "the print does not follow from the derivation",
+    DIMENSION_ERROR: "a term of the print has the wrong dimension",
+    NOT_CHECKABLE: "nothing checkable was printed",
+    REMARK: "a stated assumption that differs from what the model implies",
+}
+
+
 def _verdict_line(record: AuditRecord) -> str:
-    """One sentence: the verdict, the check that decided it, and why."""
-    line = (f"Verdict: **{record.verdict}** (decided by {record.method}; rests on: "
-            f"{record.basis}" + (f", {record.basis_note}" if record.basis_note else "") + ")")
+    """The verdict in words: what it says, what decided it, what it rests on, why."""
+    rests = record.basis + (f" ({record.basis_note})" if record.basis_note else "")
+    parts = [f"Verdict: **{record.verdict}** — {_SAYS[record.verdict]} "
+             f"(decided by the {record.method} check; rests on: {rests})."]
+    reading = record.reading
+    if reading is not None:
+        parts.append(f"Read with the {reading.reading} “{reading.note}”.")
     if record.cause:
-        line += f". Cause `{record.cause.id}`: {record.cause.sentence}"
-    return line + (f" — {record.detail}" if record.detail else "")
+        parts.append(f"Cause `{record.cause.id}`: {record.cause.sentence}")
+    literal = record.literal
+    if record.verdict not in (CONFIRMED, RESTATED) and literal is not None \
+            and reading is None:
+        parts.append(f"Derived: ${cyrillic_as_text(literal.derived)}$.")
+        if literal.difference:
+            parts.append(f"Printed − derived: ${cyrillic_as_text(literal.difference)}$.")
+        dim = next((c for c in literal.checks
+                    if c.method == "dimension" and c.status == "fail"), None)
+        if dim is not None:
+            parts.append(f"Dimensions: {cyrillic_as_text(dim.detail)}.")
+    return " ".join(parts)
 
 
 def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord]) -> list[str]:
@@ -117,6 +160,50 @@ def _verdicts(d: Derivation, records: list[AuditRecord] | None) -> str:
     return "\n".join(rows)
 
 
+_TABLE_STEP = re.compile(r"^(Table \d+), ")
+
+
+def _table_groups(d: Derivation) -> dict[str, list]:
+    """Table name -> the printed cells checked against its steps, in order."""
+    groups: dict[str, list] = {}
+    for f in d.published:
+        m = _TABLE_STEP.match(f.target)
+        if m and f.printed is not None:
+            groups.setdefault(m.group(1), []).append(f)
+    return groups
+
+
+def _number(step: Step) -> str:
+    value = step.statement.rhs
+    return sp.sstr(sp.N(value, 6)) if value.is_number else f"${latex(value)}$"
+
+
+def _table(name: str, cells: list, d: Derivation,
+           by_label: dict[str, AuditRecord]) -> list[str]:
+    """A printed table as one table: each cell beside its derived value and verdict."""
+    readings = any(f.conventions for f in cells)
+    head = "| cell | printed | derived" + (" | derived, read as noted" if readings else "")
+    rows = [head + " | verdict | cause |",
+            "| --- " * (5 + readings) + "|"]
+    for f in cells:
+        r = by_label.get(f.label)
+        row = [_cell(f.label.removeprefix(name + ", ")), _cell(f.latex),
+               _number(d.step(f.target))]
+        if readings:
+            row.append(_number(d.step(f.conventions[0].compare_to or f.target))
+                       if f.conventions else "—")
+        row += [_cell(r.verdict) if r else "not audited",
+                f"`{r.cause.id}`" if r and r.cause else "—"]
+        rows.append("| " + " | ".join(row) + " |")
+    notes = {f.conventions[0].note for f in cells if f.conventions}
+    causes = {r.cause.id: r.cause.sentence for f in cells
+              if (r := by_label.get(f.label)) and r.cause}
+    out = [f"### {name}", "\n".join(rows)]
+    out += [f"*Read as noted:* {n}." for n in sorted(notes)]
+    out += [f"*Cause* `{k}`: {v}" for k, v in causes.items()]
+    return out
+
+
 def render(d: Derivation, records: list[AuditRecord] | None = None,
            latex_names: dict | None = None) -> str:
     """The walkthrough of a derivation as Markdown with LaTeX.
@@ -136,21 +223,32 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
     str
         Markdown: title, model, symbols, every step in order, verdicts.
     """
-    names = dict(latex_names or {})
+    names = dict(d.latex_names) | dict(latex_names or {})
     by_label = {r.label: r for r in records or []}
+    tables = _table_groups(d)
+    in_table = {c.target: name for name, cells in tables.items() for c in cells}
+    in_table |= {v.compare_to: name for name, cells in tables.items()
+                 for c in cells for v in c.conventions if v.compare_to}
+    shown: set[str] = set()
     parts = [f"# {d.title}", f"Paper: `{d.paper}` — {d.citation}",
              "## The model", _model(d.model),
              "## Symbols", _symbols(d, names),
              "## Derivation"]
     for k, step in enumerate(d.steps, start=1):
+        if step.label in in_table:              # a table cell: one table for all
+            name = in_table[step.label]
+            if name not in shown:
+                shown.add(name)
+                parts += _table(name, tables[name], d, by_label)
+            continue
         heading = f"### Step {k} — {step.label}"
         parts.append(heading + (f" · {step.title}" if step.title else ""))
         parts.append(f"**What was done.** {step.how}")
         if step.why:
             parts.append(f"**Why.** {step.why}")
         parts.append(_display(_statement_tex(step.statement, names)))
-        parts += _printed_blocks([f for f in d.published if f.target == step.label],
-                                 by_label)
+        parts += _printed_blocks([f for f in d.published if f.target == step.label
+                                  and f.target not in in_table], by_label)
     labels = {s.label for s in d.steps}
     orphans = [f for f in d.published if f.target not in labels]
     if orphans:

@@ -62,7 +62,7 @@ def build() -> Derivation:
     """Rebuild eqs (1)–(66) and Tables 1–2 from the two-mass model."""
     d = Derivation(id=ID, paper=PAPER, title=TITLE,
                    citation="Yu. Chovnyuk, M. Dykteruk, S. Komotska (Kyiv)",
-                   model=MODEL, symbols=SYMBOLS)
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
     eq1, eq2 = equations_of_motion(d)
     initial_conditions(d, eq2)
     duhamel_integral(d)

@@ -191,7 +191,7 @@ SYMBOLS = SymbolTable([
 ])
 
 LATEX_NAMES = {
-    vt: r"\theta", x_s0: r"\tilde{x}_*", x_s0_dot: r"\dot{\tilde{x}}_*",
+    vt: r"\vartheta", x_s0: r"\tilde{x}_*", x_s0_dot: r"\dot{\tilde{x}}_*",
     x0_dot: r"\dot{x}_0", P_at0: "P(0)", Q_at0: "Q(0)", S_at0: "S(0)",
     a_at0: "a_i(0)", x_st: r"x_{ст}", x_max: r"x_{\max}", t_max: r"t_{\max}",
     theta_half: r"\theta_{1/2}", d_max: r"\left[(x - x_{ст})/x_{ст}\right]_{\max}",

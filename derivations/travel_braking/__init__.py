@@ -41,7 +41,7 @@ __all__ = ["ID", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases", "scene_
 def build() -> Derivation:
     """Rebuild eqs (1)–(14) from the energies and forces of the two-mass model."""
     d = Derivation(id=ID, paper=PAPER, title=TITLE, citation=CITATION,
-                   model=MODEL, symbols=SYMBOLS)
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
     T, V, forces = steps.energies(d)
     eq1, eq2 = steps.equations_of_motion(d, T, V, forces)              # (1)–(3)
     rel = steps.relative_equation(d, eq1, eq2)                         # (4)
