@@ -263,11 +263,12 @@ def cmd_run(args: argparse.Namespace) -> int:
     from .scene_run import run_scene
     from .scenes import load_scene
     scene = load_scene(args.scene)
-    report, figure = run_scene(scene, Path(args.out))
+    report, figures = run_scene(scene, Path(args.out))
     print(f"scene {scene.name}: {scene.title}")
     for line in report.lines:
         print(f"  {line}")
-    print(f"plot written to {figure}")
+    print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
+          + ", ".join(str(f) for f in figures))
     return 0
 
 
