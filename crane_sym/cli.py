@@ -227,11 +227,11 @@ def cmd_bench(args: argparse.Namespace) -> int:
                  "", as_markdown(big), "", "## Every function and alternative", "",
                  as_markdown(rows), ""]
         md.write_text("\n".join(lines), encoding="utf-8")
-        png = plot(rows, out_dir / f"bench_{i}.png",
-                   f"{i}: time against error ({args.points} points, this machine)")
+        pngs = plot(rows, out_dir / f"bench_{i}.png",
+                    f"{i}: time against error ({args.points} points, this machine)")
         if args.format == "table":
             print("\n".join(lines[:5 + len(heads)]))
-            print(f"wrote {md} and {png}")
+            print(f"wrote {md} and {', '.join(map(str, pngs))}")
     if args.sampled:
         _bench_sampled(out_dir, args.format == "table")
     if args.format == "json":

@@ -12,7 +12,7 @@ from typing import Sequence
 
 from .scenes import Panel
 
-__all__ = ["MAX_PANELS", "figures", "layout", "legend_outside", "save"]
+__all__ = ["MAX_PANELS", "chunks", "figures", "layout", "legend_outside", "numbered", "save"]
 
 #: The most panels one figure holds.
 MAX_PANELS = 4
@@ -27,16 +27,28 @@ def layout(panels: Sequence[Panel]) -> list[tuple[str, list[Panel]]]:
             runs[-1][1].append(panel)
         else:
             runs.append((panel.group, [panel]))
-    out = []
-    for group, members in runs:
-        parts = -(-len(members) // MAX_PANELS)
-        size, extra = divmod(len(members), parts)
-        start = 0
-        for k in range(parts):
-            stop = start + size + (k < extra)
-            out.append((group, members[start:stop]))
-            start = stop
+    return [(group, part) for group, members in runs for part in chunks(members)]
+
+
+def chunks(items: Sequence, size: int = MAX_PANELS) -> list[list]:
+    """``items`` in the fewest runs of at most ``size``, of nearly equal length
+    (nine in fours: 3, 3, 3)."""
+    parts = max(1, -(-len(items) // size))
+    length, extra = divmod(len(items), parts)
+    out, start = [], 0
+    for k in range(parts):
+        stop = start + length + (k < extra)
+        out.append(list(items[start:stop]))
+        start = stop
     return out
+
+
+def numbered(path: Path, count: int) -> list[Path]:
+    """``[path]`` for one figure, else ``<stem>_1<suffix>`` ... ``_<count>``."""
+    path = Path(path)
+    if count == 1:
+        return [path]
+    return [path.with_name(f"{path.stem}_{k}{path.suffix}") for k in range(1, count + 1)]
 
 
 def legend_outside(ax, **options):
@@ -76,9 +88,9 @@ def figures(panels: Sequence[Panel], title: str) -> list:
     return out
 
 
-def save(fig, path: Path) -> Path:
+def save(fig, path: Path, dpi: int = 120) -> Path:
     """Write ``fig`` to the PNG ``path`` (deterministic bytes); return ``path``."""
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(path, dpi=120, metadata={"Software": None})
+    fig.savefig(path, dpi=dpi, metadata={"Software": None})
     return path

@@ -86,11 +86,7 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, lis
 def plot_report(report: SceneReport, title: str, path: Path) -> list[Path]:
     """Write the report's panels as PNGs: ``path`` when one figure holds them
     all, else ``<stem>_1.png``, ``<stem>_2.png`` ... (see :func:`figures`)."""
-    from .plots import figures, save
+    from . import plots
 
-    path = Path(path)
-    made = figures(report.panels, title)
-    if len(made) == 1:
-        return [save(made[0], path)]
-    return [save(fig, path.with_name(f"{path.stem}_{k}{path.suffix}"))
-            for k, fig in enumerate(made, start=1)]
+    made = plots.figures(report.panels, title)
+    return [plots.save(fig, p) for fig, p in zip(made, plots.numbered(path, len(made)))]

@@ -123,3 +123,29 @@ def test_cyrillic_inside_mathtext_renders():
     fig = plots.figures([Panel("t", "\u0b85", [("y", [0, 1], [0, 1])])], "x")[0]
     with pytest.raises(UserWarning, match="missing from"):
         _draw(fig)                               # the check can fail: a Tamil letter
+
+
+def test_bench_plot_splits_into_figures_of_at_most_four_panels(tmp_path, monkeypatch):
+    from crane_sym.bench_report import plot
+    from crane_sym.bench_rows import GENERATED, INTEGRATOR, BenchRow
+    rows = [BenchRow("demo", f"f{k}", method, 1e-3 * (1 + j), 100, err, 1.0, err, kind=kind)
+            for k in range(6)
+            for j, (method, err, kind) in enumerate([("generated", 1e-16, GENERATED),
+                                                     ("RK45 rtol=1e-3 [x]", 1e-3, INTEGRATOR),
+                                                     ("RK45 rtol=1e-9 [x]", 1e-9, INTEGRATOR)])]
+    made = []
+    save = plots.save
+    monkeypatch.setattr(plots, "save", lambda fig, path, dpi=120: made.append(fig)
+                        or save(fig, path, dpi))
+    paths = plot(rows, tmp_path / "bench_demo.png", "demo")
+    assert paths == [tmp_path / "bench_demo_1.png", tmp_path / "bench_demo_2.png"]
+    assert all(p.read_bytes()[:4] == b"\x89PNG" for p in paths)
+    assert [sum(ax.get_visible() for ax in f.get_axes()) for f in made] == [3, 3]
+    assert [f.get_suptitle() for f in made] == ["demo, 1 of 2", "demo, 2 of 2"]
+    for fig in made:                             # the legend lies below the panels
+        renderer = _draw(fig)
+        (legend,) = fig.legends
+        box = legend.get_window_extent(renderer)
+        assert not any(box.overlaps(ax.get_window_extent(renderer))
+                       for ax in fig.get_axes() if ax.get_visible())
+    assert plot(rows[:12], tmp_path / "bench_four.png", "four") == [tmp_path / "bench_four.png"]
