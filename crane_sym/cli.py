@@ -160,6 +160,7 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
                 for out in (o for o in d.outputs if not o.expr.is_Matrix):
                     say.step(f"{i}: {out.name} on {case}")
                     row = accuracy(out, getattr(generated, out.name), case, columns)
+                    say.done()                  # the step line off the screen first
                     checked += 1
                     if not row.excess <= 1:
                         over.append(f"{out.name} ({case})")
