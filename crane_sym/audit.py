@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import sympy as sp
 
+from . import progress
 from .checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome, difference,
                      dimension_consistency, numeric_equivalence,
                      symbolic_equivalence)
@@ -229,7 +230,11 @@ def _why_not(comp: _Comparison, dim: CheckOutcome) -> str:
 
 def audit(d: Derivation) -> list[AuditRecord]:
     """Verdicts on every published formula of ``d``, in the paper's order."""
-    return [audit_formula(d, f) for f in d.published]
+    records = []
+    for f in d.published:
+        progress.current().step(f"{d.id}: checking printed formula {f.label}")
+        records.append(audit_formula(d, f))
+    return records
 
 
 __all__ = ["AGREEMENTS", "CONFIRMATIONS", "CONFIRMED", "CONFIRMED_WITH_CONVENTION",

@@ -140,27 +140,42 @@ def _family(method: str) -> str:
     return re.sub(r": [A-Za-z_]\w*\]", "]", re.sub(r" (rtol|n)=\S+", "", method))
 
 
-def plot(rows: Sequence[BenchRow], path: Path, title: str) -> Path:
+def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     """Work-precision plot: time per evaluation against error (max error over
     the peak), log-log, one panel per function that has alternatives; one
-    colour per method, one line style per coordinate system."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    colour per method, one line style per coordinate system. At most four
+    panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more."""
+    from matplotlib import colormaps
+
+    from .plots import MAX_PANELS, chunks, numbered, save
 
     names = [n for n in dict.fromkeys(r.function for r in rows)
              if any(r.function == n and r.kind in ALTERNATIVES for r in rows)]
     families = sorted({_family(r.method) for r in rows if r.kind in ALTERNATIVES})
     methods = sorted({f.split(" [")[0] for f in families})
     systems = sorted({f.split(" [")[-1] for f in families})
-    colour = dict(zip(methods, plt.get_cmap("tab10").colors * 2))
+    colour = dict(zip(methods, colormaps["tab10"].colors * 2))
     style = dict(zip(systems, ("-", "--", ":", "-.") * 3))
+    pages = chunks(names, MAX_PANELS)
+    paths = numbered(path, len(pages))
+    for k, (page, target) in enumerate(zip(pages, paths), start=1):
+        heading = title if len(pages) == 1 else f"{title}, {k} of {len(pages)}"
+        save(_figure(rows, page, families, colour, style, heading), target, dpi=100)
+    return paths
+
+
+def _figure(rows: Sequence[BenchRow], names: Sequence[str], families: Sequence[str],
+            colour: dict, style: dict, title: str):
+    """One work-precision figure of the functions ``names``, the legend below
+    the panels (outside the data)."""
+    from matplotlib.figure import Figure
+
     cols = 2 if len(names) > 1 else 1
     nrows = max(1, -(-len(names) // cols))
     legend_rows = -(-(len(families) + 2) // 3)
     legend = 0.2 * legend_rows + 0.35          # inches below the panels
-    fig, axes = plt.subplots(nrows, cols, figsize=(7 * cols, 3.6 * nrows + legend + 0.5),
-                             squeeze=False)
+    fig = Figure(figsize=(7 * cols, 3.6 * nrows + legend + 0.5))
+    axes = fig.subplots(nrows, cols, squeeze=False)
     for ax in axes.ravel()[len(names):]:
         ax.set_visible(False)
     handles = {}
@@ -188,6 +203,4 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> Path:
                frameon=False)
     fig.suptitle(title)
     fig.tight_layout(rect=(0, legend / fig.get_figheight(), 1, 0.98))
-    fig.savefig(path, dpi=100, metadata={"Software": None})
-    plt.close(fig)
-    return path
+    return fig

@@ -1,41 +1,86 @@
-"""The ``crane-sym`` command line."""
+"""The crane-sym command line: one function per subcommand, and the parser."""
 from __future__ import annotations
 
 import argparse
 import json
 import sys
 import time
+from importlib import metadata
 from pathlib import Path
 from typing import Sequence
 
-from . import registry
+from . import __version__, progress, registry
+
+DESCRIPTION = """\
+Derive, audit and generate code for the dynamics of crane mechanisms.
+
+For each published paper crane-sym rebuilds the derivation with SymPy, checks
+every printed formula against it, writes fast NumPy modules, and runs scenes
+(one concrete question with its data, in TOML). Papers are named by id
+(travel_braking) or by the number of their source file (000)."""
+
+#: One example (or two) per subcommand, shown at the end of its --help.
+EXAMPLES = {
+    "list": "crane-sym list\n  crane-sym list --format json",
+    "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
+             "--format json --quiet > verdicts.json",
+    "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md",
+    "generate": "crane-sym generate\n  crane-sym generate --check\n"
+                "  crane-sym generate --scene hoist_user_drive_law --out out/",
+    "accuracy": "crane-sym accuracy 002",
+    "bench": "crane-sym bench 000 002 004 --out bench/",
+    "run": "crane-sym run overhead_crane_50t --out out/",
+}
 
 
 def _ids(names: Sequence[str]) -> list[str]:
     return [registry.resolve(n) for n in names] if names else registry.ids()
 
 
+def version() -> str:
+    """The installed version of crane_sym (package metadata), or the source's."""
+    try:
+        return metadata.version("crane_sym")
+    except metadata.PackageNotFoundError:
+        return __version__
+
+
+def _progress(args: argparse.Namespace) -> progress.Progress:
+    """A reporter for this command: on when stderr is a terminal and not --quiet."""
+    return progress.Progress(progress.wanted(getattr(args, "quiet", False)))
+
+
 def cmd_list(args: argparse.Namespace) -> int:
-    rows = [{"id": i, "paper": registry.module(i).PAPER, "title": registry.module(i).TITLE}
-            for i in registry.ids()]
+    """Registered papers: id, number, authors, title."""
+    numbers = {i: n for n, i in registry.ALIASES.items()}
+    rows = []
+    for i in registry.ids():
+        paper = registry.module(i)
+        rows.append({"id": i, "number": numbers.get(i, ""), "authors": list(paper.AUTHORS),
+                     "title": paper.TITLE, "paper": paper.PAPER})
     if args.format == "json":
         print(json.dumps(rows, indent=2, ensure_ascii=False))
     else:
         for row in rows:
-            print(f"{row['id']:<18} {row['paper']:<28} {row['title']}")
+            print(f"{row['id']:<16} {row['number']:<4} {', '.join(row['authors'])}\n"
+                  f"{'':<21} {row['title']}")
     return 0
 
 
 def cmd_audit(args: argparse.Namespace) -> int:
+    """Verdicts on the printed formulas of the chosen papers."""
     from .audit import audit
     from .report import FORMATS
     records, timings = [], []
-    for i in _ids(args.ids):
-        start = time.perf_counter()
-        d = registry.get(i)
-        built = time.perf_counter()
-        records += audit(d)
-        timings.append((i, built - start, time.perf_counter() - built))
+    with progress.reporting(_progress(args)) as say:
+        for i in _ids(args.ids):
+            start = time.perf_counter()
+            with say.task(f"building {i}"):
+                d = registry.get(i)
+            built = time.perf_counter()
+            with say.task(f"auditing {i} ({len(d.published)} printed formulas)"):
+                records += audit(d)
+            timings.append((i, built - start, time.perf_counter() - built))
     print(FORMATS[args.format](records))
     if args.profile:
         for i, b, a in timings:
@@ -47,8 +92,11 @@ def cmd_audit(args: argparse.Namespace) -> int:
 
 
 def cmd_walkthrough(args: argparse.Namespace) -> int:
+    """The derivation step by step, as Markdown."""
     from .walkthrough import walkthrough
-    text = walkthrough(registry.resolve(args.id))
+    name = registry.resolve(args.id)
+    with progress.reporting(_progress(args)) as say, say.task(f"walkthrough of {name}"):
+        text = walkthrough(name)
     if args.output:
         Path(args.output).write_text(text, encoding="utf-8")
         print(f"wrote {args.output}")
@@ -58,22 +106,30 @@ def cmd_walkthrough(args: argparse.Namespace) -> int:
 
 
 def cmd_generate(args: argparse.Namespace) -> int:
+    """Write generated/ (or one scene's module), or check that it is fresh."""
     from . import codegen, specialize
     from .generate import all_files
-    if args.scene:
-        directory = Path(args.out or ".")
-        files = specialize.scene_files(args.scene)
-    else:
-        directory = Path(args.out) if args.out else codegen.default_directory()
-        files = all_files()
+    with progress.reporting(_progress(args)):
+        if args.scene:
+            directory = Path(args.out or ".")
+            files = specialize.scene_files(args.scene)
+        else:
+            directory = Path(args.out) if args.out else codegen.default_directory()
+            files = all_files()
     if args.check:
-        bad = codegen.stale(files, directory)
-        for name in bad:
+        found = codegen.compare(files, directory, strays=not args.scene)
+        for name in found.missing:
+            print(f"missing: {directory / name} is not there")
+        for name in found.differs:
             print(f"stale: {directory / name} differs from what the derivations produce")
-        if bad:
-            print("run `crane-sym generate` and commit generated/", file=sys.stderr)
+        for name in found.stray:
+            print(f"stray: {directory / name} is not produced by any derivation or scene")
+        if not found.ok:
+            print(f"{len(found.missing)} missing, {len(found.differs)} stale, "
+                  f"{len(found.stray)} stray; run `crane-sym generate` (delete stray "
+                  "files) and commit generated/", file=sys.stderr)
             return 1
-        print(f"generated/ is up to date ({len(files)} files in {directory})")
+        print(f"{directory} is up to date ({len(files)} files)")
         return 0
     for path in codegen.write(files, directory):
         print(f"wrote {path}")
@@ -81,6 +137,8 @@ def cmd_generate(args: argparse.Namespace) -> int:
 
 
 def cmd_accuracy(args: argparse.Namespace) -> int:
+    """Generated functions against mpmath on the hard cases; exit 1 when one
+    is over its target."""
     import importlib
 
     from .reference import accuracy
@@ -88,18 +146,31 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
     # rounding alone causes); over target: largest error / max(1e-15, 2 cond.·u).
     print(f"{'function':<34} {'hard case':<40} {'points':>6} {'cond.·u':>9} "
           f"{'over target':>11}  max rel. error vs mpmath (50 digits)")
-    for i in _ids(args.ids):
-        cases = getattr(registry.module(i), "hard_cases", None)
-        if cases is None:
-            print(f"{i}: no hard cases defined")
-            continue
-        d = registry.get(i)
-        generated = importlib.import_module(f"crane_sym.generated.{i}")
-        for case, columns in cases().items():
-            for out in (o for o in d.outputs if not o.expr.is_Matrix):
-                row = accuracy(out, getattr(generated, out.name), case, columns)
-                print(f"{out.name:<34} {case:<40} {row.points:>6} {row.bound:9.2e} "
-                      f"{row.excess:11.2f}  {row.max_rel_error:.2e}")
+    checked, over = 0, []
+    with progress.reporting(_progress(args)) as say:
+        for i in _ids(args.ids):
+            cases = getattr(registry.module(i), "hard_cases", None)
+            if cases is None:
+                print(f"{i}: no hard cases defined")
+                continue
+            with say.task(f"building {i}"):
+                d = registry.get(i)
+            generated = importlib.import_module(f"crane_sym.generated.{i}")
+            for case, columns in cases().items():
+                for out in (o for o in d.outputs if not o.expr.is_Matrix):
+                    say.step(f"{i}: {out.name} on {case}")
+                    row = accuracy(out, getattr(generated, out.name), case, columns)
+                    say.done()                  # the step line off the screen first
+                    checked += 1
+                    if not row.excess <= 1:
+                        over.append(f"{out.name} ({case})")
+                    print(f"{out.name:<34} {case:<40} {row.points:>6} {row.bound:9.2e} "
+                          f"{row.excess:11.2f}  {row.max_rel_error:.2e}")
+    if over:
+        print(f"FAIL: {len(over)} of {checked} function/case pairs over target: "
+              + ", ".join(over))
+        return 1
+    print(f"PASS: all {checked} function/case pairs within target")
     return 0
 
 
@@ -114,6 +185,7 @@ def _machine() -> str:
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
+    """Speed against error of the generated functions and the SciPy alternatives."""
     from . import bench, scenes
     from .bench_report import as_markdown, headline, not_applicable, plot
     out_dir = Path(args.out)
@@ -156,11 +228,11 @@ def cmd_bench(args: argparse.Namespace) -> int:
                  "", as_markdown(big), "", "## Every function and alternative", "",
                  as_markdown(rows), ""]
         md.write_text("\n".join(lines), encoding="utf-8")
-        png = plot(rows, out_dir / f"bench_{i}.png",
-                   f"{i}: time against error ({args.points} points, this machine)")
+        pngs = plot(rows, out_dir / f"bench_{i}.png",
+                    f"{i}: time against error ({args.points} points, this machine)")
         if args.format == "table":
             print("\n".join(lines[:5 + len(heads)]))
-            print(f"wrote {md} and {png}")
+            print(f"wrote {md} and {', '.join(map(str, pngs))}")
     if args.sampled:
         _bench_sampled(out_dir, args.format == "table")
     if args.format == "json":
@@ -188,45 +260,68 @@ def _bench_sampled(out_dir: Path, show: bool) -> None:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
+    """Run one scene: print its numbers, write its module and plots."""
     from .scene_run import run_scene
     from .scenes import load_scene
     scene = load_scene(args.scene)
-    report, figure = run_scene(scene, Path(args.out))
+    report, figures = run_scene(scene, Path(args.out))
     print(f"scene {scene.name}: {scene.title}")
     for line in report.lines:
         print(f"  {line}")
-    print(f"plot written to {figure}")
+    print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
+          + ", ".join(str(f) for f in figures))
     return 0
+
+
+def _subcommand(sub, name: str, text: str, func, quiet: bool = False):
+    """A subcommand with ``text`` as help and description, its example as the
+    epilog, and (for the long commands) ``--quiet``."""
+    p = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".",
+                       epilog=("examples:" if "\n" in EXAMPLES[name] else "example:")
+                       + "\n  " + EXAMPLES[name],
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    if quiet:
+        p.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
+                       help="no progress on stderr (progress is shown only on a terminal)")
+    p.set_defaults(func=func)
+    return p
 
 
 def parser() -> argparse.ArgumentParser:
     """The argument parser (exposed for documentation and tests)."""
-    top = argparse.ArgumentParser(prog="crane-sym", description=__doc__)
-    sub = top.add_subparsers(dest="command", required=True)
-    p = sub.add_parser("list", help="registered derivations")
+    top = argparse.ArgumentParser(
+        prog="crane-sym", description=DESCRIPTION,
+        epilog="example:\n  crane-sym audit 000\n\nRun `crane-sym COMMAND --help` for "
+               "the options and an example of each command.",
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    top.add_argument("--version", action="version", version=f"crane-sym {version()}")
+    top.add_argument("-q", "--quiet", action="store_true",
+                     help="no progress on stderr (progress is shown only on a terminal)")
+    sub = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    ids_help = "derivation ids or paper numbers (default: all)"
+    p = _subcommand(sub, "list", "registered papers: id, number, authors, title", cmd_list)
     p.add_argument("--format", choices=("table", "json"), default="table")
-    p.set_defaults(func=cmd_list)
-    p = sub.add_parser("audit", help="verdict on every published formula")
-    p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")
+    p = _subcommand(sub, "audit", "verdict on every published formula", cmd_audit, True)
+    p.add_argument("ids", nargs="*", help=ids_help)
     p.add_argument("--format", choices=("table", "json", "markdown"), default="table")
     p.add_argument("--profile", action="store_true", help="time per derivation on stderr")
-    p.set_defaults(func=cmd_audit)
-    p = sub.add_parser("walkthrough", help="step-by-step derivation as Markdown")
+    p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown",
+                    cmd_walkthrough, True)
     p.add_argument("id")
     p.add_argument("-o", "--output", help="write to this file instead of stdout")
-    p.set_defaults(func=cmd_walkthrough)
-    p = sub.add_parser("generate", help="write generated/ (or --check it)")
-    p.add_argument("--check", action="store_true", help="exit 1 if generated/ is stale")
-    p.add_argument("--out", help="folder to write to (default: the package's generated/, "
-                   "or . with --scene)")
+    p = _subcommand(sub, "generate", "write generated/ (or check that it is up to date)",
+                    cmd_generate, True)
+    p.add_argument("--check", action="store_true", help="write nothing; name the missing, "
+                   "stale and stray files; exit 1 if there are any")
+    p.add_argument("--out", help="folder to write to or check (default: the package's "
+                   "generated/, or . with --scene)")
     p.add_argument("--scene", help="write only the module specialized to this scene "
                    "(name or TOML path)")
-    p.set_defaults(func=cmd_generate)
-    p = sub.add_parser("accuracy", help="generated functions vs mpmath on the hard cases")
-    p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")
-    p.set_defaults(func=cmd_accuracy)
-    p = sub.add_parser("bench", help="speed against error, with SciPy alternatives")
-    p.add_argument("ids", nargs="*", help="derivation ids or paper numbers (default: all)")
+    p = _subcommand(sub, "accuracy", "generated functions against mpmath on the hard cases; "
+                    "exit 1 if one is over its target", cmd_accuracy, True)
+    p.add_argument("ids", nargs="*", help=ids_help)
+    p = _subcommand(sub, "bench", "speed against error, with SciPy alternatives", cmd_bench)
+    p.add_argument("ids", nargs="*", help=ids_help)
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--out", default="bench", help="folder for Markdown and PNG (default: bench/)")
     p.add_argument("--points", type=int, default=2000, help="grid points for the comparison")
@@ -239,16 +334,16 @@ def parser() -> argparse.ArgumentParser:
                    help="also bench loads sampled on a grid against the closed forms")
     p.add_argument("--rtols", nargs="+", type=float,
                    help="integrator and quadrature tolerances (default: 1e-3 1e-6 1e-9 1e-12)")
-    p.set_defaults(func=cmd_bench)
-    p = sub.add_parser("run", help="run a scene: print its results, write its plot")
+    p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
+                    cmd_run)
     p.add_argument("scene", help="scene name or path to a scene TOML file")
-    p.add_argument("--out", default=".", help="folder for the scene module and the plot "
+    p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
-    p.set_defaults(func=cmd_run)
     return top
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; return the exit code."""
     args = parser().parse_args(argv)
     try:
         return args.func(args)

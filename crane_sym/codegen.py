@@ -1,15 +1,16 @@
 """Code generation: rewrite rules -> printer -> template -> file.
 
-``render_module`` is pure (derivation in, source text out); ``write`` and
-``stale`` are the only functions that touch files. Generated modules import
-NumPy only, validate every argument, and evaluate parameter-only parts once
-as scalars before the array work.
+``render_module`` is pure (derivation in, source text out); ``write``,
+``compare`` and ``stale`` are the only functions that touch files. Generated
+modules import NumPy only, validate every argument, and evaluate
+parameter-only parts once as scalars before the array work.
 """
 from __future__ import annotations
 
 import importlib.util
 import inspect
 import re
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Sequence
 
@@ -323,12 +324,17 @@ def render_package_init(ids: Sequence[str]) -> str:
 
 def default_directory() -> Path:
     """The folder of ``crane_sym.generated`` (``generated/`` in a clone), found
-    without importing what is in it."""
+    without importing what is in it, and found even when the folder is empty
+    or missing (it is what ``crane-sym generate`` writes)."""
     spec = importlib.util.find_spec("crane_sym.generated")
-    if spec is None or not spec.submodule_search_locations:
-        raise KeyError("the package crane_sym.generated is not installed; run "
-                       "`pip install -e .` in the clone, or pass --out")
-    return Path(list(spec.submodule_search_locations)[0])
+    if spec is not None and spec.submodule_search_locations:
+        return Path(list(spec.submodule_search_locations)[0])
+    # No package there yet: the layout of pyproject.toml's package-dir decides.
+    package = Path(__file__).resolve().parent
+    clone = package.parent
+    if (clone / "pyproject.toml").is_file() and (clone / "derivations").is_dir():
+        return clone / "generated"  # a clone, installed editable or not
+    return package / "generated"  # an installed wheel
 
 
 def rendered(derivations: Sequence[Derivation],
@@ -352,11 +358,36 @@ def write(files: dict[str, str], directory: Path) -> list[Path]:
     return paths
 
 
-def stale(files: dict[str, str], directory: Path) -> list[str]:
-    """Names of files that are missing or differ from what would be written."""
-    out = []
+@dataclass(frozen=True)
+class Freshness:
+    """How a folder on disk compares with what would be written into it."""
+
+    missing: list[str]
+    differs: list[str]
+    stray: list[str]
+
+    @property
+    def ok(self) -> bool:
+        """True when nothing is missing, different or stray."""
+        return not (self.missing or self.differs or self.stray)
+
+
+def compare(files: dict[str, str], directory: Path, strays: bool = True) -> Freshness:
+    """Compare ``directory`` with ``files``: names missing on disk, names that
+    differ, and (if ``strays``) ``.py`` files on disk that would not be written."""
+    missing, differs = [], []
     for name, text in sorted(files.items()):
         path = directory / name
-        if not path.exists() or path.read_bytes() != text.encode("utf-8"):
-            out.append(name)
-    return out
+        if not path.is_file():
+            missing.append(name)
+        elif path.read_bytes() != text.encode("utf-8"):
+            differs.append(name)
+    extra = sorted(p.name for p in directory.glob("*.py") if p.name not in files) \
+        if strays and directory.is_dir() else []
+    return Freshness(missing, differs, extra)
+
+
+def stale(files: dict[str, str], directory: Path) -> list[str]:
+    """Names of files that are missing or differ from what would be written."""
+    found = compare(files, directory, strays=False)
+    return sorted(found.missing + found.differs)

@@ -11,6 +11,7 @@ from typing import Any, Callable, Mapping
 
 import sympy as sp
 
+from . import progress
 from .published import PublishedFormula
 from .symbols import PhysicalSymbol, SymbolTable
 
@@ -227,4 +228,5 @@ class Derivation:
         now = time.perf_counter()
         self.steps.append(Step(label, statement, how, why, title, now - self._clock))
         self._clock = now
+        progress.current().step(f"{self.id}: step {label} done")
         return statement

@@ -2,10 +2,22 @@
 per shipped scene, and the package ``__init__``."""
 from __future__ import annotations
 
-from . import codegen, registry, specialize
+from . import codegen, progress, registry, specialize
+from .scenes import list_scenes
 
 
 def all_files() -> dict[str, str]:
     """File name -> source for the whole ``generated/`` folder."""
-    derivations = [registry.get(i) for i in registry.ids()]
-    return codegen.rendered(derivations, specialize.shipped_scene_modules())
+    say = progress.current()
+    derivations = []
+    for i in registry.ids():
+        with say.task(f"building {i}"):
+            derivations.append(registry.get(i))
+    modules = {}
+    for d in (d for d in derivations if d.outputs):
+        with say.task(f"printing {d.id}.py"):
+            modules[f"{d.id}.py"] = codegen.render_module(d)
+    for name in list_scenes():
+        with say.task(f"specializing scene {name}"):
+            modules.update(specialize.scene_files(name))
+    return codegen.rendered([], modules)

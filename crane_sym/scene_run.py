@@ -48,7 +48,7 @@ def time_function(scene: Scene, module: ModuleType, name: str) -> Callable:
     return lambda t: general(t, **given)
 
 
-def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, Path]:
+def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, list[Path]]:
     """Evaluate a scene through its own generated module and plot it.
 
     Parameters
@@ -56,13 +56,15 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, Pat
     scene : Scene, or a scene name or TOML path
         From :func:`crane_sym.scenes.load_scene`, or what it reads.
     outdir : Path
-        Folder for the module and the plot; created if needed.
+        Folder for the module and the plots; created if needed.
 
     Returns
     -------
-    (SceneReport, Path)
+    (SceneReport, list of Path)
         The derivation's report (its last line names the module written) and
-        the PNG ``<outdir>/<scene.name>.png``.
+        the PNGs written (:func:`plot_report`): ``<outdir>/<scene.name>.png``,
+        or ``<scene.name>_1.png``, ``_2`` ... when the panels need several
+        figures.
     """
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
@@ -77,31 +79,14 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, Pat
     if not isinstance(report, SceneReport) or not report.panels:
         raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
     report.lines.append(f"module written to {source}")
-    path = plot_report(report, scene.title, outdir / f"{scene.name}.png")
-    return report, path
+    paths = plot_report(report, scene.title, outdir / f"{scene.name}.png")
+    return report, paths
 
 
-def plot_report(report: SceneReport, title: str, path: Path) -> Path:
-    """Write the report's panels, one subplot each, to the PNG ``path``."""
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+def plot_report(report: SceneReport, title: str, path: Path) -> list[Path]:
+    """Write the report's panels as PNGs: ``path`` when one figure holds them
+    all, else ``<stem>_1.png``, ``<stem>_2.png`` ... (see :func:`figures`)."""
+    from . import plots
 
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    n = len(report.panels)
-    fig, axes = plt.subplots(n, 1, figsize=(8, 3.2 * n), squeeze=False,
-                             layout="constrained")
-    try:
-        for ax, panel in zip(axes[:, 0], report.panels):
-            for label, x, y in panel.curves:
-                ax.plot(x, y, label=label)
-            ax.set(title=panel.title, xlabel=panel.xlabel, ylabel=panel.ylabel)
-            ax.grid(True, alpha=0.4)
-            if len(panel.curves) > 1:
-                ax.legend(loc="lower right", framealpha=0.9)
-        fig.suptitle(title)
-        fig.savefig(path, dpi=120, metadata={"Software": None})
-    finally:
-        plt.close(fig)
-    return path
+    made = plots.figures(report.panels, title)
+    return [plots.save(fig, p) for fig, p in zip(made, plots.numbered(path, len(made)))]

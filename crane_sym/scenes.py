@@ -100,12 +100,17 @@ class Scene:
 
 @dataclass
 class Panel:
-    """One subplot: curves ``(label, x, y)`` sharing a y axis."""
+    """One subplot: curves ``(label, x, y)`` sharing a y axis. Text may use
+    Matplotlib mathtext (``$K_\\mathrm{дин}$``). Consecutive panels of one
+    ``group`` are plotted together, at most four to a figure, titled with it;
+    ``styles`` gives Matplotlib line options by curve label."""
 
     title: str
     ylabel: str
     curves: list[tuple[str, np.ndarray, np.ndarray]] = field(default_factory=list)
-    xlabel: str = "t [s]"
+    xlabel: str = "$t$ [s]"
+    group: str = ""
+    styles: dict[str, dict] = field(default_factory=dict)
 
 
 @dataclass

@@ -285,7 +285,7 @@ def test_run_writes_the_module_and_a_plot_and_bounds_the_samples(tmp_path):
     law = ('[drive_law]\nlifting = "from_weight"\nbreakpoints = [0.0, 0.3]\n'
            "coefficients = [[1.0]]\n")
     path = _write(tmp_path, HEAD + law + '[options]\nduration = "0.6 s"\npoints = 301\n')
-    report, figure = run_scene(path, tmp_path / "out")
+    report, (figure,) = run_scene(path, tmp_path / "out")
     assert figure.is_file() and figure.stat().st_size > 0
     written = (tmp_path / "out" / "scene_probe.py").read_text(encoding="utf-8")
     assert written == scene_files(path)["scene_probe.py"]

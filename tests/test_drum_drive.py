@@ -394,7 +394,7 @@ def test_scene_loads_and_runs(scene, tmp_path):
     from crane_sym.scene_run import run_scene
     assert scene.parameters["C1"] == 2e4 and scene.parameters["D"] == 0.5
     assert scene.options["duration"] == 10.0
-    rep, path = run_scene(scene, tmp_path)
+    rep, (path,) = run_scene(scene, tmp_path)
     assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert len(rep.panels) == 4 and any("energy balance" in line for line in rep.lines)
     assert rep.values["run_time"] > 0
@@ -431,7 +431,7 @@ def test_undamped_scene_runs_its_own_state_derivative(tmp_path):
     """drum_drive_undamped: the scene's module alone, no damping left in it, the
     integrator within 1e-8 of the exact (matrix exponential) solution."""
     from crane_sym.scene_run import run_scene
-    rep, path = run_scene("drum_drive_undamped", tmp_path)
+    rep, (path,) = run_scene("drum_drive_undamped", tmp_path)
     v = rep.values
     assert path.is_file() and (tmp_path / "scene_drum_drive_undamped.py").is_file()
     assert v["max_real_over_abs"] < 1e-10          # eigenvalues on the imaginary axis

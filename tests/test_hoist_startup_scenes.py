@@ -28,11 +28,14 @@ def test_each_scene_runs_and_writes_a_png(name, tmp_path, laws, monkeypatch):
     if name == "hoist_drive_laws":          # the report computed once, by the fixture
         monkeypatch.setattr(registry.module("hoist_startup"), "scene_report",
                             lambda s, m=None: laws[1], raising=False)
-    report, png = run_scene(scene, tmp_path)
+    report, pngs = run_scene(scene, tmp_path)
     assert isinstance(report, SceneReport) and report.panels and report.lines
-    assert png == tmp_path / f"{name}.png"
-    data = png.read_bytes()
-    assert len(data) > 1000 and data[:8] == PNG_MAGIC
+    # nine panels of the drive laws: pick-up, from weight, Table 1
+    assert pngs == ([tmp_path / f"{name}_{k}.png" for k in (1, 2, 3)]
+                    if name == "hoist_drive_laws" else [tmp_path / f"{name}.png"])
+    for png in pngs:
+        data = png.read_bytes()
+        assert len(data) > 1000 and data[:8] == PNG_MAGIC
     assert report.values["Omega"] == pytest.approx(25.0, rel=1e-12)
 
 
@@ -49,7 +52,7 @@ def test_fig3_largest_displacement_is_twice_the_static_one():
     assert abs(v["K_at_period"]) < 1e-14
     assert v["K_max_sampled"] <= 2.0 + 1e-14
     assert v["K_max_sampled"] == pytest.approx(2.0, rel=1e-6)
-    assert [c[0] for c in report.panels[0].curves][0] == "x(t)/x_ст (38)"
+    assert [c[0] for c in report.panels[0].curves][0] == r"$x(t)/x_\mathrm{ст}$ (38)"
 
 
 def test_fig5_trails_the_static_line_by_one_over_omega_tn():

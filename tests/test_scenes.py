@@ -67,7 +67,7 @@ def test_load_by_path_equals_load_by_name(crane):
 
 
 def test_run_scene_writes_png_and_peak_is_twice_rigid_force(crane, tmp_path):
-    report, png = run_scene(crane, tmp_path / "out")
+    report, (png,) = run_scene(crane, tmp_path / "out")
     assert isinstance(report, SceneReport)
     assert png == tmp_path / "out" / "overhead_crane_50t.png"
     data = png.read_bytes()
@@ -102,8 +102,8 @@ def test_run_scene_writes_png_and_peak_is_twice_rigid_force(crane, tmp_path):
 
 
 def test_run_scene_png_is_deterministic(crane, tmp_path):
-    first = run_scene(crane, tmp_path / "a")[1].read_bytes()
-    second = run_scene(crane, tmp_path / "b")[1].read_bytes()
+    first = run_scene(crane, tmp_path / "a")[1][0].read_bytes()
+    second = run_scene(crane, tmp_path / "b")[1][0].read_bytes()
     assert first == second
 
 

@@ -18,6 +18,8 @@ from crane_sym.symbols import STATE as STATE_ROLE
 
 #: The paper's text file (``published`` cites it in every record).
 PAPER = "004_f118c513e0426caf.txt"
+#: The authors as the paper's header gives them (Ukrainian; transliterated).
+AUTHORS = ("M.P. Martyntsiv", "O.M. Udovytskyi", "B.V. Sologub")
 
 # --- Symbols -----------------------------------------------------------------
 # The print's own notation (Q_i, δA_i, dm, dl, y(x, t), ...) is declared with the

@@ -198,10 +198,11 @@ def example_report(scene, module):
         "raises the lowest one, as listed above",
     ]
     panels = [
-        Panel("Drum-shaft displacement (Fig. 3)", "y [mm]", [("y(t)", times, x[3] * 1e3)]),
-        Panel("Branch forces", "F [kN]", [("F1 (tight)", times, F1_sim / 1e3),
-                                          ("F2 (slack)", times, F2_sim / 1e3)]),
-        Panel("Load on the run, (21)", "W [kN]", [("W(t) = F'(t)", times, load(times) / 1e3)]),
-        Panel("Speed of the run", "dz/dt [m/s]", [("ż(t)", times, x[9])]),
+        Panel("Drum-shaft displacement (Fig. 3)", "$y$ [mm]", [("$y(t)$", times, x[3] * 1e3)]),
+        Panel("Branch forces", "$F$ [kN]", [("$F_1$ (tight)", times, F1_sim / 1e3),
+                                            ("$F_2$ (slack)", times, F2_sim / 1e3)]),
+        Panel("Load on the run, (21)", "$W$ [kN]",
+              [("$W(t) = F'(t)$", times, load(times) / 1e3)]),
+        Panel("Speed of the run", r"$\dot z$ [m/s]", [(r"$\dot z(t)$", times, x[9])]),
     ]
     return SceneReport(lines=lines, values=v, panels=panels)

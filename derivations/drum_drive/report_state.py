@@ -74,6 +74,6 @@ def state_report(scene, module) -> SceneReport:
              f"speed of the run     {fq(values['v_end'], 'm/s')} at {fq(duration, 's')}",
              f"DOP853 (rtol 1e-11) against the matrix exponential: {gap:.1e} of the "
              "largest state"]
-    panels = [Panel("Drum-shaft displacement", "y [mm]", [("y(t)", times, y * 1e3)]),
-              Panel("Speed of the run", "dz/dt [m/s]", [("ż(t)", times, z_dot)])]
+    panels = [Panel("Drum-shaft displacement", "$y$ [mm]", [("$y(t)$", times, y * 1e3)]),
+              Panel("Speed of the run", r"$\dot z$ [m/s]", [(r"$\dot z(t)$", times, z_dot)])]
     return SceneReport(lines=lines, values=values, panels=panels)

@@ -18,7 +18,7 @@ transcribes every printed formula, and emits the dynamic coefficient over time
 for each load case and for each drive law a_i in both lifting cases. It does
 nothing on import; ``build()`` returns the ``Derivation``.
 
-- ``model.py``: ID, PAPER, TITLE, symbols, symbol table, LaTeX names, the model
+- ``model.py``: ID, PAPER, TITLE, AUTHORS, symbols, symbol table, LaTeX names, the model
   text, the test laws, the print's Duhamel integrals, the drive laws of (30).
 - ``steps.py``: steps (1)–(31); ``steps_load_cases.py``: (32)–(53);
   ``steps_optimum.py``: (54)–(66).
@@ -35,7 +35,7 @@ from crane_sym.derivation import Derivation
 from crane_sym.published import PublishedFormula
 
 from .hard_cases import hard_cases
-from .model import ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .model import AUTHORS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .drive_law_scene import DRIVE_LAW
 from .report import scene_report
 from .steps import (drive_laws, duhamel_integral, dynamic_coefficients,
@@ -46,8 +46,8 @@ from .steps_optimum import optimum
 #: Loads a scene may give as data (crane_sym.derivation.SceneLoad).
 SCENE_LOADS = {DRIVE_LAW.table: DRIVE_LAW}
 
-__all__ = ["ID", "PAPER", "TITLE", "LATEX_NAMES", "SCENE_LOADS", "build", "hard_cases",
-           "published_formulas", "scene_report"]
+__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SCENE_LOADS", "build",
+           "hard_cases", "published_formulas", "scene_report"]
 
 
 def published_formulas() -> list[PublishedFormula]:

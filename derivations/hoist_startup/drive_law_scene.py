@@ -145,12 +145,13 @@ def drive_law_report(scene, gen: ModuleType) -> SceneReport:
              f"K_max = {k_max:.6f} at t = {fq(t_max, 's')} over [0, {fq(duration, 's')}] "
              f"(interval arithmetic, certified: {found.certified}); sampled max "
              f"{np.max(k):.6f}"]
-    panels = [Panel("drive law a(t) and speed v(t)", "a [m/s²], v [m/s]",
-                    [("a(t)", t, gen.drive_acceleration(t)), ("v(t)", t, gen.drive_speed(t))]),
-              Panel("dynamic coefficient K(t) (25)", "K", [("K(t)", t, k)]),
-              Panel("rope force (24)", "F [kN]", [("C x(t)", t, gen.rope_force(t) / 1e3)]),
-              Panel("load acceleration (1)", "a₂ [m/s²]",
-                    [("ẍ₂(t)", t, gen.load_acceleration(t))])]
+    panels = [Panel("Drive law $a(t)$ and speed $v(t)$", "$a$ [m/s²], $v$ [m/s]",
+                    [("$a(t)$", t, gen.drive_acceleration(t)),
+                     ("$v(t)$", t, gen.drive_speed(t))]),
+              Panel("Dynamic coefficient $K(t)$ (25)", "$K$", [("$K(t)$", t, k)]),
+              Panel("Rope force (24)", "$F$ [kN]", [(r"$C\,x(t)$", t, gen.rope_force(t) / 1e3)]),
+              Panel("Load acceleration (1)", r"$\ddot x_2$ [m/s²]",
+                    [(r"$\ddot x_2(t)$", t, gen.load_acceleration(t))])]
     return SceneReport(lines=lines, values={"Omega": omega, "K_max": k_max, "t_max": t_max,
                                             "v0": v0, "certified": float(found.certified)},
                        panels=panels)

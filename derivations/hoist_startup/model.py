@@ -19,6 +19,8 @@ from crane_sym.symbols import (COORDINATE, DEFINED, TIME, PhysicalSymbol,
 
 ID = "hoist_startup"
 PAPER = "002_f8509f3826f601de.txt"
+#: The authors as the paper's English header gives them.
+AUTHORS = ("Yuriy Chovnyuk", "Mykhaylo Dykteruk", "Svetlana Komotskaya")
 TITLE = ("Duhamel's integral for the start-up of a crane hoist: "
          "rope loads and dynamic factors")
 

@@ -129,11 +129,12 @@ def fig3(scene: Scene, gen: ModuleType) -> SceneReport:
         f"largest K on the grid: {fq(values['K_max_sampled'])} at "
         f"t = {fq(values['t_K_max_sampled'] / period)} T",
     ]
-    panel = Panel("Fig. 3: suddenly applied load, x(t)/x_ст = 2 sin²(Ωt/2) (35)-(38)",
-                  "x/x_ст", [("x(t)/x_ст (38)", times / period, k),
-                             ("x_ст (static)", times / period, np.ones_like(times)),
-                             ("2 x_ст", times / period, np.full_like(times, 2.0))],
-                  xlabel="t/T")
+    panel = Panel(r"Suddenly applied load: $x(t)/x_\mathrm{ст} = 2\sin^2(\Omega t/2)$, "
+                  "(35)-(38)", r"$x/x_\mathrm{ст}$",
+                  [(r"$x(t)/x_\mathrm{ст}$ (38)", times / period, k),
+                   (r"$x_\mathrm{ст}$ (static)", times / period, np.ones_like(times)),
+                   (r"$2\,x_\mathrm{ст}$", times / period, np.full_like(times, 2.0))],
+                  xlabel="$t/T$")
     return SceneReport(lines, values, [panel])
 
 
@@ -159,9 +160,11 @@ def fig5(scene: Scene, gen: ModuleType) -> SceneReport:
         f"(grid); (40): the lag sin(Ωt)/(Ω t_n) has amplitude 1/(Ω t_n) = "
         f"{fq(values['lag_amplitude'])}; x meets the line at t = T/2, T, 3T/2, ...",
     ]
-    panel = Panel("Fig. 5: linearly growing load P̄ = k t, x(t)/x_ст (40)-(42)", "x/x_ст",
-                  [("x(t)/x_ст (42)", times / period, k),
-                   ("k t/C over x_ст (static)", times / period, static)], xlabel="t/T")
+    panel = Panel(r"Linearly growing load $\bar P = k\,t$: $x(t)/x_\mathrm{ст}$, "
+                  "(40)-(42)", r"$x/x_\mathrm{ст}$",
+                  [(r"$x(t)/x_\mathrm{ст}$ (42)", times / period, k),
+                   (r"$k\,t/C$ over $x_\mathrm{ст}$ (static)", times / period, static)],
+                  xlabel="$t/T$")
     return SceneReport(lines, values, [panel])
 
 
@@ -284,7 +287,8 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
     q, times = scene.parameters, _times(scene)
     found, printed = maxima(scene), _printed_maxima()
     values: dict[str, float] = {}
-    panels, rows = [], []
+    by_case: dict[str, list[Panel]] = {case: [] for case in CASES}
+    rows = []
     for (case, i), ext in found.items():
         curve, key = _k(gen, case, i, times, q), f"{case}_a{i}"
         values.update({f"K_max_{key}": float(ext["K"].value),
@@ -300,11 +304,13 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
                     f" at t = {fq(values[f't_K_max_{key}'], 's')}; load acceleration max "
                     f"{fq(values[f'load_max_{key}'], digits=5)} v0/t_n at t = "
                     f"{fq(values[f't_load_max_{key}'], 's')}")
-        panels.append(Panel(f"a_{i} of (30), lifting {_CASE_TEXT[case]}: K_дин(t) "
-                            f"{'(26)' if case == drive_law.PICKUP else '(27)'}", "K_дин",
-                            [("elastic rope, Duhamel (generated)", times, curve),
-                             ("rigid load, ẍ2 = a_i (61)-(62)", times,
-                              _rigid(gen, case, i, times, q))]))
+        group = (rf"lifting {_CASE_TEXT[case]}, $K_\mathrm{{дин}}(t)$ "
+                 f"{'(26)' if case == drive_law.PICKUP else '(27)'}")
+        by_case[case].append(Panel(
+            f"drive law $a_{i}$ of (30)", r"$K_\mathrm{дин}$",
+            [("elastic rope, Duhamel (generated)", times, curve),
+             (rf"rigid load, $\ddot x_2 = a_{i}$ (61)-(62)", times,
+              _rigid(gen, case, i, times, q))], group=group))
     values["certified"] = float(all(e.certified for d in found.values() for e in d.values()))
     span, period = scene.options["duration"], 2 * math.pi / q["Omega"]
     lines = [f"maxima over [0, {fq(span, 's')}] by interval arithmetic (elastic) and "
@@ -324,7 +330,7 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
         elastic = ", ".join(f"{_CASE_TEXT[c]} {fq(values[f'load_max_{c}_a{i}'], digits=5)}"
                             for c in CASES)
         lines.append(f"a{i}: {ours}; {paper}; elastic: {elastic}")
-    panels.append(_table1_panel(gen, times, q))
+    panels = [p for case in CASES for p in by_case[case]] + [_table1_panel(gen, times, q)]
     return SceneReport(lines, values, panels)
 
 
@@ -332,16 +338,20 @@ def _table1_panel(gen: ModuleType, times: np.ndarray, q: dict) -> Panel:
     """k̃_i^(opt) of (65) (Table 1) and the elastic load's ẍ2/(v0/t_п), from weight:
     :math:`m_2 \\ddot x_2 = K F_{ref} - m_2 g` by (1) and (25)."""
     mask, unit = times <= q["t_n"], q["v0"] / q["t_n"]
-    panel = Panel("Table 1, (65): k̃_i^(opt) of the rigid load and the elastic load's "
-                  "ẍ2/(v0/t_п), from weight", "k̃", [], xlabel="t/t_п")
+    panel = Panel(r"Table 1, (65): $\tilde k_i^\mathrm{(opt)}$ of the rigid load (dashed) and "
+                  r"the elastic load's $\ddot x_2/(v_0/t_\mathrm{п})$, from weight",
+                  r"$\tilde k$", [], xlabel=r"$t/t_\mathrm{п}$")
     for i in range(2, 5):
         a0 = float(_law(gen, i, np.zeros(1), q)[0])
         force = _k(gen, drive_law.FROM_WEIGHT, i, times, q) * _reference(
             drive_law.FROM_WEIGHT, a0, q)
         load = (force - q["m2"] * q["g"]) / (q["m2"] * unit)
         x = times[mask] / q["t_n"]
-        panel.curves += [(f"k̃_{i}^(opt) (65)", x, _law(gen, i, times, q)[mask] / unit),
-                         (f"elastic, a_{i}", x, load[mask])]
+        rigid, elastic = rf"$\tilde k_{i}^\mathrm{{(opt)}}$ (65)", f"elastic, $a_{i}$"
+        panel.curves += [(rigid, x, _law(gen, i, times, q)[mask] / unit),
+                         (elastic, x, load[mask])]
+        panel.styles.update({rigid: {"color": f"C{i}", "linestyle": "--"},
+                             elastic: {"color": f"C{i}"}})
     return panel
 
 

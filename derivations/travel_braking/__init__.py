@@ -30,12 +30,13 @@ from crane_sym.derivation import Derivation
 
 from . import steps
 from .hard_cases import hard_cases
-from .model import CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .outputs import ode_systems, outputs
 from .published import PUBLISHED
 from .report import scene_report
 
-__all__ = ["ID", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases", "scene_report"]
+__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases",
+           "scene_report"]
 
 
 def build() -> Derivation:

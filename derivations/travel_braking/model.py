@@ -14,6 +14,8 @@ from crane_sym.symbols import (COORDINATE, DEFINED, TIME, PhysicalSymbol,
 ID = "travel_braking"
 PAPER = "000_4ef6efc8a81a3b06.txt"
 TITLE = "Dynamic loads when the travel mechanism of an overhead crane brakes"
+#: The authors as the paper's header gives them (Russian; transliterated).
+AUTHORS = ("V.F. Semenyuk", "A.N. Vudvud")
 CITATION = "V.F. Semenyuk, A.N. Vudvud, Odessa National Polytechnic University"
 
 # --- Symbols -----------------------------------------------------------------

@@ -98,13 +98,13 @@ def scene_report(scene, module):
         lines.append("note: t_max comes after the brake stops slipping; "
                      "the peak is not reached")
     panels = [
-        Panel("Elastic link force", "F [kN]", [
-            ("F(t)", times, force / 1e3),
-            ("F_r (rigid drive)", times, np.full_like(times, link_rigid / 1e3)),
+        Panel("Elastic link force", "$F$ [kN]", [
+            ("$F(t)$ (14)", times, force / 1e3),
+            (r"$F_\mathrm{r}$ (rigid drive)", times, np.full_like(times, link_rigid / 1e3)),
         ]),
-        Panel("Velocities", "v [m/s]", [
-            ("v1 (motor side, m1)", times, vel1),
-            ("v2 (crane side, m2)", times, vel2),
+        Panel("Velocities", "$v$ [m/s]", [
+            ("$v_1$ (motor side, $m_1$)", times, vel1),
+            ("$v_2$ (crane side, $m_2$)", times, vel2),
         ]),
     ]
     return SceneReport(lines=lines, values=values, panels=panels)

@@ -1,0 +1,96 @@
+"""Figures of a scene's panels, laid out so that nothing hides the data.
+
+At most four panels to a figure; one title per figure (the scene's, with the
+group of its panels); legends to the right of the axes, outside the data
+area; labels in Matplotlib mathtext where the panels give it. Figures are
+built without pyplot's global state and written by :func:`save`.
+"""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Sequence
+
+from .scenes import Panel
+
+__all__ = ["MAX_PANELS", "chunks", "figures", "layout", "legend_outside", "numbered", "save"]
+
+#: The most panels one figure holds.
+MAX_PANELS = 4
+
+
+def layout(panels: Sequence[Panel]) -> list[tuple[str, list[Panel]]]:
+    """Runs of consecutive panels of one ``group``, each split into figures of
+    at most :data:`MAX_PANELS` panels of nearly equal size: (group, panels)."""
+    runs: list[tuple[str, list[Panel]]] = []
+    for panel in panels:
+        if runs and runs[-1][0] == panel.group:
+            runs[-1][1].append(panel)
+        else:
+            runs.append((panel.group, [panel]))
+    return [(group, part) for group, members in runs for part in chunks(members)]
+
+
+def chunks(items: Sequence, size: int = MAX_PANELS) -> list[list]:
+    """``items`` in the fewest runs of at most ``size``, of nearly equal length
+    (nine in fours: 3, 3, 3)."""
+    parts = max(1, -(-len(items) // size))
+    length, extra = divmod(len(items), parts)
+    out, start = [], 0
+    for k in range(parts):
+        stop = start + length + (k < extra)
+        out.append(list(items[start:stop]))
+        start = stop
+    return out
+
+
+def numbered(path: Path, count: int) -> list[Path]:
+    """``[path]`` for one figure, else ``<stem>_1<suffix>`` ... ``_<count>``."""
+    path = Path(path)
+    if count == 1:
+        return [path]
+    return [path.with_name(f"{path.stem}_{k}{path.suffix}") for k in range(1, count + 1)]
+
+
+def legend_outside(ax, **options):
+    """A legend to the right of ``ax``, outside its data area."""
+    return ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0,
+                     **options)
+
+
+def figures(panels: Sequence[Panel], title: str) -> list:
+    """One Matplotlib figure per entry of :func:`layout`, each with one title:
+    ``title``, the panels' group if they have one, and the panel's own title
+    when the figure holds a single panel (several panels keep theirs as
+    captions)."""
+    from matplotlib.figure import Figure
+
+    pages = layout(panels)
+    out = []
+    for group, members in pages:
+        legends = any(len(p.curves) > 1 for p in members)
+        fig = Figure(figsize=(10.5 if legends else 8.0, 2.9 * len(members) + 0.9),
+                     layout="constrained")
+        axes = fig.subplots(len(members), 1, squeeze=False)[:, 0]
+        for ax, panel in zip(axes, members):
+            for label, x, y in panel.curves:
+                ax.plot(x, y, label=label, **panel.styles.get(label, {}))
+            ax.set(xlabel=panel.xlabel, ylabel=panel.ylabel)
+            if len(members) > 1:
+                ax.set_title(panel.title, fontsize=10)
+            ax.grid(True, alpha=0.4)
+            if len(panel.curves) > 1:
+                legend_outside(ax, fontsize=9)
+        heading = f"{title}: {group}" if group else title
+        if len(members) == 1:
+            heading += "\n" + members[0].title
+        fig.suptitle(heading)
+        out.append(fig)
+    return out
+
+
+def save(fig, path: Path, dpi: int = 120) -> Path:
+    """Write ``fig`` to the PNG ``path`` (deterministic bytes); return ``path``."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fig.savefig(path, dpi=dpi, metadata={"Software": None})
+    return path

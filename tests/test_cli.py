@@ -1,0 +1,189 @@
+"""The command line as a user meets it: regeneration from nothing, --check by
+name, --version, --help, progress on stderr only, the accuracy verdict, list."""
+from __future__ import annotations
+
+import importlib.util
+import json
+import re
+import shutil
+import sys
+from importlib import metadata
+from pathlib import Path
+
+import pytest
+
+from crane_sym import codegen, generate, progress, reference, registry
+from crane_sym.cli import EXAMPLES, main, parser
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+@pytest.fixture(scope="module")
+def files() -> dict[str, str]:
+    """Everything `crane-sym generate` writes (rendered once for the module)."""
+    return generate.all_files()
+
+
+def _terminal(monkeypatch) -> None:
+    """stderr (pytest's capture, active only inside the test body) pretends to
+    be a terminal."""
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+
+
+# --- 3. Regeneration -----------------------------------------------------------
+
+def test_generate_writes_an_empty_folder_in_full(tmp_path, files, capsys, monkeypatch):
+    _terminal(monkeypatch)
+    out = tmp_path / "generated"                 # does not exist yet
+    assert main(["generate", "--out", str(out)]) == 0
+    captured = capsys.readouterr()
+    assert sorted(p.name for p in out.iterdir()) == sorted(files)
+    assert all((out / n).read_text(encoding="utf-8") == t for n, t in files.items())
+    assert f"wrote {out / '__init__.py'}" in captured.out
+    # progress went to stderr, per derivation and per scene
+    assert "printing travel_braking.py" in captured.err
+    assert "specializing scene overhead_crane_50t" in captured.err
+    assert "wrote" not in captured.err and "printing" not in captured.out
+    assert main(["generate", "--check", "--out", str(out)]) == 0
+
+
+def test_default_directory_is_found_without_the_package(monkeypatch):
+    """No generated/__init__.py (or no generated/ at all): the clone's folder."""
+    assert codegen.default_directory() == ROOT / "generated"
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name: None)
+    assert codegen.default_directory() == ROOT / "generated"
+
+
+def _spoil(folder: Path, how: str) -> str:
+    """Make ``folder`` (a fresh copy of generated/) wrong in one way; return the
+    file name that --check must name."""
+    if how == "missing":
+        (folder / "__init__.py").unlink()
+        return "__init__.py"
+    if how == "stale":
+        with open(folder / "hoist_startup.py", "a", encoding="utf-8") as f:
+            f.write("# edited by hand\n")
+        return "hoist_startup.py"
+    (folder / "old_paper.py").write_text("x = 1\n", encoding="utf-8")
+    return "old_paper.py"
+
+
+@pytest.mark.parametrize("how", ["missing", "stale", "stray"])
+def test_check_names_missing_stale_and_stray_files(how, tmp_path, files, monkeypatch, capsys):
+    folder = tmp_path / "generated"
+    codegen.write(files, folder)
+    (folder / "__pycache__").mkdir()             # not a stray: not a .py file
+    name = _spoil(folder, how)
+    monkeypatch.setattr(generate, "all_files", lambda: files)
+    assert main(["generate", "--check", "--out", str(folder)]) == 1
+    captured = capsys.readouterr()
+    assert captured.out.splitlines() == [f"{how}: {folder / name} " + {
+        "missing": "is not there",
+        "stale": "differs from what the derivations produce",
+        "stray": "is not produced by any derivation or scene"}[how]]
+    counts = {k: int(n) for n, k in re.findall(r"(\d+) (missing|stale|stray)", captured.err)}
+    assert counts == {k: int(k == how) for k in ("missing", "stale", "stray")}
+    found = codegen.compare(files, folder)
+    assert not found.ok and codegen.stale(files, folder) == ([] if how == "stray" else [name])
+
+
+def test_shipped_generated_folder_is_fresh_and_has_no_stray_file(files):
+    assert codegen.compare(files, codegen.default_directory()).ok
+
+
+# --- 7. The command line ---------------------------------------------------------
+
+def test_version_comes_from_the_package_metadata(capsys):
+    with pytest.raises(SystemExit) as done:
+        main(["--version"])
+    assert done.value.code == 0
+    assert capsys.readouterr().out.strip() == f"crane-sym {metadata.version('crane_sym')}"
+
+
+def _help(argv: list[str], capsys) -> str:
+    with pytest.raises(SystemExit):
+        main(argv + ["--help"])
+    return capsys.readouterr().out
+
+
+def test_help_is_plain_text_with_an_example_per_command(capsys):
+    top = _help([], capsys)
+    assert "``" not in top and "crane_sym:" not in top
+    commands = parser()._subparsers._group_actions[0].choices
+    assert set(commands) == set(EXAMPLES)
+    for name in commands:
+        text = _help([name], capsys)
+        assert "``" not in text, name
+        example = text.split("example", 1)[1]
+        assert f"crane-sym {name}" in example, name
+
+
+def test_list_shows_authors_and_title_not_the_file(capsys):
+    assert main(["list"]) == 0
+    out = capsys.readouterr().out
+    assert "Yuriy Chovnyuk, Mykhaylo Dykteruk, Svetlana Komotskaya" in out
+    assert "M.P. Martyntsiv, O.M. Udovytskyi, B.V. Sologub" in out
+    assert ".txt" not in out
+    for i in registry.ids():
+        assert registry.module(i).TITLE in out
+    assert main(["list", "--format", "json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [r["authors"] for r in rows] == [list(registry.module(i).AUTHORS)
+                                            for i in registry.ids()]
+    assert all(r["authors"] and all(a.isascii() for a in r["authors"]) for r in rows)
+
+
+@pytest.mark.parametrize("terminal, argv", [
+    (False, ["audit", "000", "--format", "json"]),
+    (True, ["audit", "000", "--format", "json", "--quiet"]),
+    (True, ["-q", "audit", "000", "--format", "json"])])
+def test_progress_is_silent_off_a_terminal_and_with_quiet(terminal, argv, capsys,
+                                                          monkeypatch):
+    if terminal:                                # --quiet wins over a terminal
+        _terminal(monkeypatch)
+    assert sys.stderr.isatty() == terminal
+    assert main(argv) == 0
+    captured = capsys.readouterr()
+    assert captured.err == ""
+    assert len(json.loads(captured.out)) == len(registry.get("travel_braking").published)
+
+
+def test_progress_goes_to_stderr_on_a_terminal(capsys, monkeypatch):
+    _terminal(monkeypatch)
+    assert main(["audit", "000", "--format", "json"]) == 0
+    captured = capsys.readouterr()
+    assert "building travel_braking" in captured.err
+    assert "auditing travel_braking (16 printed formulas)" in captured.err
+    assert "checking printed formula (14)" in captured.err
+    json.loads(captured.out)                     # stdout is still clean JSON
+
+
+def test_progress_reports_each_step_of_a_build(capsys):
+    """A derivation under construction reports each step it adds."""
+    from crane_sym.derivations import travel_braking
+    with progress.reporting(progress.Progress(True)):
+        travel_braking.build()
+    err = capsys.readouterr().err
+    assert "travel_braking: step (14) done" in err and "step (1) done" in err
+    travel_braking.build()                       # no reporter installed: silent
+    assert capsys.readouterr().err == ""
+
+
+def _fake_accuracy(excess: float):
+    def fake(out, function, case, columns, tolerance=1e-15):
+        return reference.AccuracyRow(out.name, case, 3, excess * 1e-15, {}, 1e-16, excess)
+    return fake
+
+
+@pytest.mark.parametrize("excess, code", [(0.5, 0), (1.0, 0), (1.01, 1), (float("nan"), 1)])
+def test_accuracy_ends_with_a_verdict_and_its_exit_code(excess, code, capsys, monkeypatch):
+    monkeypatch.setattr(reference, "accuracy", _fake_accuracy(excess))
+    assert main(["accuracy", "000"]) == code
+    last = capsys.readouterr().out.splitlines()[-1]
+    pairs = len(registry.get("travel_braking").outputs) * \
+        len(registry.module("travel_braking").hard_cases())
+    if code:
+        assert last.startswith(f"FAIL: {pairs} of {pairs} function/case pairs over target: ")
+        assert "elastic_force (" in last
+    else:
+        assert last == f"PASS: all {pairs} function/case pairs within target"

@@ -1,0 +1,151 @@
+"""Scene plots as a reader sees them: every shipped scene's figures hold at most
+four panels, one title each, legends outside the data area, labels in
+mathtext that render (Cyrillic included) without a missing glyph."""
+from __future__ import annotations
+
+import re
+import warnings
+
+import numpy as np
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+from crane_sym import plots
+from crane_sym.scene_run import run_scene
+from crane_sym.scenes import Panel, list_scenes
+
+
+@pytest.fixture(scope="module")
+def written(tmp_path_factory):
+    """scene -> [(figure, path)] of every shipped scene, as `crane-sym run` writes them."""
+    out, seen = {}, []
+    save = plots.save
+
+    def keep(fig, path):
+        seen.append((fig, path))
+        return save(fig, path)
+
+    folder = tmp_path_factory.mktemp("scenes")
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(plots, "save", keep)
+        for name in list_scenes():
+            seen.clear()
+            _, paths = run_scene(name, folder)
+            assert paths == [p for _, p in seen]
+            out[name] = list(seen)
+    return out
+
+
+def _draw(fig):
+    """Render ``fig``; a glyph missing from the font is an error."""
+    canvas = FigureCanvasAgg(fig)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        canvas.draw()
+    return canvas.get_renderer()
+
+
+@pytest.mark.parametrize("name", list_scenes())
+def test_each_figure_has_at_most_four_panels_and_one_title(name, written):
+    for fig, path in written[name]:
+        axes = fig.get_axes()
+        assert 1 <= len(axes) <= plots.MAX_PANELS, path
+        # one figure title (the suptitle), no other text on the figure
+        assert fig.get_suptitle() and [t.get_text() for t in fig.texts] == [fig.get_suptitle()]
+        titles = [ax.get_title() for ax in axes]
+        if len(axes) == 1:
+            assert titles == [""], path          # its caption is in the figure's title
+        else:
+            assert all(titles) and len(set(titles)) == len(titles), path
+        width, height = fig.get_size_inches() * 120
+        assert height <= 1600 and width <= 1300, path
+
+
+@pytest.mark.parametrize("name", list_scenes())
+def test_legends_lie_outside_the_data_and_inside_the_figure(name, written):
+    for fig, path in written[name]:
+        renderer = _draw(fig)
+        page = fig.bbox
+        for ax in fig.get_axes():
+            legend = ax.get_legend()
+            lines = [ln for ln in ax.get_lines() if not ln.get_label().startswith("_")]
+            if len(lines) < 2:
+                continue
+            assert legend is not None, path
+            box, data = legend.get_window_extent(renderer), ax.get_window_extent(renderer)
+            assert not box.overlaps(data), (path, ax.get_title())
+            assert page.x0 <= box.x0 and box.x1 <= page.x1, path       # not cut off
+            assert page.y0 <= box.y0 and box.y1 <= page.y1, path
+            for line in lines:                   # no data point under the legend
+                xy = ax.transData.transform(line.get_xydata())
+                inside = ((xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1)
+                          & (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1))
+                assert not inside.any(), (path, line.get_label())
+
+
+def _outside_math(text: str) -> str:
+    return re.sub(r"\$[^$]*\$", "", text)
+
+
+@pytest.mark.parametrize("name", list_scenes())
+def test_symbols_are_mathtext(name, written):
+    """Subscripts and Cyrillic qualifiers sit inside $...$ (mathtext), never
+    as plain text such as K_дин or x_ст."""
+    for fig, path in written[name]:
+        for ax in fig.get_axes():
+            texts = [ax.get_xlabel(), ax.get_ylabel(), ax.get_title()]
+            texts += [ln.get_label() for ln in ax.get_lines()
+                      if not ln.get_label().startswith("_")]
+            for text in texts:
+                plain = _outside_math(text)
+                assert "_" not in plain and not re.search("[а-яА-Я]", plain), (path, text)
+
+
+def test_drive_laws_are_split_by_lifting_case():
+    """Nine panels become three figures: pick-up, from weight, Table 1."""
+    def panel(group: str, k: int) -> Panel:
+        return Panel(f"p{k}", "y", [("a", np.arange(3.0), np.arange(3.0))], group=group)
+    nine = [panel("pick-up", k) for k in range(4)] + [panel("weight", k) for k in range(4)]
+    nine.append(panel("", 8))
+    assert [(g, len(ps)) for g, ps in plots.layout(nine)] == [("pick-up", 4), ("weight", 4),
+                                                              ("", 1)]
+    assert [len(ps) for _, ps in plots.layout([panel("", k) for k in range(9)])] == [3, 3, 3]
+    assert [len(ps) for _, ps in plots.layout([panel("", k) for k in range(5)])] == [3, 2]
+    titles = [f.get_suptitle() for f in plots.figures(nine, "Scene")]
+    assert titles == ["Scene: pick-up", "Scene: weight", "Scene\np8"]
+
+
+def test_cyrillic_inside_mathtext_renders():
+    fig = plots.figures([Panel(r"$K_\mathrm{дин}$", r"$x_\mathrm{ст}$",
+                               [(r"$K_\mathrm{дин}(t)$", [0, 1], [0, 1]),
+                                (r"$x/x_\mathrm{ст}$", [0, 1], [1, 0])])], "title")[0]
+    _draw(fig)                                   # raises on a missing glyph
+    fig = plots.figures([Panel("t", "\u0b85", [("y", [0, 1], [0, 1])])], "x")[0]
+    with pytest.raises(UserWarning, match="missing from"):
+        _draw(fig)                               # the check can fail: a Tamil letter
+
+
+def test_bench_plot_splits_into_figures_of_at_most_four_panels(tmp_path, monkeypatch):
+    from crane_sym.bench_report import plot
+    from crane_sym.bench_rows import GENERATED, INTEGRATOR, BenchRow
+    rows = [BenchRow("demo", f"f{k}", method, 1e-3 * (1 + j), 100, err, 1.0, err, kind=kind)
+            for k in range(6)
+            for j, (method, err, kind) in enumerate([("generated", 1e-16, GENERATED),
+                                                     ("RK45 rtol=1e-3 [x]", 1e-3, INTEGRATOR),
+                                                     ("RK45 rtol=1e-9 [x]", 1e-9, INTEGRATOR)])]
+    made = []
+    save = plots.save
+    monkeypatch.setattr(plots, "save", lambda fig, path, dpi=120: made.append(fig)
+                        or save(fig, path, dpi))
+    paths = plot(rows, tmp_path / "bench_demo.png", "demo")
+    assert paths == [tmp_path / "bench_demo_1.png", tmp_path / "bench_demo_2.png"]
+    assert all(p.read_bytes()[:4] == b"\x89PNG" for p in paths)
+    assert [sum(ax.get_visible() for ax in f.get_axes()) for f in made] == [3, 3]
+    assert [f.get_suptitle() for f in made] == ["demo, 1 of 2", "demo, 2 of 2"]
+    for fig in made:                             # the legend lies below the panels
+        renderer = _draw(fig)
+        (legend,) = fig.legends
+        box = legend.get_window_extent(renderer)
+        assert not any(box.overlaps(ax.get_window_extent(renderer))
+                       for ax in fig.get_axes() if ax.get_visible())
+    assert plot(rows[:12], tmp_path / "bench_four.png", "four") == [tmp_path / "bench_four.png"]
