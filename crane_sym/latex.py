@@ -8,10 +8,28 @@ and ``c·(x2 − x1)`` as ``- c (x_1 - x_2)``; a reader of a paper expects ``x``
 """
 from __future__ import annotations
 
+import re
+
 import sympy as sp
 from sympy.printing.latex import LatexPrinter
 
-__all__ = ["latex"]
+__all__ = ["cyrillic_as_text", "latex"]
+
+_CYRILLIC = re.compile(r"[А-Яа-яЁёІіЇїЄєҐґ]+")
+_TEXT = re.compile(r"\\(?:text|mathrm)\{[^{}]*\}")
+
+
+def cyrillic_as_text(tex: str) -> str:
+    """``tex`` with each Cyrillic run outside ``\\text{}``/``\\mathrm{}`` wrapped
+    in ``\\text{}``, so that math renderers set it upright as a word."""
+    out, last = [], 0
+    for m in _TEXT.finditer(tex):
+        out.append(_CYRILLIC.sub(lambda c: rf"\text{{{c.group(0)}}}", tex[last:m.start()]))
+        out.append(m.group(0))
+        last = m.end()
+    out.append(_CYRILLIC.sub(lambda c: rf"\text{{{c.group(0)}}}", tex[last:]))
+    return "".join(out)
+
 
 _DOTS = {1: r"\dot", 2: r"\ddot", 3: r"\dddot", 4: r"\ddddot"}
 
@@ -24,7 +42,8 @@ def _of_time_only(f: sp.Basic) -> bool:
 class _MechanicsPrinter(LatexPrinter):
     def _print_Function(self, expr, exp=None):  # noqa: N802 (SymPy's naming)
         if _of_time_only(expr):
-            name = self._print(sp.Symbol(expr.func.__name__))
+            name = self._settings["symbol_names"].get(expr) or self._print(
+                sp.Symbol(expr.func.__name__))
             return f"{name}^{{{exp}}}" if exp else name
         return super()._print_Function(expr, exp)
 
@@ -58,7 +77,8 @@ class _MechanicsPrinter(LatexPrinter):
         f = expr.expr
         if _of_time_only(f) and all(v == f.args[0] for v, _ in expr.variable_count):
             n = sum(c for _, c in expr.variable_count)
-            name = self._print(sp.Symbol(f.func.__name__))
+            name = self._settings["symbol_names"].get(f) or self._print(
+                sp.Symbol(f.func.__name__))
             if n in _DOTS:
                 base, _, sub = name.partition("_")
                 return f"{_DOTS[n]}{{{base}}}" + (f"_{sub}" if sub else "")
@@ -67,5 +87,6 @@ class _MechanicsPrinter(LatexPrinter):
 
 
 def latex(expr: sp.Basic, **settings) -> str:
-    """LaTeX of ``expr`` with x(t) printed x and its time derivatives dotted."""
-    return _MechanicsPrinter(settings).doprint(expr)
+    """LaTeX of ``expr`` with x(t) printed x, its time derivatives dotted, and
+    Cyrillic (the papers' subscripts) set as text."""
+    return cyrillic_as_text(_MechanicsPrinter(settings).doprint(expr))

@@ -16,32 +16,16 @@ import sympy as sp
 from .audit import (CONFIRMED, CONFIRMED_WITH_CONVENTION, DIMENSION_ERROR, DISCREPANCY,
                     NOT_CHECKABLE, REMARK, RESTATED, AuditRecord, audit)
 from .derivation import Derivation, Step
-from .latex import latex
+from .latex import cyrillic_as_text, latex
 from .symbols import COORDINATE, DEFINED, PARAMETER, TIME
 
 #: Roles whose symbols are always listed; DEFINED ones only when a step uses them.
 _LISTED_ROLES = (PARAMETER, TIME, COORDINATE)
 
 
-_CYRILLIC = re.compile(r"[А-Яа-яЁёІіЇїЄєҐґ]+")
-_TEXT = re.compile(r"\\(?:text|mathrm)\{[^{}]*\}")
-
-
-def cyrillic_as_text(tex: str) -> str:
-    """``tex`` with each Cyrillic run outside ``\\text{}``/``\\mathrm{}`` wrapped
-    in ``\\text{}``, so that math renderers set it upright as a word."""
-    out, last = [], 0
-    for m in _TEXT.finditer(tex):
-        out.append(_CYRILLIC.sub(lambda c: rf"\text{{{c.group(0)}}}", tex[last:m.start()]))
-        out.append(m.group(0))
-        last = m.end()
-    out.append(_CYRILLIC.sub(lambda c: rf"\text{{{c.group(0)}}}", tex[last:]))
-    return "".join(out)
-
-
 def _tex(expr: sp.Basic, latex_names: dict) -> str:
     """LaTeX of ``expr`` as a mechanics text writes it, with the paper's names."""
-    return cyrillic_as_text(latex(expr, symbol_names=latex_names))
+    return latex(expr, symbol_names=latex_names)
 
 
 def _statement_tex(statement: sp.Basic, latex_names: dict) -> str:
@@ -96,7 +80,10 @@ def _symbols(d: Derivation, latex_names: dict) -> str:
         used = entry.role in _LISTED_ROLES or (
             entry.role == DEFINED and any(s.statement.has(entry.expr) for s in d.steps))
         if used:
-            rows.append(f"| {_math_cell(_tex(entry.expr, latex_names))} "
+            tex = _tex(entry.expr, latex_names)
+            if isinstance(entry.expr, sp.core.function.AppliedUndef):
+                tex += r"(" + ", ".join(latex(a) for a in entry.expr.args) + ")"
+            rows.append(f"| {_math_cell(tex)} "
                         f"| {_cell(entry.description)} | {_cell(entry.unit)} |")
     return "\n".join(rows)
 
@@ -113,26 +100,30 @@ _SAYS = {
 
 
 def _verdict_line(record: AuditRecord) -> str:
-    """The verdict in words: what it says, what decided it, what it rests on, why."""
+    """The verdict in words: what it says, what decided it, what it rests on, and
+    for a finding its cause, the reading, the difference and the offending terms."""
     rests = record.basis + (f" ({record.basis_note})" if record.basis_note else "")
-    parts = [f"Verdict: **{record.verdict}** — {_SAYS[record.verdict]} "
+    lines = [f"Verdict: **{record.verdict}** — {_SAYS[record.verdict]} "
              f"(decided by the {record.method} check; rests on: {rests})."]
     reading = record.reading
     if reading is not None:
-        parts.append(f"Read with the {reading.reading} “{reading.note}”.")
+        lines.append(f"- Read with the {reading.reading}: {reading.note}.")
     if record.cause:
-        parts.append(f"Cause `{record.cause.id}`: {record.cause.sentence}")
+        lines.append(f"- Cause `{record.cause.id}`: {record.cause.sentence}")
     literal = record.literal
-    if record.verdict not in (CONFIRMED, RESTATED) and literal is not None \
-            and reading is None:
-        parts.append(f"Derived: ${cyrillic_as_text(literal.derived)}$.")
-        if literal.difference:
-            parts.append(f"Printed − derived: ${cyrillic_as_text(literal.difference)}$.")
-        dim = next((c for c in literal.checks
-                    if c.method == "dimension" and c.status == "fail"), None)
-        if dim is not None:
-            parts.append(f"Dimensions: {cyrillic_as_text(dim.detail)}.")
-    return " ".join(parts)
+    if record.verdict in (CONFIRMED, RESTATED) or literal is None or reading is not None:
+        return "\n".join(lines)
+    dim = next((c for c in literal.checks
+                if c.method == "dimension" and c.status == "fail"), None)
+    if dim is not None:
+        lines.append(f"- Dimensions: {dim.detail}.")
+    elif literal.difference and len(literal.difference) <= _SHORT:
+        lines.append(f"- Printed − derived: ${literal.difference}$.")
+    return "\n".join(lines)
+
+
+#: A difference longer than this (LaTeX characters) is left to ``crane-sym audit``.
+_SHORT = 300
 
 
 def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord]) -> list[str]:

@@ -159,7 +159,7 @@ def test_every_verdict(records):
 
 def test_discrepancies_name_the_derived_form(records):
     assert "Derived form" in records["(8)"].detail
-    assert "Q_{at0}" in records["(27)"].detail and "m/s" in records["(27)"].detail
+    assert "Q(0)" in records["(27)"].detail and "m/s" in records["(27)"].detail
     assert "left|" in records["(53)"].detail          # |sin(Ωθ/2)| in the derived form
     # (54): the one term that differs, and the point to recompute it at.
     assert records["(54)"].literal.difference == r"\frac{\ddot{Q}}{m_{2}}"

@@ -57,7 +57,7 @@ def build() -> Derivation:
     d = Derivation(id=ID, paper=PAPER, title=TITLE,
                    citation="M.P. Martyntsiv, O.M. Udovytskyi, B.V. Sologub, Lviv, 2010",
                    model=MODEL, symbols=SymbolTable(MODEL_SYMBOLS + pub.PRINT_SYMBOLS),
-                   latex_names=LATEX_NAMES)
+                   latex_names=LATEX_NAMES | pub.PRINT_LATEX_NAMES)
     e = model_energies()
     eqs = steps.lagrange(d, e)                # (1)
     steps.kinetic_energy(d, e)                # (2)–(7)

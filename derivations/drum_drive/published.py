@@ -58,6 +58,11 @@ yp = [sp.Function(f"y{i}")(t) for i in (1, 2, 3, 4)]
 zp = [sp.Function(f"z{i}")(t) for i in (1, 2, 3, 4)]
 
 
+#: Names that keep the print's symbols apart from the model's of the same letter.
+PRINT_LATEX_NAMES = {omega_f: r"\omega_{(12)}", a_ph: r"a_{(14)}", y_h: r"y_\mathrm{h}",
+                     y_p: r"y_\mathrm{p}"}
+
+
 def _entries(role, sign, rows):
     return [PhysicalSymbol(row[0], row[1], row[2], row[3], role, sign,
                            row[4] if len(row) > 4 else (0.5, 2.0)) for row in rows]

@@ -6,9 +6,10 @@ import sympy as sp
 
 from crane_sym.derivation import Derivation
 from crane_sym.extrema import maximum_on_interval
+from crane_sym.latex import latex
 from crane_sym.variational import euler_poisson
 
-from .model import (K_OPT, PRINTED_LAWS, C, F_ref, J, Omega, P, Q, Q_0, a, a_at0,
+from .model import (K_OPT, LATEX_NAMES, PRINTED_LAWS, C, F_ref, J, Omega, P, Q, Q_0, a, a_at0,
                     dQdot_tau0, dk_tau0, g, k3_max, k4_max, k_d, kt_d, m1, m2, t, t3_star,
                     t4_star, t_n, tau0, v0, x1, x2)
 from .steps import rhs
@@ -46,7 +47,8 @@ def optimum(d: Derivation, eq1: sp.Eq, eq2: sp.Eq) -> None:
     factor, core = sp.factor_terms(ep).as_coeff_Mul()
     scale, body = core.as_independent(x2, Q, as_Add=False)
     d.add("(59)", sp.Eq(sp.expand(body), 0),
-          f"Euler–Poisson equation of (58) for x2, divided by {sp.sstr(factor * scale)}.")
+          "Euler–Poisson equation of (58) for x2, divided by the constant factor "
+          f"${latex(factor * scale, symbol_names=LATEX_NAMES)}$.")
     q_ramp = rhs(d, "(28), Q(t)")
     q_held = rhs(d, "(28), Q(t), t ≥ τ_0")
     if any(sp.diff(p, t, 2) != 0 for p in (q_ramp, q_held, m2 * g)):

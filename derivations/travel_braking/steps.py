@@ -10,6 +10,7 @@ import sympy as sp
 
 from crane_sym.derivation import Derivation
 from crane_sym.elimination import RelativeEquation, relative_coordinate
+from crane_sym.latex import latex
 from crane_sym.lagrange import lagrange_equations
 from crane_sym.odes import ODESolution, solve_constant_coefficient
 
@@ -30,7 +31,7 @@ def energies(d: Derivation) -> tuple[sp.Expr, sp.Expr, dict]:
           "Lagrange's equations need T and Π of the model.", "Energies")
     d.add("potential energy", sp.Eq(V_, V),
           "Strain energy of the link, ½·c·(stretch)².")
-    d.add("virtual work", sp.Eq(dA, sum(Q * sp.Symbol(rf"\delta {sp.latex(q.func(t))}")
+    d.add("virtual work", sp.Eq(dA, sum(Q * sp.Symbol(rf"\delta {latex(q.func(t))}")
                                         for q, Q in forces.items())),
           "P_t acts on m1 and W on m2, both against +x.",
           "The generalized forces are the coefficients of the virtual displacements.")
