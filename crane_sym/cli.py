@@ -24,7 +24,8 @@ EXAMPLES = {
     "list": "crane-sym list\n  crane-sym list --format json",
     "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
              "--format json --quiet > verdicts.json",
-    "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md",
+    "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md\n"
+                   "  crane-sym walkthrough 002 --format ipynb -o hoist_startup.ipynb",
     "generate": "crane-sym generate\n  crane-sym generate --check\n"
                 "  crane-sym generate --scene hoist_user_drive_law --out out/",
     "accuracy": "crane-sym accuracy 002",
@@ -92,11 +93,13 @@ def cmd_audit(args: argparse.Namespace) -> int:
 
 
 def cmd_walkthrough(args: argparse.Namespace) -> int:
-    """The derivation step by step, as Markdown."""
+    """The derivation step by step, as Markdown or as a Jupyter notebook."""
+    from .notebook import notebook
     from .walkthrough import walkthrough
     name = registry.resolve(args.id)
+    make = notebook if args.format == "ipynb" else walkthrough
     with progress.reporting(_progress(args)) as say, say.task(f"walkthrough of {name}"):
-        text = walkthrough(name)
+        text = make(name)
     if args.output:
         Path(args.output).write_text(text, encoding="utf-8")
         print(f"wrote {args.output}")
@@ -305,9 +308,11 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("ids", nargs="*", help=ids_help)
     p.add_argument("--format", choices=("table", "json", "markdown"), default="table")
     p.add_argument("--profile", action="store_true", help="time per derivation on stderr")
-    p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown",
+    p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown or a notebook",
                     cmd_walkthrough, True)
     p.add_argument("id")
+    p.add_argument("--format", choices=("markdown", "ipynb"), default="markdown",
+                   help="ipynb: a Jupyter notebook with a code cell per step")
     p.add_argument("-o", "--output", help="write to this file instead of stdout")
     p = _subcommand(sub, "generate", "write generated/ (or check that it is up to date)",
                     cmd_generate, True)

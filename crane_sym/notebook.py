@@ -1,0 +1,141 @@
+"""A derivation as a runnable Jupyter notebook: the walkthrough's text in
+Markdown cells, and a code cell per step that shows the step crane_sym derived.
+
+The first code cell rebuilds the whole derivation from the physics
+(``registry.get``); each step's cell then shows that step's relation and,
+with the values of the parameter cell (SI units), the same relation in
+numbers, so a student can change a value and rerun. The notebook is written as
+nbformat 4 JSON by hand: writing one needs no Jupyter package.
+"""
+from __future__ import annotations
+
+import json
+from typing import Any
+
+import sympy as sp
+
+from .audit import AuditRecord, audit
+from .derivation import Derivation, Step
+from .latex import latex
+from .symbols import PARAMETER
+from .walkthrough import _display, _model, _verdict_line
+
+__all__ = ["notebook", "render_notebook", "show"]
+
+
+def show(step: Step, values: dict[str, float] | None = None,
+         names: dict | None = None) -> sp.Basic:
+    """Display a step's relation (and, with ``values``, its numbers); return it.
+
+    Parameters
+    ----------
+    step : Step
+        A step of a built derivation.
+    values : dict of str to float, optional
+        Parameter values in SI units, by symbol name; symbols without a value
+        stay symbols.
+    names : dict, optional
+        The paper's LaTeX names of symbols.
+    """
+    from IPython.display import Math, display  # only inside a notebook
+
+    statement = step.statement
+    display(Math(latex(statement, symbol_names=dict(names or {}))))
+    if values:
+        subs = {s: sp.Float(values[s.name]) for s in statement.free_symbols
+                if s.name in values}
+        if subs:
+            display(Math(latex(statement.xreplace(subs), symbol_names=dict(names or {}))))
+    return statement
+
+
+def _id(k: int) -> str:
+    return f"cell-{k:04d}"
+
+
+def _markdown(k: int, text: str) -> dict[str, Any]:
+    return {"cell_type": "markdown", "id": _id(k), "metadata": {},
+            "source": text.splitlines(keepends=True)}
+
+
+def _code(k: int, source: str) -> dict[str, Any]:
+    return {"cell_type": "code", "execution_count": None, "id": _id(k), "metadata": {},
+            "outputs": [], "source": source.splitlines(keepends=True)}
+
+
+def _scene_values(d: Derivation) -> tuple[str, dict[str, float]]:
+    """The first shipped scene of the paper and its SI values (none: empty)."""
+    from .scenes import load_scene, scenes_directory
+
+    files = sorted(scenes_directory(d.id).glob("*.toml"))
+    if not files:
+        return "", {}
+    scene = load_scene(files[0])
+    return scene.name, dict(scene.parameters)
+
+
+def _parameters(d: Derivation) -> str:
+    """The parameter cell: the paper's first scene, else the middle of each
+    parameter's sampling range."""
+    scene, given = _scene_values(d)
+    lines = ["# Parameter values in SI units, by symbol name: change one and rerun the",
+             "# cells below to see each step in numbers. "
+             + (f"Values from the scene {scene!r}; the others at the middle of their "
+                "physical range." if scene else "Each at the middle of its physical range."),
+             "values = {"]
+    for e in d.symbols.with_role(PARAMETER):
+        if isinstance(e.expr, sp.Symbol):
+            lo, hi = e.sample_range
+            value = given.get(e.expr.name, float(sp.sqrt(sp.Float(lo) * sp.Float(hi))))
+            what = " ".join(e.description.split())
+            lines.append(f"    {e.expr.name!r}: {value:.6g},   # {e.unit}: {what}")
+    lines.append("}")
+    return "\n".join(lines)
+
+
+def render_notebook(d: Derivation, records: list[AuditRecord] | None = None) -> str:
+    """The notebook of a built derivation as nbformat 4 JSON text.
+
+    Each step's code cell is tagged in its metadata with the step's label
+    (``crane_sym_step``), so a test can compare its result with the step.
+    """
+    by_label = {r.label: r for r in records or []}
+    cells: list[dict[str, Any]] = []
+
+    def add(cell_maker, text: str) -> dict[str, Any]:
+        cell = cell_maker(len(cells), text)
+        cells.append(cell)
+        return cell
+
+    add(_markdown, f"# {d.title}\n\nPaper: `{d.paper}` — {d.citation}\n\n"
+        f"## The model\n\n{_model(d.model)}")
+    add(_code, "from crane_sym import registry\nfrom crane_sym.notebook import show\n\n"
+        f"d = registry.get({d.id!r})   # rebuilds every step from the physics\n"
+        "names = d.latex_names")
+    add(_code, _parameters(d))
+    for k, step in enumerate(d.steps, start=1):
+        text = [f"### Step {k} — {step.label}" + (f" · {step.title}" if step.title else ""),
+                f"**What was done.** {step.how}"]
+        if step.why:
+            text.append(f"**Why.** {step.why}")
+        for f in d.published:
+            if f.target == step.label:
+                text += [f"**As printed in the paper** ({f.label.strip('()')}):",
+                         _display(f.latex)]
+                if f.label in by_label:
+                    text.append(_verdict_line(by_label[f.label]))
+        add(_markdown, "\n\n".join(text))
+        cell = add(_code, f"show(d.step({step.label!r}), values, names)")
+        cell["metadata"]["crane_sym_step"] = step.label
+    notebook = {"cells": cells, "metadata": {
+        "kernelspec": {"display_name": "Python 3", "language": "python", "name": "python3"},
+        "language_info": {"name": "python"}}, "nbformat": 4, "nbformat_minor": 5}
+    return json.dumps(notebook, indent=1, ensure_ascii=False) + "\n"
+
+
+def notebook(name: str) -> str:
+    """The notebook of a registered derivation, audited (see :func:`render_notebook`)."""
+    from . import registry
+
+    d = registry.get(registry.resolve(name))
+    return render_notebook(d, audit(d))
