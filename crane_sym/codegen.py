@@ -10,6 +10,7 @@ from __future__ import annotations
 import importlib.util
 import inspect
 import re
+import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Iterable, Sequence
@@ -264,6 +265,11 @@ def render_function(out: Output, table: SymbolTable,
         what = f"{e.description}, {e.unit}".replace('"', "'")
         lines.append(f"    {e.name:<{width}} = _checked({e.name!r}, {e.name}, "
                      f"{e.sign!r}, {what!r})")
+    if len(entries) > 1:
+        call = textwrap.wrap(", ".join(f"{e.name}={e.name}" for e in entries) + ")",
+                             width=84, break_long_words=False, break_on_hyphens=False)
+        lines.append("    _broadcast(" + call[0])
+        lines += [" " * 15 + rest for rest in call[1:]]
     # A scalar that CSE reduced to a bare name is inlined, not re-assigned.
     alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom}
     for sym, value in phases:

@@ -42,6 +42,17 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """ValueError naming the arguments whose shapes do not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) > 1:
+        try:
+            np.broadcast_shapes(*shapes.values())
+        except ValueError:
+            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
 def _two_sum(a, b):
     """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
     s = a + b
@@ -286,7 +297,7 @@ def _matrix(shape, elements):
 
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {
-    "_checked": (),
+    "_checked": (), "_broadcast": (),
     "_two_sum": (), "_quick_two_sum": (), "_two_product": (),
     "_diff_of_products": ("_two_product",),
     "_dd": (),

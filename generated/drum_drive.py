@@ -61,6 +61,17 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """ValueError naming the arguments whose shapes do not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) > 1:
+        try:
+            np.broadcast_shapes(*shapes.values())
+        except ValueError:
+            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
 def _matrix(shape, elements):
     """Row-major ``elements`` as an array of ``shape`` followed by the
     broadcast shape of the elements (a matrix per input point)."""
@@ -85,6 +96,7 @@ def branch_effective_mass(q, L):
     """
     q = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
+    _broadcast(q=q, L=L)
     return (1/3)*L*q
 
 
@@ -114,6 +126,7 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2):
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = I1 + I2
     x1 = C1*x0/I1
     x2 = C2*(I2 + I3)/I3
@@ -146,6 +159,7 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2):
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = C1*(I1 + I2)/I1
     x1 = C2*(I2 + I3)/I3
     return 0.7071067811865476*np.sqrt(x0 + x1 + np.sqrt(4*C1*C2 + (x0 - x1)**2))/np.sqrt(I2)
@@ -180,6 +194,7 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
     x2 = 4*C_t*C_z
@@ -216,6 +231,7 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
     x2 = 4*C_t*C_z
@@ -252,6 +268,7 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = D*F0
     return 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z))
 
@@ -276,6 +293,7 @@ def drum_torque(F1, F2, D):
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
+    _broadcast(F1=F1, F2=F2, D=D)
     return (1/2)*D*(F1 - F2)
 
 
@@ -302,6 +320,7 @@ def traction_margin(F1, F2, mu, alpha):
     F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1')
     alpha = _checked('alpha', alpha, 'positive', 'wrap angle of the element on the drum, rad')
+    _broadcast(F1=F1, F2=F2, mu=mu, alpha=alpha)
     return -5/4*F1/F2 + np.exp(alpha*mu)
 
 
@@ -322,6 +341,7 @@ def least_mu_alpha(F1, F2):
     """
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
+    _broadcast(F1=F1, F2=F2)
     return np.log((5/4)*F1/F2)
 
 
@@ -366,6 +386,8 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
     K3   = _checked('K3', K3, 'positive', 'constant K_3 of (21) (pretension at the load), N')
     K4   = _checked('K4', K4, 'positive', 'constant K_4 of (21) (pretension at the load), N')
     t_3  = _checked('t_3', t_3, 'positive', 'stop time t_3 of the transporter in (21), s')
+    _broadcast(t=t, F1_t=F1_t, F2_t=F2_t, F3_t=F3_t, F4_t=F4_t, K1=K1, K2=K2, K3=K3, K4=K4,
+               t_3=t_3)
     x0 = 3.141592653589793/t_3
     k1 = -K2
     k3 = -K4
@@ -479,6 +501,9 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     s8   = _checked('s8', s8, 'real', 'state 8: dφ3/dt, rad/s')
     s9   = _checked('s9', s9, 'real', 'state 9: dy/dt, m/s')
     s10  = _checked('s10', s10, 'real', 'state 10: dz/dt, m/s')
+    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
+               nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r, M0=M0, F0=F0, W=W,
+               s1=s1, s2=s2, s3=s3, s4=s4, s5=s5, s6=s6, s7=s7, s8=s8, s9=s9, s10=s10)
     x0 = C1*s2
     x1 = nu1*s7
     x2 = C2*s2
@@ -568,6 +593,8 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
+               nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r)
     x0 = 1/(I1)
     x1 = C1*x0
     x2 = nu1*x0
@@ -638,6 +665,7 @@ def mass_matrix(I1, I2, I3, m3, m_L, q, L, r):
     q   = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L   = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    _broadcast(I1=I1, I2=I2, I3=I3, m3=m3, m_L=m_L, q=q, L=L, r=r)
     x0 = L*q
     x1 = (2/3)*x0
     x2 = (1/3)*r*x0
@@ -673,6 +701,7 @@ def damping_matrix(nu1, nu2, nu_y, nu_z, nu_t, r):
     nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
     nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
     r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    _broadcast(nu1=nu1, nu2=nu2, nu_y=nu_y, nu_z=nu_z, nu_t=nu_t, r=r)
     x0 = -nu1
     x1 = -nu2
     x2 = nu_z*r
@@ -710,6 +739,7 @@ def stiffness_matrix(C1, C2, C_y, C_t, C_z, r):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    _broadcast(C1=C1, C2=C2, C_y=C_y, C_t=C_t, C_z=C_z, r=r)
     x0 = -C1
     x1 = -C2
     x2 = r**2
@@ -740,4 +770,5 @@ def generalized_forces(M0, F0, W):
     M0 = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
     F0 = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
     W  = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N')
+    _broadcast(M0=M0, F0=F0, W=W)
     return _matrix((5, 1), [M0, 0, 0, 2*F0, -W])

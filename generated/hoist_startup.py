@@ -70,6 +70,17 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """ValueError naming the arguments whose shapes do not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) > 1:
+        try:
+            np.broadcast_shapes(*shapes.values())
+        except ValueError:
+            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
 def _two_sum(a, b):
     """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
     s = a + b
@@ -472,6 +483,7 @@ def natural_frequency(m1, m2, C):
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
     m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
+    _broadcast(m1=m1, m2=m2, C=C)
     return np.sqrt(C)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
 
 
@@ -498,6 +510,7 @@ def pickup_contact_time(m2, g, C, v0):
     g  = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
     v0 = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
+    _broadcast(m2=m2, g=g, C=C, v0=v0)
     return g*m2/(C*v0)
 
 
@@ -518,6 +531,7 @@ def dynamic_coefficient_instant(t, Omega):
     """
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
+    _broadcast(t=t, Omega=Omega)
     k0 = (1/2)*Omega
     return 2*np.sin(k0*t)**2
 
@@ -542,6 +556,7 @@ def dynamic_coefficient_ramp(t, Omega, t_n):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, t_n=t_n)
     k0 = -1/(Omega*t_n)
     return k0*_sin_remainder(Omega*t, 1)
 
@@ -566,6 +581,7 @@ def dynamic_coefficient_pulse(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 2*np.sin((1/2)*x0)**2
     k1 = np.sin(x0)
@@ -589,6 +605,7 @@ def pulse_peak_factor(Omega, theta):
     """
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    _broadcast(Omega=Omega, theta=theta)
     return np.select([np.less(theta, 3.141592653589793/Omega),True], [2*np.sin((1/2)*Omega*theta),2], default=np.nan)
 
 
@@ -609,6 +626,7 @@ def pulse_peak_time(Omega, theta):
     """
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    _broadcast(Omega=Omega, theta=theta)
     x0 = 1/(Omega)
     x1 = 3.141592653589793*x0
     return np.select([np.less(theta, x1),True], [(1/2)*theta + 1.5707963267948966*x0,x1], default=np.nan)
@@ -634,6 +652,7 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 1/(Omega*theta)
     k1 = _entire_1(x0)
@@ -659,6 +678,7 @@ def ramp_hold_peak_factor(Omega, theta):
     """
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    _broadcast(Omega=Omega, theta=theta)
     return 1 + 2*abs(np.sin((1/2)*Omega*theta))/(Omega*theta)
 
 
@@ -697,6 +717,7 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
     x2 = 1/(m1*v0 + m2*v0 + x1)
@@ -753,6 +774,7 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
     x2 = 1/(m1*v0 + m2*v0 + x1)
@@ -807,6 +829,7 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(Omega)
     x1 = 1/(m2)
     x2 = m1*x1
@@ -862,6 +885,7 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(m2)
     x1 = m1*x0
     x2 = Omega*tau_0
@@ -913,6 +937,7 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
     x2 = v0*x1
@@ -956,6 +981,7 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
     x2 = v0*x1
@@ -1000,6 +1026,7 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
     x2 = Omega*t_n
@@ -1044,6 +1071,7 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
     x2 = Omega*t_n
@@ -1073,6 +1101,7 @@ def optimal_coefficient_from_weight_a1(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, t_n=t_n)
     return 1
 
 
@@ -1102,6 +1131,7 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = g*t_n
     k1 = tau_0*v0
     k2 = 1/(tau_0*v0)
@@ -1125,6 +1155,7 @@ def optimal_coefficient_from_weight_a2(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -1/t_n
     return k1*(k0 + t)
@@ -1156,6 +1187,7 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
     x1 = 1/(t_n)
     k0 = g*t_n**2
@@ -1181,6 +1213,7 @@ def optimal_coefficient_from_weight_a3(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = 12/t_n**3
     return k1*t*(k0 + t)**2
@@ -1212,6 +1245,7 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
     x1 = t_n**(-3.0)
     k1 = 12*tau_0*v0
@@ -1238,6 +1272,7 @@ def optimal_coefficient_from_weight_a4(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -60/t_n**5
     return k1*t**2*(k0 + t)**3
@@ -1269,6 +1304,7 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
     x1 = t_n**(-5.0)
     k1 = -60*tau_0*v0

@@ -53,6 +53,17 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """ValueError naming the arguments whose shapes do not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) > 1:
+        try:
+            np.broadcast_shapes(*shapes.values())
+        except ValueError:
+            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
 def _two_product(a, b):
     """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
     p = a * b
@@ -91,6 +102,7 @@ def natural_frequency(m1, m2, c):
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    _broadcast(m1=m1, m2=m2, c=c)
     return np.sqrt(c)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
 
 
@@ -123,6 +135,7 @@ def relative_displacement(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
     k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
     k1 = -2*_diff_of_products(W, m1, P_t, m2)/(c*x0)
@@ -158,6 +171,7 @@ def elastic_force(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
     k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
     k1 = -2*_diff_of_products(W, m1, P_t, m2)/x0
@@ -187,6 +201,7 @@ def peak_elastic_force(m1, m2, P_t, W):
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
     return 2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2)
 
 
@@ -210,6 +225,7 @@ def peak_time(m1, m2, c):
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    _broadcast(m1=m1, m2=m2, c=c)
     return 3.141592653589793*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2))
 
 
@@ -236,6 +252,7 @@ def rigid_link_force(m1, m2, P_t, W):
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
     return -_diff_of_products(W, m1, P_t, m2)/(m1 + m2)
 
 
@@ -271,6 +288,7 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
+    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
     x1 = np.sqrt(c)
     x2 = 1/np.sqrt(m1)
@@ -313,6 +331,7 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
+    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
     x1 = np.sqrt(c)
     x2 = np.sqrt(m1)
