@@ -107,6 +107,11 @@ def test_every_shipped_scene_generates_and_runs(name, tmp_path):
     # numbers; NaN only where a report documents it (an event not reached)
     assert report.values and all(isinstance(v, float) for v in report.values.values())
     assert sum(np.isfinite(v) for v in report.values.values()) >= len(report.values) / 2
+    # and the command a user types: exit 0, the same module, every plot named
+    assert main(["run", name, "--out", str(tmp_path / "cli")]) == 0
+    assert (tmp_path / "cli" / f"scene_{name}.py").read_text(encoding="utf-8") == written
+    assert sorted(p.name for p in (tmp_path / "cli").glob("*.png")) == \
+        sorted(p.name for p in pngs)
 
 
 def test_run_command_prints_the_report(tmp_path, capsys):
