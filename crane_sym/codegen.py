@@ -21,6 +21,7 @@ from sympy.printing.numpy import NumPyPrinter
 from . import __version__, kernels
 from .derivation import Derivation, Output
 from .entire import Z, plan
+from .inplace import chain
 from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
 from .symbols import TIME, SymbolTable
 
@@ -217,8 +218,10 @@ def hoist(expr: sp.Expr, varying: set[sp.Symbol]
     return assignments, phases, reduced
 
 
-def _signature(out: Output) -> str:
-    return f"{out.name}({', '.join(map(str, out.args))})"
+def _signature(out: Output, keyword: bool = False) -> str:
+    """``name(a, b)``; with ``keyword``, the ``out`` keyword of array outputs too."""
+    extra = ", *, out=None" if keyword and not isinstance(out.expr, sp.MatrixBase) else ""
+    return f"{out.name}({', '.join(map(str, out.args))}{extra})"
 
 
 def render_function(out: Output, table: SymbolTable,
@@ -247,7 +250,10 @@ def render_function(out: Output, table: SymbolTable,
         f"    {e.name} : array_like\n        {e.description} [{e.unit}]"
         + {"positive": ", > 0", "nonnegative": ", >= 0"}.get(e.sign, "")
         for e in entries)
-    lines = [f"def {_signature(out)}:",
+    if shape is None:
+        params += ("\n    out : ndarray, optional\n        float64 array of the broadcast "
+                   "shape; the result is written into it and returned.")
+    lines = [f"def {_signature(out, keyword=True)}:",
              f'    """{out.summary} Eq {", ".join(out.labels)}.',
              "",
              "    Parameters",
@@ -265,11 +271,10 @@ def render_function(out: Output, table: SymbolTable,
         what = f"{e.description}, {e.unit}".replace('"', "'")
         lines.append(f"    {e.name:<{width}} = _checked({e.name!r}, {e.name}, "
                      f"{e.sign!r}, {what!r})")
-    if len(entries) > 1:
-        call = textwrap.wrap(", ".join(f"{e.name}={e.name}" for e in entries) + ")",
-                             width=84, break_long_words=False, break_on_hyphens=False)
-        lines.append("    _broadcast(" + call[0])
-        lines += [" " * 15 + rest for rest in call[1:]]
+    call = textwrap.wrap(", ".join(f"{e.name}={e.name}" for e in entries) + ")",
+                         width=80, break_long_words=False, break_on_hyphens=False)
+    lines.append("    shape = _broadcast(" + call[0])
+    lines += [" " * 23 + rest for rest in call[1:]]
     # A scalar that CSE reduced to a bare name is inlined, not re-assigned.
     alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom}
     for sym, value in phases:
@@ -283,7 +288,24 @@ def render_function(out: Output, table: SymbolTable,
         elements = ", ".join(printer.doprint(e) for e in reduced)
         lines.append(f"    return _matrix({tuple(shape)}, [{elements}])")
     else:
-        lines.append(f"    return {printer.doprint(reduced[-1].xreplace(alias))}")
+        final = reduced[-1].xreplace(alias)
+        heavy = set(varying)
+        for sym, value in subs:                  # array temporaries of the CSE
+            if value.free_symbols & heavy:
+                heavy.add(sym)
+        steps = chain(final, heavy, printer.doprint)
+        if steps is None:                        # not a chain: NumPy as printed
+            lines += [f"    result = {printer.doprint(final)}",
+                      "    if out is None:",
+                      "        return result",
+                      "    out = _out(out, shape)",
+                      "    np.copyto(out, result)",
+                      "    return out"]
+        else:                                    # one buffer, one pass per node
+            lines += ["    if out is None and not shape:",
+                      f"        return {printer.doprint(final)}",
+                      "    out = _out(out, shape)"]
+            lines += [f"    {s}" for s in steps] + ["    return out"]
     return "\n".join(lines) + "\n"
 
 

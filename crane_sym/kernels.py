@@ -43,14 +43,28 @@ def _checked(name, value, sign, what):
 
 
 def _broadcast(**arrays):
-    """ValueError naming the arguments whose shapes do not broadcast together."""
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
     shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
-    if len(shapes) > 1:
-        try:
-            np.broadcast_shapes(*shapes.values())
-        except ValueError:
-            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
-            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
 
 
 def _two_sum(a, b):
@@ -297,7 +311,7 @@ def _matrix(shape, elements):
 
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {
-    "_checked": (), "_broadcast": (),
+    "_checked": (), "_broadcast": (), "_out": (),
     "_two_sum": (), "_quick_two_sum": (), "_two_product": (),
     "_diff_of_products": ("_two_product",),
     "_dd": (),

@@ -39,7 +39,8 @@ def time_function(scene: Scene, module: ModuleType, name: str) -> Callable:
         return getattr(module, name)
     general = getattr(importlib.import_module(f"crane_sym.generated.{scene.derivation}"),
                       name)
-    names = [p for p in inspect.signature(general).parameters if p != "t"]
+    names = [p.name for p in inspect.signature(general).parameters.values()
+             if p.name != "t" and p.kind is p.POSITIONAL_OR_KEYWORD]
     missing = [p for p in names if p not in scene.parameters]
     if missing:
         raise SceneError(f"scene {scene.name!r}: {name} needs {missing}, which the scene "

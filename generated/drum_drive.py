@@ -62,14 +62,28 @@ def _checked(name, value, sign, what):
 
 
 def _broadcast(**arrays):
-    """ValueError naming the arguments whose shapes do not broadcast together."""
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
     shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
-    if len(shapes) > 1:
-        try:
-            np.broadcast_shapes(*shapes.values())
-        except ValueError:
-            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
-            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
 
 
 def _matrix(shape, elements):
@@ -79,7 +93,7 @@ def _matrix(shape, elements):
     return np.stack(flat).reshape(tuple(shape) + flat[0].shape)
 
 
-def branch_effective_mass(q, L):
+def branch_effective_mass(q, L, *, out=None):
     """Effective mass q*L/3 of a span moved at one point (linear speed (6)). Eq (7).
 
     Parameters
@@ -88,6 +102,8 @@ def branch_effective_mass(q, L):
         mass of one metre of the traction element [kg/m], > 0
     L : array_like
         length of a branch (of the span in (7)) [m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -96,11 +112,16 @@ def branch_effective_mass(q, L):
     """
     q = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
-    _broadcast(q=q, L=L)
-    return (1/3)*L*q
+    shape = _broadcast(q=q, L=L)
+    result = (1/3)*L*q
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def drive_chain_frequency_1(I1, I2, I3, C1, C2):
+def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
     """Lower elastic natural frequency of the free-free chain I1-C1-I2-C2-I3. Eq (13).
 
     Parameters
@@ -115,6 +136,8 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2):
         torsional stiffness, motor to intermediate mass [N*m/rad], > 0
     C2 : array_like
         torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -126,14 +149,19 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2):
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
+    shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = I1 + I2
     x1 = C1*x0/I1
     x2 = C2*(I2 + I3)/I3
-    return 1.4142135623730951*np.sqrt(C1)*np.sqrt(C2)*np.sqrt(I3 + x0)/(np.sqrt(I1)*np.sqrt(I3)*np.sqrt(x1 + x2 + np.sqrt(4*C1*C2 + (x1 - x2)**2)))
+    result = 1.4142135623730951*np.sqrt(C1)*np.sqrt(C2)*np.sqrt(I3 + x0)/(np.sqrt(I1)*np.sqrt(I3)*np.sqrt(x1 + x2 + np.sqrt(4*C1*C2 + (x1 - x2)**2)))
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def drive_chain_frequency_2(I1, I2, I3, C1, C2):
+def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
     """Higher elastic natural frequency of the free-free chain I1-C1-I2-C2-I3. Eq (13).
 
     Parameters
@@ -148,6 +176,8 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2):
         torsional stiffness, motor to intermediate mass [N*m/rad], > 0
     C2 : array_like
         torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -159,13 +189,18 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2):
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
     C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
     C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
+    shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = C1*(I1 + I2)/I1
     x1 = C2*(I2 + I3)/I3
-    return 0.7071067811865476*np.sqrt(x0 + x1 + np.sqrt(4*C1*C2 + (x0 - x1)**2))/np.sqrt(I2)
+    result = 0.7071067811865476*np.sqrt(x0 + x1 + np.sqrt(4*C1*C2 + (x0 - x1)**2))/np.sqrt(I2)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def running_tight_force(M0, D, F0, C_t, C_z, C_y):
+def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     """Tight-branch force F1 in steady running. Eq (12).
 
     Parameters
@@ -182,6 +217,8 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y):
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
     C_y : array_like
         bending stiffness of the drum shaft at the drum [N/m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -194,15 +231,20 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
+    shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
     x2 = 4*C_t*C_z
     x3 = D*F0
-    return (2*M0*x0 + M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
+    result = (2*M0*x0 + M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def running_slack_force(M0, D, F0, C_t, C_z, C_y):
+def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     """Slack-branch force F2 in steady running. Eq (12).
 
     Parameters
@@ -219,6 +261,8 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y):
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
     C_y : array_like
         bending stiffness of the drum shaft at the drum [N/m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -231,15 +275,20 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
+    shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
     x2 = 4*C_t*C_z
     x3 = D*F0
-    return (-2*M0*x1 - M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
+    result = (-2*M0*x1 - M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y):
+def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
     """Drum-shaft deflection y in steady running. Eq (12).
 
     Parameters
@@ -256,6 +305,8 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y):
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
     C_y : array_like
         bending stiffness of the drum shaft at the drum [N/m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -268,12 +319,17 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
+    shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = D*F0
-    return 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z))
+    result = 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z))
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def drum_torque(F1, F2, D):
+def drum_torque(F1, F2, D, *, out=None):
     """Torque (F1 - F2)*D/2 of the branch forces on the drum. Eq (18).
 
     Parameters
@@ -284,6 +340,8 @@ def drum_torque(F1, F2, D):
         force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
     D : array_like
         diameter of the driving drum, D = 2r [m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -293,11 +351,16 @@ def drum_torque(F1, F2, D):
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
-    _broadcast(F1=F1, F2=F2, D=D)
-    return (1/2)*D*(F1 - F2)
+    shape = _broadcast(F1=F1, F2=F2, D=D)
+    result = (1/2)*D*(F1 - F2)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def traction_margin(F1, F2, mu, alpha):
+def traction_margin(F1, F2, mu, alpha, *, out=None):
     """Margin exp(mu*alpha) - 1.25*F1/F2 of the traction condition; > 0 holds. Eq (19).
 
     Parameters
@@ -310,6 +373,8 @@ def traction_margin(F1, F2, mu, alpha):
         friction coefficient between element and drum [1], > 0
     alpha : array_like
         wrap angle of the element on the drum [rad], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -320,11 +385,16 @@ def traction_margin(F1, F2, mu, alpha):
     F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1')
     alpha = _checked('alpha', alpha, 'positive', 'wrap angle of the element on the drum, rad')
-    _broadcast(F1=F1, F2=F2, mu=mu, alpha=alpha)
-    return -5/4*F1/F2 + np.exp(alpha*mu)
+    shape = _broadcast(F1=F1, F2=F2, mu=mu, alpha=alpha)
+    result = -5/4*F1/F2 + np.exp(alpha*mu)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def least_mu_alpha(F1, F2):
+def least_mu_alpha(F1, F2, *, out=None):
     """Least mu*alpha that satisfies the traction condition (19). Eq (19).
 
     Parameters
@@ -333,6 +403,8 @@ def least_mu_alpha(F1, F2):
         force in the tight branch (F0 + C_t*e1 in the model) [N], > 0
     F2 : array_like
         force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -341,11 +413,16 @@ def least_mu_alpha(F1, F2):
     """
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
-    _broadcast(F1=F1, F2=F2)
-    return np.log((5/4)*F1/F2)
+    shape = _broadcast(F1=F1, F2=F2)
+    result = np.log((5/4)*F1/F2)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
+def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None):
     """Pulsating load F'(t) of (21), as printed. Eq (21).
 
     Parameters
@@ -370,6 +447,8 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
         constant K_4 of (21) (pretension at the load) [N], > 0
     t_3 : array_like
         stop time t_3 of the transporter in (21) [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -386,15 +465,20 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3):
     K3   = _checked('K3', K3, 'positive', 'constant K_3 of (21) (pretension at the load), N')
     K4   = _checked('K4', K4, 'positive', 'constant K_4 of (21) (pretension at the load), N')
     t_3  = _checked('t_3', t_3, 'positive', 'stop time t_3 of the transporter in (21), s')
-    _broadcast(t=t, F1_t=F1_t, F2_t=F2_t, F3_t=F3_t, F4_t=F4_t, K1=K1, K2=K2, K3=K3, K4=K4,
-               t_3=t_3)
+    shape = _broadcast(t=t, F1_t=F1_t, F2_t=F2_t, F3_t=F3_t, F4_t=F4_t, K1=K1, K2=K2, K3=K3, K4=K4,
+                       t_3=t_3)
     x0 = 3.141592653589793/t_3
     k1 = -K2
     k3 = -K4
     k5 = (1/4)*F1_t
     k7 = (1/4)*F3_t
     k8 = (1/4)*K1 + (1/4)*K3
-    return k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3)
+    result = k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
 def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r, M0, F0, W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10):
@@ -501,9 +585,9 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     s8   = _checked('s8', s8, 'real', 'state 8: dφ3/dt, rad/s')
     s9   = _checked('s9', s9, 'real', 'state 9: dy/dt, m/s')
     s10  = _checked('s10', s10, 'real', 'state 10: dz/dt, m/s')
-    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
-               nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r, M0=M0, F0=F0, W=W,
-               s1=s1, s2=s2, s3=s3, s4=s4, s5=s5, s6=s6, s7=s7, s8=s8, s9=s9, s10=s10)
+    shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
+                       nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r, M0=M0, F0=F0,
+                       W=W, s1=s1, s2=s2, s3=s3, s4=s4, s5=s5, s6=s6, s7=s7, s8=s8, s9=s9, s10=s10)
     x0 = C1*s2
     x1 = nu1*s7
     x2 = C2*s2
@@ -593,8 +677,8 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
-    _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
-               nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r)
+    shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
+                       nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r)
     x0 = 1/(I1)
     x1 = C1*x0
     x2 = nu1*x0
@@ -665,7 +749,7 @@ def mass_matrix(I1, I2, I3, m3, m_L, q, L, r):
     q   = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L   = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
-    _broadcast(I1=I1, I2=I2, I3=I3, m3=m3, m_L=m_L, q=q, L=L, r=r)
+    shape = _broadcast(I1=I1, I2=I2, I3=I3, m3=m3, m_L=m_L, q=q, L=L, r=r)
     x0 = L*q
     x1 = (2/3)*x0
     x2 = (1/3)*r*x0
@@ -701,7 +785,7 @@ def damping_matrix(nu1, nu2, nu_y, nu_z, nu_t, r):
     nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
     nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
     r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
-    _broadcast(nu1=nu1, nu2=nu2, nu_y=nu_y, nu_z=nu_z, nu_t=nu_t, r=r)
+    shape = _broadcast(nu1=nu1, nu2=nu2, nu_y=nu_y, nu_z=nu_z, nu_t=nu_t, r=r)
     x0 = -nu1
     x1 = -nu2
     x2 = nu_z*r
@@ -739,7 +823,7 @@ def stiffness_matrix(C1, C2, C_y, C_t, C_z, r):
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
     r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
-    _broadcast(C1=C1, C2=C2, C_y=C_y, C_t=C_t, C_z=C_z, r=r)
+    shape = _broadcast(C1=C1, C2=C2, C_y=C_y, C_t=C_t, C_z=C_z, r=r)
     x0 = -C1
     x1 = -C2
     x2 = r**2
@@ -770,5 +854,5 @@ def generalized_forces(M0, F0, W):
     M0 = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
     F0 = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
     W  = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N')
-    _broadcast(M0=M0, F0=F0, W=W)
+    shape = _broadcast(M0=M0, F0=F0, W=W)
     return _matrix((5, 1), [M0, 0, 0, 2*F0, -W])

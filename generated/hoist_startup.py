@@ -71,14 +71,28 @@ def _checked(name, value, sign, what):
 
 
 def _broadcast(**arrays):
-    """ValueError naming the arguments whose shapes do not broadcast together."""
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
     shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
-    if len(shapes) > 1:
-        try:
-            np.broadcast_shapes(*shapes.values())
-        except ValueError:
-            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
-            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
 
 
 def _two_sum(a, b):
@@ -463,7 +477,7 @@ def _entire_18(z):
                          (-0.004761904761904762, 0.00033068783068783067, -8.417508417508417e-06, 1.1562511562511562e-07, -1.0094256126002158e-09, 6.140222643490617e-12, -2.7621334428657748e-14, 9.582911944636362e-17, -2.645828396711388e-19, 5.956982062771254e-22, -1.115267297059331e-24, 1.7643542102858438e-27, -2.3904153816775947e-30, 2.8053793572200472e-33, -2.880051664488851e-36, 2.6085908227231188e-39, -2.100218043690402e-42,))
 
 
-def natural_frequency(m1, m2, C):
+def natural_frequency(m1, m2, C, *, out=None):
     """Natural circular frequency Omega of the rope stretch. Eq (2).
 
     Parameters
@@ -474,6 +488,8 @@ def natural_frequency(m1, m2, C):
         mass of the load (second mass) [kg], > 0
     C : array_like
         stiffness of the rope (elastic link) [N/m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -483,11 +499,16 @@ def natural_frequency(m1, m2, C):
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
     m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
-    _broadcast(m1=m1, m2=m2, C=C)
-    return np.sqrt(C)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
+    shape = _broadcast(m1=m1, m2=m2, C=C)
+    result = np.sqrt(C)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def pickup_contact_time(m2, g, C, v0):
+def pickup_contact_time(m2, g, C, v0, *, out=None):
     """Duration tau_0 of the load's contact with the ground (pick-up). Eq (29).
 
     Parameters
@@ -500,6 +521,8 @@ def pickup_contact_time(m2, g, C, v0):
         stiffness of the rope (elastic link) [N/m], > 0
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -510,11 +533,16 @@ def pickup_contact_time(m2, g, C, v0):
     g  = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
     v0 = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    _broadcast(m2=m2, g=g, C=C, v0=v0)
-    return g*m2/(C*v0)
+    shape = _broadcast(m2=m2, g=g, C=C, v0=v0)
+    result = g*m2/(C*v0)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_instant(t, Omega):
+def dynamic_coefficient_instant(t, Omega, *, out=None):
     """K_din(t) under a suddenly applied constant load. Eq (38).
 
     Parameters
@@ -523,6 +551,8 @@ def dynamic_coefficient_instant(t, Omega):
         time from the start of the drive [s], >= 0
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -531,12 +561,19 @@ def dynamic_coefficient_instant(t, Omega):
     """
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    _broadcast(t=t, Omega=Omega)
+    shape = _broadcast(t=t, Omega=Omega)
     k0 = (1/2)*Omega
-    return 2*np.sin(k0*t)**2
+    if out is None and not shape:
+        return 2*np.sin(k0*t)**2
+    out = _out(out, shape)
+    np.multiply(t, k0, out=out)
+    np.sin(out, out=out)
+    np.square(out, out=out)
+    np.multiply(out, 2, out=out)
+    return out
 
 
-def dynamic_coefficient_ramp(t, Omega, t_n):
+def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
     """K_din(t) under a linearly growing load, over the static deflection at t_n. Eq (42).
 
     Parameters
@@ -547,6 +584,8 @@ def dynamic_coefficient_ramp(t, Omega, t_n):
         natural circular frequency Ω of the rope stretch [rad/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -556,12 +595,17 @@ def dynamic_coefficient_ramp(t, Omega, t_n):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, t_n=t_n)
     k0 = -1/(Omega*t_n)
-    return k0*_sin_remainder(Omega*t, 1)
+    result = k0*_sin_remainder(Omega*t, 1)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pulse(t, Omega, theta):
+def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     """K_din(t) under a rectangular pulse of length theta. Eq (45), (46).
 
     Parameters
@@ -572,6 +616,8 @@ def dynamic_coefficient_pulse(t, Omega, theta):
         natural circular frequency Ω of the rope stretch [rad/s], > 0
     theta : array_like
         duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -581,14 +627,19 @@ def dynamic_coefficient_pulse(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    _broadcast(t=t, Omega=Omega, theta=theta)
+    shape = _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 2*np.sin((1/2)*x0)**2
     k1 = np.sin(x0)
-    return np.select([np.less_equal(t, theta),True], [2*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k0, k1, _exact_phase(Omega, t, theta))], default=np.nan)
+    result = np.select([np.less_equal(t, theta),True], [2*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k0, k1, _exact_phase(Omega, t, theta))], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def pulse_peak_factor(Omega, theta):
+def pulse_peak_factor(Omega, theta, *, out=None):
     """Largest x/x_st under a rectangular pulse of length theta. Eq (47).
 
     Parameters
@@ -597,6 +648,8 @@ def pulse_peak_factor(Omega, theta):
         natural circular frequency Ω of the rope stretch [rad/s], > 0
     theta : array_like
         duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -605,11 +658,16 @@ def pulse_peak_factor(Omega, theta):
     """
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    _broadcast(Omega=Omega, theta=theta)
-    return np.select([np.less(theta, 3.141592653589793/Omega),True], [2*np.sin((1/2)*Omega*theta),2], default=np.nan)
+    shape = _broadcast(Omega=Omega, theta=theta)
+    result = np.select([np.less(theta, 3.141592653589793/Omega),True], [2*np.sin((1/2)*Omega*theta),2], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def pulse_peak_time(Omega, theta):
+def pulse_peak_time(Omega, theta, *, out=None):
     """Time of the largest displacement under the pulse. Eq (47).
 
     Parameters
@@ -618,6 +676,8 @@ def pulse_peak_time(Omega, theta):
         natural circular frequency Ω of the rope stretch [rad/s], > 0
     theta : array_like
         duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -626,13 +686,18 @@ def pulse_peak_time(Omega, theta):
     """
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    _broadcast(Omega=Omega, theta=theta)
+    shape = _broadcast(Omega=Omega, theta=theta)
     x0 = 1/(Omega)
     x1 = 3.141592653589793*x0
-    return np.select([np.less(theta, x1),True], [(1/2)*theta + 1.5707963267948966*x0,x1], default=np.nan)
+    result = np.select([np.less(theta, x1),True], [(1/2)*theta + 1.5707963267948966*x0,x1], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_ramp_hold(t, Omega, theta):
+def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     """K_din(t) under a load rising over theta, then held. Eq (51), (52).
 
     Parameters
@@ -643,6 +708,8 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta):
         natural circular frequency Ω of the rope stretch [rad/s], > 0
     theta : array_like
         duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -652,16 +719,21 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta):
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    _broadcast(t=t, Omega=Omega, theta=theta)
+    shape = _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 1/(Omega*theta)
     k1 = _entire_1(x0)
     k2 = _entire_2(x0)
     k3 = _entire_3(x0)
-    return np.select([np.less_equal(t, theta),True], [k0*_entire_4(_exact_phase(Omega, t)),_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta))], default=np.nan)
+    result = np.select([np.less_equal(t, theta),True], [k0*_entire_4(_exact_phase(Omega, t)),_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta))], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def ramp_hold_peak_factor(Omega, theta):
+def ramp_hold_peak_factor(Omega, theta, *, out=None):
     """Largest x/x_st under the rise-then-hold load. Eq (53).
 
     Parameters
@@ -670,6 +742,8 @@ def ramp_hold_peak_factor(Omega, theta):
         natural circular frequency Ω of the rope stretch [rad/s], > 0
     theta : array_like
         duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -678,11 +752,16 @@ def ramp_hold_peak_factor(Omega, theta):
     """
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
-    _broadcast(Omega=Omega, theta=theta)
-    return 1 + 2*abs(np.sin((1/2)*Omega*theta))/(Omega*theta)
+    shape = _broadcast(Omega=Omega, theta=theta)
+    result = 1 + 2*abs(np.sin((1/2)*Omega*theta))/(Omega*theta)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n):
+def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(1)(t) for the drive law a_1 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Eq (26), (28), (30).
 
     Parameters
@@ -703,6 +782,8 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -717,7 +798,7 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
     x2 = 1/(m1*v0 + m2*v0 + x1)
@@ -736,10 +817,15 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n):
     k5 = _entire_1(x8)
     k6 = _entire_2(x8)
     k7 = _entire_3(x8)
-    return k0*x10 + np.select([np.less_equal(t, tau_0),True], [k4*_entire_4(x9),x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x10*x5,_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
+    result = k0*x10 + np.select([np.less_equal(t, tau_0),True], [k4*_entire_4(x9),x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x10*x5,_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
+def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(1)(t) for the drive law a_2 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Eq (26), (28), (30).
 
     Parameters
@@ -760,6 +846,8 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -774,7 +862,7 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
     x2 = 1/(m1*v0 + m2*v0 + x1)
@@ -791,10 +879,15 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n):
     k6 = _entire_1(x6)
     k7 = _entire_2(x6)
     k8 = _entire_3(x6)
-    return k0*_sin_pair(x7, 0.5)**2 + np.select([np.less_equal(t, tau_0),True], [k5*_entire_4(x7),x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x3*(k1*(-t + t_n)*_entire_7(x7) + _entire_5(x7)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan)
+    result = k0*_sin_pair(x7, 0.5)**2 + np.select([np.less_equal(t, tau_0),True], [k5*_entire_4(x7),x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x3*(k1*(-t + t_n)*_entire_7(x7) + _entire_5(x7)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
+def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(1)(t) for the drive law a_3 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Eq (26), (28), (30).
 
     Parameters
@@ -815,6 +908,8 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -829,7 +924,7 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(Omega)
     x1 = 1/(m2)
     x2 = m1*x1
@@ -847,10 +942,15 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n):
     k7 = 48*x0*x5/t_n**2
     k8 = -24*x7*_entire_8(x6)
     k9 = -72*x7*_entire_9(x6)
-    return np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x8),x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k7*(x4*x9*(x4*x9*_entire_10(x8) + _entire_11(x8)) + _entire_12(x8)),_wave(k8, k9, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x8, 0.5)**2
+    result = np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x8),x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k7*(x4*x9*(x4*x9*_entire_10(x8) + _entire_11(x8)) + _entire_12(x8)),_wave(k8, k9, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x8, 0.5)**2
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
+def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(1)(t) for the drive law a_4 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Eq (26), (28), (30).
 
     Parameters
@@ -871,6 +971,8 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -885,7 +987,7 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(m2)
     x1 = m1*x0
     x2 = Omega*tau_0
@@ -902,10 +1004,15 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n):
     k8 = -120*x4/(Omega**2*t_n**3)
     k9 = -2880*x6*_entire_13(x5)
     k10 = -7200*x6*_entire_14(x5)
-    return np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x7),x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k8*(x3*x8*(x3*x8*(x3*x8*_entire_15(x7) + _entire_16(x7)) + _entire_17(x7)) + _entire_18(x7)),_wave(k9, k10, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x7, 0.5)**2
+    result = np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x7),x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k8*(x3*x8*(x3*x8*(x3*x8*_entire_15(x7) + _entire_16(x7)) + _entire_17(x7)) + _entire_18(x7)),_wave(k9, k10, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x7, 0.5)**2
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
+def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(2)(t) for the drive law a_1 of (30), lifting from weight; Omega from natural_frequency. Eq (27), (28), (30).
 
     Parameters
@@ -924,6 +1031,8 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -937,7 +1046,7 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
     x2 = v0*x1
@@ -946,10 +1055,15 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n):
     k1 = x3*np.sin((1/2)*x4)**2
     k2 = x2*np.sin(x4)
     k3 = x0*x1
-    return k3 + np.select([np.less_equal(t, t_n),True], [x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k1, k2, _exact_phase(Omega, t, t_n))], default=np.nan)
+    result = k3 + np.select([np.less_equal(t, t_n),True], [x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k1, k2, _exact_phase(Omega, t, t_n))], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
+def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(2)(t) for the drive law a_2 of (30), lifting from weight; Omega from natural_frequency. Eq (27), (28), (30).
 
     Parameters
@@ -968,6 +1082,8 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -981,7 +1097,7 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
     x2 = v0*x1
@@ -991,10 +1107,15 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n):
     k2 = x2*_entire_5(x3)
     k3 = -x2*_entire_6(x3)
     k4 = x0*x1
-    return k4 + np.select([np.less_equal(t, t_n),True], [x2*(k0*(-t + t_n)*_entire_7(x4) + _entire_5(x4)),_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
+    result = k4 + np.select([np.less_equal(t, t_n),True], [x2*(k0*(-t + t_n)*_entire_7(x4) + _entire_5(x4)),_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
+def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(2)(t) for the drive law a_3 of (30), lifting from weight; Omega from natural_frequency. Eq (27), (28), (30).
 
     Parameters
@@ -1013,6 +1134,8 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1026,7 +1149,7 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
     x2 = Omega*t_n
@@ -1036,10 +1159,15 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n):
     k2 = 48*x1/(Omega*t_n**2)
     k3 = -24*x3*_entire_8(x2)
     k4 = -72*x3*_entire_9(x2)
-    return np.select([np.less_equal(t, t_n),True], [k2*(x0*x5*(x0*x5*_entire_10(x4) + _entire_11(x4)) + _entire_12(x4)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
+    result = np.select([np.less_equal(t, t_n),True], [k2*(x0*x5*(x0*x5*_entire_10(x4) + _entire_11(x4)) + _entire_12(x4)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
+def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None):
     """K_din^(2)(t) for the drive law a_4 of (30), lifting from weight; Omega from natural_frequency. Eq (27), (28), (30).
 
     Parameters
@@ -1058,6 +1186,8 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
         steady hoisting speed after the start [m/s], > 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1071,7 +1201,7 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
+    shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
     x2 = Omega*t_n
@@ -1081,10 +1211,15 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n):
     k3 = -120*x1/(Omega**2*t_n**3)
     k4 = -2880*x3*_entire_13(x2)
     k5 = -7200*x3*_entire_14(x2)
-    return np.select([np.less_equal(t, t_n),True], [k3*(x0*x5*(x0*x5*(x0*x5*_entire_15(x4) + _entire_16(x4)) + _entire_17(x4)) + _entire_18(x4)),_wave(k4, k5, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
+    result = np.select([np.less_equal(t, t_n),True], [k3*(x0*x5*(x0*x5*(x0*x5*_entire_15(x4) + _entire_16(x4)) + _entire_17(x4)) + _entire_18(x4)),_wave(k4, k5, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_from_weight_a1(t, t_n):
+def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
     """k~_din1^(opt)(t) from weight, 0 <= t <= t_n. Eq (63), (65).
 
     Parameters
@@ -1093,6 +1228,8 @@ def optimal_coefficient_from_weight_a1(t, t_n):
         time from the start of the drive [s], >= 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1101,11 +1238,16 @@ def optimal_coefficient_from_weight_a1(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, t_n=t_n)
-    return 1
+    shape = _broadcast(t=t, t_n=t_n)
+    result = 1
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0):
+def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     """k~_din1^(opt)(t) with pick-up, 0 <= t <= t_n. Eq (64), (65), (66).
 
     Parameters
@@ -1120,6 +1262,8 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0):
         acceleration of gravity [m/s^2], > 0
     tau_0 : array_like
         duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1131,14 +1275,19 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
+    shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = g*t_n
     k1 = tau_0*v0
     k2 = 1/(tau_0*v0)
-    return np.select([np.less_equal(t, tau_0),True], [k2*(k0*t + k1),1], default=np.nan)
+    result = np.select([np.less_equal(t, tau_0),True], [k2*(k0*t + k1),1], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_from_weight_a2(t, t_n):
+def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
     """k~_din2^(opt)(t) from weight, 0 <= t <= t_n. Eq (63), (65).
 
     Parameters
@@ -1147,6 +1296,8 @@ def optimal_coefficient_from_weight_a2(t, t_n):
         time from the start of the drive [s], >= 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1155,13 +1306,18 @@ def optimal_coefficient_from_weight_a2(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, t_n=t_n)
+    shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -1/t_n
-    return k1*(k0 + t)
+    if out is None and not shape:
+        return k1*(k0 + t)
+    out = _out(out, shape)
+    np.add(t, k0, out=out)
+    np.multiply(out, k1, out=out)
+    return out
 
 
-def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0):
+def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     """k~_din2^(opt)(t) with pick-up, 0 <= t <= t_n. Eq (64), (65), (66).
 
     Parameters
@@ -1176,6 +1332,8 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0):
         acceleration of gravity [m/s^2], > 0
     tau_0 : array_like
         duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1187,16 +1345,21 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
+    shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
     x1 = 1/(t_n)
     k0 = g*t_n**2
     k2 = -tau_0*v0
     k3 = x1/(tau_0*v0)
-    return np.select([np.less_equal(t, tau_0),True], [k3*(k0*t + k2*(t + x0)),x1*(-t - x0)], default=np.nan)
+    result = np.select([np.less_equal(t, tau_0),True], [k3*(k0*t + k2*(t + x0)),x1*(-t - x0)], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_from_weight_a3(t, t_n):
+def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     """k~_din3^(opt)(t) from weight, 0 <= t <= t_n. Eq (63), (65).
 
     Parameters
@@ -1205,6 +1368,8 @@ def optimal_coefficient_from_weight_a3(t, t_n):
         time from the start of the drive [s], >= 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1213,13 +1378,18 @@ def optimal_coefficient_from_weight_a3(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, t_n=t_n)
+    shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = 12/t_n**3
-    return k1*t*(k0 + t)**2
+    result = k1*t*(k0 + t)**2
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0):
+def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     """k~_din3^(opt)(t) with pick-up, 0 <= t <= t_n. Eq (64), (65), (66).
 
     Parameters
@@ -1234,6 +1404,8 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0):
         acceleration of gravity [m/s^2], > 0
     tau_0 : array_like
         duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1245,17 +1417,22 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
+    shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
     x1 = t_n**(-3.0)
     k1 = 12*tau_0*v0
     k2 = g*t_n**4
     k3 = x1/(tau_0*v0)
     k5 = 12*x1
-    return np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*(t + x0)**2 + k2),k5*t*(t + x0)**2], default=np.nan)
+    result = np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*(t + x0)**2 + k2),k5*t*(t + x0)**2], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_from_weight_a4(t, t_n):
+def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     """k~_din4^(opt)(t) from weight, 0 <= t <= t_n. Eq (63), (65).
 
     Parameters
@@ -1264,6 +1441,8 @@ def optimal_coefficient_from_weight_a4(t, t_n):
         time from the start of the drive [s], >= 0
     t_n : array_like
         duration of the start (transient) t_п [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1272,13 +1451,18 @@ def optimal_coefficient_from_weight_a4(t, t_n):
     """
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    _broadcast(t=t, t_n=t_n)
+    shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -60/t_n**5
-    return k1*t**2*(k0 + t)**3
+    result = k1*t**2*(k0 + t)**3
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0):
+def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     """k~_din4^(opt)(t) with pick-up, 0 <= t <= t_n. Eq (64), (65), (66).
 
     Parameters
@@ -1293,6 +1477,8 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0):
         acceleration of gravity [m/s^2], > 0
     tau_0 : array_like
         duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -1304,11 +1490,16 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0):
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
+    shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
     x1 = t_n**(-5.0)
     k1 = -60*tau_0*v0
     k2 = g*t_n**6
     k3 = x1/(tau_0*v0)
     k5 = -60*x1
-    return np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*t*(t + x0)**3 + k2),k5*t**2*(t + x0)**3], default=np.nan)
+    result = np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*t*(t + x0)**3 + k2),k5*t**2*(t + x0)**3], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out

@@ -47,13 +47,40 @@ def _checked(name, value, sign, what):
     return array
 
 
-def pulsating_force(t):
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def pulsating_force(t, *, out=None):
     """Pulsating load F'(t) of (21), as printed. Specialized to scene 'drum_drive_example'. Eq (21).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -61,5 +88,11 @@ def pulsating_force(t):
         [N], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = np.sin(1.0471975511965979*t)
-    return 450*x0 - 150*abs(3*x0 - 2) + 300
+    result = 450*x0 - 150*abs(3*x0 - 2) + 300
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out

@@ -51,14 +51,16 @@ def _checked(name, value, sign, what):
 
 
 def _broadcast(**arrays):
-    """ValueError naming the arguments whose shapes do not broadcast together."""
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
     shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
-    if len(shapes) > 1:
-        try:
-            np.broadcast_shapes(*shapes.values())
-        except ValueError:
-            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
-            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
 
 
 def _matrix(shape, elements):
@@ -112,7 +114,7 @@ def state_derivative(W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10):
     s8  = _checked('s8', s8, 'real', 'state 8: dφ3/dt, rad/s')
     s9  = _checked('s9', s9, 'real', 'state 9: dy/dt, m/s')
     s10 = _checked('s10', s10, 'real', 'state 10: dz/dt, m/s')
-    _broadcast(W=W, s1=s1, s2=s2, s3=s3, s4=s4, s5=s5, s6=s6, s7=s7, s8=s8, s9=s9, s10=s10)
+    shape = _broadcast(W=W, s1=s1, s2=s2, s3=s3, s4=s4, s5=s5, s6=s6, s7=s7, s8=s8, s9=s9, s10=s10)
     return _matrix((10, 1), [s6, s7, s8, s9, s10, -20000/13*s1 + (20000/13)*s2 + 440/13, (20000/3)*s1 - 70000/3*s2 + (50000/3)*s3, (1216944576219100180400838803456/3713709198428620747889430541788775)*W + (70177137228634778946281549070336000/148548367937144829915577221671551)*s2 - 80166223958433226494967581507584000/148548367937144829915577221671551*s3 + (39956346919193790194744129748992000/148548367937144829915577221671551)*s5, 225179981368524800/9907919180215091 - 113152940637683712000/9907919180215091*s4, -5577662641004209253995503419392/18568545992143103739447152708943875*W - 2433889152438200360801677606912000/148548367937144829915577221671551*s2 + (3853657824693817256700987991654400/148548367937144829915577221671551)*s3 - 5679074689022467583597241538969600/148548367937144829915577221671551*s5])
 
 
@@ -128,4 +130,5 @@ def state_jacobian():
     ndarray
         [SI], shape (10, 10) followed by the broadcast shape of the arguments.
     """
+    shape = _broadcast()
     return _matrix((10, 10), [0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1, -20000/13, 20000/13, 0, 0, 0, 0, 0, 0, 0, 0, 20000/3, -70000/3, 50000/3, 0, 0, 0, 0, 0, 0, 0, 0, 70177137228634778946281549070336000/148548367937144829915577221671551, -80166223958433226494967581507584000/148548367937144829915577221671551, 0, 39956346919193790194744129748992000/148548367937144829915577221671551, 0, 0, 0, 0, 0, 0, 0, 0, -113152940637683712000/9907919180215091, 0, 0, 0, 0, 0, 0, 0, -2433889152438200360801677606912000/148548367937144829915577221671551, 3853657824693817256700987991654400/148548367937144829915577221671551, 0, -5679074689022467583597241538969600/148548367937144829915577221671551, 0, 0, 0, 0, 0])

@@ -58,6 +58,31 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
 def _two_sum(a, b):
     """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
     s = a + b
@@ -191,13 +216,15 @@ def _entire_4(z):
                          (-0.04421335597057159, 0.0031833616298811546, 0.001388888888888889, -7.498585172608941e-05, -2.48015873015873e-05, 1.041470162862353e-06, 2.755731922398589e-07, -9.467910571475936e-09, -2.08767569878681e-09, 6.069173443253806e-11,))
 
 
-def dynamic_coefficient_pickup_a1(t):
+def dynamic_coefficient_pickup_a1(t, *, out=None):
     """K_din^(1)(t) for the drive law a_1 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (26), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -205,19 +232,27 @@ def dynamic_coefficient_pickup_a1(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = _exact_phase(25, t)
     x1 = _sin_pair(x0, 0.5)**2
     x2 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return (11045078086126142/5698460903507231)*x1 + np.select([np.less_equal(t, 1),True], [(351843720888320/5698460903507231)*x1,_wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x2, 0.5)**2 + 0.0306871573751505*_sin_pair(x2, 1.0) + 0.21141077704121883], default=np.nan)
+    result = (11045078086126142/5698460903507231)*x1 + np.select([np.less_equal(t, 1),True], [(351843720888320/5698460903507231)*x1,_wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x2, 0.5)**2 + 0.0306871573751505*_sin_pair(x2, 1.0) + 0.21141077704121883], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pickup_a2(t):
+def dynamic_coefficient_pickup_a2(t, *, out=None):
     """K_din^(1)(t) for the drive law a_2 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (26), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -225,18 +260,26 @@ def dynamic_coefficient_pickup_a2(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = _exact_phase(25, t)
     x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return np.select([np.less_equal(t, 1),True], [(175921860444160/5698460903507231)*_entire_2(x0),_wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x1, 0.5)**2 + 0.0306871573751505*_sin_pair(x1, 1.0) + 0.21141077704121883], default=np.nan) + (11045078086126142/5698460903507231)*_sin_pair(x0, 0.5)**2
+    result = np.select([np.less_equal(t, 1),True], [(175921860444160/5698460903507231)*_entire_2(x0),_wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x1, 0.5)**2 + 0.0306871573751505*_sin_pair(x1, 1.0) + 0.21141077704121883], default=np.nan) + (11045078086126142/5698460903507231)*_sin_pair(x0, 0.5)**2
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pickup_a3(t):
+def dynamic_coefficient_pickup_a3(t, *, out=None):
     """K_din^(1)(t) for the drive law a_3 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (26), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -244,18 +287,26 @@ def dynamic_coefficient_pickup_a3(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = _exact_phase(25, t)
     x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return np.select([np.less_equal(t, 1),True], [(1688849860263936/690317380382883875)*_entire_3(x0),_wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
+    result = np.select([np.less_equal(t, 1),True], [(1688849860263936/690317380382883875)*_entire_3(x0),_wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_pickup_a4(t):
+def dynamic_coefficient_pickup_a4(t, *, out=None):
     """K_din^(1)(t) for the drive law a_4 of (30), lifting with pick-up (tau_0 from pickup_contact_time); Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (26), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -263,18 +314,26 @@ def dynamic_coefficient_pickup_a4(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = _exact_phase(25, t)
     x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return np.select([np.less_equal(t, 1),True], [-497366283847729152/86289672547860484375*_entire_4(x0),_wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
+    result = np.select([np.less_equal(t, 1),True], [-497366283847729152/86289672547860484375*_entire_4(x0),_wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a1(t):
+def dynamic_coefficient_from_weight_a1(t, *, out=None):
     """K_din^(2)(t) for the drive law a_1 of (30), lifting from weight; Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (27), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -282,16 +341,24 @@ def dynamic_coefficient_from_weight_a1(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return np.select([np.less_equal(t, 1),True], [(281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2,_wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
+    shape = _broadcast(t=t)
+    result = np.select([np.less_equal(t, 1),True], [(281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2,_wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a2(t):
+def dynamic_coefficient_from_weight_a2(t, *, out=None):
     """K_din^(2)(t) for the drive law a_2 of (30), lifting from weight; Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (27), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -299,16 +366,24 @@ def dynamic_coefficient_from_weight_a2(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return np.select([np.less_equal(t, 1),True], [(140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)),_wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
+    shape = _broadcast(t=t)
+    result = np.select([np.less_equal(t, 1),True], [(140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)),_wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a3(t):
+def dynamic_coefficient_from_weight_a3(t, *, out=None):
     """K_din^(2)(t) for the drive law a_3 of (30), lifting from weight; Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (27), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -316,16 +391,24 @@ def dynamic_coefficient_from_weight_a3(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return np.select([np.less_equal(t, 1),True], [(6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)),_wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))], default=np.nan) + 1
+    shape = _broadcast(t=t)
+    result = np.select([np.less_equal(t, 1),True], [(6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)),_wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))], default=np.nan) + 1
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient_from_weight_a4(t):
+def dynamic_coefficient_from_weight_a4(t, *, out=None):
     """K_din^(2)(t) for the drive law a_4 of (30), lifting from weight; Omega from natural_frequency. Specialized to scene 'hoist_drive_laws'. Eq (27), (28), (30).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -333,16 +416,24 @@ def dynamic_coefficient_from_weight_a4(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return np.select([np.less_equal(t, 1),True], [-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)),_wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))], default=np.nan) + 1
+    shape = _broadcast(t=t)
+    result = np.select([np.less_equal(t, 1),True], [-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)),_wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))], default=np.nan) + 1
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_from_weight_a1(t):
+def optimal_coefficient_from_weight_a1(t, *, out=None):
     """k~_din1^(opt)(t) from weight, 0 <= t <= t_n. Specialized to scene 'hoist_drive_laws'. Eq (63), (65).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -350,16 +441,24 @@ def optimal_coefficient_from_weight_a1(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return 1
+    shape = _broadcast(t=t)
+    result = 1
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_from_weight_a2(t):
+def optimal_coefficient_from_weight_a2(t, *, out=None):
     """k~_din2^(opt)(t) from weight, 0 <= t <= t_n. Specialized to scene 'hoist_drive_laws'. Eq (63), (65).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -367,16 +466,24 @@ def optimal_coefficient_from_weight_a2(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return 1 - t
+    shape = _broadcast(t=t)
+    if out is None and not shape:
+        return 1 - t
+    out = _out(out, shape)
+    np.negative(t, out=out)
+    np.add(out, 1, out=out)
+    return out
 
 
-def optimal_coefficient_from_weight_a3(t):
+def optimal_coefficient_from_weight_a3(t, *, out=None):
     """k~_din3^(opt)(t) from weight, 0 <= t <= t_n. Specialized to scene 'hoist_drive_laws'. Eq (63), (65).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -384,16 +491,24 @@ def optimal_coefficient_from_weight_a3(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return 12*t*(t - 1)**2
+    shape = _broadcast(t=t)
+    result = 12*t*(t - 1)**2
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def optimal_coefficient_from_weight_a4(t):
+def optimal_coefficient_from_weight_a4(t, *, out=None):
     """k~_din4^(opt)(t) from weight, 0 <= t <= t_n. Specialized to scene 'hoist_drive_laws'. Eq (63), (65).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -401,4 +516,10 @@ def optimal_coefficient_from_weight_a4(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return -60*t**2*(t - 1)**3
+    shape = _broadcast(t=t)
+    result = -60*t**2*(t - 1)**3
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out

@@ -47,13 +47,40 @@ def _checked(name, value, sign, what):
     return array
 
 
-def dynamic_coefficient_instant(t):
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def dynamic_coefficient_instant(t, *, out=None):
     """K_din(t) under a suddenly applied constant load. Specialized to scene 'hoist_fig3'. Eq (38).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -61,4 +88,13 @@ def dynamic_coefficient_instant(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return 2*np.sin((25/2)*t)**2
+    shape = _broadcast(t=t)
+    if out is None and not shape:
+        return 2*np.sin((25/2)*t)**2
+    out = _out(out, shape)
+    np.multiply(t, 25, out=out)
+    np.divide(out, 2, out=out)
+    np.sin(out, out=out)
+    np.square(out, out=out)
+    np.multiply(out, 2, out=out)
+    return out

@@ -47,6 +47,31 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -94,13 +119,15 @@ def _sin_remainder(x, n):
     return _taylor_remainder(x, n, 1)
 
 
-def dynamic_coefficient_ramp(t):
+def dynamic_coefficient_ramp(t, *, out=None):
     """K_din(t) under a linearly growing load, over the static deflection at t_n. Specialized to scene 'hoist_fig5'. Eq (42).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -108,4 +135,10 @@ def dynamic_coefficient_ramp(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    return -1/25*_sin_remainder(25*t, 1)
+    shape = _broadcast(t=t)
+    result = -1/25*_sin_remainder(25*t, 1)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out

@@ -56,6 +56,31 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -103,13 +128,15 @@ def _sin_remainder(x, n):
     return _taylor_remainder(x, n, 1)
 
 
-def drive_acceleration(t):
+def drive_acceleration(t, *, out=None):
     """Drive acceleration a(t) of the scene's law. Eq (28), (31).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -117,17 +144,25 @@ def drive_acceleration(t):
         [m/s^2], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = 2*t
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,1/2,5/2 - x0,0], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,1/2,5/2 - x0,0], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def drive_speed(t):
+def drive_speed(t, *, out=None):
     """Drive speed v(t), the integral of a(t) (rigid hoist). Eq (28), (31).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -135,17 +170,25 @@ def drive_speed(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = t**2
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,(5/2)*t - x0 - 17/16,1/2], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,(5/2)*t - x0 - 17/16,1/2], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def relative_forcing(t):
+def relative_forcing(t, *, out=None):
     """Load S(t) = P/m1 + Q/m2 of the stretch equation, lifting from weight. Eq (2), (31).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -153,17 +196,25 @@ def relative_forcing(t):
         [m/s^2], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = 10*t
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0 + 981/20,1031/20,1231/20 - x0,981/20], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0 + 981/20,1031/20,1231/20 - x0,981/20], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def rope_stretch(t):
+def rope_stretch(t, *, out=None):
     """Rope stretch x(t) = x1 - x2 by Duhamel's integral, lifting from weight. Eq (15), (23).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -171,18 +222,26 @@ def rope_stretch(t):
         [m], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 2.1237622053565318e-05*np.cos(x0 - 25/8)
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [981/12500 - 2/3125*_sin_remainder(x0, 1),1031/12500 - x1,-x1 + (2/3125)*_sin_remainder(x0 - 25, 1) + 1031/12500,981/12500 - 2.81703877964031e-06*np.sin(x0 - 125/8)], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [981/12500 - 2/3125*_sin_remainder(x0, 1),1031/12500 - x1,-x1 + (2/3125)*_sin_remainder(x0 - 25, 1) + 1031/12500,981/12500 - 2.81703877964031e-06*np.sin(x0 - 125/8)], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def rope_stretch_rate(t):
+def rope_stretch_rate(t, *, out=None):
     """Stretch rate dx/dt, lifting from weight. Eq (18), (23).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -190,19 +249,27 @@ def rope_stretch_rate(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = (25/2)*t
     x1 = 25*t
     x2 = np.sin(x1 - 25/8)
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*np.sin(x0)**2,0.0005309405513391329*x2,0.0005309405513391329*x2 - 4/125*np.sin(x0 - 25/2)**2,-7.042596949100774e-05*np.cos(x1 - 125/8)], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*np.sin(x0)**2,0.0005309405513391329*x2,0.0005309405513391329*x2 - 4/125*np.sin(x0 - 25/2)**2,-7.042596949100774e-05*np.cos(x1 - 125/8)], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def rope_force(t):
+def rope_force(t, *, out=None):
     """Rope force C x(t), lifting from weight. Eq (24).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -210,18 +277,26 @@ def rope_force(t):
         [N], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 21.237622053565318*np.cos(x0 - 25/8)
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [78480 - 640*_sin_remainder(x0, 1),82480 - x1,-x1 + 640*_sin_remainder(x0 - 25, 1) + 82480,78480 - 2.81703877964031*np.sin(x0 - 125/8)], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [78480 - 640*_sin_remainder(x0, 1),82480 - x1,-x1 + 640*_sin_remainder(x0 - 25, 1) + 82480,78480 - 2.81703877964031*np.sin(x0 - 125/8)], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def dynamic_coefficient(t):
+def dynamic_coefficient(t, *, out=None):
     """Dynamic coefficient K_din(t), lifting from weight. Eq (25), (27).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -229,18 +304,26 @@ def dynamic_coefficient(t):
         [1], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 0.0002706119018038394*np.cos(x0 - 25/8)
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [1 - 8/981*_sin_remainder(x0, 1),1031/981 - x1,-x1 + (8/981)*_sin_remainder(x0 - 25, 1) + 1031/981,1 - 3.589498954689488e-05*np.sin(x0 - 125/8)], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [1 - 8/981*_sin_remainder(x0, 1),1031/981 - x1,-x1 + (8/981)*_sin_remainder(x0 - 25, 1) + 1031/981,1 - 3.589498954689488e-05*np.sin(x0 - 125/8)], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def load_acceleration(t):
+def load_acceleration(t, *, out=None):
     """Load acceleration (C x - Q)/m2, lifting from weight. Eq (1), (57).
 
     Parameters
     ----------
     t : array_like
         time from the start of the drive [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -248,6 +331,12 @@ def load_acceleration(t):
         [m/s^2], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 0.0026547027566956646*np.cos(x0 - 25/8)
-    return np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [-2/25*_sin_remainder(x0, 1),1/2 - x1,-x1 + (2/25)*_sin_remainder(x0 - 25, 1) + 1/2,-0.0003521298474550387*np.sin(x0 - 125/8)], default=np.nan)
+    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [-2/25*_sin_remainder(x0, 1),1/2 - x1,-x1 + (2/25)*_sin_remainder(x0 - 25, 1) + 1/2,-0.0003521298474550387*np.sin(x0 - 125/8)], default=np.nan)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out

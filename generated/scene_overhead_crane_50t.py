@@ -49,13 +49,40 @@ def _checked(name, value, sign, what):
     return array
 
 
-def elastic_force(t):
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def elastic_force(t, *, out=None):
     """Force F(t) in the elastic link. Specialized to scene 'overhead_crane_50t'. Eq (14).
 
     Parameters
     ----------
     t : array_like
         time since the brake was applied [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -63,16 +90,27 @@ def elastic_force(t):
         [N], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    return (589000/13)*np.sin(13.314380468978918*t)**2
+    shape = _broadcast(t=t)
+    if out is None and not shape:
+        return (589000/13)*np.sin(13.314380468978918*t)**2
+    out = _out(out, shape)
+    np.multiply(t, 13.314380468978918, out=out)
+    np.sin(out, out=out)
+    np.square(out, out=out)
+    np.multiply(out, 589000, out=out)
+    np.divide(out, 13, out=out)
+    return out
 
 
-def velocity_m1(t):
+def velocity_m1(t, *, out=None):
     """Velocity of the motor-side mass m1. Specialized to scene 'overhead_crane_50t'. Eq (1), (13).
 
     Parameters
     ----------
     t : array_like
         time since the brake was applied [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -80,16 +118,24 @@ def velocity_m1(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    return -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
+    shape = _broadcast(t=t)
+    result = -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def velocity_m2(t):
+def velocity_m2(t, *, out=None):
     """Velocity of the crane-side mass m2. Specialized to scene 'overhead_crane_50t'. Eq (2), (13).
 
     Parameters
     ----------
     t : array_like
         time since the brake was applied [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -97,4 +143,10 @@ def velocity_m2(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    return -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
+    shape = _broadcast(t=t)
+    result = -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out

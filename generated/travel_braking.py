@@ -54,14 +54,28 @@ def _checked(name, value, sign, what):
 
 
 def _broadcast(**arrays):
-    """ValueError naming the arguments whose shapes do not broadcast together."""
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
     shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
-    if len(shapes) > 1:
-        try:
-            np.broadcast_shapes(*shapes.values())
-        except ValueError:
-            listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
-            raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
 
 
 def _two_product(a, b):
@@ -82,7 +96,7 @@ def _diff_of_products(a, b, c, d):
     return (p - q) + (p_err - q_err)
 
 
-def natural_frequency(m1, m2, c):
+def natural_frequency(m1, m2, c, *, out=None):
     """Natural frequency p of the relative motion. Eq (6).
 
     Parameters
@@ -93,6 +107,8 @@ def natural_frequency(m1, m2, c):
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
     c : array_like
         reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -102,11 +118,16 @@ def natural_frequency(m1, m2, c):
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
-    _broadcast(m1=m1, m2=m2, c=c)
-    return np.sqrt(c)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
+    shape = _broadcast(m1=m1, m2=m2, c=c)
+    result = np.sqrt(c)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def relative_displacement(t, m1, m2, c, P_t, W):
+def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
     """Stretch x2 - x1 of the elastic link. Eq (13).
 
     Parameters
@@ -123,6 +144,8 @@ def relative_displacement(t, m1, m2, c, P_t, W):
         braking force [N], > 0
     W : array_like
         static travel resistance [N], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -135,14 +158,21 @@ def relative_displacement(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
+    shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
     k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
     k1 = -2*_diff_of_products(W, m1, P_t, m2)/(c*x0)
-    return k1*np.sin(k0*t)**2
+    if out is None and not shape:
+        return k1*np.sin(k0*t)**2
+    out = _out(out, shape)
+    np.multiply(t, k0, out=out)
+    np.sin(out, out=out)
+    np.square(out, out=out)
+    np.multiply(out, k1, out=out)
+    return out
 
 
-def elastic_force(t, m1, m2, c, P_t, W):
+def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
     """Force F(t) in the elastic link. Eq (14).
 
     Parameters
@@ -159,6 +189,8 @@ def elastic_force(t, m1, m2, c, P_t, W):
         braking force [N], > 0
     W : array_like
         static travel resistance [N], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -171,14 +203,21 @@ def elastic_force(t, m1, m2, c, P_t, W):
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
+    shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
     k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
     k1 = -2*_diff_of_products(W, m1, P_t, m2)/x0
-    return k1*np.sin(k0*t)**2
+    if out is None and not shape:
+        return k1*np.sin(k0*t)**2
+    out = _out(out, shape)
+    np.multiply(t, k0, out=out)
+    np.sin(out, out=out)
+    np.square(out, out=out)
+    np.multiply(out, k1, out=out)
+    return out
 
 
-def peak_elastic_force(m1, m2, P_t, W):
+def peak_elastic_force(m1, m2, P_t, W, *, out=None):
     """Extreme link force F_max = F(pi/p); a maximum when P_t*m2 > W*m1. Eq (14).
 
     Parameters
@@ -191,6 +230,8 @@ def peak_elastic_force(m1, m2, P_t, W):
         braking force [N], > 0
     W : array_like
         static travel resistance [N], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -201,11 +242,16 @@ def peak_elastic_force(m1, m2, P_t, W):
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
-    return 2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2)
+    shape = _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
+    result = 2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def peak_time(m1, m2, c):
+def peak_time(m1, m2, c, *, out=None):
     """Time t_max = pi/p of the extreme link force. Eq (6), (14).
 
     Parameters
@@ -216,6 +262,8 @@ def peak_time(m1, m2, c):
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
     c : array_like
         reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -225,11 +273,16 @@ def peak_time(m1, m2, c):
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
-    _broadcast(m1=m1, m2=m2, c=c)
-    return 3.141592653589793*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2))
+    shape = _broadcast(m1=m1, m2=m2, c=c)
+    result = 3.141592653589793*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2))
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def rigid_link_force(m1, m2, P_t, W):
+def rigid_link_force(m1, m2, P_t, W, *, out=None):
     """Link force of a rigid drive (c -> oo), the static reference. Eq (14).
 
     Parameters
@@ -242,6 +295,8 @@ def rigid_link_force(m1, m2, P_t, W):
         braking force [N], > 0
     W : array_like
         static travel resistance [N], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -252,11 +307,16 @@ def rigid_link_force(m1, m2, P_t, W):
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
-    return -_diff_of_products(W, m1, P_t, m2)/(m1 + m2)
+    shape = _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
+    result = -_diff_of_products(W, m1, P_t, m2)/(m1 + m2)
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def velocity_m1(t, m1, m2, c, P_t, W, v0):
+def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     """Velocity of the motor-side mass m1. Eq (1), (13).
 
     Parameters
@@ -275,6 +335,8 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0):
         static travel resistance [N], >= 0
     v0 : array_like
         travel speed when braking begins [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -288,7 +350,7 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
-    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
+    shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
     x1 = np.sqrt(c)
     x2 = 1/np.sqrt(m1)
@@ -296,10 +358,15 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0):
     k0 = -(P_t + W)/x0
     k1 = np.sqrt(x0)*x1*x2/x3
     k2 = x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
-    return k0*t + k2*np.sin(k1*t) + v0
+    result = k0*t + k2*np.sin(k1*t) + v0
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
 
 
-def velocity_m2(t, m1, m2, c, P_t, W, v0):
+def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     """Velocity of the crane-side mass m2. Eq (2), (13).
 
     Parameters
@@ -318,6 +385,8 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0):
         static travel resistance [N], >= 0
     v0 : array_like
         travel speed when braking begins [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -331,7 +400,7 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
-    _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
+    shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
     x1 = np.sqrt(c)
     x2 = np.sqrt(m1)
@@ -339,4 +408,9 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0):
     k0 = -(P_t + W)/x0
     k1 = np.sqrt(x0)*x1*x3/x2
     k2 = -x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
-    return k0*t + k2*np.sin(k1*t) + v0
+    result = k0*t + k2*np.sin(k1*t) + v0
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out

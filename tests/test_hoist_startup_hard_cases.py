@@ -63,7 +63,8 @@ def _params(draw_omega, window_phase, m_ratio):
 
 def _call(name, t, p):
     f = getattr(gen, name)
-    return f(*[t if a == "t" else p[a] for a in inspect.signature(f).parameters])
+    return f(*[t if a == "t" else p[a] for a in inspect.signature(f).parameters
+               if a != "out"])
 
 
 @settings(max_examples=25, deadline=None, derandomize=True)

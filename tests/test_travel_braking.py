@@ -217,3 +217,18 @@ def test_exact_phases_on_request_reach_an_ulp_at_long_times(derivation, tmp_path
     columns = registry.module(ID).hard_cases()["p·t from 1e-9 to 1e3"]
     row = accuracy(out, module.elastic_force, "p·t from 1e-9 to 1e3", columns)
     assert row.max_rel_error <= 1e-15
+
+
+def test_in_place_evaluation_writes_into_out_and_matches(gen):
+    """elastic_force is a chain: with out= it fills the caller's buffer and
+    returns it; the values equal those of a fresh call; a wrong buffer is named."""
+    import numpy as np
+    t = np.linspace(0.0, 1.5, 1001)
+    args = (4.4e3, 110e3, 3e6, 24e3, 11e3)
+    fresh = gen.elastic_force(t, *args)
+    buf = np.full(t.shape, np.nan)
+    assert gen.elastic_force(t, *args, out=buf) is buf
+    np.testing.assert_array_equal(buf, fresh)
+    assert np.ndim(gen.elastic_force(0.1, *args)) == 0       # scalars stay scalars
+    with pytest.raises(ValueError, match="out must be a writeable float64 array"):
+        gen.elastic_force(t, *args, out=np.empty(5))
