@@ -295,12 +295,7 @@ def render_function(out: Output, table: SymbolTable,
                 heavy.add(sym)
         steps = chain(final, heavy, printer.doprint)
         if steps is None:                        # not a chain: NumPy as printed
-            lines += [f"    result = {printer.doprint(final)}",
-                      "    if out is None:",
-                      "        return result",
-                      "    out = _out(out, shape)",
-                      "    np.copyto(out, result)",
-                      "    return out"]
+            lines.append(f"    return _into(out, shape, {printer.doprint(final)})")
         else:                                    # one buffer, one pass per node
             lines += ["    if out is None and not shape:",
                       f"        return {printer.doprint(final)}",

@@ -67,6 +67,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _two_sum(a, b):
     """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
     s = a + b
@@ -311,7 +320,7 @@ def _matrix(shape, elements):
 
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {
-    "_checked": (), "_broadcast": (), "_out": (),
+    "_checked": (), "_broadcast": (), "_out": (), "_into": ("_out",),
     "_two_sum": (), "_quick_two_sum": (), "_two_product": (),
     "_diff_of_products": ("_two_product",),
     "_dd": (),

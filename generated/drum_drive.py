@@ -86,6 +86,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _matrix(shape, elements):
     """Row-major ``elements`` as an array of ``shape`` followed by the
     broadcast shape of the elements (a matrix per input point)."""
@@ -113,12 +122,7 @@ def branch_effective_mass(q, L, *, out=None):
     q = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     shape = _broadcast(q=q, L=L)
-    result = (1/3)*L*q
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, (1/3)*L*q)
 
 
 def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
@@ -153,12 +157,7 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
     x0 = I1 + I2
     x1 = C1*x0/I1
     x2 = C2*(I2 + I3)/I3
-    result = 1.4142135623730951*np.sqrt(C1)*np.sqrt(C2)*np.sqrt(I3 + x0)/(np.sqrt(I1)*np.sqrt(I3)*np.sqrt(x1 + x2 + np.sqrt(4*C1*C2 + (x1 - x2)**2)))
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 1.4142135623730951*np.sqrt(C1)*np.sqrt(C2)*np.sqrt(I3 + x0)/(np.sqrt(I1)*np.sqrt(I3)*np.sqrt(x1 + x2 + np.sqrt(4*C1*C2 + (x1 - x2)**2))))
 
 
 def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
@@ -192,12 +191,7 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
     shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = C1*(I1 + I2)/I1
     x1 = C2*(I2 + I3)/I3
-    result = 0.7071067811865476*np.sqrt(x0 + x1 + np.sqrt(4*C1*C2 + (x0 - x1)**2))/np.sqrt(I2)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 0.7071067811865476*np.sqrt(x0 + x1 + np.sqrt(4*C1*C2 + (x0 - x1)**2))/np.sqrt(I2))
 
 
 def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
@@ -236,12 +230,7 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     x1 = C_y*C_z
     x2 = 4*C_t*C_z
     x3 = D*F0
-    result = (2*M0*x0 + M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, (2*M0*x0 + M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2)))
 
 
 def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
@@ -280,12 +269,7 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     x1 = C_y*C_z
     x2 = 4*C_t*C_z
     x3 = D*F0
-    result = (-2*M0*x1 - M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2))
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, (-2*M0*x1 - M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2)))
 
 
 def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
@@ -321,12 +305,7 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
     C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
     shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = D*F0
-    result = 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z))
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z)))
 
 
 def drum_torque(F1, F2, D, *, out=None):
@@ -352,12 +331,7 @@ def drum_torque(F1, F2, D, *, out=None):
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
     shape = _broadcast(F1=F1, F2=F2, D=D)
-    result = (1/2)*D*(F1 - F2)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, (1/2)*D*(F1 - F2))
 
 
 def traction_margin(F1, F2, mu, alpha, *, out=None):
@@ -386,12 +360,7 @@ def traction_margin(F1, F2, mu, alpha, *, out=None):
     mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1')
     alpha = _checked('alpha', alpha, 'positive', 'wrap angle of the element on the drum, rad')
     shape = _broadcast(F1=F1, F2=F2, mu=mu, alpha=alpha)
-    result = -5/4*F1/F2 + np.exp(alpha*mu)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, -5/4*F1/F2 + np.exp(alpha*mu))
 
 
 def least_mu_alpha(F1, F2, *, out=None):
@@ -414,12 +383,7 @@ def least_mu_alpha(F1, F2, *, out=None):
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     shape = _broadcast(F1=F1, F2=F2)
-    result = np.log((5/4)*F1/F2)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.log((5/4)*F1/F2))
 
 
 def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None):
@@ -473,12 +437,7 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
     k5 = (1/4)*F1_t
     k7 = (1/4)*F3_t
     k8 = (1/4)*K1 + (1/4)*K3
-    result = k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3))
 
 
 def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r, M0, F0, W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10):

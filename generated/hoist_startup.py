@@ -95,6 +95,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _two_sum(a, b):
     """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
     s = a + b
@@ -500,12 +509,7 @@ def natural_frequency(m1, m2, C, *, out=None):
     m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
     shape = _broadcast(m1=m1, m2=m2, C=C)
-    result = np.sqrt(C)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.sqrt(C)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2)))
 
 
 def pickup_contact_time(m2, g, C, v0, *, out=None):
@@ -534,12 +538,7 @@ def pickup_contact_time(m2, g, C, v0, *, out=None):
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
     v0 = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
     shape = _broadcast(m2=m2, g=g, C=C, v0=v0)
-    result = g*m2/(C*v0)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, g*m2/(C*v0))
 
 
 def dynamic_coefficient_instant(t, Omega, *, out=None):
@@ -597,12 +596,7 @@ def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     shape = _broadcast(t=t, Omega=Omega, t_n=t_n)
     k0 = -1/(Omega*t_n)
-    result = k0*_sin_remainder(Omega*t, 1)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k0*_sin_remainder(Omega*t, 1))
 
 
 def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
@@ -631,12 +625,7 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     x0 = Omega*theta
     k0 = 2*np.sin((1/2)*x0)**2
     k1 = np.sin(x0)
-    result = np.select([np.less_equal(t, theta),True], [2*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k0, k1, _exact_phase(Omega, t, theta))], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, theta),True], [2*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k0, k1, _exact_phase(Omega, t, theta))], default=np.nan))
 
 
 def pulse_peak_factor(Omega, theta, *, out=None):
@@ -659,12 +648,7 @@ def pulse_peak_factor(Omega, theta, *, out=None):
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
     shape = _broadcast(Omega=Omega, theta=theta)
-    result = np.select([np.less(theta, 3.141592653589793/Omega),True], [2*np.sin((1/2)*Omega*theta),2], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(theta, 3.141592653589793/Omega),True], [2*np.sin((1/2)*Omega*theta),2], default=np.nan))
 
 
 def pulse_peak_time(Omega, theta, *, out=None):
@@ -689,12 +673,7 @@ def pulse_peak_time(Omega, theta, *, out=None):
     shape = _broadcast(Omega=Omega, theta=theta)
     x0 = 1/(Omega)
     x1 = 3.141592653589793*x0
-    result = np.select([np.less(theta, x1),True], [(1/2)*theta + 1.5707963267948966*x0,x1], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(theta, x1),True], [(1/2)*theta + 1.5707963267948966*x0,x1], default=np.nan))
 
 
 def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
@@ -725,12 +704,7 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     k1 = _entire_1(x0)
     k2 = _entire_2(x0)
     k3 = _entire_3(x0)
-    result = np.select([np.less_equal(t, theta),True], [k0*_entire_4(_exact_phase(Omega, t)),_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta))], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, theta),True], [k0*_entire_4(_exact_phase(Omega, t)),_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta))], default=np.nan))
 
 
 def ramp_hold_peak_factor(Omega, theta, *, out=None):
@@ -753,12 +727,7 @@ def ramp_hold_peak_factor(Omega, theta, *, out=None):
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
     shape = _broadcast(Omega=Omega, theta=theta)
-    result = 1 + 2*abs(np.sin((1/2)*Omega*theta))/(Omega*theta)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 1 + 2*abs(np.sin((1/2)*Omega*theta))/(Omega*theta))
 
 
 def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -817,12 +786,7 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k5 = _entire_1(x8)
     k6 = _entire_2(x8)
     k7 = _entire_3(x8)
-    result = k0*x10 + np.select([np.less_equal(t, tau_0),True], [k4*_entire_4(x9),x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x10*x5,_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k0*x10 + np.select([np.less_equal(t, tau_0),True], [k4*_entire_4(x9),x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x10*x5,_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan))
 
 
 def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -879,12 +843,7 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k6 = _entire_1(x6)
     k7 = _entire_2(x6)
     k8 = _entire_3(x6)
-    result = k0*_sin_pair(x7, 0.5)**2 + np.select([np.less_equal(t, tau_0),True], [k5*_entire_4(x7),x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x3*(k1*(-t + t_n)*_entire_7(x7) + _entire_5(x7)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k0*_sin_pair(x7, 0.5)**2 + np.select([np.less_equal(t, tau_0),True], [k5*_entire_4(x7),x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x3*(k1*(-t + t_n)*_entire_7(x7) + _entire_5(x7)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan))
 
 
 def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -942,12 +901,7 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k7 = 48*x0*x5/t_n**2
     k8 = -24*x7*_entire_8(x6)
     k9 = -72*x7*_entire_9(x6)
-    result = np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x8),x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k7*(x4*x9*(x4*x9*_entire_10(x8) + _entire_11(x8)) + _entire_12(x8)),_wave(k8, k9, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x8, 0.5)**2
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x8),x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k7*(x4*x9*(x4*x9*_entire_10(x8) + _entire_11(x8)) + _entire_12(x8)),_wave(k8, k9, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x8, 0.5)**2)
 
 
 def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -1004,12 +958,7 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k8 = -120*x4/(Omega**2*t_n**3)
     k9 = -2880*x6*_entire_13(x5)
     k10 = -7200*x6*_entire_14(x5)
-    result = np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x7),x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k8*(x3*x8*(x3*x8*(x3*x8*_entire_15(x7) + _entire_16(x7)) + _entire_17(x7)) + _entire_18(x7)),_wave(k9, k10, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x7, 0.5)**2
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x7),x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k8*(x3*x8*(x3*x8*(x3*x8*_entire_15(x7) + _entire_16(x7)) + _entire_17(x7)) + _entire_18(x7)),_wave(k9, k10, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x7, 0.5)**2)
 
 
 def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1055,12 +1004,7 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     k1 = x3*np.sin((1/2)*x4)**2
     k2 = x2*np.sin(x4)
     k3 = x0*x1
-    result = k3 + np.select([np.less_equal(t, t_n),True], [x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k1, k2, _exact_phase(Omega, t, t_n))], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k3 + np.select([np.less_equal(t, t_n),True], [x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k1, k2, _exact_phase(Omega, t, t_n))], default=np.nan))
 
 
 def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1107,12 +1051,7 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     k2 = x2*_entire_5(x3)
     k3 = -x2*_entire_6(x3)
     k4 = x0*x1
-    result = k4 + np.select([np.less_equal(t, t_n),True], [x2*(k0*(-t + t_n)*_entire_7(x4) + _entire_5(x4)),_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k4 + np.select([np.less_equal(t, t_n),True], [x2*(k0*(-t + t_n)*_entire_7(x4) + _entire_5(x4)),_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan))
 
 
 def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1159,12 +1098,7 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     k2 = 48*x1/(Omega*t_n**2)
     k3 = -24*x3*_entire_8(x2)
     k4 = -72*x3*_entire_9(x2)
-    result = np.select([np.less_equal(t, t_n),True], [k2*(x0*x5*(x0*x5*_entire_10(x4) + _entire_11(x4)) + _entire_12(x4)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, t_n),True], [k2*(x0*x5*(x0*x5*_entire_10(x4) + _entire_11(x4)) + _entire_12(x4)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan) + 1)
 
 
 def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1211,12 +1145,7 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     k3 = -120*x1/(Omega**2*t_n**3)
     k4 = -2880*x3*_entire_13(x2)
     k5 = -7200*x3*_entire_14(x2)
-    result = np.select([np.less_equal(t, t_n),True], [k3*(x0*x5*(x0*x5*(x0*x5*_entire_15(x4) + _entire_16(x4)) + _entire_17(x4)) + _entire_18(x4)),_wave(k4, k5, _exact_phase(Omega, t, t_n))], default=np.nan) + 1
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, t_n),True], [k3*(x0*x5*(x0*x5*(x0*x5*_entire_15(x4) + _entire_16(x4)) + _entire_17(x4)) + _entire_18(x4)),_wave(k4, k5, _exact_phase(Omega, t, t_n))], default=np.nan) + 1)
 
 
 def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
@@ -1239,12 +1168,7 @@ def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     shape = _broadcast(t=t, t_n=t_n)
-    result = 1
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 1)
 
 
 def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
@@ -1279,12 +1203,7 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     k0 = g*t_n
     k1 = tau_0*v0
     k2 = 1/(tau_0*v0)
-    result = np.select([np.less_equal(t, tau_0),True], [k2*(k0*t + k1),1], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k2*(k0*t + k1),1], default=np.nan))
 
 
 def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
@@ -1351,12 +1270,7 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     k0 = g*t_n**2
     k2 = -tau_0*v0
     k3 = x1/(tau_0*v0)
-    result = np.select([np.less_equal(t, tau_0),True], [k3*(k0*t + k2*(t + x0)),x1*(-t - x0)], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*(k0*t + k2*(t + x0)),x1*(-t - x0)], default=np.nan))
 
 
 def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
@@ -1381,12 +1295,7 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = 12/t_n**3
-    result = k1*t*(k0 + t)**2
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k1*t*(k0 + t)**2)
 
 
 def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
@@ -1424,12 +1333,7 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     k2 = g*t_n**4
     k3 = x1/(tau_0*v0)
     k5 = 12*x1
-    result = np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*(t + x0)**2 + k2),k5*t*(t + x0)**2], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*(t + x0)**2 + k2),k5*t*(t + x0)**2], default=np.nan))
 
 
 def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
@@ -1454,12 +1358,7 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -60/t_n**5
-    result = k1*t**2*(k0 + t)**3
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k1*t**2*(k0 + t)**3)
 
 
 def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
@@ -1497,9 +1396,4 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     k2 = g*t_n**6
     k3 = x1/(tau_0*v0)
     k5 = -60*x1
-    result = np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*t*(t + x0)**3 + k2),k5*t**2*(t + x0)**3], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*t*(t + x0)**3 + k2),k5*t**2*(t + x0)**3], default=np.nan))

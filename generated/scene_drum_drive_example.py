@@ -72,6 +72,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def pulsating_force(t, *, out=None):
     """Pulsating load F'(t) of (21), as printed. Specialized to scene 'drum_drive_example'. Eq (21).
 
@@ -90,9 +99,4 @@ def pulsating_force(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     x0 = np.sin(1.0471975511965979*t)
-    result = 450*x0 - 150*abs(3*x0 - 2) + 300
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 450*x0 - 150*abs(3*x0 - 2) + 300)

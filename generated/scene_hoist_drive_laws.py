@@ -83,6 +83,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _two_sum(a, b):
     """a + b as an unevaluated sum s + e of two doubles, exactly (Knuth)."""
     s = a + b
@@ -236,12 +245,7 @@ def dynamic_coefficient_pickup_a1(t, *, out=None):
     x0 = _exact_phase(25, t)
     x1 = _sin_pair(x0, 0.5)**2
     x2 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    result = (11045078086126142/5698460903507231)*x1 + np.select([np.less_equal(t, 1),True], [(351843720888320/5698460903507231)*x1,_wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x2, 0.5)**2 + 0.0306871573751505*_sin_pair(x2, 1.0) + 0.21141077704121883], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, (11045078086126142/5698460903507231)*x1 + np.select([np.less_equal(t, 1),True], [(351843720888320/5698460903507231)*x1,_wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x2, 0.5)**2 + 0.0306871573751505*_sin_pair(x2, 1.0) + 0.21141077704121883], default=np.nan))
 
 
 def dynamic_coefficient_pickup_a2(t, *, out=None):
@@ -263,12 +267,7 @@ def dynamic_coefficient_pickup_a2(t, *, out=None):
     shape = _broadcast(t=t)
     x0 = _exact_phase(25, t)
     x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    result = np.select([np.less_equal(t, 1),True], [(175921860444160/5698460903507231)*_entire_2(x0),_wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x1, 0.5)**2 + 0.0306871573751505*_sin_pair(x1, 1.0) + 0.21141077704121883], default=np.nan) + (11045078086126142/5698460903507231)*_sin_pair(x0, 0.5)**2
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(175921860444160/5698460903507231)*_entire_2(x0),_wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x1, 0.5)**2 + 0.0306871573751505*_sin_pair(x1, 1.0) + 0.21141077704121883], default=np.nan) + (11045078086126142/5698460903507231)*_sin_pair(x0, 0.5)**2)
 
 
 def dynamic_coefficient_pickup_a3(t, *, out=None):
@@ -290,12 +289,7 @@ def dynamic_coefficient_pickup_a3(t, *, out=None):
     shape = _broadcast(t=t)
     x0 = _exact_phase(25, t)
     x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    result = np.select([np.less_equal(t, 1),True], [(1688849860263936/690317380382883875)*_entire_3(x0),_wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(1688849860263936/690317380382883875)*_entire_3(x0),_wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2)
 
 
 def dynamic_coefficient_pickup_a4(t, *, out=None):
@@ -317,12 +311,7 @@ def dynamic_coefficient_pickup_a4(t, *, out=None):
     shape = _broadcast(t=t)
     x0 = _exact_phase(25, t)
     x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    result = np.select([np.less_equal(t, 1),True], [-497366283847729152/86289672547860484375*_entire_4(x0),_wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, 1),True], [-497366283847729152/86289672547860484375*_entire_4(x0),_wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2)
 
 
 def dynamic_coefficient_from_weight_a1(t, *, out=None):
@@ -342,12 +331,7 @@ def dynamic_coefficient_from_weight_a1(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = np.select([np.less_equal(t, 1),True], [(281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2,_wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2,_wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399)
 
 
 def dynamic_coefficient_from_weight_a2(t, *, out=None):
@@ -367,12 +351,7 @@ def dynamic_coefficient_from_weight_a2(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = np.select([np.less_equal(t, 1),True], [(140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)),_wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)),_wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399)
 
 
 def dynamic_coefficient_from_weight_a3(t, *, out=None):
@@ -392,12 +371,7 @@ def dynamic_coefficient_from_weight_a3(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = np.select([np.less_equal(t, 1),True], [(6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)),_wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))], default=np.nan) + 1
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)),_wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))], default=np.nan) + 1)
 
 
 def dynamic_coefficient_from_weight_a4(t, *, out=None):
@@ -417,12 +391,7 @@ def dynamic_coefficient_from_weight_a4(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = np.select([np.less_equal(t, 1),True], [-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)),_wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))], default=np.nan) + 1
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less_equal(t, 1),True], [-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)),_wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))], default=np.nan) + 1)
 
 
 def optimal_coefficient_from_weight_a1(t, *, out=None):
@@ -442,12 +411,7 @@ def optimal_coefficient_from_weight_a1(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = 1
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 1)
 
 
 def optimal_coefficient_from_weight_a2(t, *, out=None):
@@ -492,12 +456,7 @@ def optimal_coefficient_from_weight_a3(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = 12*t*(t - 1)**2
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 12*t*(t - 1)**2)
 
 
 def optimal_coefficient_from_weight_a4(t, *, out=None):
@@ -517,9 +476,4 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = -60*t**2*(t - 1)**3
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, -60*t**2*(t - 1)**3)

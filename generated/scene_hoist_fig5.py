@@ -72,6 +72,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -136,9 +145,4 @@ def dynamic_coefficient_ramp(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    result = -1/25*_sin_remainder(25*t, 1)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, -1/25*_sin_remainder(25*t, 1))

@@ -81,6 +81,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -146,12 +155,7 @@ def drive_acceleration(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     x0 = 2*t
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,1/2,5/2 - x0,0], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,1/2,5/2 - x0,0], default=np.nan))
 
 
 def drive_speed(t, *, out=None):
@@ -172,12 +176,7 @@ def drive_speed(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     x0 = t**2
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,(5/2)*t - x0 - 17/16,1/2], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,(5/2)*t - x0 - 17/16,1/2], default=np.nan))
 
 
 def relative_forcing(t, *, out=None):
@@ -198,12 +197,7 @@ def relative_forcing(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     x0 = 10*t
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0 + 981/20,1031/20,1231/20 - x0,981/20], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0 + 981/20,1031/20,1231/20 - x0,981/20], default=np.nan))
 
 
 def rope_stretch(t, *, out=None):
@@ -225,12 +219,7 @@ def rope_stretch(t, *, out=None):
     shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 2.1237622053565318e-05*np.cos(x0 - 25/8)
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [981/12500 - 2/3125*_sin_remainder(x0, 1),1031/12500 - x1,-x1 + (2/3125)*_sin_remainder(x0 - 25, 1) + 1031/12500,981/12500 - 2.81703877964031e-06*np.sin(x0 - 125/8)], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [981/12500 - 2/3125*_sin_remainder(x0, 1),1031/12500 - x1,-x1 + (2/3125)*_sin_remainder(x0 - 25, 1) + 1031/12500,981/12500 - 2.81703877964031e-06*np.sin(x0 - 125/8)], default=np.nan))
 
 
 def rope_stretch_rate(t, *, out=None):
@@ -253,12 +242,7 @@ def rope_stretch_rate(t, *, out=None):
     x0 = (25/2)*t
     x1 = 25*t
     x2 = np.sin(x1 - 25/8)
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*np.sin(x0)**2,0.0005309405513391329*x2,0.0005309405513391329*x2 - 4/125*np.sin(x0 - 25/2)**2,-7.042596949100774e-05*np.cos(x1 - 125/8)], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*np.sin(x0)**2,0.0005309405513391329*x2,0.0005309405513391329*x2 - 4/125*np.sin(x0 - 25/2)**2,-7.042596949100774e-05*np.cos(x1 - 125/8)], default=np.nan))
 
 
 def rope_force(t, *, out=None):
@@ -280,12 +264,7 @@ def rope_force(t, *, out=None):
     shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 21.237622053565318*np.cos(x0 - 25/8)
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [78480 - 640*_sin_remainder(x0, 1),82480 - x1,-x1 + 640*_sin_remainder(x0 - 25, 1) + 82480,78480 - 2.81703877964031*np.sin(x0 - 125/8)], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [78480 - 640*_sin_remainder(x0, 1),82480 - x1,-x1 + 640*_sin_remainder(x0 - 25, 1) + 82480,78480 - 2.81703877964031*np.sin(x0 - 125/8)], default=np.nan))
 
 
 def dynamic_coefficient(t, *, out=None):
@@ -307,12 +286,7 @@ def dynamic_coefficient(t, *, out=None):
     shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 0.0002706119018038394*np.cos(x0 - 25/8)
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [1 - 8/981*_sin_remainder(x0, 1),1031/981 - x1,-x1 + (8/981)*_sin_remainder(x0 - 25, 1) + 1031/981,1 - 3.589498954689488e-05*np.sin(x0 - 125/8)], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [1 - 8/981*_sin_remainder(x0, 1),1031/981 - x1,-x1 + (8/981)*_sin_remainder(x0 - 25, 1) + 1031/981,1 - 3.589498954689488e-05*np.sin(x0 - 125/8)], default=np.nan))
 
 
 def load_acceleration(t, *, out=None):
@@ -334,9 +308,4 @@ def load_acceleration(t, *, out=None):
     shape = _broadcast(t=t)
     x0 = 25*t
     x1 = 0.0026547027566956646*np.cos(x0 - 25/8)
-    result = np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [-2/25*_sin_remainder(x0, 1),1/2 - x1,-x1 + (2/25)*_sin_remainder(x0 - 25, 1) + 1/2,-0.0003521298474550387*np.sin(x0 - 125/8)], default=np.nan)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [-2/25*_sin_remainder(x0, 1),1/2 - x1,-x1 + (2/25)*_sin_remainder(x0 - 25, 1) + 1/2,-0.0003521298474550387*np.sin(x0 - 125/8)], default=np.nan))

@@ -74,6 +74,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def elastic_force(t, *, out=None):
     """Force F(t) in the elastic link. Specialized to scene 'overhead_crane_50t'. Eq (14).
 
@@ -119,12 +128,7 @@ def velocity_m1(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     shape = _broadcast(t=t)
-    result = -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496)
 
 
 def velocity_m2(t, *, out=None):
@@ -144,9 +148,4 @@ def velocity_m2(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     shape = _broadcast(t=t)
-    result = -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496)

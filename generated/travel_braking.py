@@ -78,6 +78,15 @@ def _out(out, shape):
     return out
 
 
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _two_product(a, b):
     """a*b as an unevaluated sum p + e of two doubles, exactly (Dekker)."""
     p = a * b
@@ -119,12 +128,7 @@ def natural_frequency(m1, m2, c, *, out=None):
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     shape = _broadcast(m1=m1, m2=m2, c=c)
-    result = np.sqrt(c)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2))
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, np.sqrt(c)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2)))
 
 
 def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
@@ -243,12 +247,7 @@ def peak_elastic_force(m1, m2, P_t, W, *, out=None):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     shape = _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
-    result = 2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2))
 
 
 def peak_time(m1, m2, c, *, out=None):
@@ -274,12 +273,7 @@ def peak_time(m1, m2, c, *, out=None):
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
     shape = _broadcast(m1=m1, m2=m2, c=c)
-    result = 3.141592653589793*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2))
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, 3.141592653589793*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2)))
 
 
 def rigid_link_force(m1, m2, P_t, W, *, out=None):
@@ -308,12 +302,7 @@ def rigid_link_force(m1, m2, P_t, W, *, out=None):
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     shape = _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
-    result = -_diff_of_products(W, m1, P_t, m2)/(m1 + m2)
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, -_diff_of_products(W, m1, P_t, m2)/(m1 + m2))
 
 
 def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
@@ -358,12 +347,7 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     k0 = -(P_t + W)/x0
     k1 = np.sqrt(x0)*x1*x2/x3
     k2 = x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
-    result = k0*t + k2*np.sin(k1*t) + v0
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k0*t + k2*np.sin(k1*t) + v0)
 
 
 def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
@@ -408,9 +392,4 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     k0 = -(P_t + W)/x0
     k1 = np.sqrt(x0)*x1*x3/x2
     k2 = -x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
-    result = k0*t + k2*np.sin(k1*t) + v0
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
+    return _into(out, shape, k0*t + k2*np.sin(k1*t) + v0)
