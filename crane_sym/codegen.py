@@ -43,6 +43,9 @@ class _Printer(NumPyPrinter):
     def _print_Pi(self, expr: sp.Basic) -> str:
         return "np.pi"
 
+    def _print_joined_sqrt(self, expr: sp.Basic) -> str:
+        return f"np.sqrt({self._print(expr.args[0])})"
+
     def _print_diff_of_products(self, expr: sp.Basic) -> str:
         return "_diff_of_products(" + ", ".join(self._print(a) for a in expr.args) + ")"
 
@@ -166,6 +169,25 @@ def render_helper(key: int, name: str) -> str:
             f"                         ({coeffs},))\n")
 
 
+class joined_sqrt(sp.Function):  # noqa: N801 (a SymPy function node)
+    """√x kept whole: SymPy would split the root of a product of positive symbols."""
+
+    nargs = 1
+
+
+def _one_root(e: sp.Expr) -> sp.Expr:
+    """√a·√b/(√c·√d) as one √(a·b/(c·d)): one rounding of the root instead of
+    one per factor."""
+    if not isinstance(e, sp.Mul):
+        return e
+    roots = [f for f in e.args if isinstance(f, sp.Pow) and f.exp in (sp.S.Half, -sp.S.Half)]
+    if len(roots) < 2:
+        return e
+    inside = sp.Mul(*[f.base ** (2 * f.exp) for f in roots])
+    rest = [f for f in e.args if f not in roots]
+    return sp.Mul(*rest, joined_sqrt(inside))
+
+
 def hoist(expr: sp.Expr, varying: set[sp.Symbol]
           ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
     """Pull every parameter-only factor or term out of the array expression.
@@ -186,7 +208,7 @@ def hoist(expr: sp.Expr, varying: set[sp.Symbol]
         if e.is_Symbol or e.is_Number:
             return e
         k = next(names)
-        assignments.append((k, e))
+        assignments.append((k, _one_root(e)))
         return k
 
     def visit(e: sp.Expr) -> sp.Expr:

@@ -164,7 +164,7 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
-    k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
+    k0 = (1/2)*np.sqrt(c*x0/(m1*m2))
     k1 = -2*_diff_of_products(W, m1, P_t, m2)/(c*x0)
     if out is None and not shape:
         return k1*np.sin(k0*t)**2
@@ -209,7 +209,7 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
-    k0 = (1/2)*np.sqrt(c)*np.sqrt(x0)/(np.sqrt(m1)*np.sqrt(m2))
+    k0 = (1/2)*np.sqrt(c*x0/(m1*m2))
     k1 = -2*_diff_of_products(W, m1, P_t, m2)/x0
     if out is None and not shape:
         return k1*np.sin(k0*t)**2
@@ -341,12 +341,10 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
-    x1 = np.sqrt(c)
-    x2 = 1/np.sqrt(m1)
-    x3 = np.sqrt(m2)
+    x1 = 1/(m1)
     k0 = -(P_t + W)/x0
-    k1 = np.sqrt(x0)*x1*x2/x3
-    k2 = x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
+    k1 = np.sqrt(c*x0*x1/m2)
+    k2 = _diff_of_products(W, m1, P_t, m2)*np.sqrt(m2*x1/c)/x0**(3/2)
     return _into(out, shape, k0*t + k2*np.sin(k1*t) + v0)
 
 
@@ -386,10 +384,8 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
-    x1 = np.sqrt(c)
-    x2 = np.sqrt(m1)
-    x3 = 1/np.sqrt(m2)
+    x1 = 1/(m2)
     k0 = -(P_t + W)/x0
-    k1 = np.sqrt(x0)*x1*x3/x2
-    k2 = -x2*x3*_diff_of_products(W, m1, P_t, m2)/(x0**(3/2)*x1)
+    k1 = np.sqrt(c*x0*x1/m1)
+    k2 = -_diff_of_products(W, m1, P_t, m2)*np.sqrt(m1*x1/c)/x0**(3/2)
     return _into(out, shape, k0*t + k2*np.sin(k1*t) + v0)

@@ -232,3 +232,24 @@ def test_in_place_evaluation_writes_into_out_and_matches(gen):
     assert np.ndim(gen.elastic_force(0.1, *args)) == 0       # scalars stay scalars
     with pytest.raises(ValueError, match="out must be a writeable float64 array"):
         gen.elastic_force(t, *args, out=np.empty(5))
+
+
+def test_elastic_force_to_the_last_bit_on_random_designs(gen):
+    """The frequency is one joined root (one rounding, not seven), so (14) holds
+    1e-15 relative on random designs with p·t from 1e-9 to 1, against mpmath."""
+    import mpmath
+    import numpy as np
+    rng = np.random.default_rng(7)
+    n = 3000
+    m1, m2 = 10 ** rng.uniform(2, 5, n), 10 ** rng.uniform(3, 6, n)
+    c, P_t, W = 10 ** rng.uniform(5, 8, n), 10 ** rng.uniform(3, 5, n), 10 ** rng.uniform(2, 4, n)
+    t = 10 ** rng.uniform(-9, 0, n) / np.sqrt(c * (m1 + m2) / (m1 * m2))
+    got = gen.elastic_force(t, m1, m2, c, P_t, W)
+    worst = 0.0
+    with mpmath.workdps(40):
+        for i in range(n):
+            M1, M2, C, P, WW, T = (mpmath.mpf(float(a[i])) for a in (m1, m2, c, P_t, W, t))
+            p = mpmath.sqrt(C * (M1 + M2) / (M1 * M2))
+            ref = (P * M2 - WW * M1) / (M1 + M2) * (1 - mpmath.cos(p * T))
+            worst = max(worst, float(abs((got[i] - ref) / ref)))
+    assert worst <= 1e-15, worst
