@@ -50,7 +50,7 @@ def _checked(name, value, sign, what):
 def _broadcast(**arrays):
     """The broadcast shape of the arguments; ValueError naming those that do
     not broadcast together."""
-    shapes = {k: np.shape(v) for k, v in arrays.items() if np.ndim(v)}
+    shapes = {k: v.shape for k, v in arrays.items() if v.ndim}  # _checked's arrays
     if len(shapes) < 2:
         return next(iter(shapes.values()), ())
     try:
