@@ -99,7 +99,7 @@ def plot_report(report: SceneReport, title: str, path: Path) -> Path:
             ax.set(title=panel.title, xlabel=panel.xlabel, ylabel=panel.ylabel)
             ax.grid(True, alpha=0.4)
             if len(panel.curves) > 1:
-                ax.legend(loc="lower right", framealpha=0.9)
+                ax.legend(loc="best", framealpha=0.9)
         fig.suptitle(title)
         fig.savefig(path, dpi=120, metadata={"Software": None})
     finally:

@@ -1,0 +1,454 @@
+"""Numeric functions for derivation 'portal_travel'. Generated; do not edit.
+
+Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
+Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    operating_pressure_angle(m, z1, z2, a_w, alpha) -> [rad]    eq Form 1, alpha_tw
+    shift_sum(m, z1, z2, a_w, alpha) -> [1]    eq Form 1, x_sum
+    tip_diameter(m, z, x, h_a, dy) -> [m]    eq Form 1, d_a1
+    tip_thickness(m, z, x, alpha, h_a, dy) -> [m]    eq Form 1, s_a1
+    contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2) -> [1]    eq Form 1, epsilon_alpha
+    tip_thickness_shift(z, alpha, h_a, dy, sigma) -> [1]    eq pointed tip
+    pointed_tip_shift(z, alpha, h_a, dy) -> [1]    eq pointed tip
+    undercut_limit(z, alpha, h_a) -> [1]    eq undercut limit
+    max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c) -> [N]    eq (3), (4)
+"""
+
+import numpy as np
+
+__all__ = ['operating_pressure_angle', 'shift_sum', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'max_support_load']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _involute(a):
+    """inv a = tan a - a, without the cancellation of tan a - a at small a.
+
+    Below |a| = 0.6 the Taylor series a³·Σ c_k a^(2k) (28 terms, truncation
+    < 1e-18 relative) is summed by Horner's rule; above, tan a - a has lost
+    at most a factor a/(tan a - a) < 8 to cancellation."""
+    a = np.asarray(a, dtype=float)
+    coeffs = (0.3333333333333333, 0.13333333333333333, 0.05396825396825397,
+              0.021869488536155203, 0.008863235529902197, 0.003592128036572481,
+              0.0014558343870513183, 0.000590027440945586, 0.00023912911424355248,
+              9.691537956929451e-05, 3.927832388331683e-05, 1.5918905069328964e-05,
+              6.451689215655431e-06, 2.6147711512907546e-06, 1.0597268320104654e-06,
+              4.294911078273806e-07, 1.7406618963571648e-07, 7.054636946400968e-08,
+              2.859136662305254e-08, 1.1587644432798853e-08, 4.6962953982309016e-09,
+              1.903336833931276e-09, 7.713933635359062e-10, 3.126339545892087e-10,
+              1.26705769303054e-10, 5.135191408039368e-11, 2.0812146867700473e-11,
+              8.434845419094337e-12)
+    small = np.abs(a) < 0.6
+    y = np.where(small, a * a, 0.0)
+    total = np.zeros_like(y)
+    for c in coeffs[::-1]:
+        total = total * y + c
+    series = a * y * total
+    with np.errstate(invalid="ignore", over="ignore"):
+        closed = np.tan(np.where(small, 1.0, a)) - np.where(small, 1.0, a)
+    return np.where(small, series, closed)
+
+
+def _acos_checked(x, what):
+    """arccos x, or ValueError(what) when |x| > 1 (an impossible geometry)."""
+    x = np.asarray(x, dtype=float)
+    if np.any(np.abs(x) > 1.0):
+        worst = float(x.flat[int(np.argmax(np.abs(x)))])
+        raise ValueError(f"{what} (the cosine would be {worst!r})")
+    return np.arccos(x)
+
+
+def _angle_minus_sine(d):
+    """d - sin d without cancellation: its Taylor series below |d| = 1.2."""
+    d = np.asarray(d, dtype=float)
+    coeffs = (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984,
+              -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10,
+              7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18,
+              -1.9572941063391263e-20)
+    small = np.abs(d) < 1.2
+    y = np.where(small, d * d, 0.0)
+    total = np.zeros_like(y)
+    for c in coeffs[::-1]:
+        total = total * y + c
+    return np.where(small, d * y * total, d - np.sin(d))
+
+
+def _tip_half_angle(x, z, alpha, ha, dy, what):
+    """Half the angle a tooth subtends on its tip circle, psi_a =
+    (pi/2 + 2 x tan alpha)/z - (inv alpha_a - inv alpha), for a rack-cut gear.
+
+    With e = 2(ha + x - dy)/D, D = z + 2(ha + x - dy) (the tip diameter over
+    m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
+    formed without cancellation: delta = alpha_a - alpha by atan2 of exact
+    products, then inv alpha_a - inv alpha = (delta (sin² alpha + cos² alpha e)
+    - (delta - sin delta)) / (cos alpha cos alpha_a). ValueError(what) when the
+    tip circle lies inside the base circle (``what=None``: no check)."""
+    lift = ha + x - dy
+    d_a = z + 2.0 * lift
+    e = 2.0 * lift / d_a
+    c, s = np.cos(alpha), np.sin(alpha)
+    c_a = c * (1.0 - e)
+    one_minus = 2.0 * np.sin(0.5 * alpha) ** 2 + c * e          # 1 - c_a
+    if what is not None and (np.any(one_minus < 0) or np.any(c_a < 0)):
+        raise ValueError(what)
+    one_minus = np.maximum(one_minus, 0.0)
+    s_a = np.sqrt(one_minus * (1.0 + c_a))
+    num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
+    delta = np.arctan2(num, c * c_a + s * s_a)
+    gap = (delta * (s * s + c * c * e) - _angle_minus_sine(delta)) / (c * c_a)
+    return (0.5 * np.pi + 2.0 * x * np.tan(alpha)) / z - gap
+
+
+def _tip_shift(z, alpha, ha, dy, sigma):
+    """The shift x at which the tooth tip thickness is sigma·m (0: pointed tip).
+
+    Bracketed in the tip pressure angle u in (0, pi/2), x(u) = z(cos alpha /
+    cos u - 1)/2 - ha + dy increasing: from u = alpha (tip on the reference
+    circle) or, when the tooth is already thinner there, from the base circle,
+    up to pi/2, where the thickness is -inf. Bisection in u, then Newton steps
+    in x with the exact slope 2 psi_a + 2(z + 2(ha + x - dy)) tan(alpha)/z -
+    2 tan(u). ValueError when no shift gives the thickness."""
+    z, alpha, ha, dy, sigma = np.broadcast_arrays(*(np.asarray(a, dtype=float)
+                                                    for a in (z, alpha, ha, dy, sigma)))
+
+    def shift(u):
+        return 0.5 * z * (np.cos(alpha) / np.cos(u) - 1.0) - ha + dy
+
+    def excess(u):
+        x = shift(u)
+        return (z + 2.0 * (ha + x - dy)) * _tip_half_angle(x, z, alpha, ha, dy, what) - sigma
+
+    what = None
+
+    lo = np.where(excess(alpha) > 0, alpha, 1e-6)
+    if np.any(excess(lo) <= 0):
+        raise ValueError("sigma: no shift gives this tip thickness (the tooth is "
+                         "thinner even with its tip on the base circle)")
+    hi = np.full_like(lo, 0.5 * np.pi * (1.0 - 1e-12))
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        up = excess(mid) > 0
+        lo = np.where(up, mid, lo)
+        hi = np.where(up, hi, mid)
+    x = shift(0.5 * (lo + hi))
+    for _ in range(3):
+        d_a = z + 2.0 * (ha + x - dy)
+        alpha_a = np.arccos(np.clip(z * np.cos(alpha) / d_a, -1.0, 1.0))
+        psi = _tip_half_angle(x, z, alpha, ha, dy, what)
+        slope = 2.0 * psi + 2.0 * d_a * np.tan(alpha) / z - 2.0 * np.tan(alpha_a)
+        x = x - (d_a * psi - sigma) / slope
+    return x
+
+
+def operating_pressure_angle(m, z1, z2, a_w, alpha):
+    """Operating pressure angle alpha_tw of the pair at centre distance a_w. Eq Form 1, alpha_tw.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    a_w : array_like
+        centre distance [m], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    return _acos_checked((1/2)*m*(z1 + z2)*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')
+
+
+def shift_sum(m, z1, z2, a_w, alpha):
+    """Sum of shift coefficients x1 + x2 from the meshing equation. Eq Form 1, x_sum.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    a_w : array_like
+        centre distance [m], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    x0 = (1/2)*z1 + (1/2)*z2
+    return x0*(-_involute(alpha) + _involute(_acos_checked(m*x0*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')))/np.tan(alpha)
+
+
+def tip_diameter(m, z, x, h_a, dy):
+    """Tip diameter m*z + 2*(h_a + x - dy)*m. Eq Form 1, d_a1.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    m   = _checked('m', m, 'positive', 'module of the teeth, m')
+    z   = _checked('z', z, 'positive', 'number of teeth, 1')
+    x   = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    h_a = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy  = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return m*(-2*dy + 2*h_a + 2*x + z)
+
+
+def tip_thickness(m, z, x, alpha, h_a, dy):
+    """Tooth thickness on the tip circle (negative: the tooth is pointed below the tip). Eq Form 1, s_a1.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    x     = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return m*(-2*dy + 2*h_a + 2*x + z)*_tip_half_angle(x, z, alpha, h_a, dy, 'x: the tip circle lies inside the base circle (shift too negative)')
+
+
+def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2):
+    """Transverse contact ratio epsilon_alpha. Eq Form 1, epsilon_alpha.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    x1 : array_like
+        shift coefficient of the pinion [1]
+    x2 : array_like
+        shift coefficient of the wheel [1]
+    a_w : array_like
+        centre distance [m], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy1 : array_like
+        tip shortening coefficient Δy of the pinion (>= 0) [1], >= 0
+    dy2 : array_like
+        tip shortening coefficient Δy of the wheel (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    x1    = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1')
+    x2    = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1')
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy1   = _checked('dy1', dy1, 'nonnegative', 'tip shortening coefficient Δy of the pinion (>= 0), 1')
+    dy2   = _checked('dy2', dy2, 'nonnegative', 'tip shortening coefficient Δy of the wheel (>= 0), 1')
+    x0 = z1 + z2
+    x3 = np.cos(alpha)
+    x4 = 2*h_a
+    return -0.15915494309189535*x0*np.tan(_acos_checked((1/2)*m*x0*x3/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')) + 0.15915494309189535*z1*np.tan(_acos_checked(x3*z1/(-2*dy1 + 2*x1 + x4 + z1), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 0.15915494309189535*z2*np.tan(_acos_checked(x3*z2/(-2*dy2 + 2*x2 + x4 + z2), 'x2: the tip circle lies inside the base circle (shift too negative)'))
+
+
+def tip_thickness_shift(z, alpha, h_a, dy, sigma):
+    """Shift coefficient at which the tip thickness is sigma*m (Fig. 10, curves 2-3). Eq pointed tip.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+    sigma : array_like
+        tip tooth thickness over the module, s_a/m [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1')
+    return _tip_shift(z, alpha, h_a, dy, sigma)
+
+
+def pointed_tip_shift(z, alpha, h_a, dy):
+    """Shift coefficient at which the tooth tip is pointed (Fig. 10, curve 1). Eq pointed tip.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return _tip_shift(z, alpha, h_a, dy, 0)
+
+
+def undercut_limit(z, alpha, h_a):
+    """Least shift coefficient free of undercut (Fig. 10, curve 4). Eq undercut limit.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    return h_a - 1/2*z*np.sin(alpha)**2
+
+
+def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c):
+    """Largest vertical load on one portal leg, load case 2v (reconstructed portal: see the derivation). Eq (3), (4).
+
+    Parameters
+    ----------
+    psi : array_like
+        dynamic coefficient of the hoisted load (printed у) [1], > 0
+    G_g : array_like
+        rated weight of the load G_г [N], > 0
+    G_pch : array_like
+        weight of the slewing part G_пч [N], > 0
+    G_vs : array_like
+        weight of the portal's upper structure G_вс [N], > 0
+    L_max : array_like
+        maximum reach [m], > 0
+    x_o : array_like
+        distance of the slewing part's centre of gravity from the slewing axis [m], > 0
+    c : array_like
+        arm of the couple by which the slewing part bears on the circular rail [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    psi   = _checked('psi', psi, 'positive', 'dynamic coefficient of the hoisted load (printed у), 1')
+    G_g   = _checked('G_g', G_g, 'positive', 'rated weight of the load G_г, N')
+    G_pch = _checked('G_pch', G_pch, 'positive', 'weight of the slewing part G_пч, N')
+    G_vs  = _checked('G_vs', G_vs, 'positive', "weight of the portal's upper structure G_вс, N")
+    L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m')
+    x_o   = _checked('x_o', x_o, 'positive', "distance of the slewing part's centre of gravity from the slewing axis, m")
+    c     = _checked('c', c, 'positive', 'arm of the couple by which the slewing part bears on the circular rail, m')
+    x0 = G_g*psi
+    return (1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c

@@ -1,0 +1,216 @@
+"""Numeric functions for derivation 'portal_travel'. Generated; do not edit.
+
+Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
+Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Specialized to scene 'form1_gear_pair' (Paper 003, Form 1: the travel bogie's open gear pair): outputs operating_pressure_angle, shift_sum, tip_diameter, tip_thickness, contact_ratio, undercut_limit; folded in: m = 0.01 m, z1 = 25.0 1, z2 = 42.0 1, a_w = 0.34 m, h_a = 1.0 1, alpha = 0.3490658503988659 rad, dy1 = 0.0 1, dy2 = 0.0 1.
+Inputs left as arguments: z, x, dy, x1, x2.
+Equations: Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    operating_pressure_angle() -> [rad]    eq Form 1, alpha_tw
+    shift_sum() -> [1]    eq Form 1, x_sum
+    tip_diameter(z, x, dy) -> [m]    eq Form 1, d_a1
+    tip_thickness(z, x, dy) -> [m]    eq Form 1, s_a1
+    contact_ratio(x1, x2) -> [1]    eq Form 1, epsilon_alpha
+    undercut_limit(z) -> [1]    eq undercut limit
+"""
+
+import numpy as np
+
+__all__ = ['operating_pressure_angle', 'shift_sum', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'undercut_limit']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _acos_checked(x, what):
+    """arccos x, or ValueError(what) when |x| > 1 (an impossible geometry)."""
+    x = np.asarray(x, dtype=float)
+    if np.any(np.abs(x) > 1.0):
+        worst = float(x.flat[int(np.argmax(np.abs(x)))])
+        raise ValueError(f"{what} (the cosine would be {worst!r})")
+    return np.arccos(x)
+
+
+def _angle_minus_sine(d):
+    """d - sin d without cancellation: its Taylor series below |d| = 1.2."""
+    d = np.asarray(d, dtype=float)
+    coeffs = (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984,
+              -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10,
+              7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18,
+              -1.9572941063391263e-20)
+    small = np.abs(d) < 1.2
+    y = np.where(small, d * d, 0.0)
+    total = np.zeros_like(y)
+    for c in coeffs[::-1]:
+        total = total * y + c
+    return np.where(small, d * y * total, d - np.sin(d))
+
+
+def _tip_half_angle(x, z, alpha, ha, dy, what):
+    """Half the angle a tooth subtends on its tip circle, psi_a =
+    (pi/2 + 2 x tan alpha)/z - (inv alpha_a - inv alpha), for a rack-cut gear.
+
+    With e = 2(ha + x - dy)/D, D = z + 2(ha + x - dy) (the tip diameter over
+    m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
+    formed without cancellation: delta = alpha_a - alpha by atan2 of exact
+    products, then inv alpha_a - inv alpha = (delta (sin² alpha + cos² alpha e)
+    - (delta - sin delta)) / (cos alpha cos alpha_a). ValueError(what) when the
+    tip circle lies inside the base circle (``what=None``: no check)."""
+    lift = ha + x - dy
+    d_a = z + 2.0 * lift
+    e = 2.0 * lift / d_a
+    c, s = np.cos(alpha), np.sin(alpha)
+    c_a = c * (1.0 - e)
+    one_minus = 2.0 * np.sin(0.5 * alpha) ** 2 + c * e          # 1 - c_a
+    if what is not None and (np.any(one_minus < 0) or np.any(c_a < 0)):
+        raise ValueError(what)
+    one_minus = np.maximum(one_minus, 0.0)
+    s_a = np.sqrt(one_minus * (1.0 + c_a))
+    num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
+    delta = np.arctan2(num, c * c_a + s * s_a)
+    gap = (delta * (s * s + c * c * e) - _angle_minus_sine(delta)) / (c * c_a)
+    return (0.5 * np.pi + 2.0 * x * np.tan(alpha)) / z - gap
+
+
+def operating_pressure_angle():
+    """Operating pressure angle alpha_tw of the pair at centre distance a_w. Specialized to scene 'form1_gear_pair'. Eq Form 1, alpha_tw.
+
+    Parameters
+    ----------
+
+
+    Returns
+    -------
+    ndarray
+        [rad], broadcast over the arguments.
+    """
+    return 0.38745508295895126
+
+
+def shift_sum():
+    """Sum of shift coefficients x1 + x2 from the meshing equation. Specialized to scene 'form1_gear_pair'. Eq Form 1, x_sum.
+
+    Parameters
+    ----------
+
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    return 0.5268056264721714
+
+
+def tip_diameter(z, x, dy):
+    """Tip diameter m*z + 2*(h_a + x - dy)*m. Specialized to scene 'form1_gear_pair'. Eq Form 1, d_a1.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    z  = _checked('z', z, 'positive', 'number of teeth, 1')
+    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return -5764607523034235/288230376151711744*dy + (5764607523034235/288230376151711744)*x + (5764607523034235/576460752303423488)*z + 5764607523034235/288230376151711744
+
+
+def tip_thickness(z, x, dy):
+    """Tooth thickness on the tip circle (negative: the tooth is pointed below the tip). Specialized to scene 'form1_gear_pair'. Eq Form 1, s_a1.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    z  = _checked('z', z, 'positive', 'number of teeth, 1')
+    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return (5764607523034235/576460752303423488)*(-2*dy + 2*x + z + 2)*_tip_half_angle(x, z, 6288211335136391/18014398509481984, 1, dy, 'x: the tip circle lies inside the base circle (shift too negative)')
+
+
+def contact_ratio(x1, x2):
+    """Transverse contact ratio epsilon_alpha. Specialized to scene 'form1_gear_pair'. Eq Form 1, epsilon_alpha.
+
+    Parameters
+    ----------
+    x1 : array_like
+        shift coefficient of the pinion [1]
+    x2 : array_like
+        shift coefficient of the wheel [1]
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    x1 = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1')
+    x2 = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1')
+    return 3.9788735772973833*np.tan(_acos_checked(23.49231551964771/(2*x1 + 27), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 6.684507609859604*np.tan(_acos_checked(19.733545036504076/(x2 + 22), 'x2: the tip circle lies inside the base circle (shift too negative)')) - 4.351545605487496
+
+
+def undercut_limit(z):
+    """Least shift coefficient free of undercut (Fig. 10, curve 4). Specialized to scene 'form1_gear_pair'. Eq undercut limit.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z = _checked('z', z, 'positive', 'number of teeth, 1')
+    return 1 - 0.05848888922025548*z
