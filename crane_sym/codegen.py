@@ -80,6 +80,10 @@ class _Printer(NumPyPrinter):
     def _print_involute(self, expr: sp.Basic) -> str:
         return f"_involute({self._print(expr.args[0])})"
 
+    def _print_inverse_involute_fn(self, expr: sp.Basic) -> str:
+        message = ACOS_MESSAGES[int(expr.args[1])]
+        return f"_inverse_involute({self._print(expr.args[0])}, {message!r})"
+
     def _print_acos_checked(self, expr: sp.Basic) -> str:
         message = ACOS_MESSAGES[int(expr.args[1])]
         return f"_acos_checked({self._print(expr.args[0])}, {message!r})"

@@ -38,16 +38,16 @@ def _involute(a):
     return np.where(small, series, closed)
 
 
-def _inverse_involute(v):
+def _inverse_involute(v, what):
     """The angle a in [0, pi/2) with tan a - a = v, for v >= 0.
 
     Initial guess from the series inversion a ≈ (3v)^(1/3)(1 - (3v)^(2/3)/5)
     for small v and a ≈ pi/2 - 1/(v + pi/2) for large v, then Newton steps
     kept inside a bracket [lo, hi] that every step narrows (bisection when
-    Newton would leave it): no starting guess can fail."""
+    Newton would leave it): no starting guess can fail. ValueError(what) for v < 0."""
     v = np.asarray(v, dtype=float)
     if np.any(v < 0):
-        raise ValueError("inverse involute: the involute value must be >= 0")
+        raise ValueError(what)
     half_pi = 0.5 * np.pi
     lo = np.zeros_like(v)
     hi = np.full_like(v, half_pi)

@@ -24,8 +24,23 @@ from . import gear_kernels
 # --- Symbolic functions -----------------------------------------------------------
 
 
+def _mpf(v) -> mpmath.mpf:
+    try:
+        return mpmath.mpf(v)
+    except TypeError:  # a NumPy scalar
+        return mpmath.mpf(float(v))
+
+
 def _mp_involute(a):
-    return mpmath.tan(a) - a
+    """tan a − a in mpmath, with the working precision raised by the bits that
+    the cancellation of tan a and a costs (about 2·log2(1/|a|))."""
+    a = _mpf(a)
+    if a == 0:
+        return mpmath.mpf(0)
+    extra = max(0, -2 * int(mpmath.floor(mpmath.log(abs(a), 2)))) + 16
+    with mpmath.workprec(mpmath.mp.prec + extra):
+        value = mpmath.tan(a) - a
+    return +value
 
 
 class involute(sp.Function):  # noqa: N801  (a mathematical function)
@@ -40,8 +55,11 @@ class involute(sp.Function):  # noqa: N801  (a mathematical function)
     def _eval_rewrite_as_tan(self, a, **kwargs) -> sp.Expr:
         return sp.tan(a) - a
 
-    def _eval_evalf(self, prec: int) -> sp.Expr:
-        return (sp.tan(self.args[0]) - self.args[0])._eval_evalf(prec)
+    def _eval_evalf(self, prec: int) -> sp.Expr | None:
+        a = self.args[0].evalf(prec) if self.args[0].is_number else None
+        if a is None or not a.is_real:
+            return None
+        return (sp.tan(a) - a)._eval_evalf(prec)
 
 
 #: acos_checked code -> the message the generated code raises, naming the parameter.
@@ -51,6 +69,8 @@ ACOS_MESSAGES = {
     2: "x1: the tip circle lies inside the base circle (shift too negative)",
     3: "x2: the tip circle lies inside the base circle (shift too negative)",
     4: "x: the tip circle lies inside the base circle (shift too negative)",
+    5: "x_sum: the shifts are too negative: inv(alpha) + 2*x_sum*tan(alpha)/(z1 + z2) "
+       "must be >= 0",
 }
 
 
@@ -60,7 +80,8 @@ def _mp_acos(x, code=0):
 
 class acos_checked(sp.Function):  # noqa: N801
     """acos(x) whose argument must lie in [−1, 1]; ``code`` picks the message
-    of ``ACOS_MESSAGES`` generated code raises otherwise."""
+    of ``ACOS_MESSAGES`` generated code raises otherwise (and it stays
+    unevaluated outside [−1, 1], so the error is raised where it is used)."""
 
     nargs = 2
     _imp_ = staticmethod(_mp_acos)
@@ -68,8 +89,11 @@ class acos_checked(sp.Function):  # noqa: N801
     def _eval_rewrite_as_acos(self, x, code, **kwargs) -> sp.Expr:
         return sp.acos(x)
 
-    def _eval_evalf(self, prec: int) -> sp.Expr:
-        return sp.acos(self.args[0])._eval_evalf(prec)
+    def _eval_evalf(self, prec: int) -> sp.Expr | None:
+        x = self.args[0]._eval_evalf(prec) if self.args[0].is_number else None
+        if x is None or not x.is_real or abs(x) > 1:
+            return None
+        return sp.acos(x)._eval_evalf(prec)
 
 
 def _mp_half_angle(x, z, alpha, ha, dy, code=0):
@@ -93,6 +117,25 @@ class tip_half_angle(sp.Function):  # noqa: N801
                 - sp.tan(alpha_a) + alpha_a)
 
 
+class inverse_involute_fn(sp.Function):  # noqa: N801
+    """The angle a in [0, pi/2) with tan a − a = v (the inverse of ``involute``);
+    ``code`` picks the message of ``ACOS_MESSAGES`` raised for v < 0."""
+
+    nargs = 2
+
+    @staticmethod
+    def _imp_(v, code=0):
+        return inverse_involute_mp(v)
+
+    def fdiff(self, argindex: int = 1) -> sp.Expr:
+        return 1 / sp.tan(self) ** 2 if argindex == 1 else sp.S.Zero
+
+    def _eval_evalf(self, prec: int) -> sp.Expr:
+        with mpmath.workprec(prec + 20):
+            value = inverse_involute_mp(mpmath.mpf(sp.Float(self.args[0], prec + 20)))
+        return sp.Float(value, mpmath.libmp.prec_to_dps(prec))
+
+
 def tip_thickness_ratio_expr(x: sp.Expr, z: sp.Expr, alpha: sp.Expr, ha: sp.Expr,
                              dy: sp.Expr) -> sp.Expr:
     """s_a/m of a rack-generated tooth (shift x, tooth number z, profile angle
@@ -108,13 +151,6 @@ def _mp_thickness(x, z, alpha, ha, dy):
     alpha_a = mpmath.acos(z * mpmath.cos(alpha) / d_a)
     return d_a * ((mpmath.pi / 2 + 2 * x * mpmath.tan(alpha)) / z
                   + _mp_involute(alpha) - _mp_involute(alpha_a))
-
-
-def _mpf(v) -> mpmath.mpf:
-    try:
-        return mpmath.mpf(v)
-    except TypeError:  # a NumPy scalar
-        return mpmath.mpf(float(v))
 
 
 def tip_shift_mp(z, alpha, ha, dy, sigma):
@@ -190,17 +226,35 @@ def involute_np(a: np.ndarray | float) -> np.ndarray:
 
 def inverse_involute(v: np.ndarray | float) -> np.ndarray:
     """The angle a in [0, pi/2) with tan a − a = v (NumPy, bracketed Newton)."""
-    return gear_kernels._inverse_involute(v)
+    return gear_kernels._inverse_involute(v, "v: the involute value must be >= 0")
 
 
 def inverse_involute_mp(v) -> mpmath.mpf:
-    """The angle a in [0, pi/2) with tan a − a = v, in mpmath (bisection-safe)."""
-    v = mpmath.mpf(v)
+    """The angle a in [0, pi/2) with tan a − a = v, in mpmath at the working
+    precision: Newton steps kept inside a shrinking bracket (bisection when a
+    step would leave it), so it converges from any start."""
+    v = _mpf(v)
+    if v < 0:
+        raise ValueError("v: the involute value must be >= 0")
     if v == 0:
         return mpmath.mpf(0)
-    return mpmath.findroot(lambda a: _mp_involute(a) - v,
-                           (mpmath.mpf(0), mpmath.pi / 2 - mpmath.mpf(10) ** -20
-                            / (1 + v)), solver="anderson")
+    lo, hi = mpmath.mpf(0), mpmath.pi / 2
+    a = mpmath.cbrt(3 * v) if v < 1 else hi - 1 / (v + hi)
+    eps = mpmath.mpf(2) ** (-mpmath.mp.prec + 4)
+    for _ in range(20 * mpmath.mp.prec):
+        f = _mp_involute(a) - v
+        if f > 0:
+            hi = a
+        else:
+            lo = a
+        step = f / mpmath.tan(a) ** 2 if a > 0 else mpmath.inf
+        nxt = a - step
+        if not lo <= nxt <= hi:
+            nxt = (lo + hi) / 2
+        if abs(nxt - a) <= eps * abs(nxt) or hi - lo <= eps * hi:
+            return nxt
+        a = nxt
+    return a
 
 
 def tip_shift_np(z, alpha, ha=1.0, dy=0.0, sigma=0.0) -> np.ndarray:
@@ -214,6 +268,6 @@ def undercut_limit_np(z, alpha, ha=1.0) -> np.ndarray:
 
 
 __all__ = ["ACOS_MESSAGES", "acos_checked", "inverse_involute", "inverse_involute_mp",
-           "involute", "involute_np", "involute_point", "rack_space_width",
+           "involute", "inverse_involute_fn", "involute_np", "involute_point", "rack_space_width",
            "thickness_at_radius", "tip_half_angle", "tip_shift", "tip_shift_mp", "tip_shift_np",
            "tip_thickness_ratio_expr", "undercut_limit_np"]

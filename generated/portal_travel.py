@@ -8,6 +8,7 @@ Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generat
 Functions and argument order:
     operating_pressure_angle(m, z1, z2, a_w, alpha) -> [rad]    eq Form 1, alpha_tw
     shift_sum(m, z1, z2, a_w, alpha) -> [1]    eq Form 1, x_sum
+    centre_distance(m, z1, z2, x_sum, alpha) -> [m]    eq Form 1, x_sum, Form 1, alpha_tw
     tip_diameter(m, z, x, h_a, dy) -> [m]    eq Form 1, d_a1
     tip_thickness(m, z, x, alpha, h_a, dy) -> [m]    eq Form 1, s_a1
     contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2) -> [1]    eq Form 1, epsilon_alpha
@@ -19,7 +20,7 @@ Functions and argument order:
 
 import numpy as np
 
-__all__ = ['operating_pressure_angle', 'shift_sum', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'max_support_load']
+__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'max_support_load']
 
 
 def _checked(name, value, sign, what):
@@ -80,6 +81,38 @@ def _involute(a):
     with np.errstate(invalid="ignore", over="ignore"):
         closed = np.tan(np.where(small, 1.0, a)) - np.where(small, 1.0, a)
     return np.where(small, series, closed)
+
+
+def _inverse_involute(v, what):
+    """The angle a in [0, pi/2) with tan a - a = v, for v >= 0.
+
+    Initial guess from the series inversion a ≈ (3v)^(1/3)(1 - (3v)^(2/3)/5)
+    for small v and a ≈ pi/2 - 1/(v + pi/2) for large v, then Newton steps
+    kept inside a bracket [lo, hi] that every step narrows (bisection when
+    Newton would leave it): no starting guess can fail. ValueError(what) for v < 0."""
+    v = np.asarray(v, dtype=float)
+    if np.any(v < 0):
+        raise ValueError(what)
+    half_pi = 0.5 * np.pi
+    lo = np.zeros_like(v)
+    hi = np.full_like(v, half_pi)
+    t = np.cbrt(3.0 * v)
+    a = np.where(v < 1.0, t * (1.0 - t * t / 5.0), half_pi - 1.0 / (v + half_pi))
+    a = np.clip(a, 0.0, half_pi * (1.0 - 1e-16))
+    for _ in range(100):
+        f = _involute(a) - v
+        lo = np.where(f <= 0, a, lo)
+        hi = np.where(f > 0, a, hi)
+        slope = np.tan(a) ** 2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(slope > 0, f / slope, np.inf)
+        nxt = a - step
+        bad = ~((nxt >= lo) & (nxt <= hi))
+        nxt = np.where(bad, 0.5 * (lo + hi), nxt)
+        if np.all(np.abs(nxt - a) <= 4e-16 * np.maximum(np.abs(a), 1e-300)):
+            return np.where(v == 0, 0.0, nxt)
+        a = nxt
+    return np.where(v == 0, 0.0, a)
 
 
 def _acos_checked(x, what):
@@ -230,6 +263,36 @@ def shift_sum(m, z1, z2, a_w, alpha):
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
     x0 = (1/2)*z1 + (1/2)*z2
     return x0*(-_involute(alpha) + _involute(_acos_checked(m*x0*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')))/np.tan(alpha)
+
+
+def centre_distance(m, z1, z2, x_sum, alpha):
+    """Centre distance a_w at which the pair meshes without backlash with the sum of shifts x_sum (inverse involute). Eq Form 1, x_sum, Form 1, alpha_tw.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    x_sum : array_like
+        sum of shift coefficients x1 + x2 [1]
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    x_sum = _checked('x_sum', x_sum, 'real', 'sum of shift coefficients x1 + x2, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    x0 = z1 + z2
+    return (1/2)*m*x0*np.cos(alpha)/np.cos(_inverse_involute(_involute(alpha) + 2*x_sum*np.tan(alpha)/x0, 'x_sum: the shifts are too negative: inv(alpha) + 2*x_sum*tan(alpha)/(z1 + z2) must be >= 0'))
 
 
 def tip_diameter(m, z, x, h_a, dy):

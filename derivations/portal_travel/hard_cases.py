@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crane_sym.involute import tip_shift_np
+from crane_sym.involute import involute_np, tip_shift_np
 
 
 def _gear(rng: np.random.Generator, n: int, z_lo: float, z_hi: float,
@@ -16,8 +16,10 @@ def _gear(rng: np.random.Generator, n: int, z_lo: float, z_hi: float,
     """Columns with the operating angle alpha_w = ratio_w*alpha."""
     log = lambda lo, hi: 10.0 ** rng.uniform(np.log10(lo), np.log10(hi), n)  # noqa: E731
     m, z1, z2 = log(1e-3, 5e-2), log(z_lo, z_hi), log(z_lo, z_hi)
-    a_w = m * (z1 + z2) * np.cos(alpha) / (2 * np.cos(np.minimum(ratio_w * alpha, 1.4)))
-    return {"m": m, "z1": z1, "z2": z2, "z": z1, "a_w": a_w, "alpha": alpha,
+    alpha_w = np.minimum(ratio_w * alpha, 1.4)
+    a_w = m * (z1 + z2) * np.cos(alpha) / (2 * np.cos(alpha_w))
+    x_sum = (involute_np(alpha_w) - involute_np(alpha)) * (z1 + z2) / (2 * np.tan(alpha))
+    return {"m": m, "z1": z1, "z2": z2, "z": z1, "a_w": a_w, "alpha": alpha, "x_sum": x_sum,
             "h_a": rng.uniform(0.8, 1.25, n), "x1": rng.uniform(-0.3, 0.8, n),
             "x2": rng.uniform(-0.3, 0.8, n), "x": rng.uniform(-0.3, 0.8, n),
             "dy": rng.uniform(0, 0.2, n), "dy1": rng.uniform(0, 0.2, n),

@@ -16,7 +16,7 @@ from crane_sym.involute import acos_checked, involute, tip_half_angle, tip_shift
 
 from .model import (G_g, G_pch, G_vs, L_max, M_v, a_w, alpha, alpha_a1, alpha_a2,
                     alpha_tw, c_arm, d_a1, d_a2, dy, dy1, dy2, ha, m, psi, sigma, x, x1,
-                    x2, x_o, z, z1, z2)
+                    x2, x_o, x_sum, z, z1, z2)
 
 
 def _stable(expr: sp.Expr) -> sp.Expr:
@@ -58,6 +58,10 @@ def outputs(d: Derivation) -> list[Output]:
                "rad"),
         Output("shift_sum", _stable(shift_sum), gear, ("Form 1, x_sum",),
                "Sum of shift coefficients x1 + x2 from the meshing equation.", "1"),
+        Output("centre_distance", _stable(rhs("centre distance from the shifts")),
+               (m, z1, z2, x_sum, alpha), ("Form 1, x_sum", "Form 1, alpha_tw"),
+               "Centre distance a_w at which the pair meshes without backlash with "
+               "the sum of shifts x_sum (inverse involute).", "m"),
         Output("tip_diameter", d_a, (m, z, x, ha, dy), ("Form 1, d_a1",),
                "Tip diameter m*z + 2*(h_a + x - dy)*m.", "m"),
         Output("tip_thickness", thickness, (m, z, x, alpha, ha, dy), ("Form 1, s_a1",),

@@ -11,7 +11,7 @@ import mpmath
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.involute import (involute_point, rack_space_width, thickness_at_radius,
+from crane_sym.involute import (inverse_involute_fn, involute_point, rack_space_width, thickness_at_radius,
                                 tip_shift_mp)
 
 from .model import (C_eps, C_sa, F_alpha, F_aw, F_ha, F_k, F_k1, F_k2, F_m, F_x1, F_x2,
@@ -82,6 +82,12 @@ def mesh(d: Derivation) -> None:
           "d_wi = m z_i cos α/cos α_tw and s_wi from 'thickness at a radius'; solved "
           "for x1 + x2 by SymPy and checked against inv α_tw = inv α + 2x_Σ tan α/(z1 + z2).",
           "The meshing equation ties the shifts to the centre distance.", "Sum of shifts")
+    inv_w = inv(alpha) + 2 * x_sum * sp.tan(alpha) / (z1 + z2)
+    d.add("centre distance from the shifts",
+          sp.Eq(a_w, m * (z1 + z2) * sp.cos(alpha) / (2 * sp.cos(inverse_involute_fn(inv_w, 5)))),
+          "'Form 1, x_sum' solved for inv α_tw = inv α + 2x_Σ tan α/(z1 + z2), inverted by "
+          "the inverse involute, and put into 'Form 1, alpha_tw'.",
+          "The designer's inverse problem: the centre distance a chosen pair of shifts needs.")
 
 
 def tips(d: Derivation) -> None:
