@@ -50,86 +50,70 @@ def _checked(name, value, sign, what):
     return array
 
 
-def _angle_minus_sine(d):
-    """d - sin d without cancellation: its Taylor series below |d| = 1.2."""
-    d = np.asarray(d, dtype=float)
-    coeffs = (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984,
-              -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10,
-              7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18,
-              -1.9572941063391263e-20)
-    small = np.abs(d) < 1.2
+def _tip_lift_excess(delta, alpha):
+    """H(delta) = inv(alpha + delta) - inv(alpha) - tan(alpha)(cos alpha /
+    cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
+    sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
+    Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
+    tan(alpha)·d²/2 keeps every digit at small d."""
+    d = np.asarray(delta, dtype=float)
+    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
+           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
+           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
+           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
+    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
+           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
+           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
+           1.8683261924146203e-20, -3.706996413521072e-23)
+    small = np.abs(d) < 1.0
     y = np.where(small, d * d, 0.0)
-    total = np.zeros_like(y)
-    for c in coeffs[::-1]:
-        total = total * y + c
-    return np.where(small, d * y * total, d - np.sin(d))
-
-
-def _tip_half_angle(x, z, alpha, ha, dy, what):
-    """Half the angle a tooth subtends on its tip circle, psi_a =
-    (pi/2 + 2 x tan alpha)/z - (inv alpha_a - inv alpha), for a rack-cut gear.
-
-    With e = 2(ha + x - dy)/D, D = z + 2(ha + x - dy) (the tip diameter over
-    m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
-    formed without cancellation: delta = alpha_a - alpha by atan2 of exact
-    products, then inv alpha_a - inv alpha = (delta (sin² alpha + cos² alpha e)
-    - (delta - sin delta)) / (cos alpha cos alpha_a). ValueError(what) when the
-    tip circle lies inside the base circle (``what=None``: no check)."""
-    lift = ha + x - dy
-    d_a = z + 2.0 * lift
-    e = 2.0 * lift / d_a
-    c, s = np.cos(alpha), np.sin(alpha)
-    c_a = c * (1.0 - e)
-    one_minus = 2.0 * np.sin(0.5 * alpha) ** 2 + c * e          # 1 - c_a
-    if what is not None and (np.any(one_minus < 0) or np.any(c_a < 0)):
-        raise ValueError(what)
-    one_minus = np.maximum(one_minus, 0.0)
-    s_a = np.sqrt(one_minus * (1.0 + c_a))
-    num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
-    delta = np.arctan2(num, c * c_a + s * s_a)
-    gap = (delta * (s * s + c * c * e) - _angle_minus_sine(delta)) / (c * c_a)
-    return (0.5 * np.pi + 2.0 * x * np.tan(alpha)) / z - gap
+    p1, p2 = np.zeros_like(y), np.zeros_like(y)
+    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
+        p1, p2 = p1 * y + c1, p2 * y + c2
+    f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
+    f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
+    return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
 
 
 def _tip_shift(z, alpha, ha, dy, sigma):
     """The shift x at which the tooth tip thickness is sigma·m (0: pointed tip).
 
-    Bracketed in the tip pressure angle u in (0, pi/2), x(u) = z(cos alpha /
-    cos u - 1)/2 - ha + dy increasing: from u = alpha (tip on the reference
-    circle) or, when the tooth is already thinner there, from the base circle,
-    up to pi/2, where the thickness is -inf. Bisection in u, then Newton steps
-    in x with the exact slope 2 psi_a + 2(z + 2(ha + x - dy)) tan(alpha)/z -
-    2 tan(u). ValueError when no shift gives the thickness."""
+    With the tip pressure angle alpha + delta, x = z sin(alpha + delta/2)
+    sin(delta/2)/cos(alpha + delta) - ha + dy, and the condition s_a = sigma·m
+    becomes Phi(delta) = z·H(delta) + sigma cos(alpha + delta)/cos(alpha) - K
+    = 0 with K = pi/2 + 2 tan(alpha)(dy - ha) (the thickness over m on the
+    reference circle when the tip is there) and H of ``_tip_lift_excess``:
+    no cancellation. Phi(0) = sigma - K < 0 and Phi -> +inf at alpha + delta
+    -> pi/2: bisection on that bracket, then Newton steps with Phi' = z
+    sin u (sin u - sin alpha)/cos² u - sigma sin u/cos alpha. ValueError when
+    sigma >= K (no shift gives the thickness)."""
     z, alpha, ha, dy, sigma = np.broadcast_arrays(*(np.asarray(a, dtype=float)
                                                     for a in (z, alpha, ha, dy, sigma)))
+    K = 0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)
+    if np.any(sigma >= K):
+        raise ValueError("sigma: no shift gives this tip thickness: sigma must stay "
+                         "below pi/2 + 2*tan(alpha)*(dy - h_a)")
+    c = np.cos(alpha)
 
-    def shift(u):
-        return 0.5 * z * (np.cos(alpha) / np.cos(u) - 1.0) - ha + dy
+    def phi(d):
+        return z * _tip_lift_excess(d, alpha) + sigma * np.cos(alpha + d) / c - K
 
-    def excess(u):
-        x = shift(u)
-        return (z + 2.0 * (ha + x - dy)) * _tip_half_angle(x, z, alpha, ha, dy, what) - sigma
-
-    what = None
-
-    lo = np.where(excess(alpha) > 0, alpha, 1e-6)
-    if np.any(excess(lo) <= 0):
-        raise ValueError("sigma: no shift gives this tip thickness (the tooth is "
-                         "thinner even with its tip on the base circle)")
-    hi = np.full_like(lo, 0.5 * np.pi * (1.0 - 1e-12))
-    for _ in range(80):
+    lo = np.zeros_like(K)
+    hi = 0.5 * np.pi - alpha
+    for _ in range(110):
         mid = 0.5 * (lo + hi)
-        up = excess(mid) > 0
-        lo = np.where(up, mid, lo)
-        hi = np.where(up, hi, mid)
-    x = shift(0.5 * (lo + hi))
-    for _ in range(3):
-        d_a = z + 2.0 * (ha + x - dy)
-        alpha_a = np.arccos(np.clip(z * np.cos(alpha) / d_a, -1.0, 1.0))
-        psi = _tip_half_angle(x, z, alpha, ha, dy, what)
-        slope = 2.0 * psi + 2.0 * d_a * np.tan(alpha) / z - 2.0 * np.tan(alpha_a)
-        x = x - (d_a * psi - sigma) / slope
-    return x
+        up = phi(mid) > 0
+        lo = np.where(up, lo, mid)
+        hi = np.where(up, mid, hi)
+    d = 0.5 * (lo + hi)
+    for _ in range(2):
+        u = alpha + d
+        gap = 2.0 * np.cos(alpha + 0.5 * d) * np.sin(0.5 * d)        # sin u - sin alpha
+        slope = z * np.sin(u) * gap / np.cos(u) ** 2 - sigma * np.sin(u) / c
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(slope > 0, phi(d) / slope, 0.0)
+        d = np.clip(d - step, lo, hi)
+    return z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
 
 
 def pointed_tip_shift(z):

@@ -62,21 +62,6 @@ def _acos_checked(x, what):
     return np.arccos(x)
 
 
-def _angle_minus_sine(d):
-    """d - sin d without cancellation: its Taylor series below |d| = 1.2."""
-    d = np.asarray(d, dtype=float)
-    coeffs = (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984,
-              -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10,
-              7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18,
-              -1.9572941063391263e-20)
-    small = np.abs(d) < 1.2
-    y = np.where(small, d * d, 0.0)
-    total = np.zeros_like(y)
-    for c in coeffs[::-1]:
-        total = total * y + c
-    return np.where(small, d * y * total, d - np.sin(d))
-
-
 def _tip_half_angle(x, z, alpha, ha, dy, what):
     """Half the angle a tooth subtends on its tip circle, psi_a =
     (pi/2 + 2 x tan alpha)/z - (inv alpha_a - inv alpha), for a rack-cut gear.
@@ -84,8 +69,8 @@ def _tip_half_angle(x, z, alpha, ha, dy, what):
     With e = 2(ha + x - dy)/D, D = z + 2(ha + x - dy) (the tip diameter over
     m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
     formed without cancellation: delta = alpha_a - alpha by atan2 of exact
-    products, then inv alpha_a - inv alpha = (delta (sin² alpha + cos² alpha e)
-    - (delta - sin delta)) / (cos alpha cos alpha_a). ValueError(what) when the
+    products, then psi_a = (pi/2 + 2 tan(alpha)(dy - ha))/z - H(delta) with H of
+    ``_tip_lift_excess`` (the shift's share of the half angle cancels exactly). ValueError(what) when the
     tip circle lies inside the base circle (``what=None``: no check)."""
     lift = ha + x - dy
     d_a = z + 2.0 * lift
@@ -99,8 +84,32 @@ def _tip_half_angle(x, z, alpha, ha, dy, what):
     s_a = np.sqrt(one_minus * (1.0 + c_a))
     num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
     delta = np.arctan2(num, c * c_a + s * s_a)
-    gap = (delta * (s * s + c * c * e) - _angle_minus_sine(delta)) / (c * c_a)
-    return (0.5 * np.pi + 2.0 * x * np.tan(alpha)) / z - gap
+    return (0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)) / z - _tip_lift_excess(delta, alpha)
+
+
+def _tip_lift_excess(delta, alpha):
+    """H(delta) = inv(alpha + delta) - inv(alpha) - tan(alpha)(cos alpha /
+    cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
+    sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
+    Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
+    tan(alpha)·d²/2 keeps every digit at small d."""
+    d = np.asarray(delta, dtype=float)
+    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
+           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
+           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
+           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
+    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
+           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
+           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
+           1.8683261924146203e-20, -3.706996413521072e-23)
+    small = np.abs(d) < 1.0
+    y = np.where(small, d * d, 0.0)
+    p1, p2 = np.zeros_like(y), np.zeros_like(y)
+    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
+        p1, p2 = p1 * y + c1, p2 * y + c2
+    f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
+    f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
+    return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
 
 
 def operating_pressure_angle():

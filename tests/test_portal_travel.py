@@ -36,6 +36,7 @@ _FORM = {
     "Form 1 appendix, c": "restated", "Form 1 appendix, t": "restated",
     "Form 1 appendix, b": "confirmed", "Form 1 appendix, k": "restated",
     "Form 1 appendix, z": "restated", "Form 1 appendix, a": "restated",
+    "Form 1 appendix, starting guess": "restated",
     "Form 1 appendix, Fo": "confirmed_with_convention",
     "Form 1 appendix, equation": "confirmed_with_convention",
     "Form 1 appendix, Find(x1) = 0.7": "confirmed",

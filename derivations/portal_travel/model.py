@@ -46,7 +46,8 @@ c_ap, t_ap, b_ap, half_pi, Fo = sp.symbols("c_ap t_ap b_ap A_ap Fo", real=True)
 # --- Form 1 as numbers (mm, degrees): the form's own data and results ------------
 F_m, F_z1, F_z2, F_aw, F_ha, F_alpha = sp.symbols("F_m F_z1 F_z2 F_aw F_ha F_alpha",
                                                   positive=True)
-F_x1, F_x2, F_k1, F_k2, F_k, F_z = sp.symbols("F_x1 F_x2 F_k1 F_k2 F_k F_z", real=True)
+F_x1, F_x2, F_k1, F_k2, F_k, F_z, F_x0 = sp.symbols("F_x1 F_x2 F_k1 F_k2 F_k F_z F_x0",
+                                                    real=True)
 V_atw, V_xsum, V_da1, V_da2, V_sa1, V_sa1m, V_eps, V_xp, V_samin = sp.symbols(
     "V_atw V_xsum V_da1 V_da2 V_sa1 V_sa1m V_eps V_xp V_samin", real=True)
 C_sa, C_eps = sp.symbols("C_sa C_eps", real=True)     # 1 when a printed check holds
@@ -123,6 +124,7 @@ _numbers = [PhysicalSymbol(sym, ONE, "1", what, DEFINED, "real") for sym, what i
     (F_aw, "Form 1: a_w in mm"), (F_ha, "Form 1: h_a"), (F_alpha, "Form 1: α in degrees"),
     (F_x1, "Form 1: x1"), (F_x2, "Form 1: x2"), (F_k1, "Form 1: k1"), (F_k2, "Form 1: k2"),
     (F_k, "Form 1 appendix: k"), (F_z, "Form 1 appendix: z"),
+    (F_x0, "Form 1 appendix: the starting guess of Find"),
     (V_atw, "Form 1: α_tw in degrees"), (V_xsum, "Form 1: x_Σ"),
     (V_da1, "Form 1: d_a1 in mm"), (V_da2, "Form 1: d_a2 in mm"),
     (V_sa1, "Form 1: s_a1 in mm"), (V_sa1m, "Form 1: s_a1/m"),
@@ -165,7 +167,7 @@ LATEX_NAMES = {
     G_pch: r"G_{пч}", G_vs: r"G_{вс}", L_max: r"L_{\max}", x_o: "x_o", c_arm: "c",
     M_v: r"M_{в}", R_max: r"R_{\max}", V_total: "V", psi_cell: r"\psi",
     F_m: "m", F_z1: "z_1", F_z2: "z_2", F_aw: "a_w", F_ha: "h_a", F_alpha: r"\alpha^\circ",
-    F_x1: "x_1", F_x2: "x_2", F_k1: "k_1", F_k2: "k_2", F_k: "k", F_z: "z",
+    F_x1: "x_1", F_x2: "x_2", F_k1: "k_1", F_k2: "k_2", F_k: "k", F_z: "z", F_x0: "x_{(0)}",
     V_atw: r"\alpha_{tw}^\circ", V_xsum: r"x_\Sigma", V_da1: "d_{a1}", V_da2: "d_{a2}",
     V_sa1: "s_{a1}", V_sa1m: "s_{a1}/m", V_eps: r"\varepsilon_\alpha",
     V_xp: "x_{z=10}", V_samin: "0.4 m", C_sa: r"[s_{a1}/m \ge 0.4]",

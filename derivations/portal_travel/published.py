@@ -14,7 +14,7 @@ from crane_sym.published import (DEFINITION, INTERNAL, LOST_MARK, SYMBOL_FOR_ANO
                                  Cause, Convention, PublishedFormula, printed)
 
 from .model import (C_eps, C_sa, F_alpha, F_aw, F_ha, F_k, F_k1, F_k2, F_m, F_x1, F_x2,
-                    F_z, F_z1, F_z2, Fo, V_atw, V_da1, V_da2, V_eps, V_sa1, V_sa1m,
+                    F_x0, F_z, F_z1, F_z2, Fo, V_atw, V_da1, V_da2, V_eps, V_sa1, V_sa1m,
                     V_samin, V_xp, V_xsum, PAPER, a_w, alpha, alpha_a1, alpha_a2,
                     alpha_tw, b_ap, c_ap, d_a1, d_a2, dy, dy1, dy2, eps_a, ha, half_pi, k,
                     k1, k2, m, s_a1, t_ap, x1, x2, x_p, x_sum, z, z1, z2)
@@ -188,6 +188,9 @@ APPENDIX = [
     _appendix("a", "a := 0.5n", sp.Eq(half_pi, sp.pi / 2),
              "the OCR reads π as 'n'; the name is printed like α's 'a'",
              reconstructed=True, basis=DEFINITION, basis_note="a name the appendix gives"),
+    _data(f"{FORM} appendix, starting guess", "Начальное значение переменной X:=0", F_x0, 0,
+          "Mathcad's Find needs a starting value; the toolkit's bracketed solver needs "
+          "none (crane_sym.gear_kernels._tip_shift)"),
     _appendix("Fo", "Fo(x) := ... z + 2- (1 + x + k)",
              sp.Eq(Fo, _Fo), "rebuilt: Fo(x) := z·c/(z + 2·(1 + x + k)), c := cos α",
              reconstructed=True, conventions=(Convention(

@@ -15,7 +15,7 @@ from crane_sym.involute import (inverse_involute_fn, involute_point, rack_space_
                                 tip_shift_mp)
 
 from .model import (C_eps, C_sa, F_alpha, F_aw, F_ha, F_k, F_k1, F_k2, F_m, F_x1, F_x2,
-                    F_z, F_z1, F_z2, Fo, V_atw, V_da1, V_da2, V_eps, V_sa1, V_sa1m,
+                    F_x0, F_z, F_z1, F_z2, Fo, V_atw, V_da1, V_da2, V_eps, V_sa1, V_sa1m,
                     V_samin, V_xp, V_xsum, a_w, alpha, alpha_a1, alpha_a2, alpha_tw,
                     alpha_y, b_ap, c_ap, d_a1, d_a2, dy, dy1, dy2, eps_a, ha, half_pi, m,
                     phi, r, r_b, r_y, s, s_a1, s_rack, s_y, t_ap, theta, x1, x2, x_min,
@@ -158,7 +158,8 @@ def form1_numbers(d: Derivation) -> dict[str, sp.Expr]:
                              (F_ha, FORM1["h_a"], "h_a"), (F_alpha, FORM1["alpha_deg"], "α"),
                              (F_x2, FORM1["x2"], "x2"), (F_k1, FORM1["k"], "k1"),
                              (F_k2, FORM1["k"], "k2"), (F_k, FORM1["k"], "appendix k"),
-                             (F_z, FORM1["z_appendix"], "appendix z")):
+                             (F_z, FORM1["z_appendix"], "appendix z"),
+                             (F_x0, 0, "appendix starting guess")):
         d.add(f"Form 1 data, {name}", sp.Eq(sym, value), "The form's input.",
               title="Form 1's numbers" if name == "m" else "")
 
