@@ -52,6 +52,9 @@ class involute(sp.Function):  # noqa: N801  (a mathematical function)
     def fdiff(self, argindex: int = 1) -> sp.Expr:
         return sp.tan(self.args[0]) ** 2
 
+    def _latex(self, printer) -> str:
+        return rf"\operatorname{{inv}}\left({printer._print(self.args[0])}\right)"
+
     def _eval_rewrite_as_tan(self, a, **kwargs) -> sp.Expr:
         return sp.tan(a) - a
 
@@ -88,6 +91,9 @@ class acos_checked(sp.Function):  # noqa: N801
 
     def _eval_rewrite_as_acos(self, x, code, **kwargs) -> sp.Expr:
         return sp.acos(x)
+
+    def _latex(self, printer) -> str:
+        return rf"\arccos\left({printer._print(self.args[0])}\right)"
 
     def _eval_evalf(self, prec: int) -> sp.Expr | None:
         x = self.args[0]._eval_evalf(prec) if self.args[0].is_number else None
@@ -129,6 +135,9 @@ class inverse_involute_fn(sp.Function):  # noqa: N801
 
     def fdiff(self, argindex: int = 1) -> sp.Expr:
         return 1 / sp.tan(self) ** 2 if argindex == 1 else sp.S.Zero
+
+    def _latex(self, printer) -> str:
+        return rf"\operatorname{{inv}}^{{-1}}\left({printer._print(self.args[0])}\right)"
 
     def _eval_evalf(self, prec: int) -> sp.Expr:
         with mpmath.workprec(prec + 20):

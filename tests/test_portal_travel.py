@@ -48,6 +48,8 @@ for _gap in ("0", "pi", "2pi"):
                   f"Table 1, hold times, backlash {_gap}": "not_checkable",
                   f"Table 1, accelerations, backlash {_gap}": "not_checkable",
                   f"Table 1, F_max, backlash {_gap}": "not_checkable"})
+_REST.update({"text, psi = 1,6 (the start-up value of [2], no backlash)": "confirmed",
+              "text, psi = 2,6 (backlash of one turn of the fast shaft)": "confirmed"})
 EXPECTED = {**_FORM, **_REST}
 
 

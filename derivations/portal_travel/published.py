@@ -24,7 +24,8 @@ FORM = "Form 1"
 
 def _printed(label: str, latex: str, relation: sp.Eq | None, note: str = "",
              **kwargs) -> PublishedFormula:
-    return printed(PAPER, label, latex, relation, note, **kwargs)
+    """A record whose ``latex`` is the OCR'd text of the print (Mathcad, tables)."""
+    return printed(PAPER, label, latex, relation, note, verbatim=True, **kwargs)
 
 
 def _number(text: str) -> tuple[sp.Rational, float]:

@@ -72,4 +72,12 @@ def _table1() -> list[PublishedFormula]:
     return records
 
 
-PUBLISHED_LOADS = FIG10 + LOADS + _table1()
+TEXT = [
+    _printed(f"text, psi = {text} ({where})", f"коэффициент динамичности у = {text}",
+             sp.Eq(psi_cell, _number(text)[0]), f"the text before Table 1 ({where})",
+             compare_to=f"Table 1, psi, backlash {gap}", tolerance=_number(text)[1],
+             basis=INTERNAL, basis_note="the text against Table 1's F_max/F_ср")
+    for text, gap, where in (("1,6", "0", "the start-up value of [2], no backlash"),
+                             ("2,6", "2pi", "backlash of one turn of the fast shaft"))]
+
+PUBLISHED_LOADS = FIG10 + LOADS + _table1() + TEXT
