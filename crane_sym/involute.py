@@ -145,16 +145,6 @@ class inverse_involute_fn(sp.Function):  # noqa: N801
         return sp.Float(value, mpmath.libmp.prec_to_dps(prec))
 
 
-def tip_thickness_ratio_expr(x: sp.Expr, z: sp.Expr, alpha: sp.Expr, ha: sp.Expr,
-                             dy: sp.Expr) -> sp.Expr:
-    """s_a/m of a rack-generated tooth (shift x, tooth number z, profile angle
-    alpha, addendum coefficient ha, tip shortening dy), in tan form."""
-    d_a = z + 2 * (ha + x - dy)
-    alpha_a = sp.acos(z * sp.cos(alpha) / d_a)
-    return d_a * ((sp.pi / 2 + 2 * x * sp.tan(alpha)) / z + sp.tan(alpha) - alpha
-                  - (sp.tan(alpha_a) - alpha_a))
-
-
 def _mp_thickness(x, z, alpha, ha, dy):
     d_a = z + 2 * (ha + x - dy)
     alpha_a = mpmath.acos(z * mpmath.cos(alpha) / d_a)
@@ -279,4 +269,4 @@ def undercut_limit_np(z, alpha, ha=1.0) -> np.ndarray:
 __all__ = ["ACOS_MESSAGES", "acos_checked", "inverse_involute", "inverse_involute_mp",
            "involute", "inverse_involute_fn", "involute_np", "involute_point", "rack_space_width",
            "thickness_at_radius", "tip_half_angle", "tip_shift", "tip_shift_mp", "tip_shift_np",
-           "tip_thickness_ratio_expr", "undercut_limit_np"]
+           "undercut_limit_np"]

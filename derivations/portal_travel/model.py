@@ -39,7 +39,7 @@ x = sp.Symbol("x", real=True)                          # a gear's shift (generat
 # involute geometry (general steps)
 r_b, phi, theta = sp.symbols("r_b phi theta", positive=True)
 r, r_y, alpha_y = sp.symbols("r r_y alpha_y", positive=True)
-s, s_y, s_rack = sp.symbols("s s_y s_rack", real=True)
+s, s_y = sp.symbols("s s_y", real=True)
 # the appendix's own names: c := cos α, t := tan α, b := t − α, a := 0.5π, Fo(x)
 c_ap, t_ap, b_ap, half_pi, Fo = sp.symbols("c_ap t_ap b_ap A_ap Fo", real=True)
 
@@ -110,8 +110,6 @@ _g = [
     PhysicalSymbol(alpha_y, ONE, "rad", "pressure angle at radius r_y", DEFINED),
     PhysicalSymbol(s, length, "m", "tooth thickness on the reference circle", DEFINED, "real"),
     PhysicalSymbol(s_y, length, "m", "tooth thickness at radius r_y", DEFINED, "real"),
-    PhysicalSymbol(s_rack, length, "m", "width of the rack's tooth space on its rolling "
-                   "line", DEFINED, "real"),
     PhysicalSymbol(c_ap, ONE, "1", "the appendix's c := cos α", DEFINED, "real"),
     PhysicalSymbol(t_ap, ONE, "1", "the appendix's t := tan α", DEFINED, "real"),
     PhysicalSymbol(b_ap, ONE, "1", "the appendix's b := t − α", DEFINED, "real"),
@@ -162,7 +160,7 @@ LATEX_NAMES = {
     alpha_tw: r"\alpha_{tw}", alpha_a1: r"\alpha_{a1}", alpha_a2: r"\alpha_{a2}",
     x_sum: r"x_\Sigma", d_a1: "d_{a1}", d_a2: "d_{a2}", s_a1: "s_{a1}",
     eps_a: r"\varepsilon_\alpha", x_p: "x", x_min: r"x_{\min}", r_b: "r_b", r_y: "r_y",
-    alpha_y: r"\alpha_y", s_y: "s_y", s_rack: r"e_{rack}", c_ap: "c", t_ap: "t",
+    alpha_y: r"\alpha_y", s_y: "s_y", c_ap: "c", t_ap: "t",
     b_ap: "b", half_pi: "a", Fo: r"F_o(x)", psi: r"\psi", G_g: r"G_{г}",
     G_pch: r"G_{пч}", G_vs: r"G_{вс}", L_max: r"L_{\max}", x_o: "x_o", c_arm: "c",
     M_v: r"M_{в}", R_max: r"R_{\max}", V_total: "V", psi_cell: r"\psi",

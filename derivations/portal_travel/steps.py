@@ -18,7 +18,7 @@ from .model import (C_eps, C_sa, F_alpha, F_aw, F_ha, F_k, F_k1, F_k2, F_m, F_x1
                     F_x0, F_z, F_z1, F_z2, Fo, V_atw, V_da1, V_da2, V_eps, V_sa1, V_sa1m,
                     V_samin, V_xp, V_xsum, a_w, alpha, alpha_a1, alpha_a2, alpha_tw,
                     alpha_y, b_ap, c_ap, d_a1, d_a2, dy, dy1, dy2, eps_a, ha, half_pi, m,
-                    phi, r, r_b, r_y, s, s_a1, s_rack, s_y, t_ap, theta, x1, x2, x_min,
+                    phi, r, r_b, r_y, s, s_a1, s_y, t_ap, theta, x1, x2, x_min,
                     x_p, x_sum, z, z1, z2)
 
 #: Form 1's data (mm, degrees), copied from 003_5e8a923a75d2f7ba.txt, Form 1, part 1.
@@ -92,8 +92,7 @@ def mesh(d: Derivation) -> None:
 
 def tips(d: Derivation) -> None:
     """Form 1, parts 2–3: tip diameters, tip pressure angles, tip thickness, contact ratio."""
-    for zi, xi, dyi, da, aa, n in ((z1, x1, dy1, d_a1, alpha_a1, "1"),
-                                   (z2, x2, dy2, d_a2, alpha_a2, "2")):
+    for zi, xi, dyi, da, n in ((z1, x1, dy1, d_a1, "1"), (z2, x2, dy2, d_a2, "2")):
         d.add(f"Form 1, d_a{n}", sp.Eq(da, m * zi + 2 * (ha + xi - dyi) * m),
               "The rack's datum line runs at r + x·m from the centre while cutting; the "
               "full-depth tip lies h_a·m beyond it, less a tip shortening Δy·m.",
@@ -104,12 +103,12 @@ def tips(d: Derivation) -> None:
               title="Tip pressure angles" if n == "1" else "")
     s1 = m * (sp.pi / 2 + 2 * x1 * sp.tan(alpha))
     tip = thickness_at_radius(s1, m * z1 / 2, d_a1 / 2, alpha, alpha_a1)
-    d.add("Form 1, s_a1", sp.Eq(s_a1, d_a1 * ((sp.pi / 2 + 2 * x1 * sp.tan(alpha)) / z1
-                                             + inv(alpha) - inv(alpha_a1))),
-          "'thickness at a radius' with s = m(π/2 + 2x1 tan α), r = mz1/2, r_y = d_a1/2: "
-          + ("checked equal by simplification." if sp.simplify(
-              tip - d_a1 * ((sp.pi / 2 + 2 * x1 * sp.tan(alpha)) / z1 + inv(alpha)
-                            - inv(alpha_a1))) == 0 else "NOT EQUAL"),
+    form = d_a1 * ((sp.pi / 2 + 2 * x1 * sp.tan(alpha)) / z1 + inv(alpha) - inv(alpha_a1))
+    if sp.simplify(tip - form) != 0:
+        raise ArithmeticError("tip thickness: the rearranged form does not follow")
+    d.add("Form 1, s_a1", sp.Eq(s_a1, form),
+          "'thickness at a radius' with s = m(π/2 + 2x1 tan α), r = mz1/2, r_y = d_a1/2, "
+          "rearranged; the two forms checked equal by simplification.",
           "A pointed or thin tip breaks; surface-hardened teeth need s_a >= 0.4m.",
           "Tip thickness")
     rb1, rb2 = m * z1 * sp.cos(alpha) / 2, m * z2 * sp.cos(alpha) / 2
