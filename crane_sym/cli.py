@@ -196,7 +196,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     everything = []
     for i in _ids(args.ids):
         chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
-                  if s.derivation == i and not s.load_table]
+                  if s.derivation == i and not s.load_table and "duration" in s.options]
         d = registry.get(i)
         if not chosen or not d.outputs:
             print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)

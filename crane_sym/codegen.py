@@ -18,10 +18,11 @@ from typing import Iterable, Sequence
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
-from . import __version__, kernels
+from . import __version__, gear_kernels, kernels
 from .derivation import Derivation, Output
 from .entire import Z, plan
 from .inplace import chain
+from .involute import ACOS_MESSAGES
 from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
 from .symbols import TIME, SymbolTable
 
@@ -81,6 +82,24 @@ class _Printer(NumPyPrinter):
 
     def _print_phase_cos(self, expr: sp.Basic) -> str:
         return f"_cos_pair({self._print(expr.args[0])}, {float(expr.args[1])!r})"
+
+    def _print_involute(self, expr: sp.Basic) -> str:
+        return f"_involute({self._print(expr.args[0])})"
+
+    def _print_inverse_involute_fn(self, expr: sp.Basic) -> str:
+        message = ACOS_MESSAGES[int(expr.args[1])]
+        return f"_inverse_involute({self._print(expr.args[0])}, {message!r})"
+
+    def _print_acos_checked(self, expr: sp.Basic) -> str:
+        message = ACOS_MESSAGES[int(expr.args[1])]
+        return f"_acos_checked({self._print(expr.args[0])}, {message!r})"
+
+    def _print_tip_half_angle(self, expr: sp.Basic) -> str:
+        args = ", ".join(self._print(a) for a in expr.args[:5])
+        return f"_tip_half_angle({args}, {ACOS_MESSAGES[int(expr.args[5])]!r})"
+
+    def _print_tip_shift(self, expr: sp.Basic) -> str:
+        return "_tip_shift(" + ", ".join(self._print(a) for a in expr.args) + ")"
 
     def _print_entire(self, expr: sp.Basic) -> str:
         helpers = self._settings["helpers"]
@@ -330,7 +349,10 @@ def _kernel_source(functions: Sequence[str]) -> str:
     """Source of the kernels the function texts call, and their dependencies."""
     called = set(re.findall(r"\b(_[a-z_]+)\(", "\n".join(functions)))
     names = kernels.closure({"_checked"} | (called & set(kernels.DEPENDS)))
-    return "\n\n".join(inspect.getsource(getattr(kernels, n)) for n in names)
+    sources = [inspect.getsource(getattr(kernels, n)) for n in names]
+    gear = kernels.closure(called & set(gear_kernels.DEPENDS), gear_kernels.DEPENDS)
+    sources += [inspect.getsource(getattr(gear_kernels, n)) for n in gear]
+    return "\n\n".join(sources)
 
 
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,

@@ -45,7 +45,12 @@ def fold_constants(expr: sp.Expr) -> sp.Expr:
     if expr.is_Rational or (expr.is_Atom and not expr.is_number):
         return expr
     if expr.is_number:
-        return sp.Float(sp.N(expr, 40), 40)
+        value = sp.N(expr, 40)
+        if value.is_Float:
+            return sp.Float(value, 40)
+        # not a real number (an arc cosine out of its domain, left for the
+        # generated code to refuse by name): fold only its arguments
+        return expr.func(*[fold_constants(a) for a in expr.args]) if expr.args else expr
     if isinstance(expr, sp.Pow):
         return sp.Pow(fold_constants(expr.base), expr.exp)
     return expr.func(*[fold_constants(a) for a in expr.args])

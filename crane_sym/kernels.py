@@ -343,13 +343,15 @@ DEPENDS = {
 }
 
 
-def closure(names: set[str]) -> list[str]:
-    """``names`` and every kernel they depend on, in this module's order."""
+def closure(names: set[str], depends: dict | None = None) -> list[str]:
+    """``names`` and every kernel they depend on, in the order of ``depends``
+    (default: this module's ``DEPENDS``)."""
+    depends = DEPENDS if depends is None else depends
     needed: set[str] = set()
     todo = list(names)
     while todo:
         name = todo.pop()
         if name not in needed:
             needed.add(name)
-            todo.extend(DEPENDS[name])
-    return [name for name in DEPENDS if name in needed]
+            todo.extend(depends[name])
+    return [name for name in depends if name in needed]

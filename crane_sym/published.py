@@ -137,6 +137,10 @@ class PublishedFormula:
         ``model``.
     cause : Cause or None
         The transcriber's diagnosis, for a formula whose record is a finding.
+    verbatim : bool
+        True when ``latex`` holds the OCR'd text of the print (a Mathcad form,
+        a table cell) rather than LaTeX; the walkthrough shows it as text,
+        beside the transcription typeset.
     """
 
     label: str
@@ -152,6 +156,7 @@ class PublishedFormula:
     basis: str = MODEL
     basis_note: str = ""
     cause: Cause | None = None
+    verbatim: bool = False
 
     def __post_init__(self) -> None:
         if self.basis not in BASES:

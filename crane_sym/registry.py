@@ -14,11 +14,12 @@ from .derivation import Derivation, SceneLoad
 DERIVATIONS: dict[str, str] = {
     "travel_braking": "crane_sym.derivations.travel_braking",
     "hoist_startup": "crane_sym.derivations.hoist_startup",
+    "portal_travel": "crane_sym.derivations.portal_travel",
     "drum_drive": "crane_sym.derivations.drum_drive",
 }
 #: Paper file-number prefixes accepted as ids on the command line.
 ALIASES: dict[str, str] = {"000": "travel_braking", "002": "hoist_startup",
-                           "004": "drum_drive"}
+                           "003": "portal_travel", "004": "drum_drive"}
 
 
 def ids() -> list[str]:

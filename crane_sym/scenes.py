@@ -240,7 +240,9 @@ def load_scene(path_or_name: str | Path) -> Scene:
     given = [key for key in loads if key in data]
     if len(given) > 1:
         raise SceneError(f"{where}: give one scene load, not {given}")
-    options = _options(_table(data, "options", where), where)
+    # A derivation without time (gear geometry, statics) has no duration to give.
+    timed = bool(given) or bool(registry.get(derivation_id).symbols.with_role(TIME))
+    options = _options(_table(data, "options", where), where, timed)
     raw = _table(data, "parameters", where)
     if given:
         return _load_scene_with_load(path, head, derivation_id, loads[given[0]], data,
@@ -366,8 +368,12 @@ def _table(data: dict[str, Any], key: str, where: str) -> dict[str, Any]:
     return value
 
 
-def _options(raw: dict[str, Any], where: str) -> dict[str, Any]:
+def _options(raw: dict[str, Any], where: str, timed: bool = True) -> dict[str, Any]:
     options = dict(raw)
+    if not timed:
+        if "duration" in raw:
+            raise SceneError(f"{where}: [options] duration: the derivation has no time")
+        return options
     if "duration" not in raw:
         raise SceneError(f"{where}: [options] lacks 'duration', e.g. duration = \"2 s\"")
     try:

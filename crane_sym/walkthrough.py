@@ -126,13 +126,22 @@ def _verdict_line(record: AuditRecord) -> str:
 _SHORT = 300
 
 
-def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord]) -> list[str]:
+def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord],
+                    latex_names: dict | None = None) -> list[str]:
     """The paper's print of each formula, verbatim, with its verdict."""
     blocks = []
+    latex_names = latex_names or {}
     for f in formulas:
         label = f.label if f.label.startswith("(") else f"({f.label})"
         blocks.append(f"**As printed in the paper** {label}:")
-        blocks.append(_display(f.latex))
+        if f.verbatim:  # OCR'd text of the print, not LaTeX
+            blocks.append(_fenced(f.latex))
+            if f.printed is not None:
+                blocks.append("Transcribed" + (" (reconstructed from the OCR)"
+                                               if f.reconstructed else "") + ":")
+                blocks.append(_display(_statement_tex(f.printed, latex_names)))
+        else:
+            blocks.append(_display(f.latex))
         if f.label in by_label:
             blocks.append(_verdict_line(by_label[f.label]))
     return blocks
@@ -239,12 +248,12 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
             parts.append(f"**Why.** {step.why}")
         parts.append(_display(_statement_tex(step.statement, names)))
         parts += _printed_blocks([f for f in d.published if f.target == step.label
-                                  and f.target not in in_table], by_label)
+                                  and f.target not in in_table], by_label, names)
     labels = {s.label for s in d.steps}
     orphans = [f for f in d.published if f.target not in labels]
     if orphans:
         parts.append("### Printed formulas without a derived step")
-        parts += _printed_blocks(orphans, by_label)
+        parts += _printed_blocks(orphans, by_label, names)
     parts += ["## Verdicts", _verdicts(d, records)]
     return "\n\n".join(parts) + "\n"
 

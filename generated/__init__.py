@@ -4,12 +4,16 @@
 Modules:
     travel_braking
     hoist_startup
+    portal_travel
     drum_drive
     scene_drum_drive_example
     scene_drum_drive_undamped
+    scene_fig10_shift_limits
+    scene_form1_gear_pair
     scene_hoist_drive_laws
     scene_hoist_fig3
     scene_hoist_fig5
     scene_hoist_user_drive_law
     scene_overhead_crane_50t
+    scene_portal_support_loads
 """

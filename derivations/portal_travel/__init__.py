@@ -1,0 +1,59 @@
+"""Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads.
+
+Source: ``003_5e8a923a75d2f7ba.txt`` — E.N. Andrianov, A.N. Ivanov, "Topical
+questions of raising the reliability of the travel mechanisms of rail-mounted
+portal cranes" (Admiral Makarov State University of Maritime and Inland
+Shipping; in Russian). The file ends with the start of an unrelated article
+(explosions on tankers), which is out of scope.
+
+Most of the paper is design practice. This package rebuilds its computations:
+the Mathcad Form 1 check of a spur-gear pair cut by a rack (operating pressure
+angle, shift sum, tip diameters and pressure angles, tip thickness, contact
+ratio, the pointed-tip shift of its appendix) from the involute and the rack;
+Fig. 10's four curves; the support loads (3)–(4) from the statics of a
+reconstructed portal; Tables 1–3 as data, with Table 1's own arithmetic. The
+three-mass start-up model with backlash behind Table 1 (eqs (1)–(2), lost in
+the OCR) is not built yet: its cells are recorded as not checkable.
+
+Files:
+
+- ``model.py``: symbols, symbol table, LaTeX names, model text.
+- ``steps.py``: the gear geometry and Form 1's numbers; ``steps_loads.py``:
+  (3)–(4) and Table 1's arithmetic.
+- ``published.py``: Form 1 as printed; ``published_loads.py``: Fig. 10's z = 10
+  value, (3)–(4), Table 1.
+- ``tables.py``: Tables 1–3 as data.
+- ``outputs.py``: generated functions; ``hard_cases.py``: hard cases.
+- ``report.py``: ``scene_report`` (Fig. 10, a gear pair, support loads).
+
+The package does nothing on import; ``build()`` returns the ``Derivation``.
+"""
+from __future__ import annotations
+
+from crane_sym.derivation import Derivation
+
+from . import steps, steps_loads
+from .hard_cases import hard_cases
+from .model import CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .outputs import outputs
+from .published import PUBLISHED
+from .published_loads import PUBLISHED_LOADS
+from .report import scene_report
+
+__all__ = ["ID", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases", "scene_report"]
+
+
+def build() -> Derivation:
+    """Rebuild Form 1 from the involute and the rack, Fig. 10, and (3)–(4)."""
+    d = Derivation(id=ID, paper=PAPER, title=TITLE, citation=CITATION,
+                   model=MODEL, symbols=SYMBOLS)
+    steps.involute_and_rack(d)
+    steps.mesh(d)
+    steps.tips(d)
+    steps.tooth_limits(d)
+    steps.form1_numbers(d)
+    steps_loads.support_loads(d)
+    steps_loads.table1_arithmetic(d)
+    d.published.extend(PUBLISHED + PUBLISHED_LOADS)
+    d.outputs.extend(outputs(d))
+    return d

@@ -1,0 +1,199 @@
+"""Paper 003's models: a spur-gear pair cut by a rack (Form 1, Fig. 10) and the
+support loads of a portal (3)–(4); their symbols, LaTeX names and model text.
+
+The lowest module of the package: everything else imports its symbols from here.
+"""
+from __future__ import annotations
+
+import sympy as sp
+from sympy.physics.units import force, length
+
+from crane_sym.symbols import DEFINED, PhysicalSymbol, SymbolTable
+
+# --- The paper ---------------------------------------------------------------
+ID = "portal_travel"
+PAPER = "003_5e8a923a75d2f7ba.txt"
+TITLE = "Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads"
+CITATION = ("E.N. Andrianov, A.N. Ivanov, Vestnik of the Admiral Makarov State "
+            "University of Maritime and Inland Shipping, issue 1")
+
+ONE = sp.S.One * length / length
+
+# --- Gear pair (Form 1) -----------------------------------------------------------
+m = sp.Symbol("m", positive=True)
+z1, z2, z = sp.symbols("z1 z2 z", positive=True)
+a_w = sp.Symbol("a_w", positive=True)
+ha = sp.Symbol("h_a", positive=True)
+alpha = sp.Symbol("alpha", positive=True)
+x1, x2 = sp.symbols("x1 x2", real=True)
+k1, k2, k = sp.symbols("k1 k2 k", real=True)          # the print's "shortening" k
+dy1, dy2, dy = sp.symbols("dy1 dy2 dy", nonnegative=True)  # tip shortening Δy ≥ 0
+sigma = sp.Symbol("sigma", nonnegative=True)           # tip thickness over m
+alpha_tw, alpha_a1, alpha_a2 = sp.symbols("alpha_tw alpha_a1 alpha_a2", positive=True)
+x_sum = sp.Symbol("x_sum", real=True)
+d_a1, d_a2 = sp.symbols("d_a1 d_a2", positive=True)
+s_a1, eps_a = sp.Symbol("s_a1", real=True), sp.Symbol("epsilon_alpha", positive=True)
+x_p = sp.Symbol("x_p", real=True)                      # the shift the appendix solves for
+x_min = sp.Symbol("x_min", real=True)
+x = sp.Symbol("x", real=True)                          # a gear's shift (generated code)
+# involute geometry (general steps)
+r_b, phi, theta = sp.symbols("r_b phi theta", positive=True)
+r, r_y, alpha_y = sp.symbols("r r_y alpha_y", positive=True)
+s, s_y = sp.symbols("s s_y", real=True)
+# the appendix's own names: c := cos α, t := tan α, b := t − α, a := 0.5π, Fo(x)
+c_ap, t_ap, b_ap, half_pi, Fo = sp.symbols("c_ap t_ap b_ap A_ap Fo", real=True)
+
+# --- Form 1 as numbers (mm, degrees): the form's own data and results ------------
+F_m, F_z1, F_z2, F_aw, F_ha, F_alpha = sp.symbols("F_m F_z1 F_z2 F_aw F_ha F_alpha",
+                                                  positive=True)
+F_x1, F_x2, F_k1, F_k2, F_k, F_z, F_x0 = sp.symbols("F_x1 F_x2 F_k1 F_k2 F_k F_z F_x0",
+                                                    real=True)
+V_atw, V_xsum, V_da1, V_da2, V_sa1, V_sa1m, V_eps, V_xp, V_samin = sp.symbols(
+    "V_atw V_xsum V_da1 V_da2 V_sa1 V_sa1m V_eps V_xp V_samin", real=True)
+C_sa, C_eps = sp.symbols("C_sa C_eps", real=True)     # 1 when a printed check holds
+
+# --- Support loads (3)–(4) ---------------------------------------------------------
+psi = sp.Symbol("psi", positive=True)
+G_g, G_pch, G_vs = sp.symbols("G_g G_pch G_vs", positive=True)
+L_max, x_o, c_arm = sp.symbols("L_max x_o c", positive=True)
+M_v, R_max, V_total = sp.symbols("M_v R_max V_total", real=True)
+# --- Table 1 arithmetic ------------------------------------------------------------
+psi_cell = sp.Symbol("psi_cell", positive=True)
+
+_g = [
+    PhysicalSymbol(m, length, "m", "module of the teeth", sample_range=(1e-3, 5e-2)),
+    PhysicalSymbol(z1, ONE, "1", "number of teeth of the pinion", sample_range=(8, 150)),
+    PhysicalSymbol(z2, ONE, "1", "number of teeth of the wheel", sample_range=(8, 150)),
+    PhysicalSymbol(z, ONE, "1", "number of teeth", sample_range=(8, 150)),
+    PhysicalSymbol(a_w, length, "m", "centre distance", sample_range=(0.05, 5.0)),
+    PhysicalSymbol(ha, ONE, "1", "addendum coefficient of the basic rack h_a*",
+                   sample_range=(0.8, 1.25)),
+    PhysicalSymbol(alpha, ONE, "rad", "profile angle of the basic rack",
+                   sample_range=(0.2, 0.5)),
+    PhysicalSymbol(x1, ONE, "1", "shift coefficient of the pinion", sign="real",
+                   sample_range=(0.05, 1.0)),
+    PhysicalSymbol(x2, ONE, "1", "shift coefficient of the wheel", sign="real",
+                   sample_range=(0.05, 1.0)),
+    PhysicalSymbol(x, ONE, "1", "shift coefficient of the gear", sign="real",
+                   sample_range=(0.05, 1.0)),
+    PhysicalSymbol(k1, ONE, "1", "the print's 'shortening coefficient' of the pinion",
+                   sign="real", sample_range=(0.01, 0.3)),
+    PhysicalSymbol(k2, ONE, "1", "the print's 'shortening coefficient' of the wheel",
+                   sign="real", sample_range=(0.01, 0.3)),
+    PhysicalSymbol(k, ONE, "1", "the appendix's 'shortening coefficient'", sign="real",
+                   sample_range=(0.01, 0.3)),
+    PhysicalSymbol(dy1, ONE, "1", "tip shortening coefficient Δy of the pinion (>= 0)",
+                   sign="nonnegative", sample_range=(0.01, 0.3)),
+    PhysicalSymbol(dy2, ONE, "1", "tip shortening coefficient Δy of the wheel (>= 0)",
+                   sign="nonnegative", sample_range=(0.01, 0.3)),
+    PhysicalSymbol(dy, ONE, "1", "tip shortening coefficient Δy (>= 0)",
+                   sign="nonnegative", sample_range=(0.01, 0.3)),
+    PhysicalSymbol(sigma, ONE, "1", "tip tooth thickness over the module, s_a/m",
+                   sign="nonnegative", sample_range=(0.01, 0.5)),
+    PhysicalSymbol(alpha_tw, ONE, "rad", "operating (transverse) pressure angle", DEFINED),
+    PhysicalSymbol(alpha_a1, ONE, "rad", "pressure angle at the pinion tip", DEFINED),
+    PhysicalSymbol(alpha_a2, ONE, "rad", "pressure angle at the wheel tip", DEFINED),
+    PhysicalSymbol(x_sum, ONE, "1", "sum of shift coefficients x1 + x2", DEFINED, "real"),
+    PhysicalSymbol(d_a1, length, "m", "tip diameter of the pinion", DEFINED),
+    PhysicalSymbol(d_a2, length, "m", "tip diameter of the wheel", DEFINED),
+    PhysicalSymbol(s_a1, length, "m", "tooth thickness on the pinion's tip circle",
+                   DEFINED, "real"),
+    PhysicalSymbol(eps_a, ONE, "1", "transverse contact ratio", DEFINED),
+    PhysicalSymbol(x_p, ONE, "1", "shift coefficient the appendix solves for", DEFINED,
+                   "real", sample_range=(0.05, 2.0)),
+    PhysicalSymbol(x_min, ONE, "1", "least shift free of undercut", DEFINED, "real"),
+    PhysicalSymbol(r_b, length, "m", "base radius", DEFINED),
+    PhysicalSymbol(phi, ONE, "rad", "roll angle of the involute", DEFINED),
+    PhysicalSymbol(theta, ONE, "rad", "polar angle of an involute point", DEFINED),
+    PhysicalSymbol(r, length, "m", "reference radius m z/2", DEFINED),
+    PhysicalSymbol(r_y, length, "m", "a radius of the tooth profile", DEFINED),
+    PhysicalSymbol(alpha_y, ONE, "rad", "pressure angle at radius r_y", DEFINED),
+    PhysicalSymbol(s, length, "m", "tooth thickness on the reference circle", DEFINED, "real"),
+    PhysicalSymbol(s_y, length, "m", "tooth thickness at radius r_y", DEFINED, "real"),
+    PhysicalSymbol(c_ap, ONE, "1", "the appendix's c := cos α", DEFINED, "real"),
+    PhysicalSymbol(t_ap, ONE, "1", "the appendix's t := tan α", DEFINED, "real"),
+    PhysicalSymbol(b_ap, ONE, "1", "the appendix's b := t − α", DEFINED, "real"),
+    PhysicalSymbol(half_pi, ONE, "1", "the appendix's a := 0.5π", DEFINED, "real"),
+    PhysicalSymbol(Fo, ONE, "1", "the appendix's Fo(x) = cos of the tip pressure angle",
+                   DEFINED, "real"),
+]
+_numbers = [PhysicalSymbol(sym, ONE, "1", what, DEFINED, "real") for sym, what in [
+    (F_m, "Form 1: m in mm"), (F_z1, "Form 1: z1"), (F_z2, "Form 1: z2"),
+    (F_aw, "Form 1: a_w in mm"), (F_ha, "Form 1: h_a"), (F_alpha, "Form 1: α in degrees"),
+    (F_x1, "Form 1: x1"), (F_x2, "Form 1: x2"), (F_k1, "Form 1: k1"), (F_k2, "Form 1: k2"),
+    (F_k, "Form 1 appendix: k"), (F_z, "Form 1 appendix: z"),
+    (F_x0, "Form 1 appendix: the starting guess of Find"),
+    (V_atw, "Form 1: α_tw in degrees"), (V_xsum, "Form 1: x_Σ"),
+    (V_da1, "Form 1: d_a1 in mm"), (V_da2, "Form 1: d_a2 in mm"),
+    (V_sa1, "Form 1: s_a1 in mm"), (V_sa1m, "Form 1: s_a1/m"),
+    (V_eps, "Form 1: ε_α"), (V_xp, "Form 1 appendix: pointed-tip shift at z = 10"),
+    (V_samin, "Form 1: least tip thickness 0.4·m in mm"),
+    (C_sa, "1 if s_a1/m >= 0.4 (the form's check), else 0"),
+    (C_eps, "1 if ε_α > 1.2 (the form's check), else 0"),
+    (psi_cell, "Table 1: dynamic coefficient F_max/F_ср of one row"),
+]]
+_loads = [
+    PhysicalSymbol(psi, ONE, "1", "dynamic coefficient of the hoisted load (printed у)",
+                   sample_range=(1.0, 2.0)),
+    PhysicalSymbol(G_g, force, "N", "rated weight of the load G_г", sample_range=(5e4, 5e5)),
+    PhysicalSymbol(G_pch, force, "N", "weight of the slewing part G_пч",
+                   sample_range=(5e5, 3e6)),
+    PhysicalSymbol(G_vs, force, "N", "weight of the portal's upper structure G_вс",
+                   sample_range=(1e5, 1e6)),
+    PhysicalSymbol(L_max, length, "m", "maximum reach", sample_range=(15.0, 40.0)),
+    PhysicalSymbol(x_o, length, "m", "distance of the slewing part's centre of gravity "
+                   "from the slewing axis", sample_range=(0.5, 5.0)),
+    PhysicalSymbol(c_arm, length, "m", "arm of the couple by which the slewing part "
+                   "bears on the circular rail", sample_range=(3.0, 10.0)),
+    PhysicalSymbol(M_v, force * length, "N*m", "moment of the vertical loads M_в",
+                   DEFINED, "real"),
+    PhysicalSymbol(R_max, force, "N", "largest vertical load on one portal leg",
+                   DEFINED, "real"),
+    PhysicalSymbol(V_total, force, "N", "vertical load carried by the portal", DEFINED,
+                   "real"),
+]
+SYMBOLS = SymbolTable(_g + _numbers + _loads)
+
+LATEX_NAMES = {
+    z1: "z_1", z2: "z_2", a_w: "a_w", ha: "h_a", alpha: r"\alpha", x1: "x_1", x2: "x_2",
+    k1: "k_1", k2: "k_2", dy1: r"\Delta y_1", dy2: r"\Delta y_2", dy: r"\Delta y",
+    alpha_tw: r"\alpha_{tw}", alpha_a1: r"\alpha_{a1}", alpha_a2: r"\alpha_{a2}",
+    x_sum: r"x_\Sigma", d_a1: "d_{a1}", d_a2: "d_{a2}", s_a1: "s_{a1}",
+    eps_a: r"\varepsilon_\alpha", x_p: "x", x_min: r"x_{\min}", r_b: "r_b", r_y: "r_y",
+    alpha_y: r"\alpha_y", s_y: "s_y", c_ap: "c", t_ap: "t",
+    b_ap: "b", half_pi: "a", Fo: r"F_o(x)", psi: r"\psi", G_g: r"G_{г}",
+    G_pch: r"G_{пч}", G_vs: r"G_{вс}", L_max: r"L_{\max}", x_o: "x_o", c_arm: "c",
+    M_v: r"M_{в}", R_max: r"R_{\max}", V_total: "V", psi_cell: r"\psi",
+    F_m: "m", F_z1: "z_1", F_z2: "z_2", F_aw: "a_w", F_ha: "h_a", F_alpha: r"\alpha^\circ",
+    F_x1: "x_1", F_x2: "x_2", F_k1: "k_1", F_k2: "k_2", F_k: "k", F_z: "z", F_x0: "x_{(0)}",
+    V_atw: r"\alpha_{tw}^\circ", V_xsum: r"x_\Sigma", V_da1: "d_{a1}", V_da2: "d_{a2}",
+    V_sa1: "s_{a1}", V_sa1m: "s_{a1}/m", V_eps: r"\varepsilon_\alpha",
+    V_xp: "x_{z=10}", V_samin: "0.4 m", C_sa: r"[s_{a1}/m \ge 0.4]",
+    C_eps: r"[\varepsilon_\alpha > 1.2]",
+}
+
+MODEL = r"""
+Form 1 and Fig. 10: a pair of involute spur gears cut by generating with a
+basic rack (profile angle α, addendum h_a·m), the rack's rolling line shifted
+by x·m from its datum line. The involute is the path of the end of a string
+unwound from the base circle r_b = r·cos α; the gear's tooth thickness on its
+reference circle equals the rack's space width on the rolling line; two gears
+mesh without backlash when their tooth thicknesses on the operating pitch
+circles add up to the operating pitch. Tips are cut to d_a = m·z + 2(h_a + x −
+Δy)·m with a tip shortening Δy >= 0. Only the geometry is modelled (no
+tolerances, no tip rounding of the rack).
+
+              rack datum ------------------------  +x·m (rolling line)
+                  \____/    \____/    \____/        flank at α to the normal
+                    gear: base circle r_b, involute flanks
+
+Support loads (3)–(4), reconstructed (the paper does not draw the portal): a
+four-legged portal carries the vertical load V = ψ·G_г + G_пч + G_вс in equal
+quarters; the slewing part bears on a circular rail and passes the moment of
+the vertical loads about the slewing axis, M_в = ψ·G_г·L_max − G_пч·x_o, to
+the portal as a couple of forces ±M_в/c, each shared by the two legs under it.
+
+        ψG_г <---- L_max ----> | axis <- x_o -> G_пч
+             ====== circular rail, couple arm c ======
+             leg   leg                       leg   leg
+"""

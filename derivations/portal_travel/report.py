@@ -1,0 +1,155 @@
+"""What ``crane-sym run`` prints and plots for a scene of paper 003.
+
+Three kinds of scene, told apart by the outputs they name: Fig. 10 (the shift
+limits against the tooth number), a gear pair checked like Form 1, and the
+support loads with Table 3's exceedance probabilities. Numbers come from the
+scene's generated module, never from SymPy. Imports happen only when run.
+"""
+from __future__ import annotations
+
+
+def _int_option(scene, key: str, default: int, lo: int, hi: int) -> int:
+    from crane_sym.scenes import SceneError
+    value = scene.options.get(key, default)
+    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
+        raise SceneError(f"scene {scene.name!r}: [options] {key} must be an integer in "
+                         f"{lo}..{hi}, got {value!r}")
+    return value
+
+
+def fig10_report(scene, module):
+    """Fig. 10: curves 1–4 over the tooth numbers z_min..z_max."""
+    import numpy as np
+
+    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+
+    z_min = _int_option(scene, "z_min", 8, 3, 10_000)
+    z_max = _int_option(scene, "z_max", 100, z_min + 1, 100_000)
+    z = np.arange(z_min, z_max + 1, dtype=float)
+    curves = [("1: $s_a = 0$", module.pointed_tip_shift(z)),
+              ("2: $s_a = 0.3\\,m$", module.tip_thickness_shift(z, 0.3)),
+              ("3: $s_a = 0.4\\,m$", module.tip_thickness_shift(z, 0.4)),
+              ("4: no undercut, $x_{\\min}$", module.undercut_limit(z))]
+    if not all(np.all(np.isfinite(c)) for _, c in curves):
+        raise SceneError(f"scene {scene.name!r}: a curve of Fig. 10 is not finite")
+    at10 = {name: float(c[list(z).index(10.0)]) for name, c in curves} if z_min <= 10 <= \
+        z_max else {}
+    values = {"x_pointed_z10": at10.get(curves[0][0], float("nan")),
+              "x_03m_z10": at10.get(curves[1][0], float("nan")),
+              "x_04m_z10": at10.get(curves[2][0], float("nan")),
+              "x_min_z10": at10.get(curves[3][0], float("nan")),
+              "x_pointed_zmax": float(curves[0][1][-1]), "x_min_zmax": float(curves[3][1][-1])}
+    lines = [f"tooth numbers          z = {z_min}…{z_max}",
+             f"pointed tip at z = 10  x = {fq(values['x_pointed_z10'])} (the paper prints 0.7)",
+             f"s_a = 0.3m at z = 10   x = {fq(values['x_03m_z10'])}",
+             f"s_a = 0.4m at z = 10   x = {fq(values['x_04m_z10'])}",
+             f"no undercut at z = 10  x >= {fq(values['x_min_z10'])}"]
+    panel = Panel("Fig. 10: shift coefficient limits", "shift coefficient $x$",
+                  [(name, z, c) for name, c in curves], xlabel="number of teeth $z$")
+    return SceneReport(lines=lines, values=values, panels=[panel])
+
+
+def gear_pair_report(scene, module):
+    """A gear pair checked like Form 1: x_Σ from a_w, put on the pinion by the
+    option ``pinion_share`` (Form 1: 1.0); undercut refused when the scene's
+    option ``forbid_undercut`` is true."""
+    import numpy as np
+
+    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+
+    q, o = scene.parameters, scene.options
+    share = o.get("pinion_share", 1.0)
+    if isinstance(share, bool) or not isinstance(share, (int, float)) or not 0 <= share <= 1:
+        raise SceneError(f"scene {scene.name!r}: [options] pinion_share must be in [0, 1]")
+    angle = float(module.operating_pressure_angle())
+    x_sum = float(module.shift_sum())
+    x1, x2 = share * x_sum, (1 - share) * x_sum
+    limits = [float(module.undercut_limit(q[zn])) for zn in ("z1", "z2")]
+    if o.get("forbid_undercut", False):
+        for zn, xi, lim in (("z1", x1, limits[0]), ("z2", x2, limits[1])):
+            if xi < lim:
+                raise SceneError(f"scene {scene.name!r}: {zn} = {q[zn]:g} teeth are "
+                                 f"undercut with shift {xi:.4g}: the shift must be at "
+                                 f"least {lim:.4g} (forbid_undercut = true)")
+    m = q["m"]
+    tips = [float(module.tip_diameter(q[zn], xi, q["dy1" if zn == "z1" else "dy2"]))
+            for zn, xi in (("z1", x1), ("z2", x2))]
+    thick = [float(module.tip_thickness(q[zn], xi, q["dy1" if zn == "z1" else "dy2"]))
+             for zn, xi in (("z1", x1), ("z2", x2))]
+    eps = float(module.contact_ratio(x1, x2))
+    values = {"alpha_tw_deg": float(np.degrees(angle)), "x_sum": x_sum, "x1": x1, "x2": x2,
+              "d_a1": tips[0], "d_a2": tips[1], "s_a1": thick[0], "s_a2": thick[1],
+              "s_a1_over_m": thick[0] / m, "s_a2_over_m": thick[1] / m,
+              "epsilon_alpha": eps, "x_min1": limits[0], "x_min2": limits[1]}
+    lines = [f"operating pressure angle α_tw = {fq(values['alpha_tw_deg'], 'deg')}",
+             f"sum of shifts           x_Σ = {fq(x_sum)} (x1 = {fq(x1)}, x2 = {fq(x2)})",
+             f"tip diameters           d_a1 = {fq(tips[0] * 1e3, 'mm')}, "
+             f"d_a2 = {fq(tips[1] * 1e3, 'mm')}",
+             f"tip thickness           s_a1 = {fq(thick[0] * 1e3, 'mm')} "
+             f"(s_a1/m = {fq(thick[0] / m)}), s_a2/m = {fq(thick[1] / m)}; need >= 0.4",
+             f"contact ratio           ε_α = {fq(eps)}; need > 1.2",
+             f"undercut limits         x_min1 = {fq(limits[0])}, x_min2 = {fq(limits[1])}"]
+    shares = np.linspace(0.0, 1.0, 101)
+    xs1, xs2 = shares * x_sum, (1 - shares) * x_sum
+    panels = [
+        Panel("Tip thickness against the pinion's share of $x_\\Sigma$", "$s_a/m$", [
+            ("pinion $s_{a1}/m$", shares, module.tip_thickness(q["z1"], xs1, q["dy1"]) / m),
+            ("wheel $s_{a2}/m$", shares, module.tip_thickness(q["z2"], xs2, q["dy2"]) / m),
+            ("least $0.4$", shares, np.full_like(shares, 0.4))],
+            xlabel="pinion share $x_1/x_\\Sigma$"),
+        Panel("Contact ratio against the pinion's share", "$\\varepsilon_\\alpha$", [
+            ("$\\varepsilon_\\alpha$", shares, module.contact_ratio(xs1, xs2)),
+            ("least $1.2$", shares, np.full_like(shares, 1.2))],
+            xlabel="pinion share $x_1/x_\\Sigma$"),
+    ]
+    return SceneReport(lines=lines, values=values, panels=panels)
+
+
+def support_report(scene, module):
+    """(3)–(4) at the scene's crane; Table 3's exceedance probabilities."""
+    import math
+
+    import numpy as np
+
+    from crane_sym.load_statistics import log_exceedance_probability
+    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+
+    from .tables import table3_normal
+
+    largest = scene.options.get("largest_reach_m", 30.0)
+    if isinstance(largest, bool) or not isinstance(largest, (int, float)) or largest <= 0:
+        raise SceneError(f"scene {scene.name!r}: [options] largest_reach_m must be > 0")
+    load = float(module.max_support_load(float(largest)))
+    reach = np.linspace(0.3 * largest, largest, 101)
+    along = module.max_support_load(reach)
+    values = {"R_max": load}
+    lines = [f"largest leg load (3)–(4), derived portal, at L = {fq(largest, 'm')}: "
+             f"R_max = {fq(load / 1e3, 'kN')}"]
+    curves = []
+    for variant in ("ship-to-store", "mixed"):
+        mean, std = table3_normal("vertical pressure", variant)
+        level = mean + std * np.linspace(0.0, 12.0, 121)
+        log10p = log_exceedance_probability(level, mean, std) / math.log(10)
+        curves.append((f"{variant}: $m_R = {mean:g}$, $\\sigma_R = {std:g}$", level, log10p))
+        key = variant.replace("-", "_")
+        values[f"log10_P_6sigma_{key}"] = float(
+            log_exceedance_probability(mean + 6 * std, mean, std) / math.log(10))
+        lines.append(f"Table 3, vertical, {variant}: P(R > m_R + 6σ_R) = "
+                     f"10^{fq(values[f'log10_P_6sigma_{key}'])}")
+    panels = [
+        Panel("Largest leg load against the reach", "$R_{\\max}$ [kN]",
+              [("$R_{\\max}$ by (3)–(4), derived", reach, along / 1e3)],
+              xlabel="reach $L$ [m]"),
+        Panel("Table 3: exceedance of the vertical support load", "$\\log_{10} P(R > r)$",
+              curves, xlabel="level $r$ (Table 3's unit)"),
+    ]
+    return SceneReport(lines=lines, values=values, panels=panels)
+
+
+def scene_report(scene, module):
+    """Numbers and panels of a scene of paper 003 (see the module docstring)."""
+    if "pointed_tip_shift" in scene.outputs:
+        return fig10_report(scene, module)
+    if "contact_ratio" in scene.outputs:
+        return gear_pair_report(scene, module)
+    return support_report(scene, module)

@@ -1,0 +1,526 @@
+"""Numeric functions for derivation 'portal_travel'. Generated; do not edit.
+
+Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
+Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    operating_pressure_angle(m, z1, z2, a_w, alpha) -> [rad]    eq Form 1, alpha_tw
+    shift_sum(m, z1, z2, a_w, alpha) -> [1]    eq Form 1, x_sum
+    centre_distance(m, z1, z2, x_sum, alpha) -> [m]    eq Form 1, x_sum, Form 1, alpha_tw
+    tip_diameter(m, z, x, h_a, dy) -> [m]    eq Form 1, d_a1
+    tip_thickness(m, z, x, alpha, h_a, dy) -> [m]    eq Form 1, s_a1
+    contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2) -> [1]    eq Form 1, epsilon_alpha
+    tip_thickness_shift(z, alpha, h_a, dy, sigma) -> [1]    eq pointed tip
+    pointed_tip_shift(z, alpha, h_a, dy) -> [1]    eq pointed tip
+    undercut_limit(z, alpha, h_a) -> [1]    eq undercut limit
+    max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c) -> [N]    eq (3), (4)
+"""
+
+import numpy as np
+
+__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'max_support_load']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _involute(a):
+    """inv a = tan a - a, without the cancellation of tan a - a at small a.
+
+    Below |a| = 0.6 the Taylor series a³·Σ c_k a^(2k) (28 terms, truncation
+    < 1e-18 relative) is summed by Horner's rule; above, tan a - a has lost
+    at most a factor a/(tan a - a) < 8 to cancellation."""
+    a = np.asarray(a, dtype=float)
+    coeffs = (0.3333333333333333, 0.13333333333333333, 0.05396825396825397,
+              0.021869488536155203, 0.008863235529902197, 0.003592128036572481,
+              0.0014558343870513183, 0.000590027440945586, 0.00023912911424355248,
+              9.691537956929451e-05, 3.927832388331683e-05, 1.5918905069328964e-05,
+              6.451689215655431e-06, 2.6147711512907546e-06, 1.0597268320104654e-06,
+              4.294911078273806e-07, 1.7406618963571648e-07, 7.054636946400968e-08,
+              2.859136662305254e-08, 1.1587644432798853e-08, 4.6962953982309016e-09,
+              1.903336833931276e-09, 7.713933635359062e-10, 3.126339545892087e-10,
+              1.26705769303054e-10, 5.135191408039368e-11, 2.0812146867700473e-11,
+              8.434845419094337e-12)
+    small = np.abs(a) < 0.6
+    y = np.where(small, a * a, 0.0)
+    total = np.zeros_like(y)
+    for c in coeffs[::-1]:
+        total = total * y + c
+    series = a * y * total
+    with np.errstate(invalid="ignore", over="ignore"):
+        closed = np.tan(np.where(small, 1.0, a)) - np.where(small, 1.0, a)
+    return np.where(small, series, closed)
+
+
+def _inverse_involute(v, what):
+    """The angle a in [0, pi/2) with tan a - a = v, for v >= 0.
+
+    Initial guess from the series inversion a ≈ (3v)^(1/3)(1 - (3v)^(2/3)/5)
+    for small v and a ≈ pi/2 - 1/(v + pi/2) for large v, then Newton steps
+    kept inside a bracket [lo, hi] that every step narrows (bisection when
+    Newton would leave it): no starting guess can fail. ValueError(what) for v < 0."""
+    v = np.asarray(v, dtype=float)
+    if np.any(v < 0):
+        raise ValueError(what)
+    half_pi = 0.5 * np.pi
+    lo = np.zeros_like(v)
+    hi = np.full_like(v, half_pi)
+    t = np.cbrt(3.0 * v)
+    a = np.where(v < 1.0, t * (1.0 - t * t / 5.0), half_pi - 1.0 / (v + half_pi))
+    a = np.clip(a, 0.0, half_pi * (1.0 - 1e-16))
+    for _ in range(100):
+        f = _involute(a) - v
+        lo = np.where(f <= 0, a, lo)
+        hi = np.where(f > 0, a, hi)
+        slope = np.tan(a) ** 2
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(slope > 0, f / slope, np.inf)
+        nxt = a - step
+        bad = ~((nxt >= lo) & (nxt <= hi))
+        nxt = np.where(bad, 0.5 * (lo + hi), nxt)
+        if np.all(np.abs(nxt - a) <= 4e-16 * np.maximum(np.abs(a), 1e-300)):
+            return np.where(v == 0, 0.0, nxt)
+        a = nxt
+    return np.where(v == 0, 0.0, a)
+
+
+def _acos_checked(x, what):
+    """arccos x, or ValueError(what) when |x| > 1 (an impossible geometry)."""
+    x = np.asarray(x, dtype=float)
+    if np.any(np.abs(x) > 1.0):
+        worst = float(x.flat[int(np.argmax(np.abs(x)))])
+        raise ValueError(f"{what} (the cosine would be {worst!r})")
+    return np.arccos(x)
+
+
+def _tip_half_angle(x, z, alpha, ha, dy, what):
+    """Half the angle a tooth subtends on its tip circle, psi_a =
+    (pi/2 + 2 x tan alpha)/z - (inv alpha_a - inv alpha), for a rack-cut gear.
+
+    With e = 2(ha + x - dy)/D, D = z + 2(ha + x - dy) (the tip diameter over
+    m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
+    formed without cancellation: delta = alpha_a - alpha by atan2 of exact
+    products, then psi_a = (pi/2 + 2 tan(alpha)(dy - ha))/z - H(delta) with H of
+    ``_tip_lift_excess`` (the shift's share of the half angle cancels exactly). ValueError(what) when the
+    tip circle lies inside the base circle (``what=None``: no check)."""
+    lift = ha + x - dy
+    d_a = z + 2.0 * lift
+    e = 2.0 * lift / d_a
+    c, s = np.cos(alpha), np.sin(alpha)
+    c_a = c * (1.0 - e)
+    one_minus = 2.0 * np.sin(0.5 * alpha) ** 2 + c * e          # 1 - c_a
+    if what is not None and (np.any(one_minus < 0) or np.any(c_a < 0)):
+        raise ValueError(what)
+    one_minus = np.maximum(one_minus, 0.0)
+    s_a = np.sqrt(one_minus * (1.0 + c_a))
+    num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
+    delta = np.arctan2(num, c * c_a + s * s_a)
+    return (0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)) / z - _tip_lift_excess(delta, alpha)
+
+
+def _tip_lift_excess(delta, alpha):
+    """H(delta) = inv(alpha + delta) - inv(alpha) - tan(alpha)(cos alpha /
+    cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
+    sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
+    Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
+    tan(alpha)·d²/2 keeps every digit at small d."""
+    d = np.asarray(delta, dtype=float)
+    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
+           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
+           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
+           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
+    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
+           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
+           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
+           1.8683261924146203e-20, -3.706996413521072e-23)
+    small = np.abs(d) < 1.0
+    y = np.where(small, d * d, 0.0)
+    p1, p2 = np.zeros_like(y), np.zeros_like(y)
+    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
+        p1, p2 = p1 * y + c1, p2 * y + c2
+    f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
+    f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
+    return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
+
+
+def _tip_shift(z, alpha, ha, dy, sigma):
+    """The shift x at which the tooth tip thickness is sigma·m (0: pointed tip).
+
+    With the tip pressure angle alpha + delta, x = z sin(alpha + delta/2)
+    sin(delta/2)/cos(alpha + delta) - ha + dy, and the condition s_a = sigma·m
+    becomes Phi(delta) = z·H(delta) + sigma cos(alpha + delta)/cos(alpha) - K
+    = 0 with K = pi/2 + 2 tan(alpha)(dy - ha) (the thickness over m on the
+    reference circle when the tip is there) and H of ``_tip_lift_excess``:
+    no cancellation. Phi(0) = sigma - K < 0 and Phi -> +inf at alpha + delta
+    -> pi/2: bisection on that bracket, then Newton steps with Phi' = z
+    sin u (sin u - sin alpha)/cos² u - sigma sin u/cos alpha. ValueError when
+    sigma >= K (no shift gives the thickness)."""
+    z, alpha, ha, dy, sigma = np.broadcast_arrays(*(np.asarray(a, dtype=float)
+                                                    for a in (z, alpha, ha, dy, sigma)))
+    K = 0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)
+    if np.any(sigma >= K):
+        raise ValueError("sigma: no shift gives this tip thickness: sigma must stay "
+                         "below pi/2 + 2*tan(alpha)*(dy - h_a)")
+    c = np.cos(alpha)
+
+    def phi(d):
+        return z * _tip_lift_excess(d, alpha) + sigma * np.cos(alpha + d) / c - K
+
+    lo = np.zeros_like(K)
+    hi = 0.5 * np.pi - alpha
+    for _ in range(110):
+        mid = 0.5 * (lo + hi)
+        up = phi(mid) > 0
+        lo = np.where(up, lo, mid)
+        hi = np.where(up, mid, hi)
+    d = 0.5 * (lo + hi)
+    for _ in range(2):
+        u = alpha + d
+        gap = 2.0 * np.cos(alpha + 0.5 * d) * np.sin(0.5 * d)        # sin u - sin alpha
+        slope = z * np.sin(u) * gap / np.cos(u) ** 2 - sigma * np.sin(u) / c
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(slope > 0, phi(d) / slope, 0.0)
+        d = np.clip(d - step, lo, hi)
+    return z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
+
+
+def operating_pressure_angle(m, z1, z2, a_w, alpha):
+    """Operating pressure angle alpha_tw of the pair at centre distance a_w. Eq Form 1, alpha_tw.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    a_w : array_like
+        centre distance [m], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    return _acos_checked((1/2)*m*(z1 + z2)*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')
+
+
+def shift_sum(m, z1, z2, a_w, alpha):
+    """Sum of shift coefficients x1 + x2 from the meshing equation. Eq Form 1, x_sum.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    a_w : array_like
+        centre distance [m], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    x0 = (1/2)*z1 + (1/2)*z2
+    return x0*(-_involute(alpha) + _involute(_acos_checked(m*x0*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')))/np.tan(alpha)
+
+
+def centre_distance(m, z1, z2, x_sum, alpha):
+    """Centre distance a_w at which the pair meshes without backlash with the sum of shifts x_sum (inverse involute). Eq Form 1, x_sum, Form 1, alpha_tw.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    x_sum : array_like
+        sum of shift coefficients x1 + x2 [1]
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    x_sum = _checked('x_sum', x_sum, 'real', 'sum of shift coefficients x1 + x2, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    x0 = z1 + z2
+    return (1/2)*m*x0*np.cos(alpha)/np.cos(_inverse_involute(_involute(alpha) + 2*x_sum*np.tan(alpha)/x0, 'x_sum: the shifts are too negative: inv(alpha) + 2*x_sum*tan(alpha)/(z1 + z2) must be >= 0'))
+
+
+def tip_diameter(m, z, x, h_a, dy):
+    """Tip diameter m*z + 2*(h_a + x - dy)*m. Eq Form 1, d_a1.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    m   = _checked('m', m, 'positive', 'module of the teeth, m')
+    z   = _checked('z', z, 'positive', 'number of teeth, 1')
+    x   = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    h_a = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy  = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return m*(-2*dy + 2*h_a + 2*x + z)
+
+
+def tip_thickness(m, z, x, alpha, h_a, dy):
+    """Tooth thickness on the tip circle (negative: the tooth is pointed below the tip). Eq Form 1, s_a1.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    x     = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return m*(-2*dy + 2*h_a + 2*x + z)*_tip_half_angle(x, z, alpha, h_a, dy, 'x: the tip circle lies inside the base circle (shift too negative)')
+
+
+def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2):
+    """Transverse contact ratio epsilon_alpha. Eq Form 1, epsilon_alpha.
+
+    Parameters
+    ----------
+    m : array_like
+        module of the teeth [m], > 0
+    z1 : array_like
+        number of teeth of the pinion [1], > 0
+    z2 : array_like
+        number of teeth of the wheel [1], > 0
+    x1 : array_like
+        shift coefficient of the pinion [1]
+    x2 : array_like
+        shift coefficient of the wheel [1]
+    a_w : array_like
+        centre distance [m], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy1 : array_like
+        tip shortening coefficient Δy of the pinion (>= 0) [1], >= 0
+    dy2 : array_like
+        tip shortening coefficient Δy of the wheel (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    m     = _checked('m', m, 'positive', 'module of the teeth, m')
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
+    x1    = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1')
+    x2    = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1')
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy1   = _checked('dy1', dy1, 'nonnegative', 'tip shortening coefficient Δy of the pinion (>= 0), 1')
+    dy2   = _checked('dy2', dy2, 'nonnegative', 'tip shortening coefficient Δy of the wheel (>= 0), 1')
+    x0 = z1 + z2
+    x3 = np.cos(alpha)
+    x4 = 2*h_a
+    return -0.15915494309189535*x0*np.tan(_acos_checked((1/2)*m*x0*x3/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')) + 0.15915494309189535*z1*np.tan(_acos_checked(x3*z1/(-2*dy1 + 2*x1 + x4 + z1), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 0.15915494309189535*z2*np.tan(_acos_checked(x3*z2/(-2*dy2 + 2*x2 + x4 + z2), 'x2: the tip circle lies inside the base circle (shift too negative)'))
+
+
+def tip_thickness_shift(z, alpha, h_a, dy, sigma):
+    """Shift coefficient at which the tip thickness is sigma*m (Fig. 10, curves 2-3). Eq pointed tip.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+    sigma : array_like
+        tip tooth thickness over the module, s_a/m [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1')
+    return _tip_shift(z, alpha, h_a, dy, sigma)
+
+
+def pointed_tip_shift(z, alpha, h_a, dy):
+    """Shift coefficient at which the tooth tip is pointed (Fig. 10, curve 1). Eq pointed tip.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return _tip_shift(z, alpha, h_a, dy, 0)
+
+
+def undercut_limit(z, alpha, h_a):
+    """Least shift coefficient free of undercut (Fig. 10, curve 4). Eq undercut limit.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    alpha : array_like
+        profile angle of the basic rack [rad], > 0
+    h_a : array_like
+        addendum coefficient of the basic rack h_a* [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    return h_a - 1/2*z*np.sin(alpha)**2
+
+
+def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c):
+    """Largest vertical load on one portal leg, load case 2v (reconstructed portal: see the derivation). Eq (3), (4).
+
+    Parameters
+    ----------
+    psi : array_like
+        dynamic coefficient of the hoisted load (printed у) [1], > 0
+    G_g : array_like
+        rated weight of the load G_г [N], > 0
+    G_pch : array_like
+        weight of the slewing part G_пч [N], > 0
+    G_vs : array_like
+        weight of the portal's upper structure G_вс [N], > 0
+    L_max : array_like
+        maximum reach [m], > 0
+    x_o : array_like
+        distance of the slewing part's centre of gravity from the slewing axis [m], > 0
+    c : array_like
+        arm of the couple by which the slewing part bears on the circular rail [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    psi   = _checked('psi', psi, 'positive', 'dynamic coefficient of the hoisted load (printed у), 1')
+    G_g   = _checked('G_g', G_g, 'positive', 'rated weight of the load G_г, N')
+    G_pch = _checked('G_pch', G_pch, 'positive', 'weight of the slewing part G_пч, N')
+    G_vs  = _checked('G_vs', G_vs, 'positive', "weight of the portal's upper structure G_вс, N")
+    L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m')
+    x_o   = _checked('x_o', x_o, 'positive', "distance of the slewing part's centre of gravity from the slewing axis, m")
+    c     = _checked('c', c, 'positive', 'arm of the couple by which the slewing part bears on the circular rail, m')
+    x0 = G_g*psi
+    return (1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c

@@ -1,0 +1,170 @@
+"""Numeric functions for derivation 'portal_travel'. Generated; do not edit.
+
+Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
+Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Specialized to scene 'fig10_shift_limits' (Paper 003, Fig. 10: shift coefficient limits against the number of teeth): outputs pointed_tip_shift, tip_thickness_shift, undercut_limit; folded in: h_a = 1.0 1, alpha = 0.3490658503988659 rad, dy = 0.0 1.
+Inputs left as arguments: z, sigma.
+Equations: pointed tip, undercut limit.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    pointed_tip_shift(z) -> [1]    eq pointed tip
+    tip_thickness_shift(z, sigma) -> [1]    eq pointed tip
+    undercut_limit(z) -> [1]    eq undercut limit
+"""
+
+import numpy as np
+
+__all__ = ['pointed_tip_shift', 'tip_thickness_shift', 'undercut_limit']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _tip_lift_excess(delta, alpha):
+    """H(delta) = inv(alpha + delta) - inv(alpha) - tan(alpha)(cos alpha /
+    cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
+    sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
+    Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
+    tan(alpha)·d²/2 keeps every digit at small d."""
+    d = np.asarray(delta, dtype=float)
+    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
+           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
+           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
+           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
+    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
+           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
+           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
+           1.8683261924146203e-20, -3.706996413521072e-23)
+    small = np.abs(d) < 1.0
+    y = np.where(small, d * d, 0.0)
+    p1, p2 = np.zeros_like(y), np.zeros_like(y)
+    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
+        p1, p2 = p1 * y + c1, p2 * y + c2
+    f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
+    f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
+    return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
+
+
+def _tip_shift(z, alpha, ha, dy, sigma):
+    """The shift x at which the tooth tip thickness is sigma·m (0: pointed tip).
+
+    With the tip pressure angle alpha + delta, x = z sin(alpha + delta/2)
+    sin(delta/2)/cos(alpha + delta) - ha + dy, and the condition s_a = sigma·m
+    becomes Phi(delta) = z·H(delta) + sigma cos(alpha + delta)/cos(alpha) - K
+    = 0 with K = pi/2 + 2 tan(alpha)(dy - ha) (the thickness over m on the
+    reference circle when the tip is there) and H of ``_tip_lift_excess``:
+    no cancellation. Phi(0) = sigma - K < 0 and Phi -> +inf at alpha + delta
+    -> pi/2: bisection on that bracket, then Newton steps with Phi' = z
+    sin u (sin u - sin alpha)/cos² u - sigma sin u/cos alpha. ValueError when
+    sigma >= K (no shift gives the thickness)."""
+    z, alpha, ha, dy, sigma = np.broadcast_arrays(*(np.asarray(a, dtype=float)
+                                                    for a in (z, alpha, ha, dy, sigma)))
+    K = 0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)
+    if np.any(sigma >= K):
+        raise ValueError("sigma: no shift gives this tip thickness: sigma must stay "
+                         "below pi/2 + 2*tan(alpha)*(dy - h_a)")
+    c = np.cos(alpha)
+
+    def phi(d):
+        return z * _tip_lift_excess(d, alpha) + sigma * np.cos(alpha + d) / c - K
+
+    lo = np.zeros_like(K)
+    hi = 0.5 * np.pi - alpha
+    for _ in range(110):
+        mid = 0.5 * (lo + hi)
+        up = phi(mid) > 0
+        lo = np.where(up, lo, mid)
+        hi = np.where(up, mid, hi)
+    d = 0.5 * (lo + hi)
+    for _ in range(2):
+        u = alpha + d
+        gap = 2.0 * np.cos(alpha + 0.5 * d) * np.sin(0.5 * d)        # sin u - sin alpha
+        slope = z * np.sin(u) * gap / np.cos(u) ** 2 - sigma * np.sin(u) / c
+        with np.errstate(divide="ignore", invalid="ignore"):
+            step = np.where(slope > 0, phi(d) / slope, 0.0)
+        d = np.clip(d - step, lo, hi)
+    return z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
+
+
+def pointed_tip_shift(z):
+    """Shift coefficient at which the tooth tip is pointed (Fig. 10, curve 1). Specialized to scene 'fig10_shift_limits'. Eq pointed tip.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z = _checked('z', z, 'positive', 'number of teeth, 1')
+    return _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, 0)
+
+
+def tip_thickness_shift(z, sigma):
+    """Shift coefficient at which the tip thickness is sigma*m (Fig. 10, curves 2-3). Specialized to scene 'fig10_shift_limits'. Eq pointed tip.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    sigma : array_like
+        tip tooth thickness over the module, s_a/m [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z     = _checked('z', z, 'positive', 'number of teeth, 1')
+    sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1')
+    return _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, sigma)
+
+
+def undercut_limit(z):
+    """Least shift coefficient free of undercut (Fig. 10, curve 4). Specialized to scene 'fig10_shift_limits'. Eq undercut limit.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z = _checked('z', z, 'positive', 'number of teeth, 1')
+    return 1 - 0.05848888922025548*z

@@ -1,0 +1,225 @@
+"""Numeric functions for derivation 'portal_travel'. Generated; do not edit.
+
+Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
+Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Specialized to scene 'form1_gear_pair' (Paper 003, Form 1: the travel bogie's open gear pair): outputs operating_pressure_angle, shift_sum, tip_diameter, tip_thickness, contact_ratio, undercut_limit; folded in: m = 0.01 m, z1 = 25.0 1, z2 = 42.0 1, a_w = 0.34 m, h_a = 1.0 1, alpha = 0.3490658503988659 rad, dy1 = 0.0 1, dy2 = 0.0 1.
+Inputs left as arguments: z, x, dy, x1, x2.
+Equations: Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    operating_pressure_angle() -> [rad]    eq Form 1, alpha_tw
+    shift_sum() -> [1]    eq Form 1, x_sum
+    tip_diameter(z, x, dy) -> [m]    eq Form 1, d_a1
+    tip_thickness(z, x, dy) -> [m]    eq Form 1, s_a1
+    contact_ratio(x1, x2) -> [1]    eq Form 1, epsilon_alpha
+    undercut_limit(z) -> [1]    eq undercut limit
+"""
+
+import numpy as np
+
+__all__ = ['operating_pressure_angle', 'shift_sum', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'undercut_limit']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def _acos_checked(x, what):
+    """arccos x, or ValueError(what) when |x| > 1 (an impossible geometry)."""
+    x = np.asarray(x, dtype=float)
+    if np.any(np.abs(x) > 1.0):
+        worst = float(x.flat[int(np.argmax(np.abs(x)))])
+        raise ValueError(f"{what} (the cosine would be {worst!r})")
+    return np.arccos(x)
+
+
+def _tip_half_angle(x, z, alpha, ha, dy, what):
+    """Half the angle a tooth subtends on its tip circle, psi_a =
+    (pi/2 + 2 x tan alpha)/z - (inv alpha_a - inv alpha), for a rack-cut gear.
+
+    With e = 2(ha + x - dy)/D, D = z + 2(ha + x - dy) (the tip diameter over
+    m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
+    formed without cancellation: delta = alpha_a - alpha by atan2 of exact
+    products, then psi_a = (pi/2 + 2 tan(alpha)(dy - ha))/z - H(delta) with H of
+    ``_tip_lift_excess`` (the shift's share of the half angle cancels exactly). ValueError(what) when the
+    tip circle lies inside the base circle (``what=None``: no check)."""
+    lift = ha + x - dy
+    d_a = z + 2.0 * lift
+    e = 2.0 * lift / d_a
+    c, s = np.cos(alpha), np.sin(alpha)
+    c_a = c * (1.0 - e)
+    one_minus = 2.0 * np.sin(0.5 * alpha) ** 2 + c * e          # 1 - c_a
+    if what is not None and (np.any(one_minus < 0) or np.any(c_a < 0)):
+        raise ValueError(what)
+    one_minus = np.maximum(one_minus, 0.0)
+    s_a = np.sqrt(one_minus * (1.0 + c_a))
+    num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
+    delta = np.arctan2(num, c * c_a + s * s_a)
+    return (0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)) / z - _tip_lift_excess(delta, alpha)
+
+
+def _tip_lift_excess(delta, alpha):
+    """H(delta) = inv(alpha + delta) - inv(alpha) - tan(alpha)(cos alpha /
+    cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
+    sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
+    Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
+    tan(alpha)·d²/2 keeps every digit at small d."""
+    d = np.asarray(delta, dtype=float)
+    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
+           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
+           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
+           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
+    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
+           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
+           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
+           1.8683261924146203e-20, -3.706996413521072e-23)
+    small = np.abs(d) < 1.0
+    y = np.where(small, d * d, 0.0)
+    p1, p2 = np.zeros_like(y), np.zeros_like(y)
+    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
+        p1, p2 = p1 * y + c1, p2 * y + c2
+    f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
+    f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
+    return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
+
+
+def operating_pressure_angle():
+    """Operating pressure angle alpha_tw of the pair at centre distance a_w. Specialized to scene 'form1_gear_pair'. Eq Form 1, alpha_tw.
+
+    Parameters
+    ----------
+
+
+    Returns
+    -------
+    ndarray
+        [rad], broadcast over the arguments.
+    """
+    return 0.38745508295895126
+
+
+def shift_sum():
+    """Sum of shift coefficients x1 + x2 from the meshing equation. Specialized to scene 'form1_gear_pair'. Eq Form 1, x_sum.
+
+    Parameters
+    ----------
+
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    return 0.5268056264721714
+
+
+def tip_diameter(z, x, dy):
+    """Tip diameter m*z + 2*(h_a + x - dy)*m. Specialized to scene 'form1_gear_pair'. Eq Form 1, d_a1.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    z  = _checked('z', z, 'positive', 'number of teeth, 1')
+    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return -5764607523034235/288230376151711744*dy + (5764607523034235/288230376151711744)*x + (5764607523034235/576460752303423488)*z + 5764607523034235/288230376151711744
+
+
+def tip_thickness(z, x, dy):
+    """Tooth thickness on the tip circle (negative: the tooth is pointed below the tip). Specialized to scene 'form1_gear_pair'. Eq Form 1, s_a1.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+    x : array_like
+        shift coefficient of the gear [1]
+    dy : array_like
+        tip shortening coefficient Δy (>= 0) [1], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    z  = _checked('z', z, 'positive', 'number of teeth, 1')
+    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
+    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    return (5764607523034235/576460752303423488)*(-2*dy + 2*x + z + 2)*_tip_half_angle(x, z, 6288211335136391/18014398509481984, 1, dy, 'x: the tip circle lies inside the base circle (shift too negative)')
+
+
+def contact_ratio(x1, x2):
+    """Transverse contact ratio epsilon_alpha. Specialized to scene 'form1_gear_pair'. Eq Form 1, epsilon_alpha.
+
+    Parameters
+    ----------
+    x1 : array_like
+        shift coefficient of the pinion [1]
+    x2 : array_like
+        shift coefficient of the wheel [1]
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    x1 = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1')
+    x2 = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1')
+    return 3.9788735772973833*np.tan(_acos_checked(23.49231551964771/(2*x1 + 27), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 6.684507609859604*np.tan(_acos_checked(19.733545036504076/(x2 + 22), 'x2: the tip circle lies inside the base circle (shift too negative)')) - 4.351545605487496
+
+
+def undercut_limit(z):
+    """Least shift coefficient free of undercut (Fig. 10, curve 4). Specialized to scene 'form1_gear_pair'. Eq undercut limit.
+
+    Parameters
+    ----------
+    z : array_like
+        number of teeth [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    z = _checked('z', z, 'positive', 'number of teeth, 1')
+    return 1 - 0.05848888922025548*z

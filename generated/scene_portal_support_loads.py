@@ -1,0 +1,65 @@
+"""Numeric functions for derivation 'portal_travel'. Generated; do not edit.
+
+Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
+Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Specialized to scene 'portal_support_loads' (Paper 003, (3)-(4): largest portal leg load; Table 3's normal law): outputs max_support_load; folded in: psi = 1.3 1, G_g = 98100.0 N, G_pch = 1275000.0 N, G_vs = 392000.0 N, x_o = 2.5 m, c = 6.0 m.
+Inputs left as arguments: L_max.
+Equations: (3), (4).
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    max_support_load(L_max) -> [N]    eq (3), (4)
+"""
+
+import numpy as np
+
+__all__ = ['max_support_load']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def max_support_load(L_max):
+    """Largest vertical load on one portal leg, load case 2v (reconstructed portal: see the derivation). Specialized to scene 'portal_support_loads'. Eq (3), (4).
+
+    Parameters
+    ----------
+    L_max : array_like
+        maximum reach [m], > 0
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m')
+    return (47862005039879947875/4503599627370496)*L_max + 824192508806006051625/4503599627370496
