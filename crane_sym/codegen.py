@@ -261,8 +261,10 @@ def hoist(expr: sp.Expr, varying: set[sp.Symbol]
 
 def _signature(out: Output, keyword: bool = False) -> str:
     """``name(a, b)``; with ``keyword``, the ``out`` keyword of array outputs too."""
-    extra = ", *, out=None" if keyword and not isinstance(out.expr, sp.MatrixBase) else ""
-    return f"{out.name}({', '.join(map(str, out.args))}{extra})"
+    names = list(map(str, out.args))
+    if keyword and not isinstance(out.expr, sp.MatrixBase):
+        names += ["*", "out=None"]
+    return f"{out.name}({', '.join(names)})"
 
 
 def render_function(out: Output, table: SymbolTable,

@@ -55,6 +55,40 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: v.shape for k, v in arrays.items() if v.ndim}  # _checked's arrays
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _involute(a):
     """inv a = tan a - a, without the cancellation of tan a - a at small a.
 
@@ -215,7 +249,7 @@ def _tip_shift(z, alpha, ha, dy, sigma):
     return z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
 
 
-def operating_pressure_angle(m, z1, z2, a_w, alpha):
+def operating_pressure_angle(m, z1, z2, a_w, alpha, *, out=None):
     """Operating pressure angle alpha_tw of the pair at centre distance a_w. Eq Form 1, alpha_tw.
 
     Parameters
@@ -230,6 +264,8 @@ def operating_pressure_angle(m, z1, z2, a_w, alpha):
         centre distance [m], > 0
     alpha : array_like
         profile angle of the basic rack [rad], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -241,10 +277,11 @@ def operating_pressure_angle(m, z1, z2, a_w, alpha):
     z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
     a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
-    return _acos_checked((1/2)*m*(z1 + z2)*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')
+    shape = _broadcast(m=m, z1=z1, z2=z2, a_w=a_w, alpha=alpha)
+    return _into(out, shape, _acos_checked((1/2)*m*(z1 + z2)*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii'))
 
 
-def shift_sum(m, z1, z2, a_w, alpha):
+def shift_sum(m, z1, z2, a_w, alpha, *, out=None):
     """Sum of shift coefficients x1 + x2 from the meshing equation. Eq Form 1, x_sum.
 
     Parameters
@@ -259,6 +296,8 @@ def shift_sum(m, z1, z2, a_w, alpha):
         centre distance [m], > 0
     alpha : array_like
         profile angle of the basic rack [rad], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -270,11 +309,12 @@ def shift_sum(m, z1, z2, a_w, alpha):
     z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
     a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    shape = _broadcast(m=m, z1=z1, z2=z2, a_w=a_w, alpha=alpha)
     x0 = (1/2)*z1 + (1/2)*z2
-    return x0*(-_involute(alpha) + _involute(_acos_checked(m*x0*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')))/np.tan(alpha)
+    return _into(out, shape, x0*(-_involute(alpha) + _involute(_acos_checked(m*x0*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')))/np.tan(alpha))
 
 
-def centre_distance(m, z1, z2, x_sum, alpha):
+def centre_distance(m, z1, z2, x_sum, alpha, *, out=None):
     """Centre distance a_w at which the pair meshes without backlash with the sum of shifts x_sum (inverse involute). Eq Form 1, x_sum, Form 1, alpha_tw.
 
     Parameters
@@ -289,6 +329,8 @@ def centre_distance(m, z1, z2, x_sum, alpha):
         sum of shift coefficients x1 + x2 [1]
     alpha : array_like
         profile angle of the basic rack [rad], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -300,11 +342,12 @@ def centre_distance(m, z1, z2, x_sum, alpha):
     z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
     x_sum = _checked('x_sum', x_sum, 'real', 'sum of shift coefficients x1 + x2, 1')
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    shape = _broadcast(m=m, z1=z1, z2=z2, x_sum=x_sum, alpha=alpha)
     x0 = z1 + z2
-    return (1/2)*m*x0*np.cos(alpha)/np.cos(_inverse_involute(_involute(alpha) + 2*x_sum*np.tan(alpha)/x0, 'x_sum: the shifts are too negative: inv(alpha) + 2*x_sum*tan(alpha)/(z1 + z2) must be >= 0'))
+    return _into(out, shape, (1/2)*m*x0*np.cos(alpha)/np.cos(_inverse_involute(_involute(alpha) + 2*x_sum*np.tan(alpha)/x0, 'x_sum: the shifts are too negative: inv(alpha) + 2*x_sum*tan(alpha)/(z1 + z2) must be >= 0')))
 
 
-def tip_diameter(m, z, x, h_a, dy):
+def tip_diameter(m, z, x, h_a, dy, *, out=None):
     """Tip diameter m*z + 2*(h_a + x - dy)*m. Eq Form 1, d_a1.
 
     Parameters
@@ -319,6 +362,8 @@ def tip_diameter(m, z, x, h_a, dy):
         addendum coefficient of the basic rack h_a* [1], > 0
     dy : array_like
         tip shortening coefficient Δy (>= 0) [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -330,10 +375,11 @@ def tip_diameter(m, z, x, h_a, dy):
     x   = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
     h_a = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     dy  = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
-    return m*(-2*dy + 2*h_a + 2*x + z)
+    shape = _broadcast(m=m, z=z, x=x, h_a=h_a, dy=dy)
+    return _into(out, shape, m*(-2*dy + 2*h_a + 2*x + z))
 
 
-def tip_thickness(m, z, x, alpha, h_a, dy):
+def tip_thickness(m, z, x, alpha, h_a, dy, *, out=None):
     """Tooth thickness on the tip circle (negative: the tooth is pointed below the tip). Eq Form 1, s_a1.
 
     Parameters
@@ -350,6 +396,8 @@ def tip_thickness(m, z, x, alpha, h_a, dy):
         addendum coefficient of the basic rack h_a* [1], > 0
     dy : array_like
         tip shortening coefficient Δy (>= 0) [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -362,10 +410,11 @@ def tip_thickness(m, z, x, alpha, h_a, dy):
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
-    return m*(-2*dy + 2*h_a + 2*x + z)*_tip_half_angle(x, z, alpha, h_a, dy, 'x: the tip circle lies inside the base circle (shift too negative)')
+    shape = _broadcast(m=m, z=z, x=x, alpha=alpha, h_a=h_a, dy=dy)
+    return _into(out, shape, m*(-2*dy + 2*h_a + 2*x + z)*_tip_half_angle(x, z, alpha, h_a, dy, 'x: the tip circle lies inside the base circle (shift too negative)'))
 
 
-def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2):
+def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2, *, out=None):
     """Transverse contact ratio epsilon_alpha. Eq Form 1, epsilon_alpha.
 
     Parameters
@@ -390,6 +439,8 @@ def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2):
         tip shortening coefficient Δy of the pinion (>= 0) [1], >= 0
     dy2 : array_like
         tip shortening coefficient Δy of the wheel (>= 0) [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -406,13 +457,15 @@ def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2):
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     dy1   = _checked('dy1', dy1, 'nonnegative', 'tip shortening coefficient Δy of the pinion (>= 0), 1')
     dy2   = _checked('dy2', dy2, 'nonnegative', 'tip shortening coefficient Δy of the wheel (>= 0), 1')
+    shape = _broadcast(m=m, z1=z1, z2=z2, x1=x1, x2=x2, a_w=a_w, alpha=alpha, h_a=h_a, dy1=dy1,
+                       dy2=dy2)
     x0 = z1 + z2
     x3 = np.cos(alpha)
     x4 = 2*h_a
-    return -0.15915494309189535*x0*np.tan(_acos_checked((1/2)*m*x0*x3/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')) + 0.15915494309189535*z1*np.tan(_acos_checked(x3*z1/(-2*dy1 + 2*x1 + x4 + z1), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 0.15915494309189535*z2*np.tan(_acos_checked(x3*z2/(-2*dy2 + 2*x2 + x4 + z2), 'x2: the tip circle lies inside the base circle (shift too negative)'))
+    return _into(out, shape, -0.15915494309189535*x0*np.tan(_acos_checked((1/2)*m*x0*x3/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')) + 0.15915494309189535*z1*np.tan(_acos_checked(x3*z1/(-2*dy1 + 2*x1 + x4 + z1), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 0.15915494309189535*z2*np.tan(_acos_checked(x3*z2/(-2*dy2 + 2*x2 + x4 + z2), 'x2: the tip circle lies inside the base circle (shift too negative)')))
 
 
-def tip_thickness_shift(z, alpha, h_a, dy, sigma):
+def tip_thickness_shift(z, alpha, h_a, dy, sigma, *, out=None):
     """Shift coefficient at which the tip thickness is sigma*m (Fig. 10, curves 2-3). Eq pointed tip.
 
     Parameters
@@ -427,6 +480,8 @@ def tip_thickness_shift(z, alpha, h_a, dy, sigma):
         tip shortening coefficient Δy (>= 0) [1], >= 0
     sigma : array_like
         tip tooth thickness over the module, s_a/m [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -438,10 +493,11 @@ def tip_thickness_shift(z, alpha, h_a, dy, sigma):
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
     sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1')
-    return _tip_shift(z, alpha, h_a, dy, sigma)
+    shape = _broadcast(z=z, alpha=alpha, h_a=h_a, dy=dy, sigma=sigma)
+    return _into(out, shape, _tip_shift(z, alpha, h_a, dy, sigma))
 
 
-def pointed_tip_shift(z, alpha, h_a, dy):
+def pointed_tip_shift(z, alpha, h_a, dy, *, out=None):
     """Shift coefficient at which the tooth tip is pointed (Fig. 10, curve 1). Eq pointed tip.
 
     Parameters
@@ -454,6 +510,8 @@ def pointed_tip_shift(z, alpha, h_a, dy):
         addendum coefficient of the basic rack h_a* [1], > 0
     dy : array_like
         tip shortening coefficient Δy (>= 0) [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -464,10 +522,11 @@ def pointed_tip_shift(z, alpha, h_a, dy):
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
-    return _tip_shift(z, alpha, h_a, dy, 0)
+    shape = _broadcast(z=z, alpha=alpha, h_a=h_a, dy=dy)
+    return _into(out, shape, _tip_shift(z, alpha, h_a, dy, 0))
 
 
-def undercut_limit(z, alpha, h_a):
+def undercut_limit(z, alpha, h_a, *, out=None):
     """Least shift coefficient free of undercut (Fig. 10, curve 4). Eq undercut limit.
 
     Parameters
@@ -478,6 +537,8 @@ def undercut_limit(z, alpha, h_a):
         profile angle of the basic rack [rad], > 0
     h_a : array_like
         addendum coefficient of the basic rack h_a* [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -487,10 +548,11 @@ def undercut_limit(z, alpha, h_a):
     z     = _checked('z', z, 'positive', 'number of teeth, 1')
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
-    return h_a - 1/2*z*np.sin(alpha)**2
+    shape = _broadcast(z=z, alpha=alpha, h_a=h_a)
+    return _into(out, shape, h_a - 1/2*z*np.sin(alpha)**2)
 
 
-def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c):
+def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c, *, out=None):
     """Largest vertical load on one portal leg, load case 2v (reconstructed portal: see the derivation). Eq (3), (4).
 
     Parameters
@@ -509,6 +571,8 @@ def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c):
         distance of the slewing part's centre of gravity from the slewing axis [m], > 0
     c : array_like
         arm of the couple by which the slewing part bears on the circular rail [m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -522,5 +586,6 @@ def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c):
     L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m')
     x_o   = _checked('x_o', x_o, 'positive', "distance of the slewing part's centre of gravity from the slewing axis, m")
     c     = _checked('c', c, 'positive', 'arm of the couple by which the slewing part bears on the circular rail, m')
+    shape = _broadcast(psi=psi, G_g=G_g, G_pch=G_pch, G_vs=G_vs, L_max=L_max, x_o=x_o, c=c)
     x0 = G_g*psi
-    return (1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c
+    return _into(out, shape, (1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c)

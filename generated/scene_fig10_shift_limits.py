@@ -50,6 +50,40 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: v.shape for k, v in arrays.items() if v.ndim}  # _checked's arrays
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _tip_lift_excess(delta, alpha):
     """H(delta) = inv(alpha + delta) - inv(alpha) - tan(alpha)(cos alpha /
     cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
@@ -116,13 +150,15 @@ def _tip_shift(z, alpha, ha, dy, sigma):
     return z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
 
 
-def pointed_tip_shift(z):
+def pointed_tip_shift(z, *, out=None):
     """Shift coefficient at which the tooth tip is pointed (Fig. 10, curve 1). Specialized to scene 'fig10_shift_limits'. Eq pointed tip.
 
     Parameters
     ----------
     z : array_like
         number of teeth [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -130,10 +166,11 @@ def pointed_tip_shift(z):
         [1], broadcast over the arguments.
     """
     z = _checked('z', z, 'positive', 'number of teeth, 1')
-    return _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, 0)
+    shape = _broadcast(z=z)
+    return _into(out, shape, _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, 0))
 
 
-def tip_thickness_shift(z, sigma):
+def tip_thickness_shift(z, sigma, *, out=None):
     """Shift coefficient at which the tip thickness is sigma*m (Fig. 10, curves 2-3). Specialized to scene 'fig10_shift_limits'. Eq pointed tip.
 
     Parameters
@@ -142,6 +179,8 @@ def tip_thickness_shift(z, sigma):
         number of teeth [1], > 0
     sigma : array_like
         tip tooth thickness over the module, s_a/m [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -150,16 +189,19 @@ def tip_thickness_shift(z, sigma):
     """
     z     = _checked('z', z, 'positive', 'number of teeth, 1')
     sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1')
-    return _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, sigma)
+    shape = _broadcast(z=z, sigma=sigma)
+    return _into(out, shape, _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, sigma))
 
 
-def undercut_limit(z):
+def undercut_limit(z, *, out=None):
     """Least shift coefficient free of undercut (Fig. 10, curve 4). Specialized to scene 'fig10_shift_limits'. Eq undercut limit.
 
     Parameters
     ----------
     z : array_like
         number of teeth [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -167,4 +209,5 @@ def undercut_limit(z):
         [1], broadcast over the arguments.
     """
     z = _checked('z', z, 'positive', 'number of teeth, 1')
-    return 1 - 0.05848888922025548*z
+    shape = _broadcast(z=z)
+    return _into(out, shape, 1 - 0.05848888922025548*z)

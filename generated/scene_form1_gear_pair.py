@@ -53,6 +53,40 @@ def _checked(name, value, sign, what):
     return array
 
 
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: v.shape for k, v in arrays.items() if v.ndim}  # _checked's arrays
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
 def _acos_checked(x, what):
     """arccos x, or ValueError(what) when |x| > 1 (an impossible geometry)."""
     x = np.asarray(x, dtype=float)
@@ -112,37 +146,43 @@ def _tip_lift_excess(delta, alpha):
     return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
 
 
-def operating_pressure_angle():
+def operating_pressure_angle(*, out=None):
     """Operating pressure angle alpha_tw of the pair at centre distance a_w. Specialized to scene 'form1_gear_pair'. Eq Form 1, alpha_tw.
 
     Parameters
     ----------
 
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
     ndarray
         [rad], broadcast over the arguments.
     """
-    return 0.38745508295895126
+    shape = _broadcast()
+    return _into(out, shape, 0.38745508295895126)
 
 
-def shift_sum():
+def shift_sum(*, out=None):
     """Sum of shift coefficients x1 + x2 from the meshing equation. Specialized to scene 'form1_gear_pair'. Eq Form 1, x_sum.
 
     Parameters
     ----------
 
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
     ndarray
         [1], broadcast over the arguments.
     """
-    return 0.5268056264721714
+    shape = _broadcast()
+    return _into(out, shape, 0.5268056264721714)
 
 
-def tip_diameter(z, x, dy):
+def tip_diameter(z, x, dy, *, out=None):
     """Tip diameter m*z + 2*(h_a + x - dy)*m. Specialized to scene 'form1_gear_pair'. Eq Form 1, d_a1.
 
     Parameters
@@ -153,6 +193,8 @@ def tip_diameter(z, x, dy):
         shift coefficient of the gear [1]
     dy : array_like
         tip shortening coefficient Δy (>= 0) [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -162,10 +204,11 @@ def tip_diameter(z, x, dy):
     z  = _checked('z', z, 'positive', 'number of teeth, 1')
     x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
     dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
-    return -5764607523034235/288230376151711744*dy + (5764607523034235/288230376151711744)*x + (5764607523034235/576460752303423488)*z + 5764607523034235/288230376151711744
+    shape = _broadcast(z=z, x=x, dy=dy)
+    return _into(out, shape, -5764607523034235/288230376151711744*dy + (5764607523034235/288230376151711744)*x + (5764607523034235/576460752303423488)*z + 5764607523034235/288230376151711744)
 
 
-def tip_thickness(z, x, dy):
+def tip_thickness(z, x, dy, *, out=None):
     """Tooth thickness on the tip circle (negative: the tooth is pointed below the tip). Specialized to scene 'form1_gear_pair'. Eq Form 1, s_a1.
 
     Parameters
@@ -176,6 +219,8 @@ def tip_thickness(z, x, dy):
         shift coefficient of the gear [1]
     dy : array_like
         tip shortening coefficient Δy (>= 0) [1], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -185,10 +230,11 @@ def tip_thickness(z, x, dy):
     z  = _checked('z', z, 'positive', 'number of teeth, 1')
     x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
     dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
-    return (5764607523034235/576460752303423488)*(-2*dy + 2*x + z + 2)*_tip_half_angle(x, z, 6288211335136391/18014398509481984, 1, dy, 'x: the tip circle lies inside the base circle (shift too negative)')
+    shape = _broadcast(z=z, x=x, dy=dy)
+    return _into(out, shape, (5764607523034235/576460752303423488)*(-2*dy + 2*x + z + 2)*_tip_half_angle(x, z, 6288211335136391/18014398509481984, 1, dy, 'x: the tip circle lies inside the base circle (shift too negative)'))
 
 
-def contact_ratio(x1, x2):
+def contact_ratio(x1, x2, *, out=None):
     """Transverse contact ratio epsilon_alpha. Specialized to scene 'form1_gear_pair'. Eq Form 1, epsilon_alpha.
 
     Parameters
@@ -197,6 +243,8 @@ def contact_ratio(x1, x2):
         shift coefficient of the pinion [1]
     x2 : array_like
         shift coefficient of the wheel [1]
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -205,16 +253,19 @@ def contact_ratio(x1, x2):
     """
     x1 = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1')
     x2 = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1')
-    return 3.9788735772973833*np.tan(_acos_checked(23.49231551964771/(2*x1 + 27), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 6.684507609859604*np.tan(_acos_checked(19.733545036504076/(x2 + 22), 'x2: the tip circle lies inside the base circle (shift too negative)')) - 4.351545605487496
+    shape = _broadcast(x1=x1, x2=x2)
+    return _into(out, shape, 3.9788735772973833*np.tan(_acos_checked(23.49231551964771/(2*x1 + 27), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 6.684507609859604*np.tan(_acos_checked(19.733545036504076/(x2 + 22), 'x2: the tip circle lies inside the base circle (shift too negative)')) - 4.351545605487496)
 
 
-def undercut_limit(z):
+def undercut_limit(z, *, out=None):
     """Least shift coefficient free of undercut (Fig. 10, curve 4). Specialized to scene 'form1_gear_pair'. Eq undercut limit.
 
     Parameters
     ----------
     z : array_like
         number of teeth [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -222,4 +273,5 @@ def undercut_limit(z):
         [1], broadcast over the arguments.
     """
     z = _checked('z', z, 'positive', 'number of teeth, 1')
-    return 1 - 0.05848888922025548*z
+    shape = _broadcast(z=z)
+    return _into(out, shape, 1 - 0.05848888922025548*z)

@@ -48,13 +48,49 @@ def _checked(name, value, sign, what):
     return array
 
 
-def max_support_load(L_max):
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: v.shape for k, v in arrays.items() if v.ndim}  # _checked's arrays
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
+def max_support_load(L_max, *, out=None):
     """Largest vertical load on one portal leg, load case 2v (reconstructed portal: see the derivation). Specialized to scene 'portal_support_loads'. Eq (3), (4).
 
     Parameters
     ----------
     L_max : array_like
         maximum reach [m], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -62,4 +98,5 @@ def max_support_load(L_max):
         [N], broadcast over the arguments.
     """
     L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m')
-    return (47862005039879947875/4503599627370496)*L_max + 824192508806006051625/4503599627370496
+    shape = _broadcast(L_max=L_max)
+    return _into(out, shape, (47862005039879947875/4503599627370496)*L_max + 824192508806006051625/4503599627370496)

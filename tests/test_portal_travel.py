@@ -180,8 +180,9 @@ def test_fig10_has_no_starting_guess_failures(gen):
 
 
 def test_fig10_scene_draws_four_curves(tmp_path):
-    report, png = run_scene("fig10_shift_limits", tmp_path)
-    assert png.exists() and len(report.panels) == 1 and len(report.panels[0].curves) == 4
+    report, pngs = run_scene("fig10_shift_limits", tmp_path)
+    assert [p.name for p in pngs] == ["fig10_shift_limits.png"] and pngs[0].exists()
+    assert len(report.panels) == 1 and len(report.panels[0].curves) == 4
     assert report.values["x_pointed_z10"] == pytest.approx(0.6996283724, rel=1e-9)
 
 
