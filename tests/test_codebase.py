@@ -121,3 +121,11 @@ def test_run_command_prints_the_report(tmp_path, capsys):
     assert "scene overhead_crane_50t:" in out and "module written to" in out
     png = tmp_path / "overhead_crane_50t.png"
     assert f"1 plot written: {png}" in out and png.is_file()
+
+
+@pytest.mark.parametrize("name", registry.ids())
+def test_every_paper_names_its_authors_and_title(name):
+    """`crane-sym list` shows them: a paper package exports AUTHORS, PAPER, TITLE."""
+    module = registry.module(name)
+    assert module.AUTHORS and all(a.strip() for a in module.AUTHORS), name
+    assert module.PAPER.endswith(".txt") and module.TITLE, name

@@ -34,19 +34,20 @@ from crane_sym.derivation import Derivation
 
 from . import steps, steps_loads
 from .hard_cases import hard_cases
-from .model import CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .outputs import outputs
 from .published import PUBLISHED
 from .published_loads import PUBLISHED_LOADS
 from .report import scene_report
 
-__all__ = ["ID", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases", "scene_report"]
+__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases",
+           "scene_report"]
 
 
 def build() -> Derivation:
     """Rebuild Form 1 from the involute and the rack, Fig. 10, and (3)–(4)."""
     d = Derivation(id=ID, paper=PAPER, title=TITLE, citation=CITATION,
-                   model=MODEL, symbols=SYMBOLS)
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
     steps.involute_and_rack(d)
     steps.mesh(d)
     steps.tips(d)

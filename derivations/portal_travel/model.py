@@ -14,6 +14,8 @@ from crane_sym.symbols import DEFINED, PhysicalSymbol, SymbolTable
 ID = "portal_travel"
 PAPER = "003_5e8a923a75d2f7ba.txt"
 TITLE = "Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads"
+#: From the paper's header (Е. Н. Андрианов, А. Н. Иванов), transliterated.
+AUTHORS = ("E.N. Andrianov", "A.N. Ivanov")
 CITATION = ("E.N. Andrianov, A.N. Ivanov, Vestnik of the Admiral Makarov State "
             "University of Maritime and Inland Shipping, issue 1")
 
@@ -154,22 +156,28 @@ _loads = [
 ]
 SYMBOLS = SymbolTable(_g + _numbers + _loads)
 
+#: The Mathcad variables of Form 1 and its appendix are set in typewriter type
+#: (\mathtt), so that they stay apart from the geometry's symbols of the same letter.
 LATEX_NAMES = {
     z1: "z_1", z2: "z_2", a_w: "a_w", ha: "h_a", alpha: r"\alpha", x1: "x_1", x2: "x_2",
     k1: "k_1", k2: "k_2", dy1: r"\Delta y_1", dy2: r"\Delta y_2", dy: r"\Delta y",
     alpha_tw: r"\alpha_{tw}", alpha_a1: r"\alpha_{a1}", alpha_a2: r"\alpha_{a2}",
     x_sum: r"x_\Sigma", d_a1: "d_{a1}", d_a2: "d_{a2}", s_a1: "s_{a1}",
-    eps_a: r"\varepsilon_\alpha", x_p: "x", x_min: r"x_{\min}", r_b: "r_b", r_y: "r_y",
-    alpha_y: r"\alpha_y", s_y: "s_y", c_ap: "c", t_ap: "t",
-    b_ap: "b", half_pi: "a", Fo: r"F_o(x)", psi: r"\psi", G_g: r"G_{г}",
-    G_pch: r"G_{пч}", G_vs: r"G_{вс}", L_max: r"L_{\max}", x_o: "x_o", c_arm: "c",
-    M_v: r"M_{в}", R_max: r"R_{\max}", V_total: "V", psi_cell: r"\psi",
-    F_m: "m", F_z1: "z_1", F_z2: "z_2", F_aw: "a_w", F_ha: "h_a", F_alpha: r"\alpha^\circ",
-    F_x1: "x_1", F_x2: "x_2", F_k1: "k_1", F_k2: "k_2", F_k: "k", F_z: "z", F_x0: "x_{(0)}",
-    V_atw: r"\alpha_{tw}^\circ", V_xsum: r"x_\Sigma", V_da1: "d_{a1}", V_da2: "d_{a2}",
-    V_sa1: "s_{a1}", V_sa1m: "s_{a1}/m", V_eps: r"\varepsilon_\alpha",
-    V_xp: "x_{z=10}", V_samin: "0.4 m", C_sa: r"[s_{a1}/m \ge 0.4]",
-    C_eps: r"[\varepsilon_\alpha > 1.2]",
+    eps_a: r"\varepsilon_\alpha", x_p: r"\mathtt{x}", x_min: r"x_{\min}", r_b: "r_b",
+    r_y: "r_y", alpha_y: r"\alpha_y", s_y: "s_y", c_ap: r"\mathtt{c}", t_ap: r"\mathtt{t}",
+    b_ap: r"\mathtt{b}", half_pi: r"\mathtt{a}", Fo: r"\mathtt{Fo}(\mathtt{x})",
+    psi: r"\psi", G_g: r"G_{г}", G_pch: r"G_{пч}", G_vs: r"G_{вс}", L_max: r"L_{\max}",
+    x_o: "x_o", c_arm: "c", M_v: r"M_{в}", R_max: r"R_{\max}", V_total: "V",
+    psi_cell: r"\psi_{\mathrm{Table\,1}}",
+    F_m: r"\mathtt{m}", F_z1: r"\mathtt{z1}", F_z2: r"\mathtt{z2}", F_aw: r"\mathtt{a_w}",
+    F_ha: r"\mathtt{h_a}", F_alpha: r"\mathtt{\alpha}^\circ", F_x1: r"\mathtt{x1}",
+    F_x2: r"\mathtt{x2}", F_k1: r"\mathtt{k1}", F_k2: r"\mathtt{k2}", F_k: r"\mathtt{k}",
+    F_z: r"\mathtt{z}", F_x0: r"\mathtt{x}_{(0)}", V_atw: r"\mathtt{\alpha_{tw}}^\circ",
+    V_xsum: r"\mathtt{x_\Sigma}", V_da1: r"\mathtt{d_{a1}}", V_da2: r"\mathtt{d_{a2}}",
+    V_sa1: r"\mathtt{s_{a1}}", V_sa1m: r"\mathtt{s_{a1}}/\mathtt{m}",
+    V_eps: r"\mathtt{\varepsilon_\alpha}", V_xp: r"\mathtt{x}_{z=10}",
+    V_samin: r"0.4\,\mathtt{m}", C_sa: r"[\mathtt{s_{a1}}/\mathtt{m} \ge 0.4]",
+    C_eps: r"[\mathtt{\varepsilon_\alpha} > 1.2]",
 }
 
 MODEL = r"""
