@@ -2,11 +2,12 @@
 
 ``k1*np.sin(k0*t)**2`` written as NumPy makes four full-size arrays, and the
 allocator returns their memory between calls, so every call page-faults. When
-the expression is a chain (each node has at most one operand that depends on
-the arrays) it is evaluated instead in one output buffer, one ufunc pass per
-node, with ``out=``: the fewest passes the expression needs and no temporary.
-Expressions that are not a chain (two array operands meet, a Piecewise, a
-kernel call) are left to the plain printer.
+the expression is built of arithmetic and elementary functions it is
+evaluated instead in the output buffer, one ufunc pass per node, with
+``out=``: a chain (each node with one array operand) needs no other array;
+where two array operands meet, the second is made in a work array, one per
+nesting depth, allocated once and reused. Expressions with other nodes (a
+Piecewise, a kernel call) are left to the plain printer.
 """
 from __future__ import annotations
 
@@ -25,7 +26,8 @@ UNARY = {sp.sin: "np.sin", sp.cos: "np.cos", sp.tan: "np.tan", sp.exp: "np.exp",
 
 def chain(expr: sp.Expr, heavy: set[sp.Symbol], print_: Callable[[sp.Basic], str],
           buffer: str = "out") -> list[str] | None:
-    """Statements that leave ``expr`` in ``buffer``, one in-place pass per node.
+    """Statements that leave ``expr`` in ``buffer``, one in-place pass per node
+    (and work arrays where two array operands meet).
 
     Parameters
     ----------
@@ -42,72 +44,88 @@ def chain(expr: sp.Expr, heavy: set[sp.Symbol], print_: Callable[[sp.Basic], str
     Returns
     -------
     list of str or None
-        The statements, or None when ``expr`` is not a chain.
+        The statements, or None when ``expr`` holds a node without an in-place form.
     """
     lines: list[str] = []
+    temps: list[str] = []                          # work arrays, made once, reused
 
     def is_heavy(e: sp.Basic) -> bool:
         return bool(e.free_symbols & heavy)
 
-    def emit(e: sp.Expr) -> str | None:
-        """Evaluate ``e`` into the buffer; the operand name that holds it."""
+    def work(depth: int) -> str:
+        while len(temps) <= depth:
+            temps.append(f"_w{len(temps)}")
+            lines.append(f"{temps[-1]} = np.empty_like({buffer})")
+        return temps[depth]
+
+    def emit(e: sp.Expr, buf: str, depth: int) -> str | None:
+        """Evaluate ``e`` into ``buf``; the operand name that holds it. Work
+        arrays below ``depth`` are in use by the caller."""
         if e.is_Symbol:
             return e.name                          # used as an operand, not copied
         if isinstance(e, (sp.Add, sp.Mul)):
             moving = [a for a in e.args if is_heavy(a)]
-            if len(moving) != 1:
-                return None
             rest = e.func(*[a for a in e.args if not is_heavy(a)])
-            src = emit(moving[0])
+            src = emit(moving[0], buf, depth)
             if src is None:
                 return None
+            ufunc = "np.add" if isinstance(e, sp.Add) else "np.multiply"
+            for other in moving[1:]:               # two array operands meet
+                tmp = work(depth)
+                right = emit(other, tmp, depth + 1)
+                if right is None:
+                    return None
+                lines.append(f"{ufunc}({src}, {right}, out={buf})")
+                src = buf
             if isinstance(e, sp.Add):
-                lines.append(f"np.add({src}, {print_(rest)}, out={buffer})")
-            elif rest == -1:
-                lines.append(f"np.negative({src}, out={buffer})")
-            else:
-                num, den = sp.fraction(rest)
-                if num != 1:
-                    lines.append(f"np.multiply({src}, {print_(num)}, out={buffer})")
-                    src = buffer
-                if den != 1:
-                    lines.append(f"np.divide({src}, {print_(den)}, out={buffer})")
-                elif num == 1:
-                    return src
-            return buffer
+                if rest != 0:
+                    lines.append(f"np.add({src}, {print_(rest)}, out={buf})")
+                    src = buf
+                return src
+            if rest == -1:
+                lines.append(f"np.negative({src}, out={buf})")
+                return buf
+            num, den = sp.fraction(rest)
+            if num != 1:
+                lines.append(f"np.multiply({src}, {print_(num)}, out={buf})")
+                src = buf
+            if den != 1:
+                lines.append(f"np.divide({src}, {print_(den)}, out={buf})")
+                src = buf
+            return src
         if isinstance(e, sp.Pow):
             base, exp = e.args
             if is_heavy(exp):
                 if is_heavy(base):
                     return None
-                src = emit(exp)
+                src = emit(exp, buf, depth)
                 if src is None:
                     return None
-                lines.append(f"np.power({print_(base)}, {src}, out={buffer})")
-                return buffer
-            src = emit(base)
+                lines.append(f"np.power({print_(base)}, {src}, out={buf})")
+                return buf
+            src = emit(base, buf, depth)
             if src is None:
                 return None
             if exp == 2:
-                lines.append(f"np.square({src}, out={buffer})")
+                lines.append(f"np.square({src}, out={buf})")
             elif exp == sp.S.Half:
-                lines.append(f"np.sqrt({src}, out={buffer})")
+                lines.append(f"np.sqrt({src}, out={buf})")
             elif exp == -1:
-                lines.append(f"np.divide(1.0, {src}, out={buffer})")
+                lines.append(f"np.divide(1.0, {src}, out={buf})")
             else:
-                lines.append(f"np.power({src}, {print_(exp)}, out={buffer})")
-            return buffer
+                lines.append(f"np.power({src}, {print_(exp)}, out={buf})")
+            return buf
         if type(e) in UNARY and len(e.args) == 1:
-            src = emit(e.args[0])
+            src = emit(e.args[0], buf, depth)
             if src is None:
                 return None
-            lines.append(f"{UNARY[type(e)]}({src}, out={buffer})")
-            return buffer
+            lines.append(f"{UNARY[type(e)]}({src}, out={buf})")
+            return buf
         return None
 
     if not is_heavy(expr):
         return None
-    where = emit(expr)
+    where = emit(expr, buffer, 0)
     if where is None:
         return None
     if where != buffer:                            # expr was a bare array symbol

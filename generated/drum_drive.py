@@ -437,7 +437,35 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
     k5 = (1/4)*F1_t
     k7 = (1/4)*F3_t
     k8 = (1/4)*K1 + (1/4)*K3
-    return _into(out, shape, k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3))
+    if out is None and not shape:
+        return k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3)
+    out = _out(out, shape)
+    np.multiply(t, x0, out=out)
+    np.sin(out, out=out)
+    np.multiply(out, F2_t, out=out)
+    np.add(out, k1, out=out)
+    np.abs(out, out=out)
+    np.multiply(out, -1, out=out)
+    np.divide(out, 4, out=out)
+    _w0 = np.empty_like(out)
+    np.multiply(t, x0, out=_w0)
+    np.sin(_w0, out=_w0)
+    np.multiply(_w0, F4_t, out=_w0)
+    np.add(_w0, k3, out=_w0)
+    np.abs(_w0, out=_w0)
+    np.multiply(_w0, -1, out=_w0)
+    np.divide(_w0, 4, out=_w0)
+    np.add(out, _w0, out=out)
+    np.multiply(t, x0, out=_w0)
+    np.sin(_w0, out=_w0)
+    np.multiply(_w0, k5, out=_w0)
+    np.add(out, _w0, out=out)
+    np.multiply(t, x0, out=_w0)
+    np.sin(_w0, out=_w0)
+    np.multiply(_w0, k7, out=_w0)
+    np.add(out, _w0, out=out)
+    np.add(out, k8, out=out)
+    return out
 
 
 def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r, M0, F0, W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10):

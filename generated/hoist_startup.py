@@ -1295,7 +1295,15 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = 12/t_n**3
-    return _into(out, shape, k1*t*(k0 + t)**2)
+    if out is None and not shape:
+        return k1*t*(k0 + t)**2
+    out = _out(out, shape)
+    _w0 = np.empty_like(out)
+    np.add(t, k0, out=_w0)
+    np.square(_w0, out=_w0)
+    np.multiply(t, _w0, out=out)
+    np.multiply(out, k1, out=out)
+    return out
 
 
 def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
@@ -1358,7 +1366,16 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -60/t_n**5
-    return _into(out, shape, k1*t**2*(k0 + t)**3)
+    if out is None and not shape:
+        return k1*t**2*(k0 + t)**3
+    out = _out(out, shape)
+    np.square(t, out=out)
+    _w0 = np.empty_like(out)
+    np.add(t, k0, out=_w0)
+    np.power(_w0, 3, out=_w0)
+    np.multiply(out, _w0, out=out)
+    np.multiply(out, k1, out=out)
+    return out
 
 
 def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):

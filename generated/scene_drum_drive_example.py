@@ -72,15 +72,6 @@ def _out(out, shape):
     return out
 
 
-def _into(out, shape, result):
-    """``result``, or copied into ``out`` when the caller gives a buffer."""
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
-
-
 def pulsating_force(t, *, out=None):
     """Pulsating load F'(t) of (21), as printed. Specialized to scene 'drum_drive_example'. Eq (21).
 
@@ -99,4 +90,15 @@ def pulsating_force(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     x0 = np.sin(1.0471975511965979*t)
-    return _into(out, shape, 450*x0 - 150*abs(3*x0 - 2) + 300)
+    if out is None and not shape:
+        return 450*x0 - 150*abs(3*x0 - 2) + 300
+    out = _out(out, shape)
+    np.multiply(x0, 3, out=out)
+    np.add(out, -2, out=out)
+    np.abs(out, out=out)
+    np.multiply(out, -150, out=out)
+    _w0 = np.empty_like(out)
+    np.multiply(x0, 450, out=_w0)
+    np.add(out, _w0, out=out)
+    np.add(out, 300, out=out)
+    return out

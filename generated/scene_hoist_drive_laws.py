@@ -456,7 +456,15 @@ def optimal_coefficient_from_weight_a3(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, 12*t*(t - 1)**2)
+    if out is None and not shape:
+        return 12*t*(t - 1)**2
+    out = _out(out, shape)
+    _w0 = np.empty_like(out)
+    np.add(t, -1, out=_w0)
+    np.square(_w0, out=_w0)
+    np.multiply(t, _w0, out=out)
+    np.multiply(out, 12, out=out)
+    return out
 
 
 def optimal_coefficient_from_weight_a4(t, *, out=None):
@@ -476,4 +484,13 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, -60*t**2*(t - 1)**3)
+    if out is None and not shape:
+        return -60*t**2*(t - 1)**3
+    out = _out(out, shape)
+    np.square(t, out=out)
+    _w0 = np.empty_like(out)
+    np.add(t, -1, out=_w0)
+    np.power(_w0, 3, out=_w0)
+    np.multiply(out, _w0, out=out)
+    np.multiply(out, -60, out=out)
+    return out

@@ -74,15 +74,6 @@ def _out(out, shape):
     return out
 
 
-def _into(out, shape, result):
-    """``result``, or copied into ``out`` when the caller gives a buffer."""
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
-
-
 def elastic_force(t, *, out=None):
     """Force F(t) in the elastic link. Specialized to scene 'overhead_crane_50t'. Eq (14).
 
@@ -128,7 +119,18 @@ def velocity_m1(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496)
+    if out is None and not shape:
+        return -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
+    out = _out(out, shape)
+    np.multiply(t, -175, out=out)
+    np.divide(out, 572, out=out)
+    _w0 = np.empty_like(out)
+    np.multiply(t, 26.628760937957836, out=_w0)
+    np.sin(_w0, out=_w0)
+    np.multiply(_w0, -0.1933473889602708, out=_w0)
+    np.add(out, _w0, out=out)
+    np.add(out, 6004799503160661/4503599627370496, out=out)
+    return out
 
 
 def velocity_m2(t, *, out=None):
@@ -148,4 +150,15 @@ def velocity_m2(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496)
+    if out is None and not shape:
+        return -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
+    out = _out(out, shape)
+    np.multiply(t, -175, out=out)
+    np.divide(out, 572, out=out)
+    _w0 = np.empty_like(out)
+    np.multiply(t, 26.628760937957836, out=_w0)
+    np.sin(_w0, out=_w0)
+    np.multiply(_w0, 0.007733895558410831, out=_w0)
+    np.add(out, _w0, out=out)
+    np.add(out, 6004799503160661/4503599627370496, out=out)
+    return out

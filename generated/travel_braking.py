@@ -345,7 +345,17 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     k0 = -(P_t + W)/x0
     k1 = np.sqrt(c*x0*x1/m2)
     k2 = _diff_of_products(W, m1, P_t, m2)*np.sqrt(m2*x1/c)/x0**(3/2)
-    return _into(out, shape, k0*t + k2*np.sin(k1*t) + v0)
+    if out is None and not shape:
+        return k0*t + k2*np.sin(k1*t) + v0
+    out = _out(out, shape)
+    np.multiply(t, k0, out=out)
+    _w0 = np.empty_like(out)
+    np.multiply(t, k1, out=_w0)
+    np.sin(_w0, out=_w0)
+    np.multiply(_w0, k2, out=_w0)
+    np.add(out, _w0, out=out)
+    np.add(out, v0, out=out)
+    return out
 
 
 def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
@@ -388,4 +398,14 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     k0 = -(P_t + W)/x0
     k1 = np.sqrt(c*x0*x1/m1)
     k2 = -_diff_of_products(W, m1, P_t, m2)*np.sqrt(m1*x1/c)/x0**(3/2)
-    return _into(out, shape, k0*t + k2*np.sin(k1*t) + v0)
+    if out is None and not shape:
+        return k0*t + k2*np.sin(k1*t) + v0
+    out = _out(out, shape)
+    np.multiply(t, k0, out=out)
+    _w0 = np.empty_like(out)
+    np.multiply(t, k1, out=_w0)
+    np.sin(_w0, out=_w0)
+    np.multiply(_w0, k2, out=_w0)
+    np.add(out, _w0, out=out)
+    np.add(out, v0, out=out)
+    return out
