@@ -3,6 +3,7 @@
 
 Modules:
     travel_braking
+    hoist_brakes
     hoist_startup
     drum_drive
     scene_drum_drive_example

@@ -7,7 +7,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics.units import Dimension, force, length, mass, time, velocity
 
-from crane_sym.symbols import DEFINED, PhysicalSymbol, SymbolTable
+from crane_sym.symbols import DEFINED, TIME, PhysicalSymbol, SymbolTable
 
 # --- The paper ---------------------------------------------------------------
 ID = "hoist_brakes"
@@ -30,6 +30,8 @@ v, J, M_L, M_st, J_d = sp.symbols("v J M_L M_st J_d", positive=True)
 alpha, M_G = sp.symbols("alpha M_G", real=True)
 MF, LF, BF_SB, BF_BB = sp.symbols("MF LF BF_SB BF_BB", positive=True)
 M_rel, M_rel_max, N = sp.symbols("M_rel M_rel_max N", real=True)
+t = sp.Symbol("t", nonnegative=True)
+t_SB, t_BB, delta = sp.symbols("t_SB t_BB delta", nonnegative=True)
 
 SYMBOLS = SymbolTable([
     PhysicalSymbol(omega1, rate, "rad/s", "motor angular speed before braking (Table 1: "
@@ -59,6 +61,14 @@ SYMBOLS = SymbolTable([
     PhysicalSymbol(d_omega, rate, "rad/s", "change of the motor angular speed while braking",
                    sample_range=(10.0, 400.0)),
     PhysicalSymbol(d_t, time, "s", "braking time", sample_range=(0.1, 10.0)),
+    PhysicalSymbol(t, time, "s", "time since the emergency stop", TIME, "nonnegative",
+                   (1e-3, 10.0)),
+    PhysicalSymbol(t_SB, time, "s", "delay of the safety brakes", sign="nonnegative",
+                   sample_range=(1e-3, 1.0)),
+    PhysicalSymbol(t_BB, time, "s", "delay of the service brakes", sign="nonnegative",
+                   sample_range=(1e-3, 1.0)),
+    PhysicalSymbol(delta, ONE, "rad", "backlash of the drum coupling (at the drum)",
+                   sign="nonnegative", sample_range=(1e-3, 0.5)),
     PhysicalSymbol(v, velocity, "m/s", "hoist speed", DEFINED),
     PhysicalSymbol(J, inertia, "kg*m^2", "inertia of the whole drive reduced to the motor "
                    "shaft (the print's J_ges*)", DEFINED),
@@ -80,7 +90,8 @@ SYMBOLS = SymbolTable([
 ])
 LATEX_NAMES = {omega1: r"\omega_1", m_h: "m_h", m_p: "m_p", m_r: "m_r", i_g: "i_g",
                i_t: "i_t", M_SB: "M_{SB}", M_BB: "M_{BB}", M_M: "M_M", phi5: r"\varphi_5",
-               d_omega: r"\Delta\omega", d_t: r"\Delta t", J: "J_{ges}", J_d: "J_d",
+               d_omega: r"\Delta\omega", t_SB: "t_{SB}", t_BB: "t_{BB}", delta: r"\delta",
+               d_t: r"\Delta t", J: "J_{ges}", J_d: "J_d",
                M_L: "M_L", M_st: "M_{st}", M_G: "M_G", BF_SB: "BF_{SB}",
                BF_BB: "BF_{BB}", M_rel: "M_{G,rel}", M_rel_max: r"M_{G,rel,\max}"}
 
