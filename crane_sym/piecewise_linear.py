@@ -107,9 +107,10 @@ class ClosedForm:
 @lru_cache(maxsize=256)
 def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
     n = len(b_key)
+    exact = lambda v: sp.Rational(repr(v))  # noqa: E731  (the float's shortest decimal)
     aug = sp.zeros(n + 1, n + 1)
-    aug[:n, :n] = sp.Matrix(n, n, a_key)
-    aug[:n, n] = sp.Matrix(b_key)
+    aug[:n, :n] = sp.Matrix(n, n, [exact(v) for v in a_key])
+    aug[:n, n] = sp.Matrix([exact(v) for v in b_key])
     P, J = aug.jordan_form()
     Pn = np.array(P.evalf(30).tolist(), dtype=complex)
     Pinv = np.array(P.inv().evalf(30).tolist(), dtype=complex)
@@ -152,10 +153,9 @@ def closed_form(A: Sequence, b: Sequence) -> ClosedForm:
     A : (n, n) array-like of numbers
     b : (n,) array-like of numbers
     """
-    rational = lambda v: sp.nsimplify(float(v), rational=True)  # noqa: E731
     A = np.asarray(A, dtype=float)
-    a_key = tuple(rational(v) for v in A.ravel())
-    return _closed_form_cached(a_key, tuple(rational(v) for v in np.ravel(b)))
+    return _closed_form_cached(tuple(map(float, A.ravel())),
+                               tuple(map(float, np.ravel(b))))
 
 
 def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
@@ -173,7 +173,12 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
     fire again at once.
     """
     amps, k = form.scalar_terms(weights, constant, x0)
-    g = lambda t: float(amps @ form.basis(t) + k)  # noqa: E731
+    p, s, w, sine = form.powers, form.sigmas, form.omegas, form.sine
+
+    def g(t: float) -> float:
+        wave = np.where(sine, np.sin(w * t), np.cos(w * t))
+        return float(amps @ (t ** p * np.exp(s * t) * wave) + k)
+
     window = window or _window(form, max(t_end, h_min))
     t, gt = 0.0, g(0.0)
     size = float(np.sum(np.abs(amps)) + abs(k))

@@ -19,7 +19,7 @@ from . import registry
 from .scenes import Scene, SceneError, SceneReport, load_scene
 from .specialize import module_name, render_scene_module
 
-__all__ = ["import_module_file", "plot_report", "run_scene", "time_function"]
+__all__ = ["import_module_file", "plot_figures", "plot_report", "run_scene", "time_function"]
 
 
 def import_module_file(path: Path) -> ModuleType:
@@ -77,31 +77,52 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, Pat
     if not isinstance(report, SceneReport) or not report.panels:
         raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
     report.lines.append(f"module written to {source}")
-    path = plot_report(report, scene.title, outdir / f"{scene.name}.png")
+    path, *extras = plot_figures(report, scene.title, outdir / f"{scene.name}.png")
+    report.lines.extend(f"figure written to {extra}" for extra in extras)
     return report, path
 
 
 def plot_report(report: SceneReport, title: str, path: Path) -> Path:
-    """Write the report's panels, one subplot each, to the PNG ``path``."""
+    """Write the report's panels to PNGs (see :func:`plot_figures`); returns ``path``."""
+    return plot_figures(report, title, path)[0]
+
+
+def plot_figures(report: SceneReport, title: str, path: Path) -> list[Path]:
+    """Write the report's panels, one subplot each: the panels of the first figure
+    named (``Panel.figure``, ``""`` for a scene with one figure) to ``path``,
+    those of each further figure ``name`` to ``<stem>_<name>.png`` beside it.
+    Returns the paths written, ``path`` first."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    groups: dict[str, list] = {}
+    for panel in report.panels:
+        groups.setdefault(panel.figure, []).append(panel)
+    written = []
+    for i, (name, panels) in enumerate(groups.items()):
+        target = path if i == 0 else path.with_name(f"{path.stem}_{name}.png")
+        _plot_panels(panels, title, target)
+        written.append(target)
+    return written
+
+
+def _plot_panels(panels: list, title: str, path: Path) -> None:
+    """One PNG: the panels stacked, legends placed where they cover the least data."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    n = len(report.panels)
-    fig, axes = plt.subplots(n, 1, figsize=(8, 3.2 * n), squeeze=False,
+    n = len(panels)
+    fig, axes = plt.subplots(n, 1, figsize=(8, 3.4 * n), squeeze=False,
                              layout="constrained")
     try:
-        for ax, panel in zip(axes[:, 0], report.panels):
+        for ax, panel in zip(axes[:, 0], panels):
             for label, x, y in panel.curves:
                 ax.plot(x, y, label=label)
             ax.set(title=panel.title, xlabel=panel.xlabel, ylabel=panel.ylabel)
             ax.grid(True, alpha=0.4)
             if len(panel.curves) > 1:
-                ax.legend(loc="lower right", framealpha=0.9)
+                ax.legend(loc="best", framealpha=0.9, fontsize="small")
         fig.suptitle(title)
         fig.savefig(path, dpi=120, metadata={"Software": None})
     finally:
         plt.close(fig)
-    return path

@@ -100,12 +100,15 @@ class Scene:
 
 @dataclass
 class Panel:
-    """One subplot: curves ``(label, x, y)`` sharing a y axis."""
+    """One subplot: curves ``(label, x, y)`` sharing a y axis. Panels with the same
+    ``figure`` (a short name such as ``"fig9"``) share one PNG; ``""`` is the
+    scene's main figure."""
 
     title: str
     ylabel: str
     curves: list[tuple[str, np.ndarray, np.ndarray]] = field(default_factory=list)
     xlabel: str = "t [s]"
+    figure: str = ""
 
 
 @dataclass

@@ -11,6 +11,7 @@ Modules:
     scene_hoist_drive_laws
     scene_hoist_fig3
     scene_hoist_fig5
+    scene_hoist_table1
     scene_hoist_user_drive_law
     scene_overhead_crane_50t
 """

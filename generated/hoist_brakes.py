@@ -2,7 +2,7 @@
 
 Source: crane_sym.derivations.hoist_brakes (paper 001_544065b666a6bc39.txt:
 Hoists with safety brakes: gearbox torque in an emergency stop).
-Equations: (1), (2), (3), (4), (6), (7).
+Equations: (1), (2), (3), (4), (6), (7), Fig. 9.
 Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
 
 Functions and argument order:
@@ -13,6 +13,8 @@ Functions and argument order:
     service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (6)
     service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (6)
     safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (7)
+    elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c) -> [rad/s]    eq Fig. 9
+    backlash_at_motor_shaft(delta, i_g) -> [rad]    eq Fig. 9
     rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [m/s]    eq (1)
     rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [s]    eq (1)
     rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [m/s]    eq (1)
@@ -21,7 +23,7 @@ Functions and argument order:
 
 import numpy as np
 
-__all__ = ['relative_gearbox_torque_hoisting', 'relative_gearbox_torque_lowering', 'peak_relative_gearbox_torque_hoisting', 'peak_relative_gearbox_torque_lowering', 'service_brake_factor_hoisting', 'service_brake_factor_lowering', 'safety_brake_factor', 'rigid_hook_speed_hoisting', 'rigid_stopping_time_hoisting', 'rigid_hook_speed_lowering', 'rigid_stopping_time_lowering']
+__all__ = ['relative_gearbox_torque_hoisting', 'relative_gearbox_torque_lowering', 'peak_relative_gearbox_torque_hoisting', 'peak_relative_gearbox_torque_lowering', 'service_brake_factor_hoisting', 'service_brake_factor_lowering', 'safety_brake_factor', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'rigid_hook_speed_hoisting', 'rigid_stopping_time_hoisting', 'rigid_hook_speed_lowering', 'rigid_stopping_time_lowering']
 
 
 def _checked(name, value, sign, what):
@@ -62,7 +64,7 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB):
     Parameters
     ----------
     MF : array_like
-        inertia factor J1/J [1], > 0
+        inertia factor J1/J [1], >= 0
     LF : array_like
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
@@ -73,7 +75,7 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB):
     ndarray
         [1], broadcast over the arguments.
     """
-    MF    = _checked('MF', MF, 'positive', 'inertia factor J1/J, 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
     return MF*(BF_SB + LF)
@@ -85,7 +87,7 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB):
     Parameters
     ----------
     MF : array_like
-        inertia factor J1/J [1], > 0
+        inertia factor J1/J [1], >= 0
     LF : array_like
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
@@ -96,7 +98,7 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB):
     ndarray
         [1], broadcast over the arguments.
     """
-    MF    = _checked('MF', MF, 'positive', 'inertia factor J1/J, 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
     return -MF*(BF_SB - LF)
@@ -110,7 +112,7 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB):
     phi5 : array_like
         dynamic factor φ5 of EN 13001-2 [1], > 0
     MF : array_like
-        inertia factor J1/J [1], > 0
+        inertia factor J1/J [1], >= 0
     LF : array_like
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
@@ -122,7 +124,7 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB):
         [1], broadcast over the arguments.
     """
     phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
-    MF    = _checked('MF', MF, 'positive', 'inertia factor J1/J, 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
     x0 = LF*phi5
@@ -137,7 +139,7 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB):
     phi5 : array_like
         dynamic factor φ5 of EN 13001-2 [1], > 0
     MF : array_like
-        inertia factor J1/J [1], > 0
+        inertia factor J1/J [1], >= 0
     LF : array_like
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
@@ -149,7 +151,7 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB):
         [1], broadcast over the arguments.
     """
     phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
-    MF    = _checked('MF', MF, 'positive', 'inertia factor J1/J, 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
     return -BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF
@@ -199,7 +201,8 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     g      = _checked('g', g, 'positive', 'gravity, m/s^2')
     omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
     d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
-    return (J1*i_g*i_t*omega1/(d_t*g*r) - m_h - m_p)/(m_h + m_r)
+    x0 = d_t*g*r
+    return -(-J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r))
 
 
 def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
@@ -246,7 +249,8 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     g      = _checked('g', g, 'positive', 'gravity, m/s^2')
     omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
     d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
-    return (J1*i_g*i_t*omega1/(d_t*g*r) + m_h + m_p)/(m_h + m_r)
+    x0 = d_t*g*r
+    return (J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r))
 
 
 def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
@@ -293,10 +297,67 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
     g      = _checked('g', g, 'positive', 'gravity, m/s^2')
     omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
     d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
-    x0 = i_g**(-2.0)
-    x1 = r**2*x0/i_t**2
-    x2 = J1 + J2*x0 + m_h*x1 + m_p*x1
-    return -i_g*i_t*omega1*x2*(J1/x2 - 1)/(d_t*g*r*(m_h + m_r))
+    x0 = r**2
+    return omega1*(J2*i_t**2 + m_h*x0 + m_p*x0)/(d_t*g*i_g*i_t*r*(m_h + m_r))
+
+
+def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c):
+    """Natural frequency of the two-mass drive in contact (motor shafts J1 against everything beyond the gearbox input, stiffness c). Eq Fig. 9.
+
+    Parameters
+    ----------
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    m_p : array_like
+        payload [kg], >= 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    c : array_like
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad/s], broadcast over the arguments.
+    """
+    J1  = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2  = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    m_p = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    r   = _checked('r', r, 'positive', 'drum radius, m')
+    i_g = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    c   = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
+    x0 = r**2/i_t**2
+    return np.sqrt(c)*np.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/(J1))
+
+
+def backlash_at_motor_shaft(delta, i_g):
+    """The drum-coupling backlash seen at the motor shaft. Eq Fig. 9.
+
+    Parameters
+    ----------
+    delta : array_like
+        backlash of the drum coupling (at the drum) [rad], >= 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad], broadcast over the arguments.
+    """
+    delta = _checked('delta', delta, 'nonnegative', 'backlash of the drum coupling (at the drum), rad')
+    i_g   = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    return delta*i_g
 
 
 def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):

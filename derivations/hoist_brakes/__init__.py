@@ -28,7 +28,7 @@ from __future__ import annotations
 
 from crane_sym.derivation import Derivation
 
-from . import steps, steps_numbers
+from . import elastic, steps, steps_numbers
 from .hard_cases import hard_cases
 from .model import CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .outputs import outputs
@@ -46,6 +46,7 @@ def build() -> Derivation:
     steps.rigid_drive(d)                 # (1)–(5)
     steps.coordinated_brakes(d)          # (6)–(7)
     steps_numbers.numbers(d)             # Table 1, after (5), Figs 8, 11, 12
+    elastic.fig9_steps(d)                # Fig. 9
     d.published.extend(PUBLISHED)
     d.outputs.extend(outputs(d))
     return d

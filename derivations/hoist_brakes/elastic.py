@@ -203,3 +203,42 @@ class TwoMassHoist:
             if abs(vals[i]) > abs(best[1]):
                 best = (candidates[i], float(vals[i]))
         return best
+
+
+def table1_hoist(payload: float, g: float = 9.81, backlash_deg: float | None = None,
+                 stiffness: float | None = None) -> TwoMassHoist:
+    """The two-mass hoist of Table 1 (J1, J2, M_SB, M_BB read as values of the whole
+    drive, see the model text), lowering ``payload`` kg on the hook."""
+    from .model import TABLE1
+    T = {k: float(v) for k, v in TABLE1.items()}
+    gear = T["r"] / (T["i_g"] * T["i_t"])
+    M_L = (T["m_h"] + payload) * g * gear
+    s = np.radians(T["backlash_deg"] if backlash_deg is None else backlash_deg) * T["i_g"]
+    return TwoMassHoist(T["J1"], T["J2"] / T["i_g"] ** 2 + (T["m_h"] + payload) * gear ** 2,
+                        T["c"] if stiffness is None else stiffness, s, M_L,
+                        (T["m_h"] + T["m_r"]) * g * gear, T["M_SB"] / T["i_g"], T["M_BB"], M_L)
+
+
+#: Table 1's motor speed [rad/s] and brake delays [s].
+OMEGA1, T_SB, T_BB = 1500 * 2 * np.pi / 60, 0.1, 0.4
+
+
+def fig9_peak(payload: float) -> tuple[float, float]:
+    """(time, relative torque) of the largest gearbox torque, Table 1's hoist
+    lowering ``payload``: motor torque lost at t = 0, brakes after Table 1's delays."""
+    h = table1_hoist(payload)
+    return h.peak(h.run(OMEGA1, 1.0, 0.0, T_SB, T_BB))
+
+
+def fig9_steps(d) -> None:
+    """The peak of Fig. 9 as steps: the hook alone (the text) and the rated load."""
+    import sympy as sp
+
+    from .model import N
+    for name, payload in (("hook only", 0.0), ("rated load", 52e3)):
+        when, value = fig9_peak(payload)
+        d.add(f"Fig. 9 peak, {name}", sp.Eq(N, sp.Float(abs(value), 15)),
+              f"|M_G/M_st| at its largest (t = {when:.4f} s), the two-mass hoist of Table 1 "
+              f"lowering the {name}, phases in closed form (crane_sym.piecewise_linear).",
+              "The elasto-kinetic result the paper prints as 8.9 (Fig. 9, conclusions: "
+              "890 %).", "Fig. 9" if payload == 0 else "")

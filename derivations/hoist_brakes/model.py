@@ -80,7 +80,7 @@ SYMBOLS = SymbolTable([
     PhysicalSymbol(alpha, rate / time, "rad/s^2", "angular acceleration of the motor shaft",
                    DEFINED, "real"),
     PhysicalSymbol(M_G, torque, "N*m", "torque at the gearbox input", DEFINED, "real"),
-    PhysicalSymbol(MF, ONE, "1", "inertia factor J1/J", DEFINED),
+    PhysicalSymbol(MF, ONE, "1", "inertia factor J1/J", DEFINED, "nonnegative"),
     PhysicalSymbol(LF, ONE, "1", "load factor M_L/M_st", DEFINED),
     PhysicalSymbol(BF_SB, ONE, "1", "safety-brake factor M_SB/(i_g M_st)", DEFINED),
     PhysicalSymbol(BF_BB, ONE, "1", "service-brake factor M_BB/M_st", DEFINED),

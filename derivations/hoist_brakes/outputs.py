@@ -9,7 +9,7 @@ import sympy as sp
 from crane_sym.derivation import Derivation, Output
 
 from .model import (BF_SB, LF, MF, J, J1, J2, M_BB, M_L, M_M, M_SB, M_st, d_omega, d_t, g,
-                    i_g, i_t, m_h, m_p, m_r, omega1, phi5, r, t, t_BB, t_SB)
+                    i_g, i_t, m_h, m_p, m_r, omega1, phi5, r, t, t_BB, t_SB, c, delta)
 
 #: Arguments of the payload functions, the most used first.
 HOIST = (m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1)
@@ -71,10 +71,17 @@ def outputs(d: Derivation) -> list[Output]:
     for n, mode, name in ((6, "hoisting", "service_brake_factor_hoisting"),
                           (6, "lowering", "service_brake_factor_lowering"),
                           (7, "hoisting", "safety_brake_factor")):
-        expr = sp.factor_terms(_physical(d, rhs(f"({n}), {mode}").subs(d_omega, omega1)))
+        expr = sp.factor(sp.cancel(_physical(d, rhs(f"({n}), {mode}").subs(d_omega, omega1))))
         out.append(Output(name, expr, HOIST + (d_t,), (f"({n})",),
                           f"Coordinated brake factor ({n}) over the payload m_p, stopping "
                           f"from omega1 in d_t ({mode}).", "1"))
+    J_d = d.step("inertia beyond the cut").statement.rhs
+    out.append(Output("elastic_natural_frequency", sp.sqrt(c * (1 / J1 + 1 / J_d)),
+                      (J1, J2, m_h, m_p, r, i_g, i_t, c), ("Fig. 9",),
+                      "Natural frequency of the two-mass drive in contact (motor shafts J1 "
+                      "against everything beyond the gearbox input, stiffness c).", "rad/s"))
+    out.append(Output("backlash_at_motor_shaft", delta * i_g, (delta, i_g), ("Fig. 9",),
+                      "The drum-coupling backlash seen at the motor shaft.", "rad"))
     for mode in ("hoisting", "lowering"):
         speed, stop = _speed_law(d, mode)
         out.append(Output(f"rigid_hook_speed_{mode}", speed, (t,) + HOIST[:4] + HOIST[5:]
