@@ -113,12 +113,16 @@ def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
     aug[:n, n] = sp.Matrix([exact(v) for v in b_key])
     P, J = aug.jordan_form()
     Pn = np.array(P.evalf(30).tolist(), dtype=complex)
-    Pinv = np.array(P.inv().evalf(30).tolist(), dtype=complex)
+    Pinv = np.linalg.inv(Pn)
     terms: dict[tuple, np.ndarray] = {}
     i = 0
     size = n + 1
     while i < size:                                   # walk the Jordan blocks
         lam = complex(sp.N(J[i, i], 30))
+        if abs(lam.imag) <= 1e-20 * (1 + abs(lam)):     # a real root printed with radicals
+            lam = complex(lam.real, 0.0)
+        if abs(lam.real) <= 1e-20 * (1 + abs(lam)):
+            lam = complex(0.0, lam.imag)
         k = 1
         while i + k < size and J[i + k - 1, i + k] == 1 and J[i + k, i + k] == J[i, i]:
             k += 1
@@ -133,7 +137,7 @@ def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
     powers, sigmas, omegas, sine, coefs = [], [], [], [], []
     for (j, lam), C in sorted(terms.items(), key=lambda kv: (kv[0][0], kv[0][1].real,
                                                              kv[0][1].imag)):
-        if lam.imag < -1e-300:
+        if lam.imag < 0:
             continue                                  # folded into its conjugate
         pair = 2.0 if lam.imag > 0 else 1.0
         for is_sine, part in ((False, pair * C.real), (True, -pair * C.imag)):
