@@ -92,13 +92,21 @@ def _verdict_line(record: AuditRecord) -> str:
     return line + (f" — {record.detail}" if record.detail else "")
 
 
-def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord]) -> list[str]:
-    """The paper's print of each formula, verbatim, with its verdict."""
+def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord],
+                    latex_names: dict | None = None) -> list[str]:
+    """The paper's print of each formula, verbatim, with its verdict; a print
+    rebuilt from OCR damage shows the OCR as text, then the reconstruction and why."""
     blocks = []
     for f in formulas:
         label = f.label if f.label.startswith("(") else f"({f.label})"
-        blocks.append(f"**As printed in the paper** {label}:")
-        blocks.append(_display(f.latex))
+        if f.reconstructed and f.printed is not None:
+            blocks.append(f"**As printed in the paper** {label}, the OCR verbatim:")
+            blocks.append(f"```text\n{f.latex.strip()}\n```")
+            blocks.append(f"**Read as** (a reconstruction; {f.provenance}):")
+            blocks.append(_display(_statement_tex(f.printed, latex_names or {})))
+        else:
+            blocks.append(f"**As printed in the paper** {label}:")
+            blocks.append(_display(f.latex))
         if f.label in by_label:
             blocks.append(_verdict_line(by_label[f.label]))
     return blocks
@@ -150,12 +158,12 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
             parts.append(f"**Why.** {step.why}")
         parts.append(_display(_statement_tex(step.statement, names)))
         parts += _printed_blocks([f for f in d.published if f.target == step.label],
-                                 by_label)
+                                 by_label, names)
     labels = {s.label for s in d.steps}
     orphans = [f for f in d.published if f.target not in labels]
     if orphans:
         parts.append("### Printed formulas without a derived step")
-        parts += _printed_blocks(orphans, by_label)
+        parts += _printed_blocks(orphans, by_label, names)
     parts += ["## Verdicts", _verdicts(d, records)]
     return "\n\n".join(parts) + "\n"
 
