@@ -13,6 +13,7 @@ Functions and argument order:
     service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (6)
     service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (6)
     safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (7)
+    elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB) -> [1]    eq Fig. 9
     elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c) -> [rad/s]    eq Fig. 9
     backlash_at_motor_shaft(delta, i_g) -> [rad]    eq Fig. 9
     rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [m/s]    eq (1)
@@ -23,7 +24,7 @@ Functions and argument order:
 
 import numpy as np
 
-__all__ = ['relative_gearbox_torque_hoisting', 'relative_gearbox_torque_lowering', 'peak_relative_gearbox_torque_hoisting', 'peak_relative_gearbox_torque_lowering', 'service_brake_factor_hoisting', 'service_brake_factor_lowering', 'safety_brake_factor', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'rigid_hook_speed_hoisting', 'rigid_stopping_time_hoisting', 'rigid_hook_speed_lowering', 'rigid_stopping_time_lowering']
+__all__ = ['relative_gearbox_torque_hoisting', 'relative_gearbox_torque_lowering', 'peak_relative_gearbox_torque_hoisting', 'peak_relative_gearbox_torque_lowering', 'service_brake_factor_hoisting', 'service_brake_factor_lowering', 'safety_brake_factor', 'elastic_gearbox_torque_no_backlash', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'rigid_hook_speed_hoisting', 'rigid_stopping_time_hoisting', 'rigid_hook_speed_lowering', 'rigid_stopping_time_lowering']
 
 
 def _checked(name, value, sign, what):
@@ -299,6 +300,85 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
     d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
     x0 = r**2
     return omega1*(J2*i_t**2 + m_h*x0 + m_p*x0)/(d_t*g*i_g*i_t*r*(m_h + m_r))
+
+
+def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB):
+    """Relative gearbox torque M_G/M_st of the elastic drive without backlash, lowering, motor torque lost at t = 0, safety brakes from t_SB; valid while the drum slides and the service brakes are off. Eq Fig. 9.
+
+    Parameters
+    ----------
+    t : array_like
+        time since the emergency stop [s], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    m_p : array_like
+        payload [kg], >= 0
+    m_r : array_like
+        rated payload (Table 1: 52 t) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    c : array_like
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0
+    M_SB : array_like
+        torque of the safety brakes on the drums [N*m], > 0
+    t_SB : array_like
+        delay of the safety brakes [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    t    = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    J1   = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2   = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h  = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    m_p  = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    m_r  = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
+    r    = _checked('r', r, 'positive', 'drum radius, m')
+    i_g  = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t  = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g    = _checked('g', g, 'positive', 'gravity, m/s^2')
+    c    = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
+    M_SB = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
+    t_SB = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    x0 = i_t**2
+    x1 = 1/(x0)
+    x2 = r**2
+    x3 = m_h*x2
+    x4 = x1*x3
+    x5 = m_p*x2
+    x6 = x1*x5
+    x7 = i_g**2
+    x8 = 1/(x7)
+    x9 = J1 + J2*x8 + x4*x8 + x6*x8
+    x10 = (1/2)*np.sqrt(c)/np.sqrt(J1)
+    x11 = i_g*x10*np.sqrt(x9)/np.sqrt(J2 + x4 + x6)
+    x12 = J1/x9
+    x13 = 2*x12
+    x14 = m_h + m_p
+    x15 = 1/(m_h + m_r)
+    x16 = J2*x0 + x3 + x5
+    x17 = g*r/i_t
+    k1 = x13 - 2
+    k2 = x14*x15
+    k3 = -t_SB
+    k4 = x10*np.sqrt(J1*x0*x7 + x16)/np.sqrt(x16)
+    k5 = -M_SB*x13
+    k7 = -2*x14*x17*(1 - x12)
+    k8 = m_h*x17 + m_p*x17
+    k9 = i_t*x15/(g*r)
+    return np.select([np.less(t, t_SB),True], [k2*(k1*np.sin(t*x11)**2 + 1),k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8)], default=np.nan)
 
 
 def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c):

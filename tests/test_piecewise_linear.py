@@ -160,3 +160,17 @@ def test_simulate_rejects_runaway_events():
     with pytest.raises(RuntimeError, match="events"):
         simulate(h, *h.start(50 * np.pi), 1.0,
                  [(0.0, "motor torque lost"), (0.1, "safety brake")], max_events=3)
+
+
+def test_generated_no_backlash_torque_is_the_backlash_to_zero_limit():
+    from crane_sym.generated import hoist_brakes as gen
+    h = table1_hoist(0.0, backlash_deg=0.0)
+    run = h.run(50 * np.pi, 0.25)
+    times = np.linspace(0.0, 0.25, 501)
+    closed = gen.elastic_gearbox_torque_no_backlash(
+        times, J1=20.0, J2=500.0, m_h=1e4, m_p=0.0, m_r=52e3, r=0.5, i_g=26.2, i_t=4.0,
+        g=9.81, c=4e4, M_SB=130e3, t_SB=0.1)
+    assert np.max(np.abs(closed - h.relative_torque(run, times))) < 1e-11
+    with_backlash = table1_hoist(0.0)
+    wb = with_backlash.relative_torque(with_backlash.run(50 * np.pi, 0.25), times)
+    assert np.max(np.abs(closed - wb)) > 1.0          # the backlash matters

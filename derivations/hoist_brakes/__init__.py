@@ -45,6 +45,7 @@ def build() -> Derivation:
     steps.drive(d)
     steps.rigid_drive(d)                 # (1)–(5)
     steps.coordinated_brakes(d)          # (6)–(7)
+    steps.elastic_no_backlash(d)         # Fig. 9 without backlash
     steps_numbers.numbers(d)             # Table 1, after (5), Figs 8, 11, 12
     elastic.fig9_steps(d)                # Fig. 9
     d.published.extend(PUBLISHED)

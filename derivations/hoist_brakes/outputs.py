@@ -8,6 +8,8 @@ import sympy as sp
 
 from crane_sym.derivation import Derivation, Output
 
+from . import model as _model
+
 from .model import (BF_SB, LF, MF, J, J1, J2, M_BB, M_L, M_M, M_SB, M_st, d_omega, d_t, g,
                     i_g, i_t, m_h, m_p, m_r, omega1, phi5, r, t, t_BB, t_SB, c, delta)
 
@@ -76,6 +78,12 @@ def outputs(d: Derivation) -> list[Output]:
                           f"Coordinated brake factor ({n}) over the payload m_p, stopping "
                           f"from omega1 in d_t ({mode}).", "1"))
     J_d = d.step("inertia beyond the cut").statement.rhs
+    torque = _physical(d, rhs("Fig. 9, no backlash").subs(_model.J_d, J_d))
+    out.append(Output("elastic_gearbox_torque_no_backlash", torque,
+                      (t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB), ("Fig. 9",),
+                      "Relative gearbox torque M_G/M_st of the elastic drive without backlash, "
+                      "lowering, motor torque lost at t = 0, safety brakes from t_SB; valid "
+                      "while the drum slides and the service brakes are off.", "1"))
     out.append(Output("elastic_natural_frequency", sp.sqrt(c * (1 / J1 + 1 / J_d)),
                       (J1, J2, m_h, m_p, r, i_g, i_t, c), ("Fig. 9",),
                       "Natural frequency of the two-mass drive in contact (motor shafts J1 "

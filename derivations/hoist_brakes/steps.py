@@ -120,3 +120,38 @@ def coordinated_brakes(d: Derivation) -> None:
               "brakes act.", "Coordinated (smart) brakes" if sign == 1 else "")
         d.add(f"(7), {mode}", sp.Eq(BF_SB, sb),
               "The equation of everything beyond the cut (J − J1 = (1 − MF)·J) gives M_SB.")
+
+
+def elastic_no_backlash(d: Derivation) -> sp.Expr:
+    """Fig. 9 without backlash: the two-mass drive in closed form while the drum
+    slides (the limit the piecewise solution with backlash must reach).
+
+    Returns the relative gearbox torque as a Piecewise in t (before/after t_SB).
+    """
+    from .model import J_d, c, t, t_SB
+    u = sp.Function("u")(t)
+    omega2 = c * (J1 + J_d) / (J1 * J_d)
+    brake = M_SB / i_g
+    ode = sp.Eq(u.diff(t, 2) + omega2 * u,
+                (M_L - brake * sp.Heaviside(t - t_SB)) / J_d)
+    d.add("Fig. 9, two masses", ode,
+          "Lowering is +; the motor shafts J1 feel only the gearbox torque c·u once the "
+          "motor torque is lost (t = 0), the drum side J_d the weight M_L, −c·u and the "
+          "safety brakes M_SB/i_g from t_SB; (drum − motor equation) gives one equation "
+          "in the twist u.", "The elasto-kinetic case of Fig. 9 with no backlash, "
+          "valid while the drum slides and the motor is unbraked.", "Fig. 9 without backlash")
+    W = sp.sqrt(omega2)
+    u0, ue = M_L / c, M_L / (J_d * omega2)
+    before = ue + (u0 - ue) * sp.cos(W * t)
+    after = before - brake / (J_d * omega2) * (1 - sp.cos(W * (t - t_SB)))
+    for piece, rhs in ((before, M_L / J_d), (after, (M_L - brake) / J_d)):
+        if sp.simplify(piece.diff(t, 2) + omega2 * piece - rhs) != 0:
+            raise AssertionError("the twist does not solve the Fig. 9 equation")
+    if sp.simplify(after.subs(t, t_SB) - before.subs(t, t_SB)) != 0 or sp.simplify(
+            (after.diff(t) - before.diff(t)).subs(t, t_SB)) != 0:
+        raise AssertionError("the twist is not C¹ at t_SB")
+    rel = sp.Piecewise((c * before / M_st, t < t_SB), (c * after / M_st, True))
+    d.add("Fig. 9, no backlash", sp.Eq(M_rel, rel),
+          "Steady lowering (u = M_L/c, equal speeds) at t = 0, each interval solved as a "
+          "constant-forcing oscillator, joined C¹ at t_SB; M_G = c·u over M_st.")
+    return rel
