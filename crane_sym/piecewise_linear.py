@@ -8,8 +8,10 @@ finding on those closed forms, never by a time-stepping integrator.
 Closed form of one phase
 ------------------------
 With z = (x, 1), z' = M z and M = [[A, b], [0, 0]], so z(t) = exp(M t) z(0).
-SymPy's exact Jordan decomposition M = P J P⁻¹ (entries of A and b taken as
-exact rationals) gives
+SymPy's exact Jordan decomposition M = P J P⁻¹ (each entry of A and b taken
+as the exact rational of its shortest decimal; P evaluated to 30 digits, then
+inverted in floating point, which is stable where a symbolic inverse of
+nested radicals is not) gives
 
 .. math::
 
@@ -43,7 +45,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Callable, Hashable, Protocol, Sequence
+from typing import Hashable, Protocol, Sequence
 
 import numpy as np
 import sympy as sp
@@ -150,7 +152,7 @@ def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
 
 
 def closed_form(A: Sequence, b: Sequence) -> ClosedForm:
-    """The closed form of x' = A x + b (entries taken as exact rationals; cached).
+    """The closed form of x' = A x + b (entries taken as exact decimals; cached).
 
     Parameters
     ----------

@@ -6,8 +6,7 @@ import time
 import numpy as np
 import pytest
 
-from crane_sym.derivations.hoist_brakes.elastic import (HOLD, OFF, FORWARD, TwoMassHoist,
-                                                        table1_hoist)
+from crane_sym.derivations.hoist_brakes.elastic import FORWARD, HOLD, OFF, table1_hoist
 from crane_sym.piecewise_linear import closed_form, first_crossing, simulate
 
 linalg = pytest.importorskip("scipy.linalg")
