@@ -23,7 +23,7 @@ EXPECTED = {
     "after (5), BF_SB = 1.7": CWC, "after (5), BF_SB = 3.3": "discrepancy",
     "after (5), 2.4": CWC, "after (5), 4.2": "confirmed", "after (5), 3.9": CWC,
     "after (5), 7.2": CWC, "typical 2.6": "confirmed", "in some cases 4.4": CWC,
-    "Fig. 9 peak 8.9": "discrepancy",
+    "Fig. 9 peak 8.9": "discrepancy", "conclusions 890 %": "discrepancy",
     **{f"Fig. {n}, {f}, {m} (text)": CWC for n in (11, 12) for f in ("BF_SB", "BF_BB")
        for m in ("0 t", "52 t")},
 }
