@@ -19,6 +19,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from crane_sym.derivation import Derivation
 from crane_sym.piecewise_linear import (Guard, PiecewiseResult, closed_form, first_crossing,
                                        simulate)
 
@@ -103,7 +104,8 @@ class TwoMassHoist:
                                  -1))
         return out
 
-    def switch(self, mode: tuple, event: str, t: float, x: np.ndarray):
+    def switch(self, mode: tuple, event: str, t: float,
+               x: np.ndarray) -> tuple[tuple, np.ndarray]:
         """Next mode and state after a guard or a scheduled event."""
         contact, motor, drum, driven = mode
         x = x.copy()
@@ -230,7 +232,7 @@ def fig9_peak(payload: float) -> tuple[float, float]:
     return h.peak(h.run(OMEGA1, 1.0, 0.0, T_SB, T_BB))
 
 
-def fig9_steps(d) -> None:
+def fig9_steps(d: Derivation) -> None:
     """The peak of Fig. 9 as steps: the hook alone (the text) and the rated load."""
     import sympy as sp
 
