@@ -25,10 +25,12 @@ Events without a skipped crossing
 ---------------------------------
 An event is an affine function g(x) = w·x + k of the state (a contact angle,
 a speed, a torque against a brake's limit). Along a phase g(t) = Σ_j a_j β_j(t)
-with the real terms β_j above, so |g'| on [t, t + H] is bounded by
-Σ |a_j| max|β_j'| (:meth:`ClosedForm.derivative_bound`). From t, g cannot
-reach 0 before t + |g(t)|/L: :func:`first_crossing` steps by that certified
-distance, and by ``h_min`` where it is smaller, checking the sign at each
+with the real terms β_j above, so |g'| and |g''| on [t, t + H] are bounded by
+Σ |a_j| max|β_j'| and Σ |a_j| max|β_j''| (:meth:`ClosedForm.derivative_bound`,
+:meth:`ClosedForm.second_derivative_bound`). From t, g cannot reach 0 before
+t + |g(t)|/L, nor before the root h* of |g(t)| − |g'(t)| h − M₂h²/2 (a
+Newton-like step, since g'(t) is exact): :func:`first_crossing` steps by the
+larger certified distance, and by ``h_min`` where it is smaller, checking the sign at each
 step; a sign change is refined by ``scipy.optimize.brentq``. No crossing is
 skipped except a pair of crossings closer together than ``h_min`` (a touch);
 the first crossing is found to ``xtol``.
@@ -105,6 +107,16 @@ class ClosedForm:
         bound = grow * (poly + (np.abs(s) + w) * t1 ** k)
         return float(np.sum(np.abs(amplitudes) * bound))
 
+    def second_derivative_bound(self, amplitudes: np.ndarray, t0: float, t1: float) -> float:
+        """An upper bound of |d²/dt² Σ a_j β_j| on [t0, t1] (0 ≤ t0 ≤ t1)."""
+        k, s, w = self.powers, self.sigmas, self.omegas
+        grow = np.exp(np.maximum(s * t0, s * t1))
+        rate = np.abs(s) + w
+        p2 = np.where(k > 1, k * (k - 1) * t1 ** np.maximum(k - 2, 0), 0.0)
+        p1 = np.where(k > 0, 2 * k * rate * t1 ** np.maximum(k - 1, 0), 0.0)
+        bound = grow * (p2 + p1 + rate ** 2 * t1 ** k)
+        return float(np.sum(np.abs(amplitudes) * bound))
+
 
 @lru_cache(maxsize=256)
 def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
@@ -151,17 +163,68 @@ def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
                       np.array(sine), np.array(coefs))
 
 
-def closed_form(A: Sequence, b: Sequence) -> ClosedForm:
-    """The closed form of x' = A x + b (entries taken as exact decimals; cached).
+def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedForm:
+    """The closed form of x' = A x + b (cached).
 
     Parameters
     ----------
     A : (n, n) array-like of numbers
     b : (n,) array-like of numbers
+    exact : bool, optional
+        True: SymPy's exact Jordan form (entries as exact decimals); cheap for
+        n ≤ 4 (two masses: quadratic eigenvalues), slow for larger systems with
+        arbitrary data. False: numeric eigenvectors of the nonzero eigenvalues
+        (they must be simple) and the exact nilpotent series on the rest
+        (rigid modes). Default: exact for n ≤ 4, numeric above.
     """
     A = np.asarray(A, dtype=float)
-    return _closed_form_cached(tuple(map(float, A.ravel())),
-                               tuple(map(float, np.ravel(b))))
+    key = (tuple(map(float, A.ravel())), tuple(map(float, np.ravel(b))))
+    if exact if exact is not None else len(key[1]) <= 4:
+        return _closed_form_cached(*key)
+    return _closed_form_numeric(*key)
+
+
+@lru_cache(maxsize=256)
+def _closed_form_numeric(a_key: tuple, b_key: tuple) -> ClosedForm:
+    """exp(M t) = Σ e^{λt} r_i l_iᵀ over the nonzero (simple) eigenvalues, plus
+    Σ_j (N t)^j / j! · Q on the generalized kernel (Q = I − Σ r_i l_iᵀ, N = M Q)."""
+    from scipy.linalg import eig
+
+    n = len(b_key)
+    M = np.zeros((n + 1, n + 1))
+    M[:n, :n] = np.reshape(a_key, (n, n))
+    M[:n, n] = b_key
+    lam, vl, vr = eig(M, left=True, right=True)
+    scale = max(np.abs(lam).max(), 1.0)
+    live = np.abs(lam) > 1e-6 * scale
+    values = lam[live]
+    if values.size and np.min(np.abs(values[:, None] - values[None, :])
+                              + np.eye(values.size) * scale) < 1e-6 * scale:
+        return _closed_form_cached(a_key, b_key)      # a repeated nonzero eigenvalue
+    projector = np.zeros((n + 1, n + 1), dtype=complex)
+    powers, sigmas, omegas, sine, coefs = [], [], [], [], []
+    for i in np.flatnonzero(live):
+        r, l = vr[:, i], vl[:, i].conj()
+        C = np.outer(r, l) / (l @ r)
+        projector += C
+        if lam[i].imag < 0:
+            continue
+        pair = 2.0 if lam[i].imag > 0 else 1.0
+        for is_sine, part in ((False, pair * C.real), (True, -pair * C.imag)):
+            if lam[i].imag == 0 and is_sine:
+                continue
+            powers.append(0), sigmas.append(lam[i].real), omegas.append(abs(lam[i].imag))
+            sine.append(is_sine), coefs.append(part)
+    Q = np.eye(n + 1) - projector.real
+    N = M @ Q
+    term = Q.copy()
+    for j in range(int(np.count_nonzero(~live))):
+        if j:
+            term = N @ term / j
+        powers.append(j), sigmas.append(0.0), omegas.append(0.0)
+        sine.append(False), coefs.append(term.copy())
+    return ClosedForm(n, np.array(powers, float), np.array(sigmas), np.array(omegas),
+                      np.array(sine), np.array(coefs))
 
 
 def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
@@ -185,6 +248,13 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
         wave = np.where(sine, np.sin(w * t), np.cos(w * t))
         return float(amps @ (t ** p * np.exp(s * t) * wave) + k)
 
+    def slope(t: float) -> float:
+        cos, sin = np.cos(w * t), np.sin(w * t)
+        wave, dwave = np.where(sine, sin, cos), np.where(sine, w * cos, -w * sin)
+        tp = t ** p
+        dtp = np.where(p > 0, p * t ** np.maximum(p - 1, 0), 0.0)
+        return float(amps @ (np.exp(s * t) * ((dtp + s * tp) * wave + tp * dwave)))
+
     window = window or _window(form, max(t_end, h_min))
     t, gt = 0.0, g(0.0)
     size = float(np.sum(np.abs(amps)) + abs(k))
@@ -198,11 +268,15 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
     while t < t_end:
         w_end = min(t + window, t_end)
         L = form.derivative_bound(amps, t, w_end)
+        M2 = form.second_derivative_bound(amps, t, w_end)
         while t < w_end:
             if np.sign(gt) != side:
                 step = 0.0
-            else:                                      # g constant on the window: skip it
-                step = abs(gt) / L if L > 0 else w_end - t
+            elif L <= 0:                               # g constant on the window: skip it
+                step = w_end - t
+            else:   # |g(t+h)| >= |g| - |g'(t)| h - M2 h²/2 > 0 below the larger root
+                d1 = abs(slope(t))
+                step = max(abs(gt) / L, 2 * abs(gt) / (d1 + np.sqrt(d1 * d1 + 2 * M2 * abs(gt))))
             nxt = min(t + max(step, h_min), w_end)
             gn = g(nxt)
             if gn == 0.0 or np.sign(gn) != side:
