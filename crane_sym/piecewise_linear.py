@@ -19,7 +19,10 @@ nested radicals is not) gives
 
 and a pair λ = σ ± iω folds into real terms t^j e^{σt} cos ωt and t^j e^{σt} sin ωt
 (:class:`ClosedForm`). Rigid-body modes (λ = 0, Jordan blocks) give the
-polynomial part. Evaluation is NumPy.
+polynomial part. Above n = 4 (where exact eigenvalues of arbitrary data become
+costly radicals) the same terms come from numeric eigenvectors of the nonzero,
+simple eigenvalues and the exact nilpotent series on the generalized kernel
+(:func:`closed_form`, ``exact``). Evaluation is NumPy.
 
 Events without a skipped crossing
 ---------------------------------
