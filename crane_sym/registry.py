@@ -13,13 +13,15 @@ from .derivation import Derivation, SceneLoad
 #: id -> module under ``crane_sym.derivations``, in paper order.
 DERIVATIONS: dict[str, str] = {
     "travel_braking": "crane_sym.derivations.travel_braking",
+    "hoist_brakes": "crane_sym.derivations.hoist_brakes",
     "hoist_startup": "crane_sym.derivations.hoist_startup",
     "portal_travel": "crane_sym.derivations.portal_travel",
     "drum_drive": "crane_sym.derivations.drum_drive",
 }
 #: Paper file-number prefixes accepted as ids on the command line.
-ALIASES: dict[str, str] = {"000": "travel_braking", "002": "hoist_startup",
-                           "003": "portal_travel", "004": "drum_drive"}
+ALIASES: dict[str, str] = {"000": "travel_braking", "001": "hoist_brakes",
+                           "002": "hoist_startup", "003": "portal_travel",
+                           "004": "drum_drive"}
 
 
 def ids() -> list[str]:

@@ -128,19 +128,23 @@ _SHORT = 300
 
 def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord],
                     latex_names: dict | None = None) -> list[str]:
-    """The paper's print of each formula, verbatim, with its verdict."""
+    """The paper's print of each formula, verbatim, with its verdict; a print
+    rebuilt from OCR damage shows the OCR as text, then the reconstruction and why."""
     blocks = []
     latex_names = latex_names or {}
     for f in formulas:
         label = f.label if f.label.startswith("(") else f"({f.label})"
-        blocks.append(f"**As printed in the paper** {label}:")
-        if f.verbatim:  # OCR'd text of the print, not LaTeX
-            blocks.append(_fenced(f.latex))
+        if f.verbatim or (f.reconstructed and f.printed is not None):
+            # OCR'd text of the print, then what it is read as, and why
+            blocks.append(f"**As printed in the paper** {label}"
+                          + (", the OCR verbatim:" if f.reconstructed else ":"))
+            blocks.append(_fenced(f.latex.strip()))
             if f.printed is not None:
-                blocks.append("Transcribed" + (" (reconstructed from the OCR)"
-                                               if f.reconstructed else "") + ":")
+                blocks.append(f"**Read as** (a reconstruction; {f.provenance}):"
+                              if f.reconstructed else "Transcribed:")
                 blocks.append(_display(_statement_tex(f.printed, latex_names)))
         else:
+            blocks.append(f"**As printed in the paper** {label}:")
             blocks.append(_display(f.latex))
         if f.label in by_label:
             blocks.append(_verdict_line(by_label[f.label]))

@@ -3,6 +3,7 @@
 
 Modules:
     travel_braking
+    hoist_brakes
     hoist_startup
     portal_travel
     drum_drive
@@ -13,6 +14,7 @@ Modules:
     scene_hoist_drive_laws
     scene_hoist_fig3
     scene_hoist_fig5
+    scene_hoist_table1
     scene_hoist_user_drive_law
     scene_overhead_crane_50t
     scene_portal_support_loads

@@ -1,0 +1,54 @@
+"""Hoists with safety brakes: gearbox torque in an emergency stop.
+
+Source: ``001_544065b666a6bc39.txt`` — S. Vöth, M.A. Tyulenev, "Hoists with
+safety brakes" (Kuzbass State Technical University, 2016; in Russian).
+
+The paper cuts a hoist drive at the gearbox input and gives the relative
+gearbox torque of the rigid drive (2)–(5) in the inertia factor MF, the load
+factor LF, the safety-brake factor BF_SB and the dynamic factor φ5 of EN
+13001-2, an elasto-kinetic peak with backlash (Fig. 9), and coordinated brake
+factors (6)–(7) (Figs 11–12). Its formulas are badly damaged by OCR: this
+package rebuilds them from the physics of Table 1's hoist, keeps the OCR
+beside each labelled reconstruction, and checks every printed number.
+
+Files:
+
+- ``model.py``: identity, symbols, Table 1, model text.
+- ``steps.py``: kinematics, reduced inertia, static torque, (1)–(7).
+- ``steps_numbers.py``: the printed numbers from Table 1, one step per reading.
+- ``elastic.py``: the elasto-kinetic emergency stop of Fig. 9 (piecewise linear).
+- ``published.py``: the printed formulas and numbers (``PUBLISHED``).
+- ``outputs.py``: the Outputs for code generation.
+- ``hard_cases.py``: the seeded hard cases for ``crane-sym accuracy``.
+- ``report.py``: ``scene_report`` for ``crane-sym run``.
+
+The package does nothing on import; ``build()`` returns the ``Derivation``.
+"""
+from __future__ import annotations
+
+from crane_sym.derivation import Derivation
+
+from . import elastic, steps, steps_numbers
+from .hard_cases import hard_cases
+from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .outputs import outputs
+from .published import PUBLISHED
+from .report import scene_report
+
+__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases",
+           "scene_report"]
+
+
+def build() -> Derivation:
+    """Rebuild (1)–(7) and the printed numbers from the physics of Table 1's hoist."""
+    d = Derivation(id=ID, paper=PAPER, title=TITLE, citation=CITATION,
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
+    steps.drive(d)
+    steps.rigid_drive(d)                 # (1)–(5)
+    steps.coordinated_brakes(d)          # (6)–(7)
+    steps.elastic_no_backlash(d)         # Fig. 9 without backlash
+    steps_numbers.numbers(d)             # Table 1, after (5), Figs 8, 11, 12
+    elastic.fig9_steps(d)                # Fig. 9
+    d.published.extend(PUBLISHED)
+    d.outputs.extend(outputs(d))
+    return d

@@ -1,0 +1,246 @@
+"""The elasto-kinetic emergency stop of Fig. 9: two inertias, gearbox stiffness,
+coupling backlash, brakes as delayed steps that stick, solved phase by phase in
+closed form by ``crane_sym.piecewise_linear``.
+
+Everything is reduced to the motor shaft; the direction of lowering is +.
+
+    motor shafts J1 ----[ c, backlash s ]---- drum side J_d (drums, hook, payload)
+      M_M (lost at t = 0)                       M_L (weight, lowers)
+      M_BB after t_BB (sticks at ω = 0)         M_SB/i_g after t_SB (sticks at ω = 0)
+
+State x = (θ_m, ω_m, θ_d, ω_d); twist u = θ_d − θ_m. Contact: u ≥ 0 the
+holding flank (the drum drives the motor, torque c·u), −s < u < 0 the gap (no
+torque), u ≤ −s the other flank (torque c·(u + s)). The relative gearbox torque
+is the flank torque over the rated static torque M_st (the paper's M_G,rel).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from crane_sym.derivation import Derivation
+from crane_sym.piecewise_linear import (Guard, PiecewiseResult, closed_form, first_crossing,
+                                       simulate)
+
+#: Brake states of one side: no brake yet, sliding forward/backward, stuck.
+OFF, FORWARD, BACKWARD, STUCK = "off", "+", "-", "0"
+#: Contact states: holding flank, gap, other flank.
+HOLD, GAP, OTHER = 1, 0, -1
+
+
+@dataclass(frozen=True)
+class TwoMassHoist:
+    """Data of the two-mass hoist, SI, reduced to the motor shaft.
+
+    Attributes
+    ----------
+    J1, J_d : motor-side and drum-side inertia [kg m²]
+    c : gearbox stiffness [N m/rad]; s : backlash [rad] (≥ 0)
+    M_L : static load torque; M_st : rated static torque [N m]
+    M_SB, M_BB : safety- and service-brake torques at the motor shaft [N m]
+    M_M : motor torque before the stop (holding: M_L) [N m]
+    """
+
+    J1: float
+    J_d: float
+    c: float
+    s: float
+    M_L: float
+    M_st: float
+    M_SB: float
+    M_BB: float
+    M_M: float
+
+    def __post_init__(self) -> None:
+        for name in ("J1", "J_d", "c", "M_st"):
+            if not getattr(self, name) > 0:
+                raise ValueError(f"{name} must be > 0, got {getattr(self, name)!r}")
+        for name in ("s", "M_L", "M_SB", "M_BB"):
+            if not getattr(self, name) >= 0:
+                raise ValueError(f"{name} must be >= 0, got {getattr(self, name)!r}")
+
+    # --- the hybrid system ------------------------------------------------------
+    def _torque(self, contact: int) -> tuple[np.ndarray, float]:
+        """Flank torque as weights·x + constant."""
+        if contact == GAP:
+            return np.zeros(4), 0.0
+        off = 0.0 if contact == HOLD else self.s
+        return self.c * np.array([-1.0, 0.0, 1.0, 0.0]), self.c * off
+
+    def matrices(self, mode: tuple) -> tuple[np.ndarray, np.ndarray]:
+        """(A, b) of a mode (contact, motor brake, drum brake, motor torque on)."""
+        contact, motor, drum, driven = mode
+        w, k = self._torque(contact)
+        A, b = np.zeros((4, 4)), np.zeros(4)
+        brake = {OFF: 0.0, FORWARD: -1.0, BACKWARD: 1.0, STUCK: 0.0}
+        if motor != STUCK:
+            A[0, 1] = 1.0
+            A[1] = w / self.J1
+            b[1] = (k - (self.M_M if driven else 0.0) + brake[motor] * self.M_BB) / self.J1
+        if drum != STUCK:
+            A[2, 3] = 1.0
+            A[3] = -w / self.J_d
+            b[3] = (self.M_L - k + brake[drum] * self.M_SB) / self.J_d
+        return A, b
+
+    def guards(self, mode: tuple) -> list[Guard]:
+        """Contact changes, a braked side coming to rest, a stuck side breaking free."""
+        contact, motor, drum, driven = mode
+        u = (-1.0, 0.0, 1.0, 0.0)
+        out = {HOLD: [Guard("open", u, 0.0, -1)], OTHER: [Guard("open", u, self.s, 1)],
+               GAP: [Guard("close hold", u, 0.0, 1),
+                     Guard("close other", u, self.s, -1)]}[contact]
+        w, k = self._torque(contact)
+        for side, state, index, sign, limit, load in (
+                ("motor", motor, 1, 1.0, self.M_BB, -(self.M_M if driven else 0.0)),
+                ("drum", drum, 3, -1.0, self.M_SB, self.M_L)):
+            if state in (FORWARD, BACKWARD):
+                out.append(Guard(f"{side} rests", tuple(np.eye(4)[index]), 0.0,
+                                 -1 if state == FORWARD else 1))
+            elif state == STUCK:     # net torque sign*T + load reaches ±limit
+                out.append(Guard(f"{side} slips +", tuple(sign * w), sign * k + load - limit, 1))
+                out.append(Guard(f"{side} slips -", tuple(sign * w), sign * k + load + limit,
+                                 -1))
+        return out
+
+    def switch(self, mode: tuple, event: str, t: float,
+               x: np.ndarray) -> tuple[tuple, np.ndarray]:
+        """Next mode and state after a guard or a scheduled event."""
+        contact, motor, drum, driven = mode
+        x = x.copy()
+        if event == "open":
+            contact = GAP
+        elif event == "close hold":
+            contact = HOLD
+        elif event == "close other":
+            contact = OTHER
+        elif event == "motor torque lost":
+            driven = False
+        elif event == "safety brake":
+            drum = self._engage(x[3])
+        elif event == "service brake":
+            motor = self._engage(x[1])
+        elif event.endswith("rests") or " slips " in event:
+            side = "motor" if event.startswith("motor") else "drum"
+            index = 1 if side == "motor" else 3
+            x[index] = 0.0
+            new = self._rest(side, (contact, motor, drum, driven), x, event)
+            motor, drum = (new, drum) if side == "motor" else (motor, new)
+        return (contact, motor, drum, driven), x
+
+    @staticmethod
+    def _engage(speed: float) -> str:
+        return FORWARD if speed > 0 else BACKWARD if speed < 0 else STUCK
+
+    def _rest(self, side: str, mode: tuple, x: np.ndarray, event: str) -> str:
+        """A braked side at rest: stuck while the net torque is within the brake."""
+        if event.endswith("slips +"):
+            return FORWARD
+        if event.endswith("slips -"):
+            return BACKWARD
+        w, k = self._torque(mode[0])
+        T = float(w @ x + k)
+        net = T - (self.M_M if mode[3] else 0.0) if side == "motor" else self.M_L - T
+        limit = self.M_BB if side == "motor" else self.M_SB
+        return STUCK if abs(net) <= limit else FORWARD if net > 0 else BACKWARD
+
+    # --- runs -------------------------------------------------------------------
+    def start(self, omega0: float) -> tuple[tuple, np.ndarray]:
+        """Steady lowering at ω0 with the motor holding: twist M_L/c on the holding
+        flank (the gap, if any, is taken up)."""
+        if not self.M_M == self.M_L:
+            raise ValueError("steady lowering needs M_M = M_L")
+        return (HOLD, OFF, OFF, True), np.array([0.0, omega0, self.M_L / self.c, omega0])
+
+    def run(self, omega0: float, t_end: float, t_M: float = 0.0, t_SB: float = 0.1,
+            t_BB: float = 0.4) -> PiecewiseResult:
+        """The emergency stop: motor torque lost at t_M, brakes after their delays."""
+        mode, x0 = self.start(omega0)
+        schedule = [(t_M, "motor torque lost"), (t_SB, "safety brake"),
+                    (t_BB, "service brake")]
+        return simulate(self, mode, x0, t_end, schedule)
+
+    def relative_torque(self, result: PiecewiseResult, times: np.ndarray) -> np.ndarray:
+        """The gearbox torque over M_st at ``times``, from the phases' closed forms."""
+        out = np.empty(np.shape(times))
+        starts = np.array([s.t0 for s in result.segments])
+        which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
+        for i, seg in enumerate(result.segments):
+            mask = which == i
+            if np.any(mask):
+                w, k = self._torque(seg.mode[0])
+                out[mask] = (seg.state(np.asarray(times)[mask]) @ w + k) / self.M_st
+        return out
+
+    def peak(self, result: PiecewiseResult) -> tuple[float, float]:
+        """(time, value) of the largest |relative torque|: per phase at the closed
+        form's extrema (zeros of the torque's rate, found like any event)."""
+        best = (0.0, 0.0)
+        for seg in result.segments:
+            w, k = self._torque(seg.mode[0])
+            if not w.any():
+                continue
+            A, b = self.matrices(seg.mode)
+            candidates = [seg.t0, seg.t1]
+            t = seg.t0
+            rate_w = w @ A                       # d/dt (w·x) = w·(A x + b)
+            form = closed_form(A, b)
+            start = seg.x0
+            while t < seg.t1:
+                hit = first_crossing(form, start, rate_w, float(w @ b), seg.t1 - t)
+                if hit is not None and hit < 1e-12:      # at an extremum already
+                    start = form.state(t + 1e-9 - seg.t0, seg.x0)
+                    t += 1e-9
+                    continue
+                if hit is None:
+                    break
+                t += hit
+                candidates.append(t)
+                start = form.state(t - seg.t0, seg.x0)
+                if hit < 1e-12:
+                    break
+            vals = self.relative_torque(result, np.array(candidates))
+            i = int(np.argmax(np.abs(vals)))
+            if abs(vals[i]) > abs(best[1]):
+                best = (candidates[i], float(vals[i]))
+        return best
+
+
+def table1_hoist(payload: float, g: float = 9.81, backlash_deg: float | None = None,
+                 stiffness: float | None = None) -> TwoMassHoist:
+    """The two-mass hoist of Table 1 (J1, J2, M_SB, M_BB read as values of the whole
+    drive, see the model text), lowering ``payload`` kg on the hook."""
+    from .model import TABLE1
+    T = {k: float(v) for k, v in TABLE1.items()}
+    gear = T["r"] / (T["i_g"] * T["i_t"])
+    M_L = (T["m_h"] + payload) * g * gear
+    s = np.radians(T["backlash_deg"] if backlash_deg is None else backlash_deg) * T["i_g"]
+    return TwoMassHoist(T["J1"], T["J2"] / T["i_g"] ** 2 + (T["m_h"] + payload) * gear ** 2,
+                        T["c"] if stiffness is None else stiffness, s, M_L,
+                        (T["m_h"] + T["m_r"]) * g * gear, T["M_SB"] / T["i_g"], T["M_BB"], M_L)
+
+
+#: Table 1's motor speed [rad/s] and brake delays [s].
+OMEGA1, T_SB, T_BB = 1500 * 2 * np.pi / 60, 0.1, 0.4
+
+
+def fig9_peak(payload: float) -> tuple[float, float]:
+    """(time, relative torque) of the largest gearbox torque, Table 1's hoist
+    lowering ``payload``: motor torque lost at t = 0, brakes after Table 1's delays."""
+    h = table1_hoist(payload)
+    return h.peak(h.run(OMEGA1, 1.0, 0.0, T_SB, T_BB))
+
+
+def fig9_steps(d: Derivation) -> None:
+    """The peak of Fig. 9 as steps: the hook alone (the text) and the rated load."""
+    import sympy as sp
+
+    from .model import N
+    for name, payload in (("hook only", 0.0), ("rated load", 52e3)):
+        when, value = fig9_peak(payload)
+        d.add(f"Fig. 9 peak, {name}", sp.Eq(N, sp.Float(abs(value), 15)),
+              f"|M_G/M_st| at its largest (t = {when:.4f} s), the two-mass hoist of Table 1 "
+              f"lowering the {name}, phases in closed form (crane_sym.piecewise_linear).",
+              "The elasto-kinetic result the paper prints as 8.9 (Fig. 9, conclusions: "
+              "890 %).", "Fig. 9" if payload == 0 else "")

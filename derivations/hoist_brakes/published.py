@@ -1,0 +1,169 @@
+"""The published formulas and numbers of paper 001, as printed.
+
+The OCR of (1)–(7) is badly damaged: each record keeps the OCR text verbatim
+as its ``latex`` and transcribes the formula the surrounding text defines
+(``reconstructed=True``, the note says how each damaged token was read).
+Every printed number is its own record, checked against each reading of
+Table 1 (``steps_numbers``); the literal reading counts J1, J2 and M_SB of
+Table 1 once per motor and per drum.
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+from decimal import Decimal
+
+import sympy as sp
+
+from crane_sym.published import (DEFINITION, FITTED_VALUE, INTERNAL, RECONSTRUCTED,
+                                 SYMBOL_FOR_ANOTHER, Cause, Convention, PublishedFormula,
+                                 printed)
+
+from .model import (BF_BB, BF_SB, LF, MF, PAPER, J, M_BB, M_L, M_M, M_SB, M_rel, M_rel_max,
+                    M_st, N, alpha, d_omega, d_t, i_g, phi5)
+
+TOTALS = Cause("001-trains-counted-once", "Table 1 gives J1, J2 and M_SB once for a hoist "
+               "with two motors and two drums; the printed numbers follow only when they "
+               "are read as values of the whole drive, not of each train")
+BF33 = Cause("001-bf-3.3", "the second brake factor BF_SB = 3.3 after (5) follows from no "
+             "reading of Table 1 (130 kN·m on each drum gives 3.42); the text gives it as "
+             "an input without data")
+CASE44 = Cause("001-4.4-case", "the 4.4 'in some cases' is not (4) at the text's "
+               "BF_SB = 3.3 (4.13); it is (5) with Table 1's 130 kN·m counted on each drum "
+               "(BF_SB = 3.42)")
+BRAKING_TIME = Cause("001-unstated-braking-time", "(6)–(7) need the braking time Δt, which "
+                     "the paper never states; stopping from n1 in Δt = 1 s reproduces every "
+                     "percentage of Figs 11–12")
+FIG9 = Cause("001-fig9-model", "Fig. 9's elastic model is stated only through Table 1; the "
+             "reconstruction (stiffness at the motor shaft, 3° backlash at the drum, brakes as "
+             "steps that hold, motor torque lost at t = 0, lowering the hook alone) peaks at "
+             "9.13, 2.6 % above the printed 8.9; the rated load gives 5.80")
+PHI5_NOTE = ("how φ5 enters: the paper applies φ5 of EN 13001-2 without writing how; the "
+             "standard multiplies the change of the load (the jump from LF) by φ5")
+OCR2 = r"^g rei шах = ф5 {MF (LF ± BFSB ) - ZJ7) + LF, (2)"
+OCR6 = r"BFm= + ... Мя А t / Kes Асо / м: А t (6)"
+OCR7 = r"BFSB=+(l-MF) ... Kes Асо / м: А t (7)"
+PER_TRAIN = ("J1, J2 and M_SB of Table 1 are the values of the whole drive (both motors, "
+             "both drums), not of each train")
+
+
+def _printed(label: str, latex: str, relation: sp.Eq | None, note: str = "",
+             **kwargs) -> PublishedFormula:
+    return printed(PAPER, label, latex, relation, note, **kwargs)
+
+
+def _number(label: str, text: str, target: str, note: str, scale: int = 1,
+            symbol: sp.Symbol = N, **kwargs) -> PublishedFormula:
+    """A printed number (decimal comma) against step ``target``, within half a unit
+    of its last digit; ``scale`` converts the printed unit (percent: 1)."""
+    value = Decimal(text.replace(",", "."))
+    half = float(Decimal(5).scaleb(value.as_tuple().exponent - 1) / abs(value))
+    exact = sp.Rational(*value.as_integer_ratio()) / scale
+    return _printed(label, text, sp.Eq(symbol, exact), note, compare_to=target,
+                    tolerance=half, **kwargs)
+
+
+def _totals(label: str, text: str, literal: str, totals: str, note: str) -> PublishedFormula:
+    f = _number(label, text, literal, note, basis=INTERNAL,
+                basis_note="a printed number against Table 1's data", cause=TOTALS)
+    return replace(f, conventions=(Convention(PER_TRAIN, f.printed, SYMBOL_FOR_ANOTHER,
+                                              compare_to=totals),))
+
+
+def _percent(fig: int, factor: str, end: str, text: str, mode: str) -> PublishedFormula:
+    label = f"Fig. {fig}, {factor}, {end}"
+    f = _number(label + " (text)", text, label,
+                f"the text under Fig. {fig} ({mode}), payload {end}, in percent",
+                basis=INTERNAL, basis_note="a printed number against (6)–(7) with Table "
+                "1's data", cause=BRAKING_TIME)
+    return replace(f, latex=text + "%", conventions=(Convention(
+        "the unstated braking time is Δt = 1 s", f.printed, FITTED_VALUE,
+        compare_to=label + ", Δt = 1 s"),))
+
+
+_M_sum = M_M - M_BB - M_SB / i_g - M_L
+_grad = J * d_omega / (M_st * d_t)
+
+PUBLISHED = [
+    _printed("(1)", r"IX, а'=ТеТ\" L^i red m", sp.Eq(alpha, _M_sum / J),
+             "unnumbered; OCR of α1 = ΣM_i / J_red,m; the text lists the moments (motor, "
+             "service brake, safety brake, load) and the inertias (J1, J2, m_h, m_p)",
+             compare_to="(1), hoisting", reconstructed=True, basis=DEFINITION,
+             basis_note="Newton's law at the motor shaft; the print gives no terms, the "
+             "transcription takes the model's (hoisting)"),
+    _printed("(2), hoisting", OCR2, sp.Eq(M_rel_max, phi5 * (MF * (LF + BF_SB) - LF) + LF),
+             "the + of ±; 'ZJ7' read as LF (the bracket closes MF(LF ± BF_SB) − LF), '{' "
+             "as '('", reconstructed=True, basis=RECONSTRUCTED, basis_note=PHI5_NOTE),
+    _printed("(2), lowering", OCR2, sp.Eq(M_rel_max, phi5 * (MF * (LF - BF_SB) - LF) + LF),
+             "the − of ±, as above", reconstructed=True, basis=RECONSTRUCTED,
+             basis_note=PHI5_NOTE),
+    _printed("(3)", r"Маге, тах = ФАмр(ВР!Ш +1)-1]+1 (3)",
+             sp.Eq(M_rel_max, phi5 * (MF * (BF_SB + 1) - 1) + 1),
+             "'ФАмр(' read as φ5[MF(, 'ВР!Ш' as BF_SB: (2), hoisting, at LF = 1",
+             reconstructed=True, basis=RECONSTRUCTED, basis_note=PHI5_NOTE),
+    _printed("(4)", r"Моы=Ш(ВРя +1) (4)", sp.Eq(M_rel, MF * (BF_SB + 1)),
+             "'Ш' read as MF, 'ВРя' as BF_SB; the text calls it the 'static' torque at the "
+             "gearbox input, i.e. without φ5", reconstructed=True),
+    _printed("(5)", r"Мсге,=ВРзв+ 1 (5)", sp.Eq(M_rel, BF_SB + 1),
+             "'ВРзв' read as BF_SB; (4) with MF = 1 as the text says", reconstructed=True),
+    _printed("(6), hoisting", OCR6, sp.Eq(BF_BB, -LF + MF * _grad),
+             "only 'BF_BB = +' and the pieces M_st*, Δt, J_ges*, Δω of a fraction survive; "
+             "the terms are the ones the text defines below (LF, MF, J_ges*, M_st*, Δω, "
+             "Δt), the sign the text's 'hoisting (−)'", reconstructed=True),
+    _printed("(6), lowering", OCR6, sp.Eq(BF_BB, LF + MF * _grad),
+             "as above, with the text's 'lowering (+)'", reconstructed=True),
+    _printed("(7), hoisting", OCR7, sp.Eq(BF_SB, (1 - MF) * _grad),
+             "'l-MF' read as 1 − MF; the fraction J_ges*·Δω/(M_st*·Δt) as in (6)",
+             reconstructed=True),
+    _printed("(7), lowering", OCR7, sp.Eq(BF_SB, (1 - MF) * _grad),
+             "as above: the print's + holds for both directions", reconstructed=True),
+    _number("Table 1, v = 45 m/min", "45", "Table 1, hoist speed",
+            "Table 1's hoist speed (m/min) against n1, r, i_g, i_t",
+            basis=INTERNAL, basis_note="Table 1 against itself (kinematics)"),
+    _totals("Fig. 8 legend, MF = 0.90", "0,90", "MF rated load, per train",
+            "MF rated load, totals", "the lower end of Fig. 8's 'MF = 0,90...0,95'"),
+    _totals("Fig. 8 legend, MF = 0.95", "0,95", "MF hook only, per train",
+            "MF hook only, totals", "the upper end of Fig. 8's 'MF = 0,90...0,95'"),
+    _totals("after (5), BF_SB = 1.7", "1,7", "BF_SB of Table 1, per train",
+            "BF_SB of Table 1, totals", "the text's first brake factor against Table 1"),
+    _number("after (5), BF_SB = 3.3", "3,3", "BF_SB of Table 1, per train",
+            "the text's second brake factor against Table 1", basis=INTERNAL,
+            basis_note="a printed number against Table 1's data", cause=BF33),
+    _totals("after (5), 2.4", "2,4", "after (5), BF_SB = 17/10, lower, per train",
+            "after (5), BF_SB = 17/10, lower, totals", "'2,4 ... 4,2' for BF_SB = 1.7: (3) "
+            "over φ5 = 1…2 (EN 13001-2) and Table 1's MF range"),
+    _number("after (5), 4.2", "4,2", "after (5), BF_SB = 17/10, upper, per train",
+            "upper end of '2,4 ... 4,2'", basis=INTERNAL,
+            basis_note="a printed number against Table 1's data"),
+    _totals("after (5), 3.9", "3,9", "after (5), BF_SB = 33/10, lower, per train",
+            "after (5), BF_SB = 33/10, lower, totals", "'3,9 ... 7,2' for BF_SB = 3.3"),
+    _totals("after (5), 7.2", "7,2", "after (5), BF_SB = 33/10, upper, per train",
+            "after (5), BF_SB = 33/10, upper, totals", "upper end of '3,9 ... 7,2'"),
+    _number("typical 2.6", "2,6", "rigid, (4), BF_SB = 17/10, per train",
+            "'typical for all hoists': the rigid body (4) without φ5", basis=INTERNAL,
+            basis_note="a printed number against (4) with Table 1's MF"),
+]
+_f44 = _number("in some cases 4.4", "4,4", "rigid, (4), BF_SB = 33/10, per train",
+               "'may reach 4,4' with the rigid body: (4) at the text's larger BF_SB",
+               basis=INTERNAL, basis_note="a printed number against (4)/(5) with Table 1's "
+               "data", cause=CASE44)
+PUBLISHED.append(replace(_f44, conventions=(Convention(
+    "the case is (5) with 130 kN·m on each drum (BF_SB = 3.42, not stated)", _f44.printed,
+    FITTED_VALUE, compare_to="(5) at Table 1, per drum"),)))
+PUBLISHED.append(_number(
+    "Fig. 9 peak 8.9", "8,9", "Fig. 9 peak, hook only", "the text: 'M_rel,max = 8,9 (Fig. 9)' "
+    "while lowering the hook ('спуск грузозахватного механизма'), and '890 %' in the "
+    "conclusions; compared as a magnitude (Fig. 9 plots it negative)", basis=RECONSTRUCTED,
+    basis_note="the two-mass hoist with backlash of elastic.py: where c and the backlash act, "
+    "the brake law and the motor's loss of torque are not stated", cause=FIG9))
+PUBLISHED.append(replace(_number(
+    "conclusions 890 %", "890", "Fig. 9 peak, hook only", "the conclusions: "
+    "'M_rel,max = 890 %', the peak of Fig. 9 in percent", scale=100, basis=RECONSTRUCTED,
+    basis_note=PUBLISHED[-1].basis_note, cause=FIG9), latex="890 %"))
+PUBLISHED += [_percent(11, "BF_SB", "0 t", "5", "hoisting"),
+              _percent(11, "BF_SB", "52 t", "12", "hoisting"),
+              _percent(11, "BF_BB", "0 t", "92", "hoisting"),
+              _percent(11, "BF_BB", "52 t", "8", "hoisting"),
+              _percent(12, "BF_SB", "0 t", "5", "lowering"),
+              _percent(12, "BF_SB", "52 t", "12", "lowering"),
+              _percent(12, "BF_BB", "0 t", "124", "lowering"),
+              _percent(12, "BF_BB", "52 t", "208", "lowering")]

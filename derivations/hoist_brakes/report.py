@@ -1,0 +1,121 @@
+"""What ``crane-sym run`` prints and plots for a scene of paper 001: the paper's
+Figs 5, 8, 9, 11 and 12 for the scene's hoist.
+
+Curves of the rigid drive come from the scene's own generated module, the
+factor sweeps from the general module ``crane_sym.generated.hoist_brakes``,
+Fig. 9 from the piecewise closed forms of ``elastic.py``; never from SymPy.
+"""
+from __future__ import annotations
+
+
+def scene_report(scene, module):
+    """Numbers and figures of a scene (see ``crane_sym.scenes``) for this model.
+
+    Parameters
+    ----------
+    scene : crane_sym.scenes.Scene
+        SI parameters of the hoist (Table 1's names), options ``duration`` [s],
+        ``points`` and ``payload_limit`` (``"rated"``: m_p above m_r is refused).
+    module : module
+        The scene's generated module (``scene_<name>.py``).
+
+    Returns
+    -------
+    crane_sym.scenes.SceneReport
+        ``values`` (SI): ``t_stop_hoisting``, ``t_stop_lowering``, ``p``,
+        ``backlash_motor``, ``peak_fig9``, ``t_peak_fig9``, ``peak_fig9_payload``;
+        panels in the groups "Fig. 5", "Fig. 8", "Fig. 9", "Fig. 11", "Fig. 12" (one PNG each).
+    """
+    import numpy as np
+
+    from crane_sym.generated import hoist_brakes as gen
+    from crane_sym.scene_run import time_function
+    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+
+    from .elastic import TwoMassHoist
+
+    q = scene.parameters
+    if scene.options.get("payload_limit", "rated") == "rated" and q["m_p"] > q["m_r"]:
+        raise SceneError(f"scene {scene.name!r}: parameter 'm_p' (payload) = {q['m_p']:g} kg "
+                         f"is above the rated payload m_r = {q['m_r']:g} kg "
+                         "(options: payload_limit = \"rated\")")
+    times = np.linspace(0.0, scene.options["duration"], scene.options["points"])
+    hoist = {k: q[k] for k in ("J1", "J2", "m_h", "r", "i_g", "i_t", "g", "omega1",
+                               "M_SB", "M_BB", "t_SB", "t_BB")}
+    kmh = 60.0  # m/s -> m/min
+
+    # Fig. 5: rigid drive, hook speed, hoisting (+) and lowering (-)
+    fig5 = Panel("Fig. 5: hook speed of the rigid drive after an emergency stop",
+                 r"$v$ [m/min]", group="Fig. 5")
+    stops = {}
+    for payload, name in ((0.0, "hook only"), (q["m_p"], f"payload {q['m_p'] / 1e3:g} t")):
+        up = gen.rigid_hook_speed_hoisting(times, m_p=payload, **hoist)
+        down = gen.rigid_hook_speed_lowering(times, m_p=payload, **hoist)
+        fig5.curves += [(f"hoisting, {name}", times, kmh * up),
+                        (f"lowering, {name}", times, -kmh * down)]
+    stops["hoisting"] = float(gen.rigid_stopping_time_hoisting(m_p=q["m_p"], **hoist))
+    stops["lowering"] = float(gen.rigid_stopping_time_lowering(m_p=q["m_p"], **hoist))
+    speed = time_function(scene, module, "rigid_hook_speed_hoisting")(times)
+
+    # Fig. 8: relative gearbox torque (3) against the relative safety-brake torque
+    bf = np.linspace(1.0, 3.5, 251)
+    fig8 = []
+    for phi in (2.0, 1.5, 1.0):
+        panel = Panel(rf"Fig. 8: eq. (3), $\varphi_5 = {phi:g}$", r"$M_{G,rel,\max}$",
+                      xlabel=r"$M_{SB}/M_{st}$ (relative safety-brake torque $BF_{SB}$)",
+                      group="Fig. 8")
+        for mf in (1.0, 0.95, 0.90, 0.0):
+            panel.curves.append((rf"$MF = {mf:.2f}$", bf,
+                                 gen.peak_relative_gearbox_torque_hoisting(phi, mf, 1.0, bf)))
+        fig8.append(panel)
+
+    # Fig. 9: elasto-kinetic, lowering, backlash, closed form per phase
+    J_d = q["J2"] / q["i_g"] ** 2
+    gear = q["r"] / (q["i_g"] * q["i_t"])
+    backlash = float(module.backlash_at_motor_shaft())
+    fig9 = Panel("Fig. 9: relative gearbox torque, elastic drive, emergency stop lowering",
+                 r"$M_G/M_{st}$", group="Fig. 9")
+    peaks = {}
+    M_st = (q["m_h"] + q["m_r"]) * q["g"] * gear
+    for payload, name in ((0.0, "hook only"), (q["m_p"], f"payload {q['m_p'] / 1e3:g} t")):
+        M_L = (q["m_h"] + payload) * q["g"] * gear
+        model = TwoMassHoist(q["J1"], J_d + (q["m_h"] + payload) * gear ** 2, q["c"],
+                             backlash, M_L, M_st, q["M_SB"] / q["i_g"], q["M_BB"], M_L)
+        run = model.run(q["omega1"], times[-1], 0.0, q["t_SB"], q["t_BB"])
+        fig9.curves.append((f"lowering, {name}", times, model.relative_torque(run, times)))
+        peaks[name] = model.peak(run)
+    hook_peak = peaks["hook only"]
+    load_peak = [v for k, v in peaks.items() if k != "hook only"][0]
+
+    # Figs 11-12: coordinated brake factors over the payload
+    payload = np.linspace(0.0, q["m_r"], 201)
+    coord = {k: q[k] for k in ("J1", "J2", "m_h", "m_r", "r", "i_g", "i_t", "g", "omega1",
+                               "d_t")}
+    sb = gen.safety_brake_factor(payload, **coord)
+    figs = []
+    for mode, number, fn in (("hoisting", 11, gen.service_brake_factor_hoisting),
+                             ("lowering", 12, gen.service_brake_factor_lowering)):
+        bb = fn(payload, **coord)
+        figs.append(Panel(f"Fig. {number}: coordinated brake factors, braking from {mode}",
+                          "brake factor", [(r"$BF_{BB}$ (service brakes)", payload / 1e3, bb),
+                                           (r"$BF_{SB}$ (safety brakes)", payload / 1e3, sb),
+                                           (r"$BF_{BB} + BF_{SB}$", payload / 1e3, bb + sb)],
+                          xlabel=r"payload $m_p$ [t]", group=f"Fig. {number}"))
+    values = {"t_stop_hoisting": stops["hoisting"], "t_stop_lowering": stops["lowering"],
+              "p": float(module.elastic_natural_frequency()), "backlash_motor": backlash,
+              "peak_fig9": hook_peak[1], "t_peak_fig9": hook_peak[0],
+              "peak_fig9_payload": load_peak[1], "v0": float(speed[0])}
+    lines = [
+        f"hook speed before the stop   v0 = {fq(kmh * values['v0'], 'm/min')}",
+        f"rigid stop, hoisting         t = {fq(stops['hoisting'], 's')}",
+        f"rigid stop, lowering         t = {fq(stops['lowering'], 's')}",
+        f"elastic drive                p = {fq(values['p'], 'rad/s')}, backlash at the "
+        f"motor shaft {fq(backlash, 'rad')}",
+        f"Fig. 9 peak, hook only       M_G/M_st = {fq(hook_peak[1])} at "
+        f"t = {fq(hook_peak[0], 's')} (printed: 8.9)",
+        f"Fig. 9 peak, payload         M_G/M_st = {fq(load_peak[1])} at "
+        f"t = {fq(load_peak[0], 's')}",
+        f"Figs 11-12 at 0 t / rated    BF_SB = {fq(100 * sb[0], '%')} / "
+        f"{fq(100 * sb[-1], '%')}",
+    ]
+    return SceneReport(lines=lines, values=values, panels=[fig5] + fig8 + [fig9] + figs)

@@ -1,0 +1,717 @@
+"""Numeric functions for derivation 'hoist_brakes'. Generated; do not edit.
+
+Source: crane_sym.derivations.hoist_brakes (paper 001_544065b666a6bc39.txt:
+Hoists with safety brakes: gearbox torque in an emergency stop).
+Equations: (1), (2), (3), (4), (6), (7), Fig. 9.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    relative_gearbox_torque_hoisting(MF, LF, BF_SB) -> [1]    eq (2), (4)
+    relative_gearbox_torque_lowering(MF, LF, BF_SB) -> [1]    eq (2)
+    peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB) -> [1]    eq (2), (3)
+    peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB) -> [1]    eq (2)
+    service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (6)
+    service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (6)
+    safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t) -> [1]    eq (7)
+    elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB) -> [1]    eq Fig. 9
+    elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c) -> [rad/s]    eq Fig. 9
+    backlash_at_motor_shaft(delta, i_g) -> [rad]    eq Fig. 9
+    rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [m/s]    eq (1)
+    rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [s]    eq (1)
+    rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [m/s]    eq (1)
+    rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [s]    eq (1)
+"""
+
+import numpy as np
+
+__all__ = ['relative_gearbox_torque_hoisting', 'relative_gearbox_torque_lowering', 'peak_relative_gearbox_torque_hoisting', 'peak_relative_gearbox_torque_lowering', 'service_brake_factor_hoisting', 'service_brake_factor_lowering', 'safety_brake_factor', 'elastic_gearbox_torque_no_backlash', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'rigid_hook_speed_hoisting', 'rigid_stopping_time_hoisting', 'rigid_hook_speed_lowering', 'rigid_stopping_time_lowering']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def relative_gearbox_torque_hoisting(MF, LF, BF_SB):
+    """Rigid drive, hoisting: gearbox-input torque over the rated static torque after the safety brakes act (motor torque lost). Eq (2), (4).
+
+    Parameters
+    ----------
+    MF : array_like
+        inertia factor J1/J [1], >= 0
+    LF : array_like
+        load factor M_L/M_st [1], > 0
+    BF_SB : array_like
+        safety-brake factor M_SB/(i_g M_st) [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    return MF*(BF_SB + LF)
+
+
+def relative_gearbox_torque_lowering(MF, LF, BF_SB):
+    """Rigid drive, lowering: the same (negative when the brakes reverse it). Eq (2).
+
+    Parameters
+    ----------
+    MF : array_like
+        inertia factor J1/J [1], >= 0
+    LF : array_like
+        load factor M_L/M_st [1], > 0
+    BF_SB : array_like
+        safety-brake factor M_SB/(i_g M_st) [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    return -MF*(BF_SB - LF)
+
+
+def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB):
+    """Peak relative gearbox torque, hoisting, with the dynamic factor phi5. Eq (2), (3).
+
+    Parameters
+    ----------
+    phi5 : array_like
+        dynamic factor φ5 of EN 13001-2 [1], > 0
+    MF : array_like
+        inertia factor J1/J [1], >= 0
+    LF : array_like
+        load factor M_L/M_st [1], > 0
+    BF_SB : array_like
+        safety-brake factor M_SB/(i_g M_st) [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    x0 = LF*phi5
+    return BF_SB*MF*phi5 + LF + MF*x0 - x0
+
+
+def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB):
+    """Peak relative gearbox torque, lowering, with the dynamic factor phi5. Eq (2).
+
+    Parameters
+    ----------
+    phi5 : array_like
+        dynamic factor φ5 of EN 13001-2 [1], > 0
+    MF : array_like
+        inertia factor J1/J [1], >= 0
+    LF : array_like
+        load factor M_L/M_st [1], > 0
+    BF_SB : array_like
+        safety-brake factor M_SB/(i_g M_st) [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    return -BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF
+
+
+def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
+    """Coordinated brake factor (6) over the payload m_p, stopping from omega1 in d_t (hoisting). Eq (6).
+
+    Parameters
+    ----------
+    m_p : array_like
+        payload [kg], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    m_r : array_like
+        rated payload (Table 1: 52 t) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    omega1 : array_like
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+    d_t : array_like
+        braking time [s], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
+    r      = _checked('r', r, 'positive', 'drum radius, m')
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
+    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    x0 = d_t*g*r
+    return -(-J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r))
+
+
+def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
+    """Coordinated brake factor (6) over the payload m_p, stopping from omega1 in d_t (lowering). Eq (6).
+
+    Parameters
+    ----------
+    m_p : array_like
+        payload [kg], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    m_r : array_like
+        rated payload (Table 1: 52 t) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    omega1 : array_like
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+    d_t : array_like
+        braking time [s], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
+    r      = _checked('r', r, 'positive', 'drum radius, m')
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
+    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    x0 = d_t*g*r
+    return (J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r))
+
+
+def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
+    """Coordinated brake factor (7) over the payload m_p, stopping from omega1 in d_t (hoisting). Eq (7).
+
+    Parameters
+    ----------
+    m_p : array_like
+        payload [kg], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    m_r : array_like
+        rated payload (Table 1: 52 t) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    omega1 : array_like
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+    d_t : array_like
+        braking time [s], > 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
+    r      = _checked('r', r, 'positive', 'drum radius, m')
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
+    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    x0 = r**2
+    return omega1*(J2*i_t**2 + m_h*x0 + m_p*x0)/(d_t*g*i_g*i_t*r*(m_h + m_r))
+
+
+def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB):
+    """Relative gearbox torque M_G/M_st of the elastic drive without backlash, lowering, motor torque lost at t = 0, safety brakes from t_SB; valid while the drum slides and the service brakes are off. Eq Fig. 9.
+
+    Parameters
+    ----------
+    t : array_like
+        time since the emergency stop [s], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    m_p : array_like
+        payload [kg], >= 0
+    m_r : array_like
+        rated payload (Table 1: 52 t) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    c : array_like
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0
+    M_SB : array_like
+        torque of the safety brakes on the drums [N*m], > 0
+    t_SB : array_like
+        delay of the safety brakes [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    t    = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    J1   = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2   = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h  = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    m_p  = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    m_r  = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
+    r    = _checked('r', r, 'positive', 'drum radius, m')
+    i_g  = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t  = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g    = _checked('g', g, 'positive', 'gravity, m/s^2')
+    c    = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
+    M_SB = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
+    t_SB = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    x0 = i_t**2
+    x1 = 1/(x0)
+    x2 = r**2
+    x3 = m_h*x2
+    x4 = x1*x3
+    x5 = m_p*x2
+    x6 = x1*x5
+    x7 = i_g**2
+    x8 = 1/(x7)
+    x9 = J1 + J2*x8 + x4*x8 + x6*x8
+    x10 = (1/2)*np.sqrt(c)/np.sqrt(J1)
+    x11 = i_g*x10*np.sqrt(x9)/np.sqrt(J2 + x4 + x6)
+    x12 = J1/x9
+    x13 = 2*x12
+    x14 = m_h + m_p
+    x15 = 1/(m_h + m_r)
+    x16 = J2*x0 + x3 + x5
+    x17 = g*r/i_t
+    k1 = x13 - 2
+    k2 = x14*x15
+    k3 = -t_SB
+    k4 = x10*np.sqrt(J1*x0*x7 + x16)/np.sqrt(x16)
+    k5 = -M_SB*x13
+    k7 = -2*x14*x17*(1 - x12)
+    k8 = m_h*x17 + m_p*x17
+    k9 = i_t*x15/(g*r)
+    return np.select([np.less(t, t_SB),True], [k2*(k1*np.sin(t*x11)**2 + 1),k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8)], default=np.nan)
+
+
+def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c):
+    """Natural frequency of the two-mass drive in contact (motor shafts J1 against everything beyond the gearbox input, stiffness c). Eq Fig. 9.
+
+    Parameters
+    ----------
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    m_p : array_like
+        payload [kg], >= 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    c : array_like
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad/s], broadcast over the arguments.
+    """
+    J1  = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2  = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    m_p = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    r   = _checked('r', r, 'positive', 'drum radius, m')
+    i_g = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    c   = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
+    x0 = r**2/i_t**2
+    return np.sqrt(c)*np.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/(J1))
+
+
+def backlash_at_motor_shaft(delta, i_g):
+    """The drum-coupling backlash seen at the motor shaft. Eq Fig. 9.
+
+    Parameters
+    ----------
+    delta : array_like
+        backlash of the drum coupling (at the drum) [rad], >= 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+
+    Returns
+    -------
+    ndarray
+        [rad], broadcast over the arguments.
+    """
+    delta = _checked('delta', delta, 'nonnegative', 'backlash of the drum coupling (at the drum), rad')
+    i_g   = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    return delta*i_g
+
+
+def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+    """Hook speed of the rigid drive, hoisting, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Eq (1).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the emergency stop [s], >= 0
+    m_p : array_like
+        payload [kg], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    omega1 : array_like
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+    M_SB : array_like
+        torque of the safety brakes on the drums [N*m], > 0
+    M_BB : array_like
+        torque of the service brakes on the motor shafts [N*m], > 0
+    t_SB : array_like
+        delay of the safety brakes [s], >= 0
+    t_BB : array_like
+        delay of the service brakes [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    r      = _checked('r', r, 'positive', 'drum radius, m')
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    x0 = i_t**2
+    x1 = r**2
+    x2 = i_g**2*x0
+    x3 = 1/(J1*x2 + J2*x0 + m_h*x1 + m_p*x1)
+    x4 = i_g*x3
+    x5 = g*i_t*r*x4
+    x6 = m_p*x5
+    x7 = -x6
+    x8 = m_h*x5
+    x9 = -x8
+    x10 = -t_SB
+    x11 = M_SB*x0*x4
+    x12 = -x11
+    x13 = -t_BB
+    x14 = M_BB*x2*x3
+    x15 = np.less_equal(t, t_SB)
+    x16 = np.less_equal(t, t_BB)
+    x17 = -omega1 + t*x6 + t*x8
+    x18 = x11*(t + x10) + x17
+    k7 = -x14
+    k12 = r/(i_g*i_t)
+    return np.select([np.logical_or.reduce((np.logical_and.reduce((x15,np.less(x17, 0))),np.logical_and.reduce((x16,np.logical_not(x15),np.less(x18, 0))),np.logical_and.reduce((np.logical_not(x15),np.logical_not(x16),np.less(x14*(t + x13) + x18, 0))))),True], [k12*np.select([x15,x16,True], [omega1 + t*x7 + t*x9,omega1 + t*x7 + t*x9 + x12*(t + x10),k7*(t + x13) + omega1 + t*x7 + t*x9 + x12*(t + x10)], default=np.nan),0], default=np.nan)
+
+
+def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+    """Time the rigid drive takes to stop, hoisting. Eq (1).
+
+    Parameters
+    ----------
+    m_p : array_like
+        payload [kg], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    omega1 : array_like
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+    M_SB : array_like
+        torque of the safety brakes on the drums [N*m], > 0
+    M_BB : array_like
+        torque of the service brakes on the motor shafts [N*m], > 0
+    t_SB : array_like
+        delay of the safety brakes [s], >= 0
+    t_BB : array_like
+        delay of the service brakes [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [s], broadcast over the arguments.
+    """
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    r      = _checked('r', r, 'positive', 'drum radius, m')
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    x0 = m_h + m_p
+    x1 = i_g**(-2.0)
+    x2 = r**2*x1/i_t**2
+    x3 = J1 + J2*x1 + m_h*x2 + m_p*x2
+    x4 = i_g*x3
+    x5 = g*r*x0/i_t
+    x6 = 1/(i_g)
+    x7 = x6/x3
+    x8 = -omega1 + t_SB*x5*x7
+    x9 = M_SB + x5
+    x10 = x7*x9*(t_BB - t_SB) + x8
+    return np.select([np.greater_equal(x8, 0),np.greater_equal(x10, 0),True], [i_t*omega1*x4/(g*r*x0),t_SB - x4*x8/x9,t_BB - x10*x3/(M_BB + M_SB*x6 + x5*x6)], default=np.nan)
+
+
+def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+    """Hook speed of the rigid drive, lowering, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Eq (1).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the emergency stop [s], >= 0
+    m_p : array_like
+        payload [kg], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    omega1 : array_like
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+    M_SB : array_like
+        torque of the safety brakes on the drums [N*m], > 0
+    M_BB : array_like
+        torque of the service brakes on the motor shafts [N*m], > 0
+    t_SB : array_like
+        delay of the safety brakes [s], >= 0
+    t_BB : array_like
+        delay of the service brakes [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    r      = _checked('r', r, 'positive', 'drum radius, m')
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    x0 = i_t**2
+    x1 = r**2
+    x2 = i_g**2*x0
+    x3 = 1/(J1*x2 + J2*x0 + m_h*x1 + m_p*x1)
+    x4 = i_g*x3
+    x5 = g*i_t*r*x4
+    x6 = m_p*x5
+    x7 = m_h*x5
+    x8 = -t_SB
+    x9 = M_SB*x0*x4
+    x10 = -x9
+    x11 = -t_BB
+    x12 = M_BB*x2*x3
+    x13 = np.less_equal(t, t_SB)
+    x14 = np.less_equal(t, t_BB)
+    x15 = omega1 + t*x6 + t*x7 - x9*(t + x8)
+    k7 = -x12
+    k12 = r/(i_g*i_t)
+    return np.select([np.logical_and.reduce((np.logical_or.reduce((x13,np.logical_not(x14),np.greater(x15, 0))),np.logical_or.reduce((x13,x14,np.less(x12*(t + x11) - x15, 0))))),True], [k12*np.select([x13,x14,True], [omega1 + t*x6 + t*x7,omega1 + t*x6 + t*x7 + x10*(t + x8),k7*(t + x11) + omega1 + t*x6 + t*x7 + x10*(t + x8)], default=np.nan),0], default=np.nan)
+
+
+def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+    """Time the rigid drive takes to stop, lowering. Eq (1).
+
+    Parameters
+    ----------
+    m_p : array_like
+        payload [kg], >= 0
+    J1 : array_like
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+    J2 : array_like
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+    m_h : array_like
+        mass of the hook (load-handling device) [kg], > 0
+    r : array_like
+        drum radius [m], > 0
+    i_g : array_like
+        gear ratio of the gearbox [1], > 0
+    i_t : array_like
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+    g : array_like
+        gravity [m/s^2], > 0
+    omega1 : array_like
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+    M_SB : array_like
+        torque of the safety brakes on the drums [N*m], > 0
+    M_BB : array_like
+        torque of the service brakes on the motor shafts [N*m], > 0
+    t_SB : array_like
+        delay of the safety brakes [s], >= 0
+    t_BB : array_like
+        delay of the service brakes [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [s], broadcast over the arguments.
+    """
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
+    r      = _checked('r', r, 'positive', 'drum radius, m')
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    x0 = g*r*(m_h + m_p)/i_t
+    x1 = M_SB - x0
+    x2 = i_g**(-2.0)
+    x3 = r**2*x2/i_t**2
+    x4 = J1 + J2*x2 + m_h*x3 + m_p*x3
+    x5 = 1/(i_g)
+    x6 = x5/x4
+    x7 = omega1 + t_SB*x0*x6
+    x8 = -x1*x6*(t_BB - t_SB) + x7
+    return np.select([np.less_equal(x8, 0),True], [i_g*x4*x7/x1 + t_SB,t_BB + x4*x8/(M_BB + M_SB*x5 - x0*x5)], default=np.nan)

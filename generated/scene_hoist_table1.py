@@ -1,0 +1,118 @@
+"""Numeric functions for derivation 'hoist_brakes'. Generated; do not edit.
+
+Source: crane_sym.derivations.hoist_brakes (paper 001_544065b666a6bc39.txt:
+Hoists with safety brakes: gearbox torque in an emergency stop).
+Specialized to scene 'hoist_table1' (Table 1 hoist: emergency stop with safety brakes): outputs rigid_hook_speed_hoisting, rigid_hook_speed_lowering, elastic_natural_frequency, backlash_at_motor_shaft; folded in: omega1 = 157.07963267948966 rad/s, J1 = 20.0 kg*m^2, J2 = 500.0 kg*m^2, m_h = 10000.0 kg, m_p = 52000.0 kg, m_r = 52000.0 kg, r = 0.5 m, i_g = 26.2 1, i_t = 4.0 1, g = 9.81 m/s^2, M_SB = 130000.0 N*m, M_BB = 5800.0 N*m, c = 40000.0 N*m/rad, d_t = 1.0 s, t_SB = 0.1 s, t_BB = 0.4 s, delta = 0.05235987755982989 rad.
+Equations: (1), Fig. 9.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+
+Functions and argument order:
+    rigid_hook_speed_hoisting(t) -> [m/s]    eq (1)
+    rigid_hook_speed_lowering(t) -> [m/s]    eq (1)
+    elastic_natural_frequency() -> [rad/s]    eq Fig. 9
+    backlash_at_motor_shaft() -> [rad]    eq Fig. 9
+"""
+
+import numpy as np
+
+__all__ = ['rigid_hook_speed_hoisting', 'rigid_hook_speed_lowering', 'elastic_natural_frequency', 'backlash_at_motor_shaft']
+
+
+def _checked(name, value, sign, what):
+    """``value`` as a float array; ValueError naming ``name`` if it is not a
+    finite number of the required sign, TypeError if it is not a number."""
+    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+        number = float(value) if abs(value) < 1e308 else float("inf")
+        if number != number or abs(number) == float("inf"):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        if sign == "positive" and not number > 0:
+            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
+        if sign == "nonnegative" and not number >= 0:
+            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
+        return np.float64(number)
+    if isinstance(value, (str, bytes)):
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got a string {value!r}")
+    array = np.asarray(value)
+    if array.dtype.kind not in "iuf":
+        raise TypeError(f"{name} must be a number or array of numbers "
+                        f"({what}), got dtype {array.dtype}")
+    array = array.astype(float, copy=False)
+    if array.size == 0:
+        return array
+    low, high = array.min(), array.max()
+    if not (np.isfinite(low) and np.isfinite(high)):
+        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+    if sign == "positive" and not low > 0:
+        raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
+    if sign == "nonnegative" and not low >= 0:
+        raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
+    return array
+
+
+def rigid_hook_speed_hoisting(t):
+    """Hook speed of the rigid drive, hoisting, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Specialized to scene 'hoist_table1'. Eq (1).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the emergency stop [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    x0 = np.less_equal(t, 3602879701896397/36028797018963968)
+    x1 = np.less_equal(t, 3602879701896397/9007199254740992)
+    return np.select([np.logical_or.reduce((np.logical_and.reduce((x0,np.less(t, 332730682526853830747576052992198902627202103411/277633197038935744755715933699117118675904102400))),np.logical_and.reduce((x1,np.logical_not(x0),np.less(t, 380203393868225896107927431037056805011223607411/752360310452656372006581127860164255283570278400))),np.logical_and.reduce((np.logical_not(x0),np.logical_not(x1),np.less(t, 77077911694384208659789090704944464415547392109093/167331812936068246568838292165462359392118804316160))))),True], [(35184372088832/7374644389819187)*np.select([x0,x1,True], [5526748243772219/35184372088832 - 31563240217898936038604453381039675/240814792243731584959521748775076*t,380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 4073022120124561968745557783548175/11467371059225313569501035655956*t,25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 148620505179114067723167995330035715/240814792243731584959521748775076*t], default=np.nan),0], default=np.nan)
+
+
+def rigid_hook_speed_lowering(t):
+    """Hook speed of the rigid drive, lowering, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Specialized to scene 'hoist_table1'. Eq (1).
+
+    Parameters
+    ----------
+    t : array_like
+        time since the emergency stop [s], >= 0
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    x0 = np.less_equal(t, 3602879701896397/36028797018963968)
+    x1 = np.less_equal(t, 3602879701896397/9007199254740992)
+    return np.select([np.logical_and.reduce((np.logical_or.reduce((x0,x1,np.less(t, 77077911694384208659789090704944464415547392109093/96257714494100695911375013138488377011087354101760))),np.logical_or.reduce((x0,np.logical_not(x1),np.less(t, 380203393868225896107927431037056805011223607411/197093916374784882495149260461930017931762073600))))),True], [(35184372088832/7374644389819187)*np.select([x0,x1,True], [(31563240217898936038604453381039675/240814792243731584959521748775076)*t + 5526748243772219/35184372088832,380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 22406984086817929266447806692432325/240814792243731584959521748775076*t,25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 85494024743316195645959088567956365/240814792243731584959521748775076*t], default=np.nan),0], default=np.nan)
+
+
+def elastic_natural_frequency():
+    """Natural frequency of the two-mass drive in contact (motor shafts J1 against everything beyond the gearbox input, stiffness c). Specialized to scene 'hoist_table1'. Eq Fig. 9.
+
+    Parameters
+    ----------
+
+
+    Returns
+    -------
+    ndarray
+        [rad/s], broadcast over the arguments.
+    """
+    return 143.8559563251128
+
+
+def backlash_at_motor_shaft():
+    """The drum-coupling backlash seen at the motor shaft. Specialized to scene 'hoist_table1'. Eq Fig. 9.
+
+    Parameters
+    ----------
+
+
+    Returns
+    -------
+    ndarray
+        [rad], broadcast over the arguments.
+    """
+    return 27823993466796606199971640168145/20282409603651670423947251286016
