@@ -59,7 +59,41 @@ def _checked(name, value, sign, what):
     return array
 
 
-def relative_gearbox_torque_hoisting(MF, LF, BF_SB):
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: v.shape for k, v in arrays.items() if v.ndim}  # _checked's arrays
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
+def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     """Rigid drive, hoisting: gearbox-input torque over the rated static torque after the safety brakes act (motor torque lost). Eq (2), (4).
 
     Parameters
@@ -70,6 +104,8 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB):
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
         safety-brake factor M_SB/(i_g M_st) [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -79,10 +115,11 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB):
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
-    return MF*(BF_SB + LF)
+    shape = _broadcast(MF=MF, LF=LF, BF_SB=BF_SB)
+    return _into(out, shape, MF*(BF_SB + LF))
 
 
-def relative_gearbox_torque_lowering(MF, LF, BF_SB):
+def relative_gearbox_torque_lowering(MF, LF, BF_SB, *, out=None):
     """Rigid drive, lowering: the same (negative when the brakes reverse it). Eq (2).
 
     Parameters
@@ -93,6 +130,8 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB):
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
         safety-brake factor M_SB/(i_g M_st) [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -102,10 +141,11 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB):
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
-    return -MF*(BF_SB - LF)
+    shape = _broadcast(MF=MF, LF=LF, BF_SB=BF_SB)
+    return _into(out, shape, -MF*(BF_SB - LF))
 
 
-def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB):
+def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB, *, out=None):
     """Peak relative gearbox torque, hoisting, with the dynamic factor phi5. Eq (2), (3).
 
     Parameters
@@ -118,6 +158,8 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB):
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
         safety-brake factor M_SB/(i_g M_st) [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -128,11 +170,12 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB):
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    shape = _broadcast(phi5=phi5, MF=MF, LF=LF, BF_SB=BF_SB)
     x0 = LF*phi5
-    return BF_SB*MF*phi5 + LF + MF*x0 - x0
+    return _into(out, shape, BF_SB*MF*phi5 + LF + MF*x0 - x0)
 
 
-def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB):
+def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB, *, out=None):
     """Peak relative gearbox torque, lowering, with the dynamic factor phi5. Eq (2).
 
     Parameters
@@ -145,6 +188,8 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB):
         load factor M_L/M_st [1], > 0
     BF_SB : array_like
         safety-brake factor M_SB/(i_g M_st) [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -155,10 +200,11 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB):
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
-    return -BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF
+    shape = _broadcast(phi5=phi5, MF=MF, LF=LF, BF_SB=BF_SB)
+    return _into(out, shape, -BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF)
 
 
-def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
+def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, out=None):
     """Coordinated brake factor (6) over the payload m_p, stopping from omega1 in d_t (hoisting). Eq (6).
 
     Parameters
@@ -185,6 +231,8 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
         motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
     d_t : array_like
         braking time [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -202,11 +250,13 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     g      = _checked('g', g, 'positive', 'gravity, m/s^2')
     omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
     d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g,
+                       omega1=omega1, d_t=d_t)
     x0 = d_t*g*r
-    return -(-J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r))
+    return _into(out, shape, -(-J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r)))
 
 
-def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
+def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, out=None):
     """Coordinated brake factor (6) over the payload m_p, stopping from omega1 in d_t (lowering). Eq (6).
 
     Parameters
@@ -233,6 +283,8 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
         motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
     d_t : array_like
         braking time [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -250,11 +302,13 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     g      = _checked('g', g, 'positive', 'gravity, m/s^2')
     omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
     d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g,
+                       omega1=omega1, d_t=d_t)
     x0 = d_t*g*r
-    return (J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r))
+    return _into(out, shape, (J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r)))
 
 
-def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
+def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, out=None):
     """Coordinated brake factor (7) over the payload m_p, stopping from omega1 in d_t (hoisting). Eq (7).
 
     Parameters
@@ -281,6 +335,8 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
         motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
     d_t : array_like
         braking time [s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -298,11 +354,13 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t):
     g      = _checked('g', g, 'positive', 'gravity, m/s^2')
     omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
     d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g,
+                       omega1=omega1, d_t=d_t)
     x0 = r**2
-    return omega1*(J2*i_t**2 + m_h*x0 + m_p*x0)/(d_t*g*i_g*i_t*r*(m_h + m_r))
+    return _into(out, shape, omega1*(J2*i_t**2 + m_h*x0 + m_p*x0)/(d_t*g*i_g*i_t*r*(m_h + m_r)))
 
 
-def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB):
+def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB, *, out=None):
     """Relative gearbox torque M_G/M_st of the elastic drive without backlash, lowering, motor torque lost at t = 0, safety brakes from t_SB; valid while the drum slides and the service brakes are off. Eq Fig. 9.
 
     Parameters
@@ -333,6 +391,8 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
         torque of the safety brakes on the drums [N*m], > 0
     t_SB : array_like
         delay of the safety brakes [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -352,6 +412,8 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     c    = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
     M_SB = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
     t_SB = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    shape = _broadcast(t=t, J1=J1, J2=J2, m_h=m_h, m_p=m_p, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g, c=c,
+                       M_SB=M_SB, t_SB=t_SB)
     x0 = i_t**2
     x1 = 1/(x0)
     x2 = r**2
@@ -362,8 +424,8 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     x7 = i_g**2
     x8 = 1/(x7)
     x9 = J1 + J2*x8 + x4*x8 + x6*x8
-    x10 = (1/2)*np.sqrt(c)/np.sqrt(J1)
-    x11 = i_g*x10*np.sqrt(x9)/np.sqrt(J2 + x4 + x6)
+    x10 = c/J1
+    x11 = (1/2)*i_g*np.sqrt(x10*x9/(J2 + x4 + x6))
     x12 = J1/x9
     x13 = 2*x12
     x14 = m_h + m_p
@@ -373,15 +435,15 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     k1 = x13 - 2
     k2 = x14*x15
     k3 = -t_SB
-    k4 = x10*np.sqrt(J1*x0*x7 + x16)/np.sqrt(x16)
+    k4 = (1/2)*np.sqrt(x10*(J1*x0*x7 + x16)/x16)
     k5 = -M_SB*x13
     k7 = -2*x14*x17*(1 - x12)
     k8 = m_h*x17 + m_p*x17
     k9 = i_t*x15/(g*r)
-    return np.select([np.less(t, t_SB),True], [k2*(k1*np.sin(t*x11)**2 + 1),k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8)], default=np.nan)
+    return _into(out, shape, np.select([np.less(t, t_SB),True], [k2*(k1*np.sin(t*x11)**2 + 1),k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8)], default=np.nan))
 
 
-def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c):
+def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
     """Natural frequency of the two-mass drive in contact (motor shafts J1 against everything beyond the gearbox input, stiffness c). Eq Fig. 9.
 
     Parameters
@@ -402,6 +464,8 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c):
         ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
     c : array_like
         torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -416,11 +480,12 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c):
     i_g = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
     i_t = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
     c   = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
+    shape = _broadcast(J1=J1, J2=J2, m_h=m_h, m_p=m_p, r=r, i_g=i_g, i_t=i_t, c=c)
     x0 = r**2/i_t**2
-    return np.sqrt(c)*np.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/(J1))
+    return _into(out, shape, np.sqrt(c)*np.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/(J1)))
 
 
-def backlash_at_motor_shaft(delta, i_g):
+def backlash_at_motor_shaft(delta, i_g, *, out=None):
     """The drum-coupling backlash seen at the motor shaft. Eq Fig. 9.
 
     Parameters
@@ -429,6 +494,8 @@ def backlash_at_motor_shaft(delta, i_g):
         backlash of the drum coupling (at the drum) [rad], >= 0
     i_g : array_like
         gear ratio of the gearbox [1], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -437,10 +504,11 @@ def backlash_at_motor_shaft(delta, i_g):
     """
     delta = _checked('delta', delta, 'nonnegative', 'backlash of the drum coupling (at the drum), rad')
     i_g   = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    return delta*i_g
+    shape = _broadcast(delta=delta, i_g=i_g)
+    return _into(out, shape, delta*i_g)
 
 
-def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):
     """Hook speed of the rigid drive, hoisting, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Eq (1).
 
     Parameters
@@ -473,6 +541,8 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
         delay of the safety brakes [s], >= 0
     t_BB : array_like
         delay of the service brakes [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -493,6 +563,8 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
     t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
     t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    shape = _broadcast(t=t, m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
+                       M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
     x0 = i_t**2
     x1 = r**2
     x2 = i_g**2*x0
@@ -514,10 +586,10 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x18 = x11*(t + x10) + x17
     k7 = -x14
     k12 = r/(i_g*i_t)
-    return np.select([np.logical_or.reduce((np.logical_and.reduce((x15,np.less(x17, 0))),np.logical_and.reduce((x16,np.logical_not(x15),np.less(x18, 0))),np.logical_and.reduce((np.logical_not(x15),np.logical_not(x16),np.less(x14*(t + x13) + x18, 0))))),True], [k12*np.select([x15,x16,True], [omega1 + t*x7 + t*x9,omega1 + t*x7 + t*x9 + x12*(t + x10),k7*(t + x13) + omega1 + t*x7 + t*x9 + x12*(t + x10)], default=np.nan),0], default=np.nan)
+    return _into(out, shape, np.select([np.logical_or.reduce((np.logical_and.reduce((x15,np.less(x17, 0))),np.logical_and.reduce((x16,np.logical_not(x15),np.less(x18, 0))),np.logical_and.reduce((np.logical_not(x15),np.logical_not(x16),np.less(x14*(t + x13) + x18, 0))))),True], [k12*np.select([x15,x16,True], [omega1 + t*x7 + t*x9,omega1 + t*x7 + t*x9 + x12*(t + x10),k7*(t + x13) + omega1 + t*x7 + t*x9 + x12*(t + x10)], default=np.nan),0], default=np.nan))
 
 
-def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):
     """Time the rigid drive takes to stop, hoisting. Eq (1).
 
     Parameters
@@ -548,6 +620,8 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
         delay of the safety brakes [s], >= 0
     t_BB : array_like
         delay of the service brakes [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -567,6 +641,8 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
     t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
     t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
+                       M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
     x0 = m_h + m_p
     x1 = i_g**(-2.0)
     x2 = r**2*x1/i_t**2
@@ -578,10 +654,10 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x8 = -omega1 + t_SB*x5*x7
     x9 = M_SB + x5
     x10 = x7*x9*(t_BB - t_SB) + x8
-    return np.select([np.greater_equal(x8, 0),np.greater_equal(x10, 0),True], [i_t*omega1*x4/(g*r*x0),t_SB - x4*x8/x9,t_BB - x10*x3/(M_BB + M_SB*x6 + x5*x6)], default=np.nan)
+    return _into(out, shape, np.select([np.greater_equal(x8, 0),np.greater_equal(x10, 0),True], [i_t*omega1*x4/(g*r*x0),t_SB - x4*x8/x9,t_BB - x10*x3/(M_BB + M_SB*x6 + x5*x6)], default=np.nan))
 
 
-def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):
     """Hook speed of the rigid drive, lowering, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Eq (1).
 
     Parameters
@@ -614,6 +690,8 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
         delay of the safety brakes [s], >= 0
     t_BB : array_like
         delay of the service brakes [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -634,6 +712,8 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
     t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
     t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    shape = _broadcast(t=t, m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
+                       M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
     x0 = i_t**2
     x1 = r**2
     x2 = i_g**2*x0
@@ -652,10 +732,10 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x15 = omega1 + t*x6 + t*x7 - x9*(t + x8)
     k7 = -x12
     k12 = r/(i_g*i_t)
-    return np.select([np.logical_and.reduce((np.logical_or.reduce((x13,np.logical_not(x14),np.greater(x15, 0))),np.logical_or.reduce((x13,x14,np.less(x12*(t + x11) - x15, 0))))),True], [k12*np.select([x13,x14,True], [omega1 + t*x6 + t*x7,omega1 + t*x6 + t*x7 + x10*(t + x8),k7*(t + x11) + omega1 + t*x6 + t*x7 + x10*(t + x8)], default=np.nan),0], default=np.nan)
+    return _into(out, shape, np.select([np.logical_and.reduce((np.logical_or.reduce((x13,np.logical_not(x14),np.greater(x15, 0))),np.logical_or.reduce((x13,x14,np.less(x12*(t + x11) - x15, 0))))),True], [k12*np.select([x13,x14,True], [omega1 + t*x6 + t*x7,omega1 + t*x6 + t*x7 + x10*(t + x8),k7*(t + x11) + omega1 + t*x6 + t*x7 + x10*(t + x8)], default=np.nan),0], default=np.nan))
 
 
-def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB):
+def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):
     """Time the rigid drive takes to stop, lowering. Eq (1).
 
     Parameters
@@ -686,6 +766,8 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
         delay of the safety brakes [s], >= 0
     t_BB : array_like
         delay of the service brakes [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -705,6 +787,8 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
     t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
     t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
+                       M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
     x0 = g*r*(m_h + m_p)/i_t
     x1 = M_SB - x0
     x2 = i_g**(-2.0)
@@ -714,4 +798,4 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x6 = x5/x4
     x7 = omega1 + t_SB*x0*x6
     x8 = -x1*x6*(t_BB - t_SB) + x7
-    return np.select([np.less_equal(x8, 0),True], [i_g*x4*x7/x1 + t_SB,t_BB + x4*x8/(M_BB + M_SB*x5 - x0*x5)], default=np.nan)
+    return _into(out, shape, np.select([np.less_equal(x8, 0),True], [i_g*x4*x7/x1 + t_SB,t_BB + x4*x8/(M_BB + M_SB*x5 - x0*x5)], default=np.nan))

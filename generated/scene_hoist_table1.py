@@ -50,13 +50,49 @@ def _checked(name, value, sign, what):
     return array
 
 
-def rigid_hook_speed_hoisting(t):
+def _broadcast(**arrays):
+    """The broadcast shape of the arguments; ValueError naming those that do
+    not broadcast together."""
+    shapes = {k: v.shape for k, v in arrays.items() if v.ndim}  # _checked's arrays
+    if len(shapes) < 2:
+        return next(iter(shapes.values()), ())
+    try:
+        return np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        listing = ", ".join(f"{k} {s}" for k, s in shapes.items())
+        raise ValueError(f"the arguments do not broadcast together: {listing}") from None
+
+
+def _out(out, shape):
+    """A new float64 array of ``shape``, or ``out`` if it is one (written in place)."""
+    if out is None:
+        return np.empty(shape)
+    if not (isinstance(out, np.ndarray) and out.dtype == np.float64
+            and out.shape == tuple(shape) and out.flags.writeable):
+        raise ValueError(f"out must be a writeable float64 array of shape {tuple(shape)}, "
+                         f"got {type(out).__name__} "
+                         f"{getattr(out, 'dtype', '')} {getattr(out, 'shape', '')}")
+    return out
+
+
+def _into(out, shape, result):
+    """``result``, or copied into ``out`` when the caller gives a buffer."""
+    if out is None:
+        return result
+    out = _out(out, shape)
+    np.copyto(out, result)
+    return out
+
+
+def rigid_hook_speed_hoisting(t, *, out=None):
     """Hook speed of the rigid drive, hoisting, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Specialized to scene 'hoist_table1'. Eq (1).
 
     Parameters
     ----------
     t : array_like
         time since the emergency stop [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -64,18 +100,21 @@ def rigid_hook_speed_hoisting(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    shape = _broadcast(t=t)
     x0 = np.less_equal(t, 3602879701896397/36028797018963968)
     x1 = np.less_equal(t, 3602879701896397/9007199254740992)
-    return np.select([np.logical_or.reduce((np.logical_and.reduce((x0,np.less(t, 332730682526853830747576052992198902627202103411/277633197038935744755715933699117118675904102400))),np.logical_and.reduce((x1,np.logical_not(x0),np.less(t, 380203393868225896107927431037056805011223607411/752360310452656372006581127860164255283570278400))),np.logical_and.reduce((np.logical_not(x0),np.logical_not(x1),np.less(t, 77077911694384208659789090704944464415547392109093/167331812936068246568838292165462359392118804316160))))),True], [(35184372088832/7374644389819187)*np.select([x0,x1,True], [5526748243772219/35184372088832 - 31563240217898936038604453381039675/240814792243731584959521748775076*t,380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 4073022120124561968745557783548175/11467371059225313569501035655956*t,25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 148620505179114067723167995330035715/240814792243731584959521748775076*t], default=np.nan),0], default=np.nan)
+    return _into(out, shape, np.select([np.logical_or.reduce((np.logical_and.reduce((x0,np.less(t, 332730682526853830747576052992198902627202103411/277633197038935744755715933699117118675904102400))),np.logical_and.reduce((x1,np.logical_not(x0),np.less(t, 380203393868225896107927431037056805011223607411/752360310452656372006581127860164255283570278400))),np.logical_and.reduce((np.logical_not(x0),np.logical_not(x1),np.less(t, 77077911694384208659789090704944464415547392109093/167331812936068246568838292165462359392118804316160))))),True], [(35184372088832/7374644389819187)*np.select([x0,x1,True], [5526748243772219/35184372088832 - 31563240217898936038604453381039675/240814792243731584959521748775076*t,380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 4073022120124561968745557783548175/11467371059225313569501035655956*t,25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 148620505179114067723167995330035715/240814792243731584959521748775076*t], default=np.nan),0], default=np.nan))
 
 
-def rigid_hook_speed_lowering(t):
+def rigid_hook_speed_lowering(t, *, out=None):
     """Hook speed of the rigid drive, lowering, after an emergency stop at t = 0: motor torque lost, brakes after their delays (Fig. 5). Specialized to scene 'hoist_table1'. Eq (1).
 
     Parameters
     ----------
     t : array_like
         time since the emergency stop [s], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
@@ -83,36 +122,43 @@ def rigid_hook_speed_lowering(t):
         [m/s], broadcast over the arguments.
     """
     t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    shape = _broadcast(t=t)
     x0 = np.less_equal(t, 3602879701896397/36028797018963968)
     x1 = np.less_equal(t, 3602879701896397/9007199254740992)
-    return np.select([np.logical_and.reduce((np.logical_or.reduce((x0,x1,np.less(t, 77077911694384208659789090704944464415547392109093/96257714494100695911375013138488377011087354101760))),np.logical_or.reduce((x0,np.logical_not(x1),np.less(t, 380203393868225896107927431037056805011223607411/197093916374784882495149260461930017931762073600))))),True], [(35184372088832/7374644389819187)*np.select([x0,x1,True], [(31563240217898936038604453381039675/240814792243731584959521748775076)*t + 5526748243772219/35184372088832,380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 22406984086817929266447806692432325/240814792243731584959521748775076*t,25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 85494024743316195645959088567956365/240814792243731584959521748775076*t], default=np.nan),0], default=np.nan)
+    return _into(out, shape, np.select([np.logical_and.reduce((np.logical_or.reduce((x0,x1,np.less(t, 77077911694384208659789090704944464415547392109093/96257714494100695911375013138488377011087354101760))),np.logical_or.reduce((x0,np.logical_not(x1),np.less(t, 380203393868225896107927431037056805011223607411/197093916374784882495149260461930017931762073600))))),True], [(35184372088832/7374644389819187)*np.select([x0,x1,True], [(31563240217898936038604453381039675/240814792243731584959521748775076)*t + 5526748243772219/35184372088832,380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 22406984086817929266447806692432325/240814792243731584959521748775076*t,25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 85494024743316195645959088567956365/240814792243731584959521748775076*t], default=np.nan),0], default=np.nan))
 
 
-def elastic_natural_frequency():
+def elastic_natural_frequency(*, out=None):
     """Natural frequency of the two-mass drive in contact (motor shafts J1 against everything beyond the gearbox input, stiffness c). Specialized to scene 'hoist_table1'. Eq Fig. 9.
 
     Parameters
     ----------
 
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
     ndarray
         [rad/s], broadcast over the arguments.
     """
-    return 143.8559563251128
+    shape = _broadcast()
+    return _into(out, shape, 143.8559563251128)
 
 
-def backlash_at_motor_shaft():
+def backlash_at_motor_shaft(*, out=None):
     """The drum-coupling backlash seen at the motor shaft. Specialized to scene 'hoist_table1'. Eq Fig. 9.
 
     Parameters
     ----------
 
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
 
     Returns
     -------
     ndarray
         [rad], broadcast over the arguments.
     """
-    return 27823993466796606199971640168145/20282409603651670423947251286016
+    shape = _broadcast()
+    return _into(out, shape, 27823993466796606199971640168145/20282409603651670423947251286016)
