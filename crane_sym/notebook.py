@@ -18,7 +18,7 @@ from .audit import AuditRecord, audit
 from .derivation import Derivation, Step
 from .latex import latex
 from .symbols import PARAMETER
-from .walkthrough import _display, _model, _verdict_line
+from .walkthrough import _model, _printed_blocks, _step_head
 
 __all__ = ["notebook", "render_notebook", "show"]
 
@@ -114,16 +114,8 @@ def render_notebook(d: Derivation, records: list[AuditRecord] | None = None) -> 
         "names = d.latex_names")
     add(_code, _parameters(d))
     for k, step in enumerate(d.steps, start=1):
-        text = [f"### Step {k} — {step.label}" + (f" · {step.title}" if step.title else ""),
-                f"**What was done.** {step.how}"]
-        if step.why:
-            text.append(f"**Why.** {step.why}")
-        for f in d.published:
-            if f.target == step.label:
-                text += [f"**As printed in the paper** ({f.label.strip('()')}):",
-                         _display(f.latex)]
-                if f.label in by_label:
-                    text.append(_verdict_line(by_label[f.label]))
+        text = _step_head(k, step) + _printed_blocks(
+            [f for f in d.published if f.target == step.label], by_label, d.latex_names)
         add(_markdown, "\n\n".join(text))
         cell = add(_code, f"show(d.step({step.label!r}), values, names)")
         cell["metadata"]["crane_sym_step"] = step.label

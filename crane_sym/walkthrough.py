@@ -164,6 +164,13 @@ def _verdicts(d: Derivation, records: list[AuditRecord] | None) -> str:
     return "\n".join(rows)
 
 
+def _step_head(k: int, step: Step) -> list[str]:
+    """Heading, what was done and why, of step ``k`` (walkthrough and notebook)."""
+    head = [f"### Step {k} — {step.label}" + (f" · {step.title}" if step.title else ""),
+            f"**What was done.** {step.how}"]
+    return head + ([f"**Why.** {step.why}"] if step.why else [])
+
+
 _TABLE_STEP = re.compile(r"^(Table \d+), ")
 
 
@@ -245,11 +252,7 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
                 shown.add(name)
                 parts += _table(name, tables[name], d, by_label)
             continue
-        heading = f"### Step {k} — {step.label}"
-        parts.append(heading + (f" · {step.title}" if step.title else ""))
-        parts.append(f"**What was done.** {step.how}")
-        if step.why:
-            parts.append(f"**Why.** {step.why}")
+        parts += _step_head(k, step)
         parts.append(_display(_statement_tex(step.statement, names)))
         parts += _printed_blocks([f for f in d.published if f.target == step.label
                                   and f.target not in in_table], by_label, names)
