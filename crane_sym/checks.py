@@ -181,10 +181,12 @@ def difference(printed: sp.Eq, derived: sp.Eq, *, max_ops: int = 300) -> sp.Expr
     else:
         rp, rd = residual(printed), residual(derived)
         pairs = [(rp, rd), (rp, -rd)]
+        expanded_rp = sp.expand(rp)
         for term in sp.Add.make_args(sp.expand(rd)):
-            coeff = sp.expand(rp).coeff(term.as_coeff_Mul()[1])
-            if coeff != 0 and term.as_coeff_Mul()[0] != 0:
-                pairs.append((rp, rd * coeff / term.as_coeff_Mul()[0]))
+            scale, core = term.as_coeff_Mul()
+            coeff = expanded_rp.coeff(core)
+            if coeff != 0 and scale != 0:
+                pairs.append((rp, rd * coeff / scale))
                 break
     best = None
     for a, b in pairs:  # expand cancels what the two share; no trigsimp roulette
