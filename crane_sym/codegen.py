@@ -19,12 +19,14 @@ import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
 from . import __version__, gear_kernels, kernels
-from .derivation import Derivation, Output
+from .derivation import Derivation, Output, TabulatedOutput
 from .entire import Z, plan
 from .inplace import chain
+from .phase_table import PhaseTable
 from .involute import ACOS_MESSAGES
 from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
 from .symbols import TIME, SymbolTable
+from .tabulated import render_tabulated
 
 
 class _Printer(NumPyPrinter):
@@ -358,14 +360,18 @@ def _kernel_source(functions: Sequence[str]) -> str:
 
 
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
-                  rules: Sequence[Rule] | None = None, scene_note: str = "") -> str:
+                  rules: Sequence[Rule] | None = None, scene_note: str = "",
+                  tables: Sequence[tuple[TabulatedOutput, PhaseTable]] = ()) -> str:
     """Full source of ``generated/<d.id>.py``; deterministic for a given
-    derivation and SymPy version. ``scene_note`` describes a specialization."""
+    derivation and SymPy version. ``scene_note`` describes a specialization;
+    ``tables`` are a scene's tabulated responses (``crane_sym.tabulated``)."""
     outputs = list(d.outputs if outputs is None else outputs)
-    labels = sorted({lab for o in outputs for lab in o.labels},
+    labels = sorted({lab for o in [*outputs, *(t for t, _ in tables)] for lab in o.labels},
                     key=lambda s: (not s.startswith("("), len(s), s))
     listing = "\n".join(f"    {_signature(o)} -> [{o.unit}]    eq {', '.join(o.labels)}"
                         for o in outputs)
+    listing += "".join(f"\n    {o.name}(t) -> [{o.unit}]    eq {', '.join(o.labels)}"
+                       for o, _ in tables)
     header = (f'"""Numeric functions for derivation {d.id!r}. Generated; do not edit.\n\n'
               f"Source: crane_sym.derivations.{d.id} (paper {d.paper}:\n"
               f"{d.title}).\n"
@@ -375,9 +381,11 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
               "regenerate with `crane-sym generate`.\n\n"
               f"Functions and argument order:\n{listing}\n"
               '"""\n')
-    names = ", ".join(repr(o.name) for o in outputs)
+    names = ", ".join(repr(o.name) for o in [*outputs, *(t for t, _ in tables)])
     helpers: dict[int, str] = {}
     functions = ["\n" + render_function(o, d.symbols, rules, helpers) for o in outputs]
+    functions += ["\n" + render_tabulated(o, table, "Tabulated for this scene by "
+                                           "crane_sym.phase_table.") for o, table in tables]
     helper_source = ["\n" + render_helper(key, name) for key, name in helpers.items()]
     parts = [header, "import numpy as np\n", f"__all__ = [{names}]\n",
              "\n" + _kernel_source(functions + helper_source), *helper_source, *functions]

@@ -72,6 +72,27 @@ class Output:
 
 
 @dataclass(frozen=True)
+class TabulatedOutput:
+    """A response a scene's data decide the shape of, emitted as a table.
+
+    A piecewise-linear run (backlash, brakes that stick) has phases whose
+    number and ends depend on the data, so it has no one expression in the
+    parameters. A scene fixes the data: ``tabulate(values, options)`` (SI
+    values by name, the scene's options) solves the run in closed form phase
+    by phase and returns a ``crane_sym.phase_table.PhaseTable`` of the output,
+    which the scene's module carries as arrays. ``args`` are the parameters it
+    needs; the generated function takes time only.
+    """
+
+    name: str
+    args: tuple[sp.Symbol, ...]
+    labels: tuple[str, ...]
+    summary: str
+    unit: str
+    tabulate: Callable[[Mapping[str, float], Mapping[str, Any]], Any]
+
+
+@dataclass(frozen=True)
 class ODESystem:
     """Equations of motion as a user would hand them to a numerical solver.
 
@@ -177,6 +198,8 @@ class Derivation:
         The paper's formulas, transcribed as printed.
     outputs : list of Output
         What ``crane-sym generate`` emits.
+    tabulated : list of TabulatedOutput
+        Responses a scene's module carries as tables (scene outputs only).
     ode_systems : list of ODESystem
         The equations of motion in solver-ready form, for the bench.
     switches : dict of str to Switch
@@ -198,6 +221,7 @@ class Derivation:
     steps: list[Step] = field(default_factory=list)
     published: list[PublishedFormula] = field(default_factory=list)
     outputs: list[Output] = field(default_factory=list)
+    tabulated: list[TabulatedOutput] = field(default_factory=list)
     ode_systems: list[ODESystem] = field(default_factory=list)
     switches: dict[str, Switch] = field(default_factory=dict)
     bench_parameters: dict[sp.Symbol, sp.Expr] = field(default_factory=dict)

@@ -318,6 +318,41 @@ def _matrix(shape, elements):
     return np.stack(flat).reshape(tuple(shape) + flat[0].shape)
 
 
+def _phase_sum(t, edges, first, powers, sigmas, omegas, cos_amps, sin_amps, consts):
+    """A piecewise closed form tabulated per phase, at times ``t``.
+
+    Phase i holds on [edges[i], edges[i + 1]) with τ = t − edges[i] and its
+    terms j = first[i] … first[i + 1] − 1:
+    consts[i] + Σ_j τ^k_j e^{σ_j τ} (a_j cos ω_j τ + b_j sin ω_j τ).
+    Each phase is evaluated on its own points only (one partition of t).
+    """
+    flat = t.ravel()
+    which = np.searchsorted(edges, flat, side="right") - 1
+    np.clip(which, 0, consts.size - 1, out=which)
+    order = np.argsort(which, kind="stable")
+    cuts = np.searchsorted(which[order], np.arange(consts.size + 1))
+    result = np.empty(flat.shape)
+    for i in range(consts.size):
+        points = order[cuts[i]:cuts[i + 1]]
+        if not points.size:
+            continue
+        tau = flat[points] - edges[i]
+        acc = np.full(tau.shape, consts[i])
+        for j in range(first[i], first[i + 1]):
+            if omegas[j]:
+                angle = omegas[j] * tau
+                term = cos_amps[j] * np.cos(angle) + sin_amps[j] * np.sin(angle)
+            else:
+                term = np.full(tau.shape, cos_amps[j])
+            if sigmas[j]:
+                term *= np.exp(sigmas[j] * tau)
+            if powers[j]:
+                term *= tau ** powers[j]
+            acc += term
+        result[points] = acc
+    return result.reshape(t.shape)
+
+
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {
     "_checked": (), "_broadcast": (), "_out": (), "_into": ("_out",),
@@ -332,6 +367,7 @@ DEPENDS = {
     "_sin_phase": ("_phase",), "_cos_phase": ("_phase",),
     "_compensated_cumsum": (),
     "_matrix": (),
+    "_phase_sum": (),
     "_taylor_tail": (),
     "_taylor_remainder": ("_taylor_tail",),
     "_cos_remainder": ("_taylor_remainder",), "_sin_remainder": ("_taylor_remainder",),

@@ -251,12 +251,12 @@ def load_scene(path_or_name: str | Path) -> Scene:
     if "outputs" not in head:
         raise SceneError(f"{where}: [scene] lacks ['outputs']")
     derivation = registry.get(derivation_id)
-    outputs = _outputs(head["outputs"], [o.name for o in derivation.outputs],
-                       derivation_id, where)
+    known = [*derivation.outputs, *derivation.tabulated]
+    outputs = _outputs(head["outputs"], [o.name for o in known], derivation_id, where)
     # Required: what the scene's outputs take, less what a switch fixes or the
     # scene keeps as an input; allowed: what any output takes.
-    required = {a for o in derivation.outputs if o.name in outputs for a in o.args}
-    allowed = {a for o in derivation.outputs for a in o.args}
+    required = {a for o in known if o.name in outputs for a in o.args}
+    allowed = {a for o in known for a in o.args}
     entries = [e for e in derivation.symbols
                if e.expr in allowed and e.role not in (TIME, STATE)]
     switched_off = _switched_off(derivation, options, where)

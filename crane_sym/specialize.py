@@ -17,13 +17,14 @@ import sympy as sp
 
 from . import registry
 from .codegen import render_module
-from .derivation import Derivation, Output, SpecializedLoad
+from .derivation import Derivation, Output, SpecializedLoad, TabulatedOutput
+from .phase_table import PhaseTable
 from .scenes import Scene, list_scenes, load_scene
 from .symbols import STATE, TIME, SymbolTable
 
 __all__ = ["module_name", "operation_count", "render_scene_module", "scene_files",
            "scene_values", "shipped_scene_modules", "specialize", "specialize_load",
-           "switched_off"]
+           "switched_off", "tabulated_names", "tabulated_outputs"]
 
 
 def scene_values(d: Derivation | SymbolTable, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
@@ -56,12 +57,25 @@ def specialize(d: Derivation, scene: Scene) -> list[Output]:
         d.symbols[name].expr for name in scene.inputs}
     outputs = []
     for name in scene.outputs:
+        if name in tabulated_names(d):
+            continue                     # tabulated_outputs() makes those
         out = d.output(name)
         expr = out.expr.xreplace({s: v for s, v in values.items() if s in out.args})
         args = tuple(a for a in out.args if a in keep or a not in values)
         outputs.append(Output(out.name, expr, args, out.labels,
                               f"{out.summary} Specialized to scene {scene.name!r}.", out.unit))
     return outputs
+
+
+def tabulated_names(d: Derivation) -> set[str]:
+    """Names of the derivation's tabulated responses."""
+    return {o.name for o in d.tabulated}
+
+
+def tabulated_outputs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, PhaseTable]]:
+    """The scene's tabulated responses, each solved with the scene's data."""
+    return [(o, o.tabulate(scene.parameters, scene.options))
+            for o in d.tabulated if o.name in scene.outputs]
 
 
 def module_name(scene: Scene) -> str:
@@ -86,7 +100,8 @@ def render_scene_module(scene: Scene) -> str:
         note += f"\nSwitched off: {name} ({d.switches[name].description}: {fixed})."
     if scene.inputs:
         note += f"\nInputs left as arguments: {', '.join(scene.inputs)}."
-    return render_module(d, specialize(d, scene), scene_note=note)
+    return render_module(d, specialize(d, scene), scene_note=note,
+                         tables=tabulated_outputs(d, scene))
 
 
 def operation_count(outputs: list[Output]) -> int:

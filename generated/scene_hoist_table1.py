@@ -2,7 +2,7 @@
 
 Source: crane_sym.derivations.hoist_brakes (paper 001_544065b666a6bc39.txt:
 Hoists with safety brakes: gearbox torque in an emergency stop).
-Specialized to scene 'hoist_table1' (Table 1 hoist: emergency stop with safety brakes): outputs rigid_hook_speed_hoisting, rigid_hook_speed_lowering, elastic_natural_frequency, backlash_at_motor_shaft; folded in: omega1 = 157.07963267948966 rad/s, J1 = 20.0 kg*m^2, J2 = 500.0 kg*m^2, m_h = 10000.0 kg, m_p = 52000.0 kg, m_r = 52000.0 kg, r = 0.5 m, i_g = 26.2 1, i_t = 4.0 1, g = 9.81 m/s^2, M_SB = 130000.0 N*m, M_BB = 5800.0 N*m, c = 40000.0 N*m/rad, d_t = 1.0 s, t_SB = 0.1 s, t_BB = 0.4 s, delta = 0.05235987755982989 rad.
+Specialized to scene 'hoist_table1' (Table 1 hoist: emergency stop with safety brakes): outputs rigid_hook_speed_hoisting, rigid_hook_speed_lowering, elastic_natural_frequency, backlash_at_motor_shaft, elastic_gearbox_torque; folded in: omega1 = 157.07963267948966 rad/s, J1 = 20.0 kg*m^2, J2 = 500.0 kg*m^2, m_h = 10000.0 kg, m_p = 52000.0 kg, m_r = 52000.0 kg, r = 0.5 m, i_g = 26.2 1, i_t = 4.0 1, g = 9.81 m/s^2, M_SB = 130000.0 N*m, M_BB = 5800.0 N*m, c = 40000.0 N*m/rad, d_t = 1.0 s, t_SB = 0.1 s, t_BB = 0.4 s, delta = 0.05235987755982989 rad.
 Equations: (1), Fig. 9.
 Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
 
@@ -11,11 +11,12 @@ Functions and argument order:
     rigid_hook_speed_lowering(t) -> [m/s]    eq (1)
     elastic_natural_frequency() -> [rad/s]    eq Fig. 9
     backlash_at_motor_shaft() -> [rad]    eq Fig. 9
+    elastic_gearbox_torque(t) -> [1]    eq Fig. 9
 """
 
 import numpy as np
 
-__all__ = ['rigid_hook_speed_hoisting', 'rigid_hook_speed_lowering', 'elastic_natural_frequency', 'backlash_at_motor_shaft']
+__all__ = ['rigid_hook_speed_hoisting', 'rigid_hook_speed_lowering', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'elastic_gearbox_torque']
 
 
 def _checked(name, value, sign, what):
@@ -82,6 +83,41 @@ def _into(out, shape, result):
     out = _out(out, shape)
     np.copyto(out, result)
     return out
+
+
+def _phase_sum(t, edges, first, powers, sigmas, omegas, cos_amps, sin_amps, consts):
+    """A piecewise closed form tabulated per phase, at times ``t``.
+
+    Phase i holds on [edges[i], edges[i + 1]) with τ = t − edges[i] and its
+    terms j = first[i] … first[i + 1] − 1:
+    consts[i] + Σ_j τ^k_j e^{σ_j τ} (a_j cos ω_j τ + b_j sin ω_j τ).
+    Each phase is evaluated on its own points only (one partition of t).
+    """
+    flat = t.ravel()
+    which = np.searchsorted(edges, flat, side="right") - 1
+    np.clip(which, 0, consts.size - 1, out=which)
+    order = np.argsort(which, kind="stable")
+    cuts = np.searchsorted(which[order], np.arange(consts.size + 1))
+    result = np.empty(flat.shape)
+    for i in range(consts.size):
+        points = order[cuts[i]:cuts[i + 1]]
+        if not points.size:
+            continue
+        tau = flat[points] - edges[i]
+        acc = np.full(tau.shape, consts[i])
+        for j in range(first[i], first[i + 1]):
+            if omegas[j]:
+                angle = omegas[j] * tau
+                term = cos_amps[j] * np.cos(angle) + sin_amps[j] * np.sin(angle)
+            else:
+                term = np.full(tau.shape, cos_amps[j])
+            if sigmas[j]:
+                term *= np.exp(sigmas[j] * tau)
+            if powers[j]:
+                term *= tau ** powers[j]
+            acc += term
+        result[points] = acc
+    return result.reshape(t.shape)
 
 
 def rigid_hook_speed_hoisting(t, *, out=None):
@@ -162,3 +198,72 @@ def backlash_at_motor_shaft(*, out=None):
     """
     shape = _broadcast()
     return _into(out, shape, 27823993466796606199971640168145/20282409603651670423947251286016)
+
+
+_TABLE_ELASTIC_GEARBOX_TORQUE = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.1, 0.1074719531602, 0.1479346131459, 0.1715070637225, 0.2119697237082,
+              0.2277688696214, 0.2682315296071, 0.2918039801837, 0.3322666401694, 0.3480657860826,
+              0.3885284460683, 0.4, 0.4118056961865, 0.4419769195551, 0.4619850901963,
+              0.4921563135649, 0.5151610863832, 0.5453323097518, 0.565340480393, 0.5955117037616,
+              0.6185164765799, 0.6486876999485, 0.6686958705897, 0.6842494680993, 0.7013648239872,
+              0.7026328769089, 0.7248067653936, 0.7922500296236, 0.8100663517856, 1.0]),
+    # first: first term of each phase
+    np.array([0, 1, 2, 2, 3, 3, 4, 4, 5, 5, 6, 6, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13,
+              13, 14, 15, 15, 15, 15], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([143.8559563251, 143.8559563251, 143.8559563251, 143.8559563251, 143.8559563251,
+              143.8559563251, 143.8559563251, 143.8559563251, 143.8559563251, 143.8559563251,
+              143.8559563251, 143.8559563251, 143.8559563251, 44.72135955, 143.8559563251]),
+    # cos_amps: cosine amplitudes
+    np.array([0.09664386693908, 1.520892607331, 0.6412993836655, 0.6412993836656, 0.6412993836654,
+              0.6412993836655, 0.6412993836654, -5.343055714335, 0.448132410924, 0.4481324109244,
+              0.4481324109241, 0.4481324109246, 0.4481324109242, -1.998750452139, -0.2617751882993]),
+    # sin_amps: sine amplitudes
+    np.array([0.0, -0.09367689765359, -5.115125536812, 1.382253516797, -5.115125536812,
+              1.382253516797, -5.115125536812, -0.2332811737748, 3.384304170047, -5.329337840183,
+              3.384304170047, -5.329337840183, 3.384304170047, -12.58181901073, -3.869879445083]),
+    # consts: constant of each phase
+    np.array([0.9033561330609, -0.6412993836655, 0.0, -0.6412993836655, 0.0, -0.6412993836656,
+              0.0, -0.6412993836655, 0.0, -0.6412993836656, 0.0, -0.6412993836657,
+              -0.4481324109247, 0.0, -0.4481324109246, 0.0, -0.4481324109248, 0.0,
+              -0.4481324109247, 0.0, -0.448132410925, 0.0, -0.4481324109247, 0.0, 0.0,
+              1.998750452139, -0.448132410925, 0.0, 0.0, 0.0]),
+)
+
+
+def elastic_gearbox_torque(t, *, out=None):
+    """Relative gearbox torque M_G/M_st of the elastic drive with the coupling backlash, emergency stop while lowering the payload m_p: motor torque lost at t = 0, safety brakes after t_SB, service brakes after t_BB, brakes that stick at zero speed. Eq Fig. 9.
+
+    Tabulated for this scene by crane_sym.phase_table.
+    The run has 30 phases, each in closed form; they end at
+    0.1 s safety brake, 0.107472 s open, 0.147935 s close other, 0.171507 s
+    open, 0.21197 s close hold, 0.227769 s open, 0.268232 s close other,
+    0.291804 s open, 0.332267 s close hold, 0.348066 s open, 0.388528 s
+    close other, 0.4 s service brake, 0.411806 s open, 0.441977 s close
+    hold, 0.461985 s open, 0.492156 s close other, 0.515161 s open, 0.545332
+    s close hold, 0.56534 s open, 0.595512 s close other, 0.618516 s open,
+    0.648688 s close hold, 0.668696 s open, 0.684249 s drum rests, 0.701365
+    s close other, 0.702633 s drum slips +, 0.724807 s open, 0.79225 s drum
+    rests, 0.810066 s motor rests, 1 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 1.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [1], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 1.0:
+        raise ValueError(f"t must be <= 1.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_ELASTIC_GEARBOX_TORQUE))

@@ -197,3 +197,96 @@ def test_first_crossing_is_never_later_than_a_dense_scan():
             continue
         assert hit is not None and hit <= grid[changes[0] + 1] + 1e-12
         assert abs(form.state(hit, x0) @ w - 0.3) < 1e-8 * (1 + np.abs(g).max())
+
+
+# --- the tabulated response a scene's module carries (crane_sym.phase_table) -------
+def _scene_module(tmp_path):
+    from crane_sym.scene_run import import_module_file
+    from crane_sym.specialize import scene_files
+    (name, text), = scene_files("hoist_table1").items()
+    (tmp_path / name).write_text(text)
+    return import_module_file(tmp_path / name)
+
+
+def test_scene_module_carries_the_derivation_table(tmp_path):
+    """The printed arrays are the run's table rounded to 13 digits, and the
+    function is the phases' closed forms to ~1e-12 of the peak."""
+    from crane_sym.derivations.hoist_brakes.elastic import hoist_from, torque_table
+    from crane_sym.scenes import load_scene
+    from crane_sym.tabulated import rounded
+    module = _scene_module(tmp_path)
+    scene = load_scene("hoist_table1")
+    table = torque_table(scene.parameters, scene.options)
+    for printed, ours in zip(module._TABLE_ELASTIC_GEARBOX_TORQUE, rounded(table).arrays()):
+        assert np.array_equal(printed, ours)
+    q = scene.parameters
+    hoist = hoist_from(q, q["m_p"])
+    run = hoist.run(q["omega1"], 1.0, 0.0, q["t_SB"], q["t_BB"])
+    times = np.linspace(0.0, 1.0, 100_001)
+    ref = hoist.relative_torque(run, times)
+    got = module.elastic_gearbox_torque(times)
+    assert np.max(np.abs(got - ref)) < 2e-11 * np.max(np.abs(ref))
+    assert np.max(np.abs(table(times) - ref)) < 1e-13 * np.max(np.abs(ref))
+    buffer = np.empty_like(times)
+    assert module.elastic_gearbox_torque(times, out=buffer) is buffer
+    assert float(module.elastic_gearbox_torque(0.5)) == pytest.approx(got[50_000], abs=1e-15)
+
+
+def test_scene_module_against_solve_ivp(tmp_path):
+    """The generated function against DOP853 with events at rtol 1e-12, the
+    whole run of the scene (1 s, the rated payload lowered)."""
+    from crane_sym.derivations.hoist_brakes.elastic import hoist_from
+    from crane_sym.scenes import load_scene
+    module = _scene_module(tmp_path)
+    q = load_scene("hoist_table1").parameters
+    hoist = hoist_from(q, q["m_p"])
+    schedule = [(0.0, "motor torque lost"), (q["t_SB"], "safety brake"),
+                (q["t_BB"], "service brake")]
+    times, states = _Integrated(hoist, 1e-4).run(*hoist.start(q["omega1"]), 1.0, schedule)
+    contact = np.clip(states[:, 2] - states[:, 0], None, 0.0)
+    hold = states[:, 2] - states[:, 0] >= 0
+    ref = np.where(hold, hoist.c * (states[:, 2] - states[:, 0]),
+                   hoist.c * np.minimum(contact + hoist.s, 0.0)) / hoist.M_st
+    got = module.elastic_gearbox_torque(times)
+    assert np.max(np.abs(got - ref)) < 1e-6 * np.max(np.abs(ref))
+
+
+@pytest.mark.parametrize("payload,stiffness,backlash_deg", [
+    (0.0, 4e4, 3.0), (52e3, 4e4, 3.0), (0.0, 4e2, 3.0), (0.0, 4e7, 3.0),
+    (0.0, 4e4, 1e-9), (52e3, 4e4, 0.0)])
+def test_table_is_the_run_on_hard_cases(payload, stiffness, backlash_deg):
+    """Payload -> 0, tiny and huge stiffness, backlash -> 0: the table (what a
+    scene's module evaluates) against the run's own closed forms."""
+    from crane_sym.phase_table import tabulate
+    h = table1_hoist(payload, backlash_deg=backlash_deg, stiffness=stiffness)
+    run = h.run(50 * np.pi, 1.0, 0.0, 0.1, 0.4)
+    table = tabulate(run, lambda mode: h.torque(mode[0]), scale=h.M_st)
+    times = np.sort(np.concatenate([np.linspace(0, 1, 20_001), table.edges]))
+    ref = h.relative_torque(run, times)      # w·x(t) summed in another order
+    assert np.max(np.abs(table(times) - ref)) < 4e-12 * np.max(np.abs(ref))
+
+
+def test_table_with_backlash_to_zero_is_the_no_backlash_closed_form():
+    """delta -> 0: the tabulated response agrees with the generated
+    no-backlash closed form while that one holds (drum sliding, before t_BB)."""
+    from crane_sym.derivations.hoist_brakes.elastic import torque_table
+    from crane_sym.derivations.hoist_brakes.model import TABLE1
+    from crane_sym.generated import hoist_brakes as gen
+    q = {k: float(v) for k, v in TABLE1.items()} | {"g": 9.81, "m_p": 0.0,
+                                                     "omega1": 50 * np.pi}
+    table = torque_table(q | {"delta": 1e-12}, {"duration": 0.25})
+    rest = next((t for t, e in zip(table.edges[1:], table.events) if "rests" in e), 0.25)
+    times = np.linspace(0.0, rest, 2001)
+    closed = gen.elastic_gearbox_torque_no_backlash(
+        times, J1=q["J1"], J2=q["J2"], m_h=q["m_h"], m_p=0.0, m_r=q["m_r"], r=q["r"],
+        i_g=q["i_g"], i_t=q["i_t"], g=9.81, c=q["c"], M_SB=q["M_SB"], t_SB=q["t_SB"])
+    assert np.max(np.abs(table(times) - closed)) < 1e-8 * np.max(np.abs(closed))
+
+
+@pytest.mark.parametrize("bad,match", [(-0.1, ">= 0"), (1.5, "<= 1.0"), (np.nan, "finite"),
+                                       ("0.3", "number")])
+def test_scene_function_rejects_bad_times(tmp_path, bad, match):
+    module = _scene_module(tmp_path)
+    with pytest.raises((ValueError, TypeError), match=match) as info:
+        module.elastic_gearbox_torque(bad)
+    assert "t" in str(info.value)

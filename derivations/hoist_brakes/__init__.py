@@ -18,7 +18,7 @@ Files:
 - ``steps_numbers.py``: the printed numbers from Table 1, one step per reading.
 - ``elastic.py``: the elasto-kinetic emergency stop of Fig. 9 (piecewise linear).
 - ``published.py``: the printed formulas and numbers (``PUBLISHED``).
-- ``outputs.py``: the Outputs for code generation.
+- ``outputs.py``: the Outputs for code generation (and the tabulated Fig. 9 response).
 - ``hard_cases.py``: the seeded hard cases for ``crane-sym accuracy``.
 - ``report.py``: ``scene_report`` for ``crane-sym run``.
 
@@ -31,7 +31,7 @@ from crane_sym.derivation import Derivation
 from . import elastic, steps, steps_numbers
 from .hard_cases import hard_cases
 from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
-from .outputs import outputs
+from .outputs import outputs, tabulated
 from .published import PUBLISHED
 from .report import scene_report
 
@@ -51,4 +51,5 @@ def build() -> Derivation:
     elastic.fig9_steps(d)                # Fig. 9
     d.published.extend(PUBLISHED)
     d.outputs.extend(outputs(d))
+    d.tabulated.extend(tabulated())
     return d

@@ -16,10 +16,12 @@ is the flank torque over the rated static torque M_st (the paper's M_G,rel).
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any, Mapping
 
 import numpy as np
 
 from crane_sym.derivation import Derivation
+from crane_sym.phase_table import PhaseTable, tabulate
 from crane_sym.piecewise_linear import (Guard, PiecewiseResult, closed_form, first_crossing,
                                        simulate)
 
@@ -61,7 +63,7 @@ class TwoMassHoist:
                 raise ValueError(f"{name} must be >= 0, got {getattr(self, name)!r}")
 
     # --- the hybrid system ------------------------------------------------------
-    def _torque(self, contact: int) -> tuple[np.ndarray, float]:
+    def torque(self, contact: int) -> tuple[np.ndarray, float]:
         """Flank torque as weights·x + constant."""
         if contact == GAP:
             return np.zeros(4), 0.0
@@ -71,7 +73,7 @@ class TwoMassHoist:
     def matrices(self, mode: tuple) -> tuple[np.ndarray, np.ndarray]:
         """(A, b) of a mode (contact, motor brake, drum brake, motor torque on)."""
         contact, motor, drum, driven = mode
-        w, k = self._torque(contact)
+        w, k = self.torque(contact)
         A, b = np.zeros((4, 4)), np.zeros(4)
         brake = {OFF: 0.0, FORWARD: -1.0, BACKWARD: 1.0, STUCK: 0.0}
         if motor != STUCK:
@@ -91,7 +93,7 @@ class TwoMassHoist:
         out = {HOLD: [Guard("open", u, 0.0, -1)], OTHER: [Guard("open", u, self.s, 1)],
                GAP: [Guard("close hold", u, 0.0, 1),
                      Guard("close other", u, self.s, -1)]}[contact]
-        w, k = self._torque(contact)
+        w, k = self.torque(contact)
         for side, state, index, sign, limit, load in (
                 ("motor", motor, 1, 1.0, self.M_BB, -(self.M_M if driven else 0.0)),
                 ("drum", drum, 3, -1.0, self.M_SB, self.M_L)):
@@ -139,7 +141,7 @@ class TwoMassHoist:
             return FORWARD
         if event.endswith("slips -"):
             return BACKWARD
-        w, k = self._torque(mode[0])
+        w, k = self.torque(mode[0])
         T = float(w @ x + k)
         net = T - (self.M_M if mode[3] else 0.0) if side == "motor" else self.M_L - T
         limit = self.M_BB if side == "motor" else self.M_SB
@@ -169,7 +171,7 @@ class TwoMassHoist:
         for i, seg in enumerate(result.segments):
             mask = which == i
             if np.any(mask):
-                w, k = self._torque(seg.mode[0])
+                w, k = self.torque(seg.mode[0])
                 out[mask] = (seg.state(np.asarray(times)[mask]) @ w + k) / self.M_st
         return out
 
@@ -178,7 +180,7 @@ class TwoMassHoist:
         form's extrema (zeros of the torque's rate, found like any event)."""
         best = (0.0, 0.0)
         for seg in result.segments:
-            w, k = self._torque(seg.mode[0])
+            w, k = self.torque(seg.mode[0])
             if not w.any():
                 continue
             A, b = self.matrices(seg.mode)
@@ -207,18 +209,36 @@ class TwoMassHoist:
         return best
 
 
+def hoist_from(q: Mapping[str, float], payload: float) -> TwoMassHoist:
+    """The two-mass hoist of SI values by Table 1's names (J1, J2, m_h, m_r, r,
+    i_g, i_t, g, c, delta, M_SB, M_BB; J1, J2 and the brake torques of the whole
+    drive, see the model text), lowering ``payload`` kg."""
+    gear = q["r"] / (q["i_g"] * q["i_t"])
+    M_L = (q["m_h"] + payload) * q["g"] * gear
+    return TwoMassHoist(q["J1"], q["J2"] / q["i_g"] ** 2 + (q["m_h"] + payload) * gear ** 2,
+                        q["c"], q["delta"] * q["i_g"], M_L,
+                        (q["m_h"] + q["m_r"]) * q["g"] * gear, q["M_SB"] / q["i_g"],
+                        q["M_BB"], M_L)
+
+
 def table1_hoist(payload: float, g: float = 9.81, backlash_deg: float | None = None,
                  stiffness: float | None = None) -> TwoMassHoist:
-    """The two-mass hoist of Table 1 (J1, J2, M_SB, M_BB read as values of the whole
-    drive, see the model text), lowering ``payload`` kg on the hook."""
+    """The two-mass hoist of Table 1, lowering ``payload`` kg on the hook."""
     from .model import TABLE1
-    T = {k: float(v) for k, v in TABLE1.items()}
-    gear = T["r"] / (T["i_g"] * T["i_t"])
-    M_L = (T["m_h"] + payload) * g * gear
-    s = np.radians(T["backlash_deg"] if backlash_deg is None else backlash_deg) * T["i_g"]
-    return TwoMassHoist(T["J1"], T["J2"] / T["i_g"] ** 2 + (T["m_h"] + payload) * gear ** 2,
-                        T["c"] if stiffness is None else stiffness, s, M_L,
-                        (T["m_h"] + T["m_r"]) * g * gear, T["M_SB"] / T["i_g"], T["M_BB"], M_L)
+    q = {k: float(v) for k, v in TABLE1.items()}
+    q.update(g=g, delta=np.radians(q["backlash_deg"] if backlash_deg is None else backlash_deg))
+    if stiffness is not None:
+        q["c"] = stiffness
+    return hoist_from(q, payload)
+
+
+def torque_table(q: Mapping[str, float], options: Mapping[str, Any]) -> PhaseTable:
+    """M_G/M_st of the emergency stop while lowering the payload ``q["m_p"]``, from
+    ω1 with the motor torque lost at t = 0, brakes after t_SB and t_BB, up to the
+    scene's ``duration``: the phases in closed form, as a table."""
+    hoist = hoist_from(q, q["m_p"])
+    run = hoist.run(q["omega1"], options["duration"], 0.0, q["t_SB"], q["t_BB"])
+    return tabulate(run, lambda mode: hoist.torque(mode[0]), scale=hoist.M_st)
 
 
 #: Table 1's motor speed [rad/s] and brake delays [s].

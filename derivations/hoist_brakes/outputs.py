@@ -6,9 +6,10 @@ from __future__ import annotations
 
 import sympy as sp
 
-from crane_sym.derivation import Derivation, Output
+from crane_sym.derivation import Derivation, Output, TabulatedOutput
 
 from . import model as _model
+from .elastic import torque_table
 
 from .model import (BF_SB, LF, MF, J, J1, J2, M_BB, M_L, M_M, M_SB, M_st, d_omega, d_t, g,
                     i_g, i_t, m_h, m_p, m_r, omega1, phi5, r, t, t_BB, t_SB, c, delta)
@@ -100,3 +101,16 @@ def outputs(d: Derivation) -> list[Output]:
         out.append(Output(f"rigid_stopping_time_{mode}", stop, HOIST[:4] + HOIST[5:] + BRAKES,
                           ("(1)",), f"Time the rigid drive takes to stop, {mode}.", "s"))
     return out
+
+
+def tabulated() -> list[TabulatedOutput]:
+    """The elasto-kinetic response of Fig. 9 with backlash: its phases depend on
+    the data, so a scene's module carries it as a table (``crane_sym.phase_table``)."""
+    return [TabulatedOutput(
+        "elastic_gearbox_torque",
+        (J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, delta, M_SB, M_BB, t_SB, t_BB, omega1),
+        ("Fig. 9",),
+        "Relative gearbox torque M_G/M_st of the elastic drive with the coupling backlash, "
+        "emergency stop while lowering the payload m_p: motor torque lost at t = 0, safety "
+        "brakes after t_SB, service brakes after t_BB, brakes that stick at zero speed.",
+        "1", torque_table)]

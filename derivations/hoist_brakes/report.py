@@ -32,7 +32,7 @@ def scene_report(scene, module):
     from crane_sym.scene_run import time_function
     from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
 
-    from .elastic import TwoMassHoist
+    from .elastic import hoist_from
 
     q = scene.parameters
     if scene.options.get("payload_limit", "rated") == "rated" and q["m_p"] > q["m_r"]:
@@ -69,20 +69,18 @@ def scene_report(scene, module):
                                  gen.peak_relative_gearbox_torque_hoisting(phi, mf, 1.0, bf)))
         fig8.append(panel)
 
-    # Fig. 9: elasto-kinetic, lowering, backlash, closed form per phase
-    J_d = q["J2"] / q["i_g"] ** 2
-    gear = q["r"] / (q["i_g"] * q["i_t"])
+    # Fig. 9: elasto-kinetic, lowering, backlash, closed form per phase; the
+    # scene's payload from its module's table, the hook alone solved here
     backlash = float(module.backlash_at_motor_shaft())
     fig9 = Panel("Fig. 9: relative gearbox torque, elastic drive, emergency stop lowering",
                  r"$M_G/M_{st}$", group="Fig. 9")
     peaks = {}
-    M_st = (q["m_h"] + q["m_r"]) * q["g"] * gear
     for payload, name in ((0.0, "hook only"), (q["m_p"], f"payload {q['m_p'] / 1e3:g} t")):
-        M_L = (q["m_h"] + payload) * q["g"] * gear
-        model = TwoMassHoist(q["J1"], J_d + (q["m_h"] + payload) * gear ** 2, q["c"],
-                             backlash, M_L, M_st, q["M_SB"] / q["i_g"], q["M_BB"], M_L)
+        model = hoist_from(q, payload)
         run = model.run(q["omega1"], times[-1], 0.0, q["t_SB"], q["t_BB"])
-        fig9.curves.append((f"lowering, {name}", times, model.relative_torque(run, times)))
+        torque = (module.elastic_gearbox_torque(times) if payload == q["m_p"]
+                  else model.relative_torque(run, times))
+        fig9.curves.append((f"lowering, {name}", times, torque))
         peaks[name] = model.peak(run)
     hook_peak = peaks["hook only"]
     load_peak = [v for k, v in peaks.items() if k != "hook only"][0]

@@ -1,0 +1,82 @@
+"""A run of a piecewise-linear system as a table of closed forms, one per phase.
+
+:func:`crane_sym.piecewise_linear.simulate` finds the phases of one run (a
+scene's data); an output g = w·x + k of the state is then, on phase i,
+
+.. math::
+
+    g(t) = c_i + \\sum_j \\tau^{k_j} e^{\\sigma_j \\tau}
+           (a_j \\cos \\omega_j \\tau + b_j \\sin \\omega_j \\tau),
+    \\qquad \\tau = t - t_i,
+
+with the terms of the phase's closed form merged by (k, σ, ω). The table is
+what a scene's generated module carries (``crane_sym.tabulated`` prints it):
+the response as arithmetic only, no event search at run time. The same kernel
+(``kernels._phase_sum``) evaluates it here and in the generated code.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Hashable
+
+import numpy as np
+
+from .kernels import _phase_sum
+from .piecewise_linear import PiecewiseResult
+
+__all__ = ["PhaseTable", "tabulate"]
+
+
+@dataclass(frozen=True)
+class PhaseTable:
+    """Phase starts and the run's end (``edges``), each phase's terms
+    (``first[i]:first[i + 1]``) and constant, the event that ended each phase."""
+
+    edges: np.ndarray
+    first: np.ndarray
+    powers: np.ndarray
+    sigmas: np.ndarray
+    omegas: np.ndarray
+    cos_amps: np.ndarray
+    sin_amps: np.ndarray
+    consts: np.ndarray
+    events: tuple[str, ...]
+
+    def arrays(self) -> tuple[np.ndarray, ...]:
+        """The arrays in the order ``kernels._phase_sum`` takes them."""
+        return (self.edges, self.first, self.powers, self.sigmas, self.omegas,
+                self.cos_amps, self.sin_amps, self.consts)
+
+    def __call__(self, t: np.ndarray | float) -> np.ndarray:
+        """The output at times ``t`` (inside [edges[0], edges[-1]])."""
+        return _phase_sum(np.asarray(t, dtype=float), *self.arrays())
+
+
+def tabulate(result: PiecewiseResult,
+             output: Callable[[Hashable], tuple[np.ndarray, float]],
+             scale: float = 1.0) -> PhaseTable:
+    """The table of g = (w·x + k)/``scale`` over the phases of ``result``;
+    ``output(mode)`` gives (w, k) of each phase's mode (a contact changes them).
+    Phases of zero length (an event at the instant another ends) are left out."""
+    segments = [s for s in result.segments if s.t1 > s.t0] or result.segments[-1:]
+    edges = [result.segments[0].t0] + [s.t1 for s in segments]
+    first, consts, rows = [0], [], []
+    for seg in segments:
+        w, k = output(seg.mode)
+        form = seg.form
+        amps, _ = form.scalar_terms(np.asarray(w, float) / scale, 0.0, seg.x0)
+        merged: dict[tuple[float, float, float], list[float]] = {}
+        for a, p, s, o, sine in zip(amps, form.powers, form.sigmas, form.omegas, form.sine):
+            merged.setdefault((p, s, o), [0.0, 0.0])[int(bool(sine))] += a
+        size = sum(abs(a) for pair in merged.values() for a in pair)
+        const = k / scale
+        for (p, s, o), (a, b) in sorted(merged.items()):
+            if p == 0 and s == 0 and o == 0:
+                const += a               # the phase's constant part
+            elif abs(a) + abs(b) > 1e-15 * size:
+                rows.append((p, s, o, a, b))
+        consts.append(const)
+        first.append(len(rows))
+    cols = np.array(rows, dtype=float).reshape(-1, 5).T
+    return PhaseTable(np.array(edges), np.array(first, dtype=np.intp), *cols,
+                      np.array(consts), tuple(s.event for s in segments))
