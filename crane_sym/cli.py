@@ -236,11 +236,30 @@ def cmd_bench(args: argparse.Namespace) -> int:
         if args.format == "table":
             print("\n".join(lines[:5 + len(heads)]))
             print(f"wrote {md} and {', '.join(map(str, pngs))}")
+    for i in _ids(args.ids):
+        if registry.get(i).tabulated:
+            _bench_piecewise(i, out_dir, args.points, args.format == "table")
     if args.sampled:
         _bench_sampled(out_dir, args.format == "table")
     if args.format == "json":
         print(json.dumps(bench.as_dicts(everything), indent=2))
     return 0
+
+
+def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
+    """Piecewise-linear runs in closed form against solve_ivp with events."""
+    from .bench_piecewise import scene_sections
+    start = time.perf_counter()
+    sections = scene_sections(i, points)
+    text = "\n".join([f"# Bench: {i}, piecewise-linear runs against solve_ivp", "",
+                      f"Absolute times are this machine's ({_machine()}); every ratio comes "
+                      f"from this one run ({time.perf_counter() - start:.0f} s).", "",
+                      *sections])
+    path = out_dir / f"bench_piecewise_{i}.md"
+    path.write_text(text, encoding="utf-8")
+    if show:
+        print(text)
+        print(f"wrote {path}")
 
 
 def _bench_sampled(out_dir: Path, show: bool) -> None:

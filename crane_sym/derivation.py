@@ -77,11 +77,11 @@ class TabulatedOutput:
 
     A piecewise-linear run (backlash, brakes that stick) has phases whose
     number and ends depend on the data, so it has no one expression in the
-    parameters. A scene fixes the data: ``tabulate(values, options)`` (SI
-    values by name, the scene's options) solves the run in closed form phase
-    by phase and returns a ``crane_sym.phase_table.PhaseTable`` of the output,
-    which the scene's module carries as arrays. ``args`` are the parameters it
-    needs; the generated function takes time only.
+    parameters. A scene fixes the data: ``run(values, options)`` (SI values by
+    name, the scene's options) returns the ``crane_sym.phase_table.HybridRun``,
+    whose table (the phases in closed form) the scene's module carries as
+    arrays. ``args`` are the parameters it needs; the generated function takes
+    time only.
     """
 
     name: str
@@ -89,7 +89,7 @@ class TabulatedOutput:
     labels: tuple[str, ...]
     summary: str
     unit: str
-    tabulate: Callable[[Mapping[str, float], Mapping[str, Any]], Any]
+    run: Callable[[Mapping[str, float], Mapping[str, Any]], Any]
 
 
 @dataclass(frozen=True)

@@ -17,14 +17,14 @@ the response as arithmetic only, no event search at run time. The same kernel
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable, Hashable
+from typing import Callable, Hashable, Sequence
 
 import numpy as np
 
 from .kernels import _phase_sum
-from .piecewise_linear import PiecewiseResult
+from .piecewise_linear import HybridSystem, PiecewiseResult, simulate
 
-__all__ = ["PhaseTable", "tabulate"]
+__all__ = ["HybridRun", "PhaseTable", "tabulate"]
 
 
 @dataclass(frozen=True)
@@ -80,3 +80,26 @@ def tabulate(result: PiecewiseResult,
     cols = np.array(rows, dtype=float).reshape(-1, 5).T
     return PhaseTable(np.array(edges), np.array(first, dtype=np.intp), *cols,
                       np.array(consts), tuple(s.event for s in segments))
+
+
+@dataclass(frozen=True)
+class HybridRun:
+    """One run of a piecewise-linear system and the output a scene wants of it:
+    what a ``derivation.TabulatedOutput`` returns for the scene's data, what the
+    bench hands to SciPy's integrators as the alternative."""
+
+    system: HybridSystem
+    mode: Hashable
+    x0: np.ndarray
+    t_end: float
+    schedule: Sequence[tuple[float, str]]
+    output: Callable[[Hashable], tuple[np.ndarray, float]]
+    scale: float = 1.0
+
+    def solve(self) -> PiecewiseResult:
+        """The phases in closed form (:func:`crane_sym.piecewise_linear.simulate`)."""
+        return simulate(self.system, self.mode, self.x0, self.t_end, self.schedule)
+
+    def table(self, result: PiecewiseResult | None = None) -> PhaseTable:
+        """The output's table over the phases of ``result`` (solved if not given)."""
+        return tabulate(self.solve() if result is None else result, self.output, self.scale)

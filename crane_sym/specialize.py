@@ -74,7 +74,7 @@ def tabulated_names(d: Derivation) -> set[str]:
 
 def tabulated_outputs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, PhaseTable]]:
     """The scene's tabulated responses, each solved with the scene's data."""
-    return [(o, o.tabulate(scene.parameters, scene.options))
+    return [(o, o.run(scene.parameters, scene.options).table())
             for o in d.tabulated if o.name in scene.outputs]
 
 

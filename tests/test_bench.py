@@ -211,3 +211,23 @@ def test_drum_drive_rows():
         loose = mine["DOP853 rtol=0.001 [generated RHS+Jacobian]"].max_error_over_peak
         assert tight < 1e-8 < loose
         assert all(math.isnan(r.ratio_to_generated) for r in mine.values())
+
+
+def test_piecewise_bench_rows_and_errors():
+    """bench_piecewise: the closed form against an mpmath exp(Mt) reference to
+    ~1e-12 of the peak; a capped-step DOP853 at rtol 1e-12 within 1e-6; the
+    summary names the fastest integrator reaching each accuracy (or none)."""
+    import numpy as np
+
+    from crane_sym.bench_piecewise import bench_run, summary
+    from crane_sym.derivations.hoist_brakes.elastic import table1_hoist
+    run = table1_hoist(0.0).emergency_stop(50 * np.pi, 0.3)
+    rows, table = bench_run(run, points=200, reference_points=60, methods=("DOP853",),
+                            rtols=(1e-12,), repeats=1)
+    by = {r.method: r for r in rows}
+    assert by["closed form: evaluate 200 times"].error < 1e-11
+    assert by["DOP853, max_step T/10"].error < 1e-6
+    assert by["DOP853, max_step T/10"].phases == len(table.events)
+    lines = summary(rows, 200)
+    assert any(line.startswith("fastest integrator within 1e-06") for line in lines)
+    assert lines[0].startswith("closed form:") and "phases" in lines[0]

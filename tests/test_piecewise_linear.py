@@ -1,11 +1,12 @@
 """crane_sym.piecewise_linear: closed forms against expm, event search without a
 skipped crossing, and paper 001's Fig. 9 run against solve_ivp with events
 (and its backlash -> 0 limit against the no-backlash closed form)."""
-import time
+from dataclasses import replace
 
 import numpy as np
 import pytest
 
+from crane_sym.bench_piecewise import integrate_hybrid
 from crane_sym.derivations.hoist_brakes.elastic import FORWARD, HOLD, OFF, table1_hoist
 from crane_sym.piecewise_linear import closed_form, first_crossing, simulate
 
@@ -56,60 +57,21 @@ def test_no_crossing_returns_none():
     assert first_crossing(form, np.array([0.5, 0.0]), np.array([1.0, 0.0]), 0.6, 20.0) is None
 
 
-class _Integrated:
-    """The same hybrid system, integrated by solve_ivp with events."""
-
-    def __init__(self, system, max_step=np.inf):
-        self.system, self.max_step = system, max_step
-
-    def run(self, mode, x0, t_end, schedule):
-        t, x, out_t, out_x = 0.0, np.asarray(x0, float), [], []
-        pending = sorted(schedule)
-        while t < t_end:
-            A, b = self.system.matrices(mode)
-            stop = pending[0][0] if pending else t_end
-            events = []
-            for guard in self.system.guards(mode):
-                w, k = np.array(guard.weights), guard.constant
-
-                def ev(_, y, w=w, k=k):
-                    return w @ y + k
-                ev.terminal, ev.direction = True, guard.direction
-                events.append((ev, guard.name))
-            sol = integrate.solve_ivp(lambda _, y: A @ y + b, (t, stop), x, method="DOP853",
-                                      rtol=1e-12, atol=1e-12, dense_output=True,
-                                      max_step=self.max_step,
-                                      events=[e for e, _ in events])
-            hits = [(te[0], name) for te, (_, name) in zip(sol.t_events, events)
-                    if len(te) and te[0] > t + 1e-12]
-            end, name = min(hits) if hits else (stop, None)
-            if name is None:
-                name = pending.pop(0)[1] if pending else "end"
-            grid = np.linspace(t, end, 50)
-            out_t.append(grid), out_x.append(sol.sol(grid).T)
-            x = sol.sol(end)
-            t = end
-            if name == "end":
-                break
-            mode, x = self.system.switch(mode, name, t, x)
-        return np.concatenate(out_t), np.concatenate(out_x)
-
-
 @pytest.mark.parametrize("payload", [0.0, 52e3])
 def test_fig9_against_solve_ivp(payload):
+    """The phases in closed form against DOP853 with events (rtol 1e-12, steps
+    capped at 0.1 ms), state and torque."""
     hoist = table1_hoist(payload)
-    schedule = [(0.0, "motor torque lost"), (0.1, "safety brake"), (0.4, "service brake")]
-    omega = 50 * np.pi
-    t0 = time.perf_counter()
-    closed = hoist.run(omega, 0.3)
-    t1 = time.perf_counter()
-    times, states = _Integrated(hoist, 1e-4).run(*hoist.start(omega), 0.3, schedule)
-    t2 = time.perf_counter()
-    ours = closed.state(times)
+    run = hoist.emergency_stop(50 * np.pi, 0.3)
+    closed = run.solve()
+    integrated = integrate_hybrid(run, 1e-12, 1e-12, "DOP853", max_step=1e-4)
+    assert len(integrated.phases) == len([s for s in closed.segments if s.t1 > s.t0])
+    times = np.linspace(0.0, 0.3, 3001)
+    states = integrated.state(times)
     scale = np.abs(states).max(axis=0)
-    err = np.max(np.abs(ours - states) / scale)
-    print(f"closed form {t1 - t0:.3f} s, solve_ivp {t2 - t1:.3f} s, max rel. diff {err:.1e}")
-    assert err < 1e-6
+    assert np.max(np.abs(closed.state(times) - states) / scale) < 1e-6
+    torque = integrated.output(run, times)
+    assert np.max(np.abs(run.table(closed)(times) - torque)) < 1e-6 * np.abs(torque).max()
     peak_t, peak = hoist.peak(closed)
     sampled = hoist.relative_torque(closed, np.linspace(0, 0.3, 30001))
     assert abs(peak) >= np.max(np.abs(sampled)) - 1e-9
@@ -120,17 +82,18 @@ def test_solve_ivp_with_default_steps_skips_a_contact_the_closed_form_finds():
     t = 0.163 s inside one solve_ivp step; its events miss it, the certified
     search does not."""
     hoist = table1_hoist(0.0)
-    schedule = [(0.0, "motor torque lost"), (0.1, "safety brake"), (0.4, "service brake")]
-    closed = [t for t, ev, _ in hoist.run(50 * np.pi, 0.2).events if ev == "close hold"]
+    run = hoist.emergency_stop(50 * np.pi, 0.2)
+    closed = [t for t, ev, _ in run.solve().events if ev == "close hold"]
     assert closed and 0.16 < closed[0] < 0.165
     seen = []
-    switch = hoist.switch
+
     class Spy:
         matrices, guards = hoist.matrices, hoist.guards
-        def switch(self, mode, name, t, x):  # noqa: E301
+
+        def switch(self, mode, name, t, x):
             seen.append((t, name))
-            return switch(mode, name, t, x)
-    _Integrated(Spy()).run(*hoist.start(50 * np.pi), 0.2, schedule)
+            return hoist.switch(mode, name, t, x)
+    integrate_hybrid(replace(run, system=Spy()), 1e-12, 1e-12, "DOP853")
     assert not any(name == "close hold" and t < 0.17 for t, name in seen)
 
 
@@ -211,12 +174,12 @@ def _scene_module(tmp_path):
 def test_scene_module_carries_the_derivation_table(tmp_path):
     """The printed arrays are the run's table rounded to 13 digits, and the
     function is the phases' closed forms to ~1e-12 of the peak."""
-    from crane_sym.derivations.hoist_brakes.elastic import hoist_from, torque_table
+    from crane_sym.derivations.hoist_brakes.elastic import hoist_from, torque_run
     from crane_sym.scenes import load_scene
     from crane_sym.tabulated import rounded
     module = _scene_module(tmp_path)
     scene = load_scene("hoist_table1")
-    table = torque_table(scene.parameters, scene.options)
+    table = torque_run(scene.parameters, scene.options).table()
     for printed, ours in zip(module._TABLE_ELASTIC_GEARBOX_TORQUE, rounded(table).arrays()):
         assert np.array_equal(printed, ours)
     q = scene.parameters
@@ -235,18 +198,13 @@ def test_scene_module_carries_the_derivation_table(tmp_path):
 def test_scene_module_against_solve_ivp(tmp_path):
     """The generated function against DOP853 with events at rtol 1e-12, the
     whole run of the scene (1 s, the rated payload lowered)."""
-    from crane_sym.derivations.hoist_brakes.elastic import hoist_from
+    from crane_sym.derivations.hoist_brakes.elastic import torque_run
     from crane_sym.scenes import load_scene
     module = _scene_module(tmp_path)
-    q = load_scene("hoist_table1").parameters
-    hoist = hoist_from(q, q["m_p"])
-    schedule = [(0.0, "motor torque lost"), (q["t_SB"], "safety brake"),
-                (q["t_BB"], "service brake")]
-    times, states = _Integrated(hoist, 1e-4).run(*hoist.start(q["omega1"]), 1.0, schedule)
-    contact = np.clip(states[:, 2] - states[:, 0], None, 0.0)
-    hold = states[:, 2] - states[:, 0] >= 0
-    ref = np.where(hold, hoist.c * (states[:, 2] - states[:, 0]),
-                   hoist.c * np.minimum(contact + hoist.s, 0.0)) / hoist.M_st
+    scene = load_scene("hoist_table1")
+    run = torque_run(scene.parameters, scene.options)
+    times = np.linspace(0.0, 1.0, 10_001)
+    ref = integrate_hybrid(run, 1e-12, 1e-12, "DOP853", max_step=1e-4).output(run, times)
     got = module.elastic_gearbox_torque(times)
     assert np.max(np.abs(got - ref)) < 1e-6 * np.max(np.abs(ref))
 
@@ -269,12 +227,12 @@ def test_table_is_the_run_on_hard_cases(payload, stiffness, backlash_deg):
 def test_table_with_backlash_to_zero_is_the_no_backlash_closed_form():
     """delta -> 0: the tabulated response agrees with the generated
     no-backlash closed form while that one holds (drum sliding, before t_BB)."""
-    from crane_sym.derivations.hoist_brakes.elastic import torque_table
+    from crane_sym.derivations.hoist_brakes.elastic import torque_run
     from crane_sym.derivations.hoist_brakes.model import TABLE1
     from crane_sym.generated import hoist_brakes as gen
     q = {k: float(v) for k, v in TABLE1.items()} | {"g": 9.81, "m_p": 0.0,
                                                      "omega1": 50 * np.pi}
-    table = torque_table(q | {"delta": 1e-12}, {"duration": 0.25})
+    table = torque_run(q | {"delta": 1e-12}, {"duration": 0.25}).table()
     rest = next((t for t, e in zip(table.edges[1:], table.events) if "rests" in e), 0.25)
     times = np.linspace(0.0, rest, 2001)
     closed = gen.elastic_gearbox_torque_no_backlash(
@@ -290,3 +248,18 @@ def test_scene_function_rejects_bad_times(tmp_path, bad, match):
     with pytest.raises((ValueError, TypeError), match=match) as info:
         module.elastic_gearbox_torque(bad)
     assert "t" in str(info.value)
+
+
+def test_check_accepts_only_last_digit_changes_of_a_table(tmp_path):
+    """generate --check: a table's numbers may differ in their last digits (the
+    machine's libm and LAPACK), nothing else may."""
+    from crane_sym.specialize import scene_files
+    from crane_sym.tabulated import same_text
+    (_, text), = scene_files("hoist_table1").items()
+    number = text.split("# cos_amps")[1].split("[")[1].split(",")[0]
+    last = number[:-1] + str((int(number[-1]) + 1) % 10)
+    assert same_text(text.replace(number, last, 1), text)
+    wrong = f"{float(number) * (1 + 1e-6):.13g}"
+    assert not same_text(text.replace(number, wrong, 1), text)
+    assert not same_text(text.replace(number, number + ", 0.5", 1), text)
+    assert not same_text(text.replace("return _into(out", "return _into(None", 1), text)

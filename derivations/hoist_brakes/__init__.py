@@ -26,12 +26,15 @@ The package does nothing on import; ``build()`` returns the ``Derivation``.
 """
 from __future__ import annotations
 
+import sympy as sp
+
 from crane_sym.derivation import Derivation
 
 from . import elastic, steps, steps_numbers
 from .hard_cases import hard_cases
-from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
-from .outputs import outputs, tabulated
+from .model import (AUTHORS, BF_SB, CITATION, ID, LATEX_NAMES, LF, MF, MODEL, PAPER, SYMBOLS,
+                    TITLE, phi5)
+from .outputs import outputs, physical, tabulated
 from .published import PUBLISHED
 from .report import scene_report
 
@@ -52,4 +55,8 @@ def build() -> Derivation:
     d.published.extend(PUBLISHED)
     d.outputs.extend(outputs(d))
     d.tabulated.extend(tabulated())
+    # The bench's values of the factors: Table 1's own (from the scene's data), φ5 = 1.5.
+    d.bench_parameters.update({s: physical(d, d.step(str(s)).statement.rhs)
+                               for s in (MF, LF, BF_SB)})
+    d.bench_parameters[phi5] = sp.Rational(3, 2)
     return d

@@ -21,9 +21,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from crane_sym.derivation import Derivation
-from crane_sym.phase_table import PhaseTable, tabulate
-from crane_sym.piecewise_linear import (Guard, PiecewiseResult, closed_form, first_crossing,
-                                       simulate)
+from crane_sym.phase_table import HybridRun
+from crane_sym.piecewise_linear import Guard, PiecewiseResult, closed_form, first_crossing
 
 #: Brake states of one side: no brake yet, sliding forward/backward, stuck.
 OFF, FORWARD, BACKWARD, STUCK = "off", "+", "-", "0"
@@ -155,13 +154,20 @@ class TwoMassHoist:
             raise ValueError("steady lowering needs M_M = M_L")
         return (HOLD, OFF, OFF, True), np.array([0.0, omega0, self.M_L / self.c, omega0])
 
+    def emergency_stop(self, omega0: float, t_end: float, t_M: float = 0.0,
+                       t_SB: float = 0.1, t_BB: float = 0.4) -> HybridRun:
+        """The emergency stop from steady lowering at ω0: motor torque lost at t_M,
+        brakes after their delays; its output is M_G/M_st."""
+        mode, x0 = self.start(omega0)
+        schedule = ((t_M, "motor torque lost"), (t_SB, "safety brake"),
+                    (t_BB, "service brake"))
+        return HybridRun(self, mode, x0, t_end, schedule, lambda m: self.torque(m[0]),
+                         self.M_st)
+
     def run(self, omega0: float, t_end: float, t_M: float = 0.0, t_SB: float = 0.1,
             t_BB: float = 0.4) -> PiecewiseResult:
-        """The emergency stop: motor torque lost at t_M, brakes after their delays."""
-        mode, x0 = self.start(omega0)
-        schedule = [(t_M, "motor torque lost"), (t_SB, "safety brake"),
-                    (t_BB, "service brake")]
-        return simulate(self, mode, x0, t_end, schedule)
+        """The phases of :meth:`emergency_stop`, each in closed form."""
+        return self.emergency_stop(omega0, t_end, t_M, t_SB, t_BB).solve()
 
     def relative_torque(self, result: PiecewiseResult, times: np.ndarray) -> np.ndarray:
         """The gearbox torque over M_st at ``times``, from the phases' closed forms."""
@@ -232,13 +238,12 @@ def table1_hoist(payload: float, g: float = 9.81, backlash_deg: float | None = N
     return hoist_from(q, payload)
 
 
-def torque_table(q: Mapping[str, float], options: Mapping[str, Any]) -> PhaseTable:
-    """M_G/M_st of the emergency stop while lowering the payload ``q["m_p"]``, from
-    ω1 with the motor torque lost at t = 0, brakes after t_SB and t_BB, up to the
-    scene's ``duration``: the phases in closed form, as a table."""
-    hoist = hoist_from(q, q["m_p"])
-    run = hoist.run(q["omega1"], options["duration"], 0.0, q["t_SB"], q["t_BB"])
-    return tabulate(run, lambda mode: hoist.torque(mode[0]), scale=hoist.M_st)
+def torque_run(q: Mapping[str, float], options: Mapping[str, Any]) -> HybridRun:
+    """The emergency stop while lowering the payload ``q["m_p"]`` from ω1, motor
+    torque lost at t = 0, brakes after t_SB and t_BB, up to the scene's
+    ``duration``; its output is M_G/M_st."""
+    return hoist_from(q, q["m_p"]).emergency_stop(q["omega1"], options["duration"], 0.0,
+                                                  q["t_SB"], q["t_BB"])
 
 
 #: Table 1's motor speed [rad/s] and brake delays [s].

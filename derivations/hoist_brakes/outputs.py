@@ -9,7 +9,7 @@ import sympy as sp
 from crane_sym.derivation import Derivation, Output, TabulatedOutput
 
 from . import model as _model
-from .elastic import torque_table
+from .elastic import torque_run
 
 from .model import (BF_SB, LF, MF, J, J1, J2, M_BB, M_L, M_M, M_SB, M_st, d_omega, d_t, g,
                     i_g, i_t, m_h, m_p, m_r, omega1, phi5, r, t, t_BB, t_SB, c, delta)
@@ -19,7 +19,7 @@ HOIST = (m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1)
 BRAKES = (M_SB, M_BB, t_SB, t_BB)
 
 
-def _physical(d: Derivation, expr: sp.Expr) -> sp.Expr:
+def physical(d: Derivation, expr: sp.Expr) -> sp.Expr:
     """``expr`` with MF, LF, J, M_L and M_st written in Table 1's quantities."""
     expr = expr.subs({MF: d.step("MF").statement.rhs, LF: d.step("LF").statement.rhs})
     return expr.subs({J: d.step("reduced inertia").statement.rhs,
@@ -37,9 +37,9 @@ def _speed_law(d: Derivation, mode: str) -> tuple[sp.Expr, sp.Expr]:
     # (1) takes hoisting as +; the speed here is along the direction of travel.
     sign = 1 if mode == "hoisting" else -1
     step = sign * d.step(f"(1), {mode}").statement.rhs.subs(M_M, 0)
-    a0 = _physical(d, step.subs({M_SB: 0, M_BB: 0}))
-    a1 = _physical(d, step.subs(M_BB, 0))
-    a2 = _physical(d, step)
+    a0 = physical(d, step.subs({M_SB: 0, M_BB: 0}))
+    a1 = physical(d, step.subs(M_BB, 0))
+    a2 = physical(d, step)
     w_sb = omega1 + a0 * t_SB
     w_bb = w_sb + a1 * (t_BB - t_SB)
     free = sp.Piecewise((omega1 + a0 * t, t <= t_SB),
@@ -74,12 +74,12 @@ def outputs(d: Derivation) -> list[Output]:
     for n, mode, name in ((6, "hoisting", "service_brake_factor_hoisting"),
                           (6, "lowering", "service_brake_factor_lowering"),
                           (7, "hoisting", "safety_brake_factor")):
-        expr = sp.factor(sp.cancel(_physical(d, rhs(f"({n}), {mode}").subs(d_omega, omega1))))
+        expr = sp.factor(sp.cancel(physical(d, rhs(f"({n}), {mode}").subs(d_omega, omega1))))
         out.append(Output(name, expr, HOIST + (d_t,), (f"({n})",),
                           f"Coordinated brake factor ({n}) over the payload m_p, stopping "
                           f"from omega1 in d_t ({mode}).", "1"))
     J_d = d.step("inertia beyond the cut").statement.rhs
-    torque = _physical(d, rhs("Fig. 9, no backlash").subs(_model.J_d, J_d))
+    torque = physical(d, rhs("Fig. 9, no backlash").subs(_model.J_d, J_d))
     out.append(Output("elastic_gearbox_torque_no_backlash", torque,
                       (t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, M_SB, t_SB), ("Fig. 9",),
                       "Relative gearbox torque M_G/M_st of the elastic drive without backlash, "
@@ -113,4 +113,4 @@ def tabulated() -> list[TabulatedOutput]:
         "Relative gearbox torque M_G/M_st of the elastic drive with the coupling backlash, "
         "emergency stop while lowering the payload m_p: motor torque lost at t = 0, safety "
         "brakes after t_SB, service brakes after t_BB, brakes that stick at zero speed.",
-        "1", torque_table)]
+        "1", torque_run)]
