@@ -31,6 +31,9 @@ EXAMPLES = {
     "accuracy": "crane-sym accuracy 002",
     "bench": "crane-sym bench 000 002 004 --out bench/",
     "run": "crane-sym run overhead_crane_50t --out out/",
+    "sweep": "crane-sym sweep overhead_crane_50t --vary m1=1:100:200:log --vary P_t=5:50:200 "
+             "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
+             "--out sweep/ --format json",
 }
 
 
@@ -276,6 +279,36 @@ def cmd_run(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_sweep(args: argparse.Namespace) -> int:
+    """A design sweep: outputs over a grid of designs, on Dask."""
+    from .scenes import load_scene
+    from .sweep import run_sweep
+    from .sweep_report import plot, summary, text_lines
+    from .sweep_spec import SweepError, plan
+    if not 0 < args.chunk_mib <= 4096:
+        raise SweepError(f"--chunk-mib {args.chunk_mib}: expected a size in (0, 4096] MiB")
+    scene = load_scene(args.scene)
+    chosen = plan(scene, args.vary, args.output, args.at or [], args.limit)
+    certify = None
+    if args.certify:
+        from .sweep_certify import prepare
+        certify = prepare(chosen, args.certify_tol)   # refuses before anything is written
+    out = Path(args.out)
+    quiet = not progress.wanted(getattr(args, "quiet", False))
+    result = run_sweep(chosen, out, scheduler=args.scheduler,
+                       chunk_bytes=int(args.chunk_mib * 2**20), quiet=quiet)
+    plot(result, out / f"{scene.name}_sweep.png")
+    if certify is not None:
+        from .sweep_certify import certify_result
+        result.extra["certified"] = certify_result(certify, result, args.scheduler)
+    data = summary(result)
+    if args.format == "json":
+        print(json.dumps(data, indent=2, ensure_ascii=False))
+    else:
+        print("\n".join(text_lines(data)))
+    return 0
+
+
 def _subcommand(sub, name: str, text: str, func, quiet: bool = False):
     """A subcommand with ``text`` as help and description, its example as the
     epilog, and (for the long commands) ``--quiet``."""
@@ -344,6 +377,30 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("scene", help="scene name or path to a scene TOML file")
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
+    p = _subcommand(sub, "sweep", "a design sweep: outputs over a grid of designs, on Dask",
+                    cmd_sweep, True)
+    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values)")
+    p.add_argument("--vary", action="append", metavar="NAME=START:STOP:N[:log] [UNIT]",
+                   help="a grid axis over a parameter of the scene, in the unit the scene "
+                   "gives it unless UNIT is named (repeat for more axes)")
+    p.add_argument("--output", action="append", metavar="NAME",
+                   help="an output to sweep: a generated function or a simulated response "
+                   "of the paper (repeatable)")
+    p.add_argument("--at", action="append", metavar="NAME=VALUE [UNIT]",
+                   help="a value for an argument the scene does not give, e.g. t=0.12")
+    p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
+                   help="count the designs within it, draw its contour")
+    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
+                   "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler)")
+    p.add_argument("--chunk-mib", type=float, default=8.0,
+                   help="output bytes per block of the grid, in MiB (default 8)")
+    p.add_argument("--certify", action="store_true", help="also bound the maximum of the "
+                   "(limited) output over the whole box by interval branch-and-bound")
+    p.add_argument("--certify-tol", type=float, default=1e-6, metavar="REL",
+                   help="width of the certified enclosure, relative to its value "
+                   "(default 1e-6)")
     return top
 
 
