@@ -165,3 +165,37 @@ def test_drum_drive_response_without_closed_form_is_swept_per_design(tmp_path):
     assert values[0, 0] == pytest.approx(report.values["y_max"], rel=1e-6)
     assert values[1, 0] < values[0, 0]            # a stiffer shaft deflects less
     assert result.worst["max_drum_shaft_deflection"][0] == values.max()
+
+
+def test_certified_enclosure_holds_the_grid_maximum(tmp_path, capsys):
+    assert main([*DONE_WHEN, "--out", str(tmp_path), "--certify"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    c, grid = data["certified"], data["worst_case"]["value"]
+    assert c["converged"] and c["upper"] - c["lower"] <= c["tolerance"]
+    assert c["tolerance"] == pytest.approx(1e-6 * c["lower"])
+    assert c["lower"] <= grid <= c["upper"] and c["grid_worst_inside"]
+
+
+def test_certified_maximum_between_grid_points_is_above_the_grid(tmp_path):
+    """elastic_force(t = 0.3 s) peaks inside the box: a coarse grid misses the
+    peak, the enclosure holds it; a fine grid near it lands inside."""
+    from crane_sym.sweep_certify import certify, prepare
+    scene = load_scene("overhead_crane_50t")
+    coarse = plan(scene, ["m1=1:100:12:log", "c=1e6:1e7:12"], ["elastic_force"], ["t=0.3"])
+    task = prepare(coarse, 1e-5)
+    found = certify(task)
+    assert found.converged and found.upper - found.lower <= found.tolerance
+    grid = run_sweep(coarse, None, scheduler="synchronous").worst["elastic_force"][0]
+    assert grid <= found.upper
+    fine = plan(scene, ["m1=1:100:3000:log", "c=1e6:1e7:3000"], ["elastic_force"], ["t=0.3"])
+    best = run_sweep(fine, None).worst["elastic_force"][0]
+    assert found.lower - 1e-4 * abs(found.lower) <= best <= found.upper
+
+
+def test_certify_refuses_an_output_without_an_enclosure(tmp_path, capsys):
+    argv = ["sweep", "drum_drive_example", "--vary", "C_y=1e7:2e7:2 N/m", "--output",
+            "max_drum_shaft_deflection", "--certify", "--out", str(tmp_path / "o")]
+    assert main(argv) == 2
+    assert "--certify: max_drum_shaft_deflection is a simulated response" \
+        in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()
