@@ -196,6 +196,10 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from .bench_report import as_markdown, headline, not_applicable, plot
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
+    if args.sweep:
+        _bench_sweep(out_dir, args.format == "json")
+        if not args.ids:                   # `bench --sweep` alone: the sweep bench only
+            return 0
     everything = []
     for i in _ids(args.ids):
         chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
@@ -263,6 +267,17 @@ def _bench_sampled(out_dir: Path, show: bool) -> None:
     if show:
         print(text)
         print(f"wrote {path}")
+
+
+def _bench_sweep(out_dir: Path, as_json: bool) -> None:
+    """Design sweeps against per-design integration, efficiency, 10⁸ designs,
+    LocalCluster (issue 16, item 5)."""
+    from .bench_sweep import bench_sweep, markdown
+    results = bench_sweep()
+    text = markdown(results)
+    path = out_dir / "bench_sweep.md"
+    path.write_text(text, encoding="utf-8")
+    print(json.dumps(results, indent=2) if as_json else f"{text}\nwrote {path}")
 
 
 def cmd_run(args: argparse.Namespace) -> int:
@@ -370,6 +385,8 @@ def parser() -> argparse.ArgumentParser:
                    "always runs)")
     p.add_argument("--sampled", action="store_true",
                    help="also bench loads sampled on a grid against the closed forms")
+    p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
+                   "per-design integration; alone, only that")
     p.add_argument("--rtols", nargs="+", type=float,
                    help="integrator and quadrature tolerances (default: 1e-3 1e-6 1e-9 1e-12)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",

@@ -199,3 +199,15 @@ def test_certify_refuses_an_output_without_an_enclosure(tmp_path, capsys):
     assert "--certify: max_drum_shaft_deflection is a simulated response" \
         in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
+
+
+def test_bench_integrated_peak_matches_the_closed_form_at_1e_9():
+    """The bench's per-design alternative reaches the accuracy it is matched at."""
+    from crane_sym import bench_sweep
+    chosen, f, jac, y0f, quantity, design = bench_sweep._case_000()
+    p, pieces, exact = design(2.0e3, 40e3)
+    y0 = np.array(y0f(*p), dtype=float)
+    peak = bench_sweep.integrated_peak(f, jac, y0, p, quantity, pieces, 1e-11)
+    assert abs(peak - exact) <= 1e-9 * abs(exact)
+    assert abs(bench_sweep.integrated_peak(f, jac, y0, p, quantity, pieces, 1e-4) - exact) \
+        > 1e-9 * abs(exact)                       # a loose run is caught
