@@ -63,9 +63,14 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
     grid = {name: np.asarray(b, dtype=float).reshape([-1 if k == i else 1 for k in range(n)])
             for i, (name, b) in enumerate(zip(axis_names, blocks))}
     values = {a: grid[a] if a in grid else fixed[a] for a in args}
+    window = options.get("window")
     if kind == "closed":
-        module = importlib.import_module(f"crane_sym.generated.{derivation}")
-        result = getattr(module, output)(*[values[a] for a in args])
+        func = getattr(importlib.import_module(f"crane_sym.generated.{derivation}"), output)
+        result = func(*[values[a] for a in args])
+        if window is not None and window[0] in args:   # the maximum over the window
+            for value in window[1][1:]:
+                values[window[0]] = value
+                result = np.maximum(result, func(*[values[a] for a in args]))
     else:
         spec = registry.sweep_outputs(derivation)[output]
         result = spec.evaluate(values, options)
@@ -204,6 +209,10 @@ def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
              "generated_by": f"crane_sym {__version__} (crane-sym sweep)"}
     if plan.limit is not None:
         attrs["limit"] = plan.limit.text()
+    if plan.window is not None:
+        name, samples = plan.window
+        attrs["window"] = (f"each output taking {name} is its maximum over {len(samples)} "
+                           f"samples of {name} in [{samples[0]!r}, {samples[-1]!r}] (SI)")
     return xr.Dataset(variables, coords=coords, attrs=attrs)
 
 

@@ -85,18 +85,26 @@ def prepare(plan: SweepPlan, rel_tol: float) -> CertifyTask:
                          "enclosure; certify a closed-form output")
     output = registry.get(plan.derivation).output(name)
     axes = {a.name for a in plan.axes}
-    values = {a: sp.Float(plan.fixed[str(a)]) for a in output.args if str(a) not in axes}
     symbols = {str(a): a for a in output.args}
     variables = tuple(a.name for a in plan.axes if a.name in symbols)
+    box = tuple((float(a.si().min()), float(a.si().max())) for a in plan.axes
+                if a.name in variables)
+    window = plan.window
+    if window is not None and window[0] in symbols:       # time is one more box side
+        variables += (window[0],)
+        box += ((window[1][0], window[1][-1]),)
+        axes = axes | {window[0]}
+    values = {a: sp.Float(plan.fixed[str(a)]) for a in output.args if str(a) not in axes}
     sign = -1 if plan.limit and plan.limit.output == name and plan.limit.op == ">=" else 1
+    if sign < 0 and window is not None:
+        raise SweepError(f"--certify: a '>=' limit asks for the least {name} over the designs, "
+                         "the window for its largest over time; certify one at a time")
     expr = sign * output.expr.xreplace(values)
     try:
         enclosure(expr, [symbols[v] for v in variables])
     except ValueError as exc:
         raise SweepError(f"--certify: {name}: {exc}") from None
     expr = expr.xreplace({symbols[v]: sp.Symbol(v) for v in variables})
-    box = tuple((float(a.si().min()), float(a.si().max())) for a in plan.axes
-                if a.name in variables)
     unit, factor = plan.unit_of(name)
     return CertifyTask(name, expr, variables, box, sign, rel_tol, unit, factor)
 

@@ -47,6 +47,10 @@ def summary(result: SweepResult) -> dict[str, Any]:
         "worst_case": {"output": (plan.limit.output if plan.limit else plan.outputs[0].name),
                        **outputs[plan.limit.output if plan.limit else plan.outputs[0].name]
                        ["worst"]}}
+    if plan.window is not None:
+        name, samples = plan.window
+        data["window"] = {"name": name, "start_SI": samples[0], "stop_SI": samples[-1],
+                          "samples": len(samples), "reduction": "max"}
     if plan.limit is not None:
         data["limit"] = {"text": plan.limit.text(), "within": result.within,
                          "fraction_within": result.within / plan.points}

@@ -20,6 +20,7 @@ from __future__ import annotations
 import math
 import re
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -34,7 +35,7 @@ _NUM = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 _NAME = r"[A-Za-z_][A-Za-z0-9_]{0,63}"
 _VARY = re.compile(rf"({_NAME})=({_NUM}):({_NUM}):(\d{{1,12}})(:log)?(?:\s+(\S.{{0,60}}))?")
 _LIMIT = re.compile(rf"\s*({_NAME})\s*(<=|>=)\s*({_NUM})\s*(\S.{{0,60}})?")
-_AT = re.compile(rf"({_NAME})=({_NUM})(?:\s*([A-Za-zµμ].{{0,60}}))?")
+_AT = re.compile(rf"({_NAME})=({_NUM})(?::({_NUM}):(\d{{1,7}}))?(?:\s*([A-Za-zµμ].{{0,60}}))?")
 
 
 class SweepError(ValueError):
@@ -111,7 +112,12 @@ class SweepPlan:
     fixed: dict[str, float]
     limit: Limit | None = None
     display: dict[str, tuple[str, float]] = field(default_factory=dict)
-    options: dict[str, float] = field(default_factory=dict)
+    options: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def window(self) -> tuple[str, tuple[float, ...]] | None:
+        """``(name, SI samples)`` of an ``--at`` window, or None."""
+        return self.options.get("window")
 
     @property
     def shape(self) -> tuple[int, ...]:
@@ -194,20 +200,29 @@ def parse_limit(text: str, outputs: tuple[OutputSpec, ...]) -> Limit:
     return Limit(name, op, float(value), unit, _unit("--limit", text, unit, dimension))
 
 
-def parse_at(text: str, symbols) -> tuple[str, float]:
+def parse_at(text: str, symbols) -> tuple[str, np.ndarray]:
     """``--at NAME=VALUE [UNIT]``: a value (SI) for an argument the scene does
-    not fix, such as the time ``t`` of a time response (unit s by default)."""
+    not fix, such as the time ``t`` of a time response (unit s by default);
+    ``--at NAME=START:STOP:N [UNIT]``: N samples of a window over which the
+    sweep takes the output's maximum. Returns the name and the SI values."""
     m = _AT.fullmatch(text.strip())
     if m is None:
-        raise SweepError(f"--at {text!r}: expected NAME=VALUE [UNIT], e.g. t=0.12 or t=120 ms")
-    name, value, unit = m.groups()
+        raise SweepError(f"--at {text!r}: expected NAME=VALUE [UNIT] or NAME=START:STOP:N "
+                         "[UNIT], e.g. t=0.12, t=120 ms or t=0:1.5:301")
+    name, value, stop, n, unit = m.groups()
     try:
         entry = symbols[name]
     except KeyError:
         raise SweepError(f"--at {text!r}: {name!r} is not a symbol of the derivation") \
             from None
     default = "s" if entry.role == TIME else entry.unit
-    return name, float(value) * _unit("--at", text, (unit or default).strip(), entry.dimension)
+    factor = _unit("--at", text, (unit or default).strip(), entry.dimension)
+    if stop is None:
+        return name, np.array([float(value) * factor])
+    if int(n) < 2 or not float(value) < float(stop):
+        raise SweepError(f"--at {text!r}: the window is empty or reversed (need START < STOP "
+                         "and N >= 2)")
+    return name, np.linspace(float(value), float(stop), int(n)) * factor
 
 
 def _scene_units(scene: Scene, extra: tuple[str, ...]) -> dict[str, str]:
@@ -283,12 +298,17 @@ def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
         if not any(axis.name in s.args for s in specs):
             raise SweepError(f"--vary {axis.name}: none of the outputs "
                              f"({', '.join(s.name for s in specs)}) depends on it")
+    window = None
     for text in at:
         name, value = parse_at(text, d.symbols)
-        if name in names or name in scene.parameters:
+        if name in names or name in scene.parameters or name in fixed:
             raise SweepError(f"--at {text!r}: {name!r} is already given by "
-                             f"{'--vary' if name in names else 'the scene'}")
-        fixed[name] = value
+                             f"{'--vary' if name in names else 'the scene or --at'}")
+        if len(value) > 1:
+            if window is not None:
+                raise SweepError(f"--at {text!r}: one window at most")
+            window = (name, tuple(float(v) for v in value))
+        fixed[name] = float(value[0])
     for s in specs:
         missing = [a for a in s.args if a not in fixed and a not in names]
         if missing:
@@ -298,4 +318,6 @@ def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
     found = parse_limit(limit, specs) if limit else None
     display = {found.output: (found.unit, found.to_si)} if found else {}
     options = {k: scene.options[k] for k in ("duration", "points") if k in scene.options}
+    if window is not None:
+        options["window"] = window
     return SweepPlan(scene.name, scene.derivation, axes, specs, fixed, found, display, options)

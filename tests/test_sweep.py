@@ -211,3 +211,27 @@ def test_bench_integrated_peak_matches_the_closed_form_at_1e_9():
     assert abs(peak - exact) <= 1e-9 * abs(exact)
     assert abs(bench_sweep.integrated_peak(f, jac, y0, p, quantity, pieces, 1e-4) - exact) \
         > 1e-9 * abs(exact)                       # a loose run is caught
+
+
+def test_time_window_maximum_approaches_the_closed_form_peak_and_is_certified():
+    """max over t of eq. (14) is peak_elastic_force: the sampled window stays
+    below it and close; the certified box with time as a side encloses it."""
+    from crane_sym.sweep_certify import certify, prepare
+    chosen = plan(load_scene("overhead_crane_50t"), ["m1=1:100:20:log", "P_t=5:50:20"],
+                  ["elastic_force", "peak_elastic_force"], ["t=0:1.5:1501"])
+    assert chosen.window[0] == "t" and len(chosen.window[1]) == 1501
+    result = run_sweep(chosen, None, scheduler="synchronous")
+    sampled, peak = result.worst["elastic_force"][0], result.worst["peak_elastic_force"][0]
+    assert peak * (1 - 1e-4) < sampled <= peak * (1 + 1e-15)
+    found = certify(prepare(chosen, 1e-4))
+    assert found.converged and found.lower <= peak <= found.upper
+
+
+def test_window_arguments_are_checked(tmp_path, capsys):
+    base = ["sweep", "overhead_crane_50t", "--vary", "m1=1:100:10", "--output", "elastic_force",
+            "--out", str(tmp_path / "o")]
+    assert main([*base, "--at", "t=1:0:10"]) == 2
+    assert "--at 't=1:0:10'" in capsys.readouterr().err
+    assert main([*base, "--at", "t=0:1:10 kg"]) == 2
+    assert "does not fit" in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()
