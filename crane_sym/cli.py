@@ -9,7 +9,7 @@ from importlib import metadata
 from pathlib import Path
 from typing import Sequence
 
-from . import __version__, progress, registry
+from . import __version__, cli_sweep, progress, registry
 
 DESCRIPTION = """\
 Derive, audit and generate code for the dynamics of crane mechanisms.
@@ -197,7 +197,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     if args.sweep:
-        _bench_sweep(out_dir, args.format == "json")
+        cli_sweep.run_bench(out_dir, args.format == "json")
         if not args.ids:                   # `bench --sweep` alone: the sweep bench only
             return 0
     everything = []
@@ -269,17 +269,6 @@ def _bench_sampled(out_dir: Path, show: bool) -> None:
         print(f"wrote {path}")
 
 
-def _bench_sweep(out_dir: Path, as_json: bool) -> None:
-    """Design sweeps against per-design integration, efficiency, 10⁸ designs,
-    LocalCluster (issue 16, item 5)."""
-    from .bench_sweep import bench_sweep, markdown
-    results = bench_sweep()
-    text = markdown(results)
-    path = out_dir / "bench_sweep.md"
-    path.write_text(text, encoding="utf-8")
-    print(json.dumps(results, indent=2) if as_json else f"{text}\nwrote {path}")
-
-
 def cmd_run(args: argparse.Namespace) -> int:
     """Run one scene: print its numbers, write its module and plots."""
     from .scene_run import run_scene
@@ -291,36 +280,6 @@ def cmd_run(args: argparse.Namespace) -> int:
         print(f"  {line}")
     print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
           + ", ".join(str(f) for f in figures))
-    return 0
-
-
-def cmd_sweep(args: argparse.Namespace) -> int:
-    """A design sweep: outputs over a grid of designs, on Dask."""
-    from .scenes import load_scene
-    from .sweep import run_sweep
-    from .sweep_report import plot, summary, text_lines
-    from .sweep_spec import SweepError, plan
-    if not 0 < args.chunk_mib <= 4096:
-        raise SweepError(f"--chunk-mib {args.chunk_mib}: expected a size in (0, 4096] MiB")
-    scene = load_scene(args.scene)
-    chosen = plan(scene, args.vary, args.output, args.at or [], args.limit)
-    certify = None
-    if args.certify:
-        from .sweep_certify import prepare
-        certify = prepare(chosen, args.certify_tol)   # refuses before anything is written
-    out = Path(args.out)
-    quiet = not progress.wanted(getattr(args, "quiet", False))
-    result = run_sweep(chosen, out, scheduler=args.scheduler,
-                       chunk_bytes=int(args.chunk_mib * 2**20), quiet=quiet)
-    plot(result, out / f"{scene.name}_sweep.png")
-    if certify is not None:
-        from .sweep_certify import certify_result
-        result.extra["certified"] = certify_result(certify, result, args.scheduler)
-    data = summary(result)
-    if args.format == "json":
-        print(json.dumps(data, indent=2, ensure_ascii=False))
-    else:
-        print("\n".join(text_lines(data)))
     return 0
 
 
@@ -395,29 +354,8 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
     p = _subcommand(sub, "sweep", "a design sweep: outputs over a grid of designs, on Dask",
-                    cmd_sweep, True)
-    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values)")
-    p.add_argument("--vary", action="append", metavar="NAME=START:STOP:N[:log] [UNIT]",
-                   help="a grid axis over a parameter of the scene, in the unit the scene "
-                   "gives it unless UNIT is named (repeat for more axes)")
-    p.add_argument("--output", action="append", metavar="NAME",
-                   help="an output to sweep: a generated function or a simulated response "
-                   "of the paper (repeatable)")
-    p.add_argument("--at", action="append", metavar="NAME=VALUE [UNIT]",
-                   help="a value for an argument the scene does not give, e.g. t=0.12")
-    p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
-                   help="count the designs within it, draw its contour")
-    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG")
-    p.add_argument("--format", choices=("table", "json"), default="table")
-    p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
-                   "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler)")
-    p.add_argument("--chunk-mib", type=float, default=8.0,
-                   help="output bytes per block of the grid, in MiB (default 8)")
-    p.add_argument("--certify", action="store_true", help="also bound the maximum of the "
-                   "(limited) output over the whole box by interval branch-and-bound")
-    p.add_argument("--certify-tol", type=float, default=1e-6, metavar="REL",
-                   help="width of the certified enclosure, relative to its value "
-                   "(default 1e-6)")
+                    cli_sweep.cmd_sweep, True)
+    cli_sweep.add_arguments(p)
     return top
 
 
