@@ -227,11 +227,11 @@ def run_sweep(plan: SweepPlan, out: Path | None, *, scheduler: str | None = None
     ``"processes"``, or the address of a ``dask.distributed`` scheduler.
     """
     import dask
+    if out is not None:
+        _check_disk(out, plan)
     client = None
     if scheduler and scheduler not in ("synchronous", "threads", "processes"):
         client = connect(scheduler)
-    if out is not None:
-        _check_disk(out, plan)
     workers = len(client.scheduler_info()["workers"]) if client is not None else None
     chunks = chunks_for(plan, chunk_bytes, workers)
     arrays = grid_arrays(plan, chunks)
