@@ -20,7 +20,12 @@ this 2-core machine, 10⁸ designs of ``peak_elastic_force`` in 100 blocks:
 threads 0.86 s, processes 8.7 s without writing; 3.8 s and 7.9 s with the
 Zarr store; the difference is the blocks' transfer between processes).
 Processes for the simulated responses: one SciPy integration per design runs
-Python code that holds the GIL. With ``scheduler=ADDRESS`` a
+Python code that holds the GIL, so threads never pass one core (measured: 0.98
+CPU seconds per wall second with two threads). On this shared machine the
+measurement did not favour them (004, 24 designs: threads 11.2 s, processes
+14.1 s, synchronous 11.1 s at load ≈ 3 on 2 cores): starting two worker
+processes costs ~3 s and the second core was busy; they are kept for large
+simulated sweeps on a machine with free cores, the case they serve. With ``scheduler=ADDRESS`` a
 ``dask.distributed`` scheduler runs the same graph (its workers must see
 ``out``: a shared file system, or one machine).
 """
