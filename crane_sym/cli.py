@@ -9,7 +9,7 @@ from importlib import metadata
 from pathlib import Path
 from typing import Sequence
 
-from . import __version__, progress, registry
+from . import __version__, cli_sweep, progress, registry
 
 DESCRIPTION = """\
 Derive, audit and generate code for the dynamics of crane mechanisms.
@@ -31,6 +31,9 @@ EXAMPLES = {
     "accuracy": "crane-sym accuracy 002",
     "bench": "crane-sym bench 000 002 004 --out bench/",
     "run": "crane-sym run overhead_crane_50t --out out/",
+    "sweep": "crane-sym sweep overhead_crane_50t --vary m1=1:100:200:log --vary P_t=5:50:200 "
+             "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
+             "--out sweep/ --format json",
 }
 
 
@@ -193,6 +196,10 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from .bench_report import as_markdown, headline, not_applicable, plot
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
+    if args.sweep:
+        cli_sweep.run_bench(out_dir, args.format == "json")
+        if not args.ids:                   # `bench --sweep` alone: the sweep bench only
+            return 0
     everything = []
     for i in _ids(args.ids):
         chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
@@ -356,6 +363,8 @@ def parser() -> argparse.ArgumentParser:
                    "always runs)")
     p.add_argument("--sampled", action="store_true",
                    help="also bench loads sampled on a grid against the closed forms")
+    p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
+                   "per-design integration; alone, only that")
     p.add_argument("--rtols", nargs="+", type=float,
                    help="integrator and quadrature tolerances (default: 1e-3 1e-6 1e-9 1e-12)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
@@ -363,6 +372,9 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("scene", help="scene name or path to a scene TOML file")
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
+    p = _subcommand(sub, "sweep", "a design sweep: outputs over a grid of designs, on Dask",
+                    cli_sweep.cmd_sweep, True)
+    cli_sweep.add_arguments(p)
     return top
 
 

@@ -176,6 +176,38 @@ class SceneLoad:
     specialize: Callable[[Any], SpecializedLoad]
 
 
+@dataclass(frozen=True)
+class SweepOutput:
+    """A response with no closed form that a design sweep can still map over
+    its grid: each design simulated with the paper's generated functions.
+
+    A paper package declares them in ``SWEEP_OUTPUTS`` (name -> SweepOutput),
+    readable without building the derivation.
+
+    Attributes
+    ----------
+    name, unit, summary : str
+        As for an :class:`Output`; ``unit`` is the SI unit of the result.
+    parameters : tuple of str
+        Scene ``[parameters]`` the response depends on.
+    options : tuple of str
+        Values the scene gives in ``[options]`` with units (symbols of the
+        derivation) that the response also depends on; they can be swept too.
+    evaluate : callable
+        ``evaluate(values, options) -> ndarray``: ``values`` maps every name of
+        ``parameters + options`` to an SI array (all of one shape, or scalars),
+        ``options`` is the scene's ``[options]`` (duration in s, points); one
+        simulation per design, the result of the broadcast shape.
+    """
+
+    name: str
+    unit: str
+    summary: str
+    parameters: tuple[str, ...]
+    options: tuple[str, ...]
+    evaluate: Callable[[Mapping[str, Any], Mapping[str, Any]], Any]
+
+
 @dataclass
 class Derivation:
     """A paper rebuilt from its equations of motion.

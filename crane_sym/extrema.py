@@ -28,6 +28,7 @@ import sympy as sp
 from mpmath import iv
 from sympy.simplify.fu import TR9
 
+from .intervals import enclosure
 from .loads import as_expression, exact_number
 
 SYMBOLIC = "symbolic critical points"
@@ -208,47 +209,11 @@ def _symbolic_critical(f: sp.Expr, t: sp.Symbol, lo: sp.Expr,
 
 
 # --- interval enclosures --------------------------------------------------------
-_IV_FUNCS = {sp.sin: iv.sin, sp.cos: iv.cos, sp.tan: iv.tan, sp.exp: iv.exp,
-             sp.log: iv.log}
-
-
 def _enclosure(expr: sp.Expr, t: sp.Symbol) -> Callable:
-    """Compile ``expr`` into ``X -> ivmpf`` enclosing its range over the box X."""
-    expr = expr.rewrite(sp.exp) if expr.has(sp.sinh, sp.cosh, sp.tanh) else expr
-    if expr == t:
-        return lambda X: X
-    if expr.is_Rational:
-        p, q = int(expr.p), int(expr.q)
-        return lambda X: iv.mpf(p) / iv.mpf(q)
-    if expr.is_Float:
-        value = mpmath.mpf(expr._mpf_)
-        return lambda X: iv.mpf(value)
-    if expr == sp.pi:
-        return lambda X: iv.pi
-    if expr == sp.E:
-        return lambda X: iv.e
-    args = [_enclosure(a, t) for a in expr.args]
-    if expr.is_Add or expr.is_Mul:
-        def fold(X, add=expr.is_Add):
-            out = args[0](X)
-            for g in args[1:]:
-                out = out + g(X) if add else out * g(X)
-            return out
-        return fold
-    if expr.is_Pow:
-        base, power = args
-        if expr.exp.is_Integer:
-            k = int(expr.exp)
-            return lambda X: base(X) ** k
-        if expr.exp == sp.Rational(1, 2):
-            return lambda X: iv.sqrt(base(X))
-        return lambda X: iv.exp(iv.log(base(X)) * power(X))
-    if isinstance(expr, sp.Abs):
-        return lambda X: abs(args[0](X))
-    if type(expr) in _IV_FUNCS:
-        func = _IV_FUNCS[type(expr)]
-        return lambda X: func(args[0](X))
-    raise ValueError(f"no interval enclosure for {type(expr).__name__} in {expr}")
+    """Compile ``expr`` into ``X -> ivmpf`` enclosing its range over the box X
+    (:func:`crane_sym.intervals.enclosure` in the one variable ``t``)."""
+    compiled = enclosure(expr, (t,))
+    return lambda X: compiled((X,))
 
 
 def _interval_critical(f: sp.Expr, t: sp.Symbol, lo: sp.Expr, hi: sp.Expr, dps: int,

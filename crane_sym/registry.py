@@ -8,7 +8,7 @@ import importlib
 from functools import lru_cache
 from types import ModuleType
 
-from .derivation import Derivation, SceneLoad
+from .derivation import Derivation, SceneLoad, SweepOutput
 
 #: id -> module under ``crane_sym.derivations``, in paper order.
 DERIVATIONS: dict[str, str] = {
@@ -52,6 +52,12 @@ def scene_loads(name: str) -> dict[str, SceneLoad]:
     """The loads a scene of this derivation may give as data (table -> SceneLoad),
     from the package's ``SCENE_LOADS``; no build needed."""
     return dict(getattr(module(name), "SCENE_LOADS", {}))
+
+
+def sweep_outputs(name: str) -> dict[str, SweepOutput]:
+    """Simulated responses a design sweep may ask for (name -> SweepOutput),
+    from the package's ``SWEEP_OUTPUTS``; no build needed."""
+    return dict(getattr(module(name), "SWEEP_OUTPUTS", {}))
 
 
 @lru_cache(maxsize=None)

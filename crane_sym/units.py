@@ -31,7 +31,7 @@ from sympy.physics.units import Dimension, force, length, mass, time
 from sympy.physics.units.systems.si import dimsys_SI
 
 __all__ = ["UNITS", "Quantity", "UnitError", "convert", "format_dimension",
-           "parse_quantity", "parse_unit", "same_dimension"]
+           "parse_quantity", "parse_unit", "same_dimension", "unit_text"]
 
 _ONE = Dimension(1)
 _PI, _G0 = math.pi, 9.80665  # _G0: standard gravity in m/s^2
@@ -177,6 +177,13 @@ def parse_quantity(text: str) -> Quantity:
     if not math.isfinite(value):
         raise UnitError(f"{text!r}: value must be finite (overflow in SI)")
     return Quantity(value, dim, text)
+
+
+def unit_text(text: str) -> str:
+    """The unit part of a quantity as written: ``"4.4 t"`` -> ``"t"``, ``"1.2"`` -> ``""``
+    (checked by :func:`parse_quantity` first)."""
+    parse_quantity(text)
+    return text[_NUMBER.match(text).end():].strip()
 
 
 def _deps(d: Dimension) -> dict[str, int]:

@@ -29,6 +29,8 @@ Files:
 - ``hard_cases.py``: seeded hard cases for ``crane-sym accuracy``.
 - ``report.py``: ``scene_report`` — the simulation of the example (Fig. 3).
 - ``report_state.py``: a scene of the state derivative alone, simulated.
+- ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, responses a design sweep simulates
+  per design (``crane-sym sweep``).
 
 The package does nothing on import; ``build()`` returns the ``Derivation``.
 """
@@ -43,10 +45,11 @@ from .hard_cases import hard_cases
 from .model import AUTHORS, LATEX_NAMES, MODEL, MODEL_SYMBOLS, PAPER, model_energies
 from .outputs import BENCH_PARAMETERS, damping_switch, load_response, outputs
 from .report import scene_report
+from .sweep_outputs import SWEEP_OUTPUTS
 
 #: What the registry, the CLI and the walkthrough read from the module.
-__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "build", "hard_cases",
-           "scene_report"]
+__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SWEEP_OUTPUTS", "build",
+           "hard_cases", "scene_report"]
 
 ID = "drum_drive"
 TITLE = "Dynamic model of a drive with a driving drum"

@@ -19,7 +19,22 @@ from .model import COORDS, STATE
 SIM_OPTIONS = ("m3", "m_L", "nu1", "nu2", "nu_y", "nu_z", "nu_t")
 
 
+def argument_orders(generated) -> dict[str, list[str]]:
+    """Function name -> argument names, read from the generated module's
+    signatures (the keyword-only ``out`` left off): no build needed."""
+    import inspect
+    return {name: [p.name for p in inspect.signature(getattr(generated, name)).parameters
+                   .values() if p.kind is p.POSITIONAL_OR_KEYWORD]
+            for name in generated.__all__}
+
+
 def _rhs_functions(d: Derivation):
+    """:func:`rhs_functions` of the derivation's generated module."""
+    import importlib
+    return rhs_functions(importlib.import_module(f"crane_sym.generated.{d.id}"))
+
+
+def rhs_functions(generated):
     """Right-hand side, Jacobian and energy of (12) from the generated module.
 
     The state is (q, q̇, E_in, E_d): q̇ and q̈ come from the generated
@@ -31,12 +46,9 @@ def _rhs_functions(d: Derivation):
     make(values, load) -> (rhs, jac, energy, matrices)
         ``values``: SI values by symbol name; ``load``: W as a function of t.
     """
-    import importlib
-
     import numpy as np
 
-    generated = importlib.import_module(f"crane_sym.generated.{d.id}")
-    order = {o.name: [str(a) for a in o.args] for o in d.outputs}
+    order = argument_orders(generated)
     n = len(COORDS)
 
     def make(values: dict, load):

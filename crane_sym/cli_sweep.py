@@ -1,0 +1,79 @@
+"""The command line of design sweeps: ``crane-sym sweep`` and ``bench --sweep``."""
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from . import progress
+
+
+def cmd_sweep(args: argparse.Namespace) -> int:
+    """A design sweep: outputs over a grid of designs, on Dask."""
+    from .scenes import load_scene
+    from .sweep import run_sweep
+    from .sweep_report import plot, summary, text_lines
+    from .sweep_spec import SweepError, plan
+    if not 0 < args.chunk_mib <= 4096:
+        raise SweepError(f"--chunk-mib {args.chunk_mib}: expected a size in (0, 4096] MiB")
+    scene = load_scene(args.scene)
+    chosen = plan(scene, args.vary, args.output, args.at or [], args.limit)
+    certify = None
+    if args.certify:
+        from .sweep_certify import prepare
+        certify = prepare(chosen, args.certify_tol)   # refuses before anything is written
+    out = Path(args.out)
+    quiet = not progress.wanted(getattr(args, "quiet", False))
+    result = run_sweep(chosen, out, scheduler=args.scheduler,
+                       chunk_bytes=int(args.chunk_mib * 2**20), quiet=quiet)
+    plot(result, out / f"{scene.name}_sweep.png")
+    if certify is not None:
+        from .sweep_certify import certify_result
+        result.extra["certified"] = certify_result(certify, result, args.scheduler)
+    data = summary(result)
+    if args.format == "json":
+        print(json.dumps(data, indent=2, ensure_ascii=False))
+    else:
+        print("\n".join(text_lines(data)))
+    return 0
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The options of ``crane-sym sweep``."""
+    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values)")
+    p.add_argument("--vary", action="append", metavar="NAME=START:STOP:N[:log] [UNIT]",
+                   help="a grid axis over a parameter of the scene, in the unit the scene "
+                   "gives it unless UNIT is named (repeat for more axes)")
+    p.add_argument("--output", action="append", metavar="NAME",
+                   help="an output to sweep: a generated function or a simulated response "
+                   "of the paper (repeatable)")
+    p.add_argument("--at", action="append", metavar="NAME=VALUE [UNIT]",
+                   help="a value for an argument the scene does not give (t=0.12, "
+                   "t=120 ms), or a window t=START:STOP:N over which each output taking t "
+                   "is maximised (sampled)")
+    p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
+                   help="count the designs within it, draw its contour")
+    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
+                   "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler, threads for "
+                   "closed forms, processes for simulated responses; 'threads', 'processes' "
+                   "or 'synchronous' force one)")
+    p.add_argument("--chunk-mib", type=float, default=8.0,
+                   help="output bytes per block of the grid, in MiB (default 8)")
+    p.add_argument("--certify", action="store_true", help="also bound the maximum of the "
+                   "(limited) output over the whole box by interval branch-and-bound")
+    p.add_argument("--certify-tol", type=float, default=1e-6, metavar="REL",
+                   help="width of the certified enclosure, relative to its value "
+                   "(default 1e-6)")
+
+
+def run_bench(out_dir: Path, as_json: bool) -> None:
+    """Design sweeps against per-design integration, efficiency, 10⁸ designs,
+    LocalCluster (issue 16, item 5)."""
+    from .bench_sweep import bench_sweep, markdown
+    results = bench_sweep()
+    text = markdown(results)
+    path = out_dir / "bench_sweep.md"
+    path.write_text(text, encoding="utf-8")
+    print(json.dumps(results, indent=2) if as_json else f"{text}\nwrote {path}")
