@@ -95,10 +95,12 @@ class HybridRun:
     schedule: Sequence[tuple[float, str]]
     output: Callable[[Hashable], tuple[np.ndarray, float]]
     scale: float = 1.0
+    exact: bool | None = None
 
     def solve(self) -> PiecewiseResult:
         """The phases in closed form (:func:`crane_sym.piecewise_linear.simulate`)."""
-        return simulate(self.system, self.mode, self.x0, self.t_end, self.schedule)
+        return simulate(self.system, self.mode, self.x0, self.t_end, self.schedule,
+                        exact=self.exact)
 
     def table(self, result: PiecewiseResult | None = None) -> PhaseTable:
         """The output's table over the phases of ``result`` (solved if not given)."""

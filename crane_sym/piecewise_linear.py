@@ -384,20 +384,23 @@ class PiecewiseResult:
 
 def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: float,
              schedule: Sequence[tuple[float, str]] = (), *, h_min: float = 1e-10,
-             max_events: int = 10_000) -> PiecewiseResult:
+             max_events: int = 10_000, exact: bool | None = None) -> PiecewiseResult:
     """Run ``system`` from ``mode`` and ``x0`` at t = 0 to ``t_end``.
 
     ``schedule`` lists (time, name) events known in advance (a brake that
     engages after its delay); ``system.switch`` handles them like guards.
     Each phase is the closed form of its (A, b); its end is the earliest of its
     guards' first crossings (:func:`first_crossing`) and the next scheduled time.
+    ``exact`` chooses the closed forms' route (:func:`closed_form`); False, the
+    numeric eigenvectors, is what a sweep over many designs wants (each design
+    has new matrices, and SymPy's Jordan form costs ~0.2 s a run).
     """
     x = np.asarray(x0, dtype=float)
     pending = sorted((float(t), name) for t, name in schedule if 0 <= t < t_end)
     result, t = PiecewiseResult(), 0.0
     for _ in range(max_events):
         A, b = system.matrices(mode)
-        form = closed_form(A, b)
+        form = closed_form(A, b, exact)
         horizon = (pending[0][0] if pending else t_end) - t
         end, event = horizon, (pending[0][1] if pending else "end")
         for guard in system.guards(mode):

@@ -21,6 +21,7 @@ Files:
 - ``outputs.py``: the Outputs for code generation (and the tabulated Fig. 9 response).
 - ``hard_cases.py``: the seeded hard cases for ``crane-sym accuracy``.
 - ``report.py``: ``scene_report`` for ``crane-sym run``.
+- ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, the Fig. 9 peak for design sweeps.
 
 The package does nothing on import; ``build()`` returns the ``Derivation``.
 """
@@ -37,9 +38,10 @@ from .model import (AUTHORS, BF_SB, CITATION, ID, LATEX_NAMES, LF, MF, MODEL, PA
 from .outputs import outputs, physical, tabulated
 from .published import PUBLISHED
 from .report import scene_report
+from .sweep_outputs import SWEEP_OUTPUTS
 
-__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases",
-           "scene_report"]
+__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "SWEEP_OUTPUTS", "TITLE", "build",
+           "hard_cases", "scene_report"]
 
 
 def build() -> Derivation:

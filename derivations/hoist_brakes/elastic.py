@@ -22,7 +22,7 @@ import numpy as np
 
 from crane_sym.derivation import Derivation
 from crane_sym.phase_table import HybridRun
-from crane_sym.piecewise_linear import Guard, PiecewiseResult, closed_form, first_crossing
+from crane_sym.piecewise_linear import Guard, PiecewiseResult, first_crossing
 
 #: Brake states of one side: no brake yet, sliding forward/backward, stuck.
 OFF, FORWARD, BACKWARD, STUCK = "off", "+", "-", "0"
@@ -193,7 +193,7 @@ class TwoMassHoist:
             candidates = [seg.t0, seg.t1]
             t = seg.t0
             rate_w = w @ A                       # d/dt (w·x) = w·(A x + b)
-            form = closed_form(A, b)
+            form = seg.form
             start = seg.x0
             while t < seg.t1:
                 hit = first_crossing(form, start, rate_w, float(w @ b), seg.t1 - t)
