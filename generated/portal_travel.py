@@ -2,7 +2,7 @@
 
 Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
 Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
-Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
+Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha, start-up, rated force, start-up, slope ratio, start-up, link damping, start-up, no-load speed, start-up, rigid break-away, start-up, backlash at the rim, start-up, first characteristic, start-up, motor mass at the rim.
 Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
 
 Functions and argument order:
@@ -15,12 +15,20 @@ Functions and argument order:
     tip_thickness_shift(z, alpha, h_a, dy, sigma) -> [1]    eq pointed tip
     pointed_tip_shift(z, alpha, h_a, dy) -> [1]    eq pointed tip
     undercut_limit(z, alpha, h_a) -> [1]    eq undercut limit
+    startup_motor_mass(J_r, n_m, omega_n, v_n) -> [kg]    eq start-up, motor mass at the rim
+    startup_rated_force(P_m, n_m, v_n) -> [N]    eq start-up, rated force
+    startup_no_load_speed(v_n, omega_0, omega_n) -> [m/s]    eq start-up, no-load speed
+    startup_backlash_at_rim(phi_b, v_n, omega_n) -> [m]    eq start-up, backlash at the rim
+    startup_first_slope(lambda_p, P_m, n_m, v_n, omega_0, omega_n) -> [N*s/m]    eq start-up, first characteristic
+    startup_slope_ratio(lambda_p, omega_0, omega_n) -> [1]    eq start-up, slope ratio
+    startup_link_damping(zeta, c_l, J_r, n_m, omega_n, v_n) -> [N*s/m]    eq start-up, link damping
+    startup_rigid_breakaway(lambda_p, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w) -> [m/s^2]    eq start-up, rigid break-away
     max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c) -> [N]    eq (3), (4)
 """
 
 import numpy as np
 
-__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'max_support_load']
+__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway', 'max_support_load']
 
 
 def _checked(name, value, sign, what):
@@ -567,6 +575,254 @@ def undercut_limit(z, alpha, h_a, *, out=None):
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     shape = _broadcast(z=z, alpha=alpha, h_a=h_a)
     return _into(out, shape, h_a - 1/2*z*np.sin(alpha)**2)
+
+
+def startup_motor_mass(J_r, n_m, omega_n, v_n, *, out=None):
+    """Motor rotors of one side reduced to the wheel rim. Eq start-up, motor mass at the rim.
+
+    Parameters
+    ----------
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [kg], broadcast over the arguments.
+    """
+    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    shape = _broadcast(J_r=J_r, n_m=n_m, omega_n=omega_n, v_n=v_n)
+    return _into(out, shape, J_r*n_m*omega_n**2/v_n**2)
+
+
+def startup_rated_force(P_m, n_m, v_n, *, out=None):
+    """Rated force of one side at the rim. Eq start-up, rated force.
+
+    Parameters
+    ----------
+    P_m : array_like
+        rated power of one motor [W], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    P_m = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    n_m = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    v_n = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    shape = _broadcast(P_m=P_m, n_m=n_m, v_n=v_n)
+    return _into(out, shape, P_m*n_m/v_n)
+
+
+def startup_no_load_speed(v_n, omega_0, omega_n, *, out=None):
+    """No-load speed at the rim. Eq start-up, no-load speed.
+
+    Parameters
+    ----------
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_0 = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(v_n=v_n, omega_0=omega_0, omega_n=omega_n)
+    return _into(out, shape, omega_0*v_n/omega_n)
+
+
+def startup_backlash_at_rim(phi_b, v_n, omega_n, *, out=None):
+    """Backlash phi_b of the fast shaft as a gap at the rim. Eq start-up, backlash at the rim.
+
+    Parameters
+    ----------
+    phi_b : array_like
+        backlash of one drive, on its fast shaft [rad], >= 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    phi_b   = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad')
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(phi_b=phi_b, v_n=v_n, omega_n=omega_n)
+    return _into(out, shape, phi_b*v_n/omega_n)
+
+
+def startup_first_slope(lambda_p, P_m, n_m, v_n, omega_0, omega_n, *, out=None):
+    """Slope beta_1 of the first start characteristic of one side. Eq start-up, first characteristic.
+
+    Parameters
+    ----------
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    P_m : array_like
+        rated power of one motor [W], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N*s/m], broadcast over the arguments.
+    """
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(lambda_p=lambda_p, P_m=P_m, n_m=n_m, v_n=v_n, omega_0=omega_0, omega_n=omega_n)
+    return _into(out, shape, P_m*lambda_p*n_m*omega_n/(omega_0*v_n**2))
+
+
+def startup_slope_ratio(lambda_p, omega_0, omega_n, *, out=None):
+    """Ratio q of the slopes of consecutive characteristics (three steps to the natural one). Eq start-up, slope ratio.
+
+    Parameters
+    ----------
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(lambda_p=lambda_p, omega_0=omega_0, omega_n=omega_n)
+    return _into(out, shape, omega_0**(1/3)*(1/(omega_0 - omega_n))**(1/3)/lambda_p**(1/3))
+
+
+def startup_link_damping(zeta, c_l, J_r, n_m, omega_n, v_n, *, out=None):
+    """Damping coefficient b of a link. Eq start-up, link damping.
+
+    Parameters
+    ----------
+    zeta : array_like
+        damping ratio of a link against its motors [1], > 0
+    c_l : array_like
+        stiffness of one elastic link (portal side and drive, at the rim) [N/m], > 0
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N*s/m], broadcast over the arguments.
+    """
+    zeta    = _checked('zeta', zeta, 'positive', 'damping ratio of a link against its motors, 1')
+    c_l     = _checked('c_l', c_l, 'positive', 'stiffness of one elastic link (portal side and drive, at the rim), N/m')
+    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    shape = _broadcast(zeta=zeta, c_l=c_l, J_r=J_r, n_m=n_m, omega_n=omega_n, v_n=v_n)
+    return _into(out, shape, 2*np.sqrt(J_r)*np.sqrt(c_l)*np.sqrt(n_m)*omega_n*zeta/v_n)
+
+
+def startup_rigid_breakaway(lambda_p, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w, *, out=None):
+    """Acceleration of the rigid drive at break-away on the first characteristic. Eq start-up, rigid break-away.
+
+    Parameters
+    ----------
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    P_m : array_like
+        rated power of one motor [W], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    m_k : array_like
+        mass of the crane [kg], > 0
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    W_f : array_like
+        friction resistance to travel [N], > 0
+    W_w : array_like
+        wind resistance to travel [N], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s^2], broadcast over the arguments.
+    """
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    m_k      = _checked('m_k', m_k, 'positive', 'mass of the crane, kg')
+    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    W_f      = _checked('W_f', W_f, 'positive', 'friction resistance to travel, N')
+    W_w      = _checked('W_w', W_w, 'nonnegative', 'wind resistance to travel, N')
+    shape = _broadcast(lambda_p=lambda_p, P_m=P_m, n_m=n_m, v_n=v_n, m_k=m_k, J_r=J_r, omega_n=omega_n,
+                       W_f=W_f, W_w=W_w)
+    return _into(out, shape, (2*P_m*lambda_p*n_m/v_n - W_f - W_w)/(2*J_r*n_m*omega_n**2/v_n**2 + m_k))
 
 
 def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c, *, out=None):
