@@ -56,54 +56,15 @@ def test_no_crossing_returns_none():
     assert first_crossing(form, np.array([0.5, 0.0]), np.array([1.0, 0.0]), 0.6, 20.0) is None
 
 
-class _Integrated:
-    """The same hybrid system, integrated by solve_ivp with events."""
-
-    def __init__(self, system, max_step=np.inf):
-        self.system, self.max_step = system, max_step
-
-    def run(self, mode, x0, t_end, schedule):
-        t, x, out_t, out_x = 0.0, np.asarray(x0, float), [], []
-        pending = sorted(schedule)
-        while t < t_end:
-            A, b = self.system.matrices(mode)
-            stop = pending[0][0] if pending else t_end
-            events = []
-            for guard in self.system.guards(mode):
-                w, k = np.array(guard.weights), guard.constant
-
-                def ev(_, y, w=w, k=k):
-                    return w @ y + k
-                ev.terminal, ev.direction = True, guard.direction
-                events.append((ev, guard.name))
-            sol = integrate.solve_ivp(lambda _, y: A @ y + b, (t, stop), x, method="DOP853",
-                                      rtol=1e-12, atol=1e-12, dense_output=True,
-                                      max_step=self.max_step,
-                                      events=[e for e, _ in events])
-            hits = [(te[0], name) for te, (_, name) in zip(sol.t_events, events)
-                    if len(te) and te[0] > t + 1e-12]
-            end, name = min(hits) if hits else (stop, None)
-            if name is None:
-                name = pending.pop(0)[1] if pending else "end"
-            grid = np.linspace(t, end, 50)
-            out_t.append(grid), out_x.append(sol.sol(grid).T)
-            x = sol.sol(end)
-            t = end
-            if name == "end":
-                break
-            mode, x = self.system.switch(mode, name, t, x)
-        return np.concatenate(out_t), np.concatenate(out_x)
-
-
 @pytest.mark.parametrize("payload", [0.0, 52e3])
-def test_fig9_against_solve_ivp(payload):
+def test_fig9_against_solve_ivp(payload, integrated):
     hoist = table1_hoist(payload)
     schedule = [(0.0, "motor torque lost"), (0.1, "safety brake"), (0.4, "service brake")]
     omega = 50 * np.pi
     t0 = time.perf_counter()
     closed = hoist.run(omega, 0.3)
     t1 = time.perf_counter()
-    times, states = _Integrated(hoist, 1e-4).run(*hoist.start(omega), 0.3, schedule)
+    times, states = integrated(hoist, 1e-4).run(*hoist.start(omega), 0.3, schedule)
     t2 = time.perf_counter()
     ours = closed.state(times)
     scale = np.abs(states).max(axis=0)
@@ -115,7 +76,7 @@ def test_fig9_against_solve_ivp(payload):
     assert abs(peak) >= np.max(np.abs(sampled)) - 1e-9
 
 
-def test_solve_ivp_with_default_steps_skips_a_contact_the_closed_form_finds():
+def test_solve_ivp_with_default_steps_skips_a_contact_the_closed_form_finds(integrated):
     """Lowering the hook: after the first rebound the flanks touch for ~4 ms at
     t = 0.163 s inside one solve_ivp step; its events miss it, the certified
     search does not."""
@@ -130,7 +91,7 @@ def test_solve_ivp_with_default_steps_skips_a_contact_the_closed_form_finds():
         def switch(self, mode, name, t, x):  # noqa: E301
             seen.append((t, name))
             return switch(mode, name, t, x)
-    _Integrated(Spy()).run(*hoist.start(50 * np.pi), 0.2, schedule)
+    integrated(Spy()).run(*hoist.start(50 * np.pi), 0.2, schedule)
     assert not any(name == "close hold" and t < 0.17 for t, name in seen)
 
 

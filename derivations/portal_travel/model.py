@@ -219,9 +219,9 @@ LATEX_NAMES = {
     psi: r"\psi", G_g: r"G_{г}", G_pch: r"G_{пч}", G_vs: r"G_{вс}", L_max: r"L_{\max}",
     x_o: "x_o", c_arm: "c", M_v: r"M_{в}", R_max: r"R_{\max}", V_total: "V",
     psi_cell: r"\psi_{\mathrm{Table\,1}}", J_r: "J_r", n_m: "n_m", omega_n: r"\omega_n",
-    omega_0: r"\omega_0", v_n: "v_n", P_m: "P_m", lam: r"\lambda", c_l: "c",
+    omega_0: r"\omega_0", v_n: "v_n", P_m: "P_m", lam: r"\lambda", c_l: r"C_{пр}",
     zeta: r"\zeta", m_k: "m_k", W_f: "W_f", W_w: "W_w", phi_b: r"\varphi_b", m_d: "m_d",
-    P_nom: "P_n", v_0: "v_0", beta_1: r"\beta_1", q_step: "q", s_b: "s", b_l: "b",
+    P_nom: "P_n", v_0: "v_0", beta_1: r"\beta_1", q_step: "q", s_b: "s_b", b_l: "b",
     a_0: "a_0", F_peak: r"F_{\max}/\mathrm{kN}",
     a_cell: r"a/(\mathrm{m/s^2})",
     F_m: r"\mathtt{m}", F_z1: r"\mathtt{z1}", F_z2: r"\mathtt{z2}", F_aw: r"\mathtt{a_w}",
@@ -278,7 +278,8 @@ the friction; the motor MTF311-6, 13 kW at 935 rpm; hold times 0.4, 0.8, 0.8 s.
                                           crane m_к  <- W_w (wind), W_f (friction)
     motors, right m_d --[ c, b, gap s ]--/
 
-Newton for each mass: m_d·v̇_i = β_k(v0 − v_i) − F_i, m_к·v̇_к = F_1 + F_2 − W_w
+Newton for each mass (c is the text's C_пр, s = s_b the backlash at the rim,
+b the damping behind its α): m_d·v̇_i = β_k(v0 − v_i) − F_i, m_к·v̇_к = F_1 + F_2 − W_w
 − W_f while the crane moves forward; F_i = c(u_i − s) + b·u̇_i on the driving
 flank (u_i = x_i − x_к ≥ s), 0 in the gap, c·u_i + b·u̇_i on the trailing flank
 (u_i ≤ 0). The crane stands (first stage) while W_w − W_f ≤ F_1 + F_2 ≤ W_w + W_f.
@@ -298,7 +299,7 @@ the paper's reference [8]); λ = 2 (a usual peak of a relay start, below the
 MTF311-6's breakdown multiple of about 2.4); link stiffness c = 5 MN/m per side
 (20 mm of longitudinal deflection of a portal side under 100 kN); damping ratio
 ζ = 0.05 of a link against its motors (logarithmic decrement about 0.3), b =
-2ζ·sqrt(c·m_d). Table 1's F_max is read as the load of both drives on the portal,
+2ζ·√(c·m_d). Table 1's F_max is read as the load of both drives on the portal,
 F_1 + F_2: with these masses its mean start load is of the order of Table 1's
 F_ср = 150 kN, and per support it is half of it. Each row's backlash is in both
 drives.

@@ -31,7 +31,9 @@ def equations_of_motion(d: Derivation) -> None:
            "defines (model text).")
     for i, (name, eq) in enumerate(zip(("left motors", "right motors", "crane"), eqs)):
         d.add(f"start-up, {name}", eq, how if i == 0 else "The same Lagrangian.",
-              "Second stage: joint motion of the motor and crane masses." if i == 2 else "",
+              "Second stage: joint motion of the motor and crane masses. Fig. 12 (loads and "
+              "speeds for backlash 0, π, 2π): `crane-sym run fig12_startup_backlash`."
+              if i == 2 else "",
               "Start-up with backlash (Fig. 11)" if i == 0 else "")
     d.add("start-up, first stage", sp.Eq(m_d * x1.diff(t, 2),
                                          beta * (v_0 - x1.diff(t)) - sp.Symbol("F_1")),
