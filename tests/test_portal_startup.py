@@ -69,6 +69,14 @@ def test_the_load_grows_with_the_backlash():
     assert res["0"]["F_max_kN"] < res["pi"]["F_max_kN"] < res["2pi"]["F_max_kN"]
 
 
+def test_the_model_texts_mean_start_load():
+    """The model text: mean F1 + F2 over the 2 s of the start is 122-125 kN."""
+    for phi in (0.0, np.pi, 2 * np.pi):
+        model = _model(phi)
+        mean = model.load(model.run(2.0), np.linspace(0.0, 2.0, 20001)).mean()
+        assert 121.5e3 <= mean < 125.5e3, phi
+
+
 def test_equations_of_motion_are_the_hybrid_systems(derivation):
     """The Lagrange steps, both links driving and the crane moving forward, have the
     same matrices as startup.py's mode (DRIVE, DRIVE, FORWARD)."""

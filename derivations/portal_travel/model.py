@@ -260,8 +260,8 @@ the portal as a couple of forces ±M_в/c, each shared by the two legs under it.
              ====== circular rail, couple arm c ======
              leg   leg                       leg   leg
 
-Start-up with backlash (Fig. 11, Table 1; section "three-mass design scheme"
-of 003_5e8a923a75d2f7ba.txt). The paper's equations (1)–(2) are lost in the OCR
+Start-up with backlash (Fig. 11, Table 1; the paragraphs before Table 1 of
+003_5e8a923a75d2f7ba.txt). The paper's equations (1)–(2) are lost in the OCR
 (only "(1) Щ md \mdi тк J тк ' тк W8 (2) V" survives); the model is built from
 the text's definitions: "the masses of the motor rotors of the right and left
 side of the portal, reduced to the rim of the running wheel, m_d, joined by two
@@ -272,7 +272,7 @@ multiple"; "C_пр, the reduced longitudinal stiffness of the portal; α, the
 damping coefficient"; "first stage: the backlash is taken up and the link load
 reaches the resistance to travel; second stage: joint motion of the motor and
 crane masses"; friction 30 kN, friction and wind together 60 kN, the wind below
-the friction; the motor MTF311-6, 13 kW at 935 rpm; hold times 0.4, 0.8, 0.8 s.
+the friction (taken as a constant head wind); the motor MTF311-6, 13 kW at 935 rpm; hold times 0.4, 0.8, 0.8 s.
 
     motors, left  m_d --[ c, b, gap s ]--\
                                           crane m_к  <- W_w (wind), W_f (friction)
@@ -300,7 +300,7 @@ MTF311-6's breakdown multiple of about 2.4); link stiffness c = 5 MN/m per side
 (20 mm of longitudinal deflection of a portal side under 100 kN); damping ratio
 ζ = 0.05 of a link against its motors (logarithmic decrement about 0.3), b =
 2ζ·√(c·m_d). Table 1's F_max is read as the load of both drives on the portal,
-F_1 + F_2: with these masses its mean start load is of the order of Table 1's
-F_ср = 150 kN, and per support it is half of it. Each row's backlash is in both
-drives.
+F_1 + F_2: the model's mean F_1 + F_2 over the 2 s of the start, 122–125 kN,
+is of the order of Table 1's F_ср = 150 kN (per side it would be half). Each
+row's backlash is in both drives.
 """
