@@ -2,7 +2,7 @@
 
 Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
 Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
-Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha, start-up, rated force, start-up, slope ratio, start-up, link damping, start-up, no-load speed, start-up, rigid break-away, start-up, backlash at the rim, start-up, first characteristic, start-up, motor mass at the rim.
+Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha, start-up, rated force, start-up, slope ratio, start-up, link damping, start-up, no-load speed, start-up, rigid break-away, start-up, backlash at the rim, start-up, first characteristic, start-up, motor mass at the rim, start-up, motor speed in the gap.
 Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
 
 Functions and argument order:
@@ -15,6 +15,7 @@ Functions and argument order:
     tip_thickness_shift(z, alpha, h_a, dy, sigma) -> [1]    eq pointed tip
     pointed_tip_shift(z, alpha, h_a, dy) -> [1]    eq pointed tip
     undercut_limit(z, alpha, h_a) -> [1]    eq undercut limit
+    startup_gap_motor_speed(t_s, lambda_p, P_m, J_r, v_n, omega_0, omega_n) -> [m/s]    eq start-up, motor speed in the gap
     startup_motor_mass(J_r, n_m, omega_n, v_n) -> [kg]    eq start-up, motor mass at the rim
     startup_rated_force(P_m, n_m, v_n) -> [N]    eq start-up, rated force
     startup_no_load_speed(v_n, omega_0, omega_n) -> [m/s]    eq start-up, no-load speed
@@ -28,7 +29,7 @@ Functions and argument order:
 
 import numpy as np
 
-__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway', 'max_support_load']
+__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'startup_gap_motor_speed', 'startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway', 'max_support_load']
 
 
 def _checked(name, value, sign, what):
@@ -575,6 +576,46 @@ def undercut_limit(z, alpha, h_a, *, out=None):
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     shape = _broadcast(z=z, alpha=alpha, h_a=h_a)
     return _into(out, shape, h_a - 1/2*z*np.sin(alpha)**2)
+
+
+def startup_gap_motor_speed(t_s, lambda_p, P_m, J_r, v_n, omega_0, omega_n, *, out=None):
+    """Motor speed at the rim in the first stage while the gap is open (from rest, first characteristic). Eq start-up, motor speed in the gap.
+
+    Parameters
+    ----------
+    t_s : array_like
+        time from the start (first stage) [s], >= 0
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    P_m : array_like
+        rated power of one motor [W], > 0
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t_s      = _checked('t_s', t_s, 'nonnegative', 'time from the start (first stage), s')
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(t_s=t_s, lambda_p=lambda_p, P_m=P_m, J_r=J_r, v_n=v_n, omega_0=omega_0,
+                       omega_n=omega_n)
+    x0 = 1/(omega_n)
+    return _into(out, shape, -omega_0*v_n*x0*np.expm1(-P_m*lambda_p*t_s*x0/(J_r*omega_0)))
 
 
 def startup_motor_mass(J_r, n_m, omega_n, v_n, *, out=None):

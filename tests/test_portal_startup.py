@@ -140,6 +140,13 @@ def test_fig12_scene_runs_and_agrees_with_the_derivation(tmp_path):
         assert report.values[f"F_max_{i}"] / 1e3 == pytest.approx(res[gap]["F_max_kN"],
                                                                   rel=1e-9)
     assert len([p for p in plots if p.suffix == ".png"]) == 3
+    # the generated first-stage speed is the hybrid run's motor speed when the flank closes
+    for i, phi in ((1, np.pi), (2, 2 * np.pi)):
+        model = _model(phi)
+        run = model.run(1.0)
+        closing = next(t for t, event, _ in run.events if event.startswith("drive"))
+        speed = run.state(np.array([closing]))[0, 1]
+        assert report.values[f"v_close_{i}"] == pytest.approx(speed, rel=1e-9)
 
 
 @pytest.mark.parametrize("edit, name", [

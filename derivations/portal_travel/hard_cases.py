@@ -31,7 +31,8 @@ def _gear(rng: np.random.Generator, n: int, z_lo: float, z_hi: float,
             "omega_n": log(50, 150), "omega_0": np.full(n, 160.0),
             "v_n": log(0.2, 1.0), "P_m": log(5e3, 5e4), "lambda_p": rng.uniform(1.2, 2.5, n),
             "c_l": log(1e6, 2e7), "zeta": log(0.01, 0.2), "m_k": log(1e5, 5e5),
-            "W_f": log(1e4, 6e4), "W_w": log(1e3, 6e4), "phi_b": log(1e-3, 6.3)}
+            "W_f": log(1e4, 6e4), "W_w": log(1e3, 6e4), "phi_b": log(1e-3, 6.3),
+            "t_s": log(1e-9, 1.0)}
 
 
 def hard_cases(points: int = 60, seed: int = 20261123) -> dict[str, dict[str, np.ndarray]]:

@@ -158,7 +158,8 @@ _loads = [
 J_r, n_m, omega_n, omega_0, v_n, P_m, lam = sp.symbols(
     "J_r n_m omega_n omega_0 v_n P_m lambda_p", positive=True)
 c_l, zeta, m_k, W_f = sp.symbols("c_l zeta m_k W_f", positive=True)
-W_w, phi_b = sp.symbols("W_w phi_b", nonnegative=True)
+W_w, phi_b, t_s = sp.symbols("W_w phi_b t_s", nonnegative=True)
+v_gap = sp.Symbol("v_gap", real=True)
 m_d, P_nom, v_0, beta_1, q_step, s_b, b_l, a_0 = sp.symbols(
     "m_d P_nom v_0 beta_1 q_step s_b b_l a_0", real=True)
 F_peak = sp.Symbol("F_peak", real=True)              # a model's F_max over 1 kN
@@ -187,6 +188,10 @@ _startup = [
                    sample_range=(1e3, 6e4)),
     PhysicalSymbol(phi_b, ONE, "rad", "backlash of one drive, on its fast shaft",
                    sign="nonnegative", sample_range=(0.1, 6.3)),
+    PhysicalSymbol(t_s, time, "s", "time from the start (first stage)", sign="nonnegative",
+                   sample_range=(1e-3, 0.5)),
+    PhysicalSymbol(v_gap, velocity, "m/s", "motor speed at the rim while its gap is open",
+                   DEFINED, "real"),
     PhysicalSymbol(m_d, mass, "kg", "motor rotors of one side reduced to the wheel rim",
                    DEFINED, "real"),
     PhysicalSymbol(P_nom, force, "N", "rated force of one side at the rim", DEFINED, "real"),
@@ -223,7 +228,7 @@ LATEX_NAMES = {
     zeta: r"\zeta", m_k: "m_k", W_f: "W_f", W_w: "W_w", phi_b: r"\varphi_b", m_d: "m_d",
     P_nom: "P_n", v_0: "v_0", beta_1: r"\beta_1", q_step: "q", s_b: "s_b", b_l: "b",
     a_0: "a_0", F_peak: r"F_{\max}/\mathrm{kN}",
-    a_cell: r"a/(\mathrm{m/s^2})",
+    a_cell: r"a/(\mathrm{m/s^2})", t_s: "t", v_gap: r"v_{\mathrm{gap}}",
     F_m: r"\mathtt{m}", F_z1: r"\mathtt{z1}", F_z2: r"\mathtt{z2}", F_aw: r"\mathtt{a_w}",
     F_ha: r"\mathtt{h_a}", F_alpha: r"\mathtt{\alpha}^\circ", F_x1: r"\mathtt{x1}",
     F_x2: r"\mathtt{x2}", F_k1: r"\mathtt{k1}", F_k2: r"\mathtt{k2}", F_k: r"\mathtt{k}",

@@ -18,7 +18,7 @@ from crane_sym.involute import acos_checked, involute, tip_half_angle, tip_shift
 from .model import (G_g, G_pch, G_vs, J_r, L_max, M_v, P_m, P_nom, W_f, W_w, a_w, alpha,
                     alpha_a1, alpha_a2, alpha_tw, c_arm, c_l, d_a1, d_a2, dy, dy1, dy2, ha,
                     lam, m, m_d, m_k, n_m, omega_0, omega_n, phi_b, psi, sigma, v_0, v_n, x,
-                    x1, x2, x_o, x_sum, z, z1, z2, zeta)
+                    t_s, x1, x2, x_o, x_sum, z, z1, z2, zeta)
 
 
 def _stable(expr: sp.Expr) -> sp.Expr:
@@ -96,7 +96,13 @@ def startup_outputs(rhs) -> list[Output]:
     if sp.simplify(ratio - rhs("start-up, slope ratio").subs(rim)) != 0:
         raise AssertionError("the slope ratio does not follow from its step")
     drive = (J_r, n_m, omega_n, v_n)
+    slope = rhs("start-up, first characteristic").subs(rim)
+    gap = sp.simplify(rhs("start-up, motor speed in the gap").subs(
+        {sp.Symbol("beta_1", real=True): slope}).subs(rim))
     return [
+        Output("startup_gap_motor_speed", gap, (t_s, lam, P_m, J_r, v_n, omega_0, omega_n),
+               ("start-up, motor speed in the gap",), "Motor speed at the rim in the first "
+               "stage while the gap is open (from rest, first characteristic).", "m/s"),
         Output("startup_motor_mass", rim[m_d], drive, ("start-up, motor mass at the rim",),
                "Motor rotors of one side reduced to the wheel rim.", "kg"),
         Output("startup_rated_force", rim[P_nom], (P_m, n_m, v_n), ("start-up, rated force",),

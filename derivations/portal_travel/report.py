@@ -173,6 +173,8 @@ def startup_report(scene, module):
 
     from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
 
+    from crane_sym.generated import portal_travel as gen
+
     from .startup import F_MEAN, ThreeMassTravel
 
     q = scene.parameters
@@ -191,6 +193,9 @@ def startup_report(scene, module):
     beta = float(module.startup_first_slope())
     slopes = tuple(beta * ratio ** k for k in range(len(holds) + 1))
     times = np.linspace(0.0, end, points)
+    # the gap's closed-form speed from the paper's general module (a scene module
+    # specialized with t_s as an input takes SymPy minutes in codegen)
+    gap_args = {k: q[k] for k in ("lambda_p", "P_m", "J_r", "v_n", "omega_0", "omega_n")}
     values = {"m_d": m_d, "b": b, "v0": v0, "beta_1": beta, "q": ratio,
               "a0_rigid": float(module.startup_rigid_breakaway())}
     lines = [f"motors of one side at the rim   m_d = {fq(m_d / 1e3, 't')}, "
@@ -207,6 +212,11 @@ def startup_report(scene, module):
         when, peak = model.peak(run)
         acc = model.step_accelerations(run)
         x = run.state(times)
+        closing = next((t for t, event, _ in run.events if event.startswith("drive")), None)
+        if closing is not None:      # the flank closes: the gap's closed-form speed
+            values[f"v_close_{i}"] = float(gen.startup_gap_motor_speed(closing, **gap_args))
+            lines.append(f"backlash {fq(phi, 'rad')}: the flank closes at t = "
+                         f"{fq(closing, 's')}, motors at {fq(values[f'v_close_{i}'], 'm/s')}")
         values.update({f"F_max_{i}": peak, f"psi_{i}": peak / F_MEAN, f"t_max_{i}": when,
                        **{f"a{k + 1}_{i}": float(a) for k, a in enumerate(acc)}})
         lines.append(f"backlash {fq(phi, 'rad')} (s = {fq(s * 1e3, 'mm')} at the rim): "

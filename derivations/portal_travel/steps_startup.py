@@ -8,7 +8,7 @@ import sympy as sp
 from crane_sym.derivation import Derivation
 from crane_sym.lagrange import lagrange_equations
 
-from .model import (F_peak, J_r, a_cell, P_m, P_nom, W_f, W_w, a_0, b_l, beta_1, c_l, lam, m_d, m_k,
+from .model import (F_peak, J_r, a_cell, t_s, v_gap, P_m, P_nom, W_f, W_w, a_0, b_l, beta_1, c_l, lam, m_d, m_k,
                     n_m, omega_0, omega_n, phi_b, psi_cell, q_step, s_b, v_0, v_n, zeta)
 from .startup import table1_results
 
@@ -68,6 +68,17 @@ def reduction(d: Derivation) -> None:
                                                 / (m_k + 2 * m_d)),
           "Rigid drive, no backlash: at standstill both sides pull λ·P_n; what exceeds the "
           "resistance accelerates all three masses.", "A reference for the elastic start.")
+    v = sp.Function("v")(t_s)
+    gap_speed = v_0 * (1 - sp.exp(-beta_1 / m_d * t_s))
+    ode = sp.Eq(m_d * v.diff(t_s), beta_1 * (v_0 - v))
+    residual = (ode.lhs - ode.rhs).subs(v, gap_speed).doit()
+    if sp.simplify(residual) != 0 or gap_speed.subs(t_s, 0) != 0:
+        raise AssertionError("the gap speed does not solve the first-stage equation")
+    d.add("start-up, motor speed in the gap", sp.Eq(v_gap, gap_speed),
+          "First stage, gap open (F_1 = 0): m_d·v̇ = β_1(v0 − v) from rest, a first-order "
+          "equation solved in closed form; the time constant m_d/β_1 = J_r·ω_0·ω_n/(λ·P_m) "
+          "does not depend on the gearing.", "How fast the motors run into the backlash: "
+          "the speed at which a flank closes sets the impact.")
 
 
 def table1_model(d: Derivation) -> None:
