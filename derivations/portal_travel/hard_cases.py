@@ -27,9 +27,16 @@ def _gear(rng: np.random.Generator, n: int, z_lo: float, z_hi: float,
             "dy2": rng.uniform(0, 0.2, n), "sigma": rng.uniform(0, 0.45, n),
             "psi": rng.uniform(1, 2, n), "G_g": log(5e4, 5e5), "G_pch": log(5e5, 3e6),
             "G_vs": log(1e5, 1e6), "L_max": log(15, 40), "x_o": log(0.5, 5),
-            "c": log(3, 10), "J_r": log(0.05, 1.0), "n_m": rng.integers(1, 5, n) * 1.0,
-            "omega_n": log(50, 150), "omega_0": np.full(n, 160.0),
-            "v_n": log(0.2, 1.0), "P_m": log(5e3, 5e4), "lambda_p": rng.uniform(1.2, 2.5, n),
+            "c": log(3, 10)}
+
+
+def _startup(rng: np.random.Generator, n: int) -> dict[str, np.ndarray]:
+    """Columns of the start-up's arguments (their own generator: the gear cases
+    keep their points)."""
+    log = lambda lo, hi: 10.0 ** rng.uniform(np.log10(lo), np.log10(hi), n)  # noqa: E731
+    return {"J_r": log(0.05, 1.0), "n_m": rng.integers(1, 5, n) * 1.0,
+            "omega_n": log(50, 150), "omega_0": np.full(n, 160.0), "v_n": log(0.2, 1.0),
+            "P_m": log(5e3, 5e4), "lambda_p": rng.uniform(1.2, 2.5, n),
             "c_l": log(1e6, 2e7), "zeta": log(0.01, 0.2), "m_k": log(1e5, 5e5),
             "W_f": log(1e4, 6e4), "W_w": log(1e3, 6e4), "phi_b": log(1e-3, 6.3),
             "t_s": log(1e-9, 1.0)}
@@ -49,6 +56,9 @@ def hard_cases(points: int = 60, seed: int = 20261123) -> dict[str, dict[str, np
     near["x"] = x_tip * (1 - np.logspace(-10, -2, n))
     near["sigma"] = np.logspace(-12, -1, n)
     large = _gear(rng, n, 150, 1e5, rng.uniform(0.3, 0.4, n), rng.uniform(0.9, 1.3, n))
+    start = np.random.default_rng(seed + 1)
+    for case in (typical, small, near, large):
+        case.update(_startup(start, n))
     # the start-up's no-load speed just above the rated (the slope ratio's ω0 − ω_n)
     near["omega_0"] = near["omega_n"] * (1 + np.logspace(-9, -1, n))
     return {"typical gears": typical,
