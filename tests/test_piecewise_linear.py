@@ -158,3 +158,24 @@ def test_first_crossing_is_never_later_than_a_dense_scan():
             continue
         assert hit is not None and hit <= grid[changes[0] + 1] + 1e-12
         assert abs(form.state(hit, x0) @ w - 0.3) < 1e-8 * (1 + np.abs(g).max())
+
+
+def test_repeated_semisimple_eigenvalues_stay_numeric(monkeypatch):
+    """Two equal drives on one crane (paper 003): each vibration eigenvalue twice,
+    with a full set of eigenvectors; the numeric path keeps it (no exact Jordan
+    form) and matches expm."""
+    import crane_sym.piecewise_linear as pl
+
+    m, c, b = 2.0, 4e3, 5.0               # state (x1, x2, x_k, v1, v2, v_k), crane held
+    A = np.zeros((6, 6))
+    A[0, 3] = A[1, 4] = 1.0
+    for row, x in ((3, 0), (4, 1)):
+        A[row, x], A[row, 2], A[row, row] = -c / m, c / m, -b / m
+    rhs = np.array([0, 0, 0, 1.0, 1.0, 0])
+    assert np.sum(np.isclose(np.linalg.eigvals(A), np.linalg.eigvals(A)[0])) == 2
+    monkeypatch.setattr(pl, "_closed_form_cached", lambda *a: pytest.fail("went exact"))
+    form = pl._closed_form_numeric(tuple(A.ravel()), tuple(rhs))
+    x0 = np.random.default_rng(3).normal(size=6)
+    for t in (0.0, 0.013, 0.4, 2.0):
+        ref = _expm_state(A, rhs, x0, t)
+        assert np.allclose(form.state(t, x0), ref, rtol=1e-10, atol=1e-10 * np.abs(ref).max())

@@ -163,3 +163,13 @@ def test_bad_scene_data_is_refused_by_name(tmp_path, edit, name):
     bad.write_text(text.replace(edit[0], edit[1]), encoding="utf-8")
     with pytest.raises(SceneError, match=name):
         run_scene(load_scene(bad), tmp_path)
+
+
+def test_walkthrough_has_the_startup_model(capsys):
+    from crane_sym.cli import main
+    assert main(["walkthrough", "003"]) == 0
+    text = capsys.readouterr().out
+    for needle in ("lost in the OCR", "start-up, motor speed in the gap",
+                   "start-up model, F_max, backlash 2pi", "003-startup-unstated-parameters",
+                   "fig12_startup_backlash", "chosen, not fitted"):
+        assert needle in text, needle
