@@ -1,4 +1,5 @@
-"""A run of a piecewise-linear system as a table of closed forms, one per phase.
+"""Outputs of a run of a piecewise-linear system: values, the largest value,
+and the table of closed forms, one per phase, that a scene's module carries.
 
 :func:`crane_sym.piecewise_linear.simulate` finds the phases of one run (a
 scene's data); an output g = w·x + k of the state is then, on phase i,
@@ -22,9 +23,12 @@ from typing import Callable, Hashable, Sequence
 import numpy as np
 
 from .kernels import _phase_sum
-from .piecewise_linear import HybridSystem, PiecewiseResult, simulate
+from .piecewise_linear import HybridSystem, PiecewiseResult, Segment, first_crossing, simulate
 
-__all__ = ["HybridRun", "PhaseTable", "tabulate"]
+__all__ = ["HybridRun", "PhaseTable", "largest", "stationary_times", "tabulate", "values"]
+
+#: An affine output of the state per mode: mode -> (w, k), the output w·x + k.
+Affine = Callable[[Hashable], tuple[np.ndarray, float]]
 
 
 @dataclass(frozen=True)
@@ -105,3 +109,52 @@ class HybridRun:
     def table(self, result: PiecewiseResult | None = None) -> PhaseTable:
         """The output's table over the phases of ``result`` (solved if not given)."""
         return tabulate(self.solve() if result is None else result, self.output, self.scale)
+
+
+def values(result: PiecewiseResult, times: np.ndarray, affine: Affine) -> np.ndarray:
+    """w·x + k at ``times`` (inside the run), (w, k) = ``affine(mode)`` of each phase."""
+    times = np.asarray(times, dtype=float)
+    out = np.empty(times.shape)
+    starts = np.array([s.t0 for s in result.segments])
+    which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
+    for i, seg in enumerate(result.segments):
+        mask = which == i
+        if np.any(mask):
+            w, k = affine(seg.mode)
+            out[mask] = seg.state(times[mask]) @ np.asarray(w, float) + k
+    return out
+
+
+def stationary_times(segment: Segment, system: HybridSystem, weights: np.ndarray) -> list[float]:
+    """Times inside the phase where d/dt(w·x) = w·(A x + b) changes sign, found
+    like any event on the closed form (:func:`first_crossing`: none skipped)."""
+    A, b = system.matrices(segment.mode)
+    rate_w, rate_k = np.asarray(weights, float) @ A, float(np.asarray(weights, float) @ b)
+    found, t, x = [], segment.t0, segment.x0
+    while segment.t1 - t > 1e-12:
+        hit = first_crossing(segment.form, x, rate_w, rate_k, segment.t1 - t)
+        if hit is None:
+            break
+        t += hit
+        found.append(t)
+        t += 1e-9                                   # past this extremum
+        x = segment.form.state(t - segment.t0, segment.x0)
+    return found
+
+
+def largest(result: PiecewiseResult, system: HybridSystem, affine: Affine,
+            magnitude: bool = False) -> tuple[float, float]:
+    """(time, value) of the largest w·x + k over the run (of |w·x + k| with
+    ``magnitude``; the value keeps its sign): each phase's ends and stationary
+    points are the only candidates."""
+    best, best_key = (0.0, np.nan), -np.inf
+    for seg in result.segments:
+        w, k = affine(seg.mode)
+        w = np.asarray(w, float)
+        candidates = [seg.t0, seg.t1] + (stationary_times(seg, system, w) if w.any() else [])
+        found = seg.state(np.array(candidates)) @ w + k
+        keys = np.abs(found) if magnitude else found
+        i = int(np.argmax(keys))
+        if keys[i] > best_key:
+            best, best_key = (candidates[i], float(found[i])), keys[i]
+    return best

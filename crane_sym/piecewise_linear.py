@@ -178,7 +178,8 @@ def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedFo
         True: SymPy's exact Jordan form (entries as exact decimals); cheap for
         n ≤ 4 (two masses: quadratic eigenvalues), slow for larger systems with
         arbitrary data. False: numeric eigenvectors of the nonzero eigenvalues
-        (they must be simple) and the exact nilpotent series on the rest
+        (simple, or repeated with a full set of eigenvectors) and the exact
+        nilpotent series on the rest
         (rigid modes). Default: exact for n ≤ 4, numeric above.
     """
     A = np.asarray(A, dtype=float)
@@ -190,8 +191,10 @@ def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedFo
 
 @lru_cache(maxsize=256)
 def _closed_form_numeric(a_key: tuple, b_key: tuple) -> ClosedForm:
-    """exp(M t) = Σ e^{λt} r_i l_iᵀ over the nonzero (simple) eigenvalues, plus
-    Σ_j (N t)^j / j! · Q on the generalized kernel (Q = I − Σ r_i l_iᵀ, N = M Q)."""
+    """exp(M t) = Σ e^{λt} C_λ over the nonzero eigenvalues, plus Σ_j (N t)^j / j! · Q
+    on the generalized kernel (Q = I − Σ C_λ, N = M Q). C_λ = R (Lᴴ R)⁻¹ Lᴴ from the
+    right and left eigenvectors of λ: a repeated eigenvalue with a full set of
+    eigenvectors (two equal drives) stays numeric; a defective one goes exact."""
     from scipy.linalg import eig
 
     n = len(b_key)
@@ -200,29 +203,38 @@ def _closed_form_numeric(a_key: tuple, b_key: tuple) -> ClosedForm:
     M[:n, n] = b_key
     lam, vl, vr = eig(M, left=True, right=True)
     scale = max(np.abs(lam).max(), 1.0)
-    live = np.abs(lam) > 1e-6 * scale
-    values = lam[live]
-    if values.size and np.min(np.abs(values[:, None] - values[None, :])
-                              + np.eye(values.size) * scale) < 1e-6 * scale:
-        return _closed_form_cached(a_key, b_key)      # a repeated nonzero eigenvalue
+    live = np.flatnonzero(np.abs(lam) > 1e-6 * scale)
+    clusters: list[list[int]] = []                 # equal eigenvalues (symmetric sides)
+    for i in live:
+        near = [c for c in clusters if abs(lam[c[0]] - lam[i]) < 1e-6 * scale]
+        if near:
+            near[0].append(i)
+        else:
+            clusters.append([i])
     projector = np.zeros((n + 1, n + 1), dtype=complex)
     powers, sigmas, omegas, sine, coefs = [], [], [], [], []
-    for i in np.flatnonzero(live):
-        r, l = vr[:, i], vl[:, i].conj()
-        C = np.outer(r, l) / (l @ r)
+    for cluster in clusters:     # projector R (L^H R)^-1 L^H: semisimple clusters only
+        R, L = vr[:, cluster], vl[:, cluster].conj().T
+        gram = L @ R
+        if np.linalg.cond(gram) > 1e8:
+            return _closed_form_cached(a_key, b_key)   # a defective nonzero eigenvalue
+        C = R @ np.linalg.solve(gram, L)
         projector += C
-        if lam[i].imag < 0:
+        value = np.mean(lam[cluster])
+        if abs(value.imag) < 1e-6 * scale:             # real, or a pair too close to part
+            value = complex(value.real, 0.0)
+        if value.imag < 0:
             continue
-        pair = 2.0 if lam[i].imag > 0 else 1.0
+        pair = 2.0 if value.imag > 0 else 1.0
         for is_sine, part in ((False, pair * C.real), (True, -pair * C.imag)):
-            if lam[i].imag == 0 and is_sine:
+            if value.imag == 0 and is_sine:
                 continue
-            powers.append(0), sigmas.append(lam[i].real), omegas.append(abs(lam[i].imag))
+            powers.append(0), sigmas.append(value.real), omegas.append(abs(value.imag))
             sine.append(is_sine), coefs.append(part)
     Q = np.eye(n + 1) - projector.real
     N = M @ Q
     term = Q.copy()
-    for j in range(int(np.count_nonzero(~live))):
+    for j in range(n + 1 - live.size):
         if j:
             term = N @ term / j
         powers.append(j), sigmas.append(0.0), omegas.append(0.0)

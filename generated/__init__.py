@@ -10,6 +10,7 @@ Modules:
     scene_drum_drive_example
     scene_drum_drive_undamped
     scene_fig10_shift_limits
+    scene_fig12_startup_backlash
     scene_form1_gear_pair
     scene_hoist_drive_laws
     scene_hoist_fig3

@@ -1,8 +1,8 @@
 """Numeric functions for derivation 'portal_travel'. Generated; do not edit.
 
 Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
-Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
-Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
+Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with backlash and support loads).
+Equations: (3), (4), pointed tip, Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha, start-up, rated force, start-up, slope ratio, start-up, link damping, start-up, no-load speed, start-up, rigid break-away, start-up, backlash at the rim, start-up, first characteristic, start-up, motor mass at the rim, start-up, motor speed in the gap.
 Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
 
 Functions and argument order:
@@ -15,12 +15,21 @@ Functions and argument order:
     tip_thickness_shift(z, alpha, h_a, dy, sigma) -> [1]    eq pointed tip
     pointed_tip_shift(z, alpha, h_a, dy) -> [1]    eq pointed tip
     undercut_limit(z, alpha, h_a) -> [1]    eq undercut limit
+    startup_gap_motor_speed(t_s, lambda_p, P_m, J_r, v_n, omega_0, omega_n) -> [m/s]    eq start-up, motor speed in the gap
+    startup_motor_mass(J_r, n_m, omega_n, v_n) -> [kg]    eq start-up, motor mass at the rim
+    startup_rated_force(P_m, n_m, v_n) -> [N]    eq start-up, rated force
+    startup_no_load_speed(v_n, omega_0, omega_n) -> [m/s]    eq start-up, no-load speed
+    startup_backlash_at_rim(phi_b, v_n, omega_n) -> [m]    eq start-up, backlash at the rim
+    startup_first_slope(lambda_p, P_m, n_m, v_n, omega_0, omega_n) -> [N*s/m]    eq start-up, first characteristic
+    startup_slope_ratio(lambda_p, omega_0, omega_n) -> [1]    eq start-up, slope ratio
+    startup_link_damping(zeta, c_l, J_r, n_m, omega_n, v_n) -> [N*s/m]    eq start-up, link damping
+    startup_rigid_breakaway(lambda_p, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w) -> [m/s^2]    eq start-up, rigid break-away
     max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c) -> [N]    eq (3), (4)
 """
 
 import numpy as np
 
-__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'max_support_load']
+__all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'startup_gap_motor_speed', 'startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway', 'max_support_load']
 
 
 def _checked(name, value, sign, what):
@@ -166,8 +175,14 @@ def _tip_half_angle(x, z, alpha, ha, dy, what):
     m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
     formed without cancellation: delta = alpha_a - alpha by atan2 of exact
     products, then psi_a = (pi/2 + 2 tan(alpha)(dy - ha))/z - H(delta) with H of
-    ``_tip_lift_excess`` (the shift's share of the half angle cancels exactly). ValueError(what) when the
-    tip circle lies inside the base circle (``what=None``: no check)."""
+    ``_tip_lift_excess`` (the shift's share of the half angle cancels exactly).
+    Near a pointed tip psi_a is a small difference of two O(1/z) terms, so the
+    chain runs in NumPy's ``longdouble`` (64-bit significand on x86) and is
+    rounded to float once: the rounding of delta no longer shows through the
+    cancellation. ValueError(what) when the tip circle lies inside the base
+    circle (``what=None``: no check)."""
+    ld = np.longdouble
+    x, z, alpha, ha, dy = (np.asarray(v, dtype=float).astype(ld) for v in (x, z, alpha, ha, dy))
     lift = ha + x - dy
     d_a = z + 2.0 * lift
     e = 2.0 * lift / d_a
@@ -180,7 +195,9 @@ def _tip_half_angle(x, z, alpha, ha, dy, what):
     s_a = np.sqrt(one_minus * (1.0 + c_a))
     num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
     delta = np.arctan2(num, c * c_a + s * s_a)
-    return (0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)) / z - _tip_lift_excess(delta, alpha)
+    half = ld(np.pi) / 2 + ld(1.2246467991473532e-16) / 2     # pi/2 to longdouble
+    out = (half + 2.0 * np.tan(alpha) * (dy - ha)) / z - _tip_lift_excess(delta, alpha)
+    return np.asarray(out, dtype=float)
 
 
 def _tip_lift_excess(delta, alpha):
@@ -188,21 +205,22 @@ def _tip_lift_excess(delta, alpha):
     cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
     sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
     Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
-    tan(alpha)·d²/2 keeps every digit at small d."""
-    d = np.asarray(delta, dtype=float)
-    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
-           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
-           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
-           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
-    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
-           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
-           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
-           1.8683261924146203e-20, -3.706996413521072e-23)
+    tan(alpha)·d²/2 keeps every digit at small d. Evaluated in the dtype of
+    ``delta`` (the tip kernels pass NumPy's extended ``longdouble``); the
+    series' coefficients 2k/(2k+1)! and (2k-1)/(2k)! are formed in that dtype."""
+    d = np.asarray(delta)
+    d = d.astype(np.result_type(d.dtype, np.float64))
+    alpha = np.asarray(alpha).astype(d.dtype)
+    one = d.dtype.type(1)
     small = np.abs(d) < 1.0
-    y = np.where(small, d * d, 0.0)
+    y = np.where(small, d * d, 0.0).astype(d.dtype)
     p1, p2 = np.zeros_like(y), np.zeros_like(y)
-    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
-        p1, p2 = p1 * y + c1, p2 * y + c2
+    for k in range(12, 0, -1):                  # Horner from the 12th term down
+        sign = one if k % 2 else -one
+        fact_odd = float(np.prod(np.arange(1, 2 * k + 2, dtype=float)))   # (2k+1)!
+        fact_even = fact_odd / (2 * k + 1)                                  # (2k)!
+        p1 = p1 * y + sign * (d.dtype.type(2 * k) / d.dtype.type(fact_odd))
+        p2 = p2 * y + sign * (d.dtype.type(2 * k - 1) / d.dtype.type(fact_even))
     f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
     f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
     return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
@@ -218,8 +236,9 @@ def _tip_shift(z, alpha, ha, dy, sigma):
     reference circle when the tip is there) and H of ``_tip_lift_excess``:
     no cancellation. Phi(0) = sigma - K < 0 and Phi -> +inf at alpha + delta
     -> pi/2: bisection on that bracket, then Newton steps with Phi' = z
-    sin u (sin u - sin alpha)/cos² u - sigma sin u/cos alpha. ValueError when
-    sigma >= K (no shift gives the thickness)."""
+    sin u (sin u - sin alpha)/cos² u - sigma sin u/cos alpha. The Newton
+    steps and the final x (a difference when x is small) run in NumPy's
+    ``longdouble``. ValueError when sigma >= K (no shift gives the thickness)."""
     z, alpha, ha, dy, sigma = np.broadcast_arrays(*(np.asarray(a, dtype=float)
                                                     for a in (z, alpha, ha, dy, sigma)))
     K = 0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)
@@ -238,15 +257,22 @@ def _tip_shift(z, alpha, ha, dy, sigma):
         up = phi(mid) > 0
         lo = np.where(up, lo, mid)
         hi = np.where(up, mid, hi)
-    d = 0.5 * (lo + hi)
-    for _ in range(2):
+    ld = np.longdouble
+    z, alpha, ha, dy, sigma = (v.astype(ld) for v in (z, alpha, ha, dy, sigma))
+    half = ld(np.pi) / 2 + ld(1.2246467991473532e-16) / 2     # pi/2 to longdouble
+    K = half + 2.0 * np.tan(alpha) * (dy - ha)
+    c = np.cos(alpha)
+    d = 0.5 * (lo.astype(ld) + hi.astype(ld))
+    for _ in range(3):
         u = alpha + d
         gap = 2.0 * np.cos(alpha + 0.5 * d) * np.sin(0.5 * d)        # sin u - sin alpha
         slope = z * np.sin(u) * gap / np.cos(u) ** 2 - sigma * np.sin(u) / c
+        value = z * _tip_lift_excess(d, alpha) + sigma * np.cos(u) / c - K
         with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(slope > 0, phi(d) / slope, 0.0)
-        d = np.clip(d - step, lo, hi)
-    return z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
+            step = np.where(slope > 0, value / slope, 0.0)
+        d = np.clip(d - step, lo.astype(ld), hi.astype(ld))
+    out = z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
+    return np.asarray(out, dtype=float)
 
 
 def operating_pressure_angle(m, z1, z2, a_w, alpha, *, out=None):
@@ -550,6 +576,294 @@ def undercut_limit(z, alpha, h_a, *, out=None):
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
     shape = _broadcast(z=z, alpha=alpha, h_a=h_a)
     return _into(out, shape, h_a - 1/2*z*np.sin(alpha)**2)
+
+
+def startup_gap_motor_speed(t_s, lambda_p, P_m, J_r, v_n, omega_0, omega_n, *, out=None):
+    """Motor speed at the rim in the first stage while the gap is open (from rest, first characteristic). Eq start-up, motor speed in the gap.
+
+    Parameters
+    ----------
+    t_s : array_like
+        time from the start (first stage) [s], >= 0
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    P_m : array_like
+        rated power of one motor [W], > 0
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    t_s      = _checked('t_s', t_s, 'nonnegative', 'time from the start (first stage), s')
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(t_s=t_s, lambda_p=lambda_p, P_m=P_m, J_r=J_r, v_n=v_n, omega_0=omega_0,
+                       omega_n=omega_n)
+    x0 = 1/(omega_n)
+    return _into(out, shape, -omega_0*v_n*x0*np.expm1(-P_m*lambda_p*t_s*x0/(J_r*omega_0)))
+
+
+def startup_motor_mass(J_r, n_m, omega_n, v_n, *, out=None):
+    """Motor rotors of one side reduced to the wheel rim. Eq start-up, motor mass at the rim.
+
+    Parameters
+    ----------
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [kg], broadcast over the arguments.
+    """
+    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    shape = _broadcast(J_r=J_r, n_m=n_m, omega_n=omega_n, v_n=v_n)
+    return _into(out, shape, J_r*n_m*omega_n**2/v_n**2)
+
+
+def startup_rated_force(P_m, n_m, v_n, *, out=None):
+    """Rated force of one side at the rim. Eq start-up, rated force.
+
+    Parameters
+    ----------
+    P_m : array_like
+        rated power of one motor [W], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], broadcast over the arguments.
+    """
+    P_m = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    n_m = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    v_n = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    shape = _broadcast(P_m=P_m, n_m=n_m, v_n=v_n)
+    return _into(out, shape, P_m*n_m/v_n)
+
+
+def startup_no_load_speed(v_n, omega_0, omega_n, *, out=None):
+    """No-load speed at the rim. Eq start-up, no-load speed.
+
+    Parameters
+    ----------
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], broadcast over the arguments.
+    """
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_0 = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(v_n=v_n, omega_0=omega_0, omega_n=omega_n)
+    return _into(out, shape, omega_0*v_n/omega_n)
+
+
+def startup_backlash_at_rim(phi_b, v_n, omega_n, *, out=None):
+    """Backlash phi_b of the fast shaft as a gap at the rim. Eq start-up, backlash at the rim.
+
+    Parameters
+    ----------
+    phi_b : array_like
+        backlash of one drive, on its fast shaft [rad], >= 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m], broadcast over the arguments.
+    """
+    phi_b   = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad')
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(phi_b=phi_b, v_n=v_n, omega_n=omega_n)
+    return _into(out, shape, phi_b*v_n/omega_n)
+
+
+def startup_first_slope(lambda_p, P_m, n_m, v_n, omega_0, omega_n, *, out=None):
+    """Slope beta_1 of the first start characteristic of one side. Eq start-up, first characteristic.
+
+    Parameters
+    ----------
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    P_m : array_like
+        rated power of one motor [W], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N*s/m], broadcast over the arguments.
+    """
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(lambda_p=lambda_p, P_m=P_m, n_m=n_m, v_n=v_n, omega_0=omega_0, omega_n=omega_n)
+    return _into(out, shape, P_m*lambda_p*n_m*omega_n/(omega_0*v_n**2))
+
+
+def startup_slope_ratio(lambda_p, omega_0, omega_n, *, out=None):
+    """Ratio q of the slopes of consecutive characteristics (three steps to the natural one). Eq start-up, slope ratio.
+
+    Parameters
+    ----------
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    omega_0 : array_like
+        no-load (synchronous) motor speed [rad/s], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [1], broadcast over the arguments.
+    """
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    shape = _broadcast(lambda_p=lambda_p, omega_0=omega_0, omega_n=omega_n)
+    return _into(out, shape, omega_0**(1/3)*(1/(omega_0 - omega_n))**(1/3)/lambda_p**(1/3))
+
+
+def startup_link_damping(zeta, c_l, J_r, n_m, omega_n, v_n, *, out=None):
+    """Damping coefficient b of a link. Eq start-up, link damping.
+
+    Parameters
+    ----------
+    zeta : array_like
+        damping ratio of a link against its motors [1], > 0
+    c_l : array_like
+        stiffness of one elastic link (portal side and drive, at the rim) [N/m], > 0
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N*s/m], broadcast over the arguments.
+    """
+    zeta    = _checked('zeta', zeta, 'positive', 'damping ratio of a link against its motors, 1')
+    c_l     = _checked('c_l', c_l, 'positive', 'stiffness of one elastic link (portal side and drive, at the rim), N/m')
+    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    shape = _broadcast(zeta=zeta, c_l=c_l, J_r=J_r, n_m=n_m, omega_n=omega_n, v_n=v_n)
+    return _into(out, shape, 2*np.sqrt(J_r)*np.sqrt(c_l)*np.sqrt(n_m)*omega_n*zeta/v_n)
+
+
+def startup_rigid_breakaway(lambda_p, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w, *, out=None):
+    """Acceleration of the rigid drive at break-away on the first characteristic. Eq start-up, rigid break-away.
+
+    Parameters
+    ----------
+    lambda_p : array_like
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+    P_m : array_like
+        rated power of one motor [W], > 0
+    n_m : array_like
+        number of motors on one side of the portal [1], > 0
+    v_n : array_like
+        rated travel speed of the crane [m/s], > 0
+    m_k : array_like
+        mass of the crane [kg], > 0
+    J_r : array_like
+        moment of inertia of one motor rotor [kg*m^2], > 0
+    omega_n : array_like
+        rated motor speed [rad/s], > 0
+    W_f : array_like
+        friction resistance to travel [N], > 0
+    W_w : array_like
+        wind resistance to travel [N], >= 0
+    out : ndarray, optional
+        float64 array of the broadcast shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s^2], broadcast over the arguments.
+    """
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
+    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    m_k      = _checked('m_k', m_k, 'positive', 'mass of the crane, kg')
+    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    W_f      = _checked('W_f', W_f, 'positive', 'friction resistance to travel, N')
+    W_w      = _checked('W_w', W_w, 'nonnegative', 'wind resistance to travel, N')
+    shape = _broadcast(lambda_p=lambda_p, P_m=P_m, n_m=n_m, v_n=v_n, m_k=m_k, J_r=J_r, omega_n=omega_n,
+                       W_f=W_f, W_w=W_w)
+    return _into(out, shape, (2*P_m*lambda_p*n_m/v_n - W_f - W_w)/(2*J_r*n_m*omega_n**2/v_n**2 + m_k))
 
 
 def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c, *, out=None):

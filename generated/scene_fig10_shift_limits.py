@@ -1,7 +1,7 @@
 """Numeric functions for derivation 'portal_travel'. Generated; do not edit.
 
 Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
-Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with backlash and support loads).
 Specialized to scene 'fig10_shift_limits' (Paper 003, Fig. 10: shift coefficient limits against the number of teeth): outputs pointed_tip_shift, tip_thickness_shift, undercut_limit; folded in: h_a = 1.0 1, alpha = 0.3490658503988659 rad, dy = 0.0 1.
 Inputs left as arguments: z, sigma.
 Equations: pointed tip, undercut limit.
@@ -89,21 +89,22 @@ def _tip_lift_excess(delta, alpha):
     cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
     sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
     Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
-    tan(alpha)·d²/2 keeps every digit at small d."""
-    d = np.asarray(delta, dtype=float)
-    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
-           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
-           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
-           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
-    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
-           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
-           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
-           1.8683261924146203e-20, -3.706996413521072e-23)
+    tan(alpha)·d²/2 keeps every digit at small d. Evaluated in the dtype of
+    ``delta`` (the tip kernels pass NumPy's extended ``longdouble``); the
+    series' coefficients 2k/(2k+1)! and (2k-1)/(2k)! are formed in that dtype."""
+    d = np.asarray(delta)
+    d = d.astype(np.result_type(d.dtype, np.float64))
+    alpha = np.asarray(alpha).astype(d.dtype)
+    one = d.dtype.type(1)
     small = np.abs(d) < 1.0
-    y = np.where(small, d * d, 0.0)
+    y = np.where(small, d * d, 0.0).astype(d.dtype)
     p1, p2 = np.zeros_like(y), np.zeros_like(y)
-    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
-        p1, p2 = p1 * y + c1, p2 * y + c2
+    for k in range(12, 0, -1):                  # Horner from the 12th term down
+        sign = one if k % 2 else -one
+        fact_odd = float(np.prod(np.arange(1, 2 * k + 2, dtype=float)))   # (2k+1)!
+        fact_even = fact_odd / (2 * k + 1)                                  # (2k)!
+        p1 = p1 * y + sign * (d.dtype.type(2 * k) / d.dtype.type(fact_odd))
+        p2 = p2 * y + sign * (d.dtype.type(2 * k - 1) / d.dtype.type(fact_even))
     f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
     f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
     return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)
@@ -119,8 +120,9 @@ def _tip_shift(z, alpha, ha, dy, sigma):
     reference circle when the tip is there) and H of ``_tip_lift_excess``:
     no cancellation. Phi(0) = sigma - K < 0 and Phi -> +inf at alpha + delta
     -> pi/2: bisection on that bracket, then Newton steps with Phi' = z
-    sin u (sin u - sin alpha)/cos² u - sigma sin u/cos alpha. ValueError when
-    sigma >= K (no shift gives the thickness)."""
+    sin u (sin u - sin alpha)/cos² u - sigma sin u/cos alpha. The Newton
+    steps and the final x (a difference when x is small) run in NumPy's
+    ``longdouble``. ValueError when sigma >= K (no shift gives the thickness)."""
     z, alpha, ha, dy, sigma = np.broadcast_arrays(*(np.asarray(a, dtype=float)
                                                     for a in (z, alpha, ha, dy, sigma)))
     K = 0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)
@@ -139,15 +141,22 @@ def _tip_shift(z, alpha, ha, dy, sigma):
         up = phi(mid) > 0
         lo = np.where(up, lo, mid)
         hi = np.where(up, mid, hi)
-    d = 0.5 * (lo + hi)
-    for _ in range(2):
+    ld = np.longdouble
+    z, alpha, ha, dy, sigma = (v.astype(ld) for v in (z, alpha, ha, dy, sigma))
+    half = ld(np.pi) / 2 + ld(1.2246467991473532e-16) / 2     # pi/2 to longdouble
+    K = half + 2.0 * np.tan(alpha) * (dy - ha)
+    c = np.cos(alpha)
+    d = 0.5 * (lo.astype(ld) + hi.astype(ld))
+    for _ in range(3):
         u = alpha + d
         gap = 2.0 * np.cos(alpha + 0.5 * d) * np.sin(0.5 * d)        # sin u - sin alpha
         slope = z * np.sin(u) * gap / np.cos(u) ** 2 - sigma * np.sin(u) / c
+        value = z * _tip_lift_excess(d, alpha) + sigma * np.cos(u) / c - K
         with np.errstate(divide="ignore", invalid="ignore"):
-            step = np.where(slope > 0, phi(d) / slope, 0.0)
-        d = np.clip(d - step, lo, hi)
-    return z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
+            step = np.where(slope > 0, value / slope, 0.0)
+        d = np.clip(d - step, lo.astype(ld), hi.astype(ld))
+    out = z * np.sin(alpha + 0.5 * d) * np.sin(0.5 * d) / np.cos(alpha + d) - ha + dy
+    return np.asarray(out, dtype=float)
 
 
 def pointed_tip_shift(z, *, out=None):

@@ -1,7 +1,7 @@
 """Numeric functions for derivation 'portal_travel'. Generated; do not edit.
 
 Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
-Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with backlash and support loads).
 Specialized to scene 'form1_gear_pair' (Paper 003, Form 1: the travel bogie's open gear pair): outputs operating_pressure_angle, shift_sum, tip_diameter, tip_thickness, contact_ratio, undercut_limit; folded in: m = 0.01 m, z1 = 25.0 1, z2 = 42.0 1, a_w = 0.34 m, h_a = 1.0 1, alpha = 0.3490658503988659 rad, dy1 = 0.0 1, dy2 = 0.0 1.
 Inputs left as arguments: z, x, dy, x1, x2.
 Equations: Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
@@ -104,8 +104,14 @@ def _tip_half_angle(x, z, alpha, ha, dy, what):
     m) and cos alpha_a = cos(alpha)(1 - e), the difference of involutes is
     formed without cancellation: delta = alpha_a - alpha by atan2 of exact
     products, then psi_a = (pi/2 + 2 tan(alpha)(dy - ha))/z - H(delta) with H of
-    ``_tip_lift_excess`` (the shift's share of the half angle cancels exactly). ValueError(what) when the
-    tip circle lies inside the base circle (``what=None``: no check)."""
+    ``_tip_lift_excess`` (the shift's share of the half angle cancels exactly).
+    Near a pointed tip psi_a is a small difference of two O(1/z) terms, so the
+    chain runs in NumPy's ``longdouble`` (64-bit significand on x86) and is
+    rounded to float once: the rounding of delta no longer shows through the
+    cancellation. ValueError(what) when the tip circle lies inside the base
+    circle (``what=None``: no check)."""
+    ld = np.longdouble
+    x, z, alpha, ha, dy = (np.asarray(v, dtype=float).astype(ld) for v in (x, z, alpha, ha, dy))
     lift = ha + x - dy
     d_a = z + 2.0 * lift
     e = 2.0 * lift / d_a
@@ -118,7 +124,9 @@ def _tip_half_angle(x, z, alpha, ha, dy, what):
     s_a = np.sqrt(one_minus * (1.0 + c_a))
     num = c * e * (c * c * (2.0 - e) / (s_a + s) + s)
     delta = np.arctan2(num, c * c_a + s * s_a)
-    return (0.5 * np.pi + 2.0 * np.tan(alpha) * (dy - ha)) / z - _tip_lift_excess(delta, alpha)
+    half = ld(np.pi) / 2 + ld(1.2246467991473532e-16) / 2     # pi/2 to longdouble
+    out = (half + 2.0 * np.tan(alpha) * (dy - ha)) / z - _tip_lift_excess(delta, alpha)
+    return np.asarray(out, dtype=float)
 
 
 def _tip_lift_excess(delta, alpha):
@@ -126,21 +134,22 @@ def _tip_lift_excess(delta, alpha):
     cos(alpha + delta) - 1), written as (cos alpha·(sin d - d cos d) +
     sin alpha·(d sin d - (1 - cos d)))/cos(alpha + d): both brackets by their
     Taylor series below |d| = 1 (they start at d³/3 and d²/2), so H ≈
-    tan(alpha)·d²/2 keeps every digit at small d."""
-    d = np.asarray(delta, dtype=float)
-    f1c = (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906,
-           -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09,
-           1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16,
-           -3.9145882126782523e-19, 8.509974375387505e-22, -1.5472680682522736e-24)
-    f2c = (0.5, -0.125, 0.006944444444444444, -0.00017361111111111112,
-           2.48015873015873e-06, -2.296443268665491e-08, 1.4911969277048643e-10,
-           -7.169215998581078e-13, 2.6552651846596585e-15, -7.809603484293113e-18,
-           1.8683261924146203e-20, -3.706996413521072e-23)
+    tan(alpha)·d²/2 keeps every digit at small d. Evaluated in the dtype of
+    ``delta`` (the tip kernels pass NumPy's extended ``longdouble``); the
+    series' coefficients 2k/(2k+1)! and (2k-1)/(2k)! are formed in that dtype."""
+    d = np.asarray(delta)
+    d = d.astype(np.result_type(d.dtype, np.float64))
+    alpha = np.asarray(alpha).astype(d.dtype)
+    one = d.dtype.type(1)
     small = np.abs(d) < 1.0
-    y = np.where(small, d * d, 0.0)
+    y = np.where(small, d * d, 0.0).astype(d.dtype)
     p1, p2 = np.zeros_like(y), np.zeros_like(y)
-    for c1, c2 in zip(f1c[::-1], f2c[::-1]):
-        p1, p2 = p1 * y + c1, p2 * y + c2
+    for k in range(12, 0, -1):                  # Horner from the 12th term down
+        sign = one if k % 2 else -one
+        fact_odd = float(np.prod(np.arange(1, 2 * k + 2, dtype=float)))   # (2k+1)!
+        fact_even = fact_odd / (2 * k + 1)                                  # (2k)!
+        p1 = p1 * y + sign * (d.dtype.type(2 * k) / d.dtype.type(fact_odd))
+        p2 = p2 * y + sign * (d.dtype.type(2 * k - 1) / d.dtype.type(fact_even))
     f1 = np.where(small, d * y * p1, np.sin(d) - d * np.cos(d))
     f2 = np.where(small, y * p2, d * np.sin(d) - 2.0 * np.sin(0.5 * d) ** 2)
     return (np.cos(alpha) * f1 + np.sin(alpha) * f2) / np.cos(alpha + d)

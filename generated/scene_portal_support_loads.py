@@ -1,7 +1,7 @@
 """Numeric functions for derivation 'portal_travel'. Generated; do not edit.
 
 Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
-Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads).
+Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with backlash and support loads).
 Specialized to scene 'portal_support_loads' (Paper 003, (3)-(4): largest portal leg load; Table 3's normal law): outputs max_support_load; folded in: psi = 1.3 1, G_g = 98100.0 N, G_pch = 1275000.0 N, G_vs = 392000.0 N, x_o = 2.5 m, c = 6.0 m.
 Inputs left as arguments: L_max.
 Equations: (3), (4).

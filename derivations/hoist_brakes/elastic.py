@@ -21,8 +21,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from crane_sym.derivation import Derivation
-from crane_sym.phase_table import HybridRun
-from crane_sym.piecewise_linear import Guard, PiecewiseResult, first_crossing
+from crane_sym.phase_table import HybridRun, largest, values
+from crane_sym.piecewise_linear import Guard, PiecewiseResult
 
 #: Brake states of one side: no brake yet, sliding forward/backward, stuck.
 OFF, FORWARD, BACKWARD, STUCK = "off", "+", "-", "0"
@@ -161,58 +161,26 @@ class TwoMassHoist:
         mode, x0 = self.start(omega0)
         schedule = ((t_M, "motor torque lost"), (t_SB, "safety brake"),
                     (t_BB, "service brake"))
-        return HybridRun(self, mode, x0, t_end, schedule, lambda m: self.torque(m[0]),
-                         self.M_st)
+        return HybridRun(self, mode, x0, t_end, schedule, self.relative)
 
     def run(self, omega0: float, t_end: float, t_M: float = 0.0, t_SB: float = 0.1,
             t_BB: float = 0.4) -> PiecewiseResult:
         """The phases of :meth:`emergency_stop`, each in closed form."""
         return self.emergency_stop(omega0, t_end, t_M, t_SB, t_BB).solve()
 
+    def relative(self, mode: tuple) -> tuple[np.ndarray, float]:
+        """M_G/M_st of a mode as weights·x + constant."""
+        w, k = self.torque(mode[0])
+        return w / self.M_st, k / self.M_st
+
     def relative_torque(self, result: PiecewiseResult, times: np.ndarray) -> np.ndarray:
         """The gearbox torque over M_st at ``times``, from the phases' closed forms."""
-        out = np.empty(np.shape(times))
-        starts = np.array([s.t0 for s in result.segments])
-        which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
-        for i, seg in enumerate(result.segments):
-            mask = which == i
-            if np.any(mask):
-                w, k = self.torque(seg.mode[0])
-                out[mask] = (seg.state(np.asarray(times)[mask]) @ w + k) / self.M_st
-        return out
+        return values(result, times, self.relative)
 
     def peak(self, result: PiecewiseResult) -> tuple[float, float]:
         """(time, value) of the largest |relative torque|: per phase at the closed
         form's extrema (zeros of the torque's rate, found like any event)."""
-        best = (0.0, 0.0)
-        for seg in result.segments:
-            w, k = self.torque(seg.mode[0])
-            if not w.any():
-                continue
-            A, b = self.matrices(seg.mode)
-            candidates = [seg.t0, seg.t1]
-            t = seg.t0
-            rate_w = w @ A                       # d/dt (w·x) = w·(A x + b)
-            form = seg.form
-            start = seg.x0
-            while t < seg.t1:
-                hit = first_crossing(form, start, rate_w, float(w @ b), seg.t1 - t)
-                if hit is not None and hit < 1e-12:      # at an extremum already
-                    start = form.state(t + 1e-9 - seg.t0, seg.x0)
-                    t += 1e-9
-                    continue
-                if hit is None:
-                    break
-                t += hit
-                candidates.append(t)
-                start = form.state(t - seg.t0, seg.x0)
-                if hit < 1e-12:
-                    break
-            vals = self.relative_torque(result, np.array(candidates))
-            i = int(np.argmax(np.abs(vals)))
-            if abs(vals[i]) > abs(best[1]):
-                best = (candidates[i], float(vals[i]))
-        return best
+        return largest(result, self, self.relative, magnitude=True)
 
 
 def hoist_from(q: Mapping[str, float], payload: float) -> TwoMassHoist:

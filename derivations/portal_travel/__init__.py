@@ -11,20 +11,22 @@ the Mathcad Form 1 check of a spur-gear pair cut by a rack (operating pressure
 angle, shift sum, tip diameters and pressure angles, tip thickness, contact
 ratio, the pointed-tip shift of its appendix) from the involute and the rack;
 Fig. 10's four curves; the support loads (3)–(4) from the statics of a
-reconstructed portal; Tables 1–3 as data, with Table 1's own arithmetic. The
-three-mass start-up model with backlash behind Table 1 (eqs (1)–(2), lost in
-the OCR) is not built yet: its cells are recorded as not checkable.
+reconstructed portal; Tables 1–3 as data, with Table 1's own arithmetic; the
+three-mass start-up with backlash behind Table 1 and Fig. 12 (eqs (1)–(2) are
+lost in the OCR: the model is built from the text's definitions), solved phase
+by phase in closed form.
 
 Files:
 
 - ``model.py``: symbols, symbol table, LaTeX names, model text.
 - ``steps.py``: the gear geometry and Form 1's numbers; ``steps_loads.py``:
-  (3)–(4) and Table 1's arithmetic.
+  (3)–(4) and Table 1's arithmetic; ``steps_startup.py``: the start-up model.
+- ``startup.py``: the three-mass drive with backlash as a hybrid system.
 - ``published.py``: Form 1 as printed; ``published_loads.py``: Fig. 10's z = 10
   value, (3)–(4), Table 1.
 - ``tables.py``: Tables 1–3 as data.
 - ``outputs.py``: generated functions; ``hard_cases.py``: hard cases.
-- ``report.py``: ``scene_report`` (Fig. 10, a gear pair, support loads).
+- ``report.py``: ``scene_report`` (Fig. 10, a gear pair, support loads, start-up).
 
 The package does nothing on import; ``build()`` returns the ``Derivation``.
 """
@@ -32,7 +34,7 @@ from __future__ import annotations
 
 from crane_sym.derivation import Derivation
 
-from . import steps, steps_loads
+from . import steps, steps_loads, steps_startup
 from .hard_cases import hard_cases
 from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .outputs import outputs
@@ -55,6 +57,9 @@ def build() -> Derivation:
     steps.form1_numbers(d)
     steps_loads.support_loads(d)
     steps_loads.table1_arithmetic(d)
+    steps_startup.equations_of_motion(d)
+    steps_startup.reduction(d)
+    steps_startup.table1_model(d)
     d.published.extend(PUBLISHED + PUBLISHED_LOADS)
     d.outputs.extend(outputs(d))
     return d

@@ -1,5 +1,6 @@
 """The seeded hard cases of paper 003 for ``crane-sym accuracy``: small pressure
-angles (tan a − a cancels), shifts near the pointed tip, large tooth numbers.
+angles (tan a − a cancels), shifts near the pointed tip (with a no-load speed just
+above the rated, for the start-up's slope ratio), large tooth numbers.
 
 Every case gives every argument of every generated function, consistent with a
 possible mesh (a_w above the base-circle sum, tips outside the base circles).
@@ -29,6 +30,18 @@ def _gear(rng: np.random.Generator, n: int, z_lo: float, z_hi: float,
             "c": log(3, 10)}
 
 
+def _startup(rng: np.random.Generator, n: int) -> dict[str, np.ndarray]:
+    """Columns of the start-up's arguments (their own generator: the gear cases
+    keep their points)."""
+    log = lambda lo, hi: 10.0 ** rng.uniform(np.log10(lo), np.log10(hi), n)  # noqa: E731
+    return {"J_r": log(0.05, 1.0), "n_m": rng.integers(1, 5, n) * 1.0,
+            "omega_n": log(50, 150), "omega_0": np.full(n, 160.0), "v_n": log(0.2, 1.0),
+            "P_m": log(5e3, 5e4), "lambda_p": rng.uniform(1.2, 2.5, n),
+            "c_l": log(1e6, 2e7), "zeta": log(0.01, 0.2), "m_k": log(1e5, 5e5),
+            "W_f": log(1e4, 6e4), "W_w": log(1e3, 6e4), "phi_b": log(1e-3, 6.3),
+            "t_s": log(1e-9, 1.0)}
+
+
 def hard_cases(points: int = 60, seed: int = 20261123) -> dict[str, dict[str, np.ndarray]]:
     """Seeded input grids where a naive closed form or solver loses accuracy.
 
@@ -43,6 +56,11 @@ def hard_cases(points: int = 60, seed: int = 20261123) -> dict[str, dict[str, np
     near["x"] = x_tip * (1 - np.logspace(-10, -2, n))
     near["sigma"] = np.logspace(-12, -1, n)
     large = _gear(rng, n, 150, 1e5, rng.uniform(0.3, 0.4, n), rng.uniform(0.9, 1.3, n))
+    start = np.random.default_rng(seed + 1)
+    for case in (typical, small, near, large):
+        case.update(_startup(start, n))
+    # the start-up's no-load speed just above the rated (the slope ratio's ω0 − ω_n)
+    near["omega_0"] = near["omega_n"] * (1 + np.logspace(-9, -1, n))
     return {"typical gears": typical,
             "small angles alpha 1e-4..1e-1": small,
             "shift near the pointed tip": near,

@@ -6,14 +6,15 @@ The lowest module of the package: everything else imports its symbols from here.
 from __future__ import annotations
 
 import sympy as sp
-from sympy.physics.units import force, length
+from sympy.physics.units import energy, force, length, mass, time, velocity
 
 from crane_sym.symbols import DEFINED, PhysicalSymbol, SymbolTable
 
 # --- The paper ---------------------------------------------------------------
 ID = "portal_travel"
 PAPER = "003_5e8a923a75d2f7ba.txt"
-TITLE = "Travel mechanisms of rail-mounted portal cranes: gear geometry and support loads"
+TITLE = ("Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with "
+         "backlash and support loads")
 #: From the paper's header (Е. Н. Андрианов, А. Н. Иванов), transliterated.
 AUTHORS = ("E.N. Andrianov", "A.N. Ivanov")
 CITATION = ("E.N. Andrianov, A.N. Ivanov, Vestnik of the Admiral Makarov State "
@@ -154,7 +155,62 @@ _loads = [
     PhysicalSymbol(V_total, force, "N", "vertical load carried by the portal", DEFINED,
                    "real"),
 ]
-SYMBOLS = SymbolTable(_g + _numbers + _loads)
+# --- Start-up with backlash (Fig. 11, Table 1) -------------------------------------
+J_r, n_m, omega_n, omega_0, v_n, P_m, lam = sp.symbols(
+    "J_r n_m omega_n omega_0 v_n P_m lambda_p", positive=True)
+c_l, zeta, m_k, W_f = sp.symbols("c_l zeta m_k W_f", positive=True)
+W_w, phi_b, t_s = sp.symbols("W_w phi_b t_s", nonnegative=True)
+v_gap = sp.Symbol("v_gap", real=True)
+m_d, P_nom, v_0, beta_1, q_step, s_b, b_l, a_0 = sp.symbols(
+    "m_d P_nom v_0 beta_1 q_step s_b b_l a_0", real=True)
+F_peak = sp.Symbol("F_peak", real=True)              # a model's F_max over 1 kN
+a_cell = sp.Symbol("a_cell", real=True)              # an acceleration over 1 m/s²
+_startup = [
+    PhysicalSymbol(J_r, mass * length ** 2, "kg*m^2", "moment of inertia of one motor "
+                   "rotor", sample_range=(0.05, 1.0)),
+    PhysicalSymbol(n_m, ONE, "1", "number of motors on one side of the portal",
+                   sample_range=(1, 4)),
+    PhysicalSymbol(omega_n, 1 / time, "rad/s", "rated motor speed", sample_range=(50, 160)),
+    PhysicalSymbol(omega_0, 1 / time, "rad/s", "no-load (synchronous) motor speed",
+                   sample_range=(60, 170)),
+    PhysicalSymbol(v_n, velocity, "m/s", "rated travel speed of the crane",
+                   sample_range=(0.2, 1.0)),
+    PhysicalSymbol(P_m, energy / time, "W", "rated power of one motor",
+                   sample_range=(5e3, 5e4)),
+    PhysicalSymbol(lam, ONE, "1", "starting-force multiple λ: force of the first "
+                   "characteristic at standstill over the rated force", sample_range=(1.2, 2.5)),
+    PhysicalSymbol(c_l, force / length, "N/m", "stiffness of one elastic link (portal "
+                   "side and drive, at the rim)", sample_range=(1e6, 2e7)),
+    PhysicalSymbol(zeta, ONE, "1", "damping ratio of a link against its motors",
+                   sample_range=(0.01, 0.2)),
+    PhysicalSymbol(m_k, mass, "kg", "mass of the crane", sample_range=(1e5, 5e5)),
+    PhysicalSymbol(W_f, force, "N", "friction resistance to travel", sample_range=(1e4, 6e4)),
+    PhysicalSymbol(W_w, force, "N", "wind resistance to travel", sign="nonnegative",
+                   sample_range=(1e3, 6e4)),
+    PhysicalSymbol(phi_b, ONE, "rad", "backlash of one drive, on its fast shaft",
+                   sign="nonnegative", sample_range=(0.1, 6.3)),
+    PhysicalSymbol(t_s, time, "s", "time from the start (first stage)", sign="nonnegative",
+                   sample_range=(1e-3, 0.5)),
+    PhysicalSymbol(v_gap, velocity, "m/s", "motor speed at the rim while its gap is open",
+                   DEFINED, "real"),
+    PhysicalSymbol(m_d, mass, "kg", "motor rotors of one side reduced to the wheel rim",
+                   DEFINED, "real"),
+    PhysicalSymbol(P_nom, force, "N", "rated force of one side at the rim", DEFINED, "real"),
+    PhysicalSymbol(v_0, velocity, "m/s", "no-load speed at the rim", DEFINED, "real"),
+    PhysicalSymbol(beta_1, force / velocity, "N*s/m", "slope of the first start "
+                   "characteristic of one side", DEFINED, "real"),
+    PhysicalSymbol(q_step, ONE, "1", "ratio of the slopes of consecutive characteristics",
+                   DEFINED, "real"),
+    PhysicalSymbol(s_b, length, "m", "backlash of one drive at the rim", DEFINED, "real"),
+    PhysicalSymbol(b_l, force / velocity, "N*s/m", "damping coefficient of a link",
+                   DEFINED, "real"),
+    PhysicalSymbol(a_0, velocity / time, "m/s^2", "acceleration of the rigid drive at "
+                   "break-away on the first characteristic", DEFINED, "real"),
+    PhysicalSymbol(F_peak, ONE, "1", "the model's largest F1 + F2 in kN", DEFINED, "real"),
+    PhysicalSymbol(a_cell, ONE, "1", "a crane acceleration of Table 1 in m/s^2", DEFINED,
+                   "real"),
+]
+SYMBOLS = SymbolTable(_g + _numbers + _loads + _startup)
 
 #: The Mathcad variables of Form 1 and its appendix are set in typewriter type
 #: (\mathtt), so that they stay apart from the geometry's symbols of the same letter.
@@ -168,7 +224,12 @@ LATEX_NAMES = {
     b_ap: r"\mathtt{b}", half_pi: r"\mathtt{a}", Fo: r"\mathtt{Fo}(\mathtt{x})",
     psi: r"\psi", G_g: r"G_{г}", G_pch: r"G_{пч}", G_vs: r"G_{вс}", L_max: r"L_{\max}",
     x_o: "x_o", c_arm: "c", M_v: r"M_{в}", R_max: r"R_{\max}", V_total: "V",
-    psi_cell: r"\psi_{\mathrm{Table\,1}}",
+    psi_cell: r"\psi_{\mathrm{Table\,1}}", J_r: "J_r", n_m: "n_m", omega_n: r"\omega_n",
+    omega_0: r"\omega_0", v_n: "v_n", P_m: "P_m", lam: r"\lambda", c_l: r"C_{пр}",
+    zeta: r"\zeta", m_k: "m_k", W_f: "W_f", W_w: "W_w", phi_b: r"\varphi_b", m_d: "m_d",
+    P_nom: "P_n", v_0: "v_0", beta_1: r"\beta_1", q_step: "q", s_b: "s_b", b_l: "b",
+    a_0: "a_0", F_peak: r"F_{\max}/\mathrm{kN}",
+    a_cell: r"a/(\mathrm{m/s^2})", t_s: "t", v_gap: r"v_{\mathrm{gap}}",
     F_m: r"\mathtt{m}", F_z1: r"\mathtt{z1}", F_z2: r"\mathtt{z2}", F_aw: r"\mathtt{a_w}",
     F_ha: r"\mathtt{h_a}", F_alpha: r"\mathtt{\alpha}^\circ", F_x1: r"\mathtt{x1}",
     F_x2: r"\mathtt{x2}", F_k1: r"\mathtt{k1}", F_k2: r"\mathtt{k2}", F_k: r"\mathtt{k}",
@@ -204,4 +265,48 @@ the portal as a couple of forces ±M_в/c, each shared by the two legs under it.
         ψG_г <---- L_max ----> | axis <- x_o -> G_пч
              ====== circular rail, couple arm c ======
              leg   leg                       leg   leg
+
+Start-up with backlash (Fig. 11, Table 1; the paragraphs before Table 1 of
+003_5e8a923a75d2f7ba.txt). The paper's equations (1)–(2) are lost in the OCR
+(only "(1) Щ md \mdi тк J тк ' тк W8 (2) V" survives); the model is built from
+the text's definitions: "the masses of the motor rotors of the right and left
+side of the portal, reduced to the rim of the running wheel, m_d, joined by two
+elastic links to the crane mass m_к"; "the motor's tractive force depends
+linearly on the speed"; "P_p1, the initial starting force on the first
+mechanical characteristic; v0, the no-load speed; λ, the starting-torque
+multiple"; "C_пр, the reduced longitudinal stiffness of the portal; α, the
+damping coefficient"; "first stage: the backlash is taken up and the link load
+reaches the resistance to travel; second stage: joint motion of the motor and
+crane masses"; friction 30 kN, friction and wind together 60 kN, the wind below
+the friction (taken as a constant head wind); the motor MTF311-6, 13 kW at 935 rpm; hold times 0.4, 0.8, 0.8 s.
+
+    motors, left  m_d --[ c, b, gap s ]--\
+                                          crane m_к  <- W_w (wind), W_f (friction)
+    motors, right m_d --[ c, b, gap s ]--/
+
+Newton for each mass (c is the text's C_пр, s = s_b the backlash at the rim,
+b the damping behind its α): m_d·v̇_i = β_k(v0 − v_i) − F_i, m_к·v̇_к = F_1 + F_2 − W_w
+− W_f while the crane moves forward; F_i = c(u_i − s) + b·u̇_i on the driving
+flank (u_i = x_i − x_к ≥ s), 0 in the gap, c·u_i + b·u̇_i on the trailing flank
+(u_i ≤ 0). The crane stands (first stage) while W_w − W_f ≤ F_1 + F_2 ≤ W_w + W_f.
+Characteristic k of the stepped rheostat start is the line β_k(v0 − v) through
+the no-load speed; β_1 = λ·P_n/v0 (P_p1 = λ·P_n at standstill); the slopes grow
+by a constant ratio q up to the natural characteristic P_n/(v0 − v_n), three
+steps (q³ = v0/(λ(v0 − v_n))), switched after the printed hold times.
+
+Parameters the paper does not state (chosen, not fitted): two MTF311-6 per side
+(four motors: 4 × 13 kW covers 60 kN at the rated speed, 32 kW; two would not);
+rotor inertia J_r = 0.225 kg·m² (catalogue value of the MTF311-6); synchronous
+speed 1000 rpm (six poles, 50 Hz); rated travel speed 32 m/min (usual for portal
+cranes; Table 1's step accelerations times the hold times add up to 0.48–0.52
+m/s at 2 s); crane mass 250 t (30 kN of friction at the usual specific
+resistance of about 0.012 gives 2.5 MN of weight, a 16 t, 32 m portal crane of
+the paper's reference [8]); λ = 2 (a usual peak of a relay start, below the
+MTF311-6's breakdown multiple of about 2.4); link stiffness c = 5 MN/m per side
+(20 mm of longitudinal deflection of a portal side under 100 kN); damping ratio
+ζ = 0.05 of a link against its motors (logarithmic decrement about 0.3), b =
+2ζ·√(c·m_d). Table 1's F_max is read as the load of both drives on the portal,
+F_1 + F_2: the model's mean F_1 + F_2 over the 2 s of the start, 122–125 kN,
+is of the order of Table 1's F_ср = 150 kN (per side it would be half). Each
+row's backlash is in both drives.
 """

@@ -1,5 +1,6 @@
 """What the toolkit generates code from for paper 003: a gear designer's
-functions (Form 1, Fig. 10) and the largest support load (3)–(4).
+functions (Form 1, Fig. 10), the largest support load (3)–(4), and the closed-form
+pieces of the start-up model (the drive at the rim, the stepped start).
 
 Arc cosines whose argument can leave [−1, 1] are ``acos_checked`` (an
 impossible mesh or tip raises an error naming the parameter), the involute
@@ -14,9 +15,10 @@ import sympy as sp
 from crane_sym.derivation import Derivation, Output
 from crane_sym.involute import acos_checked, involute, tip_half_angle, tip_shift
 
-from .model import (G_g, G_pch, G_vs, L_max, M_v, a_w, alpha, alpha_a1, alpha_a2,
-                    alpha_tw, c_arm, d_a1, d_a2, dy, dy1, dy2, ha, m, psi, sigma, x, x1,
-                    x2, x_o, x_sum, z, z1, z2)
+from .model import (G_g, G_pch, G_vs, J_r, L_max, M_v, P_m, P_nom, W_f, W_w, a_w, alpha,
+                    alpha_a1, alpha_a2, alpha_tw, c_arm, c_l, d_a1, d_a2, dy, dy1, dy2, ha,
+                    lam, m, m_d, m_k, n_m, omega_0, omega_n, phi_b, psi, sigma, v_0, v_n, x,
+                    t_s, x1, x2, x_o, x_sum, z, z1, z2, zeta)
 
 
 def _stable(expr: sp.Expr) -> sp.Expr:
@@ -78,7 +80,50 @@ def outputs(d: Derivation) -> list[Output]:
                "(Fig. 10, curve 1).", "1"),
         Output("undercut_limit", rhs("undercut limit"), (z, alpha, ha), ("undercut limit",),
                "Least shift coefficient free of undercut (Fig. 10, curve 4).", "1"),
+        *startup_outputs(rhs),
         Output("max_support_load", load, (psi, G_g, G_pch, G_vs, L_max, x_o, c_arm),
                ("(3)", "(4)"), "Largest vertical load on one portal leg, load case 2v "
                "(reconstructed portal: see the derivation).", "N"),
+    ]
+
+
+def startup_outputs(rhs) -> list[Output]:
+    """The start-up's closed-form pieces in the scene's own parameters (the rim
+    quantities substituted), each checked equal to its step."""
+    rim = {m_d: rhs("start-up, motor mass at the rim"), P_nom: rhs("start-up, rated force"),
+           v_0: rhs("start-up, no-load speed")}
+    ratio = (omega_0 / (lam * (omega_0 - omega_n))) ** sp.Rational(1, 3)
+    if sp.simplify(ratio - rhs("start-up, slope ratio").subs(rim)) != 0:
+        raise AssertionError("the slope ratio does not follow from its step")
+    drive = (J_r, n_m, omega_n, v_n)
+    slope = rhs("start-up, first characteristic").subs(rim)
+    gap = sp.simplify(rhs("start-up, motor speed in the gap").subs(
+        {sp.Symbol("beta_1", real=True): slope}).subs(rim))
+    return [
+        Output("startup_gap_motor_speed", gap, (t_s, lam, P_m, J_r, v_n, omega_0, omega_n),
+               ("start-up, motor speed in the gap",), "Motor speed at the rim in the first "
+               "stage while the gap is open (from rest, first characteristic).", "m/s"),
+        Output("startup_motor_mass", rim[m_d], drive, ("start-up, motor mass at the rim",),
+               "Motor rotors of one side reduced to the wheel rim.", "kg"),
+        Output("startup_rated_force", rim[P_nom], (P_m, n_m, v_n), ("start-up, rated force",),
+               "Rated force of one side at the rim.", "N"),
+        Output("startup_no_load_speed", rim[v_0], (v_n, omega_0, omega_n),
+               ("start-up, no-load speed",), "No-load speed at the rim.", "m/s"),
+        Output("startup_backlash_at_rim", rhs("start-up, backlash at the rim"),
+               (phi_b, v_n, omega_n), ("start-up, backlash at the rim",),
+               "Backlash phi_b of the fast shaft as a gap at the rim.", "m"),
+        Output("startup_first_slope", sp.simplify(rhs("start-up, first characteristic")
+                                                  .subs(rim)),
+               (lam, P_m, n_m, v_n, omega_0, omega_n), ("start-up, first characteristic",),
+               "Slope beta_1 of the first start characteristic of one side.", "N*s/m"),
+        Output("startup_slope_ratio", ratio, (lam, omega_0, omega_n),
+               ("start-up, slope ratio",), "Ratio q of the slopes of consecutive "
+               "characteristics (three steps to the natural one).", "1"),
+        Output("startup_link_damping", rhs("start-up, link damping").subs(rim),
+               (zeta, c_l) + drive, ("start-up, link damping",),
+               "Damping coefficient b of a link.", "N*s/m"),
+        Output("startup_rigid_breakaway", rhs("start-up, rigid break-away").subs(rim),
+               (lam, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w),
+               ("start-up, rigid break-away",), "Acceleration of the rigid drive at "
+               "break-away on the first characteristic.", "m/s^2"),
     ]

@@ -1,8 +1,9 @@
 """What ``crane-sym run`` prints and plots for a scene of paper 003.
 
-Three kinds of scene, told apart by the outputs they name: Fig. 10 (the shift
-limits against the tooth number), a gear pair checked like Form 1, and the
-support loads with Table 3's exceedance probabilities. Numbers come from the
+Four kinds of scene, told apart by the outputs they name: Fig. 10 (the shift
+limits against the tooth number), a gear pair checked like Form 1, the support
+loads with Table 3's exceedance probabilities, and the start-up with backlash
+(Fig. 12, Table 1; phases in closed form by ``startup.py``). Numbers come from the
 scene's generated module, never from SymPy. Imports happen only when run.
 """
 from __future__ import annotations
@@ -146,8 +147,100 @@ def support_report(scene, module):
     return SceneReport(lines=lines, values=values, panels=panels)
 
 
+def _quantities(scene, key: str, default: list[str], dimension) -> list[float]:
+    """[options] ``key``: a non-empty list of quantities with units, each >= 0, in SI."""
+    from crane_sym import units
+    from crane_sym.scenes import SceneError
+    raw = scene.options.get(key, default)
+    if not isinstance(raw, list) or not raw or len(raw) > 6:
+        raise SceneError(f"scene {scene.name!r}: [options] {key} must be a list of 1..6 "
+                         f"quantities, got {raw!r}")
+    try:
+        values = [units.convert(key, item, dimension) for item in raw]
+    except units.UnitError as exc:
+        raise SceneError(f"scene {scene.name!r}: [options] {exc}") from None
+    if not all(v >= 0 for v in values):
+        raise SceneError(f"scene {scene.name!r}: [options] {key} must be >= 0, got {raw!r}")
+    return values
+
+
+def startup_report(scene, module):
+    """Fig. 12 and Table 1: the start-up for each backlash of the option ``backlash``,
+    start steps held for the option ``holds``; loads and speeds up to ``end``."""
+    import numpy as np
+    import sympy as sp
+    from sympy.physics.units import time
+
+    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+
+    from crane_sym.generated import portal_travel as gen
+
+    from .startup import F_MEAN, ThreeMassTravel
+
+    q = scene.parameters
+    if not q["omega_0"] > q["omega_n"]:
+        raise SceneError(f"scene {scene.name!r}: parameter 'omega_0' (no-load speed) = "
+                         f"{q['omega_0']:g} rad/s must exceed omega_n = {q['omega_n']:g} rad/s")
+    gaps = _quantities(scene, "backlash", ["0 rad", "0.5 rev", "1 rev"], sp.S.One)
+    holds = _quantities(scene, "holds", ["0.4 s", "0.8 s", "0.8 s"], time)
+    end = _quantities(scene, "end", ["4 s"], time)[0]
+    if not all(h > 0 for h in holds) or not end > sum(holds):
+        raise SceneError(f"scene {scene.name!r}: [options] holds must be > 0 and end must "
+                         "exceed their sum")
+    points = _int_option(scene, "points", 2001, 2, 100_000)
+    m_d, b = float(module.startup_motor_mass()), float(module.startup_link_damping())
+    v0, ratio = float(module.startup_no_load_speed()), float(module.startup_slope_ratio())
+    beta = float(module.startup_first_slope())
+    slopes = tuple(beta * ratio ** k for k in range(len(holds) + 1))
+    times = np.linspace(0.0, end, points)
+    # the gap's closed-form speed from the paper's general module (a scene module
+    # specialized with t_s as an input takes SymPy minutes in codegen)
+    gap_args = {k: q[k] for k in ("lambda_p", "P_m", "J_r", "v_n", "omega_0", "omega_n")}
+    values = {"m_d": m_d, "b": b, "v0": v0, "beta_1": beta, "q": ratio,
+              "a0_rigid": float(module.startup_rigid_breakaway())}
+    lines = [f"motors of one side at the rim   m_d = {fq(m_d / 1e3, 't')}, "
+             f"no-load speed v0 = {fq(v0, 'm/s')}",
+             f"first characteristic           β1 = {fq(beta / 1e3, 'kN*s/m')}, slopes ×{fq(ratio)}"
+             f" per step, holds {', '.join(fq(h, 's') for h in holds)}",
+             f"rigid drive at break-away      a0 = {fq(values['a0_rigid'], 'm/s^2')}"]
+    panels = []
+    for i, phi in enumerate(gaps):
+        s = float(module.startup_backlash_at_rim(phi))
+        model = ThreeMassTravel(m_d, q["m_k"], q["c_l"], b, s, s, v0, slopes, tuple(holds),
+                                q["W_f"], q["W_w"])
+        run = model.run(end)
+        when, peak = model.peak(run)
+        acc = model.step_accelerations(run)
+        x = run.state(times)
+        closing = next((t for t, event, _ in run.events if event.startswith("drive")), None)
+        if closing is not None:      # the flank closes: the gap's closed-form speed
+            values[f"v_close_{i}"] = float(gen.startup_gap_motor_speed(closing, **gap_args))
+            lines.append(f"backlash {fq(phi, 'rad')}: the flank closes at t = "
+                         f"{fq(closing, 's')}, motors at {fq(values[f'v_close_{i}'], 'm/s')}")
+        values.update({f"F_max_{i}": peak, f"psi_{i}": peak / F_MEAN, f"t_max_{i}": when,
+                       **{f"a{k + 1}_{i}": float(a) for k, a in enumerate(acc)}})
+        lines.append(f"backlash {fq(phi, 'rad')} (s = {fq(s * 1e3, 'mm')} at the rim): "
+                     f"F_max = {fq(peak / 1e3, 'kN')} at t = {fq(when, 's')}, "
+                     f"ψ = F_max/150 kN = {fq(peak / F_MEAN)}; crane Δv/Δt per step "
+                     + ", ".join(fq(a, 'm/s^2') for a in acc))
+        tag = f"Fig. 12{'abcdef'[i]}"
+        title = f"backlash {phi:.3g} rad of the fast shaft"
+        panels += [
+            Panel(f"{tag}: loads, {title}", "load [kN]",
+                  [("$F_1 + F_2$", times, model.load(run, times) / 1e3),
+                   ("$F_1$ (one side)", times, model.link_load(run, times, 0) / 1e3),
+                   ("$W_w + W_f$", times, np.full_like(times, (q["W_w"] + q["W_f"]) / 1e3))],
+                  group=tag),
+            Panel(f"{tag}: speeds", "speed at the rim [m/s]",
+                  [("motors $v_1$", times, x[:, 1]), ("crane $v_к$", times, x[:, 5]),
+                   ("no-load $v_0$", times, np.full_like(times, v0))], group=tag)]
+    return SceneReport(lines=lines, values=values, panels=panels)
+
+
 def scene_report(scene, module):
     """Numbers and panels of a scene of paper 003 (see the module docstring)."""
+    if "startup_motor_mass" in scene.outputs:
+        return startup_report(scene, module)
     if "pointed_tip_shift" in scene.outputs:
         return fig10_report(scene, module)
     if "contact_ratio" in scene.outputs:

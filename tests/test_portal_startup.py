@@ -1,0 +1,179 @@
+"""Paper 003's start-up with backlash (Fig. 11-12, Table 1): the piecewise closed
+form against solve_ivp with events, backlash -> 0 against the linear drive, the
+equations of motion against the hybrid system's matrices, the model's Table 1 as
+its causes state it, and the Fig. 12 scene (bad data refused by name)."""
+from __future__ import annotations
+
+import re
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import pytest
+import sympy as sp
+
+from crane_sym.bench_piecewise import integrate_hybrid
+from crane_sym.derivations.portal_travel import published_loads as pl
+from crane_sym.derivations.portal_travel.startup import (CHOSEN, FORWARD, LINEAR, STAND,
+                                                         drive, reduced, table1_results)
+from crane_sym.phase_table import HybridRun
+from crane_sym.scene_run import run_scene
+from crane_sym.scenes import SceneError, load_scene
+
+DERIVATION = "portal_travel"
+SCENE = Path(__file__).resolve().parents[1] / "derivations" / "portal_travel" / "scenes" \
+    / "fig12_startup_backlash.toml"
+integrate = pytest.importorskip("scipy.integrate")
+
+
+def _model(phi: float):
+    return drive(reduced(CHOSEN, phi), CHOSEN)
+
+
+@pytest.mark.parametrize("phi1, phi2", [(0.0, 0.0), (np.pi, 0.8 * np.pi), (2 * np.pi, 0.0)])
+def test_closed_form_against_solve_ivp_with_events(phi1, phi2):
+    """Unequal gaps (the reference integrator cannot take two flanks closing at one
+    instant, which equal gaps do), one side without backlash in the last case."""
+    model = replace(_model(phi1), s2=_model(phi2).s1)
+    closed = model.run(3.0)
+    run = HybridRun(model, model.start_mode(), np.zeros(6), 3.0, model.schedule(),
+                    model.total)
+    times = np.linspace(0.0, 3.0, 3001)
+    states = integrate_hybrid(run, 1e-12, 1e-12, "DOP853", max_step=1e-3).state(times)
+    ours = closed.state(times)
+    scale = np.abs(states).max(axis=0)
+    assert np.max(np.abs(ours - states) / scale) < 1e-6
+    assert len(closed.segments) >= 4 + 2 * (phi1 > 0)
+
+
+def test_the_peak_is_the_largest_sampled_load():
+    model = _model(np.pi)
+    run = model.run(3.0)
+    when, peak = model.peak(run)
+    sampled = model.load(run, np.linspace(0.0, 3.0, 60001))
+    assert peak >= sampled.max() - 1e-6 * peak
+    assert peak == pytest.approx(float(model.load(run, np.array([when]))[0]), rel=1e-12)
+
+
+def test_backlash_to_zero_is_the_linear_drive():
+    """s = 0: no contact logic, the links are linear; a tiny backlash converges to it."""
+    linear = _model(0.0)
+    assert linear.start_mode()[:2] == (LINEAR, LINEAR)
+    run = linear.run(3.0)
+    tiny = _model(1e-9)
+    assert tiny.s1 > 0 and tiny.start_mode()[:2] != (LINEAR, LINEAR)
+    times = np.linspace(0.0, 3.0, 3001)
+    a, b = linear.load(run, times), tiny.load(tiny.run(3.0), times)
+    assert np.max(np.abs(a - b)) < 1e-4 * np.max(np.abs(a))
+    assert tiny.peak(tiny.run(3.0))[1] == pytest.approx(linear.peak(run)[1], rel=1e-5)
+
+
+def test_the_load_grows_with_the_backlash():
+    res = table1_results()
+    assert res["0"]["F_max_kN"] < res["pi"]["F_max_kN"] < res["2pi"]["F_max_kN"]
+
+
+def test_the_model_texts_mean_start_load():
+    """The model text: mean F1 + F2 over the 2 s of the start is 122-125 kN."""
+    for phi in (0.0, np.pi, 2 * np.pi):
+        model = _model(phi)
+        mean = model.load(model.run(2.0), np.linspace(0.0, 2.0, 20001)).mean()
+        assert 121.5e3 <= mean < 125.5e3, phi
+
+
+def test_equations_of_motion_are_the_hybrid_systems(derivation):
+    """The Lagrange steps, both links driving and the crane moving forward, have the
+    same matrices as startup.py's mode (DRIVE, DRIVE, FORWARD)."""
+    model = _model(np.pi)
+    names = {str(s): s for e in (derivation.step(f"start-up, {n}").statement for n in
+                                 ("left motors", "right motors", "crane")) for s in e.free_symbols}
+    values = {names["m_d"]: model.m_d, names["m_k"]: model.m_k, names["c_l"]: model.c,
+              names["b_l"]: model.b, names["s_b"]: model.s1, names["v_0"]: model.v0,
+              names["beta_k"]: model.slopes[1], names["W_f"]: model.W_f,
+              names["W_w"]: model.W_w}
+    t = sp.Symbol("t", nonnegative=True)
+    funcs = [sp.Function(n)(t) for n in ("x_1", "x_2", "x_k")]
+    y = sp.symbols("y0:6")
+    subs = {}
+    for i, f in enumerate(funcs):
+        subs[f.diff(t, 2)] = sp.Symbol(f"acc{i}")
+        subs[f.diff(t)] = y[2 * i + 1]
+        subs[f] = y[2 * i]
+    A, b = model.matrices((1, 1, FORWARD, 1))
+    for i, label in enumerate(("left motors", "right motors", "crane")):
+        eq = derivation.step(f"start-up, {label}").statement.subs(values)
+        eq = (eq.lhs - eq.rhs).subs(subs)
+        acc = sp.solve(eq, sp.Symbol(f"acc{i}"))[0]
+        point = np.random.default_rng(i).normal(size=6)
+        got = float(acc.subs(dict(zip(y, point))))
+        assert got == pytest.approx(A[2 * i + 1] @ point + b[2 * i + 1], rel=1e-12)
+
+
+def test_causes_state_the_models_numbers():
+    """The cause sentences quote the model: they cannot go stale."""
+    res = table1_results()
+    text = pl.STARTUP.sentence
+    for gap in ("0", "pi", "2pi"):
+        assert f"{res[gap]['F_max_kN']:.0f} " in text or f"{res[gap]['F_max_kN']:.0f}," in text
+        assert f"{res[gap]['psi']:.2f}" in text
+    growth = 100 * (res["2pi"]["F_max_kN"] / res["0"]["F_max_kN"] - 1)
+    assert f"by {growth:.0f} %" in text
+    accel = re.findall(r"\d\.\d\d", pl.ACCEL.sentence)[:3]
+    for k, printed in enumerate(accel, 1):
+        assert f"{res['0'][f'a{k}']:.2f}" == printed, k
+        assert all(abs(r[f"a{k}"] - float(printed)) <= 0.01 for r in res.values()), k
+
+
+def test_each_startup_verdict(records):
+    for gap in ("0", "pi", "2pi"):
+        f_max = records[f"Table 1, F_max, backlash {gap}"]
+        assert f_max.verdict == "remark" and f_max.basis == "reconstructed model"
+        assert f_max.cause.id == "003-startup-unstated-parameters"
+        for k in (1, 2, 3):
+            acc = records[f"Table 1, acceleration {k}, backlash {gap}"]
+            assert acc.verdict == "remark" and acc.cause.id == "003-startup-accelerations"
+    assert records["Table 1, psi against the model, backlash 0"].verdict == "confirmed"
+    for gap in ("pi", "2pi"):
+        assert records[f"Table 1, psi against the model, backlash {gap}"].verdict == "remark"
+
+
+def test_fig12_scene_runs_and_agrees_with_the_derivation(tmp_path):
+    report, plots = run_scene(load_scene(SCENE), tmp_path)
+    res = table1_results()
+    for i, gap in enumerate(("0", "pi", "2pi")):
+        assert report.values[f"F_max_{i}"] / 1e3 == pytest.approx(res[gap]["F_max_kN"],
+                                                                  rel=1e-9)
+    assert len([p for p in plots if p.suffix == ".png"]) == 3
+    # the generated first-stage speed is the hybrid run's motor speed when the flank closes
+    for i, phi in ((1, np.pi), (2, 2 * np.pi)):
+        model = _model(phi)
+        run = model.run(1.0)
+        closing = next(t for t, event, _ in run.events if event.startswith("drive"))
+        speed = run.state(np.array([closing]))[0, 1]
+        assert report.values[f"v_close_{i}"] == pytest.approx(speed, rel=1e-9)
+
+
+@pytest.mark.parametrize("edit, name", [
+    (('c_l = "5 MN/m"', 'c_l = "-5 MN/m"'), "c_l"),
+    (('m_k = "250 t"', 'm_k = "250 m"'), "m_k"),
+    (('omega_0 = "1000 rpm"', 'omega_0 = "900 rpm"'), "omega_0"),
+    (('holds = ["0.4 s", "0.8 s", "0.8 s"]', 'holds = ["0.4 s", "-0.8 s"]'), "holds"),
+    (('backlash = ["0 rad", "0.5 rev", "1 rev"]', 'backlash = ["0.5 kg"]'), "backlash"),
+])
+def test_bad_scene_data_is_refused_by_name(tmp_path, edit, name):
+    text = SCENE.read_text(encoding="utf-8")
+    assert edit[0] in text
+    bad = tmp_path / "bad.toml"
+    bad.write_text(text.replace(edit[0], edit[1]), encoding="utf-8")
+    with pytest.raises(SceneError, match=name):
+        run_scene(load_scene(bad), tmp_path)
+
+
+def test_walkthrough_has_the_startup_model(capsys):
+    from crane_sym.cli import main
+    assert main(["walkthrough", "003"]) == 0
+    text = capsys.readouterr().out
+    for needle in ("lost in the OCR", "start-up, motor speed in the gap",
+                   "start-up model, F_max, backlash 2pi", "003-startup-unstated-parameters",
+                   "fig12_startup_backlash", "chosen, not fitted"):
+        assert needle in text, needle
