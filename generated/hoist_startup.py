@@ -1200,10 +1200,8 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
-    k0 = g*t_n
-    k1 = tau_0*v0
-    k2 = 1/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k2*(k0*t + k1),1], default=np.nan))
+    k0 = g*t_n/(tau_0*v0)
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*t + 1,1], default=np.nan))
 
 
 def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
@@ -1266,11 +1264,9 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
-    x1 = 1/(t_n)
-    k0 = g*t_n**2
-    k2 = -tau_0*v0
-    k3 = x1/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*(k0*t + k2*(t + x0)),x1*(-t - x0)], default=np.nan))
+    x1 = -1/t_n
+    k2 = g*t_n/(tau_0*v0)
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k2*t + x1*(t + x0),x1*(t + x0)], default=np.nan))
 
 
 def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
@@ -1336,12 +1332,9 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
-    x1 = t_n**(-3.0)
-    k1 = 12*tau_0*v0
-    k2 = g*t_n**4
-    k3 = x1/(tau_0*v0)
-    k5 = 12*x1
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*(t + x0)**2 + k2),k5*t*(t + x0)**2], default=np.nan))
+    x1 = 12/t_n**3
+    k2 = g*t_n/(tau_0*v0)
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [t*(k2 + x1*(t + x0)**2),t*x1*(t + x0)**2], default=np.nan))
 
 
 def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
@@ -1408,9 +1401,6 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
-    x1 = t_n**(-5.0)
-    k1 = -60*tau_0*v0
-    k2 = g*t_n**6
-    k3 = x1/(tau_0*v0)
-    k5 = -60*x1
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*t*(t + x0)**3 + k2),k5*t**2*(t + x0)**3], default=np.nan))
+    x1 = -60/t_n**5
+    k2 = g*t_n/(tau_0*v0)
+    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [t*(k2 + t*x1*(t + x0)**3),t**2*x1*(t + x0)**3], default=np.nan))
