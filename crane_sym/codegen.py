@@ -18,7 +18,8 @@ from typing import Iterable, Sequence
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
-from . import __version__, gear_kernels, kernels
+from . import __version__, cell_kernels, gear_kernels, kernels
+from .cells import pieces, statements
 from .derivation import Derivation, Output
 from .entire import Z, plan
 from .inplace import chain
@@ -153,8 +154,18 @@ class _DoubleDoublePrinter(_Printer):
         raise ValueError(f"no double-double form for {expr}")
 
 
-def _printer(helpers: dict[int, str] | None = None) -> _Printer:
-    return _Printer({"fully_qualified_modules": True, "inline": True,
+class _Ternary(_Printer):
+    """Prints a Piecewise as a conditional expression (a call on scalars)."""
+
+    def _print_Piecewise(self, expr: sp.Piecewise) -> str:
+        text = self._print(expr.args[-1].expr)
+        for branch, cond in reversed(expr.args[:-1]):
+            text = f"{self._print(branch)} if {self._print(cond)} else {text}"
+        return f"({text})"
+
+
+def _printer(helpers: dict[int, str] | None = None, kind: type = _Printer) -> _Printer:
+    return kind({"fully_qualified_modules": True, "inline": True,
                      "allow_unknown_functions": False,
                      "helpers": {} if helpers is None else helpers})
 
@@ -281,8 +292,10 @@ def render_function(out: Output, table: SymbolTable,
     if shape is None:
         expr = optimize(out.expr, rules)
         assignments, phases, body = hoist(expr, varying)
-        subs, reduced = sp.cse([e for _, e in assignments] + [body],
+        split = bool(varying) and pieces(body) is not None     # window by window
+        subs, reduced = sp.cse([e for _, e in assignments] + ([] if split else [body]),
                                symbols=sp.numbered_symbols("x"), order="canonical")
+        reduced = reduced + [body] if split else reduced
     else:  # a matrix: its elements share one CSE, no hoisting
         assignments, phases = [], []
         subs, reduced = sp.cse([optimize(e, rules) for e in out.expr],
@@ -336,8 +349,12 @@ def render_function(out: Output, table: SymbolTable,
         for sym, value in subs:                  # array temporaries of the CSE
             if value.free_symbols & heavy:
                 heavy.add(sym)
-        steps = chain(final, heavy, printer.doprint)
-        if steps is None:                        # not a chain: NumPy as printed
+        cells = statements(final, printer.doprint, _printer(helpers, _Ternary).doprint) \
+            if split else None
+        steps = None if split else chain(final, heavy, printer.doprint)
+        if cells is not None:                    # each window on its own points
+            lines += [f"    {s}" for s in cells]
+        elif steps is None:                      # not a chain: NumPy as printed
             lines.append(f"    return _into(out, shape, {printer.doprint(final)})")
         else:                                    # one buffer, one pass per node
             lines += ["    if out is None and not shape:",
@@ -354,6 +371,8 @@ def _kernel_source(functions: Sequence[str]) -> str:
     sources = [inspect.getsource(getattr(kernels, n)) for n in names]
     gear = kernels.closure(called & set(gear_kernels.DEPENDS), gear_kernels.DEPENDS)
     sources += [inspect.getsource(getattr(gear_kernels, n)) for n in gear]
+    cell = kernels.closure(called & set(cell_kernels.DEPENDS), cell_kernels.DEPENDS)
+    sources += [inspect.getsource(getattr(cell_kernels, n)) for n in cell]
     return "\n\n".join(sources)
 
 

@@ -93,6 +93,53 @@ def _into(out, shape, result):
     return out
 
 
+def _selector(mask):
+    """The flat positions where ``mask`` (1-D bool) holds: None if none, a
+    slice if they are contiguous, else an index array."""
+    n = int(np.count_nonzero(mask))
+    if n == 0:
+        return None
+    first = int(np.argmax(mask))
+    if n == mask.size or mask[first:first + n].all():
+        return slice(first, first + n)
+    return np.flatnonzero(mask)
+
+
+def _cells(shape, choices):
+    """Selectors over the flattened broadcast ``shape``, one per combination of
+    branches: ``choices`` lists, per piecewise, its conditions in order (the
+    last branch, the rest, left out); a point takes the first branch whose
+    condition holds. Combinations in row-major order (the first piecewise
+    varies slowest)."""
+    size = int(np.prod(shape, dtype=np.int64))
+    cells = [np.ones(size, dtype=bool)]
+    for conditions in choices:
+        rest = np.ones(size, dtype=bool)
+        branches = []
+        for condition in conditions:
+            mask = np.broadcast_to(condition, shape).reshape(-1) & rest
+            rest &= ~mask
+            branches.append(mask)
+        branches.append(rest)
+        cells = [cell & branch for cell in cells for branch in branches]
+    return [_selector(cell) for cell in cells]
+
+
+def _at(where, shape, *values):
+    """``values`` on the points ``where`` (a selector of ``_cells``): arrays
+    broadcast to ``shape``, flattened and selected; scalars as they are."""
+    return tuple(v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1)[where]
+                 for v in values)
+
+
+def _put(out, where, value):
+    """Write ``value`` into ``out`` at the flat positions ``where``."""
+    if out.flags.c_contiguous:
+        out.reshape(-1)[where] = value
+    else:
+        out.flat[where] = value
+
+
 def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     """Rigid drive, hoisting: gearbox-input torque over the rated static torque after the safety brakes act (motor torque lost). Eq (2), (4).
 
@@ -440,7 +487,17 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     k7 = -2*x14*x17*(1 - x12)
     k8 = m_h*x17 + m_p*x17
     k9 = i_t*x15/(g*r)
-    return _into(out, shape, np.select([np.less(t, t_SB),True], [k2*(k1*np.sin(t*x11)**2 + 1),k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (k2*(k1*np.sin(t*x11)**2 + 1) if np.less(t, t_SB) else k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, t_SB)]])
+    if cells[0] is not None:
+        k1_, k2_, t_, x11_ = _at(cells[0], shape, k1, k2, t, x11)
+        _put(out, cells[0], k2_*(k1_*np.sin(t_*x11_)**2 + 1))
+    if cells[1] is not None:
+        k3_, k4_, k5_, k7_, k8_, k9_, t_, x11_ = _at(cells[1], shape, k3, k4, k5, k7, k8, k9, t, x11)
+        _put(out, cells[1], k9_*(k5_*np.sin(k4_*(k3_ + t_))**2 + k7_*np.sin(t_*x11_)**2 + k8_))
+    return out
 
 
 def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):

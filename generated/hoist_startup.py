@@ -195,6 +195,8 @@ def _exact_phase(k, t, c=0.0):
     relative: t - c by TwoSum, the product by TwoProduct. A phase at long
     times or just after a switch, where one rounding is a large error of a
     sine near its zeros."""
+    if np.ndim(c) == 0 and c == 0:   # t - 0 is exact: the product alone
+        return _two_product(k, t)
     s, e = _two_sum(t, -c)
     p, pe = _two_product(k, s)
     return _quick_two_sum(p, pe + k * e)
@@ -241,13 +243,63 @@ def _offset_wave(level, gap, b, c, x):
     r = np.hypot(b, c)
     theta, err = _two_sum(hi, -np.arctan2(c * sb, np.abs(b)))
     lo = err + lo
-    cos_theta = np.cos(theta) - np.sin(theta) * lo
-    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)
+    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)  # cos, sin of theta from these
+    cos_theta = (c2 - s2) * (c2 + s2) - 2.0 * s2 * c2 * lo
     s = np.where(level < 0, -1.0, 1.0)
     q = s * sb
-    half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
+    if np.ndim(q) == 0:                                 # one side for every point
+        half = c2 - s2 * (0.5 * lo) if q > 0 else s2 + c2 * (0.5 * lo)
+    else:
+        half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
     back = s * (gap / (np.abs(level) + r) + 2.0 * r * half * half)
     return np.where(q * cos_theta >= 0, level + sb * r * cos_theta, back)
+
+
+def _selector(mask):
+    """The flat positions where ``mask`` (1-D bool) holds: None if none, a
+    slice if they are contiguous, else an index array."""
+    n = int(np.count_nonzero(mask))
+    if n == 0:
+        return None
+    first = int(np.argmax(mask))
+    if n == mask.size or mask[first:first + n].all():
+        return slice(first, first + n)
+    return np.flatnonzero(mask)
+
+
+def _cells(shape, choices):
+    """Selectors over the flattened broadcast ``shape``, one per combination of
+    branches: ``choices`` lists, per piecewise, its conditions in order (the
+    last branch, the rest, left out); a point takes the first branch whose
+    condition holds. Combinations in row-major order (the first piecewise
+    varies slowest)."""
+    size = int(np.prod(shape, dtype=np.int64))
+    cells = [np.ones(size, dtype=bool)]
+    for conditions in choices:
+        rest = np.ones(size, dtype=bool)
+        branches = []
+        for condition in conditions:
+            mask = np.broadcast_to(condition, shape).reshape(-1) & rest
+            rest &= ~mask
+            branches.append(mask)
+        branches.append(rest)
+        cells = [cell & branch for cell in cells for branch in branches]
+    return [_selector(cell) for cell in cells]
+
+
+def _at(where, shape, *values):
+    """``values`` on the points ``where`` (a selector of ``_cells``): arrays
+    broadcast to ``shape``, flattened and selected; scalars as they are."""
+    return tuple(v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1)[where]
+                 for v in values)
+
+
+def _put(out, where, value):
+    """Write ``value`` into ``out`` at the flat positions ``where``."""
+    if out.flags.c_contiguous:
+        out.reshape(-1)[where] = value
+    else:
+        out.flat[where] = value
 
 
 def _entire_1(z):
@@ -625,7 +677,17 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     x0 = Omega*theta
     k0 = 2*np.sin((1/2)*x0)**2
     k1 = np.sin(x0)
-    return _into(out, shape, np.select([np.less_equal(t, theta),True], [2*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k0, k1, _exact_phase(Omega, t, theta))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (2*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, theta) else _wave(k0, k1, _exact_phase(Omega, t, theta)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, theta)]])
+    if cells[0] is not None:
+        Omega_, t_ = _at(cells[0], shape, Omega, t)
+        _put(out, cells[0], 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k0_, k1_, t_, theta_ = _at(cells[1], shape, Omega, k0, k1, t, theta)
+        _put(out, cells[1], _wave(k0_, k1_, _exact_phase(Omega_, t_, theta_)))
+    return out
 
 
 def pulse_peak_factor(Omega, theta, *, out=None):
@@ -704,7 +766,17 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     k1 = _entire_1(x0)
     k2 = _entire_2(x0)
     k3 = _entire_3(x0)
-    return _into(out, shape, np.select([np.less_equal(t, theta),True], [k0*_entire_4(_exact_phase(Omega, t)),_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, theta) else _offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, theta)]])
+    if cells[0] is not None:
+        Omega_, k0_, t_ = _at(cells[0], shape, Omega, k0, t)
+        _put(out, cells[0], k0_*_entire_4(_exact_phase(Omega_, t_)))
+    if cells[1] is not None:
+        Omega_, k1_, k2_, k3_, t_, theta_ = _at(cells[1], shape, Omega, k1, k2, k3, t, theta)
+        _put(out, cells[1], _offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, theta_)))
+    return out
 
 
 def ramp_hold_peak_factor(Omega, theta, *, out=None):
@@ -777,8 +849,6 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x6 = Omega*t_n
     x7 = m1*x0*x2
     x8 = Omega*tau_0
-    x9 = _exact_phase(Omega, t)
-    x10 = _sin_pair(x9, 0.5)**2
     k0 = x1*x3
     k2 = x5*np.sin((1/2)*x6)**2
     k3 = x2*x4*np.sin(x6)
@@ -786,7 +856,27 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k5 = _entire_1(x8)
     k6 = _entire_2(x8)
     k7 = _entire_3(x8)
-    return _into(out, shape, k0*x10 + np.select([np.less_equal(t, tau_0),True], [k4*_entire_4(x9),x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x10*x5,_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k0*_sin_pair(_exact_phase(Omega, t), 0.5)**2 + (k4*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))) + (x5*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k4_, t_, x5_ = _at(cells[0], shape, Omega, k0, k4, t, x5)
+        v0 = _exact_phase(Omega_, t_)
+        v1 = _sin_pair(v0, 0.5)**2
+        _put(out, cells[0], k0_*v1 + k4_*_entire_4(v0) + v1*x5_)
+    if cells[1] is not None:
+        Omega_, k0_, k2_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k2, k3, k4, t, t_n)
+        v0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_sin_pair(v0, 0.5)**2 + k4_*_entire_4(v0) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k0_, k5_, k6_, k7_, t_, tau_0_, x5_, x7_ = _at(cells[2], shape, Omega, k0, k5, k6, k7, t, tau_0, x5, x7)
+        v0 = _sin_pair(_exact_phase(Omega_, t_), 0.5)**2
+        _put(out, cells[2], k0_*v0 + v0*x5_ + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_)))
+    if cells[3] is not None:
+        Omega_, k0_, k2_, k3_, k5_, k6_, k7_, t_, t_n_, tau_0_, x7_ = _at(cells[3], shape, Omega, k0, k2, k3, k5, k6, k7, t, t_n, tau_0, x7)
+        _put(out, cells[3], k0_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -834,7 +924,6 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x4 = Omega*t_n
     x5 = m1*x0*x2
     x6 = Omega*tau_0
-    x7 = _exact_phase(Omega, t)
     k0 = 2*x1*x2
     k1 = 1/(t_n)
     k3 = x3*_entire_5(x4)
@@ -843,7 +932,26 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k6 = _entire_1(x6)
     k7 = _entire_2(x6)
     k8 = _entire_3(x6)
-    return _into(out, shape, k0*_sin_pair(x7, 0.5)**2 + np.select([np.less_equal(t, tau_0),True], [k5*_entire_4(x7),x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x3*(k1*(-t + t_n)*_entire_7(x7) + _entire_5(x7)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k0*_sin_pair(_exact_phase(Omega, t), 0.5)**2 + (k5*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))) + (x3*(k1*(-t + t_n)*_entire_7(_exact_phase(Omega, t)) + _entire_5(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k3, k4, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k1_, k5_, t_, t_n_, x3_ = _at(cells[0], shape, Omega, k0, k1, k5, t, t_n, x3)
+        v0 = _exact_phase(Omega_, t_)
+        _put(out, cells[0], k0_*_sin_pair(v0, 0.5)**2 + k5_*_entire_4(v0) + x3_*(k1_*(-t_ + t_n_)*_entire_7(v0) + _entire_5(v0)))
+    if cells[1] is not None:
+        Omega_, k0_, k3_, k4_, k5_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k3, k4, k5, t, t_n)
+        v0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_sin_pair(v0, 0.5)**2 + k5_*_entire_4(v0) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k0_, k1_, k6_, k7_, k8_, t_, t_n_, tau_0_, x3_, x5_ = _at(cells[2], shape, Omega, k0, k1, k6, k7, k8, t, t_n, tau_0, x3, x5)
+        v0 = _exact_phase(Omega_, t_)
+        _put(out, cells[2], k0_*_sin_pair(v0, 0.5)**2 + x3_*(k1_*(-t_ + t_n_)*_entire_7(v0) + _entire_5(v0)) + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_)))
+    if cells[3] is not None:
+        Omega_, k0_, k3_, k4_, k6_, k7_, k8_, t_, t_n_, tau_0_, x5_ = _at(cells[3], shape, Omega, k0, k3, k4, k6, k7, k8, t, t_n, tau_0, x5)
+        _put(out, cells[3], k0_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -892,8 +1000,6 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x5 = v0*x1*(m1 + m2)/g
     x6 = Omega*t_n
     x7 = x4*x5
-    x8 = _exact_phase(Omega, t)
-    x9 = -t + t_n
     k0 = x0*x2/tau_0
     k1 = _entire_1(x3)
     k2 = _entire_2(x3)
@@ -901,7 +1007,28 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k7 = 48*x0*x5/t_n**2
     k8 = -24*x7*_entire_8(x6)
     k9 = -72*x7*_entire_9(x6)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x8),x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k7*(x4*x9*(x4*x9*_entire_10(x8) + _entire_11(x8)) + _entire_12(x8)),_wave(k8, k9, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x8, 0.5)**2)
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k7*(x4*(-t + t_n)*(x4*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k8, k9, _exact_phase(Omega, t, t_n))) + 2*_sin_pair(_exact_phase(Omega, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k7_, t_, t_n_, x4_ = _at(cells[0], shape, Omega, k0, k7, t, t_n, x4)
+        v0 = _exact_phase(Omega_, t_)
+        v1 = x4_*(-t_ + t_n_)
+        _put(out, cells[0], k0_*_entire_4(v0) + k7_*(v1*(v1*_entire_10(v0) + _entire_11(v0)) + _entire_12(v0)) + 2*_sin_pair(v0, 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k0_, k8_, k9_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k8, k9, t, t_n)
+        v0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_entire_4(v0) + 2*_sin_pair(v0, 0.5)**2 + _wave(k8_, k9_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k1_, k2_, k3_, k7_, t_, t_n_, tau_0_, x2_, x4_ = _at(cells[2], shape, Omega, k1, k2, k3, k7, t, t_n, tau_0, x2, x4)
+        v0 = _exact_phase(Omega_, t_)
+        v1 = x4_*(-t_ + t_n_)
+        _put(out, cells[2], k7_*(v1*(v1*_entire_10(v0) + _entire_11(v0)) + _entire_12(v0)) + x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(v0, 0.5)**2)
+    if cells[3] is not None:
+        Omega_, k1_, k2_, k3_, k8_, k9_, t_, t_n_, tau_0_, x2_ = _at(cells[3], shape, Omega, k1, k2, k3, k8, k9, t, t_n, tau_0, x2)
+        _put(out, cells[3], x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + _wave(k8_, k9_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -949,8 +1076,6 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x4 = v0*x0*(m1 + m2)/g
     x5 = Omega*t_n
     x6 = x3*x4
-    x7 = _exact_phase(Omega, t)
-    x8 = -t + t_n
     k0 = x1/(Omega*tau_0)
     k1 = _entire_1(x2)
     k2 = _entire_2(x2)
@@ -958,7 +1083,28 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k8 = -120*x4/(Omega**2*t_n**3)
     k9 = -2880*x6*_entire_13(x5)
     k10 = -7200*x6*_entire_14(x5)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x7),x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k8*(x3*x8*(x3*x8*(x3*x8*_entire_15(x7) + _entire_16(x7)) + _entire_17(x7)) + _entire_18(x7)),_wave(k9, k10, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x7, 0.5)**2)
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k8*(x3*(-t + t_n)*(x3*(-t + t_n)*(x3*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k9, k10, _exact_phase(Omega, t, t_n))) + 2*_sin_pair(_exact_phase(Omega, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k8_, t_, t_n_, x3_ = _at(cells[0], shape, Omega, k0, k8, t, t_n, x3)
+        v0 = _exact_phase(Omega_, t_)
+        v1 = x3_*(-t_ + t_n_)
+        _put(out, cells[0], k0_*_entire_4(v0) + k8_*(v1*(v1*(v1*_entire_15(v0) + _entire_16(v0)) + _entire_17(v0)) + _entire_18(v0)) + 2*_sin_pair(v0, 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k0_, k10_, k9_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k10, k9, t, t_n)
+        v0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_entire_4(v0) + 2*_sin_pair(v0, 0.5)**2 + _wave(k9_, k10_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k1_, k2_, k3_, k8_, t_, t_n_, tau_0_, x1_, x3_ = _at(cells[2], shape, Omega, k1, k2, k3, k8, t, t_n, tau_0, x1, x3)
+        v0 = _exact_phase(Omega_, t_)
+        v1 = x3_*(-t_ + t_n_)
+        _put(out, cells[2], k8_*(v1*(v1*(v1*_entire_15(v0) + _entire_16(v0)) + _entire_17(v0)) + _entire_18(v0)) + x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(v0, 0.5)**2)
+    if cells[3] is not None:
+        Omega_, k1_, k10_, k2_, k3_, k9_, t_, t_n_, tau_0_, x1_ = _at(cells[3], shape, Omega, k1, k10, k2, k3, k9, t, t_n, tau_0, x1)
+        _put(out, cells[3], x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + _wave(k9_, k10_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1004,7 +1150,17 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     k1 = x3*np.sin((1/2)*x4)**2
     k2 = x2*np.sin(x4)
     k3 = x0*x1
-    return _into(out, shape, k3 + np.select([np.less_equal(t, t_n),True], [x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k1, k2, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k3 + (x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, t_n) else _wave(k1, k2, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k3_, t_, x3_ = _at(cells[0], shape, Omega, k3, t, x3)
+        _put(out, cells[0], k3_ + x3_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k1_, k2_, k3_, t_, t_n_ = _at(cells[1], shape, Omega, k1, k2, k3, t, t_n)
+        _put(out, cells[1], k3_ + _wave(k1_, k2_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1046,12 +1202,22 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = 1/(v0 + x0)
     x2 = v0*x1
     x3 = Omega*t_n
-    x4 = _exact_phase(Omega, t)
     k0 = 1/(t_n)
     k2 = x2*_entire_5(x3)
     k3 = -x2*_entire_6(x3)
     k4 = x0*x1
-    return _into(out, shape, k4 + np.select([np.less_equal(t, t_n),True], [x2*(k0*(-t + t_n)*_entire_7(x4) + _entire_5(x4)),_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k4 + (x2*(k0*(-t + t_n)*_entire_7(_exact_phase(Omega, t)) + _entire_5(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k4_, t_, t_n_, x2_ = _at(cells[0], shape, Omega, k0, k4, t, t_n, x2)
+        v0 = _exact_phase(Omega_, t_)
+        _put(out, cells[0], k4_ + x2_*(k0_*(-t_ + t_n_)*_entire_7(v0) + _entire_5(v0)))
+    if cells[1] is not None:
+        Omega_, k2_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k2, k3, k4, t, t_n)
+        _put(out, cells[1], k4_ + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1093,12 +1259,22 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = v0/g
     x2 = Omega*t_n
     x3 = x0*x1
-    x4 = _exact_phase(Omega, t)
-    x5 = -t + t_n
     k2 = 48*x1/(Omega*t_n**2)
     k3 = -24*x3*_entire_8(x2)
     k4 = -72*x3*_entire_9(x2)
-    return _into(out, shape, np.select([np.less_equal(t, t_n),True], [k2*(x0*x5*(x0*x5*_entire_10(x4) + _entire_11(x4)) + _entire_12(x4)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan) + 1)
+    if out is None and not shape:      # one point: its own branch only
+        return (k2*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k3, k4, _exact_phase(Omega, t, t_n))) + 1
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k2_, t_, t_n_, x0_ = _at(cells[0], shape, Omega, k2, t, t_n, x0)
+        v0 = _exact_phase(Omega_, t_)
+        v1 = x0_*(-t_ + t_n_)
+        _put(out, cells[0], k2_*(v1*(v1*_entire_10(v0) + _entire_11(v0)) + _entire_12(v0)) + 1)
+    if cells[1] is not None:
+        Omega_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k3, k4, t, t_n)
+        _put(out, cells[1], _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)) + 1)
+    return out
 
 
 def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1140,12 +1316,22 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = v0/g
     x2 = Omega*t_n
     x3 = x0*x1
-    x4 = _exact_phase(Omega, t)
-    x5 = -t + t_n
     k3 = -120*x1/(Omega**2*t_n**3)
     k4 = -2880*x3*_entire_13(x2)
     k5 = -7200*x3*_entire_14(x2)
-    return _into(out, shape, np.select([np.less_equal(t, t_n),True], [k3*(x0*x5*(x0*x5*(x0*x5*_entire_15(x4) + _entire_16(x4)) + _entire_17(x4)) + _entire_18(x4)),_wave(k4, k5, _exact_phase(Omega, t, t_n))], default=np.nan) + 1)
+    if out is None and not shape:      # one point: its own branch only
+        return (k3*(x0*(-t + t_n)*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k4, k5, _exact_phase(Omega, t, t_n))) + 1
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k3_, t_, t_n_, x0_ = _at(cells[0], shape, Omega, k3, t, t_n, x0)
+        v0 = _exact_phase(Omega_, t_)
+        v1 = x0_*(-t_ + t_n_)
+        _put(out, cells[0], k3_*(v1*(v1*(v1*_entire_15(v0) + _entire_16(v0)) + _entire_17(v0)) + _entire_18(v0)) + 1)
+    if cells[1] is not None:
+        Omega_, k4_, k5_, t_, t_n_ = _at(cells[1], shape, Omega, k4, k5, t, t_n)
+        _put(out, cells[1], _wave(k4_, k5_, _exact_phase(Omega_, t_, t_n_)) + 1)
+    return out
 
 
 def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
@@ -1201,7 +1387,16 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = g*t_n/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*t + 1,1], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*t + 1 if np.less_equal(t, tau_0) else 1)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k0_, t_ = _at(cells[0], shape, k0, t)
+        _put(out, cells[0], k0_*t_ + 1)
+    if cells[1] is not None:
+        _put(out, cells[1], 1)
+    return out
 
 
 def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
@@ -1266,7 +1461,17 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     x0 = -t_n
     x1 = -1/t_n
     k2 = g*t_n/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k2*t + x1*(t + x0),x1*(t + x0)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (k2*t + x1*(t + x0) if np.less_equal(t, tau_0) else x1*(t + x0))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
+        _put(out, cells[0], k2_*t_ + x1_*(t_ + x0_))
+    if cells[1] is not None:
+        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
+        _put(out, cells[1], x1_*(t_ + x0_))
+    return out
 
 
 def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
@@ -1334,7 +1539,17 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     x0 = -t_n
     x1 = 12/t_n**3
     k2 = g*t_n/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [t*(k2 + x1*(t + x0)**2),t*x1*(t + x0)**2], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (t*(k2 + x1*(t + x0)**2) if np.less_equal(t, tau_0) else t*x1*(t + x0)**2)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
+        _put(out, cells[0], t_*(k2_ + x1_*(t_ + x0_)**2))
+    if cells[1] is not None:
+        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
+        _put(out, cells[1], t_*x1_*(t_ + x0_)**2)
+    return out
 
 
 def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
@@ -1403,4 +1618,14 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     x0 = -t_n
     x1 = -60/t_n**5
     k2 = g*t_n/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [t*(k2 + t*x1*(t + x0)**3),t**2*x1*(t + x0)**3], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (t*(k2 + t*x1*(t + x0)**3) if np.less_equal(t, tau_0) else t**2*x1*(t + x0)**3)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
+        _put(out, cells[0], t_*(k2_ + t_*x1_*(t_ + x0_)**3))
+    if cells[1] is not None:
+        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
+        _put(out, cells[1], t_**2*x1_*(t_ + x0_)**3)
+    return out
