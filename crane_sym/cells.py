@@ -32,13 +32,19 @@ def pieces(expr: sp.Expr) -> list[sp.Piecewise] | None:
 
 
 def statements(expr: sp.Expr, print_: Callable[[sp.Basic], str],
-               print_scalar: Callable[[sp.Basic], str]) -> list[str] | None:
+               print_scalar: Callable[[sp.Basic], str],
+               taken: set[str] = frozenset()) -> list[str] | None:
     """Lines that return ``expr`` evaluated cell by cell into ``out`` (the
     shape in ``shape``), or None when ``expr`` has no Piecewise to split.
-    ``print_scalar`` prints a Piecewise as a conditional expression."""
+    ``print_scalar`` prints a Piecewise as a conditional expression; ``taken``
+    are names in scope (arguments, parameter-only names) that a cell's
+    temporaries must not shadow."""
     found = pieces(expr)
     if found is None:
         return None
+    names = taken | {s.name for s in expr.free_symbols}
+    prefix = next(p for p in ("v", "w", "u", "cell_v") if not any(
+        n.startswith(p) and n[len(p):].isdigit() for n in names))
     choices = ", ".join("[" + ", ".join(print_(a.cond) for a in p.args[:-1]) + "]"
                         for p in found)
     lines = ["if out is None and not shape:      # one point: its own branch only",
@@ -49,14 +55,14 @@ def statements(expr: sp.Expr, print_: Callable[[sp.Basic], str],
         cell = expr.xreplace({p: branch.expr for p, branch in zip(found, combo)})
         operands = sorted(cell.free_symbols, key=str)
         local = {s: sp.Symbol(f"{s.name}_", **s.assumptions0) for s in operands}
-        subs, (value,) = sp.cse([cell.xreplace(local)], symbols=sp.numbered_symbols("v"),
+        subs, (value,) = sp.cse([cell.xreplace(local)], symbols=sp.numbered_symbols(prefix),
                                 order="canonical")
         lines.append(f"if cells[{i}] is not None:")
         if operands:
-            names = ", ".join(local[s].name for s in operands)
+            inside = ", ".join(local[s].name for s in operands)
             given = ", ".join(s.name for s in operands)
             comma = "," if len(operands) == 1 else ""
-            lines.append(f"    {names}{comma} = _at(cells[{i}], shape, {given})")
+            lines.append(f"    {inside}{comma} = _at(cells[{i}], shape, {given})")
         lines += [f"    {s} = {print_(v)}" for s, v in subs]
         lines.append(f"    _put(out, cells[{i}], {print_(value)})")
     return lines + ["return out"]

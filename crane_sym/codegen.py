@@ -20,6 +20,7 @@ from sympy.printing.numpy import NumPyPrinter
 
 from . import __version__, cell_kernels, gear_kernels, kernels
 from .cells import pieces, statements
+from .scalar_path import fast_path
 from .derivation import Derivation, Output
 from .entire import Z, plan
 from .inplace import chain
@@ -297,7 +298,7 @@ def render_function(out: Output, table: SymbolTable,
                                symbols=sp.numbered_symbols("x"), order="canonical")
         reduced = reduced + [body] if split else reduced
     else:  # a matrix: its elements share one CSE, no hoisting
-        assignments, phases = [], []
+        assignments, phases, split = [], [], False
         subs, reduced = sp.cse([optimize(e, rules) for e in out.expr],
                                symbols=sp.numbered_symbols("x"), order="canonical")
     entries = [table[a] for a in out.args]
@@ -323,6 +324,13 @@ def render_function(out: Output, table: SymbolTable,
                                         "shape of the arguments." if shape else
                                         "broadcast over the arguments."),
              '    """']
+    alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom} \
+        if shape is None else {}
+    if shape is None and not phases and not split:     # plain numbers: math, no arrays
+        named = list(subs) + [(k, v) for (k, _), v in zip(assignments, reduced[:-1])
+                              if k not in alias]
+        lines += ["    " + s for s in fast_path(entries, named, reduced[-1].xreplace(alias))
+                  or []]
     for e in entries:
         what = f"{e.description}, {e.unit}".replace('"', "'")
         lines.append(f"    {e.name:<{width}} = _checked({e.name!r}, {e.name}, "
@@ -331,8 +339,7 @@ def render_function(out: Output, table: SymbolTable,
                          width=80, break_long_words=False, break_on_hyphens=False)
     lines.append("    shape = _broadcast(" + call[0])
     lines += [" " * 23 + rest for rest in call[1:]]
-    # A scalar that CSE reduced to a bare name is inlined, not re-assigned.
-    alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom}
+    # A scalar that CSE reduced to a bare name is inlined, not re-assigned (alias).
     for sym, value in phases:
         lines.append(f"    {sym} = {_DoubleDoublePrinter().doprint(value)}")
     for sym, value in subs:
@@ -349,8 +356,10 @@ def render_function(out: Output, table: SymbolTable,
         for sym, value in subs:                  # array temporaries of the CSE
             if value.free_symbols & heavy:
                 heavy.add(sym)
-        cells = statements(final, printer.doprint, _printer(helpers, _Ternary).doprint) \
-            if split else None
+        taken = {e.name for e in entries} | {str(s) for s, _ in subs} | {
+            str(k) for k, _ in assignments}
+        cells = statements(final, printer.doprint, _printer(helpers, _Ternary).doprint,
+                           taken) if split else None
         steps = None if split else chain(final, heavy, printer.doprint)
         if cells is not None:                    # each window on its own points
             lines += [f"    {s}" for s in cells]
@@ -398,7 +407,9 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     helpers: dict[int, str] = {}
     functions = ["\n" + render_function(o, d.symbols, rules, helpers) for o in outputs]
     helper_source = ["\n" + render_helper(key, name) for key, name in helpers.items()]
-    parts = [header, "import numpy as np\n", f"__all__ = [{names}]\n",
+    uses_math = any("math." in f for f in functions)
+    parts = [header, ("import math\n\n" if uses_math else "") + "import numpy as np\n",
+             f"__all__ = [{names}]\n",
              "\n" + _kernel_source(functions + helper_source), *helper_source, *functions]
     return "\n".join(parts)
 

@@ -18,6 +18,8 @@ Functions and argument order:
     max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c) -> [N]    eq (3), (4)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'max_support_load']
@@ -370,6 +372,18 @@ def tip_diameter(m, z, x, h_a, dy, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m) in (float, int) or type(m) is np.float64)
+            and (type(z) in (float, int) or type(z) is np.float64)
+            and (type(x) in (float, int) or type(x) is np.float64)
+            and (type(h_a) in (float, int) or type(h_a) is np.float64)
+            and (type(dy) in (float, int) or type(dy) is np.float64)):
+        if (0 < m < 1e999 and 0 < z < 1e999 and -1e999 < x < 1e999 and 0 < h_a < 1e999
+                and 0 <= dy < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(m*(-2*dy + 2*h_a + 2*x + z))
+            except (ArithmeticError, ValueError):
+                pass
     m   = _checked('m', m, 'positive', 'module of the teeth, m')
     z   = _checked('z', z, 'positive', 'number of teeth, 1')
     x   = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
@@ -545,6 +559,15 @@ def undercut_limit(z, alpha, h_a, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(z) in (float, int) or type(z) is np.float64)
+            and (type(alpha) in (float, int) or type(alpha) is np.float64)
+            and (type(h_a) in (float, int) or type(h_a) is np.float64)):
+        if (0 < z < 1e999 and 0 < alpha < 1e999 and 0 < h_a < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(h_a - 1/2*z*math.sin(alpha)**2)
+            except (ArithmeticError, ValueError):
+                pass
     z     = _checked('z', z, 'positive', 'number of teeth, 1')
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
@@ -579,6 +602,21 @@ def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(psi) in (float, int) or type(psi) is np.float64)
+            and (type(G_g) in (float, int) or type(G_g) is np.float64)
+            and (type(G_pch) in (float, int) or type(G_pch) is np.float64)
+            and (type(G_vs) in (float, int) or type(G_vs) is np.float64)
+            and (type(L_max) in (float, int) or type(L_max) is np.float64)
+            and (type(x_o) in (float, int) or type(x_o) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)):
+        if (0 < psi < 1e999 and 0 < G_g < 1e999 and 0 < G_pch < 1e999 and 0 < G_vs < 1e999
+                and 0 < L_max < 1e999 and 0 < x_o < 1e999 and 0 < c < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = G_g*psi
+                return np.float64((1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c)
+            except (ArithmeticError, ValueError):
+                pass
     psi   = _checked('psi', psi, 'positive', 'dynamic coefficient of the hoisted load (printed у), 1')
     G_g   = _checked('G_g', G_g, 'positive', 'rated weight of the load G_г, N')
     G_pch = _checked('G_pch', G_pch, 'positive', 'weight of the slewing part G_пч, N')

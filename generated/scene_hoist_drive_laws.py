@@ -572,6 +572,13 @@ def optimal_coefficient_from_weight_a1(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     return _into(out, shape, 1)
@@ -592,6 +599,13 @@ def optimal_coefficient_from_weight_a2(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1 - t)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
@@ -617,6 +631,13 @@ def optimal_coefficient_from_weight_a3(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(12*t*(t - 1)**2)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
@@ -645,6 +666,13 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-60*t**2*(t - 1)**3)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
