@@ -189,11 +189,15 @@ def _machine() -> str:
 
 def cmd_bench(args: argparse.Namespace) -> int:
     """Speed against error of the generated functions and the SciPy alternatives."""
-    from . import bench, scenes
-    from .bench_report import as_markdown, headline, not_applicable, plot
+    from . import bench, bench_targets as bt, scenes
+    from .bench_report import as_markdown, headline, not_applicable, plot, plot_scaling
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
-    everything = []
+    everything, goals = [], []
+    rtols = args.rtols or (bench.QUICK_RTOLS if args.quick else bench.RTOLS)
+    sizes = args.sizes or (bt.QUICK_SIZES if args.quick else bt.SIZES)
+    compare = args.compare_points or (bt.QUICK_COMPARE_POINTS if args.quick
+                                      else bt.COMPARE_POINTS)
     for i in _ids(args.ids):
         chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
                   if s.derivation == i and not s.load_table and "duration" in s.options]
@@ -205,10 +209,13 @@ def cmd_bench(args: argparse.Namespace) -> int:
         duration = max(s.options["duration"] for s in chosen)
         start = time.perf_counter()
         rows = bench.bench(d, values, duration, points=args.points,
-                           methods=args.methods or bench.METHODS,
-                           rtols=args.rtols or bench.RTOLS)
+                           methods=args.methods or bench.METHODS, rtols=rtols)
         big = bench.throughput(d, values, duration, points=args.throughput_points)
         everything += rows + big
+        arrays = bt.array_ratios(d, values, duration, sizes)
+        scalars = bt.scalar_call(d, values, duration)
+        scaled = bt.scaling(d, values, duration, rows, compare)
+        goals += bt.goals(i, arrays, scalars, scaled)
         sized = [line for s in chosen
                  for line in bench.scene_comparison(
                      d, s, points=min(args.throughput_points, 200_000))]
@@ -222,6 +229,13 @@ def cmd_bench(args: argparse.Namespace) -> int:
                  f"({_machine()}); every ratio comes from this one run "
                  f"({time.perf_counter() - start:.0f} s).", "",
                  *[f"- {h}" for h in heads], "",
+                 "## Targets", "", bt.goals_table([g for g in goals if g.paper == i]), "",
+                 "## Closed form against the best tuned integrator, by number of points",
+                 "", bt.scaling_table(scaled), "",
+                 "## Against one np.cos over the same array (warm: repeated calls; cold: "
+                 "a first call on a fresh array)", "", bt.arrays_table(arrays), "",
+                 "Scalar calls (Python floats): " + ", ".join(
+                     f"{f} {sec * 1e6:.2f} µs" for f, sec in scalars), "",
                  "## Targets that do not apply", "",
                  "| function | target | why |", "| --- | --- | --- |",
                  *[f"| {f} | {what} | {why} |" for f, what, why in skipped], "",
@@ -233,9 +247,14 @@ def cmd_bench(args: argparse.Namespace) -> int:
         md.write_text("\n".join(lines), encoding="utf-8")
         pngs = plot(rows, out_dir / f"bench_{i}.png",
                     f"{i}: time against error ({args.points} points, this machine)")
+        pngs += plot_scaling(scaled, out_dir / f"bench_{i}_points.png",
+                             f"{i}: best tuned integrator / closed form against N")
         if args.format == "table":
             print("\n".join(lines[:5 + len(heads)]))
             print(f"wrote {md} and {', '.join(map(str, pngs))}")
+    if goals and args.format == "table":
+        print("\n## Targets (this run)\n")
+        print(bt.goals_table(goals))
     if args.sampled:
         _bench_sampled(out_dir, args.format == "table")
     if args.format == "json":
@@ -335,10 +354,18 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--methods", nargs="+", choices=("RK45", "DOP853", "LSODA", "Radau", "BDF"),
                    help="solve_ivp methods (default: RK45 DOP853 LSODA Radau; odeint "
                    "always runs)")
+    p.add_argument("--quick", action="store_true",
+                   help="fewer tolerances (1e-6 1e-9 1e-12), arrays of 1e4 and 1e5 points, "
+                   "the integrator comparison at 100 and 2000 points")
+    p.add_argument("--sizes", nargs="+", type=int,
+                   help="array lengths for the targets against np.cos (default: 1e4 1e5 1e6 1e7)")
+    p.add_argument("--compare-points", nargs="+", type=int,
+                   help="numbers of points at which the closed form meets the best tuned "
+                   "integrator (default: 100 2000 100000)")
     p.add_argument("--sampled", action="store_true",
                    help="also bench loads sampled on a grid against the closed forms")
     p.add_argument("--rtols", nargs="+", type=float,
-                   help="integrator and quadrature tolerances (default: 1e-3 1e-6 1e-9 1e-12)")
+                   help="integrator tolerances (default: every half decade 1e-6 ... 1e-13)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
                     cmd_run)
     p.add_argument("scene", help="scene name or path to a scene TOML file")
