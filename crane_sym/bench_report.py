@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from itertools import cycle
 from pathlib import Path
 from statistics import median
 from typing import Sequence
@@ -137,7 +138,7 @@ def headline(rows: Sequence[BenchRow], target: float = 1e-9) -> list[str]:
 def _family(method: str) -> str:
     """A method label without its tolerance or grid size, and without the
     function name in its system tag (one curve per family)."""
-    return re.sub(r": [A-Za-z_]\w*\]", "]", re.sub(r" (rtol|n)=\S+", "", method))
+    return re.sub(r": [A-Za-z_]\w*(?=[;\]])", "", re.sub(r" (rtol|n)=\S+", "", method))
 
 
 #: Panels to a work-precision figure (one figure per group of functions), the
@@ -160,8 +161,8 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     families = sorted({_family(r.method) for r in rows if r.kind in ALTERNATIVES})
     methods = sorted({f.split(" [")[0] for f in families})
     systems = sorted({f.split(" [")[-1] for f in families})
-    colour = dict(zip(methods, colormaps["tab10"].colors * 2))
-    style = dict(zip(systems, ("-", "--", ":", "-.") * 3))
+    colour = dict(zip(methods, cycle(colormaps["tab10"].colors)))
+    style = dict(zip(systems, cycle(("-", "--", ":", "-."))))
     pages = chunks(names, PANELS)
     paths = numbered(path, len(pages))
     for k, (page, target) in enumerate(zip(pages, paths), start=1):

@@ -99,6 +99,8 @@ def scalar_call(d: Derivation, values: dict, duration: float) -> list[tuple[str,
     module = importlib.import_module(f"crane_sym.generated.{d.id}")
     found = []
     for name, kind in time_functions(d).items():
+        if kind != "single":
+            continue
         fn = getattr(module, name)
         params = [p for p in inspect.signature(fn).parameters if p != "out"]
         args = [0.37 * duration if p == "t" else float(values[p]) for p in params]

@@ -1674,7 +1674,9 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     np.square(t, out=out)
     _w0 = np.empty_like(out)
     np.add(t, k0, out=_w0)
-    np.power(_w0, 3, out=_w0)
+    _w1 = np.empty_like(out)
+    np.square(_w0, out=_w1)
+    np.multiply(_w0, _w1, out=_w0)
     np.multiply(out, _w0, out=out)
     np.multiply(out, k1, out=out)
     return out
