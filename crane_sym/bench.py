@@ -23,14 +23,14 @@ import numpy as np
 import sympy as sp
 
 from . import bench_duhamel, bench_linear, bench_odes, units
-from .bench_rows import (DUHAMEL, FLOOR, GENERATED, INTEGRATOR, LAMBDIFY, METHODS, NAN,
-                         REFERENCE, RTOLS, BenchRow, Target, best_time, errors, least_time)
+from .bench_rows import (DUHAMEL, DUHAMEL_RTOLS, FLOOR, GENERATED, INTEGRATOR, LAMBDIFY,
+                         METHODS, NAN, QUICK_RTOLS, REFERENCE, RTOLS, BenchRow, Target, best_time, errors, least_time)
 from .derivation import Derivation, Output
 from .reference import mp_values
 from .specialize import module_name, operation_count, specialize, switched_off
 
 __all__ = ["DUHAMEL", "FLOOR", "GENERATED", "INTEGRATOR", "LAMBDIFY", "METHODS", "NAN",
-           "REFERENCE", "RTOLS", "BenchRow", "Target", "as_dicts", "bench", "best_time",
+           "QUICK_RTOLS", "REFERENCE", "RTOLS", "BenchRow", "Target", "as_dicts", "bench", "best_time",
            "errors", "grid_values", "least_time", "scene_comparison", "scene_grid",
            "throughput"]
 
@@ -118,8 +118,11 @@ def _function_rows(d: Derivation, out: Output, fn, grid, rng, check,
 def bench(d: Derivation, values: dict[str, float], duration: float,
           points: int = 2000, reference_points: int = 300,
           methods: Sequence[str] = METHODS, rtols: Sequence[float] = RTOLS,
-          seed: int = 1) -> list[BenchRow]:
-    """Rows for every generated function and every alternative, one run."""
+          seed: int = 1, alternatives: bool = True) -> list[BenchRow]:
+    """Rows for every generated function and every alternative, one run. The
+    quadratures of ``bench_duhamel`` run at the tolerances of ``rtols`` that
+    are in ``DUHAMEL_RTOLS`` (all of ``rtols`` if none is); without
+    ``alternatives``, the integrators alone."""
     generated = importlib.import_module(f"crane_sym.generated.{d.id}")
     grid = scene_grid(values, duration, points, seed)
     rng = np.random.default_rng(seed + 1)
@@ -134,8 +137,10 @@ def bench(d: Derivation, values: dict[str, float], duration: float,
     for system in d.ode_systems:
         if any(name in targets for name, _ in system.quantities):
             rows += bench_odes.integrator_rows(system, grid, targets, methods, rtols)
-            rows += bench_duhamel.duhamel_rows(system, grid, targets, rtols)
-        else:
+            if alternatives:
+                quad = tuple(r for r in rtols if r in DUHAMEL_RTOLS) or tuple(rtols)
+                rows += bench_duhamel.duhamel_rows(system, grid, targets, quad)
+        elif alternatives:
             rows += bench_linear.linear_rows(d, system, grid, check, methods, rtols)
     order = {name: i for i, name in enumerate(dict.fromkeys(r.function for r in rows))}
     return sorted(rows, key=lambda r: order[r.function])

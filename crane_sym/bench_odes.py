@@ -33,9 +33,11 @@ def time_symbol(system: ODESystem) -> sp.Symbol:
     return system.coordinates[0].args[0]
 
 
-def first_order(system: ODESystem, params: Sequence[sp.Symbol]):
+def first_order(system: ODESystem, params: Sequence[sp.Symbol], user: bool = False):
     """``f(t, y, *p)``, its Jacobian ``jac(t, y, *p)``, ``y0(*p)`` and the
-    quantities ``{name: q(y, *p)}`` (NumPy, over columns of states)."""
+    quantities ``{name: q(y, *p)}`` (NumPy, over columns of states). The
+    right-hand side is generated code (``math`` on floats, a list), or with
+    ``user`` as a user would write it: NumPy functions, an array returned."""
     t = time_symbol(system)
     q = list(system.coordinates)
     qd = [c.diff(t) for c in q]
@@ -46,8 +48,10 @@ def first_order(system: ODESystem, params: Sequence[sp.Symbol]):
     to_state = {**dict(zip(qd, state[len(q):])), **dict(zip(q, state[:len(q)]))}
     rhs = list(state[len(q):]) + [acc[c.diff(t, 2)].subs(to_state) for c in q]
     jac = sp.Matrix(rhs).jacobian(state)
-    f = sp.lambdify((t, state, *params), rhs, modules="math")
-    j = sp.lambdify((t, state, *params), jac.tolist(), modules="math")
+    f = sp.lambdify((t, state, *params), rhs, modules="numpy" if user else "math")
+    j = sp.lambdify((t, state, *params), jac.tolist(), modules="numpy" if user else "math")
+    if user:
+        f = _as_array(f)
     init = dict(system.initial)
     y0 = sp.lambdify(params, [init[c] for c in q] + [init[c] for c in qd], modules="math")
     quantities = {name: sp.lambdify((state, *params), expr.subs(to_state), modules="numpy")
@@ -55,6 +59,14 @@ def first_order(system: ODESystem, params: Sequence[sp.Symbol]):
     return f, j, y0, quantities
 
 
+def _as_array(f):
+    def rhs(*args):
+        return np.array(f(*args))
+    return rhs
+
+
+#: Methods that also run with the right-hand side a user would write (odeint always does).
+USER_METHODS = ("DOP853",)
 #: A run that needs more right-hand-side evaluations is stopped and reported.
 MAX_EVALUATIONS = 2_000_000
 
@@ -109,6 +121,9 @@ def solutions(system: ODESystem, compiled: tuple, p: tuple, grid: dict,
     f, jac, y0f, _ = compiled
     y0 = np.array(y0f(*p), dtype=float)
     yield from integrate(f, jac, y0, grid["t"], p, methods, rtols, system.name)
+    fu, ju = first_order(system, parameters(system), user=True)[:2]
+    yield from integrate(fu, ju, y0, grid["t"], p, [m for m in methods if m in USER_METHODS],
+                         rtols, f"{system.name}; NumPy rhs")
 
 
 def integrate(f, jac, y0: np.ndarray, t: np.ndarray, p: tuple, methods: Sequence[str],

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import re
+from itertools import cycle
 from pathlib import Path
 from statistics import median
 from typing import Sequence
@@ -137,70 +138,104 @@ def headline(rows: Sequence[BenchRow], target: float = 1e-9) -> list[str]:
 def _family(method: str) -> str:
     """A method label without its tolerance or grid size, and without the
     function name in its system tag (one curve per family)."""
-    return re.sub(r": [A-Za-z_]\w*\]", "]", re.sub(r" (rtol|n)=\S+", "", method))
+    return re.sub(r": [A-Za-z_]\w*(?=[;\]])", "", re.sub(r" (rtol|n)=\S+", "", method))
+
+
+#: Panels to a work-precision figure (one figure per group of functions), the
+#: page width in inches it is drawn at, and the type size (points).
+PANELS, WIDTH, TYPE = 2, 7.5, 9
 
 
 def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     """Work-precision plot: time per evaluation against error (max error over
     the peak), log-log, one panel per function that has alternatives; one
-    colour per method, one line style per coordinate system. At most four
+    colour per method, one line style per coordinate system and right-hand
+    side, the legend below the panels. Drawn at page width with 9-pt type, two
     panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more."""
     from matplotlib import colormaps
 
-    from .plots import MAX_PANELS, chunks, numbered, save
+    from .plots import chunks, numbered, save
 
     names = [n for n in dict.fromkeys(r.function for r in rows)
              if any(r.function == n and r.kind in ALTERNATIVES for r in rows)]
     families = sorted({_family(r.method) for r in rows if r.kind in ALTERNATIVES})
     methods = sorted({f.split(" [")[0] for f in families})
     systems = sorted({f.split(" [")[-1] for f in families})
-    colour = dict(zip(methods, colormaps["tab10"].colors * 2))
-    style = dict(zip(systems, ("-", "--", ":", "-.") * 3))
-    pages = chunks(names, MAX_PANELS)
+    colour = dict(zip(methods, cycle(colormaps["tab10"].colors)))
+    style = dict(zip(systems, cycle(("-", "--", ":", "-."))))
+    pages = chunks(names, PANELS)
     paths = numbered(path, len(pages))
     for k, (page, target) in enumerate(zip(pages, paths), start=1):
         heading = title if len(pages) == 1 else f"{title}, {k} of {len(pages)}"
-        save(_figure(rows, page, families, colour, style, heading), target, dpi=100)
+        save(_figure(rows, page, families, colour, style, heading), target, dpi=120)
     return paths
 
 
 def _figure(rows: Sequence[BenchRow], names: Sequence[str], families: Sequence[str],
             colour: dict, style: dict, title: str):
-    """One work-precision figure of the functions ``names``, the legend below
-    the panels (outside the data)."""
+    """One work-precision figure of the functions ``names``, one panel a row,
+    the legend (colours: methods; line styles: systems) below the panels."""
     from matplotlib.figure import Figure
+    from matplotlib.lines import Line2D
 
-    cols = 2 if len(names) > 1 else 1
-    nrows = max(1, -(-len(names) // cols))
-    legend_rows = -(-(len(families) + 2) // 3)
-    legend = 0.2 * legend_rows + 0.35          # inches below the panels
-    fig = Figure(figsize=(7 * cols, 3.6 * nrows + legend + 0.5))
-    axes = fig.subplots(nrows, cols, squeeze=False)
-    for ax in axes.ravel()[len(names):]:
-        ax.set_visible(False)
-    handles = {}
-    for ax, name in zip(axes.ravel(), names):
+    entries = len(colour) + len(style) + 2
+    legend = 0.22 * -(-entries // 2) + 0.3          # inches below the panels
+    fig = Figure(figsize=(WIDTH, 3.0 * len(names) + legend + 0.5))
+    axes = fig.subplots(len(names), 1, squeeze=False).ravel()
+    for ax, name in zip(axes, names):
         mine = [r for r in rows if r.function == name]
         for key in families:
             rs = [r for r in mine if r.kind in ALTERNATIVES and _family(r.method) == key]
             if rs:
                 method, system = key.split(" [")[0], key.split(" [")[-1]
-                handles[key], = ax.loglog([max(r.max_error_over_peak, 1e-17) for r in rs],
-                                          [r.seconds / r.points for r in rs], marker="o",
-                                          ms=3, lw=1, color=colour[method],
-                                          linestyle=style[system], label=key)
-        for kind, marker, label in ((GENERATED, "*", "generated closed form"),
-                                    (LAMBDIFY, "D", "sympy.lambdify")):
+                ax.loglog([max(r.max_error_over_peak, 1e-17) for r in rs],
+                          [r.seconds / r.points for r in rs], marker="o", ms=3, lw=1,
+                          color=colour[method], linestyle=style[system])
+        for kind, marker in ((GENERATED, "*"), (LAMBDIFY, "D")):
             for r in (r for r in mine if r.kind == kind):
-                handles[label], = ax.loglog(
-                    [max(r.max_error_over_peak, 1e-17)], [r.seconds / r.points],
-                    marker=marker, ms=12 if marker == "*" else 7, color="k",
-                    mfc="k" if marker == "*" else "none", linestyle="none", label=label)
-        ax.set_title(name, fontsize=9)
-        ax.set(xlabel="max error / peak |value|", ylabel="s per evaluation")
+                ax.loglog([max(r.max_error_over_peak, 1e-17)], [r.seconds / r.points],
+                          marker=marker, ms=12 if marker == "*" else 7, color="k",
+                          mfc="k" if marker == "*" else "none", linestyle="none")
+        ax.set_title(name, fontsize=TYPE + 1)
+        ax.set_xlabel("max error / peak |value|", fontsize=TYPE)
+        ax.set_ylabel("s per evaluation", fontsize=TYPE)
+        ax.tick_params(labelsize=TYPE)
         ax.grid(True, which="both", alpha=0.3)
-    fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=3, fontsize=7,
-               frameon=False)
-    fig.suptitle(title)
+    handles = [Line2D([], [], color=c, lw=1.5, label=m) for m, c in colour.items()]
+    handles += [Line2D([], [], color="0.3", lw=1, linestyle=ls, label=f"[{s}" if not
+                       s.startswith("[") else s) for s, ls in style.items()]
+    handles += [Line2D([], [], marker="*", ms=11, color="k", linestyle="none",
+                       label="generated closed form"),
+                Line2D([], [], marker="D", ms=6, color="k", mfc="none", linestyle="none",
+                       label="sympy.lambdify")]
+    fig.legend(handles=handles, loc="lower center", ncol=2, fontsize=TYPE, frameon=False)
+    fig.suptitle(title, fontsize=TYPE + 1)
     fig.tight_layout(rect=(0, legend / fig.get_figheight(), 1, 0.98))
     return fig
+
+
+def plot_scaling(scaled: Sequence[tuple], path: Path, title: str) -> list[Path]:
+    """Time of the best tuned integrator over the closed form's against the
+    number of points, one line per function (log-log; below 1 the integrator
+    wins); the legend to the right of the panel. [] when there is nothing."""
+    if not scaled:
+        return []
+    from matplotlib.figure import Figure
+
+    from .plots import save
+
+    names = list(dict.fromkeys(f for f, *_ in scaled))
+    fig = Figure(figsize=(WIDTH, 3.6))
+    ax = fig.subplots()
+    for name in names:
+        mine = [(n, i / g) for f, n, _, i, g in scaled if f == name]
+        ax.loglog(*zip(*mine), marker="o", ms=4, lw=1, label=name)
+    ax.axhline(1.0, color="k", lw=0.8, linestyle="--")
+    ax.set_xlabel("points", fontsize=TYPE)
+    ax.set_ylabel("integrator time / closed form", fontsize=TYPE)
+    ax.tick_params(labelsize=TYPE)
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(loc="center left", bbox_to_anchor=(1.02, 0.5), fontsize=TYPE, frameon=False)
+    ax.set_title(title, fontsize=TYPE + 1)
+    fig.tight_layout()
+    return [save(fig, path, dpi=120)]

@@ -16,7 +16,12 @@ import numpy as np
 from .reference import relative_errors
 
 METHODS = ("RK45", "DOP853", "LSODA", "Radau")
-RTOLS = (1e-3, 1e-6, 1e-9, 1e-12)
+#: Integrator tolerances: every half decade from 1e-6 to 1e-13 (atol scaled to each
+#: state's peak); ``QUICK_RTOLS`` for ``crane-sym bench --quick``; the quadratures
+#: of ``bench_duhamel`` take ``DUHAMEL_RTOLS``.
+RTOLS = tuple(float(f"{10 ** (-k / 2):.3g}") for k in range(12, 27))
+QUICK_RTOLS = (1e-6, 1e-9, 1e-12)
+DUHAMEL_RTOLS = (1e-6, 1e-9, 1e-12)
 #: Row kinds: the generated function, its baselines, and the alternatives.
 GENERATED, FLOOR, LAMBDIFY = "generated", "floor", "lambdify"
 INTEGRATOR, DUHAMEL, REFERENCE = "integrator", "duhamel", "reference"

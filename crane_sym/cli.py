@@ -10,6 +10,7 @@ from pathlib import Path
 from typing import Sequence
 
 from . import __version__, cli_sweep, progress, registry
+from .cli_bench import cmd_bench
 
 DESCRIPTION = """\
 Derive, audit and generate code for the dynamics of crane mechanisms.
@@ -113,17 +114,17 @@ def cmd_walkthrough(args: argparse.Namespace) -> int:
 
 def cmd_generate(args: argparse.Namespace) -> int:
     """Write generated/ (or one scene's module), or check that it is fresh."""
-    from . import codegen, specialize
+    from . import module_files, specialize
     from .generate import all_files
     with progress.reporting(_progress(args)):
         if args.scene:
             directory = Path(args.out or ".")
             files = specialize.scene_files(args.scene)
         else:
-            directory = Path(args.out) if args.out else codegen.default_directory()
+            directory = Path(args.out) if args.out else module_files.default_directory()
             files = all_files()
     if args.check:
-        found = codegen.compare(files, directory, strays=not args.scene)
+        found = module_files.compare(files, directory, strays=not args.scene)
         for name in found.missing:
             print(f"missing: {directory / name} is not there")
         for name in found.differs:
@@ -137,7 +138,7 @@ def cmd_generate(args: argparse.Namespace) -> int:
             return 1
         print(f"{directory} is up to date ({len(files)} files)")
         return 0
-    for path in codegen.write(files, directory):
+    for path in module_files.write(files, directory):
         print(f"wrote {path}")
     return 0
 
@@ -178,114 +179,6 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
         return 1
     print(f"PASS: all {checked} function/case pairs within target")
     return 0
-
-
-def _machine() -> str:
-    import platform
-
-    import numpy
-    import scipy
-    return (f"{platform.machine()} {platform.processor() or platform.system()}, "
-            f"Python {platform.python_version()}, NumPy {numpy.__version__}, "
-            f"SciPy {scipy.__version__}")
-
-
-def cmd_bench(args: argparse.Namespace) -> int:
-    """Speed against error of the generated functions and the SciPy alternatives."""
-    from . import bench, scenes
-    from .bench_report import as_markdown, headline, not_applicable, plot
-    out_dir = Path(args.out)
-    out_dir.mkdir(parents=True, exist_ok=True)
-    if args.sweep:
-        cli_sweep.run_bench(out_dir, args.format == "json")
-        if not args.ids:                   # `bench --sweep` alone: the sweep bench only
-            return 0
-    everything = []
-    for i in _ids(args.ids):
-        chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
-                  if s.derivation == i and not s.load_table and "duration" in s.options]
-        d = registry.get(i)
-        if not chosen or not d.outputs:
-            print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)
-            continue
-        values = bench.grid_values(d, chosen)
-        duration = max(s.options["duration"] for s in chosen)
-        start = time.perf_counter()
-        rows = bench.bench(d, values, duration, points=args.points,
-                           methods=args.methods or bench.METHODS,
-                           rtols=args.rtols or bench.RTOLS)
-        big = bench.throughput(d, values, duration, points=args.throughput_points)
-        everything += rows + big
-        sized = [line for s in chosen
-                 for line in bench.scene_comparison(
-                     d, s, points=min(args.throughput_points, 200_000))]
-        heads = headline(rows)
-        skipped = not_applicable(d, rows)
-        md = out_dir / f"bench_{i}.md"
-        lines = [f"# Bench: {i}", "",
-                 f"Scenes {', '.join(s.name for s in chosen)}; {args.points} seeded times on "
-                 f"[0, {duration:g}] s; time-free functions on {args.points} seeded parameter "
-                 "sets (each scene value times 2^U(-1, 1)). Absolute times are this machine's "
-                 f"({_machine()}); every ratio comes from this one run "
-                 f"({time.perf_counter() - start:.0f} s).", "",
-                 *[f"- {h}" for h in heads], "",
-                 "## Targets that do not apply", "",
-                 "| function | target | why |", "| --- | --- | --- |",
-                 *[f"| {f} | {what} | {why} |" for f, what, why in skipped], "",
-                 "## Scene modules against the general module", "",
-                 *[f"- {s}" for s in sized],
-                 "", f"## Throughput on {args.throughput_points} points against one np.cos",
-                 "", as_markdown(big), "", "## Every function and alternative", "",
-                 as_markdown(rows), ""]
-        md.write_text("\n".join(lines), encoding="utf-8")
-        pngs = plot(rows, out_dir / f"bench_{i}.png",
-                    f"{i}: time against error ({args.points} points, this machine)")
-        if args.format == "table":
-            print("\n".join(lines[:5 + len(heads)]))
-            print(f"wrote {md} and {', '.join(map(str, pngs))}")
-    for i in _ids(args.ids):
-        if registry.get(i).tabulated:
-            _bench_piecewise(i, out_dir, args.points, args.format == "table")
-    if args.sampled:
-        _bench_sampled(out_dir, args.format == "table")
-    if args.format == "json":
-        print(json.dumps(bench.as_dicts(everything), indent=2))
-    return 0
-
-
-def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
-    """Piecewise-linear runs in closed form against solve_ivp with events."""
-    from .bench_piecewise import scene_sections
-    start = time.perf_counter()
-    sections = scene_sections(i, points)
-    text = "\n".join([f"# Bench: {i}, piecewise-linear runs against solve_ivp", "",
-                      f"Absolute times are this machine's ({_machine()}); every ratio comes "
-                      f"from this one run ({time.perf_counter() - start:.0f} s).", "",
-                      *sections])
-    path = out_dir / f"bench_piecewise_{i}.md"
-    path.write_text(text, encoding="utf-8")
-    if show:
-        print(text)
-        print(f"wrote {path}")
-
-
-def _bench_sampled(out_dir: Path, show: bool) -> None:
-    """Sampled-load Duhamel responses against the closed forms (issue 5, item 5)."""
-    from .bench_sampled import accuracy_markdown, as_markdown, sampled_accuracy, \
-        sampled_comparison
-    start = time.perf_counter()
-    speed, accuracy = as_markdown(sampled_comparison()), accuracy_markdown(sampled_accuracy())
-    text = "\n".join([
-        "# Bench: loads sampled on a grid (crane_sym.sampled_load)", "",
-        f"N = 1e5 samples; exact references by mpmath (50 digits). Absolute times are this "
-        f"machine's ({_machine()}); ratios come from this one run "
-        f"({time.perf_counter() - start:.0f} s).", "", "## Speed against the closed form", "",
-        speed, "", "## Accuracy on loads with a closed form", "", accuracy, ""])
-    path = out_dir / "bench_sampled.md"
-    path.write_text(text, encoding="utf-8")
-    if show:
-        print(text)
-        print(f"wrote {path}")
 
 
 def cmd_run(args: argparse.Namespace) -> int:
@@ -361,12 +254,20 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--methods", nargs="+", choices=("RK45", "DOP853", "LSODA", "Radau", "BDF"),
                    help="solve_ivp methods (default: RK45 DOP853 LSODA Radau; odeint "
                    "always runs)")
+    p.add_argument("--quick", action="store_true",
+                   help="fewer tolerances (1e-6 1e-9 1e-12), arrays of 1e4 and 1e5 points, "
+                   "the integrator comparison at 100 and 2000 points")
+    p.add_argument("--sizes", nargs="+", type=int,
+                   help="array lengths for the targets against np.cos (default: 1e4 1e5 1e6 1e7)")
+    p.add_argument("--compare-points", nargs="+", type=int,
+                   help="numbers of points at which the closed form meets the best tuned "
+                   "integrator (default: 100 2000 100000)")
     p.add_argument("--sampled", action="store_true",
                    help="also bench loads sampled on a grid against the closed forms")
     p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
                    "per-design integration; alone, only that")
     p.add_argument("--rtols", nargs="+", type=float,
-                   help="integrator and quadrature tolerances (default: 1e-3 1e-6 1e-9 1e-12)")
+                   help="integrator tolerances (default: every half decade 1e-6 ... 1e-13)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
                     cmd_run)
     p.add_argument("scene", help="scene name or path to a scene TOML file")

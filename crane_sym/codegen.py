@@ -7,26 +7,25 @@ parameter-only parts once as scalars before the array work.
 """
 from __future__ import annotations
 
-import importlib.util
 import inspect
 import re
 import textwrap
-from dataclasses import dataclass
-from pathlib import Path
 from typing import Iterable, Sequence
 
 import sympy as sp
 from sympy.printing.numpy import NumPyPrinter
 
-from . import __version__, gear_kernels, kernels
+from . import __version__, cell_kernels, gear_kernels, kernels
+from .cells import pieces, statements
 from .derivation import Derivation, Output, TabulatedOutput
 from .entire import Z, plan
 from .inplace import chain
-from .phase_table import PhaseTable
 from .involute import ACOS_MESSAGES
+from .phase_table import PhaseTable
 from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
+from .scalar_path import fast_path
 from .symbols import TIME, SymbolTable
-from .tabulated import render_tabulated, same_text
+from .tabulated import render_tabulated
 
 
 class _Printer(NumPyPrinter):
@@ -155,8 +154,18 @@ class _DoubleDoublePrinter(_Printer):
         raise ValueError(f"no double-double form for {expr}")
 
 
-def _printer(helpers: dict[int, str] | None = None) -> _Printer:
-    return _Printer({"fully_qualified_modules": True, "inline": True,
+class _Ternary(_Printer):
+    """Prints a Piecewise as a conditional expression (a call on scalars)."""
+
+    def _print_Piecewise(self, expr: sp.Piecewise) -> str:
+        text = self._print(expr.args[-1].expr)
+        for branch, cond in reversed(expr.args[:-1]):
+            text = f"{self._print(branch)} if {self._print(cond)} else {text}"
+        return f"({text})"
+
+
+def _printer(helpers: dict[int, str] | None = None, kind: type = _Printer) -> _Printer:
+    return kind({"fully_qualified_modules": True, "inline": True,
                      "allow_unknown_functions": False,
                      "helpers": {} if helpers is None else helpers})
 
@@ -283,10 +292,12 @@ def render_function(out: Output, table: SymbolTable,
     if shape is None:
         expr = optimize(out.expr, rules)
         assignments, phases, body = hoist(expr, varying)
-        subs, reduced = sp.cse([e for _, e in assignments] + [body],
+        split = bool(varying) and pieces(body) is not None     # window by window
+        subs, reduced = sp.cse([e for _, e in assignments] + ([] if split else [body]),
                                symbols=sp.numbered_symbols("x"), order="canonical")
+        reduced = reduced + [body] if split else reduced
     else:  # a matrix: its elements share one CSE, no hoisting
-        assignments, phases = [], []
+        assignments, phases, split = [], [], False
         subs, reduced = sp.cse([optimize(e, rules) for e in out.expr],
                                symbols=sp.numbered_symbols("x"), order="canonical")
     entries = [table[a] for a in out.args]
@@ -312,6 +323,13 @@ def render_function(out: Output, table: SymbolTable,
                                         "shape of the arguments." if shape else
                                         "broadcast over the arguments."),
              '    """']
+    alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom} \
+        if shape is None else {}
+    if shape is None and not phases and not split:     # plain numbers: math, no arrays
+        named = list(subs) + [(k, v) for (k, _), v in zip(assignments, reduced[:-1])
+                              if k not in alias]
+        lines += ["    " + s for s in fast_path(entries, named, reduced[-1].xreplace(alias))
+                  or []]
     for e in entries:
         what = f"{e.description}, {e.unit}".replace('"', "'")
         lines.append(f"    {e.name:<{width}} = _checked({e.name!r}, {e.name}, "
@@ -320,8 +338,7 @@ def render_function(out: Output, table: SymbolTable,
                          width=80, break_long_words=False, break_on_hyphens=False)
     lines.append("    shape = _broadcast(" + call[0])
     lines += [" " * 23 + rest for rest in call[1:]]
-    # A scalar that CSE reduced to a bare name is inlined, not re-assigned.
-    alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom}
+    # A scalar that CSE reduced to a bare name is inlined, not re-assigned (alias).
     for sym, value in phases:
         lines.append(f"    {sym} = {_DoubleDoublePrinter().doprint(value)}")
     for sym, value in subs:
@@ -338,8 +355,14 @@ def render_function(out: Output, table: SymbolTable,
         for sym, value in subs:                  # array temporaries of the CSE
             if value.free_symbols & heavy:
                 heavy.add(sym)
-        steps = chain(final, heavy, printer.doprint)
-        if steps is None:                        # not a chain: NumPy as printed
+        taken = {e.name for e in entries} | {str(s) for s, _ in subs} | {
+            str(k) for k, _ in assignments}
+        cells = statements(final, printer.doprint, _printer(helpers, _Ternary).doprint,
+                           taken) if split else None
+        steps = None if split else chain(final, heavy, printer.doprint)
+        if cells is not None:                    # each window on its own points
+            lines += [f"    {s}" for s in cells]
+        elif steps is None:                      # not a chain: NumPy as printed
             lines.append(f"    return _into(out, shape, {printer.doprint(final)})")
         else:                                    # one buffer, one pass per node
             lines += ["    if out is None and not shape:",
@@ -356,6 +379,8 @@ def _kernel_source(functions: Sequence[str]) -> str:
     sources = [inspect.getsource(getattr(kernels, n)) for n in names]
     gear = kernels.closure(called & set(gear_kernels.DEPENDS), gear_kernels.DEPENDS)
     sources += [inspect.getsource(getattr(gear_kernels, n)) for n in gear]
+    cell = kernels.closure(called & set(cell_kernels.DEPENDS), cell_kernels.DEPENDS)
+    sources += [inspect.getsource(getattr(cell_kernels, n)) for n in cell]
     return "\n\n".join(sources)
 
 
@@ -387,85 +412,8 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     functions += ["\n" + render_tabulated(o, table, "Tabulated for this scene by "
                                            "crane_sym.phase_table.") for o, table in tables]
     helper_source = ["\n" + render_helper(key, name) for key, name in helpers.items()]
-    parts = [header, "import numpy as np\n", f"__all__ = [{names}]\n",
+    uses_math = any("math." in f for f in functions)
+    parts = [header, ("import math\n\n" if uses_math else "") + "import numpy as np\n",
+             f"__all__ = [{names}]\n",
              "\n" + _kernel_source(functions + helper_source), *helper_source, *functions]
     return "\n".join(parts)
-
-
-def render_package_init(ids: Sequence[str]) -> str:
-    """Source of ``generated/__init__.py``."""
-    listing = "\n".join(f"    {i}" for i in ids)
-    return ('"""Numeric modules generated by crane_sym. Do not edit; run\n'
-            f'`crane-sym generate`.\n\nModules:\n{listing}\n"""\n')
-
-
-def default_directory() -> Path:
-    """The folder of ``crane_sym.generated`` (``generated/`` in a clone), found
-    without importing what is in it, and found even when the folder is empty
-    or missing (it is what ``crane-sym generate`` writes)."""
-    spec = importlib.util.find_spec("crane_sym.generated")
-    if spec is not None and spec.submodule_search_locations:
-        return Path(list(spec.submodule_search_locations)[0])
-    # No package there yet: the layout of pyproject.toml's package-dir decides.
-    package = Path(__file__).resolve().parent
-    clone = package.parent
-    if (clone / "pyproject.toml").is_file() and (clone / "derivations").is_dir():
-        return clone / "generated"  # a clone, installed editable or not
-    return package / "generated"  # an installed wheel
-
-
-def rendered(derivations: Sequence[Derivation],
-             extra: dict[str, str] | None = None) -> dict[str, str]:
-    """File name -> source for every derivation with outputs, plus ``extra``
-    modules (scene-specialized ones), and the package's ``__init__``."""
-    files = {f"{d.id}.py": render_module(d) for d in derivations if d.outputs}
-    files.update(extra or {})
-    files["__init__.py"] = render_package_init([name[:-3] for name in files])
-    return files
-
-
-def write(files: dict[str, str], directory: Path) -> list[Path]:
-    """Write ``files`` into ``directory``; return the paths written."""
-    directory.mkdir(parents=True, exist_ok=True)
-    paths = []
-    for name, text in sorted(files.items()):
-        path = directory / name
-        path.write_bytes(text.encode("utf-8"))
-        paths.append(path)
-    return paths
-
-
-@dataclass(frozen=True)
-class Freshness:
-    """How a folder on disk compares with what would be written into it."""
-
-    missing: list[str]
-    differs: list[str]
-    stray: list[str]
-
-    @property
-    def ok(self) -> bool:
-        """True when nothing is missing, different or stray."""
-        return not (self.missing or self.differs or self.stray)
-
-
-def compare(files: dict[str, str], directory: Path, strays: bool = True) -> Freshness:
-    """Compare ``directory`` with ``files``: names missing on disk, names that
-    differ, and (if ``strays``) ``.py`` files on disk that would not be written."""
-    missing, differs = [], []
-    for name, text in sorted(files.items()):
-        path = directory / name
-        if not path.is_file():
-            missing.append(name)
-        elif (path.read_bytes() != text.encode("utf-8")
-              and not same_text(path.read_text(encoding="utf-8"), text)):
-            differs.append(name)                # tables: to CHECK_RTOL (tabulated)
-    extra = sorted(p.name for p in directory.glob("*.py") if p.name not in files) \
-        if strays and directory.is_dir() else []
-    return Freshness(missing, differs, extra)
-
-
-def stale(files: dict[str, str], directory: Path) -> list[str]:
-    """Names of files that are missing or differ from what would be written."""
-    found = compare(files, directory, strays=False)
-    return sorted(found.missing + found.differs)

@@ -198,15 +198,17 @@ def plan(key: int) -> Plan:
         sizes = [size(z) for z in _GRID]
         closed_loss = [float(_bound(printed, mpmath.mpf(z))[1] / (U * s))
                        for z, s in zip(_GRID, sizes)]
-        magnitude = [[abs(mpmath.mpf(c.numerator) / c.denominator) * mpmath.mpf(z) ** k
-                      for k, c in coeffs.items()] for z in _GRID]
-        series_loss = [float(2 * mpmath.fsum(m) / s) for m, s in zip(magnitude, sizes)]
-        best = None
+        # |c_k| z**k, grid point by grid point until the series stops converging
+        scale = [(k, abs(mpmath.mpf(c.numerator) / c.denominator)) for k, c in coeffs.items()]
+        best, series_worst = None, 0.0
         for i, cut in enumerate(_GRID):
-            n = _terms(list(coeffs), magnitude[i], power, sizes[i])
+            w = mpmath.mpf(cut)
+            magnitude = [a * w ** k for k, a in scale]
+            n = _terms(list(coeffs), magnitude, power, sizes[i])
             if n is None:
                 break
-            loss = max(max(series_loss[:i + 1]), max(closed_loss[i:]))
+            series_worst = max(series_worst, float(2 * mpmath.fsum(magnitude) / sizes[i]))
+            loss = max(series_worst, max(closed_loss[i:]))
             if best is None or loss < best[0]:
                 best = (loss, cut, n)
     loss, cut, n = best

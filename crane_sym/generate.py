@@ -2,7 +2,7 @@
 per shipped scene, and the package ``__init__``."""
 from __future__ import annotations
 
-from . import codegen, progress, registry, specialize
+from . import codegen, module_files, progress, registry, specialize
 from .scenes import list_scenes
 
 
@@ -20,4 +20,4 @@ def all_files() -> dict[str, str]:
     for name in list_scenes():
         with say.task(f"specializing scene {name}"):
             modules.update(specialize.scene_files(name))
-    return codegen.rendered([], modules)
+    return module_files.rendered([], modules)

@@ -108,6 +108,11 @@ def chain(expr: sp.Expr, heavy: set[sp.Symbol], print_: Callable[[sp.Basic], str
                 return None
             if exp == 2:
                 lines.append(f"np.square({src}, out={buf})")
+            elif exp in (3, 4):                    # products, not the pow function
+                tmp = work(depth)
+                lines.append(f"np.square({src}, out={tmp})")
+                lines.append(f"np.multiply({src}, {tmp}, out={buf})" if exp == 3
+                             else f"np.square({tmp}, out={buf})")
             elif exp == sp.S.Half:
                 lines.append(f"np.sqrt({src}, out={buf})")
             elif exp == -1:

@@ -249,6 +249,8 @@ def _exact_phase(k, t, c=0.0):
     relative: t - c by TwoSum, the product by TwoProduct. A phase at long
     times or just after a switch, where one rounding is a large error of a
     sine near its zeros."""
+    if np.ndim(c) == 0 and c == 0:   # t - 0 is exact: the product alone
+        return _two_product(k, t)
     s, e = _two_sum(t, -c)
     p, pe = _two_product(k, s)
     return _quick_two_sum(p, pe + k * e)
@@ -302,11 +304,14 @@ def _offset_wave(level, gap, b, c, x):
     r = np.hypot(b, c)
     theta, err = _two_sum(hi, -np.arctan2(c * sb, np.abs(b)))
     lo = err + lo
-    cos_theta = np.cos(theta) - np.sin(theta) * lo
-    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)
+    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)  # cos, sin of theta from these
+    cos_theta = (c2 - s2) * (c2 + s2) - 2.0 * s2 * c2 * lo
     s = np.where(level < 0, -1.0, 1.0)
     q = s * sb
-    half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
+    if np.ndim(q) == 0:                                 # one side for every point
+        half = c2 - s2 * (0.5 * lo) if q > 0 else s2 + c2 * (0.5 * lo)
+    else:
+        half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
     back = s * (gap / (np.abs(level) + r) + 2.0 * r * half * half)
     return np.where(q * cos_theta >= 0, level + sb * r * cos_theta, back)
 

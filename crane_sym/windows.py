@@ -84,6 +84,22 @@ def _windows(expr: sp.Expr, t: sp.Symbol) -> dict[sp.Heaviside, sp.Expr]:
     return out
 
 
+def _linear_parts(expanded: sp.Expr, marks: list[sp.Dummy]) -> dict | None:
+    """{monomial exponents: coefficient} of an expanded sum, at most one mark a
+    term (with the mark to the first power), else None."""
+    index = {m: i for i, m in enumerate(marks)}
+    collected: dict[tuple, list] = defaultdict(list)
+    for term in sp.Add.make_args(expanded):
+        rest, marked = term.as_independent(*marks, as_Add=False)
+        monomial = [0] * len(marks)
+        if marked != 1:
+            if marked not in index:
+                return None
+            monomial[index[marked]] = 1
+        collected[tuple(monomial)].append(rest)
+    return {m: sp.Add(*terms) for m, terms in collected.items()}
+
+
 def split_windows(expr: sp.Expr, t: sp.Symbol):
     """``expr = P + Σ_c [(1 − H_c)·D_c + H_c·A_c]``: returns (P, {c: (D_c, A_c)}),
     or None when ``expr`` is not linear in the windows."""
@@ -93,12 +109,10 @@ def split_windows(expr: sp.Expr, t: sp.Symbol):
     bars = {h: sp.Dummy(f"off{i}") for i, h in enumerate(sorted(windows, key=sp.default_sort_key))}
     ons = {h: sp.Dummy(f"on{i}") for i, h in enumerate(sorted(windows, key=sp.default_sort_key))}
     marked = expr.xreplace({1 - h: bars[h] for h in windows}).xreplace(ons)
-    poly = sp.Poly(sp.expand(marked), *bars.values(), *ons.values())
-    if poly.total_degree() > 1:
+    parts = _linear_parts(sp.expand(marked), [*bars.values(), *ons.values()])
+    if parts is None:
         return None
     n = len(windows)
-    parts = {m: c.as_expr() if hasattr(c, "as_expr") else c
-             for m, c in zip(poly.monoms(), poly.coeffs())}
     unit = lambda i: tuple(int(j == i) for j in range(2 * n))
     rest = sp.Add.make_args(parts.get((0,) * (2 * n), sp.Integer(0)))
     pieces = {}

@@ -24,6 +24,8 @@ Functions and argument order:
     generalized_forces(M0, F0, W) -> [SI]    eq (10), (12)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['branch_effective_mass', 'drive_chain_frequency_1', 'drive_chain_frequency_2', 'running_tight_force', 'running_slack_force', 'running_drum_shaft_deflection', 'drum_torque', 'traction_margin', 'least_mu_alpha', 'pulsating_force', 'state_derivative', 'state_jacobian', 'mass_matrix', 'damping_matrix', 'stiffness_matrix', 'generalized_forces']
@@ -119,6 +121,14 @@ def branch_effective_mass(q, L, *, out=None):
     ndarray
         [kg], broadcast over the arguments.
     """
+    if (out is None
+            and (type(q) in (float, int) or type(q) is np.float64)
+            and (type(L) in (float, int) or type(L) is np.float64)):
+        if (0 < q < 1e999 and 0 < L < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64((1/3)*L*q)
+            except (ArithmeticError, ValueError):
+                pass
     q = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
     L = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
     shape = _broadcast(q=q, L=L)
@@ -148,6 +158,21 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
     ndarray
         [rad/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(I1) in (float, int) or type(I1) is np.float64)
+            and (type(I2) in (float, int) or type(I2) is np.float64)
+            and (type(I3) in (float, int) or type(I3) is np.float64)
+            and (type(C1) in (float, int) or type(C1) is np.float64)
+            and (type(C2) in (float, int) or type(C2) is np.float64)):
+        if (0 < I1 < 1e999 and 0 < I2 < 1e999 and 0 < I3 < 1e999 and 0 < C1 < 1e999
+                and 0 < C2 < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = I1 + I2
+                x1 = C1*x0/I1
+                x2 = C2*(I2 + I3)/I3
+                return np.float64(1.4142135623730951*math.sqrt(C1)*math.sqrt(C2)*math.sqrt(I3 + x0)/(math.sqrt(I1)*math.sqrt(I3)*math.sqrt(x1 + x2 + math.sqrt(4*C1*C2 + (x1 - x2)**2))))
+            except (ArithmeticError, ValueError):
+                pass
     I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
     I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
@@ -183,6 +208,20 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
     ndarray
         [rad/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(I1) in (float, int) or type(I1) is np.float64)
+            and (type(I2) in (float, int) or type(I2) is np.float64)
+            and (type(I3) in (float, int) or type(I3) is np.float64)
+            and (type(C1) in (float, int) or type(C1) is np.float64)
+            and (type(C2) in (float, int) or type(C2) is np.float64)):
+        if (0 < I1 < 1e999 and 0 < I2 < 1e999 and 0 < I3 < 1e999 and 0 < C1 < 1e999
+                and 0 < C2 < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = C1*(I1 + I2)/I1
+                x1 = C2*(I2 + I3)/I3
+                return np.float64(0.7071067811865476*math.sqrt(x0 + x1 + math.sqrt(4*C1*C2 + (x0 - x1)**2))/math.sqrt(I2))
+            except (ArithmeticError, ValueError):
+                pass
     I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
     I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
     I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
@@ -219,6 +258,23 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(M0) in (float, int) or type(M0) is np.float64)
+            and (type(D) in (float, int) or type(D) is np.float64)
+            and (type(F0) in (float, int) or type(F0) is np.float64)
+            and (type(C_t) in (float, int) or type(C_t) is np.float64)
+            and (type(C_z) in (float, int) or type(C_z) is np.float64)
+            and (type(C_y) in (float, int) or type(C_y) is np.float64)):
+        if (0 < M0 < 1e999 and 0 < D < 1e999 and 0 < F0 < 1e999 and 0 < C_t < 1e999
+                and 0 < C_z < 1e999 and 0 < C_y < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = C_t*C_y
+                x1 = C_y*C_z
+                x2 = 4*C_t*C_z
+                x3 = D*F0
+                return np.float64((2*M0*x0 + M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2)))
+            except (ArithmeticError, ValueError):
+                pass
     M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
     D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
     F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
@@ -258,6 +314,23 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(M0) in (float, int) or type(M0) is np.float64)
+            and (type(D) in (float, int) or type(D) is np.float64)
+            and (type(F0) in (float, int) or type(F0) is np.float64)
+            and (type(C_t) in (float, int) or type(C_t) is np.float64)
+            and (type(C_z) in (float, int) or type(C_z) is np.float64)
+            and (type(C_y) in (float, int) or type(C_y) is np.float64)):
+        if (0 < M0 < 1e999 and 0 < D < 1e999 and 0 < F0 < 1e999 and 0 < C_t < 1e999
+                and 0 < C_z < 1e999 and 0 < C_y < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = C_t*C_y
+                x1 = C_y*C_z
+                x2 = 4*C_t*C_z
+                x3 = D*F0
+                return np.float64((-2*M0*x1 - M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2)))
+            except (ArithmeticError, ValueError):
+                pass
     M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
     D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
     F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
@@ -297,6 +370,20 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(M0) in (float, int) or type(M0) is np.float64)
+            and (type(D) in (float, int) or type(D) is np.float64)
+            and (type(F0) in (float, int) or type(F0) is np.float64)
+            and (type(C_t) in (float, int) or type(C_t) is np.float64)
+            and (type(C_z) in (float, int) or type(C_z) is np.float64)
+            and (type(C_y) in (float, int) or type(C_y) is np.float64)):
+        if (0 < M0 < 1e999 and 0 < D < 1e999 and 0 < F0 < 1e999 and 0 < C_t < 1e999
+                and 0 < C_z < 1e999 and 0 < C_y < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = D*F0
+                return np.float64(2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z)))
+            except (ArithmeticError, ValueError):
+                pass
     M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
     D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
     F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
@@ -327,6 +414,15 @@ def drum_torque(F1, F2, D, *, out=None):
     ndarray
         [N*m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(F1) in (float, int) or type(F1) is np.float64)
+            and (type(F2) in (float, int) or type(F2) is np.float64)
+            and (type(D) in (float, int) or type(D) is np.float64)):
+        if (0 < F1 < 1e999 and 0 < F2 < 1e999 and 0 < D < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64((1/2)*D*(F1 - F2))
+            except (ArithmeticError, ValueError):
+                pass
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
@@ -355,6 +451,16 @@ def traction_margin(F1, F2, mu, alpha, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(F1) in (float, int) or type(F1) is np.float64)
+            and (type(F2) in (float, int) or type(F2) is np.float64)
+            and (type(mu) in (float, int) or type(mu) is np.float64)
+            and (type(alpha) in (float, int) or type(alpha) is np.float64)):
+        if (0 < F1 < 1e999 and 0 < F2 < 1e999 and 0 < mu < 1e999 and 0 < alpha < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-5/4*F1/F2 + math.exp(alpha*mu))
+            except (ArithmeticError, ValueError):
+                pass
     F1    = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1')
@@ -380,6 +486,14 @@ def least_mu_alpha(F1, F2, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(F1) in (float, int) or type(F1) is np.float64)
+            and (type(F2) in (float, int) or type(F2) is np.float64)):
+        if (0 < F1 < 1e999 and 0 < F2 < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(math.log((5/4)*F1/F2))
+            except (ArithmeticError, ValueError):
+                pass
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
     F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
     shape = _broadcast(F1=F1, F2=F2)
@@ -419,6 +533,30 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(F1_t) in (float, int) or type(F1_t) is np.float64)
+            and (type(F2_t) in (float, int) or type(F2_t) is np.float64)
+            and (type(F3_t) in (float, int) or type(F3_t) is np.float64)
+            and (type(F4_t) in (float, int) or type(F4_t) is np.float64)
+            and (type(K1) in (float, int) or type(K1) is np.float64)
+            and (type(K2) in (float, int) or type(K2) is np.float64)
+            and (type(K3) in (float, int) or type(K3) is np.float64)
+            and (type(K4) in (float, int) or type(K4) is np.float64)
+            and (type(t_3) in (float, int) or type(t_3) is np.float64)):
+        if (0 <= t < 1e999 and 0 < F1_t < 1e999 and 0 < F2_t < 1e999 and 0 < F3_t < 1e999
+                and 0 < F4_t < 1e999 and 0 < K1 < 1e999 and 0 < K2 < 1e999 and 0 < K3 < 1e999
+                and 0 < K4 < 1e999 and 0 < t_3 < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = 3.141592653589793/t_3
+                k1 = -K2
+                k3 = -K4
+                k5 = (1/4)*F1_t
+                k7 = (1/4)*F3_t
+                k8 = (1/4)*K1 + (1/4)*K3
+                return np.float64(k5*math.sin(t*x0) + k7*math.sin(t*x0) + k8 - 1/4*abs(F2_t*math.sin(t*x0) + k1) - 1/4*abs(F4_t*math.sin(t*x0) + k3))
+            except (ArithmeticError, ValueError):
+                pass
     t    = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     F1_t = _checked('F1_t', F1_t, 'positive', 'amplitude F_1(t) of the pulsating load (21), N')
     F2_t = _checked('F2_t', F2_t, 'positive', 'amplitude F_2(t) of the pulsating load (21), N')

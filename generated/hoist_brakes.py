@@ -22,6 +22,8 @@ Functions and argument order:
     rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB) -> [s]    eq (1)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['relative_gearbox_torque_hoisting', 'relative_gearbox_torque_lowering', 'peak_relative_gearbox_torque_hoisting', 'peak_relative_gearbox_torque_lowering', 'service_brake_factor_hoisting', 'service_brake_factor_lowering', 'safety_brake_factor', 'elastic_gearbox_torque_no_backlash', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'rigid_hook_speed_hoisting', 'rigid_stopping_time_hoisting', 'rigid_hook_speed_lowering', 'rigid_stopping_time_lowering']
@@ -93,6 +95,53 @@ def _into(out, shape, result):
     return out
 
 
+def _selector(mask):
+    """The flat positions where ``mask`` (1-D bool) holds: None if none, a
+    slice if they are contiguous, else an index array."""
+    n = int(np.count_nonzero(mask))
+    if n == 0:
+        return None
+    first = int(np.argmax(mask))
+    if n == mask.size or mask[first:first + n].all():
+        return slice(first, first + n)
+    return np.flatnonzero(mask)
+
+
+def _cells(shape, choices):
+    """Selectors over the flattened broadcast ``shape``, one per combination of
+    branches: ``choices`` lists, per piecewise, its conditions in order (the
+    last branch, the rest, left out); a point takes the first branch whose
+    condition holds. Combinations in row-major order (the first piecewise
+    varies slowest)."""
+    size = int(np.prod(shape, dtype=np.int64))
+    cells = [np.ones(size, dtype=bool)]
+    for conditions in choices:
+        rest = np.ones(size, dtype=bool)
+        branches = []
+        for condition in conditions:
+            mask = np.broadcast_to(condition, shape).reshape(-1) & rest
+            rest &= ~mask
+            branches.append(mask)
+        branches.append(rest)
+        cells = [cell & branch for cell in cells for branch in branches]
+    return [_selector(cell) for cell in cells]
+
+
+def _at(where, shape, *values):
+    """``values`` on the points ``where`` (a selector of ``_cells``): arrays
+    broadcast to ``shape``, flattened and selected; scalars as they are."""
+    return tuple(v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1)[where]
+                 for v in values)
+
+
+def _put(out, where, value):
+    """Write ``value`` into ``out`` at the flat positions ``where``."""
+    if out.flags.c_contiguous:
+        out.reshape(-1)[where] = value
+    else:
+        out.flat[where] = value
+
+
 def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     """Rigid drive, hoisting: gearbox-input torque over the rated static torque after the safety brakes act (motor torque lost). Eq (2), (4).
 
@@ -112,6 +161,15 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(MF) in (float, int) or type(MF) is np.float64)
+            and (type(LF) in (float, int) or type(LF) is np.float64)
+            and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
+        if (0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(MF*(BF_SB + LF))
+            except (ArithmeticError, ValueError):
+                pass
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
@@ -138,6 +196,15 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(MF) in (float, int) or type(MF) is np.float64)
+            and (type(LF) in (float, int) or type(LF) is np.float64)
+            and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
+        if (0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-MF*(BF_SB - LF))
+            except (ArithmeticError, ValueError):
+                pass
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
     BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
@@ -166,6 +233,17 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(phi5) in (float, int) or type(phi5) is np.float64)
+            and (type(MF) in (float, int) or type(MF) is np.float64)
+            and (type(LF) in (float, int) or type(LF) is np.float64)
+            and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
+        if (0 < phi5 < 1e999 and 0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = LF*phi5
+                return np.float64(BF_SB*MF*phi5 + LF + MF*x0 - x0)
+            except (ArithmeticError, ValueError):
+                pass
     phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
@@ -196,6 +274,16 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(phi5) in (float, int) or type(phi5) is np.float64)
+            and (type(MF) in (float, int) or type(MF) is np.float64)
+            and (type(LF) in (float, int) or type(LF) is np.float64)
+            and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
+        if (0 < phi5 < 1e999 and 0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF)
+            except (ArithmeticError, ValueError):
+                pass
     phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
@@ -239,6 +327,26 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(m_r) in (float, int) or type(m_r) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(omega1) in (float, int) or type(omega1) is np.float64)
+            and (type(d_t) in (float, int) or type(d_t) is np.float64)):
+        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
+                and 0 < m_r < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
+                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < d_t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = d_t*g*r
+                return np.float64(-(-J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r)))
+            except (ArithmeticError, ValueError):
+                pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
     J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
@@ -291,6 +399,26 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(m_r) in (float, int) or type(m_r) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(omega1) in (float, int) or type(omega1) is np.float64)
+            and (type(d_t) in (float, int) or type(d_t) is np.float64)):
+        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
+                and 0 < m_r < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
+                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < d_t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = d_t*g*r
+                return np.float64((J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r)))
+            except (ArithmeticError, ValueError):
+                pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
     J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
@@ -343,6 +471,26 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, o
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(m_r) in (float, int) or type(m_r) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(omega1) in (float, int) or type(omega1) is np.float64)
+            and (type(d_t) in (float, int) or type(d_t) is np.float64)):
+        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
+                and 0 < m_r < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
+                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < d_t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = r**2
+                return np.float64(omega1*(J2*i_t**2 + m_h*x0 + m_p*x0)/(d_t*g*i_g*i_t*r*(m_h + m_r)))
+            except (ArithmeticError, ValueError):
+                pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
     J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
@@ -440,7 +588,17 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     k7 = -2*x14*x17*(1 - x12)
     k8 = m_h*x17 + m_p*x17
     k9 = i_t*x15/(g*r)
-    return _into(out, shape, np.select([np.less(t, t_SB),True], [k2*(k1*np.sin(t*x11)**2 + 1),k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (k2*(k1*np.sin(t*x11)**2 + 1) if np.less(t, t_SB) else k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, t_SB)]])
+    if cells[0] is not None:
+        k1_, k2_, t_, x11_ = _at(cells[0], shape, k1, k2, t, x11)
+        _put(out, cells[0], k2_*(k1_*np.sin(t_*x11_)**2 + 1))
+    if cells[1] is not None:
+        k3_, k4_, k5_, k7_, k8_, k9_, t_, x11_ = _at(cells[1], shape, k3, k4, k5, k7, k8, k9, t, x11)
+        _put(out, cells[1], k9_*(k5_*np.sin(k4_*(k3_ + t_))**2 + k7_*np.sin(t_*x11_)**2 + k8_))
+    return out
 
 
 def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
@@ -472,6 +630,22 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
     ndarray
         [rad/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)):
+        if (0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999 and 0 <= m_p < 1e999
+                and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999 and 0 < c < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = r**2/i_t**2
+                return np.float64(math.sqrt(c)*math.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/J1))
+            except (ArithmeticError, ValueError):
+                pass
     J1  = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
     J2  = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
     m_h = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
@@ -502,6 +676,14 @@ def backlash_at_motor_shaft(delta, i_g, *, out=None):
     ndarray
         [rad], broadcast over the arguments.
     """
+    if (out is None
+            and (type(delta) in (float, int) or type(delta) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)):
+        if (0 <= delta < 1e999 and 0 < i_g < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(delta*i_g)
+            except (ArithmeticError, ValueError):
+                pass
     delta = _checked('delta', delta, 'nonnegative', 'backlash of the drum coupling (at the drum), rad')
     i_g   = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
     shape = _broadcast(delta=delta, i_g=i_g)
@@ -549,6 +731,50 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(omega1) in (float, int) or type(omega1) is np.float64)
+            and (type(M_SB) in (float, int) or type(M_SB) is np.float64)
+            and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
+            and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
+            and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
+        if (0 <= t < 1e999 and 0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999
+                and 0 < m_h < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
+                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
+                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = i_t**2
+                x1 = r**2
+                x2 = i_g**2*x0
+                x3 = 1/(J1*x2 + J2*x0 + m_h*x1 + m_p*x1)
+                x4 = i_g*x3
+                x5 = g*i_t*r*x4
+                x6 = m_p*x5
+                x7 = -x6
+                x8 = m_h*x5
+                x9 = -x8
+                x10 = -t_SB
+                x11 = M_SB*x0*x4
+                x12 = -x11
+                x13 = -t_BB
+                x14 = M_BB*x2*x3
+                x15 = (t <= t_SB)
+                x16 = (t <= t_BB)
+                x17 = -omega1 + t*x6 + t*x8
+                x18 = x11*(t + x10) + x17
+                k7 = -x14
+                k12 = r/(i_g*i_t)
+                return np.float64(((k12*((omega1 + t*x7 + t*x9) if x15 else (omega1 + t*x7 + t*x9 + x12*(t + x10)) if x16 else (k7*(t + x13) + omega1 + t*x7 + t*x9 + x12*(t + x10)))) if (((x17 < 0)) if x15 else ((((x18 < 0)) if x16 else ((x14*(t + x13) + x18 < 0))))) else (0)))
+            except (ArithmeticError, ValueError):
+                pass
     t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
@@ -628,6 +854,39 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     ndarray
         [s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(omega1) in (float, int) or type(omega1) is np.float64)
+            and (type(M_SB) in (float, int) or type(M_SB) is np.float64)
+            and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
+            and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
+            and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
+        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
+                and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999 and 0 < g < 1e999
+                and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
+                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = m_h + m_p
+                x1 = i_g**(-2)
+                x2 = r**2*x1/i_t**2
+                x3 = J1 + J2*x1 + m_h*x2 + m_p*x2
+                x4 = i_g*x3
+                x5 = g*r*x0/i_t
+                x6 = 1/i_g
+                x7 = x6/x3
+                x8 = -omega1 + t_SB*x5*x7
+                x9 = M_SB + x5
+                x10 = x7*x9*(t_BB - t_SB) + x8
+                return np.float64(((i_t*omega1*x4/(g*r*x0)) if (x8 >= 0) else (t_SB - x4*x8/x9) if (x10 >= 0) else (t_BB - x10*x3/(M_BB + M_SB*x6 + x5*x6))))
+            except (ArithmeticError, ValueError):
+                pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
     J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
@@ -698,6 +957,47 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(omega1) in (float, int) or type(omega1) is np.float64)
+            and (type(M_SB) in (float, int) or type(M_SB) is np.float64)
+            and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
+            and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
+            and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
+        if (0 <= t < 1e999 and 0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999
+                and 0 < m_h < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
+                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
+                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = i_t**2
+                x1 = r**2
+                x2 = i_g**2*x0
+                x3 = 1/(J1*x2 + J2*x0 + m_h*x1 + m_p*x1)
+                x4 = i_g*x3
+                x5 = g*i_t*r*x4
+                x6 = m_p*x5
+                x7 = m_h*x5
+                x8 = -t_SB
+                x9 = M_SB*x0*x4
+                x10 = -x9
+                x11 = -t_BB
+                x12 = M_BB*x2*x3
+                x13 = (t <= t_SB)
+                x14 = (t <= t_BB)
+                x15 = omega1 + t*x6 + t*x7 - x9*(t + x8)
+                k7 = -x12
+                k12 = r/(i_g*i_t)
+                return np.float64(((k12*((omega1 + t*x6 + t*x7) if x13 else (omega1 + t*x6 + t*x7 + x10*(t + x8)) if x14 else (k7*(t + x11) + omega1 + t*x6 + t*x7 + x10*(t + x8)))) if ((True) if x13 else ((((x15 > 0)) if x14 else ((x12*(t + x11) - x15 < 0))))) else (0)))
+            except (ArithmeticError, ValueError):
+                pass
     t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
@@ -774,6 +1074,37 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     ndarray
         [s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m_p) in (float, int) or type(m_p) is np.float64)
+            and (type(J1) in (float, int) or type(J1) is np.float64)
+            and (type(J2) in (float, int) or type(J2) is np.float64)
+            and (type(m_h) in (float, int) or type(m_h) is np.float64)
+            and (type(r) in (float, int) or type(r) is np.float64)
+            and (type(i_g) in (float, int) or type(i_g) is np.float64)
+            and (type(i_t) in (float, int) or type(i_t) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(omega1) in (float, int) or type(omega1) is np.float64)
+            and (type(M_SB) in (float, int) or type(M_SB) is np.float64)
+            and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
+            and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
+            and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
+        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
+                and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999 and 0 < g < 1e999
+                and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
+                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = g*r*(m_h + m_p)/i_t
+                x1 = M_SB - x0
+                x2 = i_g**(-2)
+                x3 = r**2*x2/i_t**2
+                x4 = J1 + J2*x2 + m_h*x3 + m_p*x3
+                x5 = 1/i_g
+                x6 = x5/x4
+                x7 = omega1 + t_SB*x0*x6
+                x8 = -x1*x6*(t_BB - t_SB) + x7
+                return np.float64(((i_g*x4*x7/x1 + t_SB) if (x8 <= 0) else (t_BB + x4*x8/(M_BB + M_SB*x5 - x0*x5))))
+            except (ArithmeticError, ValueError):
+                pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
     J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')

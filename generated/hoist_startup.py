@@ -33,6 +33,8 @@ Functions and argument order:
     optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0) -> [1]    eq (64), (65), (66)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['natural_frequency', 'pickup_contact_time', 'dynamic_coefficient_instant', 'dynamic_coefficient_ramp', 'dynamic_coefficient_pulse', 'pulse_peak_factor', 'pulse_peak_time', 'dynamic_coefficient_ramp_hold', 'ramp_hold_peak_factor', 'dynamic_coefficient_pickup_a1', 'dynamic_coefficient_pickup_a2', 'dynamic_coefficient_pickup_a3', 'dynamic_coefficient_pickup_a4', 'dynamic_coefficient_from_weight_a1', 'dynamic_coefficient_from_weight_a2', 'dynamic_coefficient_from_weight_a3', 'dynamic_coefficient_from_weight_a4', 'optimal_coefficient_from_weight_a1', 'optimal_coefficient_pickup_a1', 'optimal_coefficient_from_weight_a2', 'optimal_coefficient_pickup_a2', 'optimal_coefficient_from_weight_a3', 'optimal_coefficient_pickup_a3', 'optimal_coefficient_from_weight_a4', 'optimal_coefficient_pickup_a4']
@@ -195,6 +197,8 @@ def _exact_phase(k, t, c=0.0):
     relative: t - c by TwoSum, the product by TwoProduct. A phase at long
     times or just after a switch, where one rounding is a large error of a
     sine near its zeros."""
+    if np.ndim(c) == 0 and c == 0:   # t - 0 is exact: the product alone
+        return _two_product(k, t)
     s, e = _two_sum(t, -c)
     p, pe = _two_product(k, s)
     return _quick_two_sum(p, pe + k * e)
@@ -241,13 +245,63 @@ def _offset_wave(level, gap, b, c, x):
     r = np.hypot(b, c)
     theta, err = _two_sum(hi, -np.arctan2(c * sb, np.abs(b)))
     lo = err + lo
-    cos_theta = np.cos(theta) - np.sin(theta) * lo
-    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)
+    s2, c2 = np.sin(0.5 * theta), np.cos(0.5 * theta)  # cos, sin of theta from these
+    cos_theta = (c2 - s2) * (c2 + s2) - 2.0 * s2 * c2 * lo
     s = np.where(level < 0, -1.0, 1.0)
     q = s * sb
-    half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
+    if np.ndim(q) == 0:                                 # one side for every point
+        half = c2 - s2 * (0.5 * lo) if q > 0 else s2 + c2 * (0.5 * lo)
+    else:
+        half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
     back = s * (gap / (np.abs(level) + r) + 2.0 * r * half * half)
     return np.where(q * cos_theta >= 0, level + sb * r * cos_theta, back)
+
+
+def _selector(mask):
+    """The flat positions where ``mask`` (1-D bool) holds: None if none, a
+    slice if they are contiguous, else an index array."""
+    n = int(np.count_nonzero(mask))
+    if n == 0:
+        return None
+    first = int(np.argmax(mask))
+    if n == mask.size or mask[first:first + n].all():
+        return slice(first, first + n)
+    return np.flatnonzero(mask)
+
+
+def _cells(shape, choices):
+    """Selectors over the flattened broadcast ``shape``, one per combination of
+    branches: ``choices`` lists, per piecewise, its conditions in order (the
+    last branch, the rest, left out); a point takes the first branch whose
+    condition holds. Combinations in row-major order (the first piecewise
+    varies slowest)."""
+    size = int(np.prod(shape, dtype=np.int64))
+    cells = [np.ones(size, dtype=bool)]
+    for conditions in choices:
+        rest = np.ones(size, dtype=bool)
+        branches = []
+        for condition in conditions:
+            mask = np.broadcast_to(condition, shape).reshape(-1) & rest
+            rest &= ~mask
+            branches.append(mask)
+        branches.append(rest)
+        cells = [cell & branch for cell in cells for branch in branches]
+    return [_selector(cell) for cell in cells]
+
+
+def _at(where, shape, *values):
+    """``values`` on the points ``where`` (a selector of ``_cells``): arrays
+    broadcast to ``shape``, flattened and selected; scalars as they are."""
+    return tuple(v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1)[where]
+                 for v in values)
+
+
+def _put(out, where, value):
+    """Write ``value`` into ``out`` at the flat positions ``where``."""
+    if out.flags.c_contiguous:
+        out.reshape(-1)[where] = value
+    else:
+        out.flat[where] = value
 
 
 def _entire_1(z):
@@ -505,6 +559,15 @@ def natural_frequency(m1, m2, C, *, out=None):
     ndarray
         [rad/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(C) in (float, int) or type(C) is np.float64)):
+        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < C < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(math.sqrt(C)*math.sqrt(m1 + m2)/(math.sqrt(m1)*math.sqrt(m2)))
+            except (ArithmeticError, ValueError):
+                pass
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
     m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
@@ -533,6 +596,16 @@ def pickup_contact_time(m2, g, C, v0, *, out=None):
     ndarray
         [s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(g) in (float, int) or type(g) is np.float64)
+            and (type(C) in (float, int) or type(C) is np.float64)
+            and (type(v0) in (float, int) or type(v0) is np.float64)):
+        if (0 < m2 < 1e999 and 0 < g < 1e999 and 0 < C < 1e999 and 0 < v0 < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(g*m2/(C*v0))
+            except (ArithmeticError, ValueError):
+                pass
     m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
     g  = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
@@ -558,6 +631,15 @@ def dynamic_coefficient_instant(t, Omega, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(Omega) in (float, int) or type(Omega) is np.float64)):
+        if (0 <= t < 1e999 and 0 < Omega < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                k0 = (1/2)*Omega
+                return np.float64(2*math.sin(k0*t)**2)
+            except (ArithmeticError, ValueError):
+                pass
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     shape = _broadcast(t=t, Omega=Omega)
@@ -625,7 +707,17 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     x0 = Omega*theta
     k0 = 2*np.sin((1/2)*x0)**2
     k1 = np.sin(x0)
-    return _into(out, shape, np.select([np.less_equal(t, theta),True], [2*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k0, k1, _exact_phase(Omega, t, theta))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (2*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, theta) else _wave(k0, k1, _exact_phase(Omega, t, theta)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, theta)]])
+    if cells[0] is not None:
+        Omega_, t_ = _at(cells[0], shape, Omega, t)
+        _put(out, cells[0], 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k0_, k1_, t_, theta_ = _at(cells[1], shape, Omega, k0, k1, t, theta)
+        _put(out, cells[1], _wave(k0_, k1_, _exact_phase(Omega_, t_, theta_)))
+    return out
 
 
 def pulse_peak_factor(Omega, theta, *, out=None):
@@ -645,6 +737,14 @@ def pulse_peak_factor(Omega, theta, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(Omega) in (float, int) or type(Omega) is np.float64)
+            and (type(theta) in (float, int) or type(theta) is np.float64)):
+        if (0 < Omega < 1e999 and 0 < theta < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(((2*math.sin((1/2)*Omega*theta)) if (theta < 3.141592653589793/Omega) else (2)))
+            except (ArithmeticError, ValueError):
+                pass
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
     shape = _broadcast(Omega=Omega, theta=theta)
@@ -668,6 +768,16 @@ def pulse_peak_time(Omega, theta, *, out=None):
     ndarray
         [s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(Omega) in (float, int) or type(Omega) is np.float64)
+            and (type(theta) in (float, int) or type(theta) is np.float64)):
+        if (0 < Omega < 1e999 and 0 < theta < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = 1/Omega
+                x1 = 3.141592653589793*x0
+                return np.float64((((1/2)*theta + 1.5707963267948966*x0) if (theta < x1) else (x1)))
+            except (ArithmeticError, ValueError):
+                pass
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
     shape = _broadcast(Omega=Omega, theta=theta)
@@ -704,7 +814,17 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     k1 = _entire_1(x0)
     k2 = _entire_2(x0)
     k3 = _entire_3(x0)
-    return _into(out, shape, np.select([np.less_equal(t, theta),True], [k0*_entire_4(_exact_phase(Omega, t)),_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, theta) else _offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, theta)]])
+    if cells[0] is not None:
+        Omega_, k0_, t_ = _at(cells[0], shape, Omega, k0, t)
+        _put(out, cells[0], k0_*_entire_4(_exact_phase(Omega_, t_)))
+    if cells[1] is not None:
+        Omega_, k1_, k2_, k3_, t_, theta_ = _at(cells[1], shape, Omega, k1, k2, k3, t, theta)
+        _put(out, cells[1], _offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, theta_)))
+    return out
 
 
 def ramp_hold_peak_factor(Omega, theta, *, out=None):
@@ -724,6 +844,14 @@ def ramp_hold_peak_factor(Omega, theta, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(Omega) in (float, int) or type(Omega) is np.float64)
+            and (type(theta) in (float, int) or type(theta) is np.float64)):
+        if (0 < Omega < 1e999 and 0 < theta < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1 + 2*abs(math.sin((1/2)*Omega*theta))/(Omega*theta))
+            except (ArithmeticError, ValueError):
+                pass
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
     shape = _broadcast(Omega=Omega, theta=theta)
@@ -777,8 +905,6 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x6 = Omega*t_n
     x7 = m1*x0*x2
     x8 = Omega*tau_0
-    x9 = _exact_phase(Omega, t)
-    x10 = _sin_pair(x9, 0.5)**2
     k0 = x1*x3
     k2 = x5*np.sin((1/2)*x6)**2
     k3 = x2*x4*np.sin(x6)
@@ -786,7 +912,27 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k5 = _entire_1(x8)
     k6 = _entire_2(x8)
     k7 = _entire_3(x8)
-    return _into(out, shape, k0*x10 + np.select([np.less_equal(t, tau_0),True], [k4*_entire_4(x9),x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x10*x5,_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k0*_sin_pair(_exact_phase(Omega, t), 0.5)**2 + (k4*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))) + (x5*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k4_, t_, x5_ = _at(cells[0], shape, Omega, k0, k4, t, x5)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = _sin_pair(w0, 0.5)**2
+        _put(out, cells[0], k0_*w1 + k4_*_entire_4(w0) + w1*x5_)
+    if cells[1] is not None:
+        Omega_, k0_, k2_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k2, k3, k4, t, t_n)
+        w0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_sin_pair(w0, 0.5)**2 + k4_*_entire_4(w0) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k0_, k5_, k6_, k7_, t_, tau_0_, x5_, x7_ = _at(cells[2], shape, Omega, k0, k5, k6, k7, t, tau_0, x5, x7)
+        w0 = _sin_pair(_exact_phase(Omega_, t_), 0.5)**2
+        _put(out, cells[2], k0_*w0 + w0*x5_ + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_)))
+    if cells[3] is not None:
+        Omega_, k0_, k2_, k3_, k5_, k6_, k7_, t_, t_n_, tau_0_, x7_ = _at(cells[3], shape, Omega, k0, k2, k3, k5, k6, k7, t, t_n, tau_0, x7)
+        _put(out, cells[3], k0_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -834,7 +980,6 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x4 = Omega*t_n
     x5 = m1*x0*x2
     x6 = Omega*tau_0
-    x7 = _exact_phase(Omega, t)
     k0 = 2*x1*x2
     k1 = 1/(t_n)
     k3 = x3*_entire_5(x4)
@@ -843,7 +988,26 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k6 = _entire_1(x6)
     k7 = _entire_2(x6)
     k8 = _entire_3(x6)
-    return _into(out, shape, k0*_sin_pair(x7, 0.5)**2 + np.select([np.less_equal(t, tau_0),True], [k5*_entire_4(x7),x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [x3*(k1*(-t + t_n)*_entire_7(x7) + _entire_5(x7)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k0*_sin_pair(_exact_phase(Omega, t), 0.5)**2 + (k5*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))) + (x3*(k1*(-t + t_n)*_entire_7(_exact_phase(Omega, t)) + _entire_5(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k3, k4, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k1_, k5_, t_, t_n_, x3_ = _at(cells[0], shape, Omega, k0, k1, k5, t, t_n, x3)
+        w0 = _exact_phase(Omega_, t_)
+        _put(out, cells[0], k0_*_sin_pair(w0, 0.5)**2 + k5_*_entire_4(w0) + x3_*(k1_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)))
+    if cells[1] is not None:
+        Omega_, k0_, k3_, k4_, k5_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k3, k4, k5, t, t_n)
+        w0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_sin_pair(w0, 0.5)**2 + k5_*_entire_4(w0) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k0_, k1_, k6_, k7_, k8_, t_, t_n_, tau_0_, x3_, x5_ = _at(cells[2], shape, Omega, k0, k1, k6, k7, k8, t, t_n, tau_0, x3, x5)
+        w0 = _exact_phase(Omega_, t_)
+        _put(out, cells[2], k0_*_sin_pair(w0, 0.5)**2 + x3_*(k1_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)) + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_)))
+    if cells[3] is not None:
+        Omega_, k0_, k3_, k4_, k6_, k7_, k8_, t_, t_n_, tau_0_, x5_ = _at(cells[3], shape, Omega, k0, k3, k4, k6, k7, k8, t, t_n, tau_0, x5)
+        _put(out, cells[3], k0_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -892,8 +1056,6 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x5 = v0*x1*(m1 + m2)/g
     x6 = Omega*t_n
     x7 = x4*x5
-    x8 = _exact_phase(Omega, t)
-    x9 = -t + t_n
     k0 = x0*x2/tau_0
     k1 = _entire_1(x3)
     k2 = _entire_2(x3)
@@ -901,7 +1063,28 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k7 = 48*x0*x5/t_n**2
     k8 = -24*x7*_entire_8(x6)
     k9 = -72*x7*_entire_9(x6)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x8),x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k7*(x4*x9*(x4*x9*_entire_10(x8) + _entire_11(x8)) + _entire_12(x8)),_wave(k8, k9, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x8, 0.5)**2)
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k7*(x4*(-t + t_n)*(x4*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k8, k9, _exact_phase(Omega, t, t_n))) + 2*_sin_pair(_exact_phase(Omega, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k7_, t_, t_n_, x4_ = _at(cells[0], shape, Omega, k0, k7, t, t_n, x4)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = x4_*(-t_ + t_n_)
+        _put(out, cells[0], k0_*_entire_4(w0) + k7_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + 2*_sin_pair(w0, 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k0_, k8_, k9_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k8, k9, t, t_n)
+        w0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_entire_4(w0) + 2*_sin_pair(w0, 0.5)**2 + _wave(k8_, k9_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k1_, k2_, k3_, k7_, t_, t_n_, tau_0_, x2_, x4_ = _at(cells[2], shape, Omega, k1, k2, k3, k7, t, t_n, tau_0, x2, x4)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = x4_*(-t_ + t_n_)
+        _put(out, cells[2], k7_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(w0, 0.5)**2)
+    if cells[3] is not None:
+        Omega_, k1_, k2_, k3_, k8_, k9_, t_, t_n_, tau_0_, x2_ = _at(cells[3], shape, Omega, k1, k2, k3, k8, k9, t, t_n, tau_0, x2)
+        _put(out, cells[3], x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + _wave(k8_, k9_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=None):
@@ -949,8 +1132,6 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     x4 = v0*x0*(m1 + m2)/g
     x5 = Omega*t_n
     x6 = x3*x4
-    x7 = _exact_phase(Omega, t)
-    x8 = -t + t_n
     k0 = x1/(Omega*tau_0)
     k1 = _entire_1(x2)
     k2 = _entire_2(x2)
@@ -958,7 +1139,28 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k8 = -120*x4/(Omega**2*t_n**3)
     k9 = -2880*x6*_entire_13(x5)
     k10 = -7200*x6*_entire_14(x5)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k0*_entire_4(x7),x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))], default=np.nan) + np.select([np.less_equal(t, t_n),True], [k8*(x3*x8*(x3*x8*(x3*x8*_entire_15(x7) + _entire_16(x7)) + _entire_17(x7)) + _entire_18(x7)),_wave(k9, k10, _exact_phase(Omega, t, t_n))], default=np.nan) + 2*_sin_pair(x7, 0.5)**2)
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k8*(x3*(-t + t_n)*(x3*(-t + t_n)*(x3*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k9, k10, _exact_phase(Omega, t, t_n))) + 2*_sin_pair(_exact_phase(Omega, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k8_, t_, t_n_, x3_ = _at(cells[0], shape, Omega, k0, k8, t, t_n, x3)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = x3_*(-t_ + t_n_)
+        _put(out, cells[0], k0_*_entire_4(w0) + k8_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + 2*_sin_pair(w0, 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k0_, k10_, k9_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k10, k9, t, t_n)
+        w0 = _exact_phase(Omega_, t_)
+        _put(out, cells[1], k0_*_entire_4(w0) + 2*_sin_pair(w0, 0.5)**2 + _wave(k9_, k10_, _exact_phase(Omega_, t_, t_n_)))
+    if cells[2] is not None:
+        Omega_, k1_, k2_, k3_, k8_, t_, t_n_, tau_0_, x1_, x3_ = _at(cells[2], shape, Omega, k1, k2, k3, k8, t, t_n, tau_0, x1, x3)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = x3_*(-t_ + t_n_)
+        _put(out, cells[2], k8_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(w0, 0.5)**2)
+    if cells[3] is not None:
+        Omega_, k1_, k10_, k2_, k3_, k9_, t_, t_n_, tau_0_, x1_ = _at(cells[3], shape, Omega, k1, k10, k2, k3, k9, t, t_n, tau_0, x1)
+        _put(out, cells[3], x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + _wave(k9_, k10_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1004,7 +1206,17 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     k1 = x3*np.sin((1/2)*x4)**2
     k2 = x2*np.sin(x4)
     k3 = x0*x1
-    return _into(out, shape, k3 + np.select([np.less_equal(t, t_n),True], [x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2,_wave(k1, k2, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k3 + (x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, t_n) else _wave(k1, k2, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k3_, t_, x3_ = _at(cells[0], shape, Omega, k3, t, x3)
+        _put(out, cells[0], k3_ + x3_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2)
+    if cells[1] is not None:
+        Omega_, k1_, k2_, k3_, t_, t_n_ = _at(cells[1], shape, Omega, k1, k2, k3, t, t_n)
+        _put(out, cells[1], k3_ + _wave(k1_, k2_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1046,12 +1258,22 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = 1/(v0 + x0)
     x2 = v0*x1
     x3 = Omega*t_n
-    x4 = _exact_phase(Omega, t)
     k0 = 1/(t_n)
     k2 = x2*_entire_5(x3)
     k3 = -x2*_entire_6(x3)
     k4 = x0*x1
-    return _into(out, shape, k4 + np.select([np.less_equal(t, t_n),True], [x2*(k0*(-t + t_n)*_entire_7(x4) + _entire_5(x4)),_wave(k2, k3, _exact_phase(Omega, t, t_n))], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return k4 + (x2*(k0*(-t + t_n)*_entire_7(_exact_phase(Omega, t)) + _entire_5(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n)))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k0_, k4_, t_, t_n_, x2_ = _at(cells[0], shape, Omega, k0, k4, t, t_n, x2)
+        w0 = _exact_phase(Omega_, t_)
+        _put(out, cells[0], k4_ + x2_*(k0_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)))
+    if cells[1] is not None:
+        Omega_, k2_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k2, k3, k4, t, t_n)
+        _put(out, cells[1], k4_ + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+    return out
 
 
 def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1093,12 +1315,22 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = v0/g
     x2 = Omega*t_n
     x3 = x0*x1
-    x4 = _exact_phase(Omega, t)
-    x5 = -t + t_n
     k2 = 48*x1/(Omega*t_n**2)
     k3 = -24*x3*_entire_8(x2)
     k4 = -72*x3*_entire_9(x2)
-    return _into(out, shape, np.select([np.less_equal(t, t_n),True], [k2*(x0*x5*(x0*x5*_entire_10(x4) + _entire_11(x4)) + _entire_12(x4)),_wave(k3, k4, _exact_phase(Omega, t, t_n))], default=np.nan) + 1)
+    if out is None and not shape:      # one point: its own branch only
+        return (k2*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k3, k4, _exact_phase(Omega, t, t_n))) + 1
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k2_, t_, t_n_, x0_ = _at(cells[0], shape, Omega, k2, t, t_n, x0)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = x0_*(-t_ + t_n_)
+        _put(out, cells[0], k2_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + 1)
+    if cells[1] is not None:
+        Omega_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k3, k4, t, t_n)
+        _put(out, cells[1], _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)) + 1)
+    return out
 
 
 def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None):
@@ -1140,12 +1372,22 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = v0/g
     x2 = Omega*t_n
     x3 = x0*x1
-    x4 = _exact_phase(Omega, t)
-    x5 = -t + t_n
     k3 = -120*x1/(Omega**2*t_n**3)
     k4 = -2880*x3*_entire_13(x2)
     k5 = -7200*x3*_entire_14(x2)
-    return _into(out, shape, np.select([np.less_equal(t, t_n),True], [k3*(x0*x5*(x0*x5*(x0*x5*_entire_15(x4) + _entire_16(x4)) + _entire_17(x4)) + _entire_18(x4)),_wave(k4, k5, _exact_phase(Omega, t, t_n))], default=np.nan) + 1)
+    if out is None and not shape:      # one point: its own branch only
+        return (k3*(x0*(-t + t_n)*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k4, k5, _exact_phase(Omega, t, t_n))) + 1
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, t_n)]])
+    if cells[0] is not None:
+        Omega_, k3_, t_, t_n_, x0_ = _at(cells[0], shape, Omega, k3, t, t_n, x0)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = x0_*(-t_ + t_n_)
+        _put(out, cells[0], k3_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + 1)
+    if cells[1] is not None:
+        Omega_, k4_, k5_, t_, t_n_ = _at(cells[1], shape, Omega, k4, k5, t, t_n)
+        _put(out, cells[1], _wave(k4_, k5_, _exact_phase(Omega_, t_, t_n_)) + 1)
+    return out
 
 
 def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
@@ -1165,6 +1407,14 @@ def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(t_n) in (float, int) or type(t_n) is np.float64)):
+        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1)
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     shape = _broadcast(t=t, t_n=t_n)
@@ -1200,10 +1450,17 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
-    k0 = g*t_n
-    k1 = tau_0*v0
-    k2 = 1/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k2*(k0*t + k1),1], default=np.nan))
+    k0 = g*t_n/(tau_0*v0)
+    if out is None and not shape:      # one point: its own branch only
+        return (k0*t + 1 if np.less_equal(t, tau_0) else 1)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k0_, t_ = _at(cells[0], shape, k0, t)
+        _put(out, cells[0], k0_*t_ + 1)
+    if cells[1] is not None:
+        _put(out, cells[1], 1)
+    return out
 
 
 def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
@@ -1223,6 +1480,16 @@ def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(t_n) in (float, int) or type(t_n) is np.float64)):
+        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                k0 = -t_n
+                k1 = -1/t_n
+                return np.float64(k1*(k0 + t))
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     shape = _broadcast(t=t, t_n=t_n)
@@ -1266,11 +1533,19 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
-    x1 = 1/(t_n)
-    k0 = g*t_n**2
-    k2 = -tau_0*v0
-    k3 = x1/(tau_0*v0)
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*(k0*t + k2*(t + x0)),x1*(-t - x0)], default=np.nan))
+    x1 = -1/t_n
+    k2 = g*t_n/(tau_0*v0)
+    if out is None and not shape:      # one point: its own branch only
+        return (k2*t + x1*(t + x0) if np.less_equal(t, tau_0) else x1*(t + x0))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
+        _put(out, cells[0], k2_*t_ + x1_*(t_ + x0_))
+    if cells[1] is not None:
+        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
+        _put(out, cells[1], x1_*(t_ + x0_))
+    return out
 
 
 def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
@@ -1290,6 +1565,16 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(t_n) in (float, int) or type(t_n) is np.float64)):
+        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                k0 = -t_n
+                k1 = 12/t_n**3
+                return np.float64(k1*t*(k0 + t)**2)
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     shape = _broadcast(t=t, t_n=t_n)
@@ -1336,12 +1621,19 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
-    x1 = t_n**(-3.0)
-    k1 = 12*tau_0*v0
-    k2 = g*t_n**4
-    k3 = x1/(tau_0*v0)
-    k5 = 12*x1
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*(t + x0)**2 + k2),k5*t*(t + x0)**2], default=np.nan))
+    x1 = 12/t_n**3
+    k2 = g*t_n/(tau_0*v0)
+    if out is None and not shape:      # one point: its own branch only
+        return (t*(k2 + x1*(t + x0)**2) if np.less_equal(t, tau_0) else t*x1*(t + x0)**2)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
+        _put(out, cells[0], t_*(k2_ + x1_*(t_ + x0_)**2))
+    if cells[1] is not None:
+        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
+        _put(out, cells[1], t_*x1_*(t_ + x0_)**2)
+    return out
 
 
 def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
@@ -1361,6 +1653,16 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(t_n) in (float, int) or type(t_n) is np.float64)):
+        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                k0 = -t_n
+                k1 = -60/t_n**5
+                return np.float64(k1*t**2*(k0 + t)**3)
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     shape = _broadcast(t=t, t_n=t_n)
@@ -1372,7 +1674,9 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     np.square(t, out=out)
     _w0 = np.empty_like(out)
     np.add(t, k0, out=_w0)
-    np.power(_w0, 3, out=_w0)
+    _w1 = np.empty_like(out)
+    np.square(_w0, out=_w1)
+    np.multiply(_w0, _w1, out=_w0)
     np.multiply(out, _w0, out=out)
     np.multiply(out, k1, out=out)
     return out
@@ -1408,9 +1712,16 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     x0 = -t_n
-    x1 = t_n**(-5.0)
-    k1 = -60*tau_0*v0
-    k2 = g*t_n**6
-    k3 = x1/(tau_0*v0)
-    k5 = -60*x1
-    return _into(out, shape, np.select([np.less_equal(t, tau_0),True], [k3*t*(k1*t*(t + x0)**3 + k2),k5*t**2*(t + x0)**3], default=np.nan))
+    x1 = -60/t_n**5
+    k2 = g*t_n/(tau_0*v0)
+    if out is None and not shape:      # one point: its own branch only
+        return (t*(k2 + t*x1*(t + x0)**3) if np.less_equal(t, tau_0) else t**2*x1*(t + x0)**3)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, tau_0)]])
+    if cells[0] is not None:
+        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
+        _put(out, cells[0], t_*(k2_ + t_*x1_*(t_ + x0_)**3))
+    if cells[1] is not None:
+        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
+        _put(out, cells[1], t_**2*x1_*(t_ + x0_)**3)
+    return out

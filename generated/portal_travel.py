@@ -27,6 +27,8 @@ Functions and argument order:
     max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c) -> [N]    eq (3), (4)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'startup_gap_motor_speed', 'startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway', 'max_support_load']
@@ -396,6 +398,18 @@ def tip_diameter(m, z, x, h_a, dy, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m) in (float, int) or type(m) is np.float64)
+            and (type(z) in (float, int) or type(z) is np.float64)
+            and (type(x) in (float, int) or type(x) is np.float64)
+            and (type(h_a) in (float, int) or type(h_a) is np.float64)
+            and (type(dy) in (float, int) or type(dy) is np.float64)):
+        if (0 < m < 1e999 and 0 < z < 1e999 and -1e999 < x < 1e999 and 0 < h_a < 1e999
+                and 0 <= dy < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(m*(-2*dy + 2*h_a + 2*x + z))
+            except (ArithmeticError, ValueError):
+                pass
     m   = _checked('m', m, 'positive', 'module of the teeth, m')
     z   = _checked('z', z, 'positive', 'number of teeth, 1')
     x   = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
@@ -571,6 +585,15 @@ def undercut_limit(z, alpha, h_a, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(z) in (float, int) or type(z) is np.float64)
+            and (type(alpha) in (float, int) or type(alpha) is np.float64)
+            and (type(h_a) in (float, int) or type(h_a) is np.float64)):
+        if (0 < z < 1e999 and 0 < alpha < 1e999 and 0 < h_a < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(h_a - 1/2*z*math.sin(alpha)**2)
+            except (ArithmeticError, ValueError):
+                pass
     z     = _checked('z', z, 'positive', 'number of teeth, 1')
     alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
     h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
@@ -605,6 +628,21 @@ def startup_gap_motor_speed(t_s, lambda_p, P_m, J_r, v_n, omega_0, omega_n, *, o
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t_s) in (float, int) or type(t_s) is np.float64)
+            and (type(lambda_p) in (float, int) or type(lambda_p) is np.float64)
+            and (type(P_m) in (float, int) or type(P_m) is np.float64)
+            and (type(J_r) in (float, int) or type(J_r) is np.float64)
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)
+            and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
+        if (0 <= t_s < 1e999 and 0 < lambda_p < 1e999 and 0 < P_m < 1e999 and 0 < J_r < 1e999
+                and 0 < v_n < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = 1/omega_n
+                return np.float64(-omega_0*v_n*x0*math.expm1(-P_m*lambda_p*t_s*x0/(J_r*omega_0)))
+            except (ArithmeticError, ValueError):
+                pass
     t_s      = _checked('t_s', t_s, 'nonnegative', 'time from the start (first stage), s')
     lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
     P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
@@ -639,6 +677,16 @@ def startup_motor_mass(J_r, n_m, omega_n, v_n, *, out=None):
     ndarray
         [kg], broadcast over the arguments.
     """
+    if (out is None
+            and (type(J_r) in (float, int) or type(J_r) is np.float64)
+            and (type(n_m) in (float, int) or type(n_m) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)):
+        if (0 < J_r < 1e999 and 0 < n_m < 1e999 and 0 < omega_n < 1e999 and 0 < v_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(J_r*n_m*omega_n**2/v_n**2)
+            except (ArithmeticError, ValueError):
+                pass
     J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
     n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
     omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
@@ -666,6 +714,15 @@ def startup_rated_force(P_m, n_m, v_n, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(P_m) in (float, int) or type(P_m) is np.float64)
+            and (type(n_m) in (float, int) or type(n_m) is np.float64)
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)):
+        if (0 < P_m < 1e999 and 0 < n_m < 1e999 and 0 < v_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(P_m*n_m/v_n)
+            except (ArithmeticError, ValueError):
+                pass
     P_m = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
     n_m = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
     v_n = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
@@ -692,6 +749,15 @@ def startup_no_load_speed(v_n, omega_0, omega_n, *, out=None):
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)
+            and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
+        if (0 < v_n < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(omega_0*v_n/omega_n)
+            except (ArithmeticError, ValueError):
+                pass
     v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
     omega_0 = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
     omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
@@ -718,6 +784,15 @@ def startup_backlash_at_rim(phi_b, v_n, omega_n, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(phi_b) in (float, int) or type(phi_b) is np.float64)
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
+        if (0 <= phi_b < 1e999 and 0 < v_n < 1e999 and 0 < omega_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(phi_b*v_n/omega_n)
+            except (ArithmeticError, ValueError):
+                pass
     phi_b   = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad')
     v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
     omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
@@ -750,6 +825,19 @@ def startup_first_slope(lambda_p, P_m, n_m, v_n, omega_0, omega_n, *, out=None):
     ndarray
         [N*s/m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(lambda_p) in (float, int) or type(lambda_p) is np.float64)
+            and (type(P_m) in (float, int) or type(P_m) is np.float64)
+            and (type(n_m) in (float, int) or type(n_m) is np.float64)
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)
+            and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
+        if (0 < lambda_p < 1e999 and 0 < P_m < 1e999 and 0 < n_m < 1e999 and 0 < v_n < 1e999
+                and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(P_m*lambda_p*n_m*omega_n/(omega_0*v_n**2))
+            except (ArithmeticError, ValueError):
+                pass
     lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
     P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
     n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
@@ -779,6 +867,15 @@ def startup_slope_ratio(lambda_p, omega_0, omega_n, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(lambda_p) in (float, int) or type(lambda_p) is np.float64)
+            and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
+        if (0 < lambda_p < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(omega_0**(1/3)*(1/(omega_0 - omega_n))**(1/3)/lambda_p**(1/3))
+            except (ArithmeticError, ValueError):
+                pass
     lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
     omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
     omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
@@ -811,6 +908,19 @@ def startup_link_damping(zeta, c_l, J_r, n_m, omega_n, v_n, *, out=None):
     ndarray
         [N*s/m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(zeta) in (float, int) or type(zeta) is np.float64)
+            and (type(c_l) in (float, int) or type(c_l) is np.float64)
+            and (type(J_r) in (float, int) or type(J_r) is np.float64)
+            and (type(n_m) in (float, int) or type(n_m) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)):
+        if (0 < zeta < 1e999 and 0 < c_l < 1e999 and 0 < J_r < 1e999 and 0 < n_m < 1e999
+                and 0 < omega_n < 1e999 and 0 < v_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(2*math.sqrt(J_r)*math.sqrt(c_l)*math.sqrt(n_m)*omega_n*zeta/v_n)
+            except (ArithmeticError, ValueError):
+                pass
     zeta    = _checked('zeta', zeta, 'positive', 'damping ratio of a link against its motors, 1')
     c_l     = _checked('c_l', c_l, 'positive', 'stiffness of one elastic link (portal side and drive, at the rim), N/m')
     J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
@@ -852,6 +962,23 @@ def startup_rigid_breakaway(lambda_p, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w
     ndarray
         [m/s^2], broadcast over the arguments.
     """
+    if (out is None
+            and (type(lambda_p) in (float, int) or type(lambda_p) is np.float64)
+            and (type(P_m) in (float, int) or type(P_m) is np.float64)
+            and (type(n_m) in (float, int) or type(n_m) is np.float64)
+            and (type(v_n) in (float, int) or type(v_n) is np.float64)
+            and (type(m_k) in (float, int) or type(m_k) is np.float64)
+            and (type(J_r) in (float, int) or type(J_r) is np.float64)
+            and (type(omega_n) in (float, int) or type(omega_n) is np.float64)
+            and (type(W_f) in (float, int) or type(W_f) is np.float64)
+            and (type(W_w) in (float, int) or type(W_w) is np.float64)):
+        if (0 < lambda_p < 1e999 and 0 < P_m < 1e999 and 0 < n_m < 1e999 and 0 < v_n < 1e999
+                and 0 < m_k < 1e999 and 0 < J_r < 1e999 and 0 < omega_n < 1e999 and 0 < W_f < 1e999
+                and 0 <= W_w < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64((2*P_m*lambda_p*n_m/v_n - W_f - W_w)/(2*J_r*n_m*omega_n**2/v_n**2 + m_k))
+            except (ArithmeticError, ValueError):
+                pass
     lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
     P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
     n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
@@ -893,6 +1020,21 @@ def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(psi) in (float, int) or type(psi) is np.float64)
+            and (type(G_g) in (float, int) or type(G_g) is np.float64)
+            and (type(G_pch) in (float, int) or type(G_pch) is np.float64)
+            and (type(G_vs) in (float, int) or type(G_vs) is np.float64)
+            and (type(L_max) in (float, int) or type(L_max) is np.float64)
+            and (type(x_o) in (float, int) or type(x_o) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)):
+        if (0 < psi < 1e999 and 0 < G_g < 1e999 and 0 < G_pch < 1e999 and 0 < G_vs < 1e999
+                and 0 < L_max < 1e999 and 0 < x_o < 1e999 and 0 < c < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = G_g*psi
+                return np.float64((1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c)
+            except (ArithmeticError, ValueError):
+                pass
     psi   = _checked('psi', psi, 'positive', 'dynamic coefficient of the hoisted load (printed у), 1')
     G_g   = _checked('G_g', G_g, 'positive', 'rated weight of the load G_г, N')
     G_pch = _checked('G_pch', G_pch, 'positive', 'weight of the slewing part G_пч, N')

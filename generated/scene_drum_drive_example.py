@@ -10,6 +10,8 @@ Functions and argument order:
     pulsating_force(t) -> [N]    eq (21)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['pulsating_force']
@@ -87,6 +89,14 @@ def pulsating_force(t, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = math.sin(1.0471975511965979*t)
+                return np.float64(450*x0 - 150*abs(3*x0 - 2) + 300)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     x0 = np.sin(1.0471975511965979*t)

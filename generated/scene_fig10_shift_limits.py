@@ -217,6 +217,13 @@ def undercut_limit(z, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(z) in (float, int) or type(z) is np.float64)):
+        if (0 < z < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1 - 0.05848888922025548*z)
+            except (ArithmeticError, ValueError):
+                pass
     z = _checked('z', z, 'positive', 'number of teeth, 1')
     shape = _broadcast(z=z)
     return _into(out, shape, 1 - 0.05848888922025548*z)

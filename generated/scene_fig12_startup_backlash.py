@@ -158,6 +158,13 @@ def startup_backlash_at_rim(phi_b, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(phi_b) in (float, int) or type(phi_b) is np.float64)):
+        if (0 <= phi_b < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64((4803839602528529/881921639752878848)*phi_b)
+            except (ArithmeticError, ValueError):
+                pass
     phi_b = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad')
     shape = _broadcast(phi_b=phi_b)
     return _into(out, shape, (4803839602528529/881921639752878848)*phi_b)

@@ -210,6 +210,15 @@ def tip_diameter(z, x, dy, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(z) in (float, int) or type(z) is np.float64)
+            and (type(x) in (float, int) or type(x) is np.float64)
+            and (type(dy) in (float, int) or type(dy) is np.float64)):
+        if (0 < z < 1e999 and -1e999 < x < 1e999 and 0 <= dy < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-5764607523034235/288230376151711744*dy + (5764607523034235/288230376151711744)*x + (5764607523034235/576460752303423488)*z + 5764607523034235/288230376151711744)
+            except (ArithmeticError, ValueError):
+                pass
     z  = _checked('z', z, 'positive', 'number of teeth, 1')
     x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
     dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
@@ -281,6 +290,13 @@ def undercut_limit(z, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(z) in (float, int) or type(z) is np.float64)):
+        if (0 < z < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1 - 0.05848888922025548*z)
+            except (ArithmeticError, ValueError):
+                pass
     z = _checked('z', z, 'positive', 'number of teeth, 1')
     shape = _broadcast(z=z)
     return _into(out, shape, 1 - 0.05848888922025548*z)

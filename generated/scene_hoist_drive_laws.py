@@ -136,6 +136,8 @@ def _exact_phase(k, t, c=0.0):
     relative: t - c by TwoSum, the product by TwoProduct. A phase at long
     times or just after a switch, where one rounding is a large error of a
     sine near its zeros."""
+    if np.ndim(c) == 0 and c == 0:   # t - 0 is exact: the product alone
+        return _two_product(k, t)
     s, e = _two_sum(t, -c)
     p, pe = _two_product(k, s)
     return _quick_two_sum(p, pe + k * e)
@@ -168,6 +170,53 @@ def _wave(b, c, x):
     p, p_err = _two_product(b, co)
     q, q_err = _two_product(c, s)
     return (p + q) + (p_err + q_err)
+
+
+def _selector(mask):
+    """The flat positions where ``mask`` (1-D bool) holds: None if none, a
+    slice if they are contiguous, else an index array."""
+    n = int(np.count_nonzero(mask))
+    if n == 0:
+        return None
+    first = int(np.argmax(mask))
+    if n == mask.size or mask[first:first + n].all():
+        return slice(first, first + n)
+    return np.flatnonzero(mask)
+
+
+def _cells(shape, choices):
+    """Selectors over the flattened broadcast ``shape``, one per combination of
+    branches: ``choices`` lists, per piecewise, its conditions in order (the
+    last branch, the rest, left out); a point takes the first branch whose
+    condition holds. Combinations in row-major order (the first piecewise
+    varies slowest)."""
+    size = int(np.prod(shape, dtype=np.int64))
+    cells = [np.ones(size, dtype=bool)]
+    for conditions in choices:
+        rest = np.ones(size, dtype=bool)
+        branches = []
+        for condition in conditions:
+            mask = np.broadcast_to(condition, shape).reshape(-1) & rest
+            rest &= ~mask
+            branches.append(mask)
+        branches.append(rest)
+        cells = [cell & branch for cell in cells for branch in branches]
+    return [_selector(cell) for cell in cells]
+
+
+def _at(where, shape, *values):
+    """``values`` on the points ``where`` (a selector of ``_cells``): arrays
+    broadcast to ``shape``, flattened and selected; scalars as they are."""
+    return tuple(v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1)[where]
+                 for v in values)
+
+
+def _put(out, where, value):
+    """Write ``value`` into ``out`` at the flat positions ``where``."""
+    if out.flags.c_contiguous:
+        out.reshape(-1)[where] = value
+    else:
+        out.flat[where] = value
 
 
 def _entire_1(z):
@@ -242,10 +291,27 @@ def dynamic_coefficient_pickup_a1(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = _exact_phase(25, t)
-    x1 = _sin_pair(x0, 0.5)**2
-    x2 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return _into(out, shape, (11045078086126142/5698460903507231)*x1 + np.select([np.less_equal(t, 1),True], [(351843720888320/5698460903507231)*x1,_wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x2, 0.5)**2 + 0.0306871573751505*_sin_pair(x2, 1.0) + 0.21141077704121883], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + ((351843720888320/5698460903507231)*_sin_pair(_exact_phase(25, t), 0.5)**2 if np.less_equal(t, 1) else _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 706884997512073/2251799813685248)], [np.less_equal(t, 1)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[0], (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[1], (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_pair(v0, 0.5)**2 + _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t_, 1)))
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        _put(out, cells[2], 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + 2*_sin_pair(_exact_phase(25, t_), 0.5)**2 + 0.21141077704121883)
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        _put(out, cells[3], 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t_, 1)) + 0.21141077704121883)
+    return out
 
 
 def dynamic_coefficient_pickup_a2(t, *, out=None):
@@ -265,9 +331,28 @@ def dynamic_coefficient_pickup_a2(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = _exact_phase(25, t)
-    x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(175921860444160/5698460903507231)*_entire_2(x0),_wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(x0),0.06174253581630276*_sin_pair(x1, 0.5)**2 + 0.0306871573751505*_sin_pair(x1, 1.0) + 0.21141077704121883], default=np.nan) + (11045078086126142/5698460903507231)*_sin_pair(x0, 0.5)**2)
+    if out is None and not shape:      # one point: its own branch only
+        return ((175921860444160/5698460903507231)*_entire_2(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))) + ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 1)], [np.less_equal(t, 706884997512073/2251799813685248)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[0], (175921860444160/5698460903507231)*_entire_2(v0) + (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_pair(v0, 0.5)**2)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        v1 = _exact_phase(25, t_)
+        _put(out, cells[1], (175921860444160/5698460903507231)*_entire_2(v1) + 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_pair(v1, 0.5)**2 + 0.21141077704121883)
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[2], (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_pair(v0, 0.5)**2 + _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t_, 1)))
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        _put(out, cells[3], 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t_, 1)) + 0.21141077704121883)
+    return out
 
 
 def dynamic_coefficient_pickup_a3(t, *, out=None):
@@ -287,9 +372,28 @@ def dynamic_coefficient_pickup_a3(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = _exact_phase(25, t)
-    x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(1688849860263936/690317380382883875)*_entire_3(x0),_wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2)
+    if out is None and not shape:      # one point: its own branch only
+        return ((1688849860263936/690317380382883875)*_entire_3(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_pair(_exact_phase(25, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 1)], [np.less_equal(t, 706884997512073/2251799813685248)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[0], (1688849860263936/690317380382883875)*_entire_3(v0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        v1 = _exact_phase(25, t_)
+        _put(out, cells[1], (1688849860263936/690317380382883875)*_entire_3(v1) + 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(v1, 0.5)**2 + 0.21814532014268478)
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[2], (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2 + _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t_, 1)))
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        _put(out, cells[3], 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t_, 1)) + 0.21814532014268478)
+    return out
 
 
 def dynamic_coefficient_pickup_a4(t, *, out=None):
@@ -309,9 +413,28 @@ def dynamic_coefficient_pickup_a4(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = _exact_phase(25, t)
-    x1 = _exact_phase(25, t, 706884997512073/2251799813685248)
-    return _into(out, shape, np.select([np.less_equal(t, 1),True], [-497366283847729152/86289672547860484375*_entire_4(x0),_wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))], default=np.nan) + np.select([np.less_equal(t, 706884997512073/2251799813685248),True], [(562949953421312/17672124937801825)*_entire_1(x0),0.06370935971463045*_sin_pair(x1, 0.5)**2 + 0.03166470443730489*_sin_pair(x1, 1.0) + 0.21814532014268478], default=np.nan) + 2*_sin_pair(x0, 0.5)**2)
+    if out is None and not shape:      # one point: its own branch only
+        return (-497366283847729152/86289672547860484375*_entire_4(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_pair(_exact_phase(25, t), 0.5)**2
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 1)], [np.less_equal(t, 706884997512073/2251799813685248)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[0], -497366283847729152/86289672547860484375*_entire_4(v0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        v1 = _exact_phase(25, t_)
+        _put(out, cells[1], -497366283847729152/86289672547860484375*_entire_4(v1) + 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(v1, 0.5)**2 + 0.21814532014268478)
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = _exact_phase(25, t_)
+        _put(out, cells[2], (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2 + _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t_, 1)))
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+        _put(out, cells[3], 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t_, 1)) + 0.21814532014268478)
+    return out
 
 
 def dynamic_coefficient_from_weight_a1(t, *, out=None):
@@ -331,7 +454,17 @@ def dynamic_coefficient_from_weight_a1(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2,_wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399)
+    if out is None and not shape:      # one point: its own branch only
+        return ((281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2 if np.less_equal(t, 1) else _wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))) + 5522539043063071/5663276531418399
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 1)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], (281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t_), 0.5)**2 + 5522539043063071/5663276531418399)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], _wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t_, 1)) + 5522539043063071/5663276531418399)
+    return out
 
 
 def dynamic_coefficient_from_weight_a2(t, *, out=None):
@@ -351,7 +484,17 @@ def dynamic_coefficient_from_weight_a2(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)),_wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))], default=np.nan) + 5522539043063071/5663276531418399)
+    if out is None and not shape:      # one point: its own branch only
+        return ((140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))) + 5522539043063071/5663276531418399
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 1)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], (140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t_)) + 5522539043063071/5663276531418399)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], _wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t_, 1)) + 5522539043063071/5663276531418399)
+    return out
 
 
 def dynamic_coefficient_from_weight_a3(t, *, out=None):
@@ -371,7 +514,17 @@ def dynamic_coefficient_from_weight_a3(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, np.select([np.less_equal(t, 1),True], [(6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)),_wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))], default=np.nan) + 1)
+    if out is None and not shape:      # one point: its own branch only
+        return ((6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))) + 1
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 1)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], (6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t_)) + 1)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], _wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t_, 1)) + 1)
+    return out
 
 
 def dynamic_coefficient_from_weight_a4(t, *, out=None):
@@ -391,7 +544,17 @@ def dynamic_coefficient_from_weight_a4(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    return _into(out, shape, np.select([np.less_equal(t, 1),True], [-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)),_wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))], default=np.nan) + 1)
+    if out is None and not shape:      # one point: its own branch only
+        return (-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))) + 1
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less_equal(t, 1)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], 1 - 1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t_)))
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], _wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t_, 1)) + 1)
+    return out
 
 
 def optimal_coefficient_from_weight_a1(t, *, out=None):
@@ -409,6 +572,13 @@ def optimal_coefficient_from_weight_a1(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     return _into(out, shape, 1)
@@ -429,6 +599,13 @@ def optimal_coefficient_from_weight_a2(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(1 - t)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
@@ -454,6 +631,13 @@ def optimal_coefficient_from_weight_a3(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(12*t*(t - 1)**2)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
@@ -482,6 +666,13 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-60*t**2*(t - 1)**3)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
@@ -490,7 +681,9 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     np.square(t, out=out)
     _w0 = np.empty_like(out)
     np.add(t, -1, out=_w0)
-    np.power(_w0, 3, out=_w0)
+    _w1 = np.empty_like(out)
+    np.square(_w0, out=_w1)
+    np.multiply(_w0, _w1, out=_w0)
     np.multiply(out, _w0, out=out)
     np.multiply(out, -60, out=out)
     return out

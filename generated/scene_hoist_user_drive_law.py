@@ -81,15 +81,6 @@ def _out(out, shape):
     return out
 
 
-def _into(out, shape, result):
-    """``result``, or copied into ``out`` when the caller gives a buffer."""
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
-
-
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -137,6 +128,53 @@ def _sin_remainder(x, n):
     return _taylor_remainder(x, n, 1)
 
 
+def _selector(mask):
+    """The flat positions where ``mask`` (1-D bool) holds: None if none, a
+    slice if they are contiguous, else an index array."""
+    n = int(np.count_nonzero(mask))
+    if n == 0:
+        return None
+    first = int(np.argmax(mask))
+    if n == mask.size or mask[first:first + n].all():
+        return slice(first, first + n)
+    return np.flatnonzero(mask)
+
+
+def _cells(shape, choices):
+    """Selectors over the flattened broadcast ``shape``, one per combination of
+    branches: ``choices`` lists, per piecewise, its conditions in order (the
+    last branch, the rest, left out); a point takes the first branch whose
+    condition holds. Combinations in row-major order (the first piecewise
+    varies slowest)."""
+    size = int(np.prod(shape, dtype=np.int64))
+    cells = [np.ones(size, dtype=bool)]
+    for conditions in choices:
+        rest = np.ones(size, dtype=bool)
+        branches = []
+        for condition in conditions:
+            mask = np.broadcast_to(condition, shape).reshape(-1) & rest
+            rest &= ~mask
+            branches.append(mask)
+        branches.append(rest)
+        cells = [cell & branch for cell in cells for branch in branches]
+    return [_selector(cell) for cell in cells]
+
+
+def _at(where, shape, *values):
+    """``values`` on the points ``where`` (a selector of ``_cells``): arrays
+    broadcast to ``shape``, flattened and selected; scalars as they are."""
+    return tuple(v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1)[where]
+                 for v in values)
+
+
+def _put(out, where, value):
+    """Write ``value`` into ``out`` at the flat positions ``where``."""
+    if out.flags.c_contiguous:
+        out.reshape(-1)[where] = value
+    else:
+        out.flat[where] = value
+
+
 def drive_acceleration(t, *, out=None):
     """Drive acceleration a(t) of the scene's law. Eq (28), (31).
 
@@ -154,8 +192,21 @@ def drive_acceleration(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = 2*t
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,1/2,5/2 - x0,0], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (2*t if np.less(t, 1/4) else 1/2 if np.less(t, 1) else 5/2 - 2*t if np.less(t, 5/4) else 0)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], 2*t_)
+    if cells[1] is not None:
+        _put(out, cells[1], 1/2)
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        _put(out, cells[2], 5/2 - 2*t_)
+    if cells[3] is not None:
+        _put(out, cells[3], 0)
+    return out
 
 
 def drive_speed(t, *, out=None):
@@ -175,8 +226,22 @@ def drive_speed(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = t**2
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0,(1/2)*t - 1/16,(5/2)*t - x0 - 17/16,1/2], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (t**2 if np.less(t, 1/4) else (1/2)*t - 1/16 if np.less(t, 1) else -t**2 + (5/2)*t - 17/16 if np.less(t, 5/4) else 1/2)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], t_**2)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], (1/2)*t_ - 1/16)
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        _put(out, cells[2], -t_**2 + (5/2)*t_ - 17/16)
+    if cells[3] is not None:
+        _put(out, cells[3], 1/2)
+    return out
 
 
 def relative_forcing(t, *, out=None):
@@ -196,8 +261,21 @@ def relative_forcing(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = 10*t
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [x0 + 981/20,1031/20,1231/20 - x0,981/20], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (10*t + 981/20 if np.less(t, 1/4) else 1031/20 if np.less(t, 1) else 1231/20 - 10*t if np.less(t, 5/4) else 981/20)
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], 10*t_ + 981/20)
+    if cells[1] is not None:
+        _put(out, cells[1], 1031/20)
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        _put(out, cells[2], 1231/20 - 10*t_)
+    if cells[3] is not None:
+        _put(out, cells[3], 981/20)
+    return out
 
 
 def rope_stretch(t, *, out=None):
@@ -217,9 +295,24 @@ def rope_stretch(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = 25*t
-    x1 = 2.1237622053565318e-05*np.cos(x0 - 25/8)
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [981/12500 - 2/3125*_sin_remainder(x0, 1),1031/12500 - x1,-x1 + (2/3125)*_sin_remainder(x0 - 25, 1) + 1031/12500,981/12500 - 2.81703877964031e-06*np.sin(x0 - 125/8)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (981/12500 - 2/3125*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1031/12500 - 2.1237622053565318e-05*np.cos(25*t - 25/8) if np.less(t, 1) else -2.1237622053565318e-05*np.cos(25*t - 25/8) + (2/3125)*_sin_remainder(25*t - 25, 1) + 1031/12500 if np.less(t, 5/4) else 981/12500 - 2.81703877964031e-06*np.sin(25*t - 125/8))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], 981/12500 - 2/3125*_sin_remainder(25*t_, 1))
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], 1031/12500 - 2.1237622053565318e-05*np.cos(25*t_ - 25/8))
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = 25*t_
+        _put(out, cells[2], -2.1237622053565318e-05*np.cos(v0 - 25/8) + (2/3125)*_sin_remainder(v0 - 25, 1) + 1031/12500)
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        _put(out, cells[3], 981/12500 - 2.81703877964031e-06*np.sin(25*t_ - 125/8))
+    return out
 
 
 def rope_stretch_rate(t, *, out=None):
@@ -239,10 +332,23 @@ def rope_stretch_rate(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = (25/2)*t
-    x1 = 25*t
-    x2 = np.sin(x1 - 25/8)
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [(4/125)*np.sin(x0)**2,0.0005309405513391329*x2,0.0005309405513391329*x2 - 4/125*np.sin(x0 - 25/2)**2,-7.042596949100774e-05*np.cos(x1 - 125/8)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return ((4/125)*np.sin((25/2)*t)**2 if np.less(t, 1/4) else 0.0005309405513391329*np.sin(25*t - 25/8) if np.less(t, 1) else -4/125*np.sin((25/2)*t - 25/2)**2 + 0.0005309405513391329*np.sin(25*t - 25/8) if np.less(t, 5/4) else -7.042596949100774e-05*np.cos(25*t - 125/8))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], (4/125)*np.sin((25/2)*t_)**2)
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], 0.0005309405513391329*np.sin(25*t_ - 25/8))
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        _put(out, cells[2], -4/125*np.sin((25/2)*t_ - 25/2)**2 + 0.0005309405513391329*np.sin(25*t_ - 25/8))
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        _put(out, cells[3], -7.042596949100774e-05*np.cos(25*t_ - 125/8))
+    return out
 
 
 def rope_force(t, *, out=None):
@@ -262,9 +368,24 @@ def rope_force(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = 25*t
-    x1 = 21.237622053565318*np.cos(x0 - 25/8)
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [78480 - 640*_sin_remainder(x0, 1),82480 - x1,-x1 + 640*_sin_remainder(x0 - 25, 1) + 82480,78480 - 2.81703877964031*np.sin(x0 - 125/8)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (78480 - 640*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 82480 - 21.237622053565318*np.cos(25*t - 25/8) if np.less(t, 1) else -21.237622053565318*np.cos(25*t - 25/8) + 640*_sin_remainder(25*t - 25, 1) + 82480 if np.less(t, 5/4) else 78480 - 2.81703877964031*np.sin(25*t - 125/8))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], 78480 - 640*_sin_remainder(25*t_, 1))
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], 82480 - 21.237622053565318*np.cos(25*t_ - 25/8))
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = 25*t_
+        _put(out, cells[2], -21.237622053565318*np.cos(v0 - 25/8) + 640*_sin_remainder(v0 - 25, 1) + 82480)
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        _put(out, cells[3], 78480 - 2.81703877964031*np.sin(25*t_ - 125/8))
+    return out
 
 
 def dynamic_coefficient(t, *, out=None):
@@ -284,9 +405,24 @@ def dynamic_coefficient(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = 25*t
-    x1 = 0.0002706119018038394*np.cos(x0 - 25/8)
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [1 - 8/981*_sin_remainder(x0, 1),1031/981 - x1,-x1 + (8/981)*_sin_remainder(x0 - 25, 1) + 1031/981,1 - 3.589498954689488e-05*np.sin(x0 - 125/8)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (1 - 8/981*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1031/981 - 0.0002706119018038394*np.cos(25*t - 25/8) if np.less(t, 1) else -0.0002706119018038394*np.cos(25*t - 25/8) + (8/981)*_sin_remainder(25*t - 25, 1) + 1031/981 if np.less(t, 5/4) else 1 - 3.589498954689488e-05*np.sin(25*t - 125/8))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], 1 - 8/981*_sin_remainder(25*t_, 1))
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], 1031/981 - 0.0002706119018038394*np.cos(25*t_ - 25/8))
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = 25*t_
+        _put(out, cells[2], -0.0002706119018038394*np.cos(v0 - 25/8) + (8/981)*_sin_remainder(v0 - 25, 1) + 1031/981)
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        _put(out, cells[3], 1 - 3.589498954689488e-05*np.sin(25*t_ - 125/8))
+    return out
 
 
 def load_acceleration(t, *, out=None):
@@ -306,6 +442,21 @@ def load_acceleration(t, *, out=None):
     """
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
-    x0 = 25*t
-    x1 = 0.0026547027566956646*np.cos(x0 - 25/8)
-    return _into(out, shape, np.select([np.less(t, 1/4),np.less(t, 1),np.less(t, 5/4),True], [-2/25*_sin_remainder(x0, 1),1/2 - x1,-x1 + (2/25)*_sin_remainder(x0 - 25, 1) + 1/2,-0.0003521298474550387*np.sin(x0 - 125/8)], default=np.nan))
+    if out is None and not shape:      # one point: its own branch only
+        return (-2/25*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1/2 - 0.0026547027566956646*np.cos(25*t - 25/8) if np.less(t, 1) else -0.0026547027566956646*np.cos(25*t - 25/8) + (2/25)*_sin_remainder(25*t - 25, 1) + 1/2 if np.less(t, 5/4) else -0.0003521298474550387*np.sin(25*t - 125/8))
+    out = _out(out, shape)
+    cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
+    if cells[0] is not None:
+        t_, = _at(cells[0], shape, t)
+        _put(out, cells[0], -2/25*_sin_remainder(25*t_, 1))
+    if cells[1] is not None:
+        t_, = _at(cells[1], shape, t)
+        _put(out, cells[1], 1/2 - 0.0026547027566956646*np.cos(25*t_ - 25/8))
+    if cells[2] is not None:
+        t_, = _at(cells[2], shape, t)
+        v0 = 25*t_
+        _put(out, cells[2], -0.0026547027566956646*np.cos(v0 - 25/8) + (2/25)*_sin_remainder(v0 - 25, 1) + 1/2)
+    if cells[3] is not None:
+        t_, = _at(cells[3], shape, t)
+        _put(out, cells[3], -0.0003521298474550387*np.sin(25*t_ - 125/8))
+    return out

@@ -12,6 +12,8 @@ Functions and argument order:
     velocity_m2(t) -> [m/s]    eq (2), (13)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['elastic_force', 'velocity_m1', 'velocity_m2']
@@ -89,6 +91,13 @@ def elastic_force(t, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64((589000/13)*math.sin(13.314380468978918*t)**2)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
@@ -117,6 +126,13 @@ def velocity_m1(t, *, out=None):
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-175/572*t - 0.1933473889602708*math.sin(26.628760937957836*t) + 6004799503160661/4503599627370496)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
@@ -148,6 +164,13 @@ def velocity_m2(t, *, out=None):
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-175/572*t + 0.007733895558410831*math.sin(26.628760937957836*t) + 6004799503160661/4503599627370496)
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     shape = _broadcast(t=t)
     if out is None and not shape:

@@ -97,6 +97,13 @@ def max_support_load(L_max, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(L_max) in (float, int) or type(L_max) is np.float64)):
+        if (0 < L_max < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64((47862005039879947875/4503599627370496)*L_max + 824192508806006051625/4503599627370496)
+            except (ArithmeticError, ValueError):
+                pass
     L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m')
     shape = _broadcast(L_max=L_max)
     return _into(out, shape, (47862005039879947875/4503599627370496)*L_max + 824192508806006051625/4503599627370496)

@@ -16,6 +16,8 @@ Functions and argument order:
     velocity_m2(t, m1, m2, c, P_t, W, v0) -> [m/s]    eq (2), (13)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['natural_frequency', 'relative_displacement', 'elastic_force', 'peak_elastic_force', 'peak_time', 'rigid_link_force', 'velocity_m1', 'velocity_m2']
@@ -124,6 +126,15 @@ def natural_frequency(m1, m2, c, *, out=None):
     ndarray
         [rad/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)):
+        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(math.sqrt(c)*math.sqrt(m1 + m2)/(math.sqrt(m1)*math.sqrt(m2)))
+            except (ArithmeticError, ValueError):
+                pass
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
@@ -156,6 +167,22 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)
+            and (type(P_t) in (float, int) or type(P_t) is np.float64)
+            and (type(W) in (float, int) or type(W) is np.float64)):
+        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
+                and 0 < P_t < 1e999 and 0 <= W < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = m1 + m2
+                k0 = (1/2)*math.sqrt(c*x0/(m1*m2))
+                k1 = -2*_diff_of_products(W, m1, P_t, m2)/(c*x0)
+                return np.float64(k1*math.sin(k0*t)**2)
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
@@ -201,6 +228,22 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)
+            and (type(P_t) in (float, int) or type(P_t) is np.float64)
+            and (type(W) in (float, int) or type(W) is np.float64)):
+        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
+                and 0 < P_t < 1e999 and 0 <= W < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = m1 + m2
+                k0 = (1/2)*math.sqrt(c*x0/(m1*m2))
+                k1 = -2*_diff_of_products(W, m1, P_t, m2)/x0
+                return np.float64(k1*math.sin(k0*t)**2)
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
@@ -242,6 +285,16 @@ def peak_elastic_force(m1, m2, P_t, W, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(P_t) in (float, int) or type(P_t) is np.float64)
+            and (type(W) in (float, int) or type(W) is np.float64)):
+        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < P_t < 1e999 and 0 <= W < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2))
+            except (ArithmeticError, ValueError):
+                pass
     m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
@@ -269,6 +322,15 @@ def peak_time(m1, m2, c, *, out=None):
     ndarray
         [s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)):
+        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(3.141592653589793*math.sqrt(m1)*math.sqrt(m2)/(math.sqrt(c)*math.sqrt(m1 + m2)))
+            except (ArithmeticError, ValueError):
+                pass
     m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
@@ -297,6 +359,16 @@ def rigid_link_force(m1, m2, P_t, W, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
+    if (out is None
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(P_t) in (float, int) or type(P_t) is np.float64)
+            and (type(W) in (float, int) or type(W) is np.float64)):
+        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < P_t < 1e999 and 0 <= W < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-_diff_of_products(W, m1, P_t, m2)/(m1 + m2))
+            except (ArithmeticError, ValueError):
+                pass
     m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
@@ -332,6 +404,25 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)
+            and (type(P_t) in (float, int) or type(P_t) is np.float64)
+            and (type(W) in (float, int) or type(W) is np.float64)
+            and (type(v0) in (float, int) or type(v0) is np.float64)):
+        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
+                and 0 < P_t < 1e999 and 0 <= W < 1e999 and 0 < v0 < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = m1 + m2
+                x1 = 1/m1
+                k0 = -(P_t + W)/x0
+                k1 = math.sqrt(c*x0*x1/m2)
+                k2 = _diff_of_products(W, m1, P_t, m2)*math.sqrt(m2*x1/c)/x0**(3/2)
+                return np.float64(k0*t + k2*math.sin(k1*t) + v0)
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
@@ -385,6 +476,25 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     ndarray
         [m/s], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(m1) in (float, int) or type(m1) is np.float64)
+            and (type(m2) in (float, int) or type(m2) is np.float64)
+            and (type(c) in (float, int) or type(c) is np.float64)
+            and (type(P_t) in (float, int) or type(P_t) is np.float64)
+            and (type(W) in (float, int) or type(W) is np.float64)
+            and (type(v0) in (float, int) or type(v0) is np.float64)):
+        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
+                and 0 < P_t < 1e999 and 0 <= W < 1e999 and 0 < v0 < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                x0 = m1 + m2
+                x1 = 1/m2
+                k0 = -(P_t + W)/x0
+                k1 = math.sqrt(c*x0*x1/m1)
+                k2 = -_diff_of_products(W, m1, P_t, m2)*math.sqrt(m1*x1/c)/x0**(3/2)
+                return np.float64(k0*t + k2*math.sin(k1*t) + v0)
+            except (ArithmeticError, ValueError):
+                pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
     m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')

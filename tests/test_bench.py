@@ -117,7 +117,8 @@ def test_headline_and_table(rows):
 
 def test_bench_command_json(tmp_path, capsys):
     assert main(["bench", "000", "--format", "json", "--out", str(tmp_path), "--points", "40",
-                 "--throughput-points", "1000"]) == 0
+                 "--throughput-points", "1000", "--quick", "--sizes", "1000",
+                 "--compare-points", "30", "60"]) == 0
     data = json.loads(capsys.readouterr().out)
     keys = {"function", "method", "seconds", "points", "max_rel_error"}
     assert all(keys <= set(row) for row in data)
@@ -125,7 +126,35 @@ def test_bench_command_json(tmp_path, capsys):
         ("elastic_force", "generated"), ("elastic_force", "np.cos floor")}
     text = (tmp_path / "bench_travel_braking.md").read_text()
     assert text.startswith("# Bench") and "this machine's" in text
-    assert (tmp_path / "bench_travel_braking.png").read_bytes()[:4] == b"\x89PNG"
+    assert (tmp_path / "bench_travel_braking_1.png").read_bytes()[:4] == b"\x89PNG"
+    assert (tmp_path / "bench_travel_braking_points.png").read_bytes()[:4] == b"\x89PNG"
+    targets = text.split("## Targets")[1].split("##")[0]
+    for what in ("single expression, warm", "single expression, cold", "scalar call",
+                 "closed form / best integrator"):
+        assert what in targets
+    assert all(row.split("|")[5].strip() in ("met", "NOT MET")
+               for row in targets.strip().splitlines()[2:])
+    by_n = text.split("by number of points")[1].split("##")[0]
+    assert "| elastic_force | 30 |" in by_n and "| elastic_force | 60 |" in by_n
+
+
+def test_targets_classify_and_judge():
+    """Which functions are piecewise, and met / not met from given measurements
+    (no timing is asserted)."""
+    from crane_sym import bench_targets as bt
+    kinds = bt.time_functions(registry.get("hoist_startup"))
+    assert kinds["dynamic_coefficient_ramp_hold"] == "piecewise"
+    assert kinds["dynamic_coefficient_instant"] == "single"
+    arrays = [("f", "single", 10**4, 1.1, 1.6), ("g", "single", 10**6, 1.3, 1.2),
+              ("h", "piecewise", 10**5, 2.5, 9.0)]
+    goals = bt.goals("p", arrays, [("f", 1e-6)], [("f", 100, "odeint", 1e-3, 2e-3)])
+    met = {g.target.split(" (")[0]: (g.met, g.worst) for g in goals}
+    assert met["single expression, warm"] == (False, "g at 1e+06")
+    assert met["single expression, cold"] == (False, "f at 1e+04")
+    assert met["piecewise at 1e5, warm"][0] and met["scalar call"][0]
+    assert met["closed form / best integrator"][0] is False          # the integrator won
+    assert "(integrator wins)" in bt.scaling_table([("f", 100, "odeint", 1e-3, 2e-3)])
+    assert bt.goals_table(goals).count("NOT MET") == 3
 
 
 # --- paper 002 -------------------------------------------------------------------

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from crane_sym import codegen, generate, progress, reference, registry
+from crane_sym import generate, module_files, progress, reference, registry
 from crane_sym.cli import EXAMPLES, main, parser
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -49,9 +49,9 @@ def test_generate_writes_an_empty_folder_in_full(tmp_path, files, capsys, monkey
 
 def test_default_directory_is_found_without_the_package(monkeypatch):
     """No generated/__init__.py (or no generated/ at all): the clone's folder."""
-    assert codegen.default_directory() == ROOT / "generated"
+    assert module_files.default_directory() == ROOT / "generated"
     monkeypatch.setattr(importlib.util, "find_spec", lambda name: None)
-    assert codegen.default_directory() == ROOT / "generated"
+    assert module_files.default_directory() == ROOT / "generated"
 
 
 def _spoil(folder: Path, how: str) -> str:
@@ -71,7 +71,7 @@ def _spoil(folder: Path, how: str) -> str:
 @pytest.mark.parametrize("how", ["missing", "stale", "stray"])
 def test_check_names_missing_stale_and_stray_files(how, tmp_path, files, monkeypatch, capsys):
     folder = tmp_path / "generated"
-    codegen.write(files, folder)
+    module_files.write(files, folder)
     (folder / "__pycache__").mkdir()             # not a stray: not a .py file
     name = _spoil(folder, how)
     monkeypatch.setattr(generate, "all_files", lambda: files)
@@ -83,12 +83,12 @@ def test_check_names_missing_stale_and_stray_files(how, tmp_path, files, monkeyp
         "stray": "is not produced by any derivation or scene"}[how]]
     counts = {k: int(n) for n, k in re.findall(r"(\d+) (missing|stale|stray)", captured.err)}
     assert counts == {k: int(k == how) for k in ("missing", "stale", "stray")}
-    found = codegen.compare(files, folder)
-    assert not found.ok and codegen.stale(files, folder) == ([] if how == "stray" else [name])
+    found = module_files.compare(files, folder)
+    assert not found.ok and module_files.stale(files, folder) == ([] if how == "stray" else [name])
 
 
 def test_shipped_generated_folder_is_fresh_and_has_no_stray_file(files):
-    assert codegen.compare(files, codegen.default_directory()).ok
+    assert module_files.compare(files, module_files.default_directory()).ok
 
 
 # --- 7. The command line ---------------------------------------------------------

@@ -125,7 +125,7 @@ def test_cyrillic_inside_mathtext_renders():
         _draw(fig)                               # the check can fail: a Tamil letter
 
 
-def test_bench_plot_splits_into_figures_of_at_most_four_panels(tmp_path, monkeypatch):
+def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
     from crane_sym.bench_report import plot
     from crane_sym.bench_rows import GENERATED, INTEGRATOR, BenchRow
     rows = [BenchRow("demo", f"f{k}", method, 1e-3 * (1 + j), 100, err, 1.0, err, kind=kind)
@@ -138,14 +138,14 @@ def test_bench_plot_splits_into_figures_of_at_most_four_panels(tmp_path, monkeyp
     monkeypatch.setattr(plots, "save", lambda fig, path, dpi=120: made.append(fig)
                         or save(fig, path, dpi))
     paths = plot(rows, tmp_path / "bench_demo.png", "demo")
-    assert paths == [tmp_path / "bench_demo_1.png", tmp_path / "bench_demo_2.png"]
+    assert paths == [tmp_path / f"bench_demo_{k}.png" for k in (1, 2, 3)]
     assert all(p.read_bytes()[:4] == b"\x89PNG" for p in paths)
-    assert [sum(ax.get_visible() for ax in f.get_axes()) for f in made] == [3, 3]
-    assert [f.get_suptitle() for f in made] == ["demo, 1 of 2", "demo, 2 of 2"]
+    assert [sum(ax.get_visible() for ax in f.get_axes()) for f in made] == [2, 2, 2]
+    assert [f.get_suptitle() for f in made] == [f"demo, {k} of 3" for k in (1, 2, 3)]
     for fig in made:                             # the legend lies below the panels
         renderer = _draw(fig)
         (legend,) = fig.legends
         box = legend.get_window_extent(renderer)
         assert not any(box.overlaps(ax.get_window_extent(renderer))
                        for ax in fig.get_axes() if ax.get_visible())
-    assert plot(rows[:12], tmp_path / "bench_four.png", "four") == [tmp_path / "bench_four.png"]
+    assert plot(rows[:6], tmp_path / "bench_two.png", "two") == [tmp_path / "bench_two.png"]

@@ -54,8 +54,8 @@ def test_scene_module_is_smaller_and_takes_time_only(scene):
 def test_shipped_scene_modules_are_generated_and_fresh(scene):
     files = specialize.shipped_scene_modules()
     assert "scene_overhead_crane_50t.py" in files
-    from crane_sym import codegen
-    on_disk = codegen.default_directory() / "scene_overhead_crane_50t.py"
+    from crane_sym import module_files
+    on_disk = module_files.default_directory() / "scene_overhead_crane_50t.py"
     assert on_disk.read_text() == files["scene_overhead_crane_50t.py"]
 
 

@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import codegen, registry
+from crane_sym import codegen, module_files, registry
 from crane_sym.cli import main
 from crane_sym.reference import accuracy
 
@@ -167,7 +167,7 @@ def test_generate_is_deterministic_and_fresh(derivation):
     tests/test_cli.py and, in a fresh process, by `generate --check` in CI)."""
     first = codegen.render_module(derivation)
     assert codegen.render_module(derivation) == first
-    assert (codegen.default_directory() / f"{ID}.py").read_text(encoding="utf-8") == first
+    assert (module_files.default_directory() / f"{ID}.py").read_text(encoding="utf-8") == first
 
 
 def test_generated_module_imports_numpy_only():
@@ -179,7 +179,7 @@ def test_generated_module_imports_numpy_only():
 
 
 def test_generated_header_names_source_labels_order_and_sympy_version():
-    text = (codegen.default_directory() / f"{ID}.py").read_text()
+    text = (module_files.default_directory() / f"{ID}.py").read_text()
     head = text.split('"""')[1]
     assert f"crane_sym.derivations.{ID}" in head and "000_4ef6efc8a81a3b06.txt" in head
     assert "elastic_force(t, m1, m2, c, P_t, W) -> [N]    eq (14)" in head

@@ -1,0 +1,64 @@
+"""NumPy kernels that evaluate a piecewise function window by window.
+
+The generated function marks once which points fall in which window (one
+boolean pass per condition), then evaluates each window's formula on its own
+points only and writes it into the output buffer. Where the points of a window
+are contiguous (a sorted time array, windows with scalar edges) a window is a
+slice: a view, no gather and no scatter. Ordinary functions, tested in
+``tests/test_cell_kernels.py``; the code generator copies the ones a module
+calls (``DEPENDS``), so generated modules need NumPy alone.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+
+def _selector(mask):
+    """The flat positions where ``mask`` (1-D bool) holds: None if none, a
+    slice if they are contiguous, else an index array."""
+    n = int(np.count_nonzero(mask))
+    if n == 0:
+        return None
+    first = int(np.argmax(mask))
+    if n == mask.size or mask[first:first + n].all():
+        return slice(first, first + n)
+    return np.flatnonzero(mask)
+
+
+def _cells(shape, choices):
+    """Selectors over the flattened broadcast ``shape``, one per combination of
+    branches: ``choices`` lists, per piecewise, its conditions in order (the
+    last branch, the rest, left out); a point takes the first branch whose
+    condition holds. Combinations in row-major order (the first piecewise
+    varies slowest)."""
+    size = int(np.prod(shape, dtype=np.int64))
+    cells = [np.ones(size, dtype=bool)]
+    for conditions in choices:
+        rest = np.ones(size, dtype=bool)
+        branches = []
+        for condition in conditions:
+            mask = np.broadcast_to(condition, shape).reshape(-1) & rest
+            rest &= ~mask
+            branches.append(mask)
+        branches.append(rest)
+        cells = [cell & branch for cell in cells for branch in branches]
+    return [_selector(cell) for cell in cells]
+
+
+def _at(where, shape, *values):
+    """``values`` on the points ``where`` (a selector of ``_cells``): arrays
+    broadcast to ``shape``, flattened and selected; scalars as they are."""
+    return tuple(v if np.ndim(v) == 0 else np.broadcast_to(v, shape).reshape(-1)[where]
+                 for v in values)
+
+
+def _put(out, where, value):
+    """Write ``value`` into ``out`` at the flat positions ``where``."""
+    if out.flags.c_contiguous:
+        out.reshape(-1)[where] = value
+    else:
+        out.flat[where] = value
+
+
+#: kernel -> kernels it calls, so a module carries only what it uses.
+DEPENDS = {"_selector": (), "_cells": ("_selector",), "_at": (), "_put": ()}

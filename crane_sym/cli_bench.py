@@ -1,0 +1,144 @@
+"""`crane-sym bench`: speed against error of the generated code and the SciPy
+alternatives, the targets table, piecewise-linear runs, sampled loads and
+(with ``--sweep``) design sweeps."""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+from typing import Sequence
+
+from . import cli_sweep, registry
+
+
+def _ids(names: Sequence[str]) -> list[str]:
+    return [registry.resolve(n) for n in names] if names else registry.ids()
+
+
+def _machine() -> str:
+    import platform
+
+    import numpy
+    import scipy
+    return (f"{platform.machine()} {platform.processor() or platform.system()}, "
+            f"Python {platform.python_version()}, NumPy {numpy.__version__}, "
+            f"SciPy {scipy.__version__}")
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    """Speed against error of the generated functions and the SciPy alternatives."""
+    from . import bench, bench_targets as bt, scenes
+    from .bench_report import as_markdown, headline, not_applicable, plot, plot_scaling
+    out_dir = Path(args.out)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    if args.sweep:
+        cli_sweep.run_bench(out_dir, args.format == "json")
+        if not args.ids:                   # `bench --sweep` alone: the sweep bench only
+            return 0
+    everything, goals = [], []
+    rtols = args.rtols or (bench.QUICK_RTOLS if args.quick else bench.RTOLS)
+    sizes = args.sizes or (bt.QUICK_SIZES if args.quick else bt.SIZES)
+    compare = args.compare_points or (bt.QUICK_COMPARE_POINTS if args.quick
+                                      else bt.COMPARE_POINTS)
+    for i in _ids(args.ids):
+        chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
+                  if s.derivation == i and not s.load_table and "duration" in s.options]
+        d = registry.get(i)
+        if not chosen or not d.outputs:
+            print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)
+            continue
+        values = bench.grid_values(d, chosen)
+        duration = max(s.options["duration"] for s in chosen)
+        start = time.perf_counter()
+        rows = bench.bench(d, values, duration, points=args.points,
+                           methods=args.methods or bench.METHODS, rtols=rtols)
+        big = bench.throughput(d, values, duration, points=args.throughput_points)
+        everything += rows + big
+        arrays = bt.array_ratios(d, values, duration, sizes)
+        scalars = bt.scalar_call(d, values, duration)
+        scaled = bt.scaling(d, values, duration, rows, compare)
+        goals += bt.goals(i, arrays, scalars, scaled)
+        sized = [line for s in chosen
+                 for line in bench.scene_comparison(
+                     d, s, points=min(args.throughput_points, 200_000))]
+        heads = headline(rows)
+        skipped = not_applicable(d, rows)
+        md = out_dir / f"bench_{i}.md"
+        lines = [f"# Bench: {i}", "",
+                 f"Scenes {', '.join(s.name for s in chosen)}; {args.points} seeded times on "
+                 f"[0, {duration:g}] s; time-free functions on {args.points} seeded parameter "
+                 "sets (each scene value times 2^U(-1, 1)). Absolute times are this machine's "
+                 f"({_machine()}); every ratio comes from this one run "
+                 f"({time.perf_counter() - start:.0f} s).", "",
+                 *[f"- {h}" for h in heads], "",
+                 "## Targets", "", bt.goals_table([g for g in goals if g.paper == i]), "",
+                 "## Closed form against the best tuned integrator, by number of points",
+                 "", bt.scaling_table(scaled), "",
+                 "## Against one np.cos over the same array (warm: repeated calls; cold: "
+                 "a first call on a fresh array)", "", bt.arrays_table(arrays), "",
+                 "Scalar calls (Python floats): " + ", ".join(
+                     f"{f} {sec * 1e6:.2f} µs" for f, sec in scalars), "",
+                 "## Targets that do not apply", "",
+                 "| function | target | why |", "| --- | --- | --- |",
+                 *[f"| {f} | {what} | {why} |" for f, what, why in skipped], "",
+                 "## Scene modules against the general module", "",
+                 *[f"- {s}" for s in sized],
+                 "", f"## Throughput on {args.throughput_points} points against one np.cos",
+                 "", as_markdown(big), "", "## Every function and alternative", "",
+                 as_markdown(rows), ""]
+        md.write_text("\n".join(lines), encoding="utf-8")
+        pngs = plot(rows, out_dir / f"bench_{i}.png",
+                    f"{i}: time against error ({args.points} points, this machine)")
+        pngs += plot_scaling(scaled, out_dir / f"bench_{i}_points.png",
+                             f"{i}: best tuned integrator / closed form against N")
+        if args.format == "table":
+            print("\n".join(lines[:5 + len(heads)]))
+            print(f"wrote {md} and {', '.join(map(str, pngs))}")
+    if goals and args.format == "table":
+        print("\n## Targets (this run)\n")
+        print(bt.goals_table(goals))
+    for i in _ids(args.ids):
+        if registry.get(i).tabulated:
+            _bench_piecewise(i, out_dir, args.points, args.format == "table")
+    if args.sampled:
+        _bench_sampled(out_dir, args.format == "table")
+    if args.format == "json":
+        print(json.dumps(bench.as_dicts(everything), indent=2))
+    return 0
+
+
+def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
+    """Piecewise-linear runs in closed form against solve_ivp with events."""
+    from .bench_piecewise import scene_sections
+    start = time.perf_counter()
+    sections = scene_sections(i, points)
+    text = "\n".join([f"# Bench: {i}, piecewise-linear runs against solve_ivp", "",
+                      f"Absolute times are this machine's ({_machine()}); every ratio comes "
+                      f"from this one run ({time.perf_counter() - start:.0f} s).", "",
+                      *sections])
+    path = out_dir / f"bench_piecewise_{i}.md"
+    path.write_text(text, encoding="utf-8")
+    if show:
+        print(text)
+        print(f"wrote {path}")
+
+
+def _bench_sampled(out_dir: Path, show: bool) -> None:
+    """Sampled-load Duhamel responses against the closed forms (issue 5, item 5)."""
+    from .bench_sampled import accuracy_markdown, as_markdown, sampled_accuracy, \
+        sampled_comparison
+    start = time.perf_counter()
+    speed, accuracy = as_markdown(sampled_comparison()), accuracy_markdown(sampled_accuracy())
+    text = "\n".join([
+        "# Bench: loads sampled on a grid (crane_sym.sampled_load)", "",
+        f"N = 1e5 samples; exact references by mpmath (50 digits). Absolute times are this "
+        f"machine's ({_machine()}); ratios come from this one run "
+        f"({time.perf_counter() - start:.0f} s).", "", "## Speed against the closed form", "",
+        speed, "", "## Accuracy on loads with a closed form", "", accuracy, ""])
+    path = out_dir / "bench_sampled.md"
+    path.write_text(text, encoding="utf-8")
+    if show:
+        print(text)
+        print(f"wrote {path}")

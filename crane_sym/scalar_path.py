@@ -1,0 +1,74 @@
+"""The scalar fast path of a generated function.
+
+A call on plain numbers (Python or NumPy floats, ints) skips the array
+machinery: its checks are plain comparisons, its arithmetic is the ``math``
+module on floats. A failed check falls through to the array path, which
+raises the error that names the parameter, and so does a ``math`` error (a
+zero division, a domain error), where the array path gives what NumPy gives
+(inf, NaN). Only expressions of elementary
+functions and exact arithmetic kernels (``_diff_of_products``) get one; an
+expression with any other node (a Taylor helper, a phase pair) does not.
+"""
+from __future__ import annotations
+
+from typing import Sequence
+
+import sympy as sp
+from sympy.printing.pycode import PythonCodePrinter
+
+__all__ = ["fast_path"]
+
+#: What a checked argument must satisfy, as a chained comparison (1e999 is inf).
+_BOUNDS = {"positive": "0 < {} < 1e999", "nonnegative": "0 <= {} < 1e999"}
+#: Kernels that are plain arithmetic, so they run on Python floats.
+_ARITHMETIC = ("diff_of_products",)
+
+
+class _MathPrinter(PythonCodePrinter):
+    """Python source with ``math`` functions; doubles in full precision."""
+
+    def _print_Float(self, expr: sp.Float) -> str:
+        return repr(float(expr))
+
+    def _print_joined_sqrt(self, expr: sp.Basic) -> str:
+        return f"math.sqrt({self._print(expr.args[0])})"
+
+    def _print_Function(self, expr: sp.Basic) -> str:
+        name = type(expr).__name__
+        if name in _ARITHMETIC:
+            return f"_{name}(" + ", ".join(self._print(a) for a in expr.args) + ")"
+        return super()._print_Function(expr)
+
+
+def fast_path(entries: Sequence, assignments: Sequence[tuple[sp.Symbol, sp.Expr]],
+              value: sp.Expr) -> list[str] | None:
+    """Statements (unindented) that return ``value`` for scalar arguments, or
+    None when an expression has no ``math`` form. ``entries`` are the
+    arguments' symbol-table entries (name, sign), ``assignments`` the
+    parameter-only names the expression uses, in order."""
+    if not entries:                        # nothing to check: the array path is as short
+        return None
+    printer = _MathPrinter({"fully_qualified_modules": True, "inline": True})
+    try:
+        body = [f"{s} = {printer.doprint(v)}" for s, v in assignments]
+        result = printer.doprint(value)
+    except Exception:                      # a node with no math form: no fast path
+        return None
+    plain = [f"        and (type({e.name}) in (float, int) or type({e.name}) is np.float64)"
+             for e in entries]
+    checks = [""]
+    for e in entries:                      # clauses joined, lines of at most ~84
+        clause = _BOUNDS.get(e.sign, "-1e999 < {} < 1e999").format(e.name)
+        if checks[-1] and len(checks[-1]) + len(clause) > 80:
+            checks.append("and " + clause)
+        else:
+            checks[-1] += (" and " if checks[-1] else "") + clause
+    return (["if (out is None", *plain[:-1], plain[-1] + "):",
+             f"    if ({checks[0]}" + ("" if len(checks) > 1 else "):"),
+             *[f"            {c}" + ("):" if k == len(checks) - 2 else "")
+               for k, c in enumerate(checks[1:])],
+             "        try:    # a failed check or a math error: the array path decides",
+             *[f"            {line}" for line in body],
+             f"            return np.float64({result})",
+             "        except (ArithmeticError, ValueError):",
+             "            pass"])
