@@ -151,13 +151,16 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     the peak), log-log, one panel per function that has alternatives; one
     colour per method, one line style per coordinate system and right-hand
     side, the legend below the panels. Drawn at page width with 9-pt type, two
-    panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more."""
+    panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more;
+    none when no function has an alternative (paper 001's factors)."""
     from matplotlib import colormaps
 
     from .plots import chunks, numbered, save
 
     names = [n for n in dict.fromkeys(r.function for r in rows)
              if any(r.function == n and r.kind in ALTERNATIVES for r in rows)]
+    if not names:                        # no function has an alternative: no plot
+        return []
     families = sorted({_family(r.method) for r in rows if r.kind in ALTERNATIVES})
     methods = sorted({f.split(" [")[0] for f in families})
     systems = sorted({f.split(" [")[-1] for f in families})

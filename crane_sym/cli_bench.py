@@ -95,7 +95,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
                              f"{i}: best tuned integrator / closed form against N")
         if args.format == "table":
             print("\n".join(lines[:5 + len(heads)]))
-            print(f"wrote {md} and {', '.join(map(str, pngs))}")
+            print(f"wrote {md}" + (f" and {', '.join(map(str, pngs))}" if pngs else ""))
     if goals and args.format == "table":
         print("\n## Targets (this run)\n")
         print(bt.goals_table(goals))

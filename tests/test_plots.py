@@ -149,3 +149,6 @@ def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
         assert not any(box.overlaps(ax.get_window_extent(renderer))
                        for ax in fig.get_axes() if ax.get_visible())
     assert plot(rows[:6], tmp_path / "bench_two.png", "two") == [tmp_path / "bench_two.png"]
+    alone = [r for r in rows if r.kind == GENERATED]      # nothing to compare with
+    assert plot(alone, tmp_path / "bench_none.png", "none") == []
+    assert not (tmp_path / "bench_none.png").exists()
