@@ -322,14 +322,16 @@ def render_function(out: Output, table: SymbolTable,
              f"        [{out.unit}], " + (f"shape {tuple(shape)} followed by the broadcast "
                                         "shape of the arguments." if shape else
                                         "broadcast over the arguments."),
+             *(["", "    Raises", "    ------", "    ValueError",
+                *[f"        unless {what}." for _, what in out.requires]] if out.requires else []),
              '    """']
     alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom} \
         if shape is None else {}
     if shape is None and not phases and not split:     # plain numbers: math, no arrays
         named = list(subs) + [(k, v) for (k, _), v in zip(assignments, reduced[:-1])
                               if k not in alias]
-        lines += ["    " + s for s in fast_path(entries, named, reduced[-1].xreplace(alias))
-                  or []]
+        lines += ["    " + s for s in fast_path(entries, named, reduced[-1].xreplace(alias),
+                                                 [e for e, _ in out.requires]) or []]
     for e in entries:
         what = f"{e.description}, {e.unit}".replace('"', "'")
         lines.append(f"    {e.name:<{width}} = _checked({e.name!r}, {e.name}, "
@@ -338,6 +340,7 @@ def render_function(out: Output, table: SymbolTable,
                          width=80, break_long_words=False, break_on_hyphens=False)
     lines.append("    shape = _broadcast(" + call[0])
     lines += [" " * 23 + rest for rest in call[1:]]
+    lines += [f"    _required({printer.doprint(e)}, {what!r})" for e, what in out.requires]
     # A scalar that CSE reduced to a bare name is inlined, not re-assigned (alias).
     for sym, value in phases:
         lines.append(f"    {sym} = {_DoubleDoublePrinter().doprint(value)}")

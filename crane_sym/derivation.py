@@ -53,7 +53,11 @@ class Output:
     """A derived quantity to emit as a generated NumPy function.
 
     ``args`` fixes the argument order of the generated function; every free
-    symbol of ``expr`` must be among them.
+    symbol of ``expr`` must be among them. ``requires`` lists conditions
+    between arguments that a sign per argument cannot state, each as
+    (expression that must be > 0, the condition in words), e.g.
+    (ω0 − ωn, "omega_0 > omega_n"): the generated function refuses the
+    arguments that break one, rather than return a NaN.
     """
 
     name: str
@@ -62,6 +66,7 @@ class Output:
     labels: tuple[str, ...]
     summary: str
     unit: str
+    requires: tuple[tuple[sp.Expr, str], ...] = ()
 
     def __post_init__(self) -> None:
         missing = sorted(str(s) for s in self.expr.free_symbols - set(self.args))

@@ -358,6 +358,13 @@ def _phase_sum(t, edges, first, powers, sigmas, omegas, cos_amps, sin_amps, cons
     return result.reshape(t.shape)
 
 
+def _required(value, what):
+    """ValueError unless ``value`` > 0 at every point: a condition between
+    arguments (``what``) without which the formula has no real value."""
+    if not np.all(np.asarray(value) > 0):
+        raise ValueError(f"the arguments must satisfy {what}")
+
+
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {
     "_checked": (), "_broadcast": (), "_out": (), "_into": ("_out",),
@@ -372,7 +379,7 @@ DEPENDS = {
     "_sin_phase": ("_phase",), "_cos_phase": ("_phase",),
     "_compensated_cumsum": (),
     "_matrix": (),
-    "_phase_sum": (),
+    "_phase_sum": (), "_required": (),
     "_taylor_tail": (),
     "_taylor_remainder": ("_taylor_tail",),
     "_cos_remainder": ("_taylor_remainder",), "_sin_remainder": ("_taylor_remainder",),

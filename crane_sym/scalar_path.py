@@ -41,11 +41,13 @@ class _MathPrinter(PythonCodePrinter):
 
 
 def fast_path(entries: Sequence, assignments: Sequence[tuple[sp.Symbol, sp.Expr]],
-              value: sp.Expr) -> list[str] | None:
+              value: sp.Expr, requires: Sequence[sp.Expr] = ()) -> list[str] | None:
     """Statements (unindented) that return ``value`` for scalar arguments, or
     None when an expression has no ``math`` form. ``entries`` are the
     arguments' symbol-table entries (name, sign), ``assignments`` the
-    parameter-only names the expression uses, in order."""
+    parameter-only names the expression uses, in order; ``requires`` are
+    expressions that must be > 0 (an argument set that breaks one takes the
+    array path, which names the condition)."""
     if not entries:                        # nothing to check: the array path is as short
         return None
     printer = _MathPrinter({"fully_qualified_modules": True, "inline": True})
@@ -56,9 +58,13 @@ def fast_path(entries: Sequence, assignments: Sequence[tuple[sp.Symbol, sp.Expr]
         return None
     plain = [f"        and (type({e.name}) in (float, int) or type({e.name}) is np.float64)"
              for e in entries]
+    try:
+        clauses = [_BOUNDS.get(e.sign, "-1e999 < {} < 1e999").format(e.name) for e in entries]
+        clauses += [f"{printer.doprint(r)} > 0" for r in requires]
+    except Exception:
+        return None
     checks = [""]
-    for e in entries:                      # clauses joined, lines of at most ~84
-        clause = _BOUNDS.get(e.sign, "-1e999 < {} < 1e999").format(e.name)
+    for clause in clauses:                 # clauses joined, lines of at most ~84
         if checks[-1] and len(checks[-1]) + len(clause) > 80:
             checks.append("and " + clause)
         else:

@@ -19,7 +19,7 @@ from . import registry
 from .codegen import render_module
 from .derivation import Derivation, Output, SpecializedLoad, TabulatedOutput
 from .phase_table import PhaseTable
-from .scenes import Scene, list_scenes, load_scene
+from .scenes import Scene, SceneError, list_scenes, load_scene
 from .symbols import STATE, TIME, SymbolTable
 
 __all__ = ["module_name", "operation_count", "render_scene_module", "scene_files",
@@ -60,10 +60,20 @@ def specialize(d: Derivation, scene: Scene) -> list[Output]:
         if name in tabulated_names(d):
             continue                     # tabulated_outputs() makes those
         out = d.output(name)
-        expr = out.expr.xreplace({s: v for s, v in values.items() if s in out.args})
+        fold = {s: v for s, v in values.items() if s in out.args}
+        expr = out.expr.xreplace(fold)
         args = tuple(a for a in out.args if a in keep or a not in values)
+        requires = []
+        for condition, what in out.requires:      # folded in: checked now, not left in
+            folded = condition.xreplace(fold)
+            if folded.free_symbols & set(args):
+                requires.append((folded, what))
+            elif not folded > 0:
+                raise SceneError(f"scene {scene.name!r}: its values break {what} "
+                                 f"(needed by {out.name})")
         outputs.append(Output(out.name, expr, args, out.labels,
-                              f"{out.summary} Specialized to scene {scene.name!r}.", out.unit))
+                              f"{out.summary} Specialized to scene {scene.name!r}.", out.unit,
+                              tuple(requires)))
     return outputs
 
 

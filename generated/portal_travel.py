@@ -100,6 +100,13 @@ def _into(out, shape, result):
     return out
 
 
+def _required(value, what):
+    """ValueError unless ``value`` > 0 at every point: a condition between
+    arguments (``what``) without which the formula has no real value."""
+    if not np.all(np.asarray(value) > 0):
+        raise ValueError(f"the arguments must satisfy {what}")
+
+
 def _involute(a):
     """inv a = tan a - a, without the cancellation of tan a - a at small a.
 
@@ -866,12 +873,18 @@ def startup_slope_ratio(lambda_p, omega_0, omega_n, *, out=None):
     -------
     ndarray
         [1], broadcast over the arguments.
+
+    Raises
+    ------
+    ValueError
+        unless omega_0 > omega_n (the no-load speed above the rated one).
     """
     if (out is None
             and (type(lambda_p) in (float, int) or type(lambda_p) is np.float64)
             and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
-        if (0 < lambda_p < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+        if (0 < lambda_p < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999
+                and omega_0 - omega_n > 0):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(omega_0**(1/3)*(1/(omega_0 - omega_n))**(1/3)/lambda_p**(1/3))
             except (ArithmeticError, ValueError):
@@ -880,6 +893,7 @@ def startup_slope_ratio(lambda_p, omega_0, omega_n, *, out=None):
     omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
     omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
     shape = _broadcast(lambda_p=lambda_p, omega_0=omega_0, omega_n=omega_n)
+    _required(omega_0 - omega_n, 'omega_0 > omega_n (the no-load speed above the rated one)')
     return _into(out, shape, omega_0**(1/3)*(1/(omega_0 - omega_n))**(1/3)/lambda_p**(1/3))
 
 

@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from crane_sym import registry
 from crane_sym.bench_piecewise import integrate_hybrid
 from crane_sym.derivations.portal_travel import published_loads as pl
 from crane_sym.derivations.portal_travel.startup import (CHOSEN, FORWARD, LINEAR, STAND,
@@ -177,3 +178,29 @@ def test_walkthrough_has_the_startup_model(capsys):
                    "start-up model, F_max, backlash 2pi", "003-startup-unstated-parameters",
                    "fig12_startup_backlash", "chosen, not fitted"):
         assert needle in text, needle
+
+
+@pytest.mark.parametrize("omega_n", [1000 * np.pi / 30, 1100 * np.pi / 30,
+                                     np.array([900.0, 1100.0]) * np.pi / 30])
+def test_slope_ratio_refuses_a_rated_speed_at_or_above_no_load(omega_n):
+    """q = (ω0/(λ(ω0 − ωn)))^(1/3) has no real value for ωn ≥ ω0: an error
+    naming the condition, on the scalar and the array path, never a NaN."""
+    from crane_sym.generated import portal_travel as gen
+    with pytest.raises(ValueError, match="omega_0 > omega_n"):
+        gen.startup_slope_ratio(2.0, 1000 * np.pi / 30, omega_n)
+    assert gen.startup_slope_ratio(2.0, 1000 * np.pi / 30, 935 * np.pi / 30) > 1
+
+
+def test_a_scene_that_folds_in_a_broken_condition_is_refused(tmp_path):
+    """Values folded into a scene module are checked when it is generated."""
+    from crane_sym.derivation import Output
+    from crane_sym.specialize import specialize
+    d = registry.get("portal_travel")
+    scene = load_scene(SCENE)
+    broken = replace(scene, outputs=("startup_slope_ratio",),
+                     parameters={**scene.parameters,
+                                 "omega_n": scene.parameters["omega_0"] * 1.01})
+    with pytest.raises(SceneError, match="omega_0 > omega_n"):
+        specialize(d, broken)
+    kept = specialize(d, replace(broken, parameters=scene.parameters))
+    assert isinstance(kept[0], Output) and kept[0].requires == ()

@@ -118,7 +118,9 @@ def startup_outputs(rhs) -> list[Output]:
                "Slope beta_1 of the first start characteristic of one side.", "N*s/m"),
         Output("startup_slope_ratio", ratio, (lam, omega_0, omega_n),
                ("start-up, slope ratio",), "Ratio q of the slopes of consecutive "
-               "characteristics (three steps to the natural one).", "1"),
+               "characteristics (three steps to the natural one).", "1",
+               ((omega_0 - omega_n, "omega_0 > omega_n (the no-load speed above the rated "
+                                    "one)"),)),
         Output("startup_link_damping", rhs("start-up, link damping").subs(rim),
                (zeta, c_l) + drive, ("start-up, link damping",),
                "Damping coefficient b of a link.", "N*s/m"),
