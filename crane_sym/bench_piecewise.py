@@ -20,7 +20,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .phase_table import HybridRun, PhaseTable
-from .piecewise_linear import PiecewiseResult, _closed_form_cached, _closed_form_numeric
+from .piecewise_linear import PiecewiseResult, _closed_form_cached, _closed_form_numeric, by_phase
 
 __all__ = ["IntegratedRun", "PiecewiseRow", "as_markdown", "bench_run", "integrate_hybrid",
            "mp_reference", "RTOLS", "scene_sections", "summary"]
@@ -36,16 +36,14 @@ class IntegratedRun:
     phases: list[tuple[float, float, Hashable, Any]] = field(default_factory=list)
 
     def _each(self, times: np.ndarray):
-        starts = np.array([p[0] for p in self.phases])
-        which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
-        for i, (_, _, mode, sol) in enumerate(self.phases):
-            mask = which == i
-            if np.any(mask):
-                yield mask, mode, sol(times[mask])
+        for i, mask in by_phase([p[0] for p in self.phases], times):
+            _, _, mode, sol = self.phases[i]
+            yield mask, mode, sol(times[mask])
 
     def state(self, times: np.ndarray) -> np.ndarray:
         """x at ``times``, shape ``times.shape + (n,)``."""
-        out = np.empty(np.shape(times) + (len(self.phases[0][3](0.0 + self.phases[0][0])),))
+        t0, _, _, sol = self.phases[0]
+        out = np.empty(np.shape(times) + sol(t0).shape)
         for mask, _, x in self._each(times):
             out[mask] = x.T
         return out
@@ -105,7 +103,7 @@ def mp_reference(run: HybridRun, result: PiecewiseResult, times: np.ndarray,
     out = np.empty(np.shape(times))
     with mpmath.workdps(dps):
         z = mpmath.matrix(list(map(mpmath.mpf, run.x0)) + [1])
-        for seg in result.segments:
+        for number, seg in enumerate(result.segments):
             A, b = run.system.matrices(seg.mode)
             n = len(b)
             M = mpmath.zeros(n + 1, n + 1)
@@ -120,12 +118,10 @@ def mp_reference(run: HybridRun, result: PiecewiseResult, times: np.ndarray,
                 value = sum(mpmath.mpf(float(w[j])) * zt[j] for j in range(n)) + k
                 out[i] = float(value / run.scale)
             z = mpmath.expm(M * (mpmath.mpf(seg.t1) - mpmath.mpf(seg.t0))) * z
-            if seg is not result.segments[-1]:
-                nxt = result.segments[result.segments.index(seg) + 1]
-                x = np.array([float(z[j]) for j in range(n)])
-                changed = nxt.x0 != x
-                for j in np.flatnonzero(changed):  # what the switch rule set (a stuck speed)
-                    if abs(nxt.x0[j] - x[j]) > 1e-9 * (1 + abs(x[j])):
+            if number + 1 < len(result.segments):
+                nxt = result.segments[number + 1]
+                for j in range(n):        # what the switch rule set (a stuck speed)
+                    if abs(nxt.x0[j] - float(z[j])) > 1e-9 * (1 + abs(float(z[j]))):
                         z[j] = mpmath.mpf(float(nxt.x0[j]))
     return out
 

@@ -23,7 +23,8 @@ from typing import Callable, Hashable, Sequence
 import numpy as np
 
 from .kernels import _phase_sum
-from .piecewise_linear import HybridSystem, PiecewiseResult, Segment, first_crossing, simulate
+from .piecewise_linear import (HybridSystem, PiecewiseResult, Segment, by_phase, first_crossing,
+                               simulate)
 
 __all__ = ["HybridRun", "PhaseTable", "largest", "stationary_times", "tabulate", "values"]
 
@@ -115,13 +116,10 @@ def values(result: PiecewiseResult, times: np.ndarray, affine: Affine) -> np.nda
     """w·x + k at ``times`` (inside the run), (w, k) = ``affine(mode)`` of each phase."""
     times = np.asarray(times, dtype=float)
     out = np.empty(times.shape)
-    starts = np.array([s.t0 for s in result.segments])
-    which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
-    for i, seg in enumerate(result.segments):
-        mask = which == i
-        if np.any(mask):
-            w, k = affine(seg.mode)
-            out[mask] = seg.state(times[mask]) @ np.asarray(w, float) + k
+    for i, mask in by_phase([s.t0 for s in result.segments], times):
+        seg = result.segments[i]
+        w, k = affine(seg.mode)
+        out[mask] = seg.state(times[mask]) @ np.asarray(w, float) + k
     return out
 
 

@@ -51,13 +51,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Hashable, Protocol, Sequence
+from typing import Hashable, Iterator, Protocol, Sequence
 
 import numpy as np
 import sympy as sp
 from scipy.optimize import brentq
 
-__all__ = ["ClosedForm", "Guard", "HybridSystem", "PiecewiseResult", "Segment",
+__all__ = ["ClosedForm", "Guard", "HybridSystem", "PiecewiseResult", "Segment", "by_phase",
            "closed_form", "first_crossing", "simulate"]
 
 
@@ -384,14 +384,20 @@ class PiecewiseResult:
     def state(self, times: np.ndarray) -> np.ndarray:
         """x at ``times`` (inside [0, end]), shape ``times.shape + (n,)``."""
         times = np.asarray(times, dtype=float)
-        starts = np.array([s.t0 for s in self.segments])
-        which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
         out = np.empty(times.shape + (self.segments[0].form.n,))
-        for i, seg in enumerate(self.segments):
-            mask = which == i
-            if np.any(mask):
-                out[mask] = seg.state(times[mask])
+        for i, mask in by_phase([s.t0 for s in self.segments], times):
+            out[mask] = self.segments[i].state(times[mask])
         return out
+
+
+def by_phase(starts: Sequence[float], times: np.ndarray) -> Iterator[tuple[int, np.ndarray]]:
+    """(i, mask) for each phase i (phases start at ``starts``, in order) that
+    holds some of ``times``; a time before the first start goes to phase 0."""
+    which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
+    for i in range(len(starts)):
+        mask = which == i
+        if np.any(mask):
+            yield i, mask
 
 
 def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: float,
