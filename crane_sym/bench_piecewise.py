@@ -20,7 +20,8 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from .phase_table import HybridRun, PhaseTable
-from .piecewise_linear import PiecewiseResult, _closed_form_cached, _closed_form_numeric, by_phase
+from .closed_forms import clear_cache
+from .piecewise_linear import PiecewiseResult, by_phase
 
 __all__ = ["IntegratedRun", "PiecewiseRow", "as_markdown", "bench_run", "integrate_hybrid",
            "mp_reference", "RTOLS", "scene_sections", "summary"]
@@ -153,7 +154,7 @@ def bench_run(run: HybridRun, points: int = 2000, reference_points: int = 400,
               module_function: Any = None) -> tuple[list[PiecewiseRow], PhaseTable]:
     """Rows for the closed form (event search and table; evaluation of ``points``
     times; the scene module's function if given) and every integrator."""
-    _closed_form_cached.cache_clear(), _closed_form_numeric.cache_clear()
+    clear_cache()
     cold_s, _ = _best(run.solve, 1)                   # SymPy's Jordan forms included
     solve_s, result = _best(run.solve, repeats)
     table_s, table = _best(lambda: run.table(result), repeats)

@@ -5,24 +5,7 @@ instants is linear between the instants at which a contact changes; this
 module solves each phase exactly and finds the switching instants by root
 finding on those closed forms, never by a time-stepping integrator.
 
-Closed form of one phase
-------------------------
-With z = (x, 1), z' = M z and M = [[A, b], [0, 0]], so z(t) = exp(M t) z(0).
-SymPy's exact Jordan decomposition M = P J P⁻¹ (each entry of A and b taken
-as the exact rational of its shortest decimal; P evaluated to 30 digits, then
-inverted in floating point, which is stable where a symbolic inverse of
-nested radicals is not) gives
-
-.. math::
-
-    e^{Mt} = \\sum_{\\text{blocks}} \\sum_j C_{\\lambda, j}\\, \\frac{t^j}{j!} e^{\\lambda t},
-
-and a pair λ = σ ± iω folds into real terms t^j e^{σt} cos ωt and t^j e^{σt} sin ωt
-(:class:`ClosedForm`). Rigid-body modes (λ = 0, Jordan blocks) give the
-polynomial part. Above n = 4 (where exact eigenvalues of arbitrary data become
-costly radicals) the same terms come from numeric eigenvectors of the nonzero,
-simple eigenvalues and the exact nilpotent series on the generalized kernel
-(:func:`closed_form`, ``exact``). Evaluation is NumPy.
+Each phase's exp(Mt) comes from :mod:`crane_sym.closed_forms`.
 
 Events without a skipped crossing
 ---------------------------------
@@ -50,197 +33,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import lru_cache
 from typing import Hashable, Iterator, Protocol, Sequence
 
 import numpy as np
-import sympy as sp
 from scipy.optimize import brentq
+
+from .closed_forms import ClosedForm, closed_form
 
 __all__ = ["ClosedForm", "Guard", "HybridSystem", "PiecewiseResult", "Segment", "by_phase",
            "closed_form", "first_crossing", "simulate"]
-
-
-@dataclass(frozen=True)
-class ClosedForm:
-    """exp(M t) of one phase as Σ_j C_j β_j(t), β_j = t^k e^{σt} {cos, sin}(ωt).
-
-    Attributes
-    ----------
-    n : int
-        Dimension of the state x.
-    powers, sigmas, omegas : ndarray
-        k, σ and ω of each term β_j.
-    sine : ndarray of bool
-        True where β_j carries sin(ωt), False for cos(ωt) (ω = 0: cos).
-    coefficients : ndarray, shape (terms, n + 1, n + 1)
-        The real matrices C_j.
-    """
-
-    n: int
-    powers: np.ndarray
-    sigmas: np.ndarray
-    omegas: np.ndarray
-    sine: np.ndarray
-    coefficients: np.ndarray
-
-    def basis(self, t: np.ndarray) -> np.ndarray:
-        """β_j(t) for every term, shape (terms,) + shape of ``t``."""
-        t = np.asarray(t, dtype=float)[..., None]
-        wave = np.where(self.sine, np.sin(self.omegas * t), np.cos(self.omegas * t))
-        return np.moveaxis(t ** self.powers * np.exp(self.sigmas * t) * wave, -1, 0)
-
-    def state(self, t: np.ndarray | float, x0: np.ndarray) -> np.ndarray:
-        """x(t) from x(0) = ``x0``; shape ``t.shape + (n,)``."""
-        z0 = np.append(np.asarray(x0, dtype=float), 1.0)
-        vectors = self.coefficients @ z0                       # (terms, n + 1)
-        out = np.tensordot(self.basis(t), vectors, axes=(0, 0))
-        return out[..., : self.n]
-
-    def scalar_terms(self, weights: np.ndarray, constant: float,
-                     x0: np.ndarray) -> tuple[np.ndarray, float]:
-        """Coefficients a_j of g(t) = w·x(t) + k = Σ a_j β_j(t) + k."""
-        z0 = np.append(np.asarray(x0, dtype=float), 1.0)
-        return (self.coefficients @ z0)[:, : self.n] @ np.asarray(weights, float), constant
-
-    def derivative_bound(self, amplitudes: np.ndarray, t0: float, t1: float) -> float:
-        """An upper bound of |d/dt Σ a_j β_j| on [t0, t1] (0 ≤ t0 ≤ t1)."""
-        k, s, w = self.powers, self.sigmas, self.omegas
-        grow = np.exp(np.maximum(s * t0, s * t1))
-        poly = np.where(k > 0, k * t1 ** np.maximum(k - 1, 0), 0.0)
-        bound = grow * (poly + (np.abs(s) + w) * t1 ** k)
-        return float(np.sum(np.abs(amplitudes) * bound))
-
-    def second_derivative_bound(self, amplitudes: np.ndarray, t0: float, t1: float) -> float:
-        """An upper bound of |d²/dt² Σ a_j β_j| on [t0, t1] (0 ≤ t0 ≤ t1)."""
-        k, s, w = self.powers, self.sigmas, self.omegas
-        grow = np.exp(np.maximum(s * t0, s * t1))
-        rate = np.abs(s) + w
-        p2 = np.where(k > 1, k * (k - 1) * t1 ** np.maximum(k - 2, 0), 0.0)
-        p1 = np.where(k > 0, 2 * k * rate * t1 ** np.maximum(k - 1, 0), 0.0)
-        bound = grow * (p2 + p1 + rate ** 2 * t1 ** k)
-        return float(np.sum(np.abs(amplitudes) * bound))
-
-
-@lru_cache(maxsize=256)
-def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
-    n = len(b_key)
-    exact = lambda v: sp.Rational(repr(v))  # noqa: E731  (the float's shortest decimal)
-    aug = sp.zeros(n + 1, n + 1)
-    aug[:n, :n] = sp.Matrix(n, n, [exact(v) for v in a_key])
-    aug[:n, n] = sp.Matrix([exact(v) for v in b_key])
-    P, J = aug.jordan_form()
-    Pn = np.array(P.evalf(30).tolist(), dtype=complex)
-    Pinv = np.linalg.inv(Pn)
-    terms: dict[tuple, np.ndarray] = {}
-    i = 0
-    size = n + 1
-    while i < size:                                   # walk the Jordan blocks
-        lam = complex(sp.N(J[i, i], 30))
-        if abs(lam.imag) <= 1e-20 * (1 + abs(lam)):     # a real root printed with radicals
-            lam = complex(lam.real, 0.0)
-        if abs(lam.real) <= 1e-20 * (1 + abs(lam)):
-            lam = complex(0.0, lam.imag)
-        k = 1
-        while i + k < size and J[i + k - 1, i + k] == 1 and J[i + k, i + k] == J[i, i]:
-            k += 1
-        for j in range(k):                            # t^j/j! on the j-th superdiagonal
-            E = np.zeros((size, size), dtype=complex)
-            for r in range(k - j):
-                E[i + r, i + r + j] = 1.0 / float(sp.factorial(j))
-            C = Pn @ E @ Pinv
-            key = (j, lam)
-            terms[key] = terms.get(key, 0) + C
-        i += k
-    powers, sigmas, omegas, sine, coefs = [], [], [], [], []
-    for (j, lam), C in sorted(terms.items(), key=lambda kv: (kv[0][0], kv[0][1].real,
-                                                             kv[0][1].imag)):
-        if lam.imag < 0:
-            continue                                  # folded into its conjugate
-        pair = 2.0 if lam.imag > 0 else 1.0
-        for is_sine, part in ((False, pair * C.real), (True, -pair * C.imag)):
-            if lam.imag == 0 and is_sine:
-                continue
-            powers.append(j), sigmas.append(lam.real), omegas.append(abs(lam.imag))
-            sine.append(is_sine), coefs.append(part)
-    return ClosedForm(n, np.array(powers, float), np.array(sigmas), np.array(omegas),
-                      np.array(sine), np.array(coefs))
-
-
-def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedForm:
-    """The closed form of x' = A x + b (cached).
-
-    Parameters
-    ----------
-    A : (n, n) array-like of numbers
-    b : (n,) array-like of numbers
-    exact : bool, optional
-        True: SymPy's exact Jordan form (entries as exact decimals); cheap for
-        n ≤ 4 (two masses: quadratic eigenvalues), slow for larger systems with
-        arbitrary data. False: numeric eigenvectors of the nonzero eigenvalues
-        (simple, or repeated with a full set of eigenvectors) and the exact
-        nilpotent series on the rest
-        (rigid modes). Default: exact for n ≤ 4, numeric above.
-    """
-    A = np.asarray(A, dtype=float)
-    key = (tuple(map(float, A.ravel())), tuple(map(float, np.ravel(b))))
-    if exact if exact is not None else len(key[1]) <= 4:
-        return _closed_form_cached(*key)
-    return _closed_form_numeric(*key)
-
-
-@lru_cache(maxsize=256)
-def _closed_form_numeric(a_key: tuple, b_key: tuple) -> ClosedForm:
-    """exp(M t) = Σ e^{λt} C_λ over the nonzero eigenvalues, plus Σ_j (N t)^j / j! · Q
-    on the generalized kernel (Q = I − Σ C_λ, N = M Q). C_λ = R (Lᴴ R)⁻¹ Lᴴ from the
-    right and left eigenvectors of λ: a repeated eigenvalue with a full set of
-    eigenvectors (two equal drives) stays numeric; a defective one goes exact."""
-    from scipy.linalg import eig
-
-    n = len(b_key)
-    M = np.zeros((n + 1, n + 1))
-    M[:n, :n] = np.reshape(a_key, (n, n))
-    M[:n, n] = b_key
-    lam, vl, vr = eig(M, left=True, right=True)
-    scale = max(np.abs(lam).max(), 1.0)
-    live = np.flatnonzero(np.abs(lam) > 1e-6 * scale)
-    clusters: list[list[int]] = []                 # equal eigenvalues (symmetric sides)
-    for i in live:
-        near = [c for c in clusters if abs(lam[c[0]] - lam[i]) < 1e-6 * scale]
-        if near:
-            near[0].append(i)
-        else:
-            clusters.append([i])
-    projector = np.zeros((n + 1, n + 1), dtype=complex)
-    powers, sigmas, omegas, sine, coefs = [], [], [], [], []
-    for cluster in clusters:     # projector R (L^H R)^-1 L^H: semisimple clusters only
-        R, L = vr[:, cluster], vl[:, cluster].conj().T
-        gram = L @ R
-        if np.linalg.cond(gram) > 1e8:
-            return _closed_form_cached(a_key, b_key)   # a defective nonzero eigenvalue
-        C = R @ np.linalg.solve(gram, L)
-        projector += C
-        value = np.mean(lam[cluster])
-        if abs(value.imag) < 1e-6 * scale:             # real, or a pair too close to part
-            value = complex(value.real, 0.0)
-        if value.imag < 0:
-            continue
-        pair = 2.0 if value.imag > 0 else 1.0
-        for is_sine, part in ((False, pair * C.real), (True, -pair * C.imag)):
-            if value.imag == 0 and is_sine:
-                continue
-            powers.append(0), sigmas.append(value.real), omegas.append(abs(value.imag))
-            sine.append(is_sine), coefs.append(part)
-    Q = np.eye(n + 1) - projector.real
-    N = M @ Q
-    term = Q.copy()
-    for j in range(n + 1 - live.size):
-        if j:
-            term = N @ term / j
-        powers.append(j), sigmas.append(0.0), omegas.append(0.0)
-        sine.append(False), coefs.append(term.copy())
-    return ClosedForm(n, np.array(powers, float), np.array(sigmas), np.array(omegas),
-                      np.array(sine), np.array(coefs))
 
 
 def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
