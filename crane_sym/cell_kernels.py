@@ -60,5 +60,25 @@ def _put(out, where, value):
         out.flat[where] = value
 
 
+def _blocks(where, size=16384):
+    """``where`` (a selector of ``_cells``) in pieces of at most ``size``
+    points: a cell's temporaries then stay in the cache and below the
+    allocator's mmap threshold, so a call does not page-fault on every new
+    array; none for an empty cell."""
+    if where is None:
+        return ()
+    if isinstance(where, slice):
+        return [slice(i, min(i + size, where.stop)) for i in range(where.start, where.stop, size)]
+    return [where[i:i + size] for i in range(0, where.size, size)]
+
+
+def _cancelled(value, bound):
+    """A selector of the points of the 1-D ``value`` below half its error
+    scale ``bound``, where a fast sum cancels and the cell's own formula is
+    evaluated again (``wave_sums``); None if there is none."""
+    return _selector(np.abs(value) < 0.5 * bound)
+
+
 #: kernel -> kernels it calls, so a module carries only what it uses.
-DEPENDS = {"_selector": (), "_cells": ("_selector",), "_at": (), "_put": ()}
+DEPENDS = {"_selector": (), "_cells": ("_selector",), "_at": (), "_put": (),
+           "_cancelled": ("_selector",), "_blocks": ()}

@@ -26,6 +26,8 @@ from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
 from .scalar_path import fast_path
 from .symbols import TIME, SymbolTable
 from .tabulated import render_tabulated
+from .wave_sums import merge_waves
+from .windows import phase_cos, phase_sin
 
 
 class _Printer(NumPyPrinter):
@@ -66,6 +68,11 @@ class _Printer(NumPyPrinter):
     def _print_Pow(self, expr: sp.Pow, rational: bool = False) -> str:
         if expr.exp == -1:
             return "1/" + self.parenthesize(expr.base, 1000)
+        base = expr.base
+        if (expr.exp == 2 and isinstance(base, (phase_sin, phase_cos))
+                and base.args[1] == sp.Rational(1, 2)):   # from the sine and cosine of z
+            kind = "sin" if isinstance(base, phase_sin) else "cos"
+            return f"_{kind}_half_squared({self._print(base.args[0])})"
         return super()._print_Pow(expr, rational=rational)
 
     def _print_offset_wave(self, expr: sp.Basic) -> str:
@@ -175,25 +182,34 @@ def render_helper(key: int, name: str) -> str:
     the closed form where it is accurate, the Taylor series below the cutoff."""
     p = plan(key)
     zs = sp.Symbol("z_")
-    # each sin(q z), cos(q z) pair is computed once, from the phase pair w
+    # each sin(q z), cos(q z) pair is taken of the caller's phase once, and
+    # shared with the other kernels called on it (_Phase); z_ keeps the
+    # closed form finite where the series replaces it
     multiples = sorted({sp.cancel(f.args[0] / Z) for f in p.printed.atoms(sp.sin, sp.cos)})
     names = {q: (sp.Symbol(f"s{i}"), sp.Symbol(f"c{i}")) for i, q in enumerate(multiples)}
     closed = p.printed.replace(
         lambda e: isinstance(e, (sp.sin, sp.cos)),
         lambda e: names[sp.cancel(e.args[0] / Z)][0 if isinstance(e, sp.sin) else 1])
+    trig = ""
+    for q, (s, c) in names.items():
+        half = sp.Symbol(f"h{s.name[1:]}")
+        squared = closed.subs(s ** 2, half)
+        if q == sp.Rational(1, 2) and not squared.has(s, c):   # sin(z/2)**2 from sin z, cos z
+            closed = squared
+            trig += f"    {half} = _sin_half_squared(w)\n"
+        else:
+            trig += f"    {s}, {c} = _sincos_pair(w, {float(q)!r})\n"
     closed = _printer().doprint(closed.xreplace({Z: zs}))
-    trig = "".join(f"    {s}, {c} = _sincos_pair(w, {float(q)!r})\n"
-                   for q, (s, c) in names.items())
     coeffs = ", ".join(repr(c) for c in p.coeffs)
     lead = f"z**{p.power}" if p.power else "1"
     return (f"def {name}(z):\n"
             f'    """{sp.sstr(p.printed)}:\n'
             f"    entire, ~{lead} at 0; its Taylor series where |z| < {p.cutoff!r}.\n"
             f'    z is a phase: a pair (hi, lo) or a double."""\n'
-            f"    z, z_lo = _pair(z)\n"
+            f"    w = z\n"
+            f"    z = _pair(w)[0]\n"
             f"    small = np.abs(z) < {p.cutoff!r}\n"
             f"    z_ = np.where(small, {p.cutoff!r}, z)\n"
-            f"    w = (z_, np.where(small, 0.0, z_lo))\n"
             + trig +
             f"    return _taylor_where({closed}, small, z, {p.power}, {p.step},\n"
             f"                         ({coeffs},))\n")
@@ -218,6 +234,19 @@ def _one_root(e: sp.Expr) -> sp.Expr:
     return sp.Mul(*rest, joined_sqrt(inside))
 
 
+def _in_order(pairs: list[tuple[sp.Symbol, sp.Expr]]) -> list[tuple[sp.Symbol, sp.Expr]]:
+    """``pairs`` (name, value) with each value after the names it uses; else
+    in the given order."""
+    pending, done, ordered = list(pairs), set(), []
+    defined = {k for k, _ in pairs}
+    while pending:
+        ready = next(p for p in pending if not (p[1].free_symbols & defined) - done)
+        pending.remove(ready)
+        done.add(ready[0])
+        ordered.append(ready)
+    return ordered
+
+
 def hoist(expr: sp.Expr, varying: set[sp.Symbol]
           ) -> tuple[list[tuple[sp.Symbol, sp.Expr]], list[tuple[sp.Symbol, sp.Expr]], sp.Expr]:
     """Pull every parameter-only factor or term out of the array expression.
@@ -237,8 +266,12 @@ def hoist(expr: sp.Expr, varying: set[sp.Symbol]
     def name(e: sp.Expr) -> sp.Expr:
         if e.is_Symbol or e.is_Number:
             return e
+        value = _one_root(e)
+        for k, known in assignments:       # one name for one value: sin(k·t) once
+            if known == value:
+                return k
         k = next(names)
-        assignments.append((k, _one_root(e)))
+        assignments.append((k, value))
         return k
 
     def visit(e: sp.Expr) -> sp.Expr:
@@ -327,9 +360,10 @@ def render_function(out: Output, table: SymbolTable,
              '    """']
     alias = {k: v for (k, _), v in zip(assignments, reduced[:-1]) if v.is_Atom} \
         if shape is None else {}
+    # A scalar that CSE reduced to a bare name is inlined, not re-assigned (alias).
+    named = _in_order([(s, v.xreplace(alias)) for s, v in subs]
+                      + [(k, v) for (k, _), v in zip(assignments, reduced[:-1]) if k not in alias])
     if shape is None and not phases and not split:     # plain numbers: math, no arrays
-        named = list(subs) + [(k, v) for (k, _), v in zip(assignments, reduced[:-1])
-                              if k not in alias]
         lines += ["    " + s for s in fast_path(entries, named, reduced[-1].xreplace(alias),
                                                  [e for e, _ in out.requires]) or []]
     for e in entries:
@@ -341,14 +375,10 @@ def render_function(out: Output, table: SymbolTable,
     lines.append("    shape = _broadcast(" + call[0])
     lines += [" " * 23 + rest for rest in call[1:]]
     lines += [f"    _required({printer.doprint(e)}, {what!r})" for e, what in out.requires]
-    # A scalar that CSE reduced to a bare name is inlined, not re-assigned (alias).
     for sym, value in phases:
         lines.append(f"    {sym} = {_DoubleDoublePrinter().doprint(value)}")
-    for sym, value in subs:
+    for sym, value in named:
         lines.append(f"    {sym} = {printer.doprint(value)}")
-    for (k, _), value in zip(assignments, reduced[:-1]):
-        if k not in alias:
-            lines.append(f"    {k} = {printer.doprint(value)}")
     if shape is not None:
         elements = ", ".join(printer.doprint(e) for e in reduced)
         lines.append(f"    return _matrix({tuple(shape)}, [{elements}])")
@@ -360,8 +390,10 @@ def render_function(out: Output, table: SymbolTable,
                 heavy.add(sym)
         taken = {e.name for e in entries} | {str(s) for s, _ in subs} | {
             str(k) for k, _ in assignments}
+        merge = ((lambda cell: merge_waves(cell, next(iter(varying))))
+                 if len(varying) == 1 else (lambda cell: None))
         cells = statements(final, printer.doprint, _printer(helpers, _Ternary).doprint,
-                           taken) if split else None
+                           taken, merge) if split else None
         steps = None if split else chain(final, heavy, printer.doprint)
         if cells is not None:                    # each window on its own points
             lines += [f"    {s}" for s in cells]
@@ -415,8 +447,9 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     functions += ["\n" + render_tabulated(o, table, "Tabulated for this scene by "
                                            "crane_sym.phase_table.") for o, table in tables]
     helper_source = ["\n" + render_helper(key, name) for key, name in helpers.items()]
-    uses_math = any("math." in f for f in functions)
+    kernel_source = _kernel_source(functions + helper_source)
+    uses_math = any("math." in f for f in [*functions, kernel_source])
     parts = [header, ("import math\n\n" if uses_math else "") + "import numpy as np\n",
              f"__all__ = [{names}]\n",
-             "\n" + _kernel_source(functions + helper_source), *helper_source, *functions]
+             "\n" + kernel_source, *helper_source, *functions]
     return "\n".join(parts)

@@ -86,6 +86,9 @@ def chain(expr: sp.Expr, heavy: set[sp.Symbol], print_: Callable[[sp.Basic], str
                 lines.append(f"np.negative({src}, out={buf})")
                 return buf
             num, den = sp.fraction(rest)
+            if num == -1 and den != 1:             # one pass: divide by −den
+                lines.append(f"np.divide({src}, {print_(-den)}, out={buf})")
+                return buf
             if num != 1:
                 lines.append(f"np.multiply({src}, {print_(num)}, out={buf})")
                 src = buf

@@ -7,6 +7,8 @@ so generated modules depend on NumPy alone. Double-double numbers are pairs
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 
@@ -181,21 +183,51 @@ def _taylor_tail(x, n, odd):
 
 def _taylor_remainder(x, n, odd):
     """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
-    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    term x**(2n-2+odd): by the series where the direct difference cancels.
+    The direct difference is formed in place in the array np.sin/np.cos makes."""
     x = np.asarray(x, dtype=float)
     small = np.abs(x) < 2.0 * n + 2.0
     if small.all():  # no mask, no direct difference
         return _taylor_tail(x, n, odd)
-    direct = np.cos(x) if odd == 0 else np.sin(x)
-    term = np.ones_like(x) if odd == 0 else x.copy()
-    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
-        direct = direct - term
-        m = 2 * k + odd
-        term = term * (-x * x) / ((m + 1) * (m + 2))
+    direct = np.asarray(np.cos(x) if odd == 0 else np.sin(x))
+    coeffs = [(-1.0) ** k / np.prod(np.arange(1.0, 2 * k + odd + 1)) for k in range(n)]
+    poly = np.full_like(x, coeffs[-1])
+    if n > 1:
+        x2 = x * x
+        for c in coeffs[-2::-1]:  # Horner in x**2
+            poly *= x2
+            poly += c
+    if odd:
+        poly *= x
+    direct -= poly
     if np.any(small):
-        direct = np.array(direct, dtype=float)
         direct[small] = _taylor_tail(x[small], n, odd)
     return direct
+
+
+def _remainder_float(x, n, odd):
+    """_taylor_remainder on one float with ``math`` (the scalar path): the
+    same sums, term for term."""
+    if abs(x) >= 2.0 * n + 2.0:
+        direct = math.cos(x) if odd == 0 else math.sin(x)
+        coeffs = [(-1.0) ** k / math.factorial(2 * k + odd) for k in range(n)]
+        poly = coeffs[-1]
+        for c in coeffs[-2::-1]:  # Horner in x**2
+            poly = poly * (x * x) + c
+        return direct - (poly * x if odd else poly)
+    x2, t = -x * x, (1.0 if odd == 0 else x)
+    for k in range(n):
+        m = 2 * k + odd
+        t = t * x2 / ((m + 1) * (m + 2))
+    reach, bound, total = -x2, 1.0, 0.0
+    for k in range(n, n + 60):
+        total += t
+        m = 2 * k + odd
+        t = t * x2 / ((m + 1) * (m + 2))
+        bound *= reach / ((m + 1) * (m + 2))
+        if bound < 1e-17:
+            break
+    return total
 
 
 def _cos_remainder(x, n):
@@ -233,15 +265,27 @@ def _taylor_where(values, small, z, power, step, coeffs):
     """``values`` with the entries where ``small`` replaced by
     z**power * sum_k coeffs[k] * z**(step*k) (Horner): an entire function by
     its Taylor series where its closed form cancels."""
+    if not np.any(small):
+        return np.asarray(values, dtype=float)
     values = np.array(values, dtype=float)
-    if np.any(small):
-        zs = np.asarray(z, dtype=float)[small]
-        zz = zs * zs if step == 2 else zs
-        total = np.full_like(zs, coeffs[-1])
-        for c in coeffs[-2::-1]:
-            total = total * zz + c
-        values[small] = total * zs ** power
+    zs = np.asarray(z, dtype=float)[small]
+    zz = zs * zs if step == 2 else zs
+    total = np.full_like(zs, coeffs[-1])
+    for c in coeffs[-2::-1]:
+        total = total * zz + c
+    values[small] = total * zs ** power
     return values
+
+
+class _Phase(tuple):
+    """A phase pair (hi, lo) that keeps the sines and cosines taken of it, so
+    the kernels one formula calls on the same phase share one np.sin and one
+    np.cos of each multiple (``_sincos_pair``)."""
+
+    def __new__(cls, hi, lo):
+        phase = tuple.__new__(cls, (hi, lo))
+        phase.taken = {}
+        return phase
 
 
 def _exact_phase(k, t, c=0.0):
@@ -250,37 +294,57 @@ def _exact_phase(k, t, c=0.0):
     times or just after a switch, where one rounding is a large error of a
     sine near its zeros."""
     if np.ndim(c) == 0 and c == 0:   # t - 0 is exact: the product alone
-        return _two_product(k, t)
+        return _Phase(*_two_product(k, t))
     s, e = _two_sum(t, -c)
     p, pe = _two_product(k, s)
-    return _quick_two_sum(p, pe + k * e)
+    return _Phase(*_quick_two_sum(p, pe + k * e))
 
 
 def _pair(z):
-    """A phase as (hi, lo): a pair from _exact_phase, or a double."""
-    return z if isinstance(z, tuple) else (z, 0.0 * np.asarray(z))
+    """A phase as (hi, lo): a pair from _exact_phase, or a double (lo = 0)."""
+    return z if isinstance(z, tuple) else (z, 0.0)
 
 
 def _sin_pair(z, q):
     """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
-    hi, lo = _pair(z)
-    a = q * hi
-    return np.sin(a) + np.cos(a) * (q * lo)
+    return _sincos_pair(z, q)[0]
 
 
 def _cos_pair(z, q):
     """cos(q*z) for a phase pair z (q a power of two)."""
-    hi, lo = _pair(z)
-    a = q * hi
-    return np.cos(a) - np.sin(a) * (q * lo)
+    return _sincos_pair(z, q)[1]
 
 
 def _sincos_pair(z, q):
-    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once."""
+    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once;
+    kept on a _Phase for the next kernel that asks."""
+    taken = getattr(z, "taken", None)
+    if taken is not None and q in taken:
+        return taken[q]
     hi, lo = _pair(z)
-    a, d = q * hi, q * lo
+    a = q * hi
     s, c = np.sin(a), np.cos(a)
-    return s + c * d, c - s * d
+    if not (np.ndim(lo) == 0 and lo == 0):
+        d = q * lo
+        s, c = s + c * d, c - s * d
+    if taken is not None:
+        taken[q] = (s, c)
+    return s, c
+
+
+def _sin_half_squared(z):
+    """sin(z/2)**2 for a phase pair z, from its shared sine and cosine:
+    (1 - cos z)/2 where cos z < 0, else sin(z)**2/(2 + 2 cos z); neither
+    cancels (|cos z| in the unused branch: no division by zero)."""
+    s, c = _sincos_pair(z, 1.0)
+    return np.where(c < 0, 0.5 - 0.5 * c, s * s / (2.0 + 2.0 * np.abs(c)))
+
+
+def _cos_half_squared(z):
+    """cos(z/2)**2 for a phase pair z, from its shared sine and cosine:
+    (1 + cos z)/2 where cos z > 0, else sin(z)**2/(2 - 2 cos z)."""
+    s, c = _sincos_pair(z, 1.0)
+    return np.where(c > 0, 0.5 + 0.5 * c, s * s / (2.0 + 2.0 * np.abs(c)))
 
 
 def _wave(b, c, x):
@@ -293,12 +357,28 @@ def _wave(b, c, x):
 
 
 def _offset_wave(level, gap, b, c, x):
+    """level + b*cos(x) + c*sin(x) for a phase pair x, as written where the
+    level and the wave do not cancel (the sines shared with other kernels on
+    x), and by _offset_back where they do (|sum| < |level|/2). The caller
+    supplies gap = level**2 - b**2 - c**2 accurately."""
+    s, co = _sincos_pair(x, 1.0)
+    direct = level + (b * co + c * s)
+    near = np.abs(direct) < 0.5 * np.abs(level)
+    if not np.any(near):
+        return direct
+    direct = np.array(direct, dtype=float)
+    pick = lambda v: np.broadcast_to(v, direct.shape)[near]   # noqa: E731
+    direct[near] = _offset_back(*map(pick, (level, gap, b, c)), tuple(map(pick, _pair(x))))
+    return direct
+
+
+def _offset_back(level, gap, b, c, x):
     """level + b*cos(x) + c*sin(x) without cancellation where the wave swings
     back towards zero; x is a phase pair. Written level + a*cos(x - d)
     (|d| <= pi/2, a = ±hypot(b, c)); where level and a*cos(x - d) have
     opposite signs it is s*gap/(|level| + |a|) + s*|a|*(1 + q*cos(x - d)),
     s = sign(level), q = s*sign(a), the last factor as 2*cos(...)**2 or
-    2*sin(...)**2. The caller supplies gap = level**2 - b**2 - c**2 accurately."""
+    2*sin(...)**2."""
     hi, lo = _pair(x)
     sb = np.where(b < 0, -1.0, 1.0)
     r = np.hypot(b, c)
@@ -383,11 +463,14 @@ DEPENDS = {
     "_taylor_tail": (),
     "_taylor_remainder": ("_taylor_tail",),
     "_cos_remainder": ("_taylor_remainder",), "_sin_remainder": ("_taylor_remainder",),
-    "_taylor_where": (),
-    "_exact_phase": ("_two_sum", "_two_product", "_quick_two_sum"),
-    "_pair": (), "_sin_pair": ("_pair",), "_cos_pair": ("_pair",),
-    "_sincos_pair": ("_pair",), "_wave": ("_sincos_pair", "_two_product"),
-    "_offset_wave": ("_pair", "_two_sum"),
+    "_taylor_where": (), "_remainder_float": (),
+    "_Phase": (),
+    "_exact_phase": ("_Phase", "_two_sum", "_two_product", "_quick_two_sum"),
+    "_pair": (), "_sin_pair": ("_sincos_pair",), "_cos_pair": ("_sincos_pair",),
+    "_sincos_pair": ("_pair",),
+    "_sin_half_squared": ("_sincos_pair",), "_cos_half_squared": ("_sincos_pair",), "_wave": ("_sincos_pair", "_two_product"),
+    "_offset_back": ("_pair", "_two_sum"),
+    "_offset_wave": ("_sincos_pair", "_offset_back"),
 }
 
 

@@ -6,8 +6,9 @@ module on floats. A failed check falls through to the array path, which
 raises the error that names the parameter, and so does a ``math`` error (a
 zero division, a domain error), where the array path gives what NumPy gives
 (inf, NaN). Only expressions of elementary
-functions and exact arithmetic kernels (``_diff_of_products``) get one; an
-expression with any other node (a Taylor helper, a phase pair) does not.
+functions, exact arithmetic kernels (``_diff_of_products``) and Taylor
+remainders (``_remainder_float``) get one; an expression with any other node
+(an entire-function helper, a phase pair) does not.
 """
 from __future__ import annotations
 
@@ -32,6 +33,12 @@ class _MathPrinter(PythonCodePrinter):
 
     def _print_joined_sqrt(self, expr: sp.Basic) -> str:
         return f"math.sqrt({self._print(expr.args[0])})"
+
+    def _print_sin_remainder(self, expr: sp.Basic) -> str:
+        return f"_remainder_float({self._print(expr.args[0])}, {int(expr.args[1])}, 1)"
+
+    def _print_cos_remainder(self, expr: sp.Basic) -> str:
+        return f"_remainder_float({self._print(expr.args[0])}, {int(expr.args[1])}, 0)"
 
     def _print_Function(self, expr: sp.Basic) -> str:
         name = type(expr).__name__

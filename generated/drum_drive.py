@@ -548,13 +548,14 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
                 and 0 < F4_t < 1e999 and 0 < K1 < 1e999 and 0 < K2 < 1e999 and 0 < K3 < 1e999
                 and 0 < K4 < 1e999 and 0 < t_3 < 1e999):
             try:    # a failed check or a math error: the array path decides
-                x0 = 3.141592653589793/t_3
+                k0 = 3.141592653589793/t_3
+                x0 = math.sin(k0*t)
                 k1 = -K2
-                k3 = -K4
-                k5 = (1/4)*F1_t
-                k7 = (1/4)*F3_t
-                k8 = (1/4)*K1 + (1/4)*K3
-                return np.float64(k5*math.sin(t*x0) + k7*math.sin(t*x0) + k8 - 1/4*abs(F2_t*math.sin(t*x0) + k1) - 1/4*abs(F4_t*math.sin(t*x0) + k3))
+                k2 = -K4
+                k3 = (1/4)*F1_t
+                k4 = (1/4)*F3_t
+                k5 = (1/4)*K1 + (1/4)*K3
+                return np.float64(k3*x0 + k4*x0 + k5 - 1/4*abs(F2_t*x0 + k1) - 1/4*abs(F4_t*x0 + k2))
             except (ArithmeticError, ValueError):
                 pass
     t    = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
@@ -569,40 +570,31 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
     t_3  = _checked('t_3', t_3, 'positive', 'stop time t_3 of the transporter in (21), s')
     shape = _broadcast(t=t, F1_t=F1_t, F2_t=F2_t, F3_t=F3_t, F4_t=F4_t, K1=K1, K2=K2, K3=K3, K4=K4,
                        t_3=t_3)
-    x0 = 3.141592653589793/t_3
+    k0 = 3.141592653589793/t_3
+    x0 = np.sin(k0*t)
     k1 = -K2
-    k3 = -K4
-    k5 = (1/4)*F1_t
-    k7 = (1/4)*F3_t
-    k8 = (1/4)*K1 + (1/4)*K3
+    k2 = -K4
+    k3 = (1/4)*F1_t
+    k4 = (1/4)*F3_t
+    k5 = (1/4)*K1 + (1/4)*K3
     if out is None and not shape:
-        return k5*np.sin(t*x0) + k7*np.sin(t*x0) + k8 - 1/4*abs(F2_t*np.sin(t*x0) + k1) - 1/4*abs(F4_t*np.sin(t*x0) + k3)
+        return k3*x0 + k4*x0 + k5 - 1/4*abs(F2_t*x0 + k1) - 1/4*abs(F4_t*x0 + k2)
     out = _out(out, shape)
-    np.multiply(t, x0, out=out)
-    np.sin(out, out=out)
-    np.multiply(out, F2_t, out=out)
+    np.multiply(x0, F2_t, out=out)
     np.add(out, k1, out=out)
     np.abs(out, out=out)
-    np.multiply(out, -1, out=out)
-    np.divide(out, 4, out=out)
+    np.divide(out, -4, out=out)
     _w0 = np.empty_like(out)
-    np.multiply(t, x0, out=_w0)
-    np.sin(_w0, out=_w0)
-    np.multiply(_w0, F4_t, out=_w0)
-    np.add(_w0, k3, out=_w0)
+    np.multiply(x0, F4_t, out=_w0)
+    np.add(_w0, k2, out=_w0)
     np.abs(_w0, out=_w0)
-    np.multiply(_w0, -1, out=_w0)
-    np.divide(_w0, 4, out=_w0)
+    np.divide(_w0, -4, out=_w0)
     np.add(out, _w0, out=out)
-    np.multiply(t, x0, out=_w0)
-    np.sin(_w0, out=_w0)
-    np.multiply(_w0, k5, out=_w0)
+    np.multiply(x0, k3, out=_w0)
     np.add(out, _w0, out=out)
-    np.multiply(t, x0, out=_w0)
-    np.sin(_w0, out=_w0)
-    np.multiply(_w0, k7, out=_w0)
+    np.multiply(x0, k4, out=_w0)
     np.add(out, _w0, out=out)
-    np.add(out, k8, out=out)
+    np.add(out, k5, out=out)
     return out
 
 

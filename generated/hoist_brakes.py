@@ -142,6 +142,18 @@ def _put(out, where, value):
         out.flat[where] = value
 
 
+def _blocks(where, size=16384):
+    """``where`` (a selector of ``_cells``) in pieces of at most ``size``
+    points: a cell's temporaries then stay in the cache and below the
+    allocator's mmap threshold, so a call does not page-fault on every new
+    array; none for an empty cell."""
+    if where is None:
+        return ()
+    if isinstance(where, slice):
+        return [slice(i, min(i + size, where.stop)) for i in range(where.start, where.stop, size)]
+    return [where[i:i + size] for i in range(0, where.size, size)]
+
+
 def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     """Rigid drive, hoisting: gearbox-input torque over the rated static torque after the safety brakes act (motor torque lost). Eq (2), (4).
 
@@ -573,31 +585,31 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     x8 = 1/(x7)
     x9 = J1 + J2*x8 + x4*x8 + x6*x8
     x10 = c/J1
-    x11 = (1/2)*i_g*np.sqrt(x10*x9/(J2 + x4 + x6))
-    x12 = J1/x9
-    x13 = 2*x12
-    x14 = m_h + m_p
-    x15 = 1/(m_h + m_r)
-    x16 = J2*x0 + x3 + x5
-    x17 = g*r/i_t
-    k1 = x13 - 2
-    k2 = x14*x15
+    x11 = J1/x9
+    x12 = 2*x11
+    x13 = m_h + m_p
+    x14 = 1/(m_h + m_r)
+    x15 = J2*x0 + x3 + x5
+    x16 = g*r/i_t
+    k0 = (1/2)*i_g*np.sqrt(x10*x9/(J2 + x4 + x6))
+    k1 = x12 - 2
+    k2 = x13*x14
     k3 = -t_SB
-    k4 = (1/2)*np.sqrt(x10*(J1*x0*x7 + x16)/x16)
-    k5 = -M_SB*x13
-    k7 = -2*x14*x17*(1 - x12)
-    k8 = m_h*x17 + m_p*x17
-    k9 = i_t*x15/(g*r)
+    k4 = (1/2)*np.sqrt(x10*(J1*x0*x7 + x15)/x15)
+    k5 = -M_SB*x12
+    k6 = -2*x13*x16*(1 - x11)
+    k7 = m_h*x16 + m_p*x16
+    k8 = i_t*x14/(g*r)
     if out is None and not shape:      # one point: its own branch only
-        return (k2*(k1*np.sin(t*x11)**2 + 1) if np.less(t, t_SB) else k9*(k5*np.sin(k4*(k3 + t))**2 + k7*np.sin(t*x11)**2 + k8))
+        return (k2*(k1*np.sin(k0*t)**2 + 1) if np.less(t, t_SB) else k8*(k5*np.sin(k4*(k3 + t))**2 + k6*np.sin(k0*t)**2 + k7))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, t_SB)]])
-    if cells[0] is not None:
-        k1_, k2_, t_, x11_ = _at(cells[0], shape, k1, k2, t, x11)
-        _put(out, cells[0], k2_*(k1_*np.sin(t_*x11_)**2 + 1))
-    if cells[1] is not None:
-        k3_, k4_, k5_, k7_, k8_, k9_, t_, x11_ = _at(cells[1], shape, k3, k4, k5, k7, k8, k9, t, x11)
-        _put(out, cells[1], k9_*(k5_*np.sin(k4_*(k3_ + t_))**2 + k7_*np.sin(t_*x11_)**2 + k8_))
+    for part in _blocks(cells[0]):
+        k0_, k1_, k2_, t_ = _at(part, shape, k0, k1, k2, t)
+        _put(out, part, k2_*(k1_*np.sin(k0_*t_)**2 + 1))
+    for part in _blocks(cells[1]):
+        k0_, k3_, k4_, k5_, k6_, k7_, k8_, t_ = _at(part, shape, k0, k3, k4, k5, k6, k7, k8, t)
+        _put(out, part, k8_*(k5_*np.sin(k4_*(k3_ + t_))**2 + k6_*np.sin(k0_*t_)**2 + k7_))
     return out
 
 
@@ -758,21 +770,23 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 x4 = i_g*x3
                 x5 = g*i_t*r*x4
                 x6 = m_p*x5
-                x7 = -x6
-                x8 = m_h*x5
-                x9 = -x8
-                x10 = -t_SB
-                x11 = M_SB*x0*x4
-                x12 = -x11
-                x13 = -t_BB
-                x14 = M_BB*x2*x3
-                x15 = (t <= t_SB)
-                x16 = (t <= t_BB)
-                x17 = -omega1 + t*x6 + t*x8
-                x18 = x11*(t + x10) + x17
-                k7 = -x14
-                k12 = r/(i_g*i_t)
-                return np.float64(((k12*((omega1 + t*x7 + t*x9) if x15 else (omega1 + t*x7 + t*x9 + x12*(t + x10)) if x16 else (k7*(t + x13) + omega1 + t*x7 + t*x9 + x12*(t + x10)))) if (((x17 < 0)) if x15 else ((((x18 < 0)) if x16 else ((x14*(t + x13) + x18 < 0))))) else (0)))
+                x7 = m_h*x5
+                x8 = -t_SB
+                x9 = M_SB*x0*x4
+                x10 = -t_BB
+                x11 = M_BB*x2*x3
+                x13 = (t <= t_SB)
+                x15 = (t <= t_BB)
+                x16 = -omega1 + t*x6 + t*x7
+                x17 = x16 + x9*(t + x8)
+                k0 = -x6
+                k1 = -x7
+                x12 = k0*t + k1*t + omega1
+                k3 = -x9
+                x14 = k3*(t + x8) + x12
+                k5 = -x11
+                k6 = r/(i_g*i_t)
+                return np.float64(((k6*((x12) if x13 else (x14) if x15 else (k5*(t + x10) + x14))) if (((x16 < 0)) if x13 else ((((x17 < 0)) if x15 else ((x11*(t + x10) + x17 < 0))))) else (0)))
             except (ArithmeticError, ValueError):
                 pass
     t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
@@ -798,21 +812,23 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x4 = i_g*x3
     x5 = g*i_t*r*x4
     x6 = m_p*x5
-    x7 = -x6
-    x8 = m_h*x5
-    x9 = -x8
-    x10 = -t_SB
-    x11 = M_SB*x0*x4
-    x12 = -x11
-    x13 = -t_BB
-    x14 = M_BB*x2*x3
-    x15 = np.less_equal(t, t_SB)
-    x16 = np.less_equal(t, t_BB)
-    x17 = -omega1 + t*x6 + t*x8
-    x18 = x11*(t + x10) + x17
-    k7 = -x14
-    k12 = r/(i_g*i_t)
-    return _into(out, shape, np.select([np.logical_or.reduce((np.logical_and.reduce((x15,np.less(x17, 0))),np.logical_and.reduce((x16,np.logical_not(x15),np.less(x18, 0))),np.logical_and.reduce((np.logical_not(x15),np.logical_not(x16),np.less(x14*(t + x13) + x18, 0))))),True], [k12*np.select([x15,x16,True], [omega1 + t*x7 + t*x9,omega1 + t*x7 + t*x9 + x12*(t + x10),k7*(t + x13) + omega1 + t*x7 + t*x9 + x12*(t + x10)], default=np.nan),0], default=np.nan))
+    x7 = m_h*x5
+    x8 = -t_SB
+    x9 = M_SB*x0*x4
+    x10 = -t_BB
+    x11 = M_BB*x2*x3
+    x13 = np.less_equal(t, t_SB)
+    x15 = np.less_equal(t, t_BB)
+    x16 = -omega1 + t*x6 + t*x7
+    x17 = x16 + x9*(t + x8)
+    k0 = -x6
+    k1 = -x7
+    x12 = k0*t + k1*t + omega1
+    k3 = -x9
+    x14 = k3*(t + x8) + x12
+    k5 = -x11
+    k6 = r/(i_g*i_t)
+    return _into(out, shape, np.select([np.logical_or.reduce((np.logical_and.reduce((x13,np.less(x16, 0))),np.logical_and.reduce((x15,np.logical_not(x13),np.less(x17, 0))),np.logical_and.reduce((np.logical_not(x13),np.logical_not(x15),np.less(x11*(t + x10) + x17, 0))))),True], [k6*np.select([x13,x15,True], [x12,x14,k5*(t + x10) + x14], default=np.nan),0], default=np.nan))
 
 
 def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):
@@ -987,15 +1003,17 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 x7 = m_h*x5
                 x8 = -t_SB
                 x9 = M_SB*x0*x4
-                x10 = -x9
-                x11 = -t_BB
-                x12 = M_BB*x2*x3
+                x10 = -t_BB
+                x11 = M_BB*x2*x3
+                x12 = omega1 + t*x6 + t*x7
                 x13 = (t <= t_SB)
-                x14 = (t <= t_BB)
-                x15 = omega1 + t*x6 + t*x7 - x9*(t + x8)
-                k7 = -x12
-                k12 = r/(i_g*i_t)
-                return np.float64(((k12*((omega1 + t*x6 + t*x7) if x13 else (omega1 + t*x6 + t*x7 + x10*(t + x8)) if x14 else (k7*(t + x11) + omega1 + t*x6 + t*x7 + x10*(t + x8)))) if ((True) if x13 else ((((x15 > 0)) if x14 else ((x12*(t + x11) - x15 < 0))))) else (0)))
+                x15 = (t <= t_BB)
+                x16 = omega1 + t*x6 + t*x7 - x9*(t + x8)
+                k3 = -x9
+                x14 = k3*(t + x8) + x12
+                k5 = -x11
+                k6 = r/(i_g*i_t)
+                return np.float64(((k6*((x12) if x13 else (x14) if x15 else (k5*(t + x10) + x14))) if ((True) if x13 else ((((x16 > 0)) if x15 else ((x11*(t + x10) - x16 < 0))))) else (0)))
             except (ArithmeticError, ValueError):
                 pass
     t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
@@ -1024,15 +1042,17 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x7 = m_h*x5
     x8 = -t_SB
     x9 = M_SB*x0*x4
-    x10 = -x9
-    x11 = -t_BB
-    x12 = M_BB*x2*x3
+    x10 = -t_BB
+    x11 = M_BB*x2*x3
+    x12 = omega1 + t*x6 + t*x7
     x13 = np.less_equal(t, t_SB)
-    x14 = np.less_equal(t, t_BB)
-    x15 = omega1 + t*x6 + t*x7 - x9*(t + x8)
-    k7 = -x12
-    k12 = r/(i_g*i_t)
-    return _into(out, shape, np.select([np.logical_and.reduce((np.logical_or.reduce((x13,np.logical_not(x14),np.greater(x15, 0))),np.logical_or.reduce((x13,x14,np.less(x12*(t + x11) - x15, 0))))),True], [k12*np.select([x13,x14,True], [omega1 + t*x6 + t*x7,omega1 + t*x6 + t*x7 + x10*(t + x8),k7*(t + x11) + omega1 + t*x6 + t*x7 + x10*(t + x8)], default=np.nan),0], default=np.nan))
+    x15 = np.less_equal(t, t_BB)
+    x16 = omega1 + t*x6 + t*x7 - x9*(t + x8)
+    k3 = -x9
+    x14 = k3*(t + x8) + x12
+    k5 = -x11
+    k6 = r/(i_g*i_t)
+    return _into(out, shape, np.select([np.logical_and.reduce((np.logical_or.reduce((x13,np.logical_not(x15),np.greater(x16, 0))),np.logical_or.reduce((x13,x15,np.less(x11*(t + x10) - x16, 0))))),True], [k6*np.select([x13,x15,True], [x12,x14,k5*(t + x10) + x14], default=np.nan),0], default=np.nan))
 
 
 def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):

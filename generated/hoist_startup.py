@@ -155,19 +155,24 @@ def _taylor_tail(x, n, odd):
 
 def _taylor_remainder(x, n, odd):
     """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
-    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    term x**(2n-2+odd): by the series where the direct difference cancels.
+    The direct difference is formed in place in the array np.sin/np.cos makes."""
     x = np.asarray(x, dtype=float)
     small = np.abs(x) < 2.0 * n + 2.0
     if small.all():  # no mask, no direct difference
         return _taylor_tail(x, n, odd)
-    direct = np.cos(x) if odd == 0 else np.sin(x)
-    term = np.ones_like(x) if odd == 0 else x.copy()
-    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
-        direct = direct - term
-        m = 2 * k + odd
-        term = term * (-x * x) / ((m + 1) * (m + 2))
+    direct = np.asarray(np.cos(x) if odd == 0 else np.sin(x))
+    coeffs = [(-1.0) ** k / np.prod(np.arange(1.0, 2 * k + odd + 1)) for k in range(n)]
+    poly = np.full_like(x, coeffs[-1])
+    if n > 1:
+        x2 = x * x
+        for c in coeffs[-2::-1]:  # Horner in x**2
+            poly *= x2
+            poly += c
+    if odd:
+        poly *= x
+    direct -= poly
     if np.any(small):
-        direct = np.array(direct, dtype=float)
         direct[small] = _taylor_tail(x[small], n, odd)
     return direct
 
@@ -181,15 +186,52 @@ def _taylor_where(values, small, z, power, step, coeffs):
     """``values`` with the entries where ``small`` replaced by
     z**power * sum_k coeffs[k] * z**(step*k) (Horner): an entire function by
     its Taylor series where its closed form cancels."""
+    if not np.any(small):
+        return np.asarray(values, dtype=float)
     values = np.array(values, dtype=float)
-    if np.any(small):
-        zs = np.asarray(z, dtype=float)[small]
-        zz = zs * zs if step == 2 else zs
-        total = np.full_like(zs, coeffs[-1])
-        for c in coeffs[-2::-1]:
-            total = total * zz + c
-        values[small] = total * zs ** power
+    zs = np.asarray(z, dtype=float)[small]
+    zz = zs * zs if step == 2 else zs
+    total = np.full_like(zs, coeffs[-1])
+    for c in coeffs[-2::-1]:
+        total = total * zz + c
+    values[small] = total * zs ** power
     return values
+
+
+def _remainder_float(x, n, odd):
+    """_taylor_remainder on one float with ``math`` (the scalar path): the
+    same sums, term for term."""
+    if abs(x) >= 2.0 * n + 2.0:
+        direct = math.cos(x) if odd == 0 else math.sin(x)
+        coeffs = [(-1.0) ** k / math.factorial(2 * k + odd) for k in range(n)]
+        poly = coeffs[-1]
+        for c in coeffs[-2::-1]:  # Horner in x**2
+            poly = poly * (x * x) + c
+        return direct - (poly * x if odd else poly)
+    x2, t = -x * x, (1.0 if odd == 0 else x)
+    for k in range(n):
+        m = 2 * k + odd
+        t = t * x2 / ((m + 1) * (m + 2))
+    reach, bound, total = -x2, 1.0, 0.0
+    for k in range(n, n + 60):
+        total += t
+        m = 2 * k + odd
+        t = t * x2 / ((m + 1) * (m + 2))
+        bound *= reach / ((m + 1) * (m + 2))
+        if bound < 1e-17:
+            break
+    return total
+
+
+class _Phase(tuple):
+    """A phase pair (hi, lo) that keeps the sines and cosines taken of it, so
+    the kernels one formula calls on the same phase share one np.sin and one
+    np.cos of each multiple (``_sincos_pair``)."""
+
+    def __new__(cls, hi, lo):
+        phase = tuple.__new__(cls, (hi, lo))
+        phase.taken = {}
+        return phase
 
 
 def _exact_phase(k, t, c=0.0):
@@ -198,30 +240,50 @@ def _exact_phase(k, t, c=0.0):
     times or just after a switch, where one rounding is a large error of a
     sine near its zeros."""
     if np.ndim(c) == 0 and c == 0:   # t - 0 is exact: the product alone
-        return _two_product(k, t)
+        return _Phase(*_two_product(k, t))
     s, e = _two_sum(t, -c)
     p, pe = _two_product(k, s)
-    return _quick_two_sum(p, pe + k * e)
+    return _Phase(*_quick_two_sum(p, pe + k * e))
 
 
 def _pair(z):
-    """A phase as (hi, lo): a pair from _exact_phase, or a double."""
-    return z if isinstance(z, tuple) else (z, 0.0 * np.asarray(z))
+    """A phase as (hi, lo): a pair from _exact_phase, or a double (lo = 0)."""
+    return z if isinstance(z, tuple) else (z, 0.0)
 
 
 def _sin_pair(z, q):
     """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
-    hi, lo = _pair(z)
-    a = q * hi
-    return np.sin(a) + np.cos(a) * (q * lo)
+    return _sincos_pair(z, q)[0]
+
+
+def _cos_pair(z, q):
+    """cos(q*z) for a phase pair z (q a power of two)."""
+    return _sincos_pair(z, q)[1]
 
 
 def _sincos_pair(z, q):
-    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once."""
+    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once;
+    kept on a _Phase for the next kernel that asks."""
+    taken = getattr(z, "taken", None)
+    if taken is not None and q in taken:
+        return taken[q]
     hi, lo = _pair(z)
-    a, d = q * hi, q * lo
+    a = q * hi
     s, c = np.sin(a), np.cos(a)
-    return s + c * d, c - s * d
+    if not (np.ndim(lo) == 0 and lo == 0):
+        d = q * lo
+        s, c = s + c * d, c - s * d
+    if taken is not None:
+        taken[q] = (s, c)
+    return s, c
+
+
+def _sin_half_squared(z):
+    """sin(z/2)**2 for a phase pair z, from its shared sine and cosine:
+    (1 - cos z)/2 where cos z < 0, else sin(z)**2/(2 + 2 cos z); neither
+    cancels (|cos z| in the unused branch: no division by zero)."""
+    s, c = _sincos_pair(z, 1.0)
+    return np.where(c < 0, 0.5 - 0.5 * c, s * s / (2.0 + 2.0 * np.abs(c)))
 
 
 def _wave(b, c, x):
@@ -233,13 +295,13 @@ def _wave(b, c, x):
     return (p + q) + (p_err + q_err)
 
 
-def _offset_wave(level, gap, b, c, x):
+def _offset_back(level, gap, b, c, x):
     """level + b*cos(x) + c*sin(x) without cancellation where the wave swings
     back towards zero; x is a phase pair. Written level + a*cos(x - d)
     (|d| <= pi/2, a = ±hypot(b, c)); where level and a*cos(x - d) have
     opposite signs it is s*gap/(|level| + |a|) + s*|a|*(1 + q*cos(x - d)),
     s = sign(level), q = s*sign(a), the last factor as 2*cos(...)**2 or
-    2*sin(...)**2. The caller supplies gap = level**2 - b**2 - c**2 accurately."""
+    2*sin(...)**2."""
     hi, lo = _pair(x)
     sb = np.where(b < 0, -1.0, 1.0)
     r = np.hypot(b, c)
@@ -255,6 +317,22 @@ def _offset_wave(level, gap, b, c, x):
         half = np.where(q > 0, c2 - s2 * (0.5 * lo), s2 + c2 * (0.5 * lo))
     back = s * (gap / (np.abs(level) + r) + 2.0 * r * half * half)
     return np.where(q * cos_theta >= 0, level + sb * r * cos_theta, back)
+
+
+def _offset_wave(level, gap, b, c, x):
+    """level + b*cos(x) + c*sin(x) for a phase pair x, as written where the
+    level and the wave do not cancel (the sines shared with other kernels on
+    x), and by _offset_back where they do (|sum| < |level|/2). The caller
+    supplies gap = level**2 - b**2 - c**2 accurately."""
+    s, co = _sincos_pair(x, 1.0)
+    direct = level + (b * co + c * s)
+    near = np.abs(direct) < 0.5 * np.abs(level)
+    if not np.any(near):
+        return direct
+    direct = np.array(direct, dtype=float)
+    pick = lambda v: np.broadcast_to(v, direct.shape)[near]   # noqa: E731
+    direct[near] = _offset_back(*map(pick, (level, gap, b, c)), tuple(map(pick, _pair(x))))
+    return direct
 
 
 def _selector(mask):
@@ -304,16 +382,35 @@ def _put(out, where, value):
         out.flat[where] = value
 
 
+def _cancelled(value, bound):
+    """A selector of the points of the 1-D ``value`` below half its error
+    scale ``bound``, where a fast sum cancels and the cell's own formula is
+    evaluated again (``wave_sums``); None if there is none."""
+    return _selector(np.abs(value) < 0.5 * bound)
+
+
+def _blocks(where, size=16384):
+    """``where`` (a selector of ``_cells``) in pieces of at most ``size``
+    points: a cell's temporaries then stay in the cache and below the
+    allocator's mmap threshold, so a call does not page-fault on every new
+    array; none for an empty cell."""
+    if where is None:
+        return ()
+    if isinstance(where, slice):
+        return [slice(i, min(i + size, where.stop)) for i in range(where.start, where.stop, size)]
+    return [where[i:i + size] for i in range(0, where.size, size)]
+
+
 def _entire_1(z):
     """1 - 4*sin(z/2)**2/z**2:
     entire, ~z**2 at 0; its Taylor series where |z| < 4.0.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 4.0
     z_ = np.where(small, 4.0, z)
-    w = (z_, np.where(small, 0.0, z_lo))
-    s0, c0 = _sincos_pair(w, 0.5)
-    return _taylor_where(-4*s0**2/z_**2 + 1, small, z, 2, 2,
+    h0 = _sin_half_squared(w)
+    return _taylor_where(-4*h0/z_**2 + 1, small, z, 2, 2,
                          (0.08333333333333333, -0.002777777777777778, 4.96031746031746e-05, -5.511463844797178e-07, 4.17535139757362e-09, -2.294149119545945e-11, 9.55895466477477e-14, -3.123841393717245e-16, 8.22063524662433e-19, -1.779358278490115e-21, 3.2234751421922368e-24, -4.959192526449595e-27, 6.559778474139676e-30, -7.539975257631811e-33, 7.600781509709487e-36,))
 
 
@@ -321,10 +418,10 @@ def _entire_2(z):
     """-sin(z)/z:
     entire, ~1 at 0; its Taylor series where |z| < 0.42044820762685725.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 0.42044820762685725
     z_ = np.where(small, 0.42044820762685725, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-s0/z_, small, z, 0, 2,
                          (-1.0, 0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13,))
@@ -334,12 +431,12 @@ def _entire_3(z):
     """2*sin(z/2)**2/z:
     entire, ~z**1 at 0; its Taylor series where |z| < 0.015625.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 0.015625
     z_ = np.where(small, 0.015625, z)
-    w = (z_, np.where(small, 0.0, z_lo))
-    s0, c0 = _sincos_pair(w, 0.5)
-    return _taylor_where(2*s0**2/z_, small, z, 1, 2,
+    h0 = _sin_half_squared(w)
+    return _taylor_where(2*h0/z_, small, z, 1, 2,
                          (0.5, -0.041666666666666664, 0.001388888888888889, -2.48015873015873e-05,))
 
 
@@ -347,10 +444,10 @@ def _entire_4(z):
     """z - sin(z):
     entire, ~z**3 at 0; its Taylor series where |z| < 2.378414230005442.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 2.378414230005442
     z_ = np.where(small, 2.378414230005442, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-s0 + z_, small, z, 3, 2,
                          (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18, -1.9572941063391263e-20, 3.868170170630684e-23, -6.446950284384474e-26,))
@@ -360,10 +457,10 @@ def _entire_5(z):
     """-cos(z) + sin(z)/z:
     entire, ~z**2 at 0; its Taylor series where |z| < 1.681792830507429.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 1.681792830507429
     z_ = np.where(small, 1.681792830507429, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-c0 + s0/z_, small, z, 2, 2,
                          (0.3333333333333333, -0.03333333333333333, 0.0011904761904761906, -2.2045855379188714e-05, 2.505210838544172e-07, -1.9270852604185937e-09, 1.0706029224547743e-11, -4.498331606952833e-14, 1.4797143443923793e-16, -3.9145882126782523e-19, 8.509974375387505e-22,))
@@ -373,13 +470,13 @@ def _entire_6(z):
     """-sin(z) + 2*sin(z/2)**2/z:
     entire, ~z**1 at 0; its Taylor series where |z| < 2.8284271247461903.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 2.8284271247461903
     z_ = np.where(small, 2.8284271247461903, z)
-    w = (z_, np.where(small, 0.0, z_lo))
-    s0, c0 = _sincos_pair(w, 0.5)
+    h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(2*s0**2/z_ - s1, small, z, 1, 2,
+    return _taylor_where(2*h0/z_ - s1, small, z, 1, 2,
                          (-0.5, 0.125, -0.006944444444444444, 0.00017361111111111112, -2.48015873015873e-06, 2.296443268665491e-08, -1.4911969277048643e-10, 7.169215998581078e-13, -2.6552651846596585e-15, 7.809603484293113e-18, -1.8683261924146203e-20, 3.706996413521072e-23, -6.198990658061994e-26, 8.855700940088562e-29, -1.0932964123566126e-31,))
 
 
@@ -387,10 +484,10 @@ def _entire_7(z):
     """1 - sin(z)/z:
     entire, ~z**2 at 0; its Taylor series where |z| < 2.378414230005442.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 2.378414230005442
     z_ = np.where(small, 2.378414230005442, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-s0/z_ + 1, small, z, 2, 2,
                          (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18, -1.9572941063391263e-20, 3.868170170630684e-23, -6.446950284384474e-26,))
@@ -400,10 +497,10 @@ def _entire_8(z):
     """sin(z)/(2*z) + 2*cos(z)/z**2 + z**(-2) - 3*sin(z)/z**3:
     entire, ~z**2 at 0; its Taylor series where |z| < 3.363585661014858.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 3.363585661014858
     z_ = np.where(small, 3.363585661014858, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(2*c0/z_**2 + (1/2)*s0/z_ - 3*s0/z_**3 + z_**(-2.0), small, z, 2, 2,
                          (-0.025, 0.001984126984126984, -5.787037037037037e-05, 9.018759018759019e-07, -8.832474110251888e-09, 5.964787710819457e-11, -2.952030117062797e-13, 1.118006393540909e-15, -3.3469729218399058e-18, 8.123157358324436e-21, -1.6310784219492718e-23, 2.755106959138664e-26, -3.969796973143149e-29, 4.937467668707283e-32, -5.355096063658957e-35,))
@@ -413,10 +510,10 @@ def _entire_9(z):
     """cos(z)/(6*z) - 2*sin(z)/(3*z**2) - cos(z)/z**3 + z**(-3):
     entire, ~z**1 at 0; its Taylor series where |z| < 3.363585661014858.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 3.363585661014858
     z_ = np.where(small, 3.363585661014858, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where((1/6)*c0/z_ - c0/z_**3 - 2/3*s0/z_**2 + z_**(-3.0), small, z, 1, 2,
                          (-0.013888888888888888, 0.002777777777777778, -0.0001240079365079365, 2.57201646090535e-06, -3.131513548180215e-08, 2.5235640315005394e-10, -1.4497747908241734e-12, 6.24768278743449e-15, -2.0962619878892042e-17, 5.63463454855203e-20, -1.241037929744011e-22, 2.2812285621668135e-25, -3.553213340158991e-28, 4.750184412308041e-31, -5.510566594539378e-34,))
@@ -426,10 +523,10 @@ def _entire_10(z):
     """z/4 - 3/(2*z) + 3*sin(z)/(2*z**2):
     entire, ~z**3 at 0; its Taylor series where |z| < 4.756828460010884.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where((3/2)*s0/z_**2 + (1/4)*z_ - (3/2)/z_, small, z, 3, 2,
                          (0.0125, -0.00029761904761904765, 4.133597883597884e-06, -3.757816257816258e-08, 2.408856575523242e-10, -1.1470745597729724e-12, 4.217185881518281e-15, -1.2330952869936495e-17, 2.935941159508689e-20, -5.802255255946026e-23, 9.67042542657671e-26, -1.3775534795693318e-28, 1.6964944329671575e-31, -1.8241875623302768e-34, 1.7274503431157926e-37, -1.4516389437947837e-40,))
@@ -439,10 +536,10 @@ def _entire_11(z):
     """cos(z)/z + 2/z - 3*sin(z)/z**2:
     entire, ~z**3 at 0; its Taylor series where |z| < 3.363585661014858.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 3.363585661014858
     z_ = np.where(small, 3.363585661014858, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(c0/z_ - 3*s0/z_**2 + 2/z_, small, z, 3, 2,
                          (0.016666666666666666, -0.0007936507936507937, 1.6534391534391536e-05, -2.0041686708353376e-07, 1.6059043836821615e-09, -9.17659647818378e-12, 3.936040156083729e-14, -1.3153016394598927e-16, 3.523129391410427e-19, -7.736340341261368e-22, 1.4183290625645841e-24, -2.204085567310931e-27, 2.9405903504764064e-30, -3.4051501163498504e-33,))
@@ -452,10 +549,10 @@ def _entire_12(z):
     """-sin(z)/4 - cos(z)/z - 1/(2*z) + 3*sin(z)/(2*z**2):
     entire, ~z**3 at 0; its Taylor series where |z| < 3.363585661014858.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 3.363585661014858
     z_ = np.where(small, 3.363585661014858, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-c0/z_ - 1/4*s0 + (3/2)*s0/z_**2 - (1/2)/z_, small, z, 3, 2,
                          (0.0125, -0.000992063492063492, 2.8935185185185186e-05, -4.5093795093795094e-07, 4.416237055125944e-09, -2.9823938554097285e-11, 1.4760150585313984e-13, -5.590031967704545e-16, 1.6734864609199529e-18, -4.061578679162218e-21, 8.155392109746359e-24, -1.377553479569332e-26, 1.9848984865715744e-29, -2.4687338343536413e-32, 2.6775480318294786e-35,))
@@ -465,10 +562,10 @@ def _entire_13(z):
     """-cos(z)/(24*z**2) + 3*sin(z)/(8*z**3) + 3*cos(z)/(2*z**4) + z**(-4) - 5*sin(z)/(2*z**5):
     entire, ~z**2 at 0; its Taylor series where |z| < 4.756828460010884.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-1/24*c0/z_**2 + (3/2)*c0/z_**4 + (3/8)*s0/z_**3 - 5/2*s0/z_**5 + z_**(-4.0), small, z, 2, 2,
                          (-0.0001984126984126984, 1.3778659611992945e-05, -3.5072951739618406e-07, 4.8177131510464845e-09, -4.205940052500899e-11, 2.558426101454424e-13, -1.150888934527406e-15, 3.992879976931817e-18, -1.102428498629745e-20, 2.4820758594880223e-23, -4.646947071080546e-26, 7.351475876191016e-29, -9.960064090323311e-32, 1.168908065508353e-34, -1.2000215268703545e-37, 1.0869128428012994e-40, -8.750908515376675e-44,))
@@ -478,13 +575,13 @@ def _entire_14(z):
     """-(3/(10*z**3) - 2/z**5)*sin(z/2)**2 + sin(z)/(60*z**2) + 1/(10*z**3) - 3*sin(z)/(5*z**4):
     entire, ~z**1 at 0; its Taylor series where |z| < 5.656854249492381.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 5.656854249492381
     z_ = np.where(small, 5.656854249492381, z)
-    w = (z_, np.where(small, 0.0, z_lo))
-    s0, c0 = _sincos_pair(w, 0.5)
+    h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(-s0**2*((3/10)/z_**3 - 2/z_**5) + (1/60)*s1/z_**2 - 3/5*s1/z_**4 + (1/10)/z_**3, small, z, 1, 2,
+    return _taylor_where(-h0*((3/10)/z_**3 - 2/z_**5) + (1/60)*s1/z_**2 - 3/5*s1/z_**4 + (1/10)/z_**3, small, z, 1, 2,
                          (-0.0001388888888888889, 2.48015873015873e-05, -9.645061728395062e-07, 1.75364758698092e-08, -1.8926730236254046e-10, 1.3669305170627923e-12, -7.106739170706734e-15, 2.795015983852272e-17, -8.620990859284605e-20, 2.1436109695578373e-22, -4.391364982171116e-25, 7.543745245260627e-28, -1.1027213814286523e-30, 1.3886627818239233e-33, -1.5225273122167623e-36, 1.4666929772859888e-39, -1.2513799176988645e-42, 9.523047502027558e-46, -6.504598011727247e-49,))
 
 
@@ -492,10 +589,10 @@ def _entire_15(z):
     """-z**2/2 + 10 - 60/z**2 + 60*sin(z)/z**3:
     entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(60*s0/z_**3 - 1/2*z_**2 + 10 - 60/z_**2, small, z, 4, 2,
                          (-0.011904761904761904, 0.00016534391534391533, -1.503126503126503e-06, 9.635426302092969e-09, -4.58829823909189e-11, 1.6868743526073125e-13, -4.932381147974598e-16, 1.1743764638034756e-18, -2.3209021023784103e-21, 3.868170170630684e-24, -5.510213918277328e-27, 6.78597773186863e-30, -7.296750249321107e-33, 6.909801372463171e-36, -5.806555775179134e-39,))
@@ -505,10 +602,10 @@ def _entire_16(z):
     """-12 + 36*cos(z)/z**2 + 144/z**2 - 180*sin(z)/z**3:
     entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(36*c0/z_**2 - 180*s0/z_**3 - 12 + 144/z_**2, small, z, 4, 2,
                          (-0.014285714285714285, 0.0003968253968253968, -5.411255411255411e-06, 4.625004625004625e-08, -2.752978943455134e-10, 1.214549533877265e-12, -4.143200164298662e-15, 1.1274014052513367e-17, -2.5065742705686833e-20, 4.6418042047568206e-23, -7.273482372126072e-26, 9.771807933890828e-29, -1.1382930388940928e-31, 1.1608466305738125e-34, -1.0451800395322443e-37, 8.369810126384338e-41,))
@@ -518,10 +615,10 @@ def _entire_17(z):
     """3 - 9*sin(z)/z - 72*cos(z)/z**2 - 108/z**2 + 180*sin(z)/z**3:
     entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-72*c0/z_**2 - 9*s0/z_ + 180*s0/z_**3 + 3 - 108/z_**2, small, z, 4, 2,
                          (-0.010714285714285714, 0.000496031746031746, -9.46969696969697e-06, 1.0406260406260406e-07, -7.570692094501618e-10, 3.9472859851011115e-12, -1.5537000616119984e-14, 4.791455972318181e-17, -1.1906227785201244e-19, 2.436947207497331e-22, -4.182252363972492e-25, 6.107379958681767e-28, -7.683478012535127e-31, 8.416138071660142e-34, -8.100145306374893e-37, 6.905093354267079e-40,))
@@ -531,10 +628,10 @@ def _entire_18(z):
     """-cos(z) + 9*sin(z)/z + 36*cos(z)/z**2 + 24/z**2 - 60*sin(z)/z**3:
     entire, ~z**4 at 0; its Taylor series where |z| < 4.756828460010884.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-c0 + 36*c0/z_**2 + 9*s0/z_ - 60*s0/z_**3 + 24/z_**2, small, z, 4, 2,
                          (-0.004761904761904762, 0.00033068783068783067, -8.417508417508417e-06, 1.1562511562511562e-07, -1.0094256126002158e-09, 6.140222643490617e-12, -2.7621334428657748e-14, 9.582911944636362e-17, -2.645828396711388e-19, 5.956982062771254e-22, -1.115267297059331e-24, 1.7643542102858438e-27, -2.3904153816775947e-30, 2.8053793572200472e-33, -2.880051664488851e-36, 2.6085908227231188e-39, -2.100218043690402e-42,))
@@ -673,6 +770,16 @@ def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)
+            and (type(Omega) in (float, int) or type(Omega) is np.float64)
+            and (type(t_n) in (float, int) or type(t_n) is np.float64)):
+        if (0 <= t < 1e999 and 0 < Omega < 1e999 and 0 < t_n < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                k0 = -1/(Omega*t_n)
+                return np.float64(k0*_remainder_float(Omega*t, 1, 1))
+            except (ArithmeticError, ValueError):
+                pass
     t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
@@ -708,15 +815,15 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     k0 = 2*np.sin((1/2)*x0)**2
     k1 = np.sin(x0)
     if out is None and not shape:      # one point: its own branch only
-        return (2*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, theta) else _wave(k0, k1, _exact_phase(Omega, t, theta)))
+        return (2*_sin_half_squared(_exact_phase(Omega, t)) if np.less_equal(t, theta) else _wave(k0, k1, _exact_phase(Omega, t, theta)))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, theta)]])
-    if cells[0] is not None:
-        Omega_, t_ = _at(cells[0], shape, Omega, t)
-        _put(out, cells[0], 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2)
-    if cells[1] is not None:
-        Omega_, k0_, k1_, t_, theta_ = _at(cells[1], shape, Omega, k0, k1, t, theta)
-        _put(out, cells[1], _wave(k0_, k1_, _exact_phase(Omega_, t_, theta_)))
+    for part in _blocks(cells[0]):
+        Omega_, t_ = _at(part, shape, Omega, t)
+        _put(out, part, 2*_sin_half_squared(_exact_phase(Omega_, t_)))
+    for part in _blocks(cells[1]):
+        Omega_, k0_, k1_, t_, theta_ = _at(part, shape, Omega, k0, k1, t, theta)
+        _put(out, part, _wave(k0_, k1_, _exact_phase(Omega_, t_, theta_)))
     return out
 
 
@@ -818,12 +925,12 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
         return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, theta) else _offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, theta)))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, theta)]])
-    if cells[0] is not None:
-        Omega_, k0_, t_ = _at(cells[0], shape, Omega, k0, t)
-        _put(out, cells[0], k0_*_entire_4(_exact_phase(Omega_, t_)))
-    if cells[1] is not None:
-        Omega_, k1_, k2_, k3_, t_, theta_ = _at(cells[1], shape, Omega, k1, k2, k3, t, theta)
-        _put(out, cells[1], _offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, theta_)))
+    for part in _blocks(cells[0]):
+        Omega_, k0_, t_ = _at(part, shape, Omega, k0, t)
+        _put(out, part, k0_*_entire_4(_exact_phase(Omega_, t_)))
+    for part in _blocks(cells[1]):
+        Omega_, k1_, k2_, k3_, t_, theta_ = _at(part, shape, Omega, k1, k2, k3, t, theta)
+        _put(out, part, _offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, theta_)))
     return out
 
 
@@ -913,25 +1020,60 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k6 = _entire_2(x8)
     k7 = _entire_3(x8)
     if out is None and not shape:      # one point: its own branch only
-        return k0*_sin_pair(_exact_phase(Omega, t), 0.5)**2 + (k4*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))) + (x5*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n)))
+        return k0*_sin_half_squared(_exact_phase(Omega, t)) + (k4*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x7*_offset_wave(1, k5, k6, k7, _exact_phase(Omega, t, tau_0))) + (x5*_sin_half_squared(_exact_phase(Omega, t)) if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n)))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k0_, k4_, t_, x5_ = _at(cells[0], shape, Omega, k0, k4, t, x5)
+    for part in _blocks(cells[0]):
+        Omega_, k0_, k4_, t_, x5_ = _at(part, shape, Omega, k0, k4, t, x5)
         w0 = _exact_phase(Omega_, t_)
-        w1 = _sin_pair(w0, 0.5)**2
-        _put(out, cells[0], k0_*w1 + k4_*_entire_4(w0) + w1*x5_)
-    if cells[1] is not None:
-        Omega_, k0_, k2_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k2, k3, k4, t, t_n)
+        w1 = _sin_half_squared(w0)
+        _put(out, part, k0_*w1 + k4_*_entire_4(w0) + w1*x5_)
+    for part in _blocks(cells[1]):
+        Omega_, k0_, k2_, k3_, k4_, t_, t_n_ = _at(part, shape, Omega, k0, k2, k3, k4, t, t_n)
         w0 = _exact_phase(Omega_, t_)
-        _put(out, cells[1], k0_*_sin_pair(w0, 0.5)**2 + k4_*_entire_4(w0) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
-    if cells[2] is not None:
-        Omega_, k0_, k5_, k6_, k7_, t_, tau_0_, x5_, x7_ = _at(cells[2], shape, Omega, k0, k5, k6, k7, t, tau_0, x5, x7)
-        w0 = _sin_pair(_exact_phase(Omega_, t_), 0.5)**2
-        _put(out, cells[2], k0_*w0 + w0*x5_ + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_)))
-    if cells[3] is not None:
-        Omega_, k0_, k2_, k3_, k5_, k6_, k7_, t_, t_n_, tau_0_, x7_ = _at(cells[3], shape, Omega, k0, k2, k3, k5, k6, k7, t, t_n, tau_0, x7)
-        _put(out, cells[3], k0_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w_sum = k0_*_sin_half_squared(w0) + k4_*_entire_4(w0) + (k2_*w2 + k3_*w3)*_sin_pair(w0, 1.0) + (k2_*w3 - k3_*w2)*_cos_pair(w0, 1.0)
+        w_redo = _cancelled(w_sum, abs(k2_) + abs(k3_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k2_, k3_, k4_, t_, t_n_ = _at(w_redo, w_sum.shape, Omega_, k0_, k2_, k3_, k4_, t_, t_n_)
+            w0 = _exact_phase(Omega_, t_)
+            w_sum[w_redo] = k0_*_sin_half_squared(w0) + k4_*_entire_4(w0) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
+    for part in _blocks(cells[2]):
+        Omega_, k0_, k5_, k6_, k7_, t_, tau_0_, x5_, x7_ = _at(part, shape, Omega, k0, k5, k6, k7, t, tau_0, x5, x7)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = _sin_half_squared(w0)
+        w2 = _exact_phase(Omega_, tau_0_)
+        w3 = _sin_pair(w2, 1.0)
+        w4 = k6_*x7_
+        w5 = _cos_pair(w2, 1.0)
+        w6 = k7_*x7_
+        w_sum = k0_*w1 + w1*x5_ + x7_ + (w3*w4 + w5*w6)*_sin_pair(w0, 1.0) + (-w3*w6 + w4*w5)*_cos_pair(w0, 1.0)
+        w_redo = _cancelled(w_sum, abs(w4) + abs(w6) + abs(x7_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k5_, k6_, k7_, t_, tau_0_, x5_, x7_ = _at(w_redo, w_sum.shape, Omega_, k0_, k5_, k6_, k7_, t_, tau_0_, x5_, x7_)
+            w0 = _sin_half_squared(_exact_phase(Omega_, t_))
+            w_sum[w_redo] = k0_*w0 + w0*x5_ + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_))
+        _put(out, part, w_sum)
+    for part in _blocks(cells[3]):
+        Omega_, k0_, k2_, k3_, k5_, k6_, k7_, t_, t_n_, tau_0_, x7_ = _at(part, shape, Omega, k0, k2, k3, k5, k6, k7, t, t_n, tau_0, x7)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w4 = _exact_phase(Omega_, tau_0_)
+        w5 = _sin_pair(w4, 1.0)
+        w6 = k6_*x7_
+        w7 = _cos_pair(w4, 1.0)
+        w8 = k7_*x7_
+        w_sum = k0_*_sin_half_squared(w0) + x7_ + (k2_*w2 + k3_*w3 + w5*w6 + w7*w8)*_sin_pair(w0, 1.0) + (k2_*w3 - k3_*w2 - w5*w8 + w6*w7)*_cos_pair(w0, 1.0)
+        w_redo = _cancelled(w_sum, abs(k2_) + abs(k3_) + abs(w6) + abs(w8) + abs(x7_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k2_, k3_, k5_, k6_, k7_, t_, t_n_, tau_0_, x7_ = _at(w_redo, w_sum.shape, Omega_, k0_, k2_, k3_, k5_, k6_, k7_, t_, t_n_, tau_0_, x7_)
+            w_sum[w_redo] = k0_*_sin_half_squared(_exact_phase(Omega_, t_)) + x7_*_offset_wave(1, k5_, k6_, k7_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
     return out
 
 
@@ -989,24 +1131,58 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k7 = _entire_2(x6)
     k8 = _entire_3(x6)
     if out is None and not shape:      # one point: its own branch only
-        return k0*_sin_pair(_exact_phase(Omega, t), 0.5)**2 + (k5*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))) + (x3*(k1*(-t + t_n)*_entire_7(_exact_phase(Omega, t)) + _entire_5(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k3, k4, _exact_phase(Omega, t, t_n)))
+        return k0*_sin_half_squared(_exact_phase(Omega, t)) + (k5*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x5*_offset_wave(1, k6, k7, k8, _exact_phase(Omega, t, tau_0))) + (x3*(k1*(-t + t_n)*_entire_7(_exact_phase(Omega, t)) + _entire_5(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k3, k4, _exact_phase(Omega, t, t_n)))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k0_, k1_, k5_, t_, t_n_, x3_ = _at(cells[0], shape, Omega, k0, k1, k5, t, t_n, x3)
+    for part in _blocks(cells[0]):
+        Omega_, k0_, k1_, k5_, t_, t_n_, x3_ = _at(part, shape, Omega, k0, k1, k5, t, t_n, x3)
         w0 = _exact_phase(Omega_, t_)
-        _put(out, cells[0], k0_*_sin_pair(w0, 0.5)**2 + k5_*_entire_4(w0) + x3_*(k1_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)))
-    if cells[1] is not None:
-        Omega_, k0_, k3_, k4_, k5_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k3, k4, k5, t, t_n)
+        _put(out, part, k0_*_sin_half_squared(w0) + k5_*_entire_4(w0) + x3_*(k1_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)))
+    for part in _blocks(cells[1]):
+        Omega_, k0_, k3_, k4_, k5_, t_, t_n_ = _at(part, shape, Omega, k0, k3, k4, k5, t, t_n)
         w0 = _exact_phase(Omega_, t_)
-        _put(out, cells[1], k0_*_sin_pair(w0, 0.5)**2 + k5_*_entire_4(w0) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)))
-    if cells[2] is not None:
-        Omega_, k0_, k1_, k6_, k7_, k8_, t_, t_n_, tau_0_, x3_, x5_ = _at(cells[2], shape, Omega, k0, k1, k6, k7, k8, t, t_n, tau_0, x3, x5)
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w_sum = k0_*_sin_half_squared(w0) + k5_*_entire_4(w0) + (k3_*w2 + k4_*w3)*_sin_pair(w0, 1.0) + (k3_*w3 - k4_*w2)*_cos_pair(w0, 1.0)
+        w_redo = _cancelled(w_sum, abs(k3_) + abs(k4_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k3_, k4_, k5_, t_, t_n_ = _at(w_redo, w_sum.shape, Omega_, k0_, k3_, k4_, k5_, t_, t_n_)
+            w0 = _exact_phase(Omega_, t_)
+            w_sum[w_redo] = k0_*_sin_half_squared(w0) + k5_*_entire_4(w0) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
+    for part in _blocks(cells[2]):
+        Omega_, k0_, k1_, k6_, k7_, k8_, t_, t_n_, tau_0_, x3_, x5_ = _at(part, shape, Omega, k0, k1, k6, k7, k8, t, t_n, tau_0, x3, x5)
         w0 = _exact_phase(Omega_, t_)
-        _put(out, cells[2], k0_*_sin_pair(w0, 0.5)**2 + x3_*(k1_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)) + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_)))
-    if cells[3] is not None:
-        Omega_, k0_, k3_, k4_, k6_, k7_, k8_, t_, t_n_, tau_0_, x5_ = _at(cells[3], shape, Omega, k0, k3, k4, k6, k7, k8, t, t_n, tau_0, x5)
-        _put(out, cells[3], k0_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)))
+        w1 = _exact_phase(Omega_, tau_0_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = k7_*x5_
+        w4 = _cos_pair(w1, 1.0)
+        w5 = k8_*x5_
+        w_sum = k0_*_sin_half_squared(w0) + x3_*(k1_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)) + x5_ + (w2*w3 + w4*w5)*_sin_pair(w0, 1.0) + (-w2*w5 + w3*w4)*_cos_pair(w0, 1.0)
+        w_redo = _cancelled(w_sum, abs(w3) + abs(w5) + abs(x5_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k1_, k6_, k7_, k8_, t_, t_n_, tau_0_, x3_, x5_ = _at(w_redo, w_sum.shape, Omega_, k0_, k1_, k6_, k7_, k8_, t_, t_n_, tau_0_, x3_, x5_)
+            w0 = _exact_phase(Omega_, t_)
+            w_sum[w_redo] = k0_*_sin_half_squared(w0) + x3_*(k1_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)) + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_))
+        _put(out, part, w_sum)
+    for part in _blocks(cells[3]):
+        Omega_, k0_, k3_, k4_, k6_, k7_, k8_, t_, t_n_, tau_0_, x5_ = _at(part, shape, Omega, k0, k3, k4, k6, k7, k8, t, t_n, tau_0, x5)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w4 = _exact_phase(Omega_, tau_0_)
+        w5 = _sin_pair(w4, 1.0)
+        w6 = k7_*x5_
+        w7 = _cos_pair(w4, 1.0)
+        w8 = k8_*x5_
+        w_sum = k0_*_sin_half_squared(w0) + x5_ + (k3_*w2 + k4_*w3 + w5*w6 + w7*w8)*_sin_pair(w0, 1.0) + (k3_*w3 - k4_*w2 - w5*w8 + w6*w7)*_cos_pair(w0, 1.0)
+        w_redo = _cancelled(w_sum, abs(k3_) + abs(k4_) + abs(w6) + abs(w8) + abs(x5_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k3_, k4_, k6_, k7_, k8_, t_, t_n_, tau_0_, x5_ = _at(w_redo, w_sum.shape, Omega_, k0_, k3_, k4_, k6_, k7_, k8_, t_, t_n_, tau_0_, x5_)
+            w_sum[w_redo] = k0_*_sin_half_squared(_exact_phase(Omega_, t_)) + x5_*_offset_wave(1, k6_, k7_, k8_, _exact_phase(Omega_, t_, tau_0_)) + _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
     return out
 
 
@@ -1060,30 +1236,65 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k1 = _entire_1(x3)
     k2 = _entire_2(x3)
     k3 = _entire_3(x3)
-    k7 = 48*x0*x5/t_n**2
-    k8 = -24*x7*_entire_8(x6)
-    k9 = -72*x7*_entire_9(x6)
+    k6 = 48*x0*x5/t_n**2
+    k7 = -24*x7*_entire_8(x6)
+    k8 = -72*x7*_entire_9(x6)
     if out is None and not shape:      # one point: its own branch only
-        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k7*(x4*(-t + t_n)*(x4*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k8, k9, _exact_phase(Omega, t, t_n))) + 2*_sin_pair(_exact_phase(Omega, t), 0.5)**2
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x2*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k6*(x4*(-t + t_n)*(x4*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k7, k8, _exact_phase(Omega, t, t_n))) + 2*_sin_half_squared(_exact_phase(Omega, t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k0_, k7_, t_, t_n_, x4_ = _at(cells[0], shape, Omega, k0, k7, t, t_n, x4)
+    for part in _blocks(cells[0]):
+        Omega_, k0_, k6_, t_, t_n_, x4_ = _at(part, shape, Omega, k0, k6, t, t_n, x4)
         w0 = _exact_phase(Omega_, t_)
         w1 = x4_*(-t_ + t_n_)
-        _put(out, cells[0], k0_*_entire_4(w0) + k7_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + 2*_sin_pair(w0, 0.5)**2)
-    if cells[1] is not None:
-        Omega_, k0_, k8_, k9_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k8, k9, t, t_n)
+        _put(out, part, k0_*_entire_4(w0) + k6_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + 2*_sin_half_squared(w0))
+    for part in _blocks(cells[1]):
+        Omega_, k0_, k7_, k8_, t_, t_n_ = _at(part, shape, Omega, k0, k7, k8, t, t_n)
         w0 = _exact_phase(Omega_, t_)
-        _put(out, cells[1], k0_*_entire_4(w0) + 2*_sin_pair(w0, 0.5)**2 + _wave(k8_, k9_, _exact_phase(Omega_, t_, t_n_)))
-    if cells[2] is not None:
-        Omega_, k1_, k2_, k3_, k7_, t_, t_n_, tau_0_, x2_, x4_ = _at(cells[2], shape, Omega, k1, k2, k3, k7, t, t_n, tau_0, x2, x4)
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w_sum = k0_*_entire_4(w0) + (k7_*w2 + k8_*w3)*_sin_pair(w0, 1.0) + (k7_*w3 - k8_*w2)*_cos_pair(w0, 1.0) + 2*_sin_half_squared(w0)
+        w_redo = _cancelled(w_sum, abs(k7_) + abs(k8_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k7_, k8_, t_, t_n_ = _at(w_redo, w_sum.shape, Omega_, k0_, k7_, k8_, t_, t_n_)
+            w0 = _exact_phase(Omega_, t_)
+            w_sum[w_redo] = k0_*_entire_4(w0) + 2*_sin_half_squared(w0) + _wave(k7_, k8_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
+    for part in _blocks(cells[2]):
+        Omega_, k1_, k2_, k3_, k6_, t_, t_n_, tau_0_, x2_, x4_ = _at(part, shape, Omega, k1, k2, k3, k6, t, t_n, tau_0, x2, x4)
         w0 = _exact_phase(Omega_, t_)
-        w1 = x4_*(-t_ + t_n_)
-        _put(out, cells[2], k7_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(w0, 0.5)**2)
-    if cells[3] is not None:
-        Omega_, k1_, k2_, k3_, k8_, k9_, t_, t_n_, tau_0_, x2_ = _at(cells[3], shape, Omega, k1, k2, k3, k8, k9, t, t_n, tau_0, x2)
-        _put(out, cells[3], x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + _wave(k8_, k9_, _exact_phase(Omega_, t_, t_n_)))
+        w1 = _exact_phase(Omega_, tau_0_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = k2_*x2_
+        w4 = _cos_pair(w1, 1.0)
+        w5 = k3_*x2_
+        w6 = x4_*(-t_ + t_n_)
+        w_sum = k6_*(w6*(w6*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + x2_ + (w2*w3 + w4*w5)*_sin_pair(w0, 1.0) + (-w2*w5 + w3*w4)*_cos_pair(w0, 1.0) + 2*_sin_half_squared(w0)
+        w_redo = _cancelled(w_sum, abs(w3) + abs(w5) + abs(x2_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k1_, k2_, k3_, k6_, t_, t_n_, tau_0_, x2_, x4_ = _at(w_redo, w_sum.shape, Omega_, k1_, k2_, k3_, k6_, t_, t_n_, tau_0_, x2_, x4_)
+            w0 = _exact_phase(Omega_, t_)
+            w1 = x4_*(-t_ + t_n_)
+            w_sum[w_redo] = k6_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_half_squared(w0)
+        _put(out, part, w_sum)
+    for part in _blocks(cells[3]):
+        Omega_, k1_, k2_, k3_, k7_, k8_, t_, t_n_, tau_0_, x2_ = _at(part, shape, Omega, k1, k2, k3, k7, k8, t, t_n, tau_0, x2)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w4 = _exact_phase(Omega_, tau_0_)
+        w5 = _sin_pair(w4, 1.0)
+        w6 = k2_*x2_
+        w7 = _cos_pair(w4, 1.0)
+        w8 = k3_*x2_
+        w_sum = x2_ + (k7_*w2 + k8_*w3 + w5*w6 + w7*w8)*_sin_pair(w0, 1.0) + (k7_*w3 - k8_*w2 - w5*w8 + w6*w7)*_cos_pair(w0, 1.0) + 2*_sin_half_squared(w0)
+        w_redo = _cancelled(w_sum, abs(k7_) + abs(k8_) + abs(w6) + abs(w8) + abs(x2_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k1_, k2_, k3_, k7_, k8_, t_, t_n_, tau_0_, x2_ = _at(w_redo, w_sum.shape, Omega_, k1_, k2_, k3_, k7_, k8_, t_, t_n_, tau_0_, x2_)
+            w_sum[w_redo] = x2_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_half_squared(_exact_phase(Omega_, t_)) + _wave(k7_, k8_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
     return out
 
 
@@ -1136,30 +1347,65 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k1 = _entire_1(x2)
     k2 = _entire_2(x2)
     k3 = _entire_3(x2)
-    k8 = -120*x4/(Omega**2*t_n**3)
-    k9 = -2880*x6*_entire_13(x5)
-    k10 = -7200*x6*_entire_14(x5)
+    k6 = -120*x4/(Omega**2*t_n**3)
+    k7 = -2880*x6*_entire_13(x5)
+    k8 = -7200*x6*_entire_14(x5)
     if out is None and not shape:      # one point: its own branch only
-        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k8*(x3*(-t + t_n)*(x3*(-t + t_n)*(x3*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k9, k10, _exact_phase(Omega, t, t_n))) + 2*_sin_pair(_exact_phase(Omega, t), 0.5)**2
+        return (k0*_entire_4(_exact_phase(Omega, t)) if np.less_equal(t, tau_0) else x1*_offset_wave(1, k1, k2, k3, _exact_phase(Omega, t, tau_0))) + (k6*(x3*(-t + t_n)*(x3*(-t + t_n)*(x3*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k7, k8, _exact_phase(Omega, t, t_n))) + 2*_sin_half_squared(_exact_phase(Omega, t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)], [np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k0_, k8_, t_, t_n_, x3_ = _at(cells[0], shape, Omega, k0, k8, t, t_n, x3)
+    for part in _blocks(cells[0]):
+        Omega_, k0_, k6_, t_, t_n_, x3_ = _at(part, shape, Omega, k0, k6, t, t_n, x3)
         w0 = _exact_phase(Omega_, t_)
         w1 = x3_*(-t_ + t_n_)
-        _put(out, cells[0], k0_*_entire_4(w0) + k8_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + 2*_sin_pair(w0, 0.5)**2)
-    if cells[1] is not None:
-        Omega_, k0_, k10_, k9_, t_, t_n_ = _at(cells[1], shape, Omega, k0, k10, k9, t, t_n)
+        _put(out, part, k0_*_entire_4(w0) + k6_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + 2*_sin_half_squared(w0))
+    for part in _blocks(cells[1]):
+        Omega_, k0_, k7_, k8_, t_, t_n_ = _at(part, shape, Omega, k0, k7, k8, t, t_n)
         w0 = _exact_phase(Omega_, t_)
-        _put(out, cells[1], k0_*_entire_4(w0) + 2*_sin_pair(w0, 0.5)**2 + _wave(k9_, k10_, _exact_phase(Omega_, t_, t_n_)))
-    if cells[2] is not None:
-        Omega_, k1_, k2_, k3_, k8_, t_, t_n_, tau_0_, x1_, x3_ = _at(cells[2], shape, Omega, k1, k2, k3, k8, t, t_n, tau_0, x1, x3)
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w_sum = k0_*_entire_4(w0) + (k7_*w2 + k8_*w3)*_sin_pair(w0, 1.0) + (k7_*w3 - k8_*w2)*_cos_pair(w0, 1.0) + 2*_sin_half_squared(w0)
+        w_redo = _cancelled(w_sum, abs(k7_) + abs(k8_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k0_, k7_, k8_, t_, t_n_ = _at(w_redo, w_sum.shape, Omega_, k0_, k7_, k8_, t_, t_n_)
+            w0 = _exact_phase(Omega_, t_)
+            w_sum[w_redo] = k0_*_entire_4(w0) + 2*_sin_half_squared(w0) + _wave(k7_, k8_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
+    for part in _blocks(cells[2]):
+        Omega_, k1_, k2_, k3_, k6_, t_, t_n_, tau_0_, x1_, x3_ = _at(part, shape, Omega, k1, k2, k3, k6, t, t_n, tau_0, x1, x3)
         w0 = _exact_phase(Omega_, t_)
-        w1 = x3_*(-t_ + t_n_)
-        _put(out, cells[2], k8_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(w0, 0.5)**2)
-    if cells[3] is not None:
-        Omega_, k1_, k10_, k2_, k3_, k9_, t_, t_n_, tau_0_, x1_ = _at(cells[3], shape, Omega, k1, k10, k2, k3, k9, t, t_n, tau_0, x1)
-        _put(out, cells[3], x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2 + _wave(k9_, k10_, _exact_phase(Omega_, t_, t_n_)))
+        w1 = _exact_phase(Omega_, tau_0_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = k2_*x1_
+        w4 = _cos_pair(w1, 1.0)
+        w5 = k3_*x1_
+        w6 = x3_*(-t_ + t_n_)
+        w_sum = k6_*(w6*(w6*(w6*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + x1_ + (w2*w3 + w4*w5)*_sin_pair(w0, 1.0) + (-w2*w5 + w3*w4)*_cos_pair(w0, 1.0) + 2*_sin_half_squared(w0)
+        w_redo = _cancelled(w_sum, abs(w3) + abs(w5) + abs(x1_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k1_, k2_, k3_, k6_, t_, t_n_, tau_0_, x1_, x3_ = _at(w_redo, w_sum.shape, Omega_, k1_, k2_, k3_, k6_, t_, t_n_, tau_0_, x1_, x3_)
+            w0 = _exact_phase(Omega_, t_)
+            w1 = x3_*(-t_ + t_n_)
+            w_sum[w_redo] = k6_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_half_squared(w0)
+        _put(out, part, w_sum)
+    for part in _blocks(cells[3]):
+        Omega_, k1_, k2_, k3_, k7_, k8_, t_, t_n_, tau_0_, x1_ = _at(part, shape, Omega, k1, k2, k3, k7, k8, t, t_n, tau_0, x1)
+        w0 = _exact_phase(Omega_, t_)
+        w1 = _exact_phase(Omega_, t_n_)
+        w2 = _sin_pair(w1, 1.0)
+        w3 = _cos_pair(w1, 1.0)
+        w4 = _exact_phase(Omega_, tau_0_)
+        w5 = _sin_pair(w4, 1.0)
+        w6 = k2_*x1_
+        w7 = _cos_pair(w4, 1.0)
+        w8 = k3_*x1_
+        w_sum = x1_ + (k7_*w2 + k8_*w3 + w5*w6 + w7*w8)*_sin_pair(w0, 1.0) + (k7_*w3 - k8_*w2 - w5*w8 + w6*w7)*_cos_pair(w0, 1.0) + 2*_sin_half_squared(w0)
+        w_redo = _cancelled(w_sum, abs(k7_) + abs(k8_) + abs(w6) + abs(w8) + abs(x1_))
+        if w_redo is not None:      # where the fast sum cancels
+            Omega_, k1_, k2_, k3_, k7_, k8_, t_, t_n_, tau_0_, x1_ = _at(w_redo, w_sum.shape, Omega_, k1_, k2_, k3_, k7_, k8_, t_, t_n_, tau_0_, x1_)
+            w_sum[w_redo] = x1_*_offset_wave(1, k1_, k2_, k3_, _exact_phase(Omega_, t_, tau_0_)) + 2*_sin_half_squared(_exact_phase(Omega_, t_)) + _wave(k7_, k8_, _exact_phase(Omega_, t_, t_n_))
+        _put(out, part, w_sum)
     return out
 
 
@@ -1207,15 +1453,15 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     k2 = x2*np.sin(x4)
     k3 = x0*x1
     if out is None and not shape:      # one point: its own branch only
-        return k3 + (x3*_sin_pair(_exact_phase(Omega, t), 0.5)**2 if np.less_equal(t, t_n) else _wave(k1, k2, _exact_phase(Omega, t, t_n)))
+        return k3 + (x3*_sin_half_squared(_exact_phase(Omega, t)) if np.less_equal(t, t_n) else _wave(k1, k2, _exact_phase(Omega, t, t_n)))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k3_, t_, x3_ = _at(cells[0], shape, Omega, k3, t, x3)
-        _put(out, cells[0], k3_ + x3_*_sin_pair(_exact_phase(Omega_, t_), 0.5)**2)
-    if cells[1] is not None:
-        Omega_, k1_, k2_, k3_, t_, t_n_ = _at(cells[1], shape, Omega, k1, k2, k3, t, t_n)
-        _put(out, cells[1], k3_ + _wave(k1_, k2_, _exact_phase(Omega_, t_, t_n_)))
+    for part in _blocks(cells[0]):
+        Omega_, k3_, t_, x3_ = _at(part, shape, Omega, k3, t, x3)
+        _put(out, part, k3_ + x3_*_sin_half_squared(_exact_phase(Omega_, t_)))
+    for part in _blocks(cells[1]):
+        Omega_, k1_, k2_, k3_, t_, t_n_ = _at(part, shape, Omega, k1, k2, k3, t, t_n)
+        _put(out, part, k3_ + _wave(k1_, k2_, _exact_phase(Omega_, t_, t_n_)))
     return out
 
 
@@ -1266,13 +1512,13 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
         return k4 + (x2*(k0*(-t + t_n)*_entire_7(_exact_phase(Omega, t)) + _entire_5(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n)))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k0_, k4_, t_, t_n_, x2_ = _at(cells[0], shape, Omega, k0, k4, t, t_n, x2)
+    for part in _blocks(cells[0]):
+        Omega_, k0_, k4_, t_, t_n_, x2_ = _at(part, shape, Omega, k0, k4, t, t_n, x2)
         w0 = _exact_phase(Omega_, t_)
-        _put(out, cells[0], k4_ + x2_*(k0_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)))
-    if cells[1] is not None:
-        Omega_, k2_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k2, k3, k4, t, t_n)
-        _put(out, cells[1], k4_ + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
+        _put(out, part, k4_ + x2_*(k0_*(-t_ + t_n_)*_entire_7(w0) + _entire_5(w0)))
+    for part in _blocks(cells[1]):
+        Omega_, k2_, k3_, k4_, t_, t_n_ = _at(part, shape, Omega, k2, k3, k4, t, t_n)
+        _put(out, part, k4_ + _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)))
     return out
 
 
@@ -1315,21 +1561,21 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = v0/g
     x2 = Omega*t_n
     x3 = x0*x1
-    k2 = 48*x1/(Omega*t_n**2)
-    k3 = -24*x3*_entire_8(x2)
-    k4 = -72*x3*_entire_9(x2)
+    k1 = 48*x1/(Omega*t_n**2)
+    k2 = -24*x3*_entire_8(x2)
+    k3 = -72*x3*_entire_9(x2)
     if out is None and not shape:      # one point: its own branch only
-        return (k2*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k3, k4, _exact_phase(Omega, t, t_n))) + 1
+        return (k1*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_10(_exact_phase(Omega, t)) + _entire_11(_exact_phase(Omega, t))) + _entire_12(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n))) + 1
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k2_, t_, t_n_, x0_ = _at(cells[0], shape, Omega, k2, t, t_n, x0)
+    for part in _blocks(cells[0]):
+        Omega_, k1_, t_, t_n_, x0_ = _at(part, shape, Omega, k1, t, t_n, x0)
         w0 = _exact_phase(Omega_, t_)
         w1 = x0_*(-t_ + t_n_)
-        _put(out, cells[0], k2_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + 1)
-    if cells[1] is not None:
-        Omega_, k3_, k4_, t_, t_n_ = _at(cells[1], shape, Omega, k3, k4, t, t_n)
-        _put(out, cells[1], _wave(k3_, k4_, _exact_phase(Omega_, t_, t_n_)) + 1)
+        _put(out, part, k1_*(w1*(w1*_entire_10(w0) + _entire_11(w0)) + _entire_12(w0)) + 1)
+    for part in _blocks(cells[1]):
+        Omega_, k2_, k3_, t_, t_n_ = _at(part, shape, Omega, k2, k3, t, t_n)
+        _put(out, part, _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)) + 1)
     return out
 
 
@@ -1372,21 +1618,21 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = v0/g
     x2 = Omega*t_n
     x3 = x0*x1
-    k3 = -120*x1/(Omega**2*t_n**3)
-    k4 = -2880*x3*_entire_13(x2)
-    k5 = -7200*x3*_entire_14(x2)
+    k1 = -120*x1/(Omega**2*t_n**3)
+    k2 = -2880*x3*_entire_13(x2)
+    k3 = -7200*x3*_entire_14(x2)
     if out is None and not shape:      # one point: its own branch only
-        return (k3*(x0*(-t + t_n)*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k4, k5, _exact_phase(Omega, t, t_n))) + 1
+        return (k1*(x0*(-t + t_n)*(x0*(-t + t_n)*(x0*(-t + t_n)*_entire_15(_exact_phase(Omega, t)) + _entire_16(_exact_phase(Omega, t))) + _entire_17(_exact_phase(Omega, t))) + _entire_18(_exact_phase(Omega, t))) if np.less_equal(t, t_n) else _wave(k2, k3, _exact_phase(Omega, t, t_n))) + 1
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, t_n)]])
-    if cells[0] is not None:
-        Omega_, k3_, t_, t_n_, x0_ = _at(cells[0], shape, Omega, k3, t, t_n, x0)
+    for part in _blocks(cells[0]):
+        Omega_, k1_, t_, t_n_, x0_ = _at(part, shape, Omega, k1, t, t_n, x0)
         w0 = _exact_phase(Omega_, t_)
         w1 = x0_*(-t_ + t_n_)
-        _put(out, cells[0], k3_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + 1)
-    if cells[1] is not None:
-        Omega_, k4_, k5_, t_, t_n_ = _at(cells[1], shape, Omega, k4, k5, t, t_n)
-        _put(out, cells[1], _wave(k4_, k5_, _exact_phase(Omega_, t_, t_n_)) + 1)
+        _put(out, part, k1_*(w1*(w1*(w1*_entire_15(w0) + _entire_16(w0)) + _entire_17(w0)) + _entire_18(w0)) + 1)
+    for part in _blocks(cells[1]):
+        Omega_, k2_, k3_, t_, t_n_ = _at(part, shape, Omega, k2, k3, t, t_n)
+        _put(out, part, _wave(k2_, k3_, _exact_phase(Omega_, t_, t_n_)) + 1)
     return out
 
 
@@ -1455,11 +1701,11 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
         return (k0*t + 1 if np.less_equal(t, tau_0) else 1)
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)]])
-    if cells[0] is not None:
-        k0_, t_ = _at(cells[0], shape, k0, t)
-        _put(out, cells[0], k0_*t_ + 1)
-    if cells[1] is not None:
-        _put(out, cells[1], 1)
+    for part in _blocks(cells[0]):
+        k0_, t_ = _at(part, shape, k0, t)
+        _put(out, part, k0_*t_ + 1)
+    for part in _blocks(cells[1]):
+        _put(out, part, 1)
     return out
 
 
@@ -1532,19 +1778,19 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
-    x0 = -t_n
-    x1 = -1/t_n
+    k0 = -t_n
+    k1 = -1/t_n
     k2 = g*t_n/(tau_0*v0)
     if out is None and not shape:      # one point: its own branch only
-        return (k2*t + x1*(t + x0) if np.less_equal(t, tau_0) else x1*(t + x0))
+        return (k1*(k0 + t) + k2*t if np.less_equal(t, tau_0) else k1*(k0 + t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)]])
-    if cells[0] is not None:
-        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
-        _put(out, cells[0], k2_*t_ + x1_*(t_ + x0_))
-    if cells[1] is not None:
-        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
-        _put(out, cells[1], x1_*(t_ + x0_))
+    for part in _blocks(cells[0]):
+        k0_, k1_, k2_, t_ = _at(part, shape, k0, k1, k2, t)
+        _put(out, part, k1_*(k0_ + t_) + k2_*t_)
+    for part in _blocks(cells[1]):
+        k0_, k1_, t_ = _at(part, shape, k0, k1, t)
+        _put(out, part, k1_*(k0_ + t_))
     return out
 
 
@@ -1620,19 +1866,19 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
-    x0 = -t_n
-    x1 = 12/t_n**3
+    k0 = -t_n
+    k1 = 12/t_n**3
     k2 = g*t_n/(tau_0*v0)
     if out is None and not shape:      # one point: its own branch only
-        return (t*(k2 + x1*(t + x0)**2) if np.less_equal(t, tau_0) else t*x1*(t + x0)**2)
+        return (t*(k1*(k0 + t)**2 + k2) if np.less_equal(t, tau_0) else k1*t*(k0 + t)**2)
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)]])
-    if cells[0] is not None:
-        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
-        _put(out, cells[0], t_*(k2_ + x1_*(t_ + x0_)**2))
-    if cells[1] is not None:
-        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
-        _put(out, cells[1], t_*x1_*(t_ + x0_)**2)
+    for part in _blocks(cells[0]):
+        k0_, k1_, k2_, t_ = _at(part, shape, k0, k1, k2, t)
+        _put(out, part, t_*(k1_*(k0_ + t_)**2 + k2_))
+    for part in _blocks(cells[1]):
+        k0_, k1_, t_ = _at(part, shape, k0, k1, t)
+        _put(out, part, k1_*t_*(k0_ + t_)**2)
     return out
 
 
@@ -1711,17 +1957,17 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
-    x0 = -t_n
-    x1 = -60/t_n**5
+    k0 = -t_n
+    k1 = -60/t_n**5
     k2 = g*t_n/(tau_0*v0)
     if out is None and not shape:      # one point: its own branch only
-        return (t*(k2 + t*x1*(t + x0)**3) if np.less_equal(t, tau_0) else t**2*x1*(t + x0)**3)
+        return (t*(k1*t*(k0 + t)**3 + k2) if np.less_equal(t, tau_0) else k1*t**2*(k0 + t)**3)
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)]])
-    if cells[0] is not None:
-        k2_, t_, x0_, x1_ = _at(cells[0], shape, k2, t, x0, x1)
-        _put(out, cells[0], t_*(k2_ + t_*x1_*(t_ + x0_)**3))
-    if cells[1] is not None:
-        t_, x0_, x1_ = _at(cells[1], shape, t, x0, x1)
-        _put(out, cells[1], t_**2*x1_*(t_ + x0_)**3)
+    for part in _blocks(cells[0]):
+        k0_, k1_, k2_, t_ = _at(part, shape, k0, k1, k2, t)
+        _put(out, part, t_*(k1_*t_*(k0_ + t_)**3 + k2_))
+    for part in _blocks(cells[1]):
+        k0_, k1_, t_ = _at(part, shape, k0, k1, t)
+        _put(out, part, k1_*t_**2*(k0_ + t_)**3)
     return out

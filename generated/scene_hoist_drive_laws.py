@@ -120,15 +120,27 @@ def _taylor_where(values, small, z, power, step, coeffs):
     """``values`` with the entries where ``small`` replaced by
     z**power * sum_k coeffs[k] * z**(step*k) (Horner): an entire function by
     its Taylor series where its closed form cancels."""
+    if not np.any(small):
+        return np.asarray(values, dtype=float)
     values = np.array(values, dtype=float)
-    if np.any(small):
-        zs = np.asarray(z, dtype=float)[small]
-        zz = zs * zs if step == 2 else zs
-        total = np.full_like(zs, coeffs[-1])
-        for c in coeffs[-2::-1]:
-            total = total * zz + c
-        values[small] = total * zs ** power
+    zs = np.asarray(z, dtype=float)[small]
+    zz = zs * zs if step == 2 else zs
+    total = np.full_like(zs, coeffs[-1])
+    for c in coeffs[-2::-1]:
+        total = total * zz + c
+    values[small] = total * zs ** power
     return values
+
+
+class _Phase(tuple):
+    """A phase pair (hi, lo) that keeps the sines and cosines taken of it, so
+    the kernels one formula calls on the same phase share one np.sin and one
+    np.cos of each multiple (``_sincos_pair``)."""
+
+    def __new__(cls, hi, lo):
+        phase = tuple.__new__(cls, (hi, lo))
+        phase.taken = {}
+        return phase
 
 
 def _exact_phase(k, t, c=0.0):
@@ -137,30 +149,50 @@ def _exact_phase(k, t, c=0.0):
     times or just after a switch, where one rounding is a large error of a
     sine near its zeros."""
     if np.ndim(c) == 0 and c == 0:   # t - 0 is exact: the product alone
-        return _two_product(k, t)
+        return _Phase(*_two_product(k, t))
     s, e = _two_sum(t, -c)
     p, pe = _two_product(k, s)
-    return _quick_two_sum(p, pe + k * e)
+    return _Phase(*_quick_two_sum(p, pe + k * e))
 
 
 def _pair(z):
-    """A phase as (hi, lo): a pair from _exact_phase, or a double."""
-    return z if isinstance(z, tuple) else (z, 0.0 * np.asarray(z))
+    """A phase as (hi, lo): a pair from _exact_phase, or a double (lo = 0)."""
+    return z if isinstance(z, tuple) else (z, 0.0)
 
 
 def _sin_pair(z, q):
     """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
-    hi, lo = _pair(z)
-    a = q * hi
-    return np.sin(a) + np.cos(a) * (q * lo)
+    return _sincos_pair(z, q)[0]
+
+
+def _cos_pair(z, q):
+    """cos(q*z) for a phase pair z (q a power of two)."""
+    return _sincos_pair(z, q)[1]
 
 
 def _sincos_pair(z, q):
-    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once."""
+    """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once;
+    kept on a _Phase for the next kernel that asks."""
+    taken = getattr(z, "taken", None)
+    if taken is not None and q in taken:
+        return taken[q]
     hi, lo = _pair(z)
-    a, d = q * hi, q * lo
+    a = q * hi
     s, c = np.sin(a), np.cos(a)
-    return s + c * d, c - s * d
+    if not (np.ndim(lo) == 0 and lo == 0):
+        d = q * lo
+        s, c = s + c * d, c - s * d
+    if taken is not None:
+        taken[q] = (s, c)
+    return s, c
+
+
+def _sin_half_squared(z):
+    """sin(z/2)**2 for a phase pair z, from its shared sine and cosine:
+    (1 - cos z)/2 where cos z < 0, else sin(z)**2/(2 + 2 cos z); neither
+    cancels (|cos z| in the unused branch: no division by zero)."""
+    s, c = _sincos_pair(z, 1.0)
+    return np.where(c < 0, 0.5 - 0.5 * c, s * s / (2.0 + 2.0 * np.abs(c)))
 
 
 def _wave(b, c, x):
@@ -219,14 +251,33 @@ def _put(out, where, value):
         out.flat[where] = value
 
 
+def _cancelled(value, bound):
+    """A selector of the points of the 1-D ``value`` below half its error
+    scale ``bound``, where a fast sum cancels and the cell's own formula is
+    evaluated again (``wave_sums``); None if there is none."""
+    return _selector(np.abs(value) < 0.5 * bound)
+
+
+def _blocks(where, size=16384):
+    """``where`` (a selector of ``_cells``) in pieces of at most ``size``
+    points: a cell's temporaries then stay in the cache and below the
+    allocator's mmap threshold, so a call does not page-fault on every new
+    array; none for an empty cell."""
+    if where is None:
+        return ()
+    if isinstance(where, slice):
+        return [slice(i, min(i + size, where.stop)) for i in range(where.start, where.stop, size)]
+    return [where[i:i + size] for i in range(0, where.size, size)]
+
+
 def _entire_1(z):
     """z - sin(z):
     entire, ~z**3 at 0; its Taylor series where |z| < 2.378414230005442.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 2.378414230005442
     z_ = np.where(small, 2.378414230005442, z)
-    w = (z_, np.where(small, 0.0, z_lo))
     s0, c0 = _sincos_pair(w, 1.0)
     return _taylor_where(-s0 + z_, small, z, 3, 2,
                          (0.16666666666666666, -0.008333333333333333, 0.0001984126984126984, -2.7557319223985893e-06, 2.505210838544172e-08, -1.6059043836821613e-10, 7.647163731819816e-13, -2.8114572543455206e-15, 8.22063524662433e-18, -1.9572941063391263e-20, 3.868170170630684e-23, -6.446950284384474e-26,))
@@ -236,13 +287,13 @@ def _entire_2(z):
     """-z/25 + 2*sin(z/2)**2 + sin(z)/25:
     entire, ~z**2 at 0; its Taylor series where |z| < 0.026278012976678578.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 0.026278012976678578
     z_ = np.where(small, 0.026278012976678578, z)
-    w = (z_, np.where(small, 0.0, z_lo))
-    s0, c0 = _sincos_pair(w, 0.5)
+    h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(2*s0**2 + (1/25)*s1 - 1/25*z_, small, z, 2, 1,
+    return _taylor_where(2*h0 + (1/25)*s1 - 1/25*z_, small, z, 2, 1,
                          (0.5, -0.006666666666666667, -0.041666666666666664, 0.0003333333333333333, 0.001388888888888889, -7.936507936507936e-06, -2.48015873015873e-05, 1.1022927689594356e-07,))
 
 
@@ -250,13 +301,13 @@ def _entire_3(z):
     """z**3/100 - z**2/2 + 619*z/100 + 2*sin(z/2)**2 - 619*sin(z)/100:
     entire, ~z**3 at 0; its Taylor series where |z| < 0.1767766952966369.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 0.1767766952966369
     z_ = np.where(small, 0.1767766952966369, z)
-    w = (z_, np.where(small, 0.0, z_lo))
-    s0, c0 = _sincos_pair(w, 0.5)
+    h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(2*s0**2 - 619/100*s1 + (1/100)*z_**3 - 1/2*z_**2 + (619/100)*z_, small, z, 3, 1,
+    return _taylor_where(2*h0 - 619/100*s1 + (1/100)*z_**3 - 1/2*z_**2 + (619/100)*z_, small, z, 3, 1,
                          (1.0416666666666667, -0.041666666666666664, -0.051583333333333335, 0.001388888888888889, 0.0012281746031746032, -2.48015873015873e-05, -1.7057980599647265e-05, 2.755731922398589e-07, 1.5507255090588425e-07, -2.08767569878681e-09, -9.94054813499258e-10,))
 
 
@@ -264,13 +315,13 @@ def _entire_4(z):
     """z**5/29450 - 3*z**4/1178 + 371*z**3/5890 - z**2/2 - 1113*z/2945 + 2*sin(z/2)**2 + 1113*sin(z)/2945:
     entire, ~z**4 at 0; its Taylor series where |z| < 0.125.
     z is a phase: a pair (hi, lo) or a double."""
-    z, z_lo = _pair(z)
+    w = z
+    z = _pair(w)[0]
     small = np.abs(z) < 0.125
     z_ = np.where(small, 0.125, z)
-    w = (z_, np.where(small, 0.0, z_lo))
-    s0, c0 = _sincos_pair(w, 0.5)
+    h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(2*s0**2 + (1113/2945)*s1 + (1/29450)*z_**5 - 3/1178*z_**4 + (371/5890)*z_**3 - 1/2*z_**2 - 1113/2945*z_, small, z, 4, 1,
+    return _taylor_where(2*h0 + (1113/2945)*s1 + (1/29450)*z_**5 - 3/1178*z_**4 + (371/5890)*z_**3 - 1/2*z_**2 - 1113/2945*z_, small, z, 4, 1,
                          (-0.04421335597057159, 0.0031833616298811546, 0.001388888888888889, -7.498585172608941e-05, -2.48015873015873e-05, 1.041470162862353e-06, 2.755731922398589e-07, -9.467910571475936e-09, -2.08767569878681e-09, 6.069173443253806e-11,))
 
 
@@ -292,25 +343,51 @@ def dynamic_coefficient_pickup_a1(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
-        return ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + ((351843720888320/5698460903507231)*_sin_pair(_exact_phase(25, t), 0.5)**2 if np.less_equal(t, 1) else _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t), 0.5)**2
+        return ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + ((351843720888320/5698460903507231)*_sin_half_squared(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))) + (11045078086126142/5698460903507231)*_sin_half_squared(_exact_phase(25, t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 706884997512073/2251799813685248)], [np.less_equal(t, 1)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[0], (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
+        _put(out, part, (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + 2*_sin_half_squared(v0))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[1], (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_pair(v0, 0.5)**2 + _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t_, 1)))
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        _put(out, cells[2], 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + 2*_sin_pair(_exact_phase(25, t_), 0.5)**2 + 0.21141077704121883)
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        _put(out, cells[3], 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t_, 1)) + 0.21141077704121883)
+        v1 = _exact_phase(25, 1)
+        v2 = _cos_pair(v1, 1.0)
+        v3 = _sin_pair(v1, 1.0)
+        v_sum = (-0.0040859394325071935*v2 + 0.00027158521043857745*v3)*_sin_pair(v0, 1.0) + (0.00027158521043857745*v2 + 0.0040859394325071935*v3)*_cos_pair(v0, 1.0) + (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0)
+        v_redo = _cancelled(v_sum, 0.004357524642945771)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_)
+            v_sum[v_redo] = (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0) + _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t_, 1))
+        _put(out, part, v_sum)
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v_sum = -0.0306871573751505*_cos_pair(v0, 1.0)*_sin_pair(v1, 1.0) + 0.0306871573751505*_cos_pair(v1, 1.0)*_sin_pair(v0, 1.0) + 2*_sin_half_squared(v0) + 0.06174253581630276*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21141077704121883
+        v_redo = _cancelled(v_sum, 0.24209793441636934)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v_sum[v_redo] = 0.06174253581630276*_sin_half_squared(v0) + 0.0306871573751505*_sin_pair(v0, 1.0) + 2*_sin_half_squared(_exact_phase(25, t_)) + 0.21141077704121883
+        _put(out, part, v_sum)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v2 = _exact_phase(25, 1)
+        v3 = _cos_pair(v2, 1.0)
+        v4 = _sin_pair(v2, 1.0)
+        v_sum = (-0.0040859394325071935*v3 + 0.00027158521043857745*v4 + 0.0306871573751505*_cos_pair(v1, 1.0))*_sin_pair(v0, 1.0) + (0.00027158521043857745*v3 + 0.0040859394325071935*v4 - 0.0306871573751505*_sin_pair(v1, 1.0))*_cos_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0) + 0.06174253581630276*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21141077704121883
+        v_redo = _cancelled(v_sum, 0.2464554590593151)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v_sum[v_redo] = 0.06174253581630276*_sin_half_squared(v0) + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_half_squared(_exact_phase(25, t_)) + _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t_, 1)) + 0.21141077704121883
+        _put(out, part, v_sum)
     return out
 
 
@@ -332,26 +409,52 @@ def dynamic_coefficient_pickup_a2(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
-        return ((175921860444160/5698460903507231)*_entire_2(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))) + ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t), 0.5)**2
+        return ((175921860444160/5698460903507231)*_entire_2(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))) + ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + (11045078086126142/5698460903507231)*_sin_half_squared(_exact_phase(25, t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 1)], [np.less_equal(t, 706884997512073/2251799813685248)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[0], (175921860444160/5698460903507231)*_entire_2(v0) + (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_pair(v0, 0.5)**2)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        v1 = _exact_phase(25, t_)
-        _put(out, cells[1], (175921860444160/5698460903507231)*_entire_2(v1) + 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_pair(v1, 0.5)**2 + 0.21141077704121883)
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
+        _put(out, part, (175921860444160/5698460903507231)*_entire_2(v0) + (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[2], (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_pair(v0, 0.5)**2 + _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t_, 1)))
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        _put(out, cells[3], 0.06174253581630276*_sin_pair(v0, 0.5)**2 + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t_, 1)) + 0.21141077704121883)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v_sum = (175921860444160/5698460903507231)*_entire_2(v0) - 0.0306871573751505*_cos_pair(v0, 1.0)*_sin_pair(v1, 1.0) + 0.0306871573751505*_cos_pair(v1, 1.0)*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0) + 0.06174253581630276*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21141077704121883
+        v_redo = _cancelled(v_sum, 0.24209793441636934)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v1 = _exact_phase(25, t_)
+            v_sum[v_redo] = (175921860444160/5698460903507231)*_entire_2(v1) + 0.06174253581630276*_sin_half_squared(v0) + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_half_squared(v1) + 0.21141077704121883
+        _put(out, part, v_sum)
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 1)
+        v2 = _cos_pair(v1, 1.0)
+        v3 = _sin_pair(v1, 1.0)
+        v_sum = (-0.03076367256938085*v2 + 0.004096802840924737*v3)*_cos_pair(v0, 1.0) + (-0.004096802840924737*v2 - 0.03076367256938085*v3)*_sin_pair(v0, 1.0) + (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0)
+        v_redo = _cancelled(v_sum, 0.03486047541030558)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_)
+            v_sum[v_redo] = (3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(v0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0) + _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t_, 1))
+        _put(out, part, v_sum)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v2 = _exact_phase(25, 1)
+        v3 = _cos_pair(v2, 1.0)
+        v4 = _sin_pair(v2, 1.0)
+        v_sum = (-0.03076367256938085*v3 + 0.004096802840924737*v4 - 0.0306871573751505*_sin_pair(v1, 1.0))*_cos_pair(v0, 1.0) + (-0.004096802840924737*v3 - 0.03076367256938085*v4 + 0.0306871573751505*_cos_pair(v1, 1.0))*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_half_squared(v0) + 0.06174253581630276*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21141077704121883
+        v_redo = _cancelled(v_sum, 0.2769584098266749)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v_sum[v_redo] = 0.06174253581630276*_sin_half_squared(v0) + 0.0306871573751505*_sin_pair(v0, 1.0) + (11045078086126142/5698460903507231)*_sin_half_squared(_exact_phase(25, t_)) + _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t_, 1)) + 0.21141077704121883
+        _put(out, part, v_sum)
     return out
 
 
@@ -373,26 +476,52 @@ def dynamic_coefficient_pickup_a3(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
-        return ((1688849860263936/690317380382883875)*_entire_3(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_pair(_exact_phase(25, t), 0.5)**2
+        return ((1688849860263936/690317380382883875)*_entire_3(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_half_squared(_exact_phase(25, t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 1)], [np.less_equal(t, 706884997512073/2251799813685248)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[0], (1688849860263936/690317380382883875)*_entire_3(v0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        v1 = _exact_phase(25, t_)
-        _put(out, cells[1], (1688849860263936/690317380382883875)*_entire_3(v1) + 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(v1, 0.5)**2 + 0.21814532014268478)
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
+        _put(out, part, (1688849860263936/690317380382883875)*_entire_3(v0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_half_squared(v0))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[2], (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2 + _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t_, 1)))
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        _put(out, cells[3], 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t_, 1)) + 0.21814532014268478)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v_sum = (1688849860263936/690317380382883875)*_entire_3(v0) - 0.03166470443730489*_cos_pair(v0, 1.0)*_sin_pair(v1, 1.0) + 0.03166470443730489*_cos_pair(v1, 1.0)*_sin_pair(v0, 1.0) + 2*_sin_half_squared(v0) + 0.06370935971463045*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21814532014268478
+        v_redo = _cancelled(v_sum, 0.24981002457998966)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v1 = _exact_phase(25, t_)
+            v_sum[v_redo] = (1688849860263936/690317380382883875)*_entire_3(v1) + 0.06370935971463045*_sin_half_squared(v0) + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_half_squared(v1) + 0.21814532014268478
+        _put(out, part, v_sum)
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 1)
+        v2 = _cos_pair(v1, 1.0)
+        v3 = _sin_pair(v1, 1.0)
+        v_sum = (-0.015481093958489723*v2 - 0.00164390331194681*v3)*_sin_pair(v0, 1.0) + (-0.00164390331194681*v2 + 0.015481093958489723*v3)*_cos_pair(v0, 1.0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_half_squared(v0)
+        v_redo = _cancelled(v_sum, 0.017124997270436534)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_)
+            v_sum[v_redo] = (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_half_squared(v0) + _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t_, 1))
+        _put(out, part, v_sum)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v2 = _exact_phase(25, 1)
+        v3 = _cos_pair(v2, 1.0)
+        v4 = _sin_pair(v2, 1.0)
+        v_sum = (-0.015481093958489723*v3 - 0.00164390331194681*v4 + 0.03166470443730489*_cos_pair(v1, 1.0))*_sin_pair(v0, 1.0) + (-0.00164390331194681*v3 + 0.015481093958489723*v4 - 0.03166470443730489*_sin_pair(v1, 1.0))*_cos_pair(v0, 1.0) + 2*_sin_half_squared(v0) + 0.06370935971463045*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21814532014268478
+        v_redo = _cancelled(v_sum, 0.26693502185042617)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v_sum[v_redo] = 0.06370935971463045*_sin_half_squared(v0) + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_half_squared(_exact_phase(25, t_)) + _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t_, 1)) + 0.21814532014268478
+        _put(out, part, v_sum)
     return out
 
 
@@ -414,26 +543,52 @@ def dynamic_coefficient_pickup_a4(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
-        return (-497366283847729152/86289672547860484375*_entire_4(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 0.5)**2 + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_pair(_exact_phase(25, t), 0.5)**2
+        return (-497366283847729152/86289672547860484375*_entire_4(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_half_squared(_exact_phase(25, t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 1)], [np.less_equal(t, 706884997512073/2251799813685248)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[0], -497366283847729152/86289672547860484375*_entire_4(v0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        v1 = _exact_phase(25, t_)
-        _put(out, cells[1], -497366283847729152/86289672547860484375*_entire_4(v1) + 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(v1, 0.5)**2 + 0.21814532014268478)
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
+        _put(out, part, -497366283847729152/86289672547860484375*_entire_4(v0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_half_squared(v0))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
         v0 = _exact_phase(25, t_)
-        _put(out, cells[2], (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_pair(v0, 0.5)**2 + _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t_, 1)))
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
-        _put(out, cells[3], 0.06370935971463045*_sin_pair(v0, 0.5)**2 + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_pair(_exact_phase(25, t_), 0.5)**2 + _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t_, 1)) + 0.21814532014268478)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v_sum = -497366283847729152/86289672547860484375*_entire_4(v0) - 0.03166470443730489*_cos_pair(v0, 1.0)*_sin_pair(v1, 1.0) + 0.03166470443730489*_cos_pair(v1, 1.0)*_sin_pair(v0, 1.0) + 2*_sin_half_squared(v0) + 0.06370935971463045*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21814532014268478
+        v_redo = _cancelled(v_sum, 0.24981002457998966)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v1 = _exact_phase(25, t_)
+            v_sum[v_redo] = -497366283847729152/86289672547860484375*_entire_4(v1) + 0.06370935971463045*_sin_half_squared(v0) + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_half_squared(v1) + 0.21814532014268478
+        _put(out, part, v_sum)
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 1)
+        v2 = _cos_pair(v1, 1.0)
+        v3 = _sin_pair(v1, 1.0)
+        v_sum = (-0.0006858624108939049*v2 + 0.005766654001314742*v3)*_sin_pair(v0, 1.0) + (0.005766654001314742*v2 + 0.0006858624108939049*v3)*_cos_pair(v0, 1.0) + (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_half_squared(v0)
+        v_redo = _cancelled(v_sum, 0.006452516412208647)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_)
+            v_sum[v_redo] = (562949953421312/17672124937801825)*_entire_1(v0) + 2*_sin_half_squared(v0) + _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t_, 1))
+        _put(out, part, v_sum)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        v0 = _exact_phase(25, t_)
+        v1 = _exact_phase(25, 706884997512073/2251799813685248)
+        v2 = _exact_phase(25, 1)
+        v3 = _cos_pair(v2, 1.0)
+        v4 = _sin_pair(v2, 1.0)
+        v_sum = (-0.0006858624108939049*v3 + 0.005766654001314742*v4 + 0.03166470443730489*_cos_pair(v1, 1.0))*_sin_pair(v0, 1.0) + (0.005766654001314742*v3 + 0.0006858624108939049*v4 - 0.03166470443730489*_sin_pair(v1, 1.0))*_cos_pair(v0, 1.0) + 2*_sin_half_squared(v0) + 0.06370935971463045*_sin_half_squared(_exact_phase(25, t_, 706884997512073/2251799813685248)) + 0.21814532014268478
+        v_redo = _cancelled(v_sum, 0.2562625409921983)
+        if v_redo is not None:      # where the fast sum cancels
+            t_, = _at(v_redo, v_sum.shape, t_,)
+            v0 = _exact_phase(25, t_, 706884997512073/2251799813685248)
+            v_sum[v_redo] = 0.06370935971463045*_sin_half_squared(v0) + 0.03166470443730489*_sin_pair(v0, 1.0) + 2*_sin_half_squared(_exact_phase(25, t_)) + _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t_, 1)) + 0.21814532014268478
+        _put(out, part, v_sum)
     return out
 
 
@@ -455,15 +610,15 @@ def dynamic_coefficient_from_weight_a1(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
-        return ((281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t), 0.5)**2 if np.less_equal(t, 1) else _wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))) + 5522539043063071/5663276531418399
+        return ((281474976710656/5663276531418399)*_sin_half_squared(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))) + 5522539043063071/5663276531418399
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 1)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], (281474976710656/5663276531418399)*_sin_pair(_exact_phase(25, t_), 0.5)**2 + 5522539043063071/5663276531418399)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], _wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t_, 1)) + 5522539043063071/5663276531418399)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, (281474976710656/5663276531418399)*_sin_half_squared(_exact_phase(25, t_)) + 5522539043063071/5663276531418399)
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, _wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t_, 1)) + 5522539043063071/5663276531418399)
     return out
 
 
@@ -488,12 +643,12 @@ def dynamic_coefficient_from_weight_a2(t, *, out=None):
         return ((140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))) + 5522539043063071/5663276531418399
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 1)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], (140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t_)) + 5522539043063071/5663276531418399)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], _wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t_, 1)) + 5522539043063071/5663276531418399)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, (140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t_)) + 5522539043063071/5663276531418399)
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, _wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t_, 1)) + 5522539043063071/5663276531418399)
     return out
 
 
@@ -518,12 +673,12 @@ def dynamic_coefficient_from_weight_a3(t, *, out=None):
         return ((6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))) + 1
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 1)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], (6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t_)) + 1)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], _wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t_, 1)) + 1)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, (6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t_)) + 1)
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, _wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t_, 1)) + 1)
     return out
 
 
@@ -548,12 +703,12 @@ def dynamic_coefficient_from_weight_a4(t, *, out=None):
         return (-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))) + 1
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, 1)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], 1 - 1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t_)))
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], _wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t_, 1)) + 1)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 1 - 1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t_)))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, _wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t_, 1)) + 1)
     return out
 
 

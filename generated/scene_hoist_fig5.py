@@ -10,6 +10,8 @@ Functions and argument order:
     dynamic_coefficient_ramp(t) -> [1]    eq (42)
 """
 
+import math
+
 import numpy as np
 
 __all__ = ['dynamic_coefficient_ramp']
@@ -106,19 +108,24 @@ def _taylor_tail(x, n, odd):
 
 def _taylor_remainder(x, n, odd):
     """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
-    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    term x**(2n-2+odd): by the series where the direct difference cancels.
+    The direct difference is formed in place in the array np.sin/np.cos makes."""
     x = np.asarray(x, dtype=float)
     small = np.abs(x) < 2.0 * n + 2.0
     if small.all():  # no mask, no direct difference
         return _taylor_tail(x, n, odd)
-    direct = np.cos(x) if odd == 0 else np.sin(x)
-    term = np.ones_like(x) if odd == 0 else x.copy()
-    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
-        direct = direct - term
-        m = 2 * k + odd
-        term = term * (-x * x) / ((m + 1) * (m + 2))
+    direct = np.asarray(np.cos(x) if odd == 0 else np.sin(x))
+    coeffs = [(-1.0) ** k / np.prod(np.arange(1.0, 2 * k + odd + 1)) for k in range(n)]
+    poly = np.full_like(x, coeffs[-1])
+    if n > 1:
+        x2 = x * x
+        for c in coeffs[-2::-1]:  # Horner in x**2
+            poly *= x2
+            poly += c
+    if odd:
+        poly *= x
+    direct -= poly
     if np.any(small):
-        direct = np.array(direct, dtype=float)
         direct[small] = _taylor_tail(x[small], n, odd)
     return direct
 
@@ -126,6 +133,31 @@ def _taylor_remainder(x, n, odd):
 def _sin_remainder(x, n):
     """sin(x) - sum_{k<n} (-1)**k x**(2k+1)/(2k+1)!, accurate at small |x|."""
     return _taylor_remainder(x, n, 1)
+
+
+def _remainder_float(x, n, odd):
+    """_taylor_remainder on one float with ``math`` (the scalar path): the
+    same sums, term for term."""
+    if abs(x) >= 2.0 * n + 2.0:
+        direct = math.cos(x) if odd == 0 else math.sin(x)
+        coeffs = [(-1.0) ** k / math.factorial(2 * k + odd) for k in range(n)]
+        poly = coeffs[-1]
+        for c in coeffs[-2::-1]:  # Horner in x**2
+            poly = poly * (x * x) + c
+        return direct - (poly * x if odd else poly)
+    x2, t = -x * x, (1.0 if odd == 0 else x)
+    for k in range(n):
+        m = 2 * k + odd
+        t = t * x2 / ((m + 1) * (m + 2))
+    reach, bound, total = -x2, 1.0, 0.0
+    for k in range(n, n + 60):
+        total += t
+        m = 2 * k + odd
+        t = t * x2 / ((m + 1) * (m + 2))
+        bound *= reach / ((m + 1) * (m + 2))
+        if bound < 1e-17:
+            break
+    return total
 
 
 def dynamic_coefficient_ramp(t, *, out=None):
@@ -143,6 +175,13 @@ def dynamic_coefficient_ramp(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
+    if (out is None
+            and (type(t) in (float, int) or type(t) is np.float64)):
+        if (0 <= t < 1e999):
+            try:    # a failed check or a math error: the array path decides
+                return np.float64(-1/25*_remainder_float(25*t, 1, 1))
+            except (ArithmeticError, ValueError):
+                pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     return _into(out, shape, -1/25*_sin_remainder(25*t, 1))

@@ -106,19 +106,24 @@ def _taylor_tail(x, n, odd):
 
 def _taylor_remainder(x, n, odd):
     """cos(x) (odd=0) or sin(x) (odd=1) minus its Taylor polynomial through the
-    term x**(2n-2+odd): by the series where the direct difference cancels."""
+    term x**(2n-2+odd): by the series where the direct difference cancels.
+    The direct difference is formed in place in the array np.sin/np.cos makes."""
     x = np.asarray(x, dtype=float)
     small = np.abs(x) < 2.0 * n + 2.0
     if small.all():  # no mask, no direct difference
         return _taylor_tail(x, n, odd)
-    direct = np.cos(x) if odd == 0 else np.sin(x)
-    term = np.ones_like(x) if odd == 0 else x.copy()
-    for k in range(n):  # subtract the Taylor terms k = 0 .. n-1
-        direct = direct - term
-        m = 2 * k + odd
-        term = term * (-x * x) / ((m + 1) * (m + 2))
+    direct = np.asarray(np.cos(x) if odd == 0 else np.sin(x))
+    coeffs = [(-1.0) ** k / np.prod(np.arange(1.0, 2 * k + odd + 1)) for k in range(n)]
+    poly = np.full_like(x, coeffs[-1])
+    if n > 1:
+        x2 = x * x
+        for c in coeffs[-2::-1]:  # Horner in x**2
+            poly *= x2
+            poly += c
+    if odd:
+        poly *= x
+    direct -= poly
     if np.any(small):
-        direct = np.array(direct, dtype=float)
         direct[small] = _taylor_tail(x[small], n, odd)
     return direct
 
@@ -175,6 +180,18 @@ def _put(out, where, value):
         out.flat[where] = value
 
 
+def _blocks(where, size=16384):
+    """``where`` (a selector of ``_cells``) in pieces of at most ``size``
+    points: a cell's temporaries then stay in the cache and below the
+    allocator's mmap threshold, so a call does not page-fault on every new
+    array; none for an empty cell."""
+    if where is None:
+        return ()
+    if isinstance(where, slice):
+        return [slice(i, min(i + size, where.stop)) for i in range(where.start, where.stop, size)]
+    return [where[i:i + size] for i in range(0, where.size, size)]
+
+
 def drive_acceleration(t, *, out=None):
     """Drive acceleration a(t) of the scene's law. Eq (28), (31).
 
@@ -196,16 +213,16 @@ def drive_acceleration(t, *, out=None):
         return (2*t if np.less(t, 1/4) else 1/2 if np.less(t, 1) else 5/2 - 2*t if np.less(t, 5/4) else 0)
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], 2*t_)
-    if cells[1] is not None:
-        _put(out, cells[1], 1/2)
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
-        _put(out, cells[2], 5/2 - 2*t_)
-    if cells[3] is not None:
-        _put(out, cells[3], 0)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 2*t_)
+    for part in _blocks(cells[1]):
+        _put(out, part, 1/2)
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 5/2 - 2*t_)
+    for part in _blocks(cells[3]):
+        _put(out, part, 0)
     return out
 
 
@@ -230,17 +247,17 @@ def drive_speed(t, *, out=None):
         return (t**2 if np.less(t, 1/4) else (1/2)*t - 1/16 if np.less(t, 1) else -t**2 + (5/2)*t - 17/16 if np.less(t, 5/4) else 1/2)
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], t_**2)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], (1/2)*t_ - 1/16)
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
-        _put(out, cells[2], -t_**2 + (5/2)*t_ - 17/16)
-    if cells[3] is not None:
-        _put(out, cells[3], 1/2)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, t_**2)
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, (1/2)*t_ - 1/16)
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        _put(out, part, -t_**2 + (5/2)*t_ - 17/16)
+    for part in _blocks(cells[3]):
+        _put(out, part, 1/2)
     return out
 
 
@@ -265,16 +282,16 @@ def relative_forcing(t, *, out=None):
         return (10*t + 981/20 if np.less(t, 1/4) else 1031/20 if np.less(t, 1) else 1231/20 - 10*t if np.less(t, 5/4) else 981/20)
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], 10*t_ + 981/20)
-    if cells[1] is not None:
-        _put(out, cells[1], 1031/20)
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
-        _put(out, cells[2], 1231/20 - 10*t_)
-    if cells[3] is not None:
-        _put(out, cells[3], 981/20)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 10*t_ + 981/20)
+    for part in _blocks(cells[1]):
+        _put(out, part, 1031/20)
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 1231/20 - 10*t_)
+    for part in _blocks(cells[3]):
+        _put(out, part, 981/20)
     return out
 
 
@@ -299,19 +316,19 @@ def rope_stretch(t, *, out=None):
         return (981/12500 - 2/3125*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1031/12500 - 2.1237622053565318e-05*np.cos(25*t - 25/8) if np.less(t, 1) else -2.1237622053565318e-05*np.cos(25*t - 25/8) + (2/3125)*_sin_remainder(25*t - 25, 1) + 1031/12500 if np.less(t, 5/4) else 981/12500 - 2.81703877964031e-06*np.sin(25*t - 125/8))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], 981/12500 - 2/3125*_sin_remainder(25*t_, 1))
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], 1031/12500 - 2.1237622053565318e-05*np.cos(25*t_ - 25/8))
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 981/12500 - 2/3125*_sin_remainder(25*t_, 1))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 1031/12500 - 2.1237622053565318e-05*np.cos(25*t_ - 25/8))
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
         v0 = 25*t_
-        _put(out, cells[2], -2.1237622053565318e-05*np.cos(v0 - 25/8) + (2/3125)*_sin_remainder(v0 - 25, 1) + 1031/12500)
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        _put(out, cells[3], 981/12500 - 2.81703877964031e-06*np.sin(25*t_ - 125/8))
+        _put(out, part, -2.1237622053565318e-05*np.cos(v0 - 25/8) + (2/3125)*_sin_remainder(v0 - 25, 1) + 1031/12500)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 981/12500 - 2.81703877964031e-06*np.sin(25*t_ - 125/8))
     return out
 
 
@@ -336,18 +353,18 @@ def rope_stretch_rate(t, *, out=None):
         return ((4/125)*np.sin((25/2)*t)**2 if np.less(t, 1/4) else 0.0005309405513391329*np.sin(25*t - 25/8) if np.less(t, 1) else -4/125*np.sin((25/2)*t - 25/2)**2 + 0.0005309405513391329*np.sin(25*t - 25/8) if np.less(t, 5/4) else -7.042596949100774e-05*np.cos(25*t - 125/8))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], (4/125)*np.sin((25/2)*t_)**2)
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], 0.0005309405513391329*np.sin(25*t_ - 25/8))
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
-        _put(out, cells[2], -4/125*np.sin((25/2)*t_ - 25/2)**2 + 0.0005309405513391329*np.sin(25*t_ - 25/8))
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        _put(out, cells[3], -7.042596949100774e-05*np.cos(25*t_ - 125/8))
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, (4/125)*np.sin((25/2)*t_)**2)
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 0.0005309405513391329*np.sin(25*t_ - 25/8))
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
+        _put(out, part, -4/125*np.sin((25/2)*t_ - 25/2)**2 + 0.0005309405513391329*np.sin(25*t_ - 25/8))
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        _put(out, part, -7.042596949100774e-05*np.cos(25*t_ - 125/8))
     return out
 
 
@@ -372,19 +389,19 @@ def rope_force(t, *, out=None):
         return (78480 - 640*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 82480 - 21.237622053565318*np.cos(25*t - 25/8) if np.less(t, 1) else -21.237622053565318*np.cos(25*t - 25/8) + 640*_sin_remainder(25*t - 25, 1) + 82480 if np.less(t, 5/4) else 78480 - 2.81703877964031*np.sin(25*t - 125/8))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], 78480 - 640*_sin_remainder(25*t_, 1))
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], 82480 - 21.237622053565318*np.cos(25*t_ - 25/8))
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 78480 - 640*_sin_remainder(25*t_, 1))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 82480 - 21.237622053565318*np.cos(25*t_ - 25/8))
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
         v0 = 25*t_
-        _put(out, cells[2], -21.237622053565318*np.cos(v0 - 25/8) + 640*_sin_remainder(v0 - 25, 1) + 82480)
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        _put(out, cells[3], 78480 - 2.81703877964031*np.sin(25*t_ - 125/8))
+        _put(out, part, -21.237622053565318*np.cos(v0 - 25/8) + 640*_sin_remainder(v0 - 25, 1) + 82480)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 78480 - 2.81703877964031*np.sin(25*t_ - 125/8))
     return out
 
 
@@ -409,19 +426,19 @@ def dynamic_coefficient(t, *, out=None):
         return (1 - 8/981*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1031/981 - 0.0002706119018038394*np.cos(25*t - 25/8) if np.less(t, 1) else -0.0002706119018038394*np.cos(25*t - 25/8) + (8/981)*_sin_remainder(25*t - 25, 1) + 1031/981 if np.less(t, 5/4) else 1 - 3.589498954689488e-05*np.sin(25*t - 125/8))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], 1 - 8/981*_sin_remainder(25*t_, 1))
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], 1031/981 - 0.0002706119018038394*np.cos(25*t_ - 25/8))
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 1 - 8/981*_sin_remainder(25*t_, 1))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 1031/981 - 0.0002706119018038394*np.cos(25*t_ - 25/8))
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
         v0 = 25*t_
-        _put(out, cells[2], -0.0002706119018038394*np.cos(v0 - 25/8) + (8/981)*_sin_remainder(v0 - 25, 1) + 1031/981)
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        _put(out, cells[3], 1 - 3.589498954689488e-05*np.sin(25*t_ - 125/8))
+        _put(out, part, -0.0002706119018038394*np.cos(v0 - 25/8) + (8/981)*_sin_remainder(v0 - 25, 1) + 1031/981)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 1 - 3.589498954689488e-05*np.sin(25*t_ - 125/8))
     return out
 
 
@@ -446,17 +463,17 @@ def load_acceleration(t, *, out=None):
         return (-2/25*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1/2 - 0.0026547027566956646*np.cos(25*t - 25/8) if np.less(t, 1) else -0.0026547027566956646*np.cos(25*t - 25/8) + (2/25)*_sin_remainder(25*t - 25, 1) + 1/2 if np.less(t, 5/4) else -0.0003521298474550387*np.sin(25*t - 125/8))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, 1/4), np.less(t, 1), np.less(t, 5/4)]])
-    if cells[0] is not None:
-        t_, = _at(cells[0], shape, t)
-        _put(out, cells[0], -2/25*_sin_remainder(25*t_, 1))
-    if cells[1] is not None:
-        t_, = _at(cells[1], shape, t)
-        _put(out, cells[1], 1/2 - 0.0026547027566956646*np.cos(25*t_ - 25/8))
-    if cells[2] is not None:
-        t_, = _at(cells[2], shape, t)
+    for part in _blocks(cells[0]):
+        t_, = _at(part, shape, t)
+        _put(out, part, -2/25*_sin_remainder(25*t_, 1))
+    for part in _blocks(cells[1]):
+        t_, = _at(part, shape, t)
+        _put(out, part, 1/2 - 0.0026547027566956646*np.cos(25*t_ - 25/8))
+    for part in _blocks(cells[2]):
+        t_, = _at(part, shape, t)
         v0 = 25*t_
-        _put(out, cells[2], -0.0026547027566956646*np.cos(v0 - 25/8) + (2/25)*_sin_remainder(v0 - 25, 1) + 1/2)
-    if cells[3] is not None:
-        t_, = _at(cells[3], shape, t)
-        _put(out, cells[3], -0.0003521298474550387*np.sin(25*t_ - 125/8))
+        _put(out, part, -0.0026547027566956646*np.cos(v0 - 25/8) + (2/25)*_sin_remainder(v0 - 25, 1) + 1/2)
+    for part in _blocks(cells[3]):
+        t_, = _at(part, shape, t)
+        _put(out, part, -0.0003521298474550387*np.sin(25*t_ - 125/8))
     return out

@@ -227,3 +227,17 @@ def test_offset_wave_near_its_minimum(depth):
                     assert abs(got - exact) <= 8e-16 * abs(exact) + slope
                     got = k._offset_wave(-level, gap, -b, -c, (hi, float(x - hi)))
                     assert abs(got + exact) <= 8e-16 * abs(exact) + slope
+
+
+@pytest.mark.parametrize("n, odd", [(1, 1), (2, 0), (3, 1)])
+def test_remainder_on_one_float_is_the_array_remainder(n, odd):
+    # the scalar path's Taylor remainder: the same sums as the array kernel
+    # on both sides of its cutoff, and a few ulp of mpmath
+    for x in (1e-9, 0.3, 2.9, 2.0 * n + 1.999, 2.0 * n + 2.0, 7.5, 41.0):
+        got = k._remainder_float(x, n, odd)
+        assert abs(got - float(k._taylor_remainder(np.array([x]), n, odd)[0])) <= 1e-15 * abs(got)
+        with mpmath.workdps(150):          # the tail at x = 1e-9 is x**7/7! of sin
+            head = mpmath.fsum((-1) ** j * mpmath.mpf(x) ** (2 * j + odd)
+                               / mpmath.factorial(2 * j + odd) for j in range(n))
+            exact = (mpmath.cos(x) if odd == 0 else mpmath.sin(x)) - head
+        assert abs(got - exact) <= 4e-16 * abs(exact)

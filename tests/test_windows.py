@@ -38,7 +38,7 @@ def _helper(closed):
     node = entire_node(sp.Symbol("x"), closed)
     source = codegen.render_helper(int(node.args[1]), "_f")
     scope = {"np": np}
-    for name in ("_pair", "_sincos_pair", "_taylor_where"):
+    for name in kernels.closure({n for n in kernels.DEPENDS if f"{n}(" in source}):
         scope[name] = getattr(kernels, name)
     exec(source, scope)                              # noqa: S102 (our own generated source)
     return scope["_f"], int(node.args[1])
