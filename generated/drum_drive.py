@@ -104,6 +104,11 @@ def _matrix(shape, elements):
     return np.stack(flat).reshape(tuple(shape) + flat[0].shape)
 
 
+def _cube(x):
+    """x**3 as two products: NumPy's ``x**3`` calls ``pow`` per point."""
+    return x * (x * x)
+
+
 def branch_effective_mass(q, L, *, out=None):
     """Effective mass q*L/3 of a span moved at one point (linear speed (6)). Eq (7).
 
@@ -725,7 +730,7 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     x17 = nu_t*s10
     x18 = 3*x11
     x19 = 3*x5*x7
-    x20 = r**3
+    x20 = _cube(r)
     return _matrix((10, 1), [s6, s7, s8, s9, s10, -(C1*s1 - M0 + nu1*s6 - x0 - x1)/I1, (C1*s1 + C2*s3 + nu1*s6 + nu2*s8 - x0 - x1 - x2 - x3)/I2, -x9*(2*C2*L*q*s3 + 3*C2*m_L*s3 + 3*C_t*L*q*s3*x7 + 3*C_t*m_L*s3*x7 + 3*C_z*L*q*r*s4 + 3*C_z*L*q*s3*x7 + 3*C_z*m_L*r*s4 + 3*C_z*m_L*s3*x7 + 2*L*nu2*q*s8 + 3*L*nu_z*q*r*s9 + 3*L*nu_z*q*s8*x7 - W*x11 + 3*m_L*nu2*s8 + 3*m_L*nu_z*r*s9 + 3*m_L*nu_z*s8*x7 - x10*x2 - x10*x3 - x11*x17 - x12*x13 - x12*x18 - x13*x14 - x13*x15 - x13*x16 - x14*x18 - x15*x18 - x16*x18 - x2*x6 - x3*x6), 3*(C_t*r*s3 - C_y*s4 - C_z*r*s3 - C_z*s4 + C_z*s5 + 2*F0 - nu_y*s9 - nu_z*r*s8 + nu_z*s10 - nu_z*s9 - x12 - x14)/(3*m3 + x6), x9*(C2*L*q*r*s3 + 3*C_t*I3*r*s3 + 3*C_t*L*q*s3*x20 + 3*C_z*I3*r*s3 + 3*C_z*I3*s4 + 3*C_z*L*q*s3*x20 + 3*C_z*L*q*s4*x7 + 3*I3*nu_z*r*s8 + 3*I3*nu_z*s9 + L*nu2*q*r*s8 + 3*L*nu_z*q*s8*x20 + 3*L*nu_z*q*s9*x7 - W*x4 - W*x8 - x11*x2 - x11*x3 - x12*x19 - x12*x4 - x14*x19 - x14*x4 - x15*x19 - x15*x4 - x16*x19 - x16*x4 - x17*x4 - x17*x8)])
 
 

@@ -223,6 +223,17 @@ def _remainder_float(x, n, odd):
     return total
 
 
+def _cube(x):
+    """x**3 as two products: NumPy's ``x**3`` calls ``pow`` per point."""
+    return x * (x * x)
+
+
+def _fourth(x):
+    """x**4 as two squarings."""
+    x2 = x * x
+    return x2 * x2
+
+
 class _Phase(tuple):
     """A phase pair (hi, lo) that keeps the sines and cosines taken of it, so
     the kernels one formula calls on the same phase share one np.sin and one
@@ -251,16 +262,6 @@ def _pair(z):
     return z if isinstance(z, tuple) else (z, 0.0)
 
 
-def _sin_pair(z, q):
-    """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
-    return _sincos_pair(z, q)[0]
-
-
-def _cos_pair(z, q):
-    """cos(q*z) for a phase pair z (q a power of two)."""
-    return _sincos_pair(z, q)[1]
-
-
 def _sincos_pair(z, q):
     """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once;
     kept on a _Phase for the next kernel that asks."""
@@ -276,6 +277,16 @@ def _sincos_pair(z, q):
     if taken is not None:
         taken[q] = (s, c)
     return s, c
+
+
+def _sin_pair(z, q):
+    """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
+    return _sincos_pair(z, q)[0]
+
+
+def _cos_pair(z, q):
+    """cos(q*z) for a phase pair z (q a power of two)."""
+    return _sincos_pair(z, q)[1]
 
 
 def _sin_half_squared(z):
@@ -502,7 +513,7 @@ def _entire_8(z):
     small = np.abs(z) < 3.363585661014858
     z_ = np.where(small, 3.363585661014858, z)
     s0, c0 = _sincos_pair(w, 1.0)
-    return _taylor_where(2*c0/z_**2 + (1/2)*s0/z_ - 3*s0/z_**3 + z_**(-2.0), small, z, 2, 2,
+    return _taylor_where(2*c0/z_**2 + (1/2)*s0/z_ - 3*s0/_cube(z_) + z_**(-2.0), small, z, 2, 2,
                          (-0.025, 0.001984126984126984, -5.787037037037037e-05, 9.018759018759019e-07, -8.832474110251888e-09, 5.964787710819457e-11, -2.952030117062797e-13, 1.118006393540909e-15, -3.3469729218399058e-18, 8.123157358324436e-21, -1.6310784219492718e-23, 2.755106959138664e-26, -3.969796973143149e-29, 4.937467668707283e-32, -5.355096063658957e-35,))
 
 
@@ -515,7 +526,7 @@ def _entire_9(z):
     small = np.abs(z) < 3.363585661014858
     z_ = np.where(small, 3.363585661014858, z)
     s0, c0 = _sincos_pair(w, 1.0)
-    return _taylor_where((1/6)*c0/z_ - c0/z_**3 - 2/3*s0/z_**2 + z_**(-3.0), small, z, 1, 2,
+    return _taylor_where((1/6)*c0/z_ - c0/_cube(z_) - 2/3*s0/z_**2 + z_**(-3.0), small, z, 1, 2,
                          (-0.013888888888888888, 0.002777777777777778, -0.0001240079365079365, 2.57201646090535e-06, -3.131513548180215e-08, 2.5235640315005394e-10, -1.4497747908241734e-12, 6.24768278743449e-15, -2.0962619878892042e-17, 5.63463454855203e-20, -1.241037929744011e-22, 2.2812285621668135e-25, -3.553213340158991e-28, 4.750184412308041e-31, -5.510566594539378e-34,))
 
 
@@ -567,7 +578,7 @@ def _entire_13(z):
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
     s0, c0 = _sincos_pair(w, 1.0)
-    return _taylor_where(-1/24*c0/z_**2 + (3/2)*c0/z_**4 + (3/8)*s0/z_**3 - 5/2*s0/z_**5 + z_**(-4.0), small, z, 2, 2,
+    return _taylor_where(-1/24*c0/z_**2 + (3/2)*c0/_fourth(z_) + (3/8)*s0/_cube(z_) - 5/2*s0/z_**5 + z_**(-4.0), small, z, 2, 2,
                          (-0.0001984126984126984, 1.3778659611992945e-05, -3.5072951739618406e-07, 4.8177131510464845e-09, -4.205940052500899e-11, 2.558426101454424e-13, -1.150888934527406e-15, 3.992879976931817e-18, -1.102428498629745e-20, 2.4820758594880223e-23, -4.646947071080546e-26, 7.351475876191016e-29, -9.960064090323311e-32, 1.168908065508353e-34, -1.2000215268703545e-37, 1.0869128428012994e-40, -8.750908515376675e-44,))
 
 
@@ -581,7 +592,7 @@ def _entire_14(z):
     z_ = np.where(small, 5.656854249492381, z)
     h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(-h0*((3/10)/z_**3 - 2/z_**5) + (1/60)*s1/z_**2 - 3/5*s1/z_**4 + (1/10)/z_**3, small, z, 1, 2,
+    return _taylor_where(-h0*((3/10)/_cube(z_) - 2/z_**5) + (1/60)*s1/z_**2 - 3/5*s1/_fourth(z_) + (1/10)/_cube(z_), small, z, 1, 2,
                          (-0.0001388888888888889, 2.48015873015873e-05, -9.645061728395062e-07, 1.75364758698092e-08, -1.8926730236254046e-10, 1.3669305170627923e-12, -7.106739170706734e-15, 2.795015983852272e-17, -8.620990859284605e-20, 2.1436109695578373e-22, -4.391364982171116e-25, 7.543745245260627e-28, -1.1027213814286523e-30, 1.3886627818239233e-33, -1.5225273122167623e-36, 1.4666929772859888e-39, -1.2513799176988645e-42, 9.523047502027558e-46, -6.504598011727247e-49,))
 
 
@@ -594,7 +605,7 @@ def _entire_15(z):
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
     s0, c0 = _sincos_pair(w, 1.0)
-    return _taylor_where(60*s0/z_**3 - 1/2*z_**2 + 10 - 60/z_**2, small, z, 4, 2,
+    return _taylor_where(60*s0/_cube(z_) - 1/2*z_**2 + 10 - 60/z_**2, small, z, 4, 2,
                          (-0.011904761904761904, 0.00016534391534391533, -1.503126503126503e-06, 9.635426302092969e-09, -4.58829823909189e-11, 1.6868743526073125e-13, -4.932381147974598e-16, 1.1743764638034756e-18, -2.3209021023784103e-21, 3.868170170630684e-24, -5.510213918277328e-27, 6.78597773186863e-30, -7.296750249321107e-33, 6.909801372463171e-36, -5.806555775179134e-39,))
 
 
@@ -607,7 +618,7 @@ def _entire_16(z):
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
     s0, c0 = _sincos_pair(w, 1.0)
-    return _taylor_where(36*c0/z_**2 - 180*s0/z_**3 - 12 + 144/z_**2, small, z, 4, 2,
+    return _taylor_where(36*c0/z_**2 - 180*s0/_cube(z_) - 12 + 144/z_**2, small, z, 4, 2,
                          (-0.014285714285714285, 0.0003968253968253968, -5.411255411255411e-06, 4.625004625004625e-08, -2.752978943455134e-10, 1.214549533877265e-12, -4.143200164298662e-15, 1.1274014052513367e-17, -2.5065742705686833e-20, 4.6418042047568206e-23, -7.273482372126072e-26, 9.771807933890828e-29, -1.1382930388940928e-31, 1.1608466305738125e-34, -1.0451800395322443e-37, 8.369810126384338e-41,))
 
 
@@ -620,7 +631,7 @@ def _entire_17(z):
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
     s0, c0 = _sincos_pair(w, 1.0)
-    return _taylor_where(-72*c0/z_**2 - 9*s0/z_ + 180*s0/z_**3 + 3 - 108/z_**2, small, z, 4, 2,
+    return _taylor_where(-72*c0/z_**2 - 9*s0/z_ + 180*s0/_cube(z_) + 3 - 108/z_**2, small, z, 4, 2,
                          (-0.010714285714285714, 0.000496031746031746, -9.46969696969697e-06, 1.0406260406260406e-07, -7.570692094501618e-10, 3.9472859851011115e-12, -1.5537000616119984e-14, 4.791455972318181e-17, -1.1906227785201244e-19, 2.436947207497331e-22, -4.182252363972492e-25, 6.107379958681767e-28, -7.683478012535127e-31, 8.416138071660142e-34, -8.100145306374893e-37, 6.905093354267079e-40,))
 
 
@@ -633,7 +644,7 @@ def _entire_18(z):
     small = np.abs(z) < 4.756828460010884
     z_ = np.where(small, 4.756828460010884, z)
     s0, c0 = _sincos_pair(w, 1.0)
-    return _taylor_where(-c0 + 36*c0/z_**2 + 9*s0/z_ - 60*s0/z_**3 + 24/z_**2, small, z, 4, 2,
+    return _taylor_where(-c0 + 36*c0/z_**2 + 9*s0/z_ - 60*s0/_cube(z_) + 24/z_**2, small, z, 4, 2,
                          (-0.004761904761904762, 0.00033068783068783067, -8.417508417508417e-06, 1.1562511562511562e-07, -1.0094256126002158e-09, 6.140222643490617e-12, -2.7621334428657748e-14, 9.582911944636362e-17, -2.645828396711388e-19, 5.956982062771254e-22, -1.115267297059331e-24, 1.7643542102858438e-27, -2.3904153816775947e-30, 2.8053793572200472e-33, -2.880051664488851e-36, 2.6085908227231188e-39, -2.100218043690402e-42,))
 
 
@@ -1347,7 +1358,7 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     k1 = _entire_1(x2)
     k2 = _entire_2(x2)
     k3 = _entire_3(x2)
-    k6 = -120*x4/(Omega**2*t_n**3)
+    k6 = -120*x4/(Omega**2*_cube(t_n))
     k7 = -2880*x6*_entire_13(x5)
     k8 = -7200*x6*_entire_14(x5)
     if out is None and not shape:      # one point: its own branch only
@@ -1618,7 +1629,7 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     x1 = v0/g
     x2 = Omega*t_n
     x3 = x0*x1
-    k1 = -120*x1/(Omega**2*t_n**3)
+    k1 = -120*x1/(Omega**2*_cube(t_n))
     k2 = -2880*x3*_entire_13(x2)
     k3 = -7200*x3*_entire_14(x2)
     if out is None and not shape:      # one point: its own branch only
@@ -1825,7 +1836,7 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
-    k1 = 12/t_n**3
+    k1 = 12/_cube(t_n)
     if out is None and not shape:
         return k1*t*(k0 + t)**2
     out = _out(out, shape)
@@ -1867,7 +1878,7 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = -t_n
-    k1 = 12/t_n**3
+    k1 = 12/_cube(t_n)
     k2 = g*t_n/(tau_0*v0)
     if out is None and not shape:      # one point: its own branch only
         return (t*(k1*(k0 + t)**2 + k2) if np.less_equal(t, tau_0) else k1*t*(k0 + t)**2)
@@ -1915,7 +1926,7 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     k0 = -t_n
     k1 = -60/t_n**5
     if out is None and not shape:
-        return k1*t**2*(k0 + t)**3
+        return k1*t**2*_cube(k0 + t)
     out = _out(out, shape)
     np.square(t, out=out)
     _w0 = np.empty_like(out)
@@ -1961,13 +1972,13 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     k1 = -60/t_n**5
     k2 = g*t_n/(tau_0*v0)
     if out is None and not shape:      # one point: its own branch only
-        return (t*(k1*t*(k0 + t)**3 + k2) if np.less_equal(t, tau_0) else k1*t**2*(k0 + t)**3)
+        return (t*(k1*t*_cube(k0 + t) + k2) if np.less_equal(t, tau_0) else k1*t**2*_cube(k0 + t))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less_equal(t, tau_0)]])
     for part in _blocks(cells[0]):
         k0_, k1_, k2_, t_ = _at(part, shape, k0, k1, k2, t)
-        _put(out, part, t_*(k1_*t_*(k0_ + t_)**3 + k2_))
+        _put(out, part, t_*(k1_*t_*_cube(k0_ + t_) + k2_))
     for part in _blocks(cells[1]):
         k0_, k1_, t_ = _at(part, shape, k0, k1, t)
-        _put(out, part, k1_*t_**2*(k0_ + t_)**3)
+        _put(out, part, k1_*t_**2*_cube(k0_ + t_))
     return out

@@ -132,6 +132,17 @@ def _taylor_where(values, small, z, power, step, coeffs):
     return values
 
 
+def _cube(x):
+    """x**3 as two products: NumPy's ``x**3`` calls ``pow`` per point."""
+    return x * (x * x)
+
+
+def _fourth(x):
+    """x**4 as two squarings."""
+    x2 = x * x
+    return x2 * x2
+
+
 class _Phase(tuple):
     """A phase pair (hi, lo) that keeps the sines and cosines taken of it, so
     the kernels one formula calls on the same phase share one np.sin and one
@@ -160,16 +171,6 @@ def _pair(z):
     return z if isinstance(z, tuple) else (z, 0.0)
 
 
-def _sin_pair(z, q):
-    """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
-    return _sincos_pair(z, q)[0]
-
-
-def _cos_pair(z, q):
-    """cos(q*z) for a phase pair z (q a power of two)."""
-    return _sincos_pair(z, q)[1]
-
-
 def _sincos_pair(z, q):
     """(sin(q*z), cos(q*z)) for a phase pair z (q a power of two), each once;
     kept on a _Phase for the next kernel that asks."""
@@ -185,6 +186,16 @@ def _sincos_pair(z, q):
     if taken is not None:
         taken[q] = (s, c)
     return s, c
+
+
+def _sin_pair(z, q):
+    """sin(q*z) for a phase pair z (q a power of two: q*hi is exact)."""
+    return _sincos_pair(z, q)[0]
+
+
+def _cos_pair(z, q):
+    """cos(q*z) for a phase pair z (q a power of two)."""
+    return _sincos_pair(z, q)[1]
 
 
 def _sin_half_squared(z):
@@ -307,7 +318,7 @@ def _entire_3(z):
     z_ = np.where(small, 0.1767766952966369, z)
     h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(2*h0 - 619/100*s1 + (1/100)*z_**3 - 1/2*z_**2 + (619/100)*z_, small, z, 3, 1,
+    return _taylor_where(2*h0 - 619/100*s1 + (1/100)*_cube(z_) - 1/2*z_**2 + (619/100)*z_, small, z, 3, 1,
                          (1.0416666666666667, -0.041666666666666664, -0.051583333333333335, 0.001388888888888889, 0.0012281746031746032, -2.48015873015873e-05, -1.7057980599647265e-05, 2.755731922398589e-07, 1.5507255090588425e-07, -2.08767569878681e-09, -9.94054813499258e-10,))
 
 
@@ -321,7 +332,7 @@ def _entire_4(z):
     z_ = np.where(small, 0.125, z)
     h0 = _sin_half_squared(w)
     s1, c1 = _sincos_pair(w, 1.0)
-    return _taylor_where(2*h0 + (1113/2945)*s1 + (1/29450)*z_**5 - 3/1178*z_**4 + (371/5890)*z_**3 - 1/2*z_**2 - 1113/2945*z_, small, z, 4, 1,
+    return _taylor_where(2*h0 + (1113/2945)*s1 + (1/29450)*z_**5 - 3/1178*_fourth(z_) + (371/5890)*_cube(z_) - 1/2*z_**2 - 1113/2945*z_, small, z, 4, 1,
                          (-0.04421335597057159, 0.0031833616298811546, 0.001388888888888889, -7.498585172608941e-05, -2.48015873015873e-05, 1.041470162862353e-06, 2.755731922398589e-07, -9.467910571475936e-09, -2.08767569878681e-09, 6.069173443253806e-11,))
 
 
@@ -831,7 +842,7 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
     shape = _broadcast(t=t)
     if out is None and not shape:
-        return -60*t**2*(t - 1)**3
+        return -60*t**2*_cube(t - 1)
     out = _out(out, shape)
     np.square(t, out=out)
     _w0 = np.empty_like(out)

@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 
 from crane_sym import kernels as k
+from crane_sym import phase_kernels as pk
 
 rng = np.random.default_rng(7)
 
@@ -178,19 +179,19 @@ def test_exact_phase_is_the_product_to_double_double(scale):
     kk = rng.uniform(0.5, 60.0, 200)
     t = rng.uniform(0.0, scale, 200)
     c = t * rng.uniform(0.0, 2.0, 200)              # t − c from cancelling to large
-    hi, lo = k._exact_phase(kk, t, c)
+    hi, lo = pk._exact_phase(kk, t, c)
     for ki, ti, ci, h, l in zip(kk, t, c, hi, lo):
         exact = Fraction(ki) * (Fraction(ti) - Fraction(ci))
         assert abs(Fraction(h) + Fraction(l) - exact) <= 2.0 ** -100 * abs(Fraction(ki) * Fraction(ti))
 
 
-@pytest.mark.parametrize("fn, exact_fn", [(k._sin_pair, mpmath.sin), (k._cos_pair, mpmath.cos)])
+@pytest.mark.parametrize("fn, exact_fn", [(pk._sin_pair, mpmath.sin), (pk._cos_pair, mpmath.cos)])
 def test_sine_of_a_phase_pair_near_its_zeros(fn, exact_fn):
     # Phases up to 1e3 within 1e-12 of the zeros of sin and cos: a rounded
     # phase would cost up to ~1e-1 relative error there, the pair a few ulp.
     with mpmath.workdps(50):
         for j in range(1, 300, 7):
-            zero = mpmath.pi * j + (0 if fn is k._sin_pair else mpmath.pi / 2)
+            zero = mpmath.pi * j + (0 if fn is pk._sin_pair else mpmath.pi / 2)
             for off in (mpmath.mpf("1e-12"), mpmath.mpf("-3e-9")):
                 z = zero + off
                 hi = float(z)
@@ -222,11 +223,11 @@ def test_offset_wave_near_its_minimum(depth):
                 for off in (mpmath.mpf(0), mpmath.mpf("1e-5"), mpmath.mpf("0.3"), mpmath.mpf(2)):
                     x = bottom + 2 * mpmath.pi * turn + off
                     hi = float(x)
-                    got = k._offset_wave(level, gap, b, c, (hi, float(x - hi)))
+                    got = pk._offset_wave(level, gap, b, c, (hi, float(x - hi)))
                     exact = _mp_wave(level, b, c, x)
                     slope = 4 * 2.0 ** -53 * r * abs(mpmath.sin(off)) * (abs(x) + 4)
                     assert abs(got - exact) <= 8e-16 * abs(exact) + slope
-                    got = k._offset_wave(-level, gap, -b, -c, (hi, float(x - hi)))
+                    got = pk._offset_wave(-level, gap, -b, -c, (hi, float(x - hi)))
                     assert abs(got + exact) <= 8e-16 * abs(exact) + slope
 
 

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import kernels as k
+from crane_sym import phase_kernels as k
 from crane_sym.cell_kernels import _blocks, _cancelled, _selector
 from crane_sym.generated import hoist_startup as gen
 from crane_sym.wave_sums import merge_waves

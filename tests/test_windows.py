@@ -38,8 +38,10 @@ def _helper(closed):
     node = entire_node(sp.Symbol("x"), closed)
     source = codegen.render_helper(int(node.args[1]), "_f")
     scope = {"np": np}
-    for name in kernels.closure({n for n in kernels.DEPENDS if f"{n}(" in source}):
-        scope[name] = getattr(kernels, name)
+    home = {n: m for m in codegen.KERNEL_MODULES for n in m.DEPENDS}
+    depends = {n: d for m in codegen.KERNEL_MODULES for n, d in m.DEPENDS.items()}
+    for name in kernels.closure({n for n in depends if f"{n}(" in source}, depends):
+        scope[name] = getattr(home[name], name)
     exec(source, scope)                              # noqa: S102 (our own generated source)
     return scope["_f"], int(node.args[1])
 
