@@ -230,9 +230,10 @@ def plot_scaling(scaled: Sequence[tuple], path: Path, title: str) -> list[Path]:
     names = list(dict.fromkeys(f for f, *_ in scaled))
     fig = Figure(figsize=(WIDTH, 3.6))
     ax = fig.subplots()
-    for name in names:
+    for k, name in enumerate(names):        # ten colours, then the next marker and dash
         mine = [(n, i / g) for f, n, _, i, g in scaled if f == name]
-        ax.loglog(*zip(*mine), marker="o", ms=4, lw=1, label=name)
+        ax.loglog(*zip(*mine), marker="os^D"[k // 10 % 4], ms=4, lw=1,
+                  linestyle=("-", "--", ":", "-.")[k // 10 % 4], label=name)
     ax.axhline(1.0, color="k", lw=0.8, linestyle="--")
     ax.set_xlabel("points", fontsize=TYPE)
     ax.set_ylabel("integrator time / closed form", fontsize=TYPE)
