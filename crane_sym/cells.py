@@ -69,25 +69,25 @@ def statements(expr: sp.Expr, print_: Callable[[sp.Basic], str],
             lines.append(f"    {inside} = _at({part}, shape, {given})")
         quick = fast(cell)
         if quick is None:
-            lines += _assign(f"_put(out, {part}, {{}})", [cell.xreplace(local)], prefix, 0,
+            lines += _assign(f"_put(out, {part}, {{}})", [cell.xreplace(local)], prefix,
                              print_, "    ")
             continue
         value, redo = f"{prefix}_sum", f"{prefix}_redo"
         lines += _assign(f"{value} = {{}}\n{redo} = _cancelled({value}, {{}})",
-                         [e.xreplace(local) for e in quick], prefix, 0, print_, "    ")
+                         [e.xreplace(local) for e in quick], prefix, print_, "    ")
         lines += [f"    if {redo} is not None:      # where the fast sum cancels",
                   f"        {inside} = _at({redo}, {value}.shape, {inside})"]
-        lines += _assign(f"{value}[{redo}] = {{}}", [cell.xreplace(local)], prefix, 0,
+        lines += _assign(f"{value}[{redo}] = {{}}", [cell.xreplace(local)], prefix,
                          print_, "        ")
         lines.append(f"    _put(out, {part}, {value})")
     return lines + ["return out"]
 
 
-def _assign(template: str, exprs: list[sp.Expr], prefix: str, start: int,
+def _assign(template: str, exprs: list[sp.Expr], prefix: str,
             print_: Callable[[sp.Basic], str], indent: str) -> list[str]:
     """Lines of the common subexpressions of ``exprs`` (named ``prefix``
-    from ``start``), then ``template`` with the reduced ``exprs`` filled in."""
-    subs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix, start=start),
+    0, 1, ...), then ``template`` with the reduced ``exprs`` filled in."""
+    subs, reduced = sp.cse(exprs, symbols=sp.numbered_symbols(prefix),
                            order="canonical")
     body = template.format(*map(print_, reduced))
     return ([f"{indent}{s} = {print_(v)}" for s, v in subs]

@@ -223,13 +223,20 @@ def render_function(out: Output, table: SymbolTable,
     return "\n".join(lines) + "\n"
 
 
-def _kernel_source(functions: Sequence[str]) -> str:
-    """Source of the kernels the function texts call, and their dependencies."""
-    called = set(re.findall(r"\b(_[a-z_A-Z]+)\(", "\n".join(functions)))
+def kernel_functions(text: str) -> dict:
+    """The kernels ``text`` calls (and ``_checked``), with the kernels they call:
+    name -> function, in the order a module copies them."""
+    called = set(re.findall(r"\b(_[a-z_A-Z]+)\(", text))
     home = {n: m for m in KERNEL_MODULES for n in m.DEPENDS}
     depends = {n: d for m in KERNEL_MODULES for n, d in m.DEPENDS.items()}
     names = kernels.closure({"_checked"} | (called & set(depends)), depends)
-    return "\n\n".join(inspect.getsource(getattr(home[n], n)) for n in names)
+    return {n: getattr(home[n], n) for n in names}
+
+
+def _kernel_source(functions: Sequence[str]) -> str:
+    """Source of the kernels the function texts call, and their dependencies."""
+    found = kernel_functions("\n".join(functions))
+    return "\n\n".join(inspect.getsource(f) for f in found.values())
 
 
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,

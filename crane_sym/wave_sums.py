@@ -3,7 +3,8 @@
 After its switches a response is a level plus waves of one frequency, each on
 its own exact phase ``Ω(t − c_i)`` (``windows``), and each then takes its own
 sine and cosine (a term ``sin²(Ω(t − c)/2)`` stays as it is: it takes the
-sine and cosine of its phase, and does not cancel). Summed, they are ``L + B·cos Ωt + C·sin Ωt``: B and C rotate
+sine and cosine of its phase, and does not cancel). Summed, they are
+``L + B·cos Ωt + C·sin Ωt``: B and C rotate
 each wave's coefficients by ``Ω·c_i`` (parameter-only, once per call) and
 ``Ωt`` is the phase the cell's other terms (entire functions of ``Ωt``)
 already use, so the cell needs one sine and one cosine a point (the kernels

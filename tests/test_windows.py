@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import codegen, kernels
+from crane_sym import codegen
 from crane_sym.duhamel import duhamel
 from crane_sym.entire import Z, closed_form, entire, entire_node, laurent, plan
 from crane_sym.loads import PiecewiseLoad, ramp
@@ -38,10 +38,7 @@ def _helper(closed):
     node = entire_node(sp.Symbol("x"), closed)
     source = codegen.render_helper(int(node.args[1]), "_f")
     scope = {"np": np}
-    home = {n: m for m in codegen.KERNEL_MODULES for n in m.DEPENDS}
-    depends = {n: d for m in codegen.KERNEL_MODULES for n, d in m.DEPENDS.items()}
-    for name in kernels.closure({n for n in depends if f"{n}(" in source}, depends):
-        scope[name] = getattr(home[name], name)
+    scope.update(codegen.kernel_functions(source))
     exec(source, scope)                              # noqa: S102 (our own generated source)
     return scope["_f"], int(node.args[1])
 
