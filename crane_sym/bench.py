@@ -22,7 +22,7 @@ from typing import Sequence
 import numpy as np
 import sympy as sp
 
-from . import bench_duhamel, bench_linear, bench_odes, units
+from . import bench_duhamel, bench_linear, bench_odes, progress, units
 from .bench_rows import (DUHAMEL, DUHAMEL_RTOLS, FLOOR, GENERATED, INTEGRATOR, LAMBDIFY,
                          METHODS, NAN, QUICK_RTOLS, REFERENCE, RTOLS, BenchRow, Target, best_time, errors, least_time)
 from .derivation import Derivation, Output
@@ -130,11 +130,14 @@ def bench(d: Derivation, values: dict[str, float], duration: float,
     floor = best_time(lambda: np.cos(grid["t"]))
     rows: list[BenchRow] = []
     targets: dict[str, Target] = {}
+    say = progress.current()
     for out in d.outputs:
+        say.step(f"{d.id}: {out.name} against mpmath and lambdify")
         more, targets[out.name] = _function_rows(d, out, getattr(generated, out.name),
                                                  grid, rng, check, floor)
         rows += more
     for system in d.ode_systems:
+        say.step(f"{d.id}: integrators on {system.name}")
         if any(name in targets for name, _ in system.quantities):
             rows += bench_odes.integrator_rows(system, grid, targets, methods, rtols)
             if alternatives:

@@ -185,8 +185,10 @@ def cmd_run(args: argparse.Namespace) -> int:
     """Run one scene: print its numbers, write its module and plots."""
     from .scene_run import run_scene
     from .scenes import load_scene
-    scene = load_scene(args.scene)
-    report, figures = run_scene(scene, Path(args.out))
+    with progress.reporting(_progress(args)) as say:
+        with say.task(f"reading scene {args.scene}"):
+            scene = load_scene(args.scene)
+        report, figures = run_scene(scene, Path(args.out))
     print(f"scene {scene.name}: {scene.title}")
     for line in report.lines:
         print(f"  {line}")
@@ -244,7 +246,8 @@ def parser() -> argparse.ArgumentParser:
     p = _subcommand(sub, "accuracy", "generated functions against mpmath on the hard cases; "
                     "exit 1 if one is over its target", cmd_accuracy, True)
     p.add_argument("ids", nargs="*", help=ids_help)
-    p = _subcommand(sub, "bench", "speed against error, with SciPy alternatives", cmd_bench)
+    p = _subcommand(sub, "bench", "speed against error, with SciPy alternatives", cmd_bench,
+                    True)
     p.add_argument("ids", nargs="*", help=ids_help)
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--out", default="bench", help="folder for Markdown and PNG (default: bench/)")
@@ -269,7 +272,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--rtols", nargs="+", type=float,
                    help="integrator tolerances (default: every half decade 1e-6 ... 1e-13)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
-                    cmd_run)
+                    cmd_run, True)
     p.add_argument("scene", help="scene name or path to a scene TOML file")
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")

@@ -10,7 +10,7 @@ import time
 from pathlib import Path
 from typing import Sequence
 
-from . import cli_sweep, registry
+from . import cli_sweep, progress, registry
 
 
 def _ids(names: Sequence[str]) -> list[str]:
@@ -29,12 +29,20 @@ def _machine() -> str:
 
 def cmd_bench(args: argparse.Namespace) -> int:
     """Speed against error of the generated functions and the SciPy alternatives."""
+    quiet = getattr(args, "quiet", False)
+    with progress.reporting(progress.Progress(progress.wanted(quiet))):
+        return _bench(args)
+
+
+def _bench(args: argparse.Namespace) -> int:
     from . import bench, bench_targets as bt, scenes
     from .bench_report import as_markdown, headline, not_applicable, plot, plot_scaling
+    say = progress.current()
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     if args.sweep:
-        cli_sweep.run_bench(out_dir, args.format == "json")
+        with say.task("design sweeps against per-design integration"):
+            cli_sweep.run_bench(out_dir, args.format == "json")
         if not args.ids:                   # `bench --sweep` alone: the sweep bench only
             return 0
     everything, goals = [], []
@@ -52,17 +60,23 @@ def cmd_bench(args: argparse.Namespace) -> int:
         values = bench.grid_values(d, chosen)
         duration = max(s.options["duration"] for s in chosen)
         start = time.perf_counter()
-        rows = bench.bench(d, values, duration, points=args.points,
-                           methods=args.methods or bench.METHODS, rtols=rtols)
-        big = bench.throughput(d, values, duration, points=args.throughput_points)
+        with say.task(f"{i}: generated functions and integrators, {len(rtols)} tolerances"):
+            rows = bench.bench(d, values, duration, points=args.points,
+                               methods=args.methods or bench.METHODS, rtols=rtols)
+        with say.task(f"{i}: throughput on {args.throughput_points} points"):
+            big = bench.throughput(d, values, duration, points=args.throughput_points)
         everything += rows + big
-        arrays = bt.array_ratios(d, values, duration, sizes)
-        scalars = bt.scalar_call(d, values, duration)
-        scaled = bt.scaling(d, values, duration, rows, compare)
+        with say.task(f"{i}: against np.cos at {', '.join(f'{n:.0e}' for n in sizes)} points"):
+            arrays = bt.array_ratios(d, values, duration, sizes)
+            scalars = bt.scalar_call(d, values, duration)
+        with say.task(f"{i}: closed form against the best integrator at N = "
+                      + ", ".join(map(str, compare))):
+            scaled = bt.scaling(d, values, duration, rows, compare)
         goals += bt.goals(i, arrays, scalars, scaled)
-        sized = [line for s in chosen
-                 for line in bench.scene_comparison(
-                     d, s, points=min(args.throughput_points, 200_000))]
+        with say.task(f"{i}: scene modules against the general module"):
+            sized = [line for s in chosen
+                     for line in bench.scene_comparison(
+                         d, s, points=min(args.throughput_points, 200_000))]
         heads = headline(rows)
         skipped = not_applicable(d, rows)
         md = out_dir / f"bench_{i}.md"
@@ -101,9 +115,11 @@ def cmd_bench(args: argparse.Namespace) -> int:
         print(bt.goals_table(goals))
     for i in _ids(args.ids):
         if registry.get(i).tabulated:
-            _bench_piecewise(i, out_dir, args.points, args.format == "table")
+            with say.task(f"{i}: piecewise-linear runs against solve_ivp"):
+                _bench_piecewise(i, out_dir, args.points, args.format == "table")
     if args.sampled:
-        _bench_sampled(out_dir, args.format == "table")
+        with say.task("loads sampled on a grid"):
+            _bench_sampled(out_dir, args.format == "table")
     if args.format == "json":
         print(json.dumps(bench.as_dicts(everything), indent=2))
     return 0

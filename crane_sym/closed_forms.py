@@ -23,12 +23,12 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import lru_cache
-from typing import Sequence
+from typing import Iterator, Sequence
 
 import numpy as np
 import sympy as sp
 
-__all__ = ["ClosedForm", "clear_cache", "closed_form"]
+__all__ = ["ClosedForm", "clear_cache", "closed_form", "jordan", "jordan_blocks"]
 
 
 @dataclass(frozen=True)
@@ -93,27 +93,43 @@ class ClosedForm:
 
 
 @lru_cache(maxsize=256)
-def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
+def jordan(a_key: tuple, b_key: tuple) -> tuple[sp.Matrix, sp.Matrix]:
+    """SymPy's exact Jordan decomposition M = P J P⁻¹ of M = [[A, b], [0, 0]],
+    each entry taken as the exact rational of the float's shortest decimal
+    (cached; the float and the mpmath closed forms share it)."""
     n = len(b_key)
     exact = lambda v: sp.Rational(repr(v))  # noqa: E731  (the float's shortest decimal)
     aug = sp.zeros(n + 1, n + 1)
     aug[:n, :n] = sp.Matrix(n, n, [exact(v) for v in a_key])
     aug[:n, n] = sp.Matrix([exact(v) for v in b_key])
-    P, J = aug.jordan_form()
+    return aug.jordan_form()
+
+
+def jordan_blocks(J: sp.Matrix) -> Iterator[tuple[int, int]]:
+    """(first row, size) of each Jordan block of ``J``."""
+    i, size = 0, J.rows
+    while i < size:
+        k = 1
+        while i + k < size and J[i + k - 1, i + k] == 1 and J[i + k, i + k] == J[i, i]:
+            k += 1
+        yield i, k
+        i += k
+
+
+@lru_cache(maxsize=256)
+def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
+    n = len(b_key)
+    P, J = jordan(a_key, b_key)
     Pn = np.array(P.evalf(30).tolist(), dtype=complex)
     Pinv = np.linalg.inv(Pn)
     terms: dict[tuple, np.ndarray] = {}
-    i = 0
     size = n + 1
-    while i < size:                                   # walk the Jordan blocks
+    for i, k in jordan_blocks(J):
         lam = complex(sp.N(J[i, i], 30))
         if abs(lam.imag) <= 1e-20 * (1 + abs(lam)):     # a real root printed with radicals
             lam = complex(lam.real, 0.0)
         if abs(lam.real) <= 1e-20 * (1 + abs(lam)):
             lam = complex(0.0, lam.imag)
-        k = 1
-        while i + k < size and J[i + k - 1, i + k] == 1 and J[i + k, i + k] == J[i, i]:
-            k += 1
         for j in range(k):                            # t^j/j! on the j-th superdiagonal
             E = np.zeros((size, size), dtype=complex)
             for r in range(k - j):
@@ -121,7 +137,6 @@ def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
             C = Pn @ E @ Pinv
             key = (j, lam)
             terms[key] = terms.get(key, 0) + C
-        i += k
     powers, sigmas, omegas, sine, coefs = [], [], [], [], []
     for (j, lam), C in sorted(terms.items(), key=lambda kv: (kv[0][0], kv[0][1].real,
                                                              kv[0][1].imag)):
@@ -215,5 +230,6 @@ def _closed_form_numeric(a_key: tuple, b_key: tuple) -> ClosedForm:
 
 def clear_cache() -> None:
     """Forget every closed form computed so far (a bench's cold start)."""
+    jordan.cache_clear()
     _closed_form_cached.cache_clear()
     _closed_form_numeric.cache_clear()

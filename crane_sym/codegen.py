@@ -264,8 +264,8 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     names = ", ".join(repr(o.name) for o in [*outputs, *(t for t, _ in tables)])
     helpers: dict[int, str] = {}
     functions = ["\n" + render_function(o, d.symbols, rules, helpers) for o in outputs]
-    functions += ["\n" + render_tabulated(o, table, "Tabulated for this scene by "
-                                           "crane_sym.phase_table.") for o, table in tables]
+    functions += ["\n" + render_tabulated(o, table, "Solved for this scene phase by "
+                                           "phase in mpmath (crane_sym.exact_phases).") for o, table in tables]
     helper_source = ["\n" + render_helper(key, name) for key, name in helpers.items()]
     kernel_source = _kernel_source(functions + helper_source)
     uses_math = any("math." in f for f in [*functions, kernel_source])

@@ -10,7 +10,6 @@ from typing import Sequence
 
 from .codegen import render_module
 from .derivation import Derivation
-from .tabulated import same_text
 
 __all__ = ["Freshness", "compare", "default_directory", "render_package_init", "rendered",
            "stale", "write"]
@@ -81,9 +80,8 @@ def compare(files: dict[str, str], directory: Path, strays: bool = True) -> Fres
         path = directory / name
         if not path.is_file():
             missing.append(name)
-        elif (path.read_bytes() != text.encode("utf-8")
-              and not same_text(path.read_text(encoding="utf-8"), text)):
-            differs.append(name)                # tables: to CHECK_RTOL (tabulated)
+        elif path.read_bytes() != text.encode("utf-8"):
+            differs.append(name)
     extra = sorted(p.name for p in directory.glob("*.py") if p.name not in files) \
         if strays and directory.is_dir() else []
     return Freshness(missing, differs, extra)

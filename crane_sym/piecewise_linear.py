@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Hashable, Iterator, Protocol, Sequence
+from typing import Callable, Hashable, Iterator, Protocol, Sequence
 
 import numpy as np
 from scipy.optimize import brentq
@@ -41,7 +41,7 @@ from scipy.optimize import brentq
 from .closed_forms import ClosedForm, closed_form
 
 __all__ = ["ClosedForm", "Guard", "HybridSystem", "PiecewiseResult", "Segment", "by_phase",
-           "closed_form", "first_crossing", "simulate"]
+           "closed_form", "first_crossing", "sign_change", "signal", "simulate"]
 
 
 def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
@@ -59,12 +59,25 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
     fire again at once.
     """
     amps, k = form.scalar_terms(weights, constant, x0)
-    p, s, w, sine = form.powers, form.sigmas, form.omegas, form.sine
+    g, slope = signal(form, amps, k)
+    size = float(np.sum(np.abs(amps)) + abs(k))
+    on_surface = abs(g(0.0)) <= max(form.derivative_bound(amps, 0.0, min(h_min, t_end)) * h_min,
+                                    1e-12 * size)
+    bracket = sign_change(form, amps, g, slope, t_end, direction, on_surface, h_min, window)
+    if bracket is None:
+        return None
+    lo, hi = bracket
+    return hi if lo == hi else brentq(g, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
 
-    # g and g' in plain floats: a phase has a handful of terms, and these run
-    # thousands of times per run, where NumPy's per-call cost dominates.
+
+def signal(form: ClosedForm, amps: np.ndarray,
+           k: float) -> tuple[Callable[[float], float], Callable[[float], float]]:
+    """g(t) = Σ a_j β_j(t) + k and g'(t) in plain floats: a phase has a handful
+    of terms, and these run thousands of times per run, where NumPy's per-call
+    cost dominates."""
     terms = [(float(a), int(pp), float(ss), float(ww), bool(sn))
-             for a, pp, ss, ww, sn in zip(amps, p, s, w, sine) if a != 0.0]
+             for a, pp, ss, ww, sn in zip(amps, form.powers, form.sigmas, form.omegas,
+                                          form.sine) if a != 0.0]
 
     def g(t: float) -> float:
         total = k
@@ -86,12 +99,21 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
             dtp = pp * t ** (pp - 1) if pp else 0.0
             total += a * math.exp(ss * t) * ((dtp + ss * tp) * wave + tp * dwave)
         return total
+    return g, slope
 
+
+def sign_change(form: ClosedForm, amps: np.ndarray, g: Callable[[float], float],
+                slope: Callable[[float], float], t_end: float, direction: int,
+                on_surface: bool, h_min: float,
+                window: float | None = None) -> tuple[float, float] | None:
+    """The first step (lo, hi) of the certified search over which ``g`` leaves
+    its starting side, (hi, hi) where it is on the other side or 0 at hi
+    already, or None when it does not by ``t_end``. ``g`` gives the value
+    whose sign is trusted (the double, or a decided value in
+    :mod:`crane_sym.exact_phases`); ``slope`` and the bounds of ``form`` only
+    size the steps."""
     window = window or _window(form, max(t_end, h_min))
     t, gt = 0.0, g(0.0)
-    size = float(np.sum(np.abs(amps)) + abs(k))
-    on_surface = abs(gt) <= max(form.derivative_bound(amps, 0.0, min(h_min, t_end)) * h_min,
-                                1e-12 * size)
     side = -direction if (on_surface and direction) else np.sign(gt)
     if side == 0:                                      # on the surface, either way
         t = min(h_min, t_end)
@@ -113,8 +135,8 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
             gn = g(nxt)
             if gn == 0.0 or np.sign(gn) != side:
                 if gn == 0.0 or np.sign(gt) != side:
-                    return nxt
-                return brentq(g, t, nxt, xtol=xtol, rtol=4 * np.finfo(float).eps)
+                    return nxt, nxt
+                return t, nxt
             t, gt = nxt, gn
     return None
 

@@ -15,7 +15,7 @@ from pathlib import Path
 from types import ModuleType
 from typing import Callable
 
-from . import registry
+from . import progress, registry
 from .scenes import Scene, SceneError, SceneReport, load_scene
 from .specialize import module_name, render_scene_module
 
@@ -72,15 +72,20 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, lis
     make = getattr(registry.module(scene.derivation), "scene_report", None)
     if make is None:
         raise SceneError(f"derivation {scene.derivation!r} has no scene_report()")
+    say = progress.current()
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     source = outdir / module_name(scene)
-    source.write_text(render_scene_module(scene), encoding="utf-8")
-    report = make(scene, import_module_file(source))
+    with say.task(f"specializing and printing {source.name}"):
+        text = render_scene_module(scene)
+    source.write_text(text, encoding="utf-8")
+    with say.task(f"running scene {scene.name}"):
+        report = make(scene, import_module_file(source))
     if not isinstance(report, SceneReport) or not report.panels:
         raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
     report.lines.append(f"module written to {source}")
-    paths = plot_report(report, scene.title, outdir / f"{scene.name}.png")
+    with say.task(f"plotting {len(report.panels)} panels"):
+        paths = plot_report(report, scene.title, outdir / f"{scene.name}.png")
     return report, paths
 
 

@@ -18,6 +18,7 @@ import sympy as sp
 from . import registry
 from .codegen import render_module
 from .derivation import Derivation, Output, SpecializedLoad, TabulatedOutput
+from .exact_phases import exact_table
 from .phase_table import PhaseTable
 from .scenes import Scene, SceneError, list_scenes, load_scene
 from .symbols import STATE, TIME, SymbolTable
@@ -84,7 +85,7 @@ def tabulated_names(d: Derivation) -> set[str]:
 
 def tabulated_outputs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, PhaseTable]]:
     """The scene's tabulated responses, each solved with the scene's data."""
-    return [(o, o.run(scene.parameters, scene.options).table())
+    return [(o, exact_table(o.run(scene.parameters, scene.options)))
             for o in d.tabulated if o.name in scene.outputs]
 
 

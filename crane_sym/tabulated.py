@@ -1,20 +1,16 @@
 """Printing a tabulated response (``derivation.TabulatedOutput``) as NumPy.
 
-The scene's run is solved when the module is generated; the module carries
-its :class:`~crane_sym.phase_table.PhaseTable` as arrays and evaluates it
-with ``kernels._phase_sum``, one partition of the time array and each phase's
-terms on its own points. Numbers are printed to 13 significant digits.
-
-A run of thirty phases carries each event time and state into the next, so
-the last digits of the table follow the last bits of the libm and LAPACK
-the machine uses (1e-12 relative has been seen from a change of summation
-order alone). The rendering is deterministic on one machine; on another,
-:func:`same_text` (what ``generate --check`` uses) accepts a table whose
-numbers agree to ``CHECK_RTOL`` and demands everything else byte for byte.
+The scene's run is solved when the module is generated, in mpmath
+(:func:`crane_sym.exact_phases.exact_table`: no number of it depends on the
+machine's libm, NumPy or LAPACK); the module carries its
+:class:`~crane_sym.phase_table.PhaseTable` as arrays and evaluates it with
+``kernels._phase_sum``, one partition of the time array and each phase's
+terms on its own points. Numbers are printed to 13 significant digits, so the
+module is the same bytes on every machine and ``generate --check`` compares
+bytes.
 """
 from __future__ import annotations
 
-import re
 import textwrap
 
 import numpy as np
@@ -22,15 +18,10 @@ import numpy as np
 from .derivation import TabulatedOutput
 from .phase_table import PhaseTable
 
-__all__ = ["CHECK_RTOL", "render_tabulated", "rounded", "same_text"]
+__all__ = ["render_tabulated", "rounded"]
 
 #: Significant digits of the printed table.
 DIGITS = 13
-#: How closely ``generate --check`` wants a table's numbers to agree (of the
-#: table's largest number of the same array kind).
-CHECK_RTOL = 1e-9
-_BLOCK = re.compile(r"^(_TABLE_\w+) = \(\n(.*?)^\)$", re.MULTILINE | re.DOTALL)
-_NUMBER = re.compile(r"-?\d+(?:\.\d*)?(?:e[-+]?\d+)?")
 _NAMES = ("edges", "first", "powers", "sigmas", "omegas", "cos_amps", "sin_amps", "consts")
 _WHAT = ("phase starts and the end of the run [s]", "first term of each phase",
          "power k of tau", "decay sigma [1/s]", "angular frequency omega [rad/s]",
@@ -94,33 +85,3 @@ def render_tabulated(out: TabulatedOutput, table: PhaseTable, note: str) -> str:
               "scene tabulates), got {t.max()!r}\")",
               f"    return _into(out, t.shape, _phase_sum(t, *{const}))"]
     return "\n".join(lines) + "\n"
-
-
-def _tables(text: str) -> tuple[str, list[list[np.ndarray]]]:
-    """``text`` with each table block replaced by its name, and the blocks'
-    arrays (comments dropped) as numbers."""
-    blocks = []
-    for match in _BLOCK.finditer(text):
-        code = "\n".join(line.split("#")[0] for line in match.group(2).splitlines())
-        arrays = [np.array([float(n) for n in _NUMBER.findall(a)])
-                  for a in code.split("np.array(")[1:]]
-        blocks.append(arrays)
-    return _BLOCK.sub(r"\1 = (...)", text), blocks
-
-
-def same_text(disk: str, rendered: str) -> bool:
-    """True when two module texts are equal, or differ only in table numbers that
-    agree to ``CHECK_RTOL`` (the rendering machine's last bits, see above).
-    Each table's event times also appear, to six digits, in its docstring."""
-    if disk == rendered:
-        return True
-    (outer_a, blocks_a), (outer_b, blocks_b) = _tables(disk), _tables(rendered)
-    strip = lambda t: re.sub(r"\d+\.\d+ s ", "", t)  # noqa: E731 (docstring event times)
-    if not blocks_b or strip(outer_a) != strip(outer_b) or len(blocks_a) != len(blocks_b):
-        return False
-    for arrays_a, arrays_b in zip(blocks_a, blocks_b):
-        for a, b in zip(arrays_a, arrays_b, strict=True):
-            scale = max(np.max(np.abs(b), initial=0.0), 1e-300)
-            if a.shape != b.shape or np.max(np.abs(a - b), initial=0.0) > CHECK_RTOL * scale:
-                return False
-    return True

@@ -3,6 +3,7 @@ mean what they say, and the alternatives of papers 000, 002 and 004 computing
 the same quantities as the generated functions. No timing is asserted."""
 import json
 import math
+import sys
 
 import mpmath
 import numpy as np
@@ -115,11 +116,18 @@ def test_headline_and_table(rows):
     assert len(table) == 2 + len(rows)
 
 
-def test_bench_command_json(tmp_path, capsys):
+def test_bench_command_json(tmp_path, capsys, monkeypatch):
+    """On a terminal the bench says each stage on stderr; stdout stays JSON."""
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
     assert main(["bench", "000", "--format", "json", "--out", str(tmp_path), "--points", "40",
                  "--throughput-points", "1000", "--quick", "--sizes", "1000",
                  "--compare-points", "30", "60"]) == 0
-    data = json.loads(capsys.readouterr().out)
+    captured = capsys.readouterr()
+    for stage in ("generated functions and integrators", "throughput on 1000 points",
+                  "against np.cos", "closed form against the best integrator",
+                  "scene modules against the general module"):
+        assert f"travel_braking: {stage}" in captured.err
+    data = json.loads(captured.out)
     keys = {"function", "method", "seconds", "points", "max_rel_error"}
     assert all(keys <= set(row) for row in data)
     assert {(r["function"], r["method"]) for r in data} >= {

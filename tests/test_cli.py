@@ -160,6 +160,22 @@ def test_progress_goes_to_stderr_on_a_terminal(capsys, monkeypatch):
     json.loads(captured.out)                     # stdout is still clean JSON
 
 
+@pytest.mark.parametrize("quiet", [False, True])
+def test_run_shows_its_stages_on_a_terminal(quiet, tmp_path, capsys, monkeypatch):
+    """`run` says each stage of the scene pipeline on stderr, nothing with -q."""
+    _terminal(monkeypatch)
+    argv = ["run", "overhead_crane_50t", "--out", str(tmp_path)] + (["-q"] if quiet else [])
+    assert main(argv) == 0
+    captured = capsys.readouterr()
+    stages = ("reading scene overhead_crane_50t", "specializing and printing "
+              "scene_overhead_crane_50t.py", "running scene overhead_crane_50t", "plotting")
+    if quiet:
+        assert captured.err == ""
+    else:
+        assert all(f"{stage}" in captured.err for stage in stages)
+    assert captured.out.startswith("scene overhead_crane_50t:")
+
+
 def test_progress_reports_each_step_of_a_build(capsys):
     """A derivation under construction reports each step it adds."""
     from crane_sym.derivations import travel_braking
