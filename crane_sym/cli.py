@@ -3,13 +3,15 @@ from __future__ import annotations
 
 import argparse
 import json
+import signal
 import sys
+import threading
 import time
 from importlib import metadata
 from pathlib import Path
 from typing import Sequence
 
-from . import __version__, cli_sweep, progress, registry
+from . import __version__, cli_sweep, output_files, progress, registry
 from .cli_bench import cmd_bench
 
 DESCRIPTION = """\
@@ -102,10 +104,11 @@ def cmd_walkthrough(args: argparse.Namespace) -> int:
     from .walkthrough import walkthrough
     name = registry.resolve(args.id)
     make = notebook if args.format == "ipynb" else walkthrough
+    target = output_files.out_file(args.output, "-o") if args.output else None
     with progress.reporting(_progress(args)) as say, say.task(f"walkthrough of {name}"):
         text = make(name)
-    if args.output:
-        Path(args.output).write_text(text, encoding="utf-8")
+    if target:
+        output_files.write_text(target[0], target[1], text, "-o")
         print(f"wrote {args.output}")
     else:
         print(text)
@@ -116,13 +119,14 @@ def cmd_generate(args: argparse.Namespace) -> int:
     """Write generated/ (or one scene's module), or check that it is fresh."""
     from . import module_files, specialize
     from .generate import all_files
+    if args.scene:
+        directory = Path(args.out or ".")
+    else:
+        directory = Path(args.out) if args.out else module_files.default_directory()
+    if not args.check:
+        output_files.check_folder(directory)
     with progress.reporting(_progress(args)):
-        if args.scene:
-            directory = Path(args.out or ".")
-            files = specialize.scene_files(args.scene)
-        else:
-            directory = Path(args.out) if args.out else module_files.default_directory()
-            files = all_files()
+        files = specialize.scene_files(args.scene) if args.scene else all_files()
     if args.check:
         found = module_files.compare(files, directory, strays=not args.scene)
         for name in found.missing:
@@ -282,12 +286,46 @@ def parser() -> argparse.ArgumentParser:
     return top
 
 
+class Terminated(BaseException):
+    """SIGTERM, raised in the main thread so that every ``finally`` runs (the
+    temporaries of :mod:`crane_sym.output_files` are removed)."""
+
+
+def _terminate(signum, frame) -> None:
+    raise Terminated()
+
+
+def _os_message(err: OSError) -> str:
+    """One line for an operating-system error: the path and why."""
+    if isinstance(err, output_files.OutputError):
+        return str(err)
+    where = f"{err.filename!r}: " if err.filename else ""
+    return f"{where}{output_files.describe(err)}"
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the command line; return the exit code."""
+    """Run the command line; return the exit code: 0 done, 1 a check failed
+    (``generate --check``, ``accuracy``), 2 an error (one line on stderr),
+    130 interrupted (SIGINT), 143 terminated (SIGTERM)."""
     args = parser().parse_args(argv)
+    previous = None
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGTERM, _terminate)
     try:
         return args.func(args)
     except (KeyError, ValueError) as err:
         message = err.args[0] if isinstance(err, KeyError) and err.args else err
         print(f"crane-sym: error: {message}", file=sys.stderr)
         return 2
+    except OSError as err:
+        print(f"crane-sym: error: {_os_message(err)}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("crane-sym: interrupted (SIGINT); nothing half-written is left", file=sys.stderr)
+        return 130
+    except Terminated:
+        print("crane-sym: terminated (SIGTERM); nothing half-written is left", file=sys.stderr)
+        return 143
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)

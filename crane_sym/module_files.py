@@ -10,6 +10,7 @@ from typing import Sequence
 
 from .codegen import render_module
 from .derivation import Derivation
+from .output_files import staged
 
 __all__ = ["Freshness", "compare", "default_directory", "render_package_init", "rendered",
            "stale", "write"]
@@ -47,14 +48,11 @@ def rendered(derivations: Sequence[Derivation],
     return files
 
 
-def write(files: dict[str, str], directory: Path) -> list[Path]:
-    """Write ``files`` into ``directory``; return the paths written."""
-    directory.mkdir(parents=True, exist_ok=True)
-    paths = []
-    for name, text in sorted(files.items()):
-        path = directory / name
-        path.write_bytes(text.encode("utf-8"))
-        paths.append(path)
+def write(files: dict[str, str], directory: Path, option: str = "--out") -> list[Path]:
+    """Write ``files`` into ``directory``, all or none (renamed into place
+    together, :mod:`crane_sym.output_files`); return the paths written."""
+    with staged(directory, option) as stage:
+        paths = [stage.text(name, text) for name, text in sorted(files.items())]
     return paths
 
 

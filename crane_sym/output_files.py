@@ -1,0 +1,206 @@
+"""Files a command writes: only inside the folder the user names, each one
+whole or not at all, nothing left behind.
+
+Every file is first written under a fresh temporary name in its target
+folder (the process id and a random part, created exclusively, so two runs
+never share one) and then renamed over the target name. A rename replaces a
+symbolic link at the target name, it never writes through it. A
+:class:`Stage` collects the files of one result (a dataset and its plot, a
+scene's module and its figures) and renames them together at the end, with
+SIGINT and SIGTERM held off between the renames; on any failure, or a
+signal, its temporaries are removed.
+
+An operating-system failure becomes an :class:`OutputError`: one line that
+names the option or path, for the command line to print.
+"""
+from __future__ import annotations
+
+import os
+import secrets
+import shutil
+import signal
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Iterator
+
+__all__ = ["OutputError", "Stage", "check_folder", "describe", "out_file", "out_folder", "staged", "write_text"]
+
+
+class OutputError(OSError):
+    """A file or folder could not be written; the message names it and why."""
+
+
+_REASONS = {"EEXIST": "exists", "ENOTDIR": "is not a folder", "EISDIR": "is a folder",
+            "EACCES": "permission denied", "EPERM": "permission denied",
+            "EROFS": "read-only file system", "ENOSPC": "no space left on the device",
+            "ENOENT": "no such file or folder", "EDQUOT": "disk quota exceeded"}
+
+
+def describe(err: OSError) -> str:
+    """The reason of an operating-system error in a few words."""
+    import errno
+    name = errno.errorcode.get(err.errno or 0, "")
+    return _REASONS.get(name, err.strerror or type(err).__name__)
+
+
+def check_folder(path: str | Path, option: str = "--out") -> Path:
+    """``path`` if a command could write into it (an existing writable folder,
+    or one that can be made in a writable folder), without making it;
+    :class:`OutputError` naming ``option`` otherwise. A command checks its
+    output folder so before its work, and makes it only when it writes."""
+    folder = Path(path)
+    if folder.exists() and not folder.is_dir():
+        raise OutputError(f"{option} {str(folder)!r} is a file, not a folder")
+    probe = folder
+    while not probe.exists():
+        if probe.is_symlink():
+            raise OutputError(f"{option} {str(folder)!r}: {str(probe)!r} is a broken link")
+        probe = probe.parent
+    if not probe.is_dir():
+        raise OutputError(f"{option} {str(folder)!r}: {str(probe)!r} is a file, not a folder")
+    if not os.access(probe, os.W_OK | os.X_OK):
+        raise OutputError(f"{option} {str(folder)!r}: {str(probe)!r} is not writable "
+                          "(permission denied)")
+    return folder
+
+
+def out_folder(path: str | Path, option: str = "--out") -> Path:
+    """The folder ``path``, created if missing; :class:`OutputError` naming
+    ``option`` if it is a file or cannot be made or written."""
+    folder = check_folder(path, option)
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as err:
+        raise OutputError(f"{option} {str(folder)!r}: cannot create the folder "
+                          f"({describe(err)})") from None
+    if not os.access(folder, os.W_OK | os.X_OK):
+        raise OutputError(f"{option} {str(folder)!r}: the folder is not writable "
+                          "(permission denied)")
+    return folder
+
+
+def out_file(path: str | Path, option: str = "-o") -> tuple[Path, str]:
+    """(folder, name) of the file ``path`` a command is to write;
+    :class:`OutputError` naming ``option`` if it is a folder or its folder
+    is missing or not writable."""
+    target = Path(path)
+    if target.is_dir():
+        raise OutputError(f"{option} {str(target)!r} is a folder; give a file name")
+    folder = target.parent
+    if not folder.is_dir():
+        raise OutputError(f"{option} {str(target)!r}: the folder {str(folder)!r} does not exist")
+    return out_folder(folder, option), target.name
+
+
+def _plain(name: str) -> str:
+    """``name`` if it is a plain file name (no folder part), else ValueError."""
+    if not name or name in (".", "..") or Path(name).name != name or "\0" in name:
+        raise ValueError(f"{name!r} is not a plain file name")
+    return name
+
+
+class Stage:
+    """Files of one result under temporary names in ``folder``, renamed onto
+    their names by :meth:`commit` (see the module docstring)."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = Path(folder)
+        self._moves: list[tuple[Path, Path]] = []
+
+    def path(self, name: str, suffix: str = "") -> Path:
+        """A fresh temporary path for the file (or folder) ``name``; whatever
+        is written there becomes ``name`` at :meth:`commit`. ``suffix`` keeps
+        an extension a writer looks at (``.png``)."""
+        target = self.folder / _plain(name)
+        tmp = self.folder / f".{name}.{os.getpid()}-{secrets.token_hex(4)}.partial{suffix}"
+        self._moves.append((tmp, target))
+        return tmp
+
+    def text(self, name: str, text: str) -> Path:
+        """Write ``text`` (UTF-8) for ``name``; return the final path."""
+        return self.bytes(name, text.encode("utf-8"))
+
+    def bytes(self, name: str, data: bytes) -> Path:
+        """Write ``data`` for ``name``; return the final path."""
+        tmp = self.path(name)
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_NOFOLLOW", 0),
+                     0o644)
+        with os.fdopen(fd, "wb") as handle:
+            handle.write(data)
+        return self.folder / name
+
+    def commit(self) -> list[Path]:
+        """Rename every temporary onto its name, signals held off meanwhile; a
+        folder already at a name (a Zarr store) is replaced whole."""
+        held = _hold_signals()
+        try:
+            done = []
+            for tmp, target in self._moves:
+                if not tmp.exists():
+                    continue
+                if tmp.is_dir() and target.is_dir() and not target.is_symlink():
+                    old = target.with_name(f".{target.name}.{os.getpid()}.old")
+                    os.replace(target, old)
+                    os.replace(tmp, target)
+                    shutil.rmtree(old, ignore_errors=True)
+                else:
+                    if target.is_dir() and not target.is_symlink():
+                        raise OutputError(f"{str(target)!r} is a folder; not replaced by a file")
+                    os.replace(tmp, target)
+                done.append(target)
+            self._moves.clear()
+            return done
+        finally:
+            _release_signals(held)
+
+    def discard(self) -> None:
+        """Remove every temporary not yet renamed."""
+        for tmp, _ in self._moves:
+            if tmp.is_dir() and not tmp.is_symlink():
+                shutil.rmtree(tmp, ignore_errors=True)
+            else:
+                try:
+                    tmp.unlink()
+                except FileNotFoundError:
+                    pass
+        self._moves.clear()
+
+
+@contextmanager
+def staged(folder: str | Path, option: str = "--out") -> Iterator[Stage]:
+    """A :class:`Stage` in the folder ``folder`` (:func:`out_folder`): its files
+    are renamed into place when the block ends normally, and removed when it
+    raises (an error, KeyboardInterrupt, a SIGTERM turned into an exception).
+    An operating-system error inside the block becomes an :class:`OutputError`
+    naming ``option``: keep reads out of the block."""
+    stage = Stage(out_folder(folder, option))
+    try:
+        yield stage
+        stage.commit()
+    except OSError as err:
+        stage.discard()
+        if isinstance(err, OutputError):
+            raise
+        raise OutputError(f"{option} {str(folder)!r}: cannot write "
+                          f"({describe(err)})") from None
+    except BaseException:
+        stage.discard()
+        raise
+
+
+def write_text(folder: str | Path, name: str, text: str, option: str = "--out") -> Path:
+    """Write one file ``name`` into ``folder`` through a :class:`Stage`."""
+    with staged(folder, option) as stage:
+        path = stage.text(name, text)
+    return path
+
+
+def _hold_signals() -> set | None:
+    if not hasattr(signal, "pthread_sigmask"):
+        return None
+    return signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+
+
+def _release_signals(previous: set | None) -> None:
+    if previous is not None:
+        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
