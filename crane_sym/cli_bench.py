@@ -35,7 +35,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
 
 def _bench(args: argparse.Namespace) -> int:
-    from . import bench, bench_targets as bt, scenes
+    from . import bench, bench_memory, bench_targets as bt, scenes
     from .bench_report import as_markdown, headline, not_applicable, plot, plot_scaling
     say = progress.current()
     out_dir = Path(args.out)
@@ -73,6 +73,9 @@ def _bench(args: argparse.Namespace) -> int:
                       + ", ".join(map(str, compare))):
             scaled = bt.scaling(d, values, duration, rows, compare)
         goals += bt.goals(i, arrays, scalars, scaled)
+        memory_points = 10**6 if args.quick else 10**7
+        with say.task(f"{i}: peak memory on {memory_points:.0e} points"):
+            memory = bench_memory.function_memory(d, values, duration, memory_points)
         with say.task(f"{i}: scene modules against the general module"):
             sized = [line for s in chosen
                      for line in bench.scene_comparison(
@@ -94,6 +97,8 @@ def _bench(args: argparse.Namespace) -> int:
                  "a first call on a fresh array)", "", bt.arrays_table(arrays), "",
                  "Scalar calls (Python floats): " + ", ".join(
                      f"{f} {sec * 1e6:.2f} µs" for f, sec in scalars), "",
+                 "## Peak memory of one call (traced NumPy allocations)", "",
+                 bench_memory.as_markdown(memory), "",
                  "## Targets that do not apply", "",
                  "| function | target | why |", "| --- | --- | --- |",
                  *[f"| {f} | {what} | {why} |" for f, what, why in skipped], "",
@@ -142,7 +147,8 @@ def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
 
 
 def _bench_sampled(out_dir: Path, show: bool) -> None:
-    """Sampled-load Duhamel responses against the closed forms (issue 5, item 5)."""
+    """Sampled-load Duhamel responses against the closed forms, and their memory."""
+    from . import bench_memory
     from .bench_sampled import accuracy_markdown, as_markdown, sampled_accuracy, \
         sampled_comparison
     start = time.perf_counter()
@@ -152,7 +158,9 @@ def _bench_sampled(out_dir: Path, show: bool) -> None:
         f"N = 1e5 samples; exact references by mpmath (50 digits). Absolute times are this "
         f"machine's ({_machine()}); ratios come from this one run "
         f"({time.perf_counter() - start:.0f} s).", "", "## Speed against the closed form", "",
-        speed, "", "## Accuracy on loads with a closed form", "", accuracy, ""])
+        speed, "", "## Accuracy on loads with a closed form", "", accuracy, "",
+        "## Peak memory of one call (traced NumPy allocations)", "",
+        bench_memory.as_markdown(bench_memory.sampled_memory()), ""])
     path = out_dir / "bench_sampled.md"
     path.write_text(text, encoding="utf-8")
     if show:

@@ -1,4 +1,4 @@
-"""Response of the undamped oscillator to a sampled load (issue 5, item 5).
+"""Response of the undamped oscillator to a sampled load.
 
 Users have measured drive-force records, not formulas. For the relative
 coordinate of papers 000 and 002,
@@ -37,8 +37,9 @@ terms, two prefix sums, rotations. Accuracy holds over long records because
 * the phases :math:`\\varphi_k` are exact in double-double (one ulp of
   :math:`\\Omega t` costs :math:`10^{-16}\\,\\Omega t` relative), and for a
   uniform record come from :math:`2\\sqrt N` sines and cosines;
-* the prefix sums are blocked and compensated (``_prefix_sums``): a plain
-  ``np.cumsum`` loses ~:math:`\\sqrt N` roundings of the sum;
+* the prefix sums are blocked and compensated (``sampled_states.prefix_sums``,
+  carried from chunk to chunk in double-double): a plain ``np.cumsum`` loses
+  ~:math:`\\sqrt N` roundings of the sum;
 * the weights have no cancellation at small :math:`\\Omega h`
   (:math:`1 - \\cos\\theta = 2\\sin^2(\\theta/2)`, ``kernels._sin_remainder``);
 * :math:`|w_0 + \\sum| = |w_k|`: the final rotation cannot amplify errors.
@@ -56,8 +57,8 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
-from .kernels import (_checked, _compensated_cumsum, _phase, _sin_remainder, _two_product,
-                      _two_sum)
+from .kernels import _checked, _phase, _sin_remainder, _two_product, _two_sum
+from .sampled_states import Rotations, Weights, respond
 
 
 class SampledResponse(NamedTuple):
@@ -78,18 +79,6 @@ class SampledResponse(NamedTuple):
     x: np.ndarray
     v: np.ndarray
     a: np.ndarray | None
-
-
-class Weights(NamedTuple):
-    """Real and imaginary parts of the weights of a linear segment (see
-    ``segment_weights``)."""
-
-    a_re: np.ndarray
-    a_im: np.ndarray
-    b_re: np.ndarray
-    b_im: np.ndarray
-    e_re: np.ndarray
-    e_im: np.ndarray
 
 
 def segment_weights(theta: ArrayLike) -> Weights:
@@ -161,8 +150,9 @@ def _rotation(hi: np.ndarray, lo: np.ndarray) -> np.ndarray:
     return out
 
 
-def _uniform_rotations(theta: tuple[float, float], n: int) -> np.ndarray:
-    """:math:`e^{ij\\theta}`, j = 0 .. n-1, for a double-double :math:`\\theta`.
+def _uniform_rotations(theta: tuple[float, float], n: int) -> Rotations:
+    """:math:`e^{ij\\theta}` for the samples j in [first, end), j < n, for a
+    double-double :math:`\\theta`.
 
     With :math:`j = qB + r` and :math:`B \\approx \\sqrt n`, each value is the
     product of two of :math:`2\\sqrt n` rotations computed from exact
@@ -170,138 +160,14 @@ def _uniform_rotations(theta: tuple[float, float], n: int) -> np.ndarray:
     and a few ulp of error at any :math:`j\\theta`.
     """
     block = max(1, math.isqrt(n - 1) + 1)
-    rows = (n + block - 1) // block
     inner = _rotation(*_phase(np.arange(block, dtype=float), theta))
-    outer = _rotation(*_phase(np.arange(rows, dtype=float) * block, theta))
-    return np.multiply.outer(outer, inner).ravel()[:n]
 
-
-def _load_terms(h: np.ndarray | float, wt: Weights, S: np.ndarray,
-                out: np.ndarray) -> None:
-    """:math:`\\int_0^{h_j} e^{-i\\Omega s} S(t_j + s)\\,ds = h_j (S_j A_j + S_{j+1} B_j)`
-    into the complex array ``out``: what drives :math:`w`."""
-    left, right = S[:-1], S[1:]
-    if np.ndim(h) == 0:                          # one segment length: complex scalars
-        np.multiply(left, complex(wt.a_re, wt.a_im) * h, out=out)
-        out += right * (complex(wt.b_re, wt.b_im) * h)
-        return
-    for part, wa, wb in ((out.real, wt.a_re, wt.b_re), (out.imag, wt.a_im, wt.b_im)):
-        np.multiply(left, wa, out=part)
-        part += right * wb
-        part *= h
-
-
-def _slope_terms(wt: Weights, jump: np.ndarray, out: np.ndarray) -> None:
-    """:math:`-(i/\\Omega) \\int_0^{h_j} e^{-i\\Omega s} S'\\,ds
-    = -i\\,\\Delta_j E_j`, :math:`\\Delta_j = (S_{j+1} - S_j)/\\Omega`, into
-    ``out``: what drives :math:`u` (at a jump of S, :math:`h_j = 0`, the jump
-    of :math:`u`)."""
-    if np.ndim(wt.e_re) == 0:
-        np.multiply(jump, complex(wt.e_im, -wt.e_re), out=out)
-        return
-    np.multiply(jump, wt.e_im, out=out.real)
-    np.multiply(jump, wt.e_re, out=out.imag)
-    np.negative(out.imag, out=out.imag)
-
-
-def _history(first: complex, steps: np.ndarray) -> np.ndarray:
-    """:math:`|first| + \\sum_{j<k} steps_j`, k = 0 .. len(steps)."""
-    out = np.empty(steps.size + 1)
-    out[0] = abs(first)
-    out[1:] = steps
-    return np.cumsum(out, out=out)
-
-
-#: Terms per block of the prefix sum: rounding in a block stays below ~BLOCK
-#: ulp of that block's own sums, however long the record.
-BLOCK = 64
-
-
-def _prefix_sums(terms: np.ndarray, n: int, compensated: bool) -> np.ndarray:
-    """Prefix sums of the first ``n`` of ``terms`` (a 1-D array padded with
-    zeros to a multiple of BLOCK), in place: a plain cumsum inside each block
-    of BLOCK terms, and the blocks' totals accumulated by
-    ``kernels._compensated_cumsum``. As accurate as the compensated sum of
-    all terms (a few ulp of each sum) at about the cost of one ``np.cumsum``;
-    ``compensated=False`` is the plain ``np.cumsum``, for comparison."""
-    if not compensated:
-        return np.cumsum(terms[:n])
-    blocks = terms.reshape(-1, BLOCK)
-    np.cumsum(blocks, axis=1, out=blocks)
-    ends = blocks[:-1, -1]
-    blocks[1:] += _compensated_cumsum(ends)[:, None]
-    return terms[:n]
-
-
-def _reach(mask: np.ndarray) -> int:
-    """1 + the index of the last True in ``mask``, 0 if none."""
-    return mask.size - int(np.argmax(mask[::-1])) if mask.any() else 0
-
-
-def _state(first: complex, terms, rotations: np.ndarray, n: int,
-           compensated: bool) -> np.ndarray:
-    """The state at samples 0 .. n-1: ``first`` plus the prefix sums of the
-    segment terms (``terms(out)`` writes terms 0 .. n-2 into ``out``), each
-    turned by :math:`e^{-i\\varphi_j}`, turned back by :math:`e^{i\\varphi_k}`."""
-    sums = np.zeros(-(-n // BLOCK) * BLOCK, dtype=complex)
-    sums[0] = first
-    terms(sums[1:n])
-    sums[1:n] *= np.conjugate(rotations[:n - 1])
-    sums = _prefix_sums(sums, n, compensated)
-    sums *= rotations[:n]
-    return sums
-
-
-def _respond(S: np.ndarray, Omega: float, rotations: np.ndarray, h: np.ndarray | float,
-             wt: Weights, x0: float, v0: float, acceleration: bool,
-             compensated: bool) -> SampledResponse:
-    """x, x', x'' at every sample, each read off whichever of the states
-    :math:`w = \\dot x + i\\Omega x` and :math:`u = \\dot x - i\\ddot x/\\Omega`
-    has the smaller error bound there; each state is summed only as far as
-    it is read."""
-    n = S.size
-    jump = np.subtract(S[1:], S[:-1])
-    jump /= Omega                                # Delta_j
-    w0 = complex(v0, Omega * x0)
-    u0 = complex(v0, Omega * x0 - S[0] / Omega)
-    # Bounds on the sums of |terms|, which bound each state's rounding errors
-    # (|I_j| <= h_j (|S_j| + |S_j+1|)/2, |J_j| <= |Delta_j|): a ramp's w grows
-    # with S while its x' and x'' do not; after a sudden load u starts at
-    # S/Omega while x and x' start at 0.
-    size = np.abs(S)
-    by_w = np.add(size[:-1], size[1:])
-    by_w *= 0.5 * h
-    by_w = _history(w0, by_w)
-    by_u = _history(u0, np.abs(jump))
-    size /= Omega                                # |S|/Omega, the gap between w and u
-    x_by_w = by_w <= by_u + size                 # x = Im w / Omega or (Im u + S/Omega)/Omega
-    v_by_w = by_w <= by_u                        # x' = Re w or Re u
-    a_by_w = by_w + size <= by_u                 # x'' = S - Omega Im w or -Omega Im u
-    reach_w = _reach(x_by_w)                     # x_by_w >= v_by_w >= a_by_w
-    reach_u = _reach(~a_by_w if acceleration else ~v_by_w)
-
-    x, v = np.empty(n), np.empty(n)
-    a = np.empty(n) if acceleration else None
-    def first(k: int, values):                  # the first k segments' values
-        return values[:k - 1] if np.ndim(values) else values
-
-    if reach_w:
-        k = reach_w
-        w = _state(w0, lambda out: _load_terms(first(k, h), Weights(*(first(k, p) for p in wt)),
-                                               S[:k], out), rotations, k, compensated)
-        np.divide(w.imag, Omega, out=x[:reach_w])
-        v[:reach_w] = w.real
-        if acceleration:
-            np.subtract(S[:reach_w], Omega * w.imag, out=a[:reach_w])
-    if reach_u:
-        k = reach_u
-        u = _state(u0, lambda out: _slope_terms(Weights(*(first(k, p) for p in wt)),
-                                                jump[:k - 1], out), rotations, k, compensated)
-        np.copyto(x[:k], (u.imag + S[:k] / Omega) / Omega, where=~x_by_w[:k])
-        np.copyto(v[:k], u.real, where=~v_by_w[:k])
-        if acceleration:
-            np.copyto(a[:k], u.imag * -Omega, where=~a_by_w[:k])
-    return SampledResponse(x, v, a)
+    def rotations(first: int, end: int) -> np.ndarray:
+        q0, q1 = first // block, (end - 1) // block + 1
+        outer = _rotation(*_phase(np.arange(q0, q1, dtype=float) * block, theta))
+        q, r = np.divmod(np.arange(first, end), block)
+        return outer[q - q0] * inner[r]
+    return rotations
 
 
 def _scalar(value: object, name: str, sign: str, what: str) -> float:
@@ -399,14 +265,19 @@ def sampled_response(t: ArrayLike, S: ArrayLike, Omega: float, x0: float = 0.0,
 def _sampled(t: np.ndarray, S: np.ndarray, Omega: float, x0: float, v0: float,
              acceleration: bool, compensated: bool) -> SampledResponse:
     h = np.diff(t)
-    since = _two_sum(t, -t[0])                 # t - t0, exactly
-    rotations = _rotation(*_phase(Omega, since))
-    if h[0] > 0 and np.all(h == h[0]):         # one step: one set of weights
-        h = float(h[0])
-        weights = Weights(*(float(w[0]) for w in segment_weights(Omega * h)))
-    else:
-        weights = segment_weights(Omega * h)
-    return _respond(S, Omega, rotations, h, weights, x0, v0, acceleration, compensated)
+    uniform = bool(h[0] > 0 and np.all(h == h[0]))
+    one = Weights(*(float(w[0]) for w in segment_weights(Omega * h[0]))) if uniform else None
+
+    def rotations(first: int, end: int) -> np.ndarray:
+        since = _two_sum(t[first:end], -t[0])    # t - t0, exactly
+        return _rotation(*_phase(Omega, since))
+
+    def segments(first: int, end: int) -> tuple:
+        if uniform:                              # one step: one set of weights
+            return float(h[0]), one
+        return h[first:end], segment_weights(Omega * h[first:end])
+    return SampledResponse(*respond(S, Omega, rotations, segments, x0, v0, acceleration,
+                                    compensated))
 
 
 def sampled_response_uniform(dt: float, S: ArrayLike, Omega: float, x0: float = 0.0,
@@ -438,5 +309,6 @@ def _uniform(dt: float, S: np.ndarray, Omega: float, x0: float, v0: float,
              acceleration: bool, compensated: bool) -> SampledResponse:
     theta = _two_product(Omega, dt)            # Omega*dt, exactly
     weights = Weights(*(float(w[0]) for w in segment_weights(theta[0])))
-    rotations = _uniform_rotations(theta, S.size)
-    return _respond(S, Omega, rotations, dt, weights, x0, v0, acceleration, compensated)
+    return SampledResponse(*respond(S, Omega, _uniform_rotations(theta, S.size),
+                                    lambda first, end: (dt, weights), x0, v0, acceleration,
+                                    compensated))
