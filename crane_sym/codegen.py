@@ -21,7 +21,7 @@ from .inplace import chain
 from .phase_table import PhaseTable
 from .printers import DoubleDoublePrinter, TernaryPrinter, printer_for, render_helper
 from .rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
-from .scalar_path import fast_path
+from .scalar_path import fast_path, literal, serves_literal
 from .symbols import TIME, SymbolTable
 from .tabulated import render_tabulated
 from .wave_sums import merge_waves
@@ -154,6 +154,7 @@ def render_function(out: Output, table: SymbolTable,
     params = "\n".join(
         f"    {e.name} : array_like\n        {e.description} [{e.unit}]"
         + {"positive": ", > 0", "nonnegative": ", >= 0"}.get(e.sign, "")
+        + f"; served from {literal(e.serves[0])} to {literal(e.serves[1])}"
         for e in entries)
     if shape is None:
         params += ("\n    out : ndarray, optional\n        float64 array of the broadcast "
@@ -185,7 +186,7 @@ def render_function(out: Output, table: SymbolTable,
     for e in entries:
         what = f"{e.description}, {e.unit}".replace('"', "'")
         lines.append(f"    {e.name:<{width}} = _checked({e.name!r}, {e.name}, "
-                     f"{e.sign!r}, {what!r})")
+                     f"{e.sign!r}, {what!r}, {serves_literal(e.serves)})")
     call = textwrap.wrap(", ".join(f"{e.name}={e.name}" for e in entries) + ")",
                          width=80, break_long_words=False, break_on_hyphens=False)
     lines.append("    shape = _broadcast(" + call[0])

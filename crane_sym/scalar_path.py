@@ -1,8 +1,9 @@
 """The scalar fast path of a generated function.
 
 A call on plain numbers (Python or NumPy floats, ints) skips the array
-machinery: its checks are plain comparisons, its arithmetic is the ``math``
-module on floats. A failed check falls through to the array path, which
+machinery: its checks are plain comparisons against the range each argument
+serves (``PhysicalSymbol.serves``), its arithmetic is the ``math`` module on
+floats. A failed check falls through to the array path, which
 raises the error that names the parameter, and so does a ``math`` error (a
 zero division, a domain error), where the array path gives what NumPy gives
 (inf, NaN). Only expressions of elementary
@@ -17,10 +18,29 @@ from typing import Sequence
 import sympy as sp
 from sympy.printing.pycode import PythonCodePrinter
 
-__all__ = ["fast_path"]
+__all__ = ["fast_path", "literal", "serves_literal"]
 
-#: What a checked argument must satisfy, as a chained comparison (1e999 is inf).
-_BOUNDS = {"positive": "0 < {} < 1e999", "nonnegative": "0 <= {} < 1e999"}
+
+def literal(value: float) -> str:
+    """The shortest source text that reads back as the double ``value``,
+    written with an exponent outside [1e-4, 1e6) (``1e11``, not
+    ``100000000000.0``); Python's own correctly rounded formatting, the same
+    on every machine."""
+    value = float(value)
+    if value == 0 or 1e-4 <= abs(value) < 1e6:
+        return repr(value)
+    for digits in range(17):
+        text = f"{value:.{digits}e}"
+        if float(text) == value:
+            mantissa, exponent = text.split("e")
+            return f"{mantissa}e{int(exponent)}"
+    return repr(value)
+
+
+def serves_literal(serves: tuple[float, float]) -> str:
+    """``(low, high)`` as source text (see :func:`literal`)."""
+    return f"({literal(serves[0])}, {literal(serves[1])})"
+
 #: Kernels that are plain arithmetic, so they run on Python floats.
 _ARITHMETIC = ("diff_of_products",)
 
@@ -66,7 +86,8 @@ def fast_path(entries: Sequence, assignments: Sequence[tuple[sp.Symbol, sp.Expr]
     plain = [f"        and (type({e.name}) in (float, int) or type({e.name}) is np.float64)"
              for e in entries]
     try:
-        clauses = [_BOUNDS.get(e.sign, "-1e999 < {} < 1e999").format(e.name) for e in entries]
+        clauses = [f"{literal(e.serves[0])} <= {e.name} <= {literal(e.serves[1])}"
+                   for e in entries]
         clauses += [f"{printer.doprint(r)} > 0" for r in requires]
     except Exception:
         return None

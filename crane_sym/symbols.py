@@ -20,6 +20,8 @@ STATE = "state"            # a component of the state vector a solver passes in
 
 _ROLES = (PARAMETER, TIME, COORDINATE, DEFINED, STATE)
 _SIGNS = ("positive", "nonnegative", "real")
+#: How far beyond a symbol's physical range its generated functions serve.
+SERVE_FACTOR = 1e6
 
 
 @dataclass(frozen=True)
@@ -43,6 +45,10 @@ class PhysicalSymbol:
         by generated code and used when sampling.
     sample_range : (float, float)
         Physical range (SI) sampled log-uniformly by the numeric check.
+    serve_range : (float, float), optional
+        Magnitudes (SI) the generated functions accept (:attr:`serves`), where
+        the physics bounds them more tightly than the default (a friction
+        coefficient, a profile angle below π/2).
     """
 
     expr: sp.Expr
@@ -52,6 +58,7 @@ class PhysicalSymbol:
     role: str = PARAMETER
     sign: str = "positive"
     sample_range: tuple[float, float] = (0.5, 2.0)
+    serve_range: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         if self.role not in _ROLES:
@@ -61,6 +68,19 @@ class PhysicalSymbol:
         lo, hi = self.sample_range
         if not 0 < lo <= hi:
             raise ValueError(f"sample_range of {self.name} must satisfy 0 < lo <= hi")
+        if self.serve_range is not None and not 0 < self.serve_range[0] <= lo <= hi \
+                <= self.serve_range[1]:
+            raise ValueError(f"serve_range of {self.name} must hold sample_range")
+
+    @property
+    def serves(self) -> tuple[float, float]:
+        """(low, high): the values (SI) a generated function accepts for this
+        symbol and returns a finite value for. ``serve_range``, or
+        ``SERVE_FACTOR`` times beyond ``sample_range`` each way; from 0 for a
+        nonnegative symbol, from −high for a real one."""
+        lo, hi = self.serve_range or (float(f"{self.sample_range[0] / SERVE_FACTOR:.6g}"),
+                                      float(f"{self.sample_range[1] * SERVE_FACTOR:.6g}"))
+        return {"positive": (lo, hi), "nonnegative": (0.0, hi)}.get(self.sign, (-hi, hi))
 
     @property
     def name(self) -> str:

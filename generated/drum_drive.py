@@ -31,36 +31,40 @@ import numpy as np
 __all__ = ['branch_effective_mass', 'drive_chain_frequency_1', 'drive_chain_frequency_2', 'running_tight_force', 'running_slack_force', 'running_drum_shaft_deflection', 'drum_torque', 'traction_margin', 'least_mu_alpha', 'pulsating_force', 'state_derivative', 'state_jacobian', 'mass_matrix', 'damping_matrix', 'stiffness_matrix', 'generalized_forces']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -115,9 +119,9 @@ def branch_effective_mass(q, L, *, out=None):
     Parameters
     ----------
     q : array_like
-        mass of one metre of the traction element [kg/m], > 0
+        mass of one metre of the traction element [kg/m], > 0; served from 5e-7 to 2e7
     L : array_like
-        length of a branch (of the span in (7)) [m], > 0
+        length of a branch (of the span in (7)) [m], > 0; served from 1e-5 to 3e9
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -129,13 +133,13 @@ def branch_effective_mass(q, L, *, out=None):
     if (out is None
             and (type(q) in (float, int) or type(q) is np.float64)
             and (type(L) in (float, int) or type(L) is np.float64)):
-        if (0 < q < 1e999 and 0 < L < 1e999):
+        if (5e-7 <= q <= 2e7 and 1e-5 <= L <= 3e9):
             try:    # a failed check or a math error: the array path decides
                 return np.float64((1/3)*L*q)
             except (ArithmeticError, ValueError):
                 pass
-    q = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
-    L = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
+    q = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m', (5e-7, 2e7))
+    L = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m', (1e-5, 3e9))
     shape = _broadcast(q=q, L=L)
     return _into(out, shape, (1/3)*L*q)
 
@@ -146,15 +150,15 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -169,8 +173,8 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
             and (type(I3) in (float, int) or type(I3) is np.float64)
             and (type(C1) in (float, int) or type(C1) is np.float64)
             and (type(C2) in (float, int) or type(C2) is np.float64)):
-        if (0 < I1 < 1e999 and 0 < I2 < 1e999 and 0 < I3 < 1e999 and 0 < C1 < 1e999
-                and 0 < C2 < 1e999):
+        if (1e-6 <= I1 <= 1e8 and 5e-7 <= I2 <= 5e7 and 5e-6 <= I3 <= 5e8 and 0.001 <= C1 <= 1e12
+                and 0.001 <= C2 <= 1e12):
             try:    # a failed check or a math error: the array path decides
                 x0 = I1 + I2
                 x1 = C1*x0/I1
@@ -178,11 +182,11 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
                 return np.float64(1.4142135623730951*math.sqrt(C1)*math.sqrt(C2)*math.sqrt(I3 + x0)/(math.sqrt(I1)*math.sqrt(I3)*math.sqrt(x1 + x2 + math.sqrt(4*C1*C2 + (x1 - x2)**2))))
             except (ArithmeticError, ValueError):
                 pass
-    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
-    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
-    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
-    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
-    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
+    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
+    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
+    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
+    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
     shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = I1 + I2
     x1 = C1*x0/I1
@@ -196,15 +200,15 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -219,19 +223,19 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
             and (type(I3) in (float, int) or type(I3) is np.float64)
             and (type(C1) in (float, int) or type(C1) is np.float64)
             and (type(C2) in (float, int) or type(C2) is np.float64)):
-        if (0 < I1 < 1e999 and 0 < I2 < 1e999 and 0 < I3 < 1e999 and 0 < C1 < 1e999
-                and 0 < C2 < 1e999):
+        if (1e-6 <= I1 <= 1e8 and 5e-7 <= I2 <= 5e7 and 5e-6 <= I3 <= 5e8 and 0.001 <= C1 <= 1e12
+                and 0.001 <= C2 <= 1e12):
             try:    # a failed check or a math error: the array path decides
                 x0 = C1*(I1 + I2)/I1
                 x1 = C2*(I2 + I3)/I3
                 return np.float64(0.7071067811865476*math.sqrt(x0 + x1 + math.sqrt(4*C1*C2 + (x0 - x1)**2))/math.sqrt(I2))
             except (ArithmeticError, ValueError):
                 pass
-    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
-    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
-    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
-    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
-    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
+    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
+    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
+    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
+    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
+    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
     shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = C1*(I1 + I2)/I1
     x1 = C2*(I2 + I3)/I3
@@ -244,17 +248,17 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     Parameters
     ----------
     M0 : array_like
-        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0; served from 1e-5 to 1e11
     D : array_like
-        diameter of the driving drum, D = 2r [m], > 0
+        diameter of the driving drum, D = 2r [m], > 0; served from 2e-7 to 4e6
     F0 : array_like
-        pretension of both branches at rest [N], > 0
+        pretension of both branches at rest [N], > 0; served from 0.001 to 1e12
     C_t : array_like
-        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0; served from 0.001 to 1e13
     C_z : array_like
-        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -270,8 +274,8 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
             and (type(C_t) in (float, int) or type(C_t) is np.float64)
             and (type(C_z) in (float, int) or type(C_z) is np.float64)
             and (type(C_y) in (float, int) or type(C_y) is np.float64)):
-        if (0 < M0 < 1e999 and 0 < D < 1e999 and 0 < F0 < 1e999 and 0 < C_t < 1e999
-                and 0 < C_z < 1e999 and 0 < C_y < 1e999):
+        if (1e-5 <= M0 <= 1e11 and 2e-7 <= D <= 4e6 and 0.001 <= F0 <= 1e12
+                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.1 <= C_y <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 x0 = C_t*C_y
                 x1 = C_y*C_z
@@ -280,12 +284,12 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
                 return np.float64((2*M0*x0 + M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2)))
             except (ArithmeticError, ValueError):
                 pass
-    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
-    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
-    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
-    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
-    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m', (1e-5, 1e11))
+    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m', (2e-7, 4e6))
+    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
     shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
@@ -300,17 +304,17 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     Parameters
     ----------
     M0 : array_like
-        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0; served from 1e-5 to 1e11
     D : array_like
-        diameter of the driving drum, D = 2r [m], > 0
+        diameter of the driving drum, D = 2r [m], > 0; served from 2e-7 to 4e6
     F0 : array_like
-        pretension of both branches at rest [N], > 0
+        pretension of both branches at rest [N], > 0; served from 0.001 to 1e12
     C_t : array_like
-        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0; served from 0.001 to 1e13
     C_z : array_like
-        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -326,8 +330,8 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
             and (type(C_t) in (float, int) or type(C_t) is np.float64)
             and (type(C_z) in (float, int) or type(C_z) is np.float64)
             and (type(C_y) in (float, int) or type(C_y) is np.float64)):
-        if (0 < M0 < 1e999 and 0 < D < 1e999 and 0 < F0 < 1e999 and 0 < C_t < 1e999
-                and 0 < C_z < 1e999 and 0 < C_y < 1e999):
+        if (1e-5 <= M0 <= 1e11 and 2e-7 <= D <= 4e6 and 0.001 <= F0 <= 1e12
+                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.1 <= C_y <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 x0 = C_t*C_y
                 x1 = C_y*C_z
@@ -336,12 +340,12 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
                 return np.float64((-2*M0*x1 - M0*x2 + x0*x3 + x1*x3)/(D*(x0 + x1 + x2)))
             except (ArithmeticError, ValueError):
                 pass
-    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
-    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
-    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
-    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
-    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m', (1e-5, 1e11))
+    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m', (2e-7, 4e6))
+    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
     shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
@@ -356,17 +360,17 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
     Parameters
     ----------
     M0 : array_like
-        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0; served from 1e-5 to 1e11
     D : array_like
-        diameter of the driving drum, D = 2r [m], > 0
+        diameter of the driving drum, D = 2r [m], > 0; served from 2e-7 to 4e6
     F0 : array_like
-        pretension of both branches at rest [N], > 0
+        pretension of both branches at rest [N], > 0; served from 0.001 to 1e12
     C_t : array_like
-        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0; served from 0.001 to 1e13
     C_z : array_like
-        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -382,19 +386,19 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
             and (type(C_t) in (float, int) or type(C_t) is np.float64)
             and (type(C_z) in (float, int) or type(C_z) is np.float64)
             and (type(C_y) in (float, int) or type(C_y) is np.float64)):
-        if (0 < M0 < 1e999 and 0 < D < 1e999 and 0 < F0 < 1e999 and 0 < C_t < 1e999
-                and 0 < C_z < 1e999 and 0 < C_y < 1e999):
+        if (1e-5 <= M0 <= 1e11 and 2e-7 <= D <= 4e6 and 0.001 <= F0 <= 1e12
+                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.1 <= C_y <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 x0 = D*F0
                 return np.float64(2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z)))
             except (ArithmeticError, ValueError):
                 pass
-    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
-    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
-    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
-    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
-    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
+    M0  = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m', (1e-5, 1e11))
+    D   = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m', (2e-7, 4e6))
+    F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
     shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = D*F0
     return _into(out, shape, 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z)))
@@ -406,11 +410,11 @@ def drum_torque(F1, F2, D, *, out=None):
     Parameters
     ----------
     F1 : array_like
-        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0
+        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0; served from 0.001 to 1e12
     F2 : array_like
-        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 0.001 to 1e12
     D : array_like
-        diameter of the driving drum, D = 2r [m], > 0
+        diameter of the driving drum, D = 2r [m], > 0; served from 2e-7 to 4e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -423,14 +427,14 @@ def drum_torque(F1, F2, D, *, out=None):
             and (type(F1) in (float, int) or type(F1) is np.float64)
             and (type(F2) in (float, int) or type(F2) is np.float64)
             and (type(D) in (float, int) or type(D) is np.float64)):
-        if (0 < F1 < 1e999 and 0 < F2 < 1e999 and 0 < D < 1e999):
+        if (0.001 <= F1 <= 1e12 and 0.001 <= F2 <= 1e12 and 2e-7 <= D <= 4e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64((1/2)*D*(F1 - F2))
             except (ArithmeticError, ValueError):
                 pass
-    F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
-    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
-    D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m')
+    F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N', (0.001, 1e12))
+    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (0.001, 1e12))
+    D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m', (2e-7, 4e6))
     shape = _broadcast(F1=F1, F2=F2, D=D)
     return _into(out, shape, (1/2)*D*(F1 - F2))
 
@@ -441,13 +445,13 @@ def traction_margin(F1, F2, mu, alpha, *, out=None):
     Parameters
     ----------
     F1 : array_like
-        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0
+        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0; served from 0.001 to 1e12
     F2 : array_like
-        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 0.001 to 1e12
     mu : array_like
-        friction coefficient between element and drum [1], > 0
+        friction coefficient between element and drum [1], > 0; served from 5e-8 to 2.0
     alpha : array_like
-        wrap angle of the element on the drum [rad], > 0
+        wrap angle of the element on the drum [rad], > 0; served from 5e-7 to 300.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -461,15 +465,16 @@ def traction_margin(F1, F2, mu, alpha, *, out=None):
             and (type(F2) in (float, int) or type(F2) is np.float64)
             and (type(mu) in (float, int) or type(mu) is np.float64)
             and (type(alpha) in (float, int) or type(alpha) is np.float64)):
-        if (0 < F1 < 1e999 and 0 < F2 < 1e999 and 0 < mu < 1e999 and 0 < alpha < 1e999):
+        if (0.001 <= F1 <= 1e12 and 0.001 <= F2 <= 1e12 and 5e-8 <= mu <= 2.0
+                and 5e-7 <= alpha <= 300.0):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-5/4*F1/F2 + math.exp(alpha*mu))
             except (ArithmeticError, ValueError):
                 pass
-    F1    = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
-    F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
-    mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1')
-    alpha = _checked('alpha', alpha, 'positive', 'wrap angle of the element on the drum, rad')
+    F1    = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N', (0.001, 1e12))
+    F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (0.001, 1e12))
+    mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1', (5e-8, 2.0))
+    alpha = _checked('alpha', alpha, 'positive', 'wrap angle of the element on the drum, rad', (5e-7, 300.0))
     shape = _broadcast(F1=F1, F2=F2, mu=mu, alpha=alpha)
     return _into(out, shape, -5/4*F1/F2 + np.exp(alpha*mu))
 
@@ -480,9 +485,9 @@ def least_mu_alpha(F1, F2, *, out=None):
     Parameters
     ----------
     F1 : array_like
-        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0
+        force in the tight branch (F0 + C_t*e1 in the model) [N], > 0; served from 0.001 to 1e12
     F2 : array_like
-        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 0.001 to 1e12
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -494,13 +499,13 @@ def least_mu_alpha(F1, F2, *, out=None):
     if (out is None
             and (type(F1) in (float, int) or type(F1) is np.float64)
             and (type(F2) in (float, int) or type(F2) is np.float64)):
-        if (0 < F1 < 1e999 and 0 < F2 < 1e999):
+        if (0.001 <= F1 <= 1e12 and 0.001 <= F2 <= 1e12):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(math.log((5/4)*F1/F2))
             except (ArithmeticError, ValueError):
                 pass
-    F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N')
-    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N')
+    F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N', (0.001, 1e12))
+    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (0.001, 1e12))
     shape = _broadcast(F1=F1, F2=F2)
     return _into(out, shape, np.log((5/4)*F1/F2))
 
@@ -511,25 +516,25 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e7
     F1_t : array_like
-        amplitude F_1(t) of the pulsating load (21) [N], > 0
+        amplitude F_1(t) of the pulsating load (21) [N], > 0; served from 0.0001 to 1e11
     F2_t : array_like
-        amplitude F_2(t) of the pulsating load (21) [N], > 0
+        amplitude F_2(t) of the pulsating load (21) [N], > 0; served from 0.0001 to 1e11
     F3_t : array_like
-        amplitude F_3(t) of the pulsating load (21) [N], > 0
+        amplitude F_3(t) of the pulsating load (21) [N], > 0; served from 0.0001 to 1e11
     F4_t : array_like
-        amplitude F_4(t) of the pulsating load (21) [N], > 0
+        amplitude F_4(t) of the pulsating load (21) [N], > 0; served from 0.0001 to 1e11
     K1 : array_like
-        constant K_1 of (21) (pretension at the load) [N], > 0
+        constant K_1 of (21) (pretension at the load) [N], > 0; served from 0.0001 to 1e11
     K2 : array_like
-        constant K_2 of (21) (pretension at the load) [N], > 0
+        constant K_2 of (21) (pretension at the load) [N], > 0; served from 0.0001 to 1e11
     K3 : array_like
-        constant K_3 of (21) (pretension at the load) [N], > 0
+        constant K_3 of (21) (pretension at the load) [N], > 0; served from 0.0001 to 1e11
     K4 : array_like
-        constant K_4 of (21) (pretension at the load) [N], > 0
+        constant K_4 of (21) (pretension at the load) [N], > 0; served from 0.0001 to 1e11
     t_3 : array_like
-        stop time t_3 of the transporter in (21) [s], > 0
+        stop time t_3 of the transporter in (21) [s], > 0; served from 5e-7 to 3e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -549,9 +554,10 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
             and (type(K3) in (float, int) or type(K3) is np.float64)
             and (type(K4) in (float, int) or type(K4) is np.float64)
             and (type(t_3) in (float, int) or type(t_3) is np.float64)):
-        if (0 <= t < 1e999 and 0 < F1_t < 1e999 and 0 < F2_t < 1e999 and 0 < F3_t < 1e999
-                and 0 < F4_t < 1e999 and 0 < K1 < 1e999 and 0 < K2 < 1e999 and 0 < K3 < 1e999
-                and 0 < K4 < 1e999 and 0 < t_3 < 1e999):
+        if (0.0 <= t <= 2e7 and 0.0001 <= F1_t <= 1e11 and 0.0001 <= F2_t <= 1e11
+                and 0.0001 <= F3_t <= 1e11 and 0.0001 <= F4_t <= 1e11 and 0.0001 <= K1 <= 1e11
+                and 0.0001 <= K2 <= 1e11 and 0.0001 <= K3 <= 1e11 and 0.0001 <= K4 <= 1e11
+                and 5e-7 <= t_3 <= 3e7):
             try:    # a failed check or a math error: the array path decides
                 k0 = 3.141592653589793/t_3
                 x0 = math.sin(k0*t)
@@ -563,16 +569,16 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
                 return np.float64(k3*x0 + k4*x0 + k5 - 1/4*abs(F2_t*x0 + k1) - 1/4*abs(F4_t*x0 + k2))
             except (ArithmeticError, ValueError):
                 pass
-    t    = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    F1_t = _checked('F1_t', F1_t, 'positive', 'amplitude F_1(t) of the pulsating load (21), N')
-    F2_t = _checked('F2_t', F2_t, 'positive', 'amplitude F_2(t) of the pulsating load (21), N')
-    F3_t = _checked('F3_t', F3_t, 'positive', 'amplitude F_3(t) of the pulsating load (21), N')
-    F4_t = _checked('F4_t', F4_t, 'positive', 'amplitude F_4(t) of the pulsating load (21), N')
-    K1   = _checked('K1', K1, 'positive', 'constant K_1 of (21) (pretension at the load), N')
-    K2   = _checked('K2', K2, 'positive', 'constant K_2 of (21) (pretension at the load), N')
-    K3   = _checked('K3', K3, 'positive', 'constant K_3 of (21) (pretension at the load), N')
-    K4   = _checked('K4', K4, 'positive', 'constant K_4 of (21) (pretension at the load), N')
-    t_3  = _checked('t_3', t_3, 'positive', 'stop time t_3 of the transporter in (21), s')
+    t    = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e7))
+    F1_t = _checked('F1_t', F1_t, 'positive', 'amplitude F_1(t) of the pulsating load (21), N', (0.0001, 1e11))
+    F2_t = _checked('F2_t', F2_t, 'positive', 'amplitude F_2(t) of the pulsating load (21), N', (0.0001, 1e11))
+    F3_t = _checked('F3_t', F3_t, 'positive', 'amplitude F_3(t) of the pulsating load (21), N', (0.0001, 1e11))
+    F4_t = _checked('F4_t', F4_t, 'positive', 'amplitude F_4(t) of the pulsating load (21), N', (0.0001, 1e11))
+    K1   = _checked('K1', K1, 'positive', 'constant K_1 of (21) (pretension at the load), N', (0.0001, 1e11))
+    K2   = _checked('K2', K2, 'positive', 'constant K_2 of (21) (pretension at the load), N', (0.0001, 1e11))
+    K3   = _checked('K3', K3, 'positive', 'constant K_3 of (21) (pretension at the load), N', (0.0001, 1e11))
+    K4   = _checked('K4', K4, 'positive', 'constant K_4 of (21) (pretension at the load), N', (0.0001, 1e11))
+    t_3  = _checked('t_3', t_3, 'positive', 'stop time t_3 of the transporter in (21), s', (5e-7, 3e7))
     shape = _broadcast(t=t, F1_t=F1_t, F2_t=F2_t, F3_t=F3_t, F4_t=F4_t, K1=K1, K2=K2, K3=K3, K4=K4,
                        t_3=t_3)
     k0 = 3.141592653589793/t_3
@@ -609,104 +615,104 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
     nu1 : array_like
-        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0
+        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     nu2 : array_like
-        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0
+        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     m3 : array_like
-        mass of the drum with its shaft's share (moves with y) [kg], > 0
+        mass of the drum with its shaft's share (moves with y) [kg], > 0; served from 5e-5 to 5e9
     m_L : array_like
-        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0
+        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0; served from 0.0001 to 1e11
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
     nu_y : array_like
-        resistance coefficient of the drum-shaft bending [N*s/m], >= 0
+        resistance coefficient of the drum-shaft bending [N*s/m], >= 0; served from 0.0 to 1e11
     C_t : array_like
-        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0; served from 0.001 to 1e13
     C_z : array_like
-        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     nu_z : array_like
-        resistance coefficient of the slack branch's stretching [N*s/m], >= 0
+        resistance coefficient of the slack branch's stretching [N*s/m], >= 0; served from 0.0 to 1e10
     nu_t : array_like
-        running resistance of the element per unit speed [N*s/m], >= 0
+        running resistance of the element per unit speed [N*s/m], >= 0; served from 0.0 to 1e10
     q : array_like
-        mass of one metre of the traction element [kg/m], > 0
+        mass of one metre of the traction element [kg/m], > 0; served from 5e-7 to 2e7
     L : array_like
-        length of a branch (of the span in (7)) [m], > 0
+        length of a branch (of the span in (7)) [m], > 0; served from 1e-5 to 3e9
     r : array_like
-        radius of the driving drum [m], > 0
+        radius of the driving drum [m], > 0; served from 1e-7 to 2e6
     M0 : array_like
-        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0; served from 1e-5 to 1e11
     F0 : array_like
-        pretension of both branches at rest [N], > 0
+        pretension of both branches at rest [N], > 0; served from 0.001 to 1e12
     W : array_like
-        resistance of the loads to the motion of the run [N]
+        resistance of the loads to the motion of the run [N]; served from -1e11 to 1e11
     s1 : array_like
-        state 1: φ1 [rad]
+        state 1: φ1 [rad]; served from -2e6 to 2e6
     s2 : array_like
-        state 2: φ2 [rad]
+        state 2: φ2 [rad]; served from -2e6 to 2e6
     s3 : array_like
-        state 3: φ3 [rad]
+        state 3: φ3 [rad]; served from -2e6 to 2e6
     s4 : array_like
-        state 4: y [m]
+        state 4: y [m]; served from -2e6 to 2e6
     s5 : array_like
-        state 5: z [m]
+        state 5: z [m]; served from -2e6 to 2e6
     s6 : array_like
-        state 6: dφ1/dt [rad/s]
+        state 6: dφ1/dt [rad/s]; served from -2e6 to 2e6
     s7 : array_like
-        state 7: dφ2/dt [rad/s]
+        state 7: dφ2/dt [rad/s]; served from -2e6 to 2e6
     s8 : array_like
-        state 8: dφ3/dt [rad/s]
+        state 8: dφ3/dt [rad/s]; served from -2e6 to 2e6
     s9 : array_like
-        state 9: dy/dt [m/s]
+        state 9: dy/dt [m/s]; served from -2e6 to 2e6
     s10 : array_like
-        state 10: dz/dt [m/s]
+        state 10: dz/dt [m/s]; served from -2e6 to 2e6
 
     Returns
     -------
     ndarray
         [SI], shape (10, 1) followed by the broadcast shape of the arguments.
     """
-    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
-    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
-    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
-    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
-    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad')
-    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad')
-    m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
-    m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
-    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m')
-    C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
-    C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
-    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
-    q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
-    L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
-    r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
-    M0   = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
-    F0   = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
-    W    = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N')
-    s1   = _checked('s1', s1, 'real', 'state 1: φ1, rad')
-    s2   = _checked('s2', s2, 'real', 'state 2: φ2, rad')
-    s3   = _checked('s3', s3, 'real', 'state 3: φ3, rad')
-    s4   = _checked('s4', s4, 'real', 'state 4: y, m')
-    s5   = _checked('s5', s5, 'real', 'state 5: z, m')
-    s6   = _checked('s6', s6, 'real', 'state 6: dφ1/dt, rad/s')
-    s7   = _checked('s7', s7, 'real', 'state 7: dφ2/dt, rad/s')
-    s8   = _checked('s8', s8, 'real', 'state 8: dφ3/dt, rad/s')
-    s9   = _checked('s9', s9, 'real', 'state 9: dy/dt, m/s')
-    s10  = _checked('s10', s10, 'real', 'state 10: dz/dt, m/s')
+    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
+    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
+    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
+    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
+    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
+    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad', (0.0, 1e9))
+    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad', (0.0, 1e9))
+    m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg", (5e-5, 5e9))
+    m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg', (0.0001, 1e11))
+    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m', (0.0, 1e11))
+    C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
+    C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
+    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m", (0.0, 1e10))
+    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m', (0.0, 1e10))
+    q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m', (5e-7, 2e7))
+    L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m', (1e-5, 3e9))
+    r    = _checked('r', r, 'positive', 'radius of the driving drum, m', (1e-7, 2e6))
+    M0   = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m', (1e-5, 1e11))
+    F0   = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
+    W    = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N', (-1e11, 1e11))
+    s1   = _checked('s1', s1, 'real', 'state 1: φ1, rad', (-2e6, 2e6))
+    s2   = _checked('s2', s2, 'real', 'state 2: φ2, rad', (-2e6, 2e6))
+    s3   = _checked('s3', s3, 'real', 'state 3: φ3, rad', (-2e6, 2e6))
+    s4   = _checked('s4', s4, 'real', 'state 4: y, m', (-2e6, 2e6))
+    s5   = _checked('s5', s5, 'real', 'state 5: z, m', (-2e6, 2e6))
+    s6   = _checked('s6', s6, 'real', 'state 6: dφ1/dt, rad/s', (-2e6, 2e6))
+    s7   = _checked('s7', s7, 'real', 'state 7: dφ2/dt, rad/s', (-2e6, 2e6))
+    s8   = _checked('s8', s8, 'real', 'state 8: dφ3/dt, rad/s', (-2e6, 2e6))
+    s9   = _checked('s9', s9, 'real', 'state 9: dy/dt, m/s', (-2e6, 2e6))
+    s10  = _checked('s10', s10, 'real', 'state 10: dz/dt, m/s', (-2e6, 2e6))
     shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
                        nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r, M0=M0, F0=F0,
                        W=W, s1=s1, s2=s2, s3=s3, s4=s4, s5=s5, s6=s6, s7=s7, s8=s8, s9=s9, s10=s10)
@@ -740,65 +746,65 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
     nu1 : array_like
-        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0
+        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     nu2 : array_like
-        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0
+        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     m3 : array_like
-        mass of the drum with its shaft's share (moves with y) [kg], > 0
+        mass of the drum with its shaft's share (moves with y) [kg], > 0; served from 5e-5 to 5e9
     m_L : array_like
-        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0
+        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0; served from 0.0001 to 1e11
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
     nu_y : array_like
-        resistance coefficient of the drum-shaft bending [N*s/m], >= 0
+        resistance coefficient of the drum-shaft bending [N*s/m], >= 0; served from 0.0 to 1e11
     C_t : array_like
-        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0; served from 0.001 to 1e13
     C_z : array_like
-        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     nu_z : array_like
-        resistance coefficient of the slack branch's stretching [N*s/m], >= 0
+        resistance coefficient of the slack branch's stretching [N*s/m], >= 0; served from 0.0 to 1e10
     nu_t : array_like
-        running resistance of the element per unit speed [N*s/m], >= 0
+        running resistance of the element per unit speed [N*s/m], >= 0; served from 0.0 to 1e10
     q : array_like
-        mass of one metre of the traction element [kg/m], > 0
+        mass of one metre of the traction element [kg/m], > 0; served from 5e-7 to 2e7
     L : array_like
-        length of a branch (of the span in (7)) [m], > 0
+        length of a branch (of the span in (7)) [m], > 0; served from 1e-5 to 3e9
     r : array_like
-        radius of the driving drum [m], > 0
+        radius of the driving drum [m], > 0; served from 1e-7 to 2e6
 
     Returns
     -------
     ndarray
         [SI], shape (10, 10) followed by the broadcast shape of the arguments.
     """
-    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
-    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
-    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
-    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
-    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad')
-    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad')
-    m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
-    m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
-    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m')
-    C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
-    C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
-    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
-    q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
-    L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
-    r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
+    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
+    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
+    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
+    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
+    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad', (0.0, 1e9))
+    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad', (0.0, 1e9))
+    m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg", (5e-5, 5e9))
+    m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg', (0.0001, 1e11))
+    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m', (0.0, 1e11))
+    C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
+    C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
+    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m", (0.0, 1e10))
+    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m', (0.0, 1e10))
+    q    = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m', (5e-7, 2e7))
+    L    = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m', (1e-5, 3e9))
+    r    = _checked('r', r, 'positive', 'radius of the driving drum, m', (1e-7, 2e6))
     shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2, nu1=nu1, nu2=nu2, m3=m3, m_L=m_L, C_y=C_y,
                        nu_y=nu_y, C_t=C_t, C_z=C_z, nu_z=nu_z, nu_t=nu_t, q=q, L=L, r=r)
     x0 = 1/(I1)
@@ -842,35 +848,35 @@ def mass_matrix(I1, I2, I3, m3, m_L, q, L, r):
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
     m3 : array_like
-        mass of the drum with its shaft's share (moves with y) [kg], > 0
+        mass of the drum with its shaft's share (moves with y) [kg], > 0; served from 5e-5 to 5e9
     m_L : array_like
-        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0
+        mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0; served from 0.0001 to 1e11
     q : array_like
-        mass of one metre of the traction element [kg/m], > 0
+        mass of one metre of the traction element [kg/m], > 0; served from 5e-7 to 2e7
     L : array_like
-        length of a branch (of the span in (7)) [m], > 0
+        length of a branch (of the span in (7)) [m], > 0; served from 1e-5 to 3e9
     r : array_like
-        radius of the driving drum [m], > 0
+        radius of the driving drum [m], > 0; served from 1e-7 to 2e6
 
     Returns
     -------
     ndarray
         [SI], shape (5, 5) followed by the broadcast shape of the arguments.
     """
-    I1  = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2')
-    I2  = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2')
-    I3  = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2')
-    m3  = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg")
-    m_L = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg')
-    q   = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m')
-    L   = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m')
-    r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    I1  = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
+    I2  = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
+    I3  = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
+    m3  = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg", (5e-5, 5e9))
+    m_L = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg', (0.0001, 1e11))
+    q   = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m', (5e-7, 2e7))
+    L   = _checked('L', L, 'positive', 'length of a branch (of the span in (7)), m', (1e-5, 3e9))
+    r   = _checked('r', r, 'positive', 'radius of the driving drum, m', (1e-7, 2e6))
     shape = _broadcast(I1=I1, I2=I2, I3=I3, m3=m3, m_L=m_L, q=q, L=L, r=r)
     x0 = L*q
     x1 = (2/3)*x0
@@ -884,29 +890,29 @@ def damping_matrix(nu1, nu2, nu_y, nu_z, nu_t, r):
     Parameters
     ----------
     nu1 : array_like
-        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0
+        resistance coefficient of the C1 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     nu2 : array_like
-        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0
+        resistance coefficient of the C2 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     nu_y : array_like
-        resistance coefficient of the drum-shaft bending [N*s/m], >= 0
+        resistance coefficient of the drum-shaft bending [N*s/m], >= 0; served from 0.0 to 1e11
     nu_z : array_like
-        resistance coefficient of the slack branch's stretching [N*s/m], >= 0
+        resistance coefficient of the slack branch's stretching [N*s/m], >= 0; served from 0.0 to 1e10
     nu_t : array_like
-        running resistance of the element per unit speed [N*s/m], >= 0
+        running resistance of the element per unit speed [N*s/m], >= 0; served from 0.0 to 1e10
     r : array_like
-        radius of the driving drum [m], > 0
+        radius of the driving drum [m], > 0; served from 1e-7 to 2e6
 
     Returns
     -------
     ndarray
         [SI], shape (5, 5) followed by the broadcast shape of the arguments.
     """
-    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad')
-    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad')
-    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m')
-    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m")
-    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m')
-    r    = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad', (0.0, 1e9))
+    nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad', (0.0, 1e9))
+    nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m', (0.0, 1e11))
+    nu_z = _checked('nu_z', nu_z, 'nonnegative', "resistance coefficient of the slack branch's stretching, N*s/m", (0.0, 1e10))
+    nu_t = _checked('nu_t', nu_t, 'nonnegative', 'running resistance of the element per unit speed, N*s/m', (0.0, 1e10))
+    r    = _checked('r', r, 'positive', 'radius of the driving drum, m', (1e-7, 2e6))
     shape = _broadcast(nu1=nu1, nu2=nu2, nu_y=nu_y, nu_z=nu_z, nu_t=nu_t, r=r)
     x0 = -nu1
     x1 = -nu2
@@ -922,29 +928,29 @@ def stiffness_matrix(C1, C2, C_y, C_t, C_z, r):
     Parameters
     ----------
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
     C_t : array_like
-        longitudinal stiffness of the tight (incoming) branch [N/m], > 0
+        longitudinal stiffness of the tight (incoming) branch [N/m], > 0; served from 0.001 to 1e13
     C_z : array_like
-        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0
+        longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     r : array_like
-        radius of the driving drum [m], > 0
+        radius of the driving drum [m], > 0; served from 1e-7 to 2e6
 
     Returns
     -------
     ndarray
         [SI], shape (5, 5) followed by the broadcast shape of the arguments.
     """
-    C1  = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad')
-    C2  = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad')
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m')
-    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m')
-    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m')
-    r   = _checked('r', r, 'positive', 'radius of the driving drum, m')
+    C1  = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
+    C2  = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
+    C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
+    r   = _checked('r', r, 'positive', 'radius of the driving drum, m', (1e-7, 2e6))
     shape = _broadcast(C1=C1, C2=C2, C_y=C_y, C_t=C_t, C_z=C_z, r=r)
     x0 = -C1
     x1 = -C2
@@ -962,19 +968,19 @@ def generalized_forces(M0, F0, W):
     Parameters
     ----------
     M0 : array_like
-        driving torque of the motor, reduced to the drum shaft [N*m], > 0
+        driving torque of the motor, reduced to the drum shaft [N*m], > 0; served from 1e-5 to 1e11
     F0 : array_like
-        pretension of both branches at rest [N], > 0
+        pretension of both branches at rest [N], > 0; served from 0.001 to 1e12
     W : array_like
-        resistance of the loads to the motion of the run [N]
+        resistance of the loads to the motion of the run [N]; served from -1e11 to 1e11
 
     Returns
     -------
     ndarray
         [SI], shape (5, 1) followed by the broadcast shape of the arguments.
     """
-    M0 = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m')
-    F0 = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N')
-    W  = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N')
+    M0 = _checked('M0', M0, 'positive', 'driving torque of the motor, reduced to the drum shaft, N*m', (1e-5, 1e11))
+    F0 = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
+    W  = _checked('W', W, 'real', 'resistance of the loads to the motion of the run, N', (-1e11, 1e11))
     shape = _broadcast(M0=M0, F0=F0, W=W)
     return _matrix((5, 1), [M0, 0, 0, 2*F0, -W])

@@ -29,36 +29,40 @@ import numpy as np
 __all__ = ['relative_gearbox_torque_hoisting', 'relative_gearbox_torque_lowering', 'peak_relative_gearbox_torque_hoisting', 'peak_relative_gearbox_torque_lowering', 'service_brake_factor_hoisting', 'service_brake_factor_lowering', 'safety_brake_factor', 'elastic_gearbox_torque_no_backlash', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'rigid_hook_speed_hoisting', 'rigid_stopping_time_hoisting', 'rigid_hook_speed_lowering', 'rigid_stopping_time_lowering']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -93,6 +97,13 @@ def _into(out, shape, result):
     out = _out(out, shape)
     np.copyto(out, result)
     return out
+
+
+def _required(value, what):
+    """ValueError unless ``value`` > 0 at every point: a condition between
+    arguments (``what``) without which the formula has no real value."""
+    if not np.all(np.asarray(value) > 0):
+        raise ValueError(f"the arguments must satisfy {what}")
 
 
 def _selector(mask):
@@ -160,11 +171,11 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     Parameters
     ----------
     MF : array_like
-        inertia factor J1/J [1], >= 0
+        inertia factor J1/J [1], >= 0; served from 0.0 to 2e6
     LF : array_like
-        load factor M_L/M_st [1], > 0
+        load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -177,14 +188,14 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
             and (type(MF) in (float, int) or type(MF) is np.float64)
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
-        if (0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+        if (0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6 and 5e-7 <= BF_SB <= 2e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(MF*(BF_SB + LF))
             except (ArithmeticError, ValueError):
                 pass
-    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
-    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
     shape = _broadcast(MF=MF, LF=LF, BF_SB=BF_SB)
     return _into(out, shape, MF*(BF_SB + LF))
 
@@ -195,11 +206,11 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB, *, out=None):
     Parameters
     ----------
     MF : array_like
-        inertia factor J1/J [1], >= 0
+        inertia factor J1/J [1], >= 0; served from 0.0 to 2e6
     LF : array_like
-        load factor M_L/M_st [1], > 0
+        load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -212,14 +223,14 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB, *, out=None):
             and (type(MF) in (float, int) or type(MF) is np.float64)
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
-        if (0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+        if (0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6 and 5e-7 <= BF_SB <= 2e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-MF*(BF_SB - LF))
             except (ArithmeticError, ValueError):
                 pass
-    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
-    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
     shape = _broadcast(MF=MF, LF=LF, BF_SB=BF_SB)
     return _into(out, shape, -MF*(BF_SB - LF))
 
@@ -230,13 +241,13 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB, *, out=None):
     Parameters
     ----------
     phi5 : array_like
-        dynamic factor φ5 of EN 13001-2 [1], > 0
+        dynamic factor φ5 of EN 13001-2 [1], > 0; served from 1e-6 to 2e6
     MF : array_like
-        inertia factor J1/J [1], >= 0
+        inertia factor J1/J [1], >= 0; served from 0.0 to 2e6
     LF : array_like
-        load factor M_L/M_st [1], > 0
+        load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -250,16 +261,17 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB, *, out=None):
             and (type(MF) in (float, int) or type(MF) is np.float64)
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
-        if (0 < phi5 < 1e999 and 0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+        if (1e-6 <= phi5 <= 2e6 and 0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6
+                and 5e-7 <= BF_SB <= 2e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = LF*phi5
                 return np.float64(BF_SB*MF*phi5 + LF + MF*x0 - x0)
             except (ArithmeticError, ValueError):
                 pass
-    phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
-    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
-    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1', (1e-6, 2e6))
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
     shape = _broadcast(phi5=phi5, MF=MF, LF=LF, BF_SB=BF_SB)
     x0 = LF*phi5
     return _into(out, shape, BF_SB*MF*phi5 + LF + MF*x0 - x0)
@@ -271,13 +283,13 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB, *, out=None):
     Parameters
     ----------
     phi5 : array_like
-        dynamic factor φ5 of EN 13001-2 [1], > 0
+        dynamic factor φ5 of EN 13001-2 [1], > 0; served from 1e-6 to 2e6
     MF : array_like
-        inertia factor J1/J [1], >= 0
+        inertia factor J1/J [1], >= 0; served from 0.0 to 2e6
     LF : array_like
-        load factor M_L/M_st [1], > 0
+        load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -291,15 +303,16 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB, *, out=None):
             and (type(MF) in (float, int) or type(MF) is np.float64)
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
-        if (0 < phi5 < 1e999 and 0 <= MF < 1e999 and 0 < LF < 1e999 and 0 < BF_SB < 1e999):
+        if (1e-6 <= phi5 <= 2e6 and 0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6
+                and 5e-7 <= BF_SB <= 2e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF)
             except (ArithmeticError, ValueError):
                 pass
-    phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1')
-    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1')
-    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1')
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1')
+    phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1', (1e-6, 2e6))
+    MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
+    LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
     shape = _broadcast(phi5=phi5, MF=MF, LF=LF, BF_SB=BF_SB)
     return _into(out, shape, -BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF)
 
@@ -310,27 +323,27 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     Parameters
     ----------
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     m_r : array_like
-        rated payload (Table 1: 52 t) [kg], > 0
+        rated payload (Table 1: 52 t) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     omega1 : array_like
-        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0; served from 1e-5 to 4e8
     d_t : array_like
-        braking time [s], > 0
+        braking time [s], > 0; served from 1e-7 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -351,25 +364,26 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
             and (type(g) in (float, int) or type(g) is np.float64)
             and (type(omega1) in (float, int) or type(omega1) is np.float64)
             and (type(d_t) in (float, int) or type(d_t) is np.float64)):
-        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
-                and 0 < m_r < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
-                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < d_t < 1e999):
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
+                and 0.0001 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
+                and 5e-6 <= i_g <= 1e8 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6
+                and 1e-5 <= omega1 <= 4e8 and 1e-7 <= d_t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = d_t*g*r
                 return np.float64(-(-J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r)))
             except (ArithmeticError, ValueError):
                 pass
-    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
-    r      = _checked('r', r, 'positive', 'drum radius, m')
-    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
-    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
-    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
+    r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s', (1e-5, 4e8))
+    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s', (1e-7, 1e7))
     shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g,
                        omega1=omega1, d_t=d_t)
     x0 = d_t*g*r
@@ -382,27 +396,27 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     Parameters
     ----------
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     m_r : array_like
-        rated payload (Table 1: 52 t) [kg], > 0
+        rated payload (Table 1: 52 t) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     omega1 : array_like
-        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0; served from 1e-5 to 4e8
     d_t : array_like
-        braking time [s], > 0
+        braking time [s], > 0; served from 1e-7 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -423,25 +437,26 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
             and (type(g) in (float, int) or type(g) is np.float64)
             and (type(omega1) in (float, int) or type(omega1) is np.float64)
             and (type(d_t) in (float, int) or type(d_t) is np.float64)):
-        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
-                and 0 < m_r < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
-                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < d_t < 1e999):
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
+                and 0.0001 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
+                and 5e-6 <= i_g <= 1e8 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6
+                and 1e-5 <= omega1 <= 4e8 and 1e-7 <= d_t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = d_t*g*r
                 return np.float64((J1*i_g*i_t*omega1 + m_h*x0 + m_p*x0)/(d_t*g*r*(m_h + m_r)))
             except (ArithmeticError, ValueError):
                 pass
-    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
-    r      = _checked('r', r, 'positive', 'drum radius, m')
-    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
-    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
-    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
+    r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s', (1e-5, 4e8))
+    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s', (1e-7, 1e7))
     shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g,
                        omega1=omega1, d_t=d_t)
     x0 = d_t*g*r
@@ -454,27 +469,27 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, o
     Parameters
     ----------
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     m_r : array_like
-        rated payload (Table 1: 52 t) [kg], > 0
+        rated payload (Table 1: 52 t) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     omega1 : array_like
-        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0; served from 1e-5 to 4e8
     d_t : array_like
-        braking time [s], > 0
+        braking time [s], > 0; served from 1e-7 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -495,25 +510,26 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, o
             and (type(g) in (float, int) or type(g) is np.float64)
             and (type(omega1) in (float, int) or type(omega1) is np.float64)
             and (type(d_t) in (float, int) or type(d_t) is np.float64)):
-        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
-                and 0 < m_r < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
-                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < d_t < 1e999):
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
+                and 0.0001 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
+                and 5e-6 <= i_g <= 1e8 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6
+                and 1e-5 <= omega1 <= 4e8 and 1e-7 <= d_t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = r**2
                 return np.float64(omega1*(J2*i_t**2 + m_h*x0 + m_p*x0)/(d_t*g*i_g*i_t*r*(m_h + m_r)))
             except (ArithmeticError, ValueError):
                 pass
-    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
-    r      = _checked('r', r, 'positive', 'drum radius, m')
-    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
-    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
-    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s')
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
+    r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s', (1e-5, 4e8))
+    d_t    = _checked('d_t', d_t, 'positive', 'braking time, s', (1e-7, 1e7))
     shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g,
                        omega1=omega1, d_t=d_t)
     x0 = r**2
@@ -526,31 +542,31 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     Parameters
     ----------
     t : array_like
-        time since the emergency stop [s], >= 0
+        time since the emergency stop [s], >= 0; served from 0.0 to 1e7
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     m_r : array_like
-        rated payload (Table 1: 52 t) [kg], > 0
+        rated payload (Table 1: 52 t) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     c : array_like
-        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0; served from 0.001 to 1e13
     M_SB : array_like
-        torque of the safety brakes on the drums [N*m], > 0
+        torque of the safety brakes on the drums [N*m], > 0; served from 0.001 to 1e12
     t_SB : array_like
-        delay of the safety brakes [s], >= 0
+        delay of the safety brakes [s], >= 0; served from 0.0 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -559,19 +575,19 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     ndarray
         [1], broadcast over the arguments.
     """
-    t    = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
-    J1   = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2   = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h  = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    m_p  = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    m_r  = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg')
-    r    = _checked('r', r, 'positive', 'drum radius, m')
-    i_g  = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t  = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g    = _checked('g', g, 'positive', 'gravity, m/s^2')
-    c    = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
-    M_SB = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
-    t_SB = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
+    t    = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
+    J1   = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2   = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h  = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    m_p  = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    m_r  = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
+    r    = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g  = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t  = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g    = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    c    = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad', (0.001, 1e13))
+    M_SB = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m', (0.001, 1e12))
+    t_SB = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s', (0.0, 1e6))
     shape = _broadcast(t=t, J1=J1, J2=J2, m_h=m_h, m_p=m_p, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g, c=c,
                        M_SB=M_SB, t_SB=t_SB)
     x0 = i_t**2
@@ -619,21 +635,21 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
     Parameters
     ----------
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     c : array_like
-        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0; served from 0.001 to 1e13
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -651,21 +667,22 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
             and (type(i_g) in (float, int) or type(i_g) is np.float64)
             and (type(i_t) in (float, int) or type(i_t) is np.float64)
             and (type(c) in (float, int) or type(c) is np.float64)):
-        if (0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999 and 0 <= m_p < 1e999
-                and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999 and 0 < c < 1e999):
+        if (1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9 and 0.0001 <= m_h <= 1e11
+                and 0.0 <= m_p <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+                and 1e-6 <= i_t <= 8e6 and 0.001 <= c <= 1e13):
             try:    # a failed check or a math error: the array path decides
                 x0 = r**2/i_t**2
                 return np.float64(math.sqrt(c)*math.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/J1))
             except (ArithmeticError, ValueError):
                 pass
-    J1  = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2  = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    m_p = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    r   = _checked('r', r, 'positive', 'drum radius, m')
-    i_g = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    c   = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad')
+    J1  = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2  = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    m_p = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    r   = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    c   = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad', (0.001, 1e13))
     shape = _broadcast(J1=J1, J2=J2, m_h=m_h, m_p=m_p, r=r, i_g=i_g, i_t=i_t, c=c)
     x0 = r**2/i_t**2
     return _into(out, shape, np.sqrt(c)*np.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/(J1)))
@@ -677,9 +694,9 @@ def backlash_at_motor_shaft(delta, i_g, *, out=None):
     Parameters
     ----------
     delta : array_like
-        backlash of the drum coupling (at the drum) [rad], >= 0
+        backlash of the drum coupling (at the drum) [rad], >= 0; served from 0.0 to 500000.0
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -691,13 +708,13 @@ def backlash_at_motor_shaft(delta, i_g, *, out=None):
     if (out is None
             and (type(delta) in (float, int) or type(delta) is np.float64)
             and (type(i_g) in (float, int) or type(i_g) is np.float64)):
-        if (0 <= delta < 1e999 and 0 < i_g < 1e999):
+        if (0.0 <= delta <= 500000.0 and 5e-6 <= i_g <= 1e8):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(delta*i_g)
             except (ArithmeticError, ValueError):
                 pass
-    delta = _checked('delta', delta, 'nonnegative', 'backlash of the drum coupling (at the drum), rad')
-    i_g   = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
+    delta = _checked('delta', delta, 'nonnegative', 'backlash of the drum coupling (at the drum), rad', (0.0, 500000.0))
+    i_g   = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
     shape = _broadcast(delta=delta, i_g=i_g)
     return _into(out, shape, delta*i_g)
 
@@ -708,33 +725,33 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     Parameters
     ----------
     t : array_like
-        time since the emergency stop [s], >= 0
+        time since the emergency stop [s], >= 0; served from 0.0 to 1e7
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     omega1 : array_like
-        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0; served from 1e-5 to 4e8
     M_SB : array_like
-        torque of the safety brakes on the drums [N*m], > 0
+        torque of the safety brakes on the drums [N*m], > 0; served from 0.001 to 1e12
     M_BB : array_like
-        torque of the service brakes on the motor shafts [N*m], > 0
+        torque of the service brakes on the motor shafts [N*m], > 0; served from 0.0001 to 1e11
     t_SB : array_like
-        delay of the safety brakes [s], >= 0
+        delay of the safety brakes [s], >= 0; served from 0.0 to 1e6
     t_BB : array_like
-        delay of the service brakes [s], >= 0
+        delay of the service brakes [s], >= 0; served from 0.0 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -758,10 +775,11 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0 <= t < 1e999 and 0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999
-                and 0 < m_h < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
-                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
-                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+        if (0.0 <= t <= 1e7 and 0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
+                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+                and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
+                and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
+                and 0.0 <= t_BB <= 1e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = i_t**2
                 x1 = r**2
@@ -789,20 +807,20 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 return np.float64(((k6*((x12) if x13 else (x14) if x15 else (k5*(t + x10) + x14))) if (((x16 < 0)) if x13 else ((((x17 < 0)) if x15 else ((x11*(t + x10) + x17 < 0))))) else (0)))
             except (ArithmeticError, ValueError):
                 pass
-    t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
-    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    r      = _checked('r', r, 'positive', 'drum radius, m')
-    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
-    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
-    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
-    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
-    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
-    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s', (1e-5, 4e8))
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m', (0.001, 1e12))
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m', (0.0001, 1e11))
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s', (0.0, 1e6))
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s', (0.0, 1e6))
     shape = _broadcast(t=t, m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
                        M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
     x0 = i_t**2
@@ -837,31 +855,31 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     Parameters
     ----------
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     omega1 : array_like
-        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0; served from 1e-5 to 4e8
     M_SB : array_like
-        torque of the safety brakes on the drums [N*m], > 0
+        torque of the safety brakes on the drums [N*m], > 0; served from 0.001 to 1e12
     M_BB : array_like
-        torque of the service brakes on the motor shafts [N*m], > 0
+        torque of the service brakes on the motor shafts [N*m], > 0; served from 0.0001 to 1e11
     t_SB : array_like
-        delay of the safety brakes [s], >= 0
+        delay of the safety brakes [s], >= 0; served from 0.0 to 1e6
     t_BB : array_like
-        delay of the service brakes [s], >= 0
+        delay of the service brakes [s], >= 0; served from 0.0 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -869,6 +887,11 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     -------
     ndarray
         [s], broadcast over the arguments.
+
+    Raises
+    ------
+    ValueError
+        unless the brakes together decelerate the drive (M_BB + M_SB/i_g above the load torque): else it never stops.
     """
     if (out is None
             and (type(m_p) in (float, int) or type(m_p) is np.float64)
@@ -884,10 +907,12 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
-                and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999 and 0 < g < 1e999
-                and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
-                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
+                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+                and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
+                and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
+                and 0.0 <= t_BB <= 1e6
+                and -(-M_BB - M_SB/i_g - g*r*(m_h + m_p)/(i_g*i_t))/(J1 + J2/i_g**2 + m_h*r**2/(i_g**2*i_t**2) + m_p*r**2/(i_g**2*i_t**2)) > 0):
             try:    # a failed check or a math error: the array path decides
                 x0 = m_h + m_p
                 x1 = i_g**(-2)
@@ -903,21 +928,22 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 return np.float64(((i_t*omega1*x4/(g*r*x0)) if (x8 >= 0) else (t_SB - x4*x8/x9) if (x10 >= 0) else (t_BB - x10*x3/(M_BB + M_SB*x6 + x5*x6))))
             except (ArithmeticError, ValueError):
                 pass
-    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    r      = _checked('r', r, 'positive', 'drum radius, m')
-    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
-    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
-    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
-    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
-    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
-    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s', (1e-5, 4e8))
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m', (0.001, 1e12))
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m', (0.0001, 1e11))
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s', (0.0, 1e6))
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s', (0.0, 1e6))
     shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
                        M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
+    _required(-(-M_BB - M_SB/i_g - g*r*(m_h + m_p)/(i_g*i_t))/(J1 + J2/i_g**2 + m_h*r**2/(i_g**2*i_t**2) + m_p*r**2/(i_g**2*i_t**2)), 'the brakes together decelerate the drive (M_BB + M_SB/i_g above the load torque): else it never stops')
     x0 = m_h + m_p
     x1 = i_g**(-2.0)
     x2 = r**2*x1/i_t**2
@@ -938,33 +964,33 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     Parameters
     ----------
     t : array_like
-        time since the emergency stop [s], >= 0
+        time since the emergency stop [s], >= 0; served from 0.0 to 1e7
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     omega1 : array_like
-        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0; served from 1e-5 to 4e8
     M_SB : array_like
-        torque of the safety brakes on the drums [N*m], > 0
+        torque of the safety brakes on the drums [N*m], > 0; served from 0.001 to 1e12
     M_BB : array_like
-        torque of the service brakes on the motor shafts [N*m], > 0
+        torque of the service brakes on the motor shafts [N*m], > 0; served from 0.0001 to 1e11
     t_SB : array_like
-        delay of the safety brakes [s], >= 0
+        delay of the safety brakes [s], >= 0; served from 0.0 to 1e6
     t_BB : array_like
-        delay of the service brakes [s], >= 0
+        delay of the service brakes [s], >= 0; served from 0.0 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -988,10 +1014,11 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0 <= t < 1e999 and 0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999
-                and 0 < m_h < 1e999 and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999
-                and 0 < g < 1e999 and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
-                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+        if (0.0 <= t <= 1e7 and 0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
+                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+                and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
+                and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
+                and 0.0 <= t_BB <= 1e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = i_t**2
                 x1 = r**2
@@ -1016,20 +1043,20 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 return np.float64(((k6*((x12) if x13 else (x14) if x15 else (k5*(t + x10) + x14))) if ((True) if x13 else ((((x16 > 0)) if x15 else ((x11*(t + x10) - x16 < 0))))) else (0)))
             except (ArithmeticError, ValueError):
                 pass
-    t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
-    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    r      = _checked('r', r, 'positive', 'drum radius, m')
-    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
-    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
-    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
-    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
-    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
-    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s', (1e-5, 4e8))
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m', (0.001, 1e12))
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m', (0.0001, 1e11))
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s', (0.0, 1e6))
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s', (0.0, 1e6))
     shape = _broadcast(t=t, m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
                        M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
     x0 = i_t**2
@@ -1061,31 +1088,31 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     Parameters
     ----------
     m_p : array_like
-        payload [kg], >= 0
+        payload [kg], >= 0; served from 0.0 to 1e11
     J1 : array_like
-        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0
+        inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0
+        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
-        drum radius [m], > 0
+        drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
-        gear ratio of the gearbox [1], > 0
+        gear ratio of the gearbox [1], > 0; served from 5e-6 to 1e8
     i_t : array_like
-        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0
+        ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     g : array_like
-        gravity [m/s^2], > 0
+        gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     omega1 : array_like
-        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0
+        motor angular speed before braking (Table 1: n1 = 1500 1/min) [rad/s], > 0; served from 1e-5 to 4e8
     M_SB : array_like
-        torque of the safety brakes on the drums [N*m], > 0
+        torque of the safety brakes on the drums [N*m], > 0; served from 0.001 to 1e12
     M_BB : array_like
-        torque of the service brakes on the motor shafts [N*m], > 0
+        torque of the service brakes on the motor shafts [N*m], > 0; served from 0.0001 to 1e11
     t_SB : array_like
-        delay of the safety brakes [s], >= 0
+        delay of the safety brakes [s], >= 0; served from 0.0 to 1e6
     t_BB : array_like
-        delay of the service brakes [s], >= 0
+        delay of the service brakes [s], >= 0; served from 0.0 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1093,6 +1120,11 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     -------
     ndarray
         [s], broadcast over the arguments.
+
+    Raises
+    ------
+    ValueError
+        unless the brakes together decelerate the drive (M_BB + M_SB/i_g above the load torque): else it never stops.
     """
     if (out is None
             and (type(m_p) in (float, int) or type(m_p) is np.float64)
@@ -1108,10 +1140,12 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0 <= m_p < 1e999 and 0 < J1 < 1e999 and 0 < J2 < 1e999 and 0 < m_h < 1e999
-                and 0 < r < 1e999 and 0 < i_g < 1e999 and 0 < i_t < 1e999 and 0 < g < 1e999
-                and 0 < omega1 < 1e999 and 0 < M_SB < 1e999 and 0 < M_BB < 1e999
-                and 0 <= t_SB < 1e999 and 0 <= t_BB < 1e999):
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
+                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+                and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
+                and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
+                and 0.0 <= t_BB <= 1e6
+                and (M_BB + M_SB/i_g - g*r*(m_h + m_p)/(i_g*i_t))/(J1 + J2/i_g**2 + m_h*r**2/(i_g**2*i_t**2) + m_p*r**2/(i_g**2*i_t**2)) > 0):
             try:    # a failed check or a math error: the array path decides
                 x0 = g*r*(m_h + m_p)/i_t
                 x1 = M_SB - x0
@@ -1125,21 +1159,22 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 return np.float64(((i_g*x4*x7/x1 + t_SB) if (x8 <= 0) else (t_BB + x4*x8/(M_BB + M_SB*x5 - x0*x5))))
             except (ArithmeticError, ValueError):
                 pass
-    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg')
-    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2')
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2')
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg')
-    r      = _checked('r', r, 'positive', 'drum radius, m')
-    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1')
-    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1')
-    g      = _checked('g', g, 'positive', 'gravity, m/s^2')
-    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s')
-    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m')
-    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m')
-    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s')
-    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s')
+    m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
+    J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
+    i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
+    i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
+    g      = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
+    omega1 = _checked('omega1', omega1, 'positive', 'motor angular speed before braking (Table 1: n1 = 1500 1/min), rad/s', (1e-5, 4e8))
+    M_SB   = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m', (0.001, 1e12))
+    M_BB   = _checked('M_BB', M_BB, 'positive', 'torque of the service brakes on the motor shafts, N*m', (0.0001, 1e11))
+    t_SB   = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s', (0.0, 1e6))
+    t_BB   = _checked('t_BB', t_BB, 'nonnegative', 'delay of the service brakes, s', (0.0, 1e6))
     shape = _broadcast(m_p=m_p, J1=J1, J2=J2, m_h=m_h, r=r, i_g=i_g, i_t=i_t, g=g, omega1=omega1,
                        M_SB=M_SB, M_BB=M_BB, t_SB=t_SB, t_BB=t_BB)
+    _required((M_BB + M_SB/i_g - g*r*(m_h + m_p)/(i_g*i_t))/(J1 + J2/i_g**2 + m_h*r**2/(i_g**2*i_t**2) + m_p*r**2/(i_g**2*i_t**2)), 'the brakes together decelerate the drive (M_BB + M_SB/i_g above the load torque): else it never stops')
     x0 = g*r*(m_h + m_p)/i_t
     x1 = M_SB - x0
     x2 = i_g**(-2.0)

@@ -40,36 +40,40 @@ import numpy as np
 __all__ = ['natural_frequency', 'pickup_contact_time', 'dynamic_coefficient_instant', 'dynamic_coefficient_ramp', 'dynamic_coefficient_pulse', 'pulse_peak_factor', 'pulse_peak_time', 'dynamic_coefficient_ramp_hold', 'ramp_hold_peak_factor', 'dynamic_coefficient_pickup_a1', 'dynamic_coefficient_pickup_a2', 'dynamic_coefficient_pickup_a3', 'dynamic_coefficient_pickup_a4', 'dynamic_coefficient_from_weight_a1', 'dynamic_coefficient_from_weight_a2', 'dynamic_coefficient_from_weight_a3', 'dynamic_coefficient_from_weight_a4', 'optimal_coefficient_from_weight_a1', 'optimal_coefficient_pickup_a1', 'optimal_coefficient_from_weight_a2', 'optimal_coefficient_pickup_a2', 'optimal_coefficient_from_weight_a3', 'optimal_coefficient_pickup_a3', 'optimal_coefficient_from_weight_a4', 'optimal_coefficient_pickup_a4']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -654,11 +658,11 @@ def natural_frequency(m1, m2, C, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     C : array_like
-        stiffness of the rope (elastic link) [N/m], > 0
+        stiffness of the rope (elastic link) [N/m], > 0; served from 0.1 to 1e14
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -671,14 +675,14 @@ def natural_frequency(m1, m2, C, *, out=None):
             and (type(m1) in (float, int) or type(m1) is np.float64)
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(C) in (float, int) or type(C) is np.float64)):
-        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < C < 1e999):
+        if (0.0001 <= m1 <= 1e10 and 0.001 <= m2 <= 5e10 and 0.1 <= C <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(math.sqrt(C)*math.sqrt(m1 + m2)/(math.sqrt(m1)*math.sqrt(m2)))
             except (ArithmeticError, ValueError):
                 pass
-    m1 = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m', (0.1, 1e14))
     shape = _broadcast(m1=m1, m2=m2, C=C)
     return _into(out, shape, np.sqrt(C)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2)))
 
@@ -689,13 +693,13 @@ def pickup_contact_time(m2, g, C, v0, *, out=None):
     Parameters
     ----------
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     C : array_like
-        stiffness of the rope (elastic link) [N/m], > 0
+        stiffness of the rope (elastic link) [N/m], > 0; served from 0.1 to 1e14
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -709,15 +713,16 @@ def pickup_contact_time(m2, g, C, v0, *, out=None):
             and (type(g) in (float, int) or type(g) is np.float64)
             and (type(C) in (float, int) or type(C) is np.float64)
             and (type(v0) in (float, int) or type(v0) is np.float64)):
-        if (0 < m2 < 1e999 and 0 < g < 1e999 and 0 < C < 1e999 and 0 < v0 < 1e999):
+        if (0.001 <= m2 <= 5e10 and 9.8e-6 <= g <= 9.82e6 and 0.1 <= C <= 1e14
+                and 1e-7 <= v0 <= 1e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(g*m2/(C*v0))
             except (ArithmeticError, ValueError):
                 pass
-    m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g  = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m')
-    v0 = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
+    m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g  = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m', (0.1, 1e14))
+    v0 = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
     shape = _broadcast(m2=m2, g=g, C=C, v0=v0)
     return _into(out, shape, g*m2/(C*v0))
 
@@ -728,9 +733,9 @@ def dynamic_coefficient_instant(t, Omega, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -742,14 +747,14 @@ def dynamic_coefficient_instant(t, Omega, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(Omega) in (float, int) or type(Omega) is np.float64)):
-        if (0 <= t < 1e999 and 0 < Omega < 1e999):
+        if (0.0 <= t <= 2e6 and 2e-6 <= Omega <= 6e7):
             try:    # a failed check or a math error: the array path decides
                 k0 = (1/2)*Omega
                 return np.float64(2*math.sin(k0*t)**2)
             except (ArithmeticError, ValueError):
                 pass
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
     shape = _broadcast(t=t, Omega=Omega)
     k0 = (1/2)*Omega
     if out is None and not shape:
@@ -768,11 +773,11 @@ def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -785,15 +790,15 @@ def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0 <= t < 1e999 and 0 < Omega < 1e999 and 0 < t_n < 1e999):
+        if (0.0 <= t <= 2e6 and 2e-6 <= Omega <= 6e7 and 5e-7 <= t_n <= 3e6):
             try:    # a failed check or a math error: the array path decides
                 k0 = -1/(Omega*t_n)
                 return np.float64(k0*_remainder_float(Omega*t, 1, 1))
             except (ArithmeticError, ValueError):
                 pass
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, t_n=t_n)
     k0 = -1/(Omega*t_n)
     return _into(out, shape, k0*_sin_remainder(Omega*t, 1))
@@ -805,11 +810,11 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -818,9 +823,9 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
     shape = _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 2*np.sin((1/2)*x0)**2
@@ -844,9 +849,9 @@ def pulse_peak_factor(Omega, theta, *, out=None):
     Parameters
     ----------
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -858,13 +863,13 @@ def pulse_peak_factor(Omega, theta, *, out=None):
     if (out is None
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(theta) in (float, int) or type(theta) is np.float64)):
-        if (0 < Omega < 1e999 and 0 < theta < 1e999):
+        if (2e-6 <= Omega <= 6e7 and 1e-8 <= theta <= 2e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(((2*math.sin((1/2)*Omega*theta)) if (theta < 3.141592653589793/Omega) else (2)))
             except (ArithmeticError, ValueError):
                 pass
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
     shape = _broadcast(Omega=Omega, theta=theta)
     return _into(out, shape, np.select([np.less(theta, 3.141592653589793/Omega),True], [2*np.sin((1/2)*Omega*theta),2], default=np.nan))
 
@@ -875,9 +880,9 @@ def pulse_peak_time(Omega, theta, *, out=None):
     Parameters
     ----------
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -889,15 +894,15 @@ def pulse_peak_time(Omega, theta, *, out=None):
     if (out is None
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(theta) in (float, int) or type(theta) is np.float64)):
-        if (0 < Omega < 1e999 and 0 < theta < 1e999):
+        if (2e-6 <= Omega <= 6e7 and 1e-8 <= theta <= 2e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = 1/Omega
                 x1 = 3.141592653589793*x0
                 return np.float64((((1/2)*theta + 1.5707963267948966*x0) if (theta < x1) else (x1)))
             except (ArithmeticError, ValueError):
                 pass
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
     shape = _broadcast(Omega=Omega, theta=theta)
     x0 = 1/(Omega)
     x1 = 3.141592653589793*x0
@@ -910,11 +915,11 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -923,9 +928,9 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
     shape = _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 1/(Omega*theta)
@@ -951,9 +956,9 @@ def ramp_hold_peak_factor(Omega, theta, *, out=None):
     Parameters
     ----------
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -965,13 +970,13 @@ def ramp_hold_peak_factor(Omega, theta, *, out=None):
     if (out is None
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(theta) in (float, int) or type(theta) is np.float64)):
-        if (0 < Omega < 1e999 and 0 < theta < 1e999):
+        if (2e-6 <= Omega <= 6e7 and 1e-8 <= theta <= 2e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1 + 2*abs(math.sin((1/2)*Omega*theta))/(Omega*theta))
             except (ArithmeticError, ValueError):
                 pass
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s')
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
     shape = _broadcast(Omega=Omega, theta=theta)
     return _into(out, shape, 1 + 2*abs(np.sin((1/2)*Omega*theta))/(Omega*theta))
 
@@ -982,21 +987,21 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1005,14 +1010,14 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
@@ -1094,21 +1099,21 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1117,14 +1122,14 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
@@ -1203,21 +1208,21 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1226,14 +1231,14 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(Omega)
     x1 = 1/(m2)
@@ -1315,21 +1320,21 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1338,14 +1343,14 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(m2)
     x1 = m1*x0
@@ -1426,19 +1431,19 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1447,13 +1452,13 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
@@ -1482,19 +1487,19 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1503,13 +1508,13 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
@@ -1539,19 +1544,19 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1560,13 +1565,13 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
@@ -1596,19 +1601,19 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     Omega : array_like
-        natural circular frequency Ω of the rope stretch [rad/s], > 0
+        natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0
+        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
     m2 : array_like
-        mass of the load (second mass) [kg], > 0
+        mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1617,13 +1622,13 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s')
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg')
-    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
@@ -1653,9 +1658,9 @@ def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1667,13 +1672,13 @@ def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, t_n=t_n)
     return _into(out, shape, 1)
 
@@ -1684,15 +1689,15 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1701,11 +1706,11 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = g*t_n/(tau_0*v0)
     if out is None and not shape:      # one point: its own branch only
@@ -1726,9 +1731,9 @@ def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1740,15 +1745,15 @@ def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
             try:    # a failed check or a math error: the array path decides
                 k0 = -t_n
                 k1 = -1/t_n
                 return np.float64(k1*(k0 + t))
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -1/t_n
@@ -1766,15 +1771,15 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1783,11 +1788,11 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = -t_n
     k1 = -1/t_n
@@ -1811,9 +1816,9 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1825,15 +1830,15 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
             try:    # a failed check or a math error: the array path decides
                 k0 = -t_n
                 k1 = 12/t_n**3
                 return np.float64(k1*t*(k0 + t)**2)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = 12/_cube(t_n)
@@ -1854,15 +1859,15 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1871,11 +1876,11 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = -t_n
     k1 = 12/_cube(t_n)
@@ -1899,9 +1904,9 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1913,15 +1918,15 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0 <= t < 1e999 and 0 < t_n < 1e999):
+        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
             try:    # a failed check or a math error: the array path decides
                 k0 = -t_n
                 k1 = -60/t_n**5
                 return np.float64(k1*t**2*(k0 + t)**3)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -60/t_n**5
@@ -1945,15 +1950,15 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0
+        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
     v0 : array_like
-        steady hoisting speed after the start [m/s], > 0
+        steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
-        acceleration of gravity [m/s^2], > 0
+        acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1962,11 +1967,11 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s')
-    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s')
-    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2')
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s')
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
+    g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = -t_n
     k1 = -60/t_n**5

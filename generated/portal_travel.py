@@ -34,36 +34,40 @@ import numpy as np
 __all__ = ['operating_pressure_angle', 'shift_sum', 'centre_distance', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'tip_thickness_shift', 'pointed_tip_shift', 'undercut_limit', 'startup_gap_motor_speed', 'startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway', 'max_support_load']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -290,15 +294,15 @@ def operating_pressure_angle(m, z1, z2, a_w, alpha, *, out=None):
     Parameters
     ----------
     m : array_like
-        module of the teeth [m], > 0
+        module of the teeth [m], > 0; served from 1e-9 to 50000.0
     z1 : array_like
-        number of teeth of the pinion [1], > 0
+        number of teeth of the pinion [1], > 0; served from 8e-6 to 1.5e8
     z2 : array_like
-        number of teeth of the wheel [1], > 0
+        number of teeth of the wheel [1], > 0; served from 8e-6 to 1.5e8
     a_w : array_like
-        centre distance [m], > 0
+        centre distance [m], > 0; served from 5e-8 to 5e6
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -307,11 +311,11 @@ def operating_pressure_angle(m, z1, z2, a_w, alpha, *, out=None):
     ndarray
         [rad], broadcast over the arguments.
     """
-    m     = _checked('m', m, 'positive', 'module of the teeth, m')
-    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
-    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
-    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    m     = _checked('m', m, 'positive', 'module of the teeth, m', (1e-9, 50000.0))
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1', (8e-6, 1.5e8))
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1', (8e-6, 1.5e8))
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m', (5e-8, 5e6))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
     shape = _broadcast(m=m, z1=z1, z2=z2, a_w=a_w, alpha=alpha)
     return _into(out, shape, _acos_checked((1/2)*m*(z1 + z2)*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii'))
 
@@ -322,15 +326,15 @@ def shift_sum(m, z1, z2, a_w, alpha, *, out=None):
     Parameters
     ----------
     m : array_like
-        module of the teeth [m], > 0
+        module of the teeth [m], > 0; served from 1e-9 to 50000.0
     z1 : array_like
-        number of teeth of the pinion [1], > 0
+        number of teeth of the pinion [1], > 0; served from 8e-6 to 1.5e8
     z2 : array_like
-        number of teeth of the wheel [1], > 0
+        number of teeth of the wheel [1], > 0; served from 8e-6 to 1.5e8
     a_w : array_like
-        centre distance [m], > 0
+        centre distance [m], > 0; served from 5e-8 to 5e6
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -339,11 +343,11 @@ def shift_sum(m, z1, z2, a_w, alpha, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    m     = _checked('m', m, 'positive', 'module of the teeth, m')
-    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
-    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
-    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    m     = _checked('m', m, 'positive', 'module of the teeth, m', (1e-9, 50000.0))
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1', (8e-6, 1.5e8))
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1', (8e-6, 1.5e8))
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m', (5e-8, 5e6))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
     shape = _broadcast(m=m, z1=z1, z2=z2, a_w=a_w, alpha=alpha)
     x0 = (1/2)*z1 + (1/2)*z2
     return _into(out, shape, x0*(-_involute(alpha) + _involute(_acos_checked(m*x0*np.cos(alpha)/a_w, 'a_w: the centre distance is too small for this mesh: it must exceed m*(z1 + z2)*cos(alpha)/2, the sum of the base radii')))/np.tan(alpha))
@@ -355,15 +359,15 @@ def centre_distance(m, z1, z2, x_sum, alpha, *, out=None):
     Parameters
     ----------
     m : array_like
-        module of the teeth [m], > 0
+        module of the teeth [m], > 0; served from 1e-9 to 50000.0
     z1 : array_like
-        number of teeth of the pinion [1], > 0
+        number of teeth of the pinion [1], > 0; served from 8e-6 to 1.5e8
     z2 : array_like
-        number of teeth of the wheel [1], > 0
+        number of teeth of the wheel [1], > 0; served from 8e-6 to 1.5e8
     x_sum : array_like
-        sum of shift coefficients x1 + x2 [1]
+        sum of shift coefficients x1 + x2 [1]; served from -2e6 to 2e6
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -372,11 +376,11 @@ def centre_distance(m, z1, z2, x_sum, alpha, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
-    m     = _checked('m', m, 'positive', 'module of the teeth, m')
-    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
-    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
-    x_sum = _checked('x_sum', x_sum, 'real', 'sum of shift coefficients x1 + x2, 1')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
+    m     = _checked('m', m, 'positive', 'module of the teeth, m', (1e-9, 50000.0))
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1', (8e-6, 1.5e8))
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1', (8e-6, 1.5e8))
+    x_sum = _checked('x_sum', x_sum, 'real', 'sum of shift coefficients x1 + x2, 1', (-2e6, 2e6))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
     shape = _broadcast(m=m, z1=z1, z2=z2, x_sum=x_sum, alpha=alpha)
     x0 = z1 + z2
     return _into(out, shape, (1/2)*m*x0*np.cos(alpha)/np.cos(_inverse_involute(_involute(alpha) + 2*x_sum*np.tan(alpha)/x0, 'x_sum: the shifts are too negative: inv(alpha) + 2*x_sum*tan(alpha)/(z1 + z2) must be >= 0')))
@@ -388,15 +392,15 @@ def tip_diameter(m, z, x, h_a, dy, *, out=None):
     Parameters
     ----------
     m : array_like
-        module of the teeth [m], > 0
+        module of the teeth [m], > 0; served from 1e-9 to 50000.0
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     x : array_like
-        shift coefficient of the gear [1]
+        shift coefficient of the gear [1]; served from -1e6 to 1e6
     h_a : array_like
-        addendum coefficient of the basic rack h_a* [1], > 0
+        addendum coefficient of the basic rack h_a* [1], > 0; served from 8e-7 to 1.25e6
     dy : array_like
-        tip shortening coefficient Δy (>= 0) [1], >= 0
+        tip shortening coefficient Δy (>= 0) [1], >= 0; served from 0.0 to 300000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -411,17 +415,17 @@ def tip_diameter(m, z, x, h_a, dy, *, out=None):
             and (type(x) in (float, int) or type(x) is np.float64)
             and (type(h_a) in (float, int) or type(h_a) is np.float64)
             and (type(dy) in (float, int) or type(dy) is np.float64)):
-        if (0 < m < 1e999 and 0 < z < 1e999 and -1e999 < x < 1e999 and 0 < h_a < 1e999
-                and 0 <= dy < 1e999):
+        if (1e-9 <= m <= 50000.0 and 8e-6 <= z <= 1.5e8 and -1e6 <= x <= 1e6
+                and 8e-7 <= h_a <= 1.25e6 and 0.0 <= dy <= 300000.0):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(m*(-2*dy + 2*h_a + 2*x + z))
             except (ArithmeticError, ValueError):
                 pass
-    m   = _checked('m', m, 'positive', 'module of the teeth, m')
-    z   = _checked('z', z, 'positive', 'number of teeth, 1')
-    x   = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
-    h_a = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
-    dy  = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    m   = _checked('m', m, 'positive', 'module of the teeth, m', (1e-9, 50000.0))
+    z   = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    x   = _checked('x', x, 'real', 'shift coefficient of the gear, 1', (-1e6, 1e6))
+    h_a = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1', (8e-7, 1.25e6))
+    dy  = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1', (0.0, 300000.0))
     shape = _broadcast(m=m, z=z, x=x, h_a=h_a, dy=dy)
     return _into(out, shape, m*(-2*dy + 2*h_a + 2*x + z))
 
@@ -432,17 +436,17 @@ def tip_thickness(m, z, x, alpha, h_a, dy, *, out=None):
     Parameters
     ----------
     m : array_like
-        module of the teeth [m], > 0
+        module of the teeth [m], > 0; served from 1e-9 to 50000.0
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     x : array_like
-        shift coefficient of the gear [1]
+        shift coefficient of the gear [1]; served from -1e6 to 1e6
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     h_a : array_like
-        addendum coefficient of the basic rack h_a* [1], > 0
+        addendum coefficient of the basic rack h_a* [1], > 0; served from 8e-7 to 1.25e6
     dy : array_like
-        tip shortening coefficient Δy (>= 0) [1], >= 0
+        tip shortening coefficient Δy (>= 0) [1], >= 0; served from 0.0 to 300000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -451,12 +455,12 @@ def tip_thickness(m, z, x, alpha, h_a, dy, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
-    m     = _checked('m', m, 'positive', 'module of the teeth, m')
-    z     = _checked('z', z, 'positive', 'number of teeth, 1')
-    x     = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
-    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
-    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    m     = _checked('m', m, 'positive', 'module of the teeth, m', (1e-9, 50000.0))
+    z     = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    x     = _checked('x', x, 'real', 'shift coefficient of the gear, 1', (-1e6, 1e6))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1', (8e-7, 1.25e6))
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1', (0.0, 300000.0))
     shape = _broadcast(m=m, z=z, x=x, alpha=alpha, h_a=h_a, dy=dy)
     return _into(out, shape, m*(-2*dy + 2*h_a + 2*x + z)*_tip_half_angle(x, z, alpha, h_a, dy, 'x: the tip circle lies inside the base circle (shift too negative)'))
 
@@ -467,25 +471,25 @@ def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2, *, out=None):
     Parameters
     ----------
     m : array_like
-        module of the teeth [m], > 0
+        module of the teeth [m], > 0; served from 1e-9 to 50000.0
     z1 : array_like
-        number of teeth of the pinion [1], > 0
+        number of teeth of the pinion [1], > 0; served from 8e-6 to 1.5e8
     z2 : array_like
-        number of teeth of the wheel [1], > 0
+        number of teeth of the wheel [1], > 0; served from 8e-6 to 1.5e8
     x1 : array_like
-        shift coefficient of the pinion [1]
+        shift coefficient of the pinion [1]; served from -1e6 to 1e6
     x2 : array_like
-        shift coefficient of the wheel [1]
+        shift coefficient of the wheel [1]; served from -1e6 to 1e6
     a_w : array_like
-        centre distance [m], > 0
+        centre distance [m], > 0; served from 5e-8 to 5e6
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     h_a : array_like
-        addendum coefficient of the basic rack h_a* [1], > 0
+        addendum coefficient of the basic rack h_a* [1], > 0; served from 8e-7 to 1.25e6
     dy1 : array_like
-        tip shortening coefficient Δy of the pinion (>= 0) [1], >= 0
+        tip shortening coefficient Δy of the pinion (>= 0) [1], >= 0; served from 0.0 to 300000.0
     dy2 : array_like
-        tip shortening coefficient Δy of the wheel (>= 0) [1], >= 0
+        tip shortening coefficient Δy of the wheel (>= 0) [1], >= 0; served from 0.0 to 300000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -494,16 +498,16 @@ def contact_ratio(m, z1, z2, x1, x2, a_w, alpha, h_a, dy1, dy2, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    m     = _checked('m', m, 'positive', 'module of the teeth, m')
-    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1')
-    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1')
-    x1    = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1')
-    x2    = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1')
-    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
-    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
-    dy1   = _checked('dy1', dy1, 'nonnegative', 'tip shortening coefficient Δy of the pinion (>= 0), 1')
-    dy2   = _checked('dy2', dy2, 'nonnegative', 'tip shortening coefficient Δy of the wheel (>= 0), 1')
+    m     = _checked('m', m, 'positive', 'module of the teeth, m', (1e-9, 50000.0))
+    z1    = _checked('z1', z1, 'positive', 'number of teeth of the pinion, 1', (8e-6, 1.5e8))
+    z2    = _checked('z2', z2, 'positive', 'number of teeth of the wheel, 1', (8e-6, 1.5e8))
+    x1    = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1', (-1e6, 1e6))
+    x2    = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1', (-1e6, 1e6))
+    a_w   = _checked('a_w', a_w, 'positive', 'centre distance, m', (5e-8, 5e6))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1', (8e-7, 1.25e6))
+    dy1   = _checked('dy1', dy1, 'nonnegative', 'tip shortening coefficient Δy of the pinion (>= 0), 1', (0.0, 300000.0))
+    dy2   = _checked('dy2', dy2, 'nonnegative', 'tip shortening coefficient Δy of the wheel (>= 0), 1', (0.0, 300000.0))
     shape = _broadcast(m=m, z1=z1, z2=z2, x1=x1, x2=x2, a_w=a_w, alpha=alpha, h_a=h_a, dy1=dy1,
                        dy2=dy2)
     x0 = z1 + z2
@@ -518,15 +522,15 @@ def tip_thickness_shift(z, alpha, h_a, dy, sigma, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     h_a : array_like
-        addendum coefficient of the basic rack h_a* [1], > 0
+        addendum coefficient of the basic rack h_a* [1], > 0; served from 8e-7 to 1.25e6
     dy : array_like
-        tip shortening coefficient Δy (>= 0) [1], >= 0
+        tip shortening coefficient Δy (>= 0) [1], >= 0; served from 0.0 to 300000.0
     sigma : array_like
-        tip tooth thickness over the module, s_a/m [1], >= 0
+        tip tooth thickness over the module, s_a/m [1], >= 0; served from 0.0 to 500000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -535,11 +539,11 @@ def tip_thickness_shift(z, alpha, h_a, dy, sigma, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    z     = _checked('z', z, 'positive', 'number of teeth, 1')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
-    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
-    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
-    sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1')
+    z     = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1', (8e-7, 1.25e6))
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1', (0.0, 300000.0))
+    sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1', (0.0, 500000.0))
     shape = _broadcast(z=z, alpha=alpha, h_a=h_a, dy=dy, sigma=sigma)
     return _into(out, shape, _tip_shift(z, alpha, h_a, dy, sigma))
 
@@ -550,13 +554,13 @@ def pointed_tip_shift(z, alpha, h_a, dy, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     h_a : array_like
-        addendum coefficient of the basic rack h_a* [1], > 0
+        addendum coefficient of the basic rack h_a* [1], > 0; served from 8e-7 to 1.25e6
     dy : array_like
-        tip shortening coefficient Δy (>= 0) [1], >= 0
+        tip shortening coefficient Δy (>= 0) [1], >= 0; served from 0.0 to 300000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -565,10 +569,10 @@ def pointed_tip_shift(z, alpha, h_a, dy, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    z     = _checked('z', z, 'positive', 'number of teeth, 1')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
-    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
-    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    z     = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1', (8e-7, 1.25e6))
+    dy    = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1', (0.0, 300000.0))
     shape = _broadcast(z=z, alpha=alpha, h_a=h_a, dy=dy)
     return _into(out, shape, _tip_shift(z, alpha, h_a, dy, 0))
 
@@ -579,11 +583,11 @@ def undercut_limit(z, alpha, h_a, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     alpha : array_like
-        profile angle of the basic rack [rad], > 0
+        profile angle of the basic rack [rad], > 0; served from 2e-7 to 1.4
     h_a : array_like
-        addendum coefficient of the basic rack h_a* [1], > 0
+        addendum coefficient of the basic rack h_a* [1], > 0; served from 8e-7 to 1.25e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -596,14 +600,14 @@ def undercut_limit(z, alpha, h_a, *, out=None):
             and (type(z) in (float, int) or type(z) is np.float64)
             and (type(alpha) in (float, int) or type(alpha) is np.float64)
             and (type(h_a) in (float, int) or type(h_a) is np.float64)):
-        if (0 < z < 1e999 and 0 < alpha < 1e999 and 0 < h_a < 1e999):
+        if (8e-6 <= z <= 1.5e8 and 2e-7 <= alpha <= 1.4 and 8e-7 <= h_a <= 1.25e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(h_a - 1/2*z*math.sin(alpha)**2)
             except (ArithmeticError, ValueError):
                 pass
-    z     = _checked('z', z, 'positive', 'number of teeth, 1')
-    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad')
-    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1')
+    z     = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    alpha = _checked('alpha', alpha, 'positive', 'profile angle of the basic rack, rad', (2e-7, 1.4))
+    h_a   = _checked('h_a', h_a, 'positive', 'addendum coefficient of the basic rack h_a*, 1', (8e-7, 1.25e6))
     shape = _broadcast(z=z, alpha=alpha, h_a=h_a)
     return _into(out, shape, h_a - 1/2*z*np.sin(alpha)**2)
 
@@ -614,19 +618,19 @@ def startup_gap_motor_speed(t_s, lambda_p, P_m, J_r, v_n, omega_0, omega_n, *, o
     Parameters
     ----------
     t_s : array_like
-        time from the start (first stage) [s], >= 0
+        time from the start (first stage) [s], >= 0; served from 0.0 to 500000.0
     lambda_p : array_like
-        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0; served from 1.2e-6 to 2.5e6
     P_m : array_like
-        rated power of one motor [W], > 0
+        rated power of one motor [W], > 0; served from 0.005 to 5e10
     J_r : array_like
-        moment of inertia of one motor rotor [kg*m^2], > 0
+        moment of inertia of one motor rotor [kg*m^2], > 0; served from 5e-8 to 1e6
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     omega_0 : array_like
-        no-load (synchronous) motor speed [rad/s], > 0
+        no-load (synchronous) motor speed [rad/s], > 0; served from 6e-5 to 1.7e8
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -643,20 +647,21 @@ def startup_gap_motor_speed(t_s, lambda_p, P_m, J_r, v_n, omega_0, omega_n, *, o
             and (type(v_n) in (float, int) or type(v_n) is np.float64)
             and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
-        if (0 <= t_s < 1e999 and 0 < lambda_p < 1e999 and 0 < P_m < 1e999 and 0 < J_r < 1e999
-                and 0 < v_n < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+        if (0.0 <= t_s <= 500000.0 and 1.2e-6 <= lambda_p <= 2.5e6 and 0.005 <= P_m <= 5e10
+                and 5e-8 <= J_r <= 1e6 and 2e-7 <= v_n <= 1e6 and 6e-5 <= omega_0 <= 1.7e8
+                and 5e-5 <= omega_n <= 1.6e8):
             try:    # a failed check or a math error: the array path decides
                 x0 = 1/omega_n
                 return np.float64(-omega_0*v_n*x0*math.expm1(-P_m*lambda_p*t_s*x0/(J_r*omega_0)))
             except (ArithmeticError, ValueError):
                 pass
-    t_s      = _checked('t_s', t_s, 'nonnegative', 'time from the start (first stage), s')
-    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
-    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
-    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
-    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
-    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
-    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    t_s      = _checked('t_s', t_s, 'nonnegative', 'time from the start (first stage), s', (0.0, 500000.0))
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1', (1.2e-6, 2.5e6))
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W', (0.005, 5e10))
+    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2', (5e-8, 1e6))
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s', (6e-5, 1.7e8))
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
     shape = _broadcast(t_s=t_s, lambda_p=lambda_p, P_m=P_m, J_r=J_r, v_n=v_n, omega_0=omega_0,
                        omega_n=omega_n)
     x0 = 1/(omega_n)
@@ -669,13 +674,13 @@ def startup_motor_mass(J_r, n_m, omega_n, v_n, *, out=None):
     Parameters
     ----------
     J_r : array_like
-        moment of inertia of one motor rotor [kg*m^2], > 0
+        moment of inertia of one motor rotor [kg*m^2], > 0; served from 5e-8 to 1e6
     n_m : array_like
-        number of motors on one side of the portal [1], > 0
+        number of motors on one side of the portal [1], > 0; served from 1e-6 to 4e6
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -689,15 +694,16 @@ def startup_motor_mass(J_r, n_m, omega_n, v_n, *, out=None):
             and (type(n_m) in (float, int) or type(n_m) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)
             and (type(v_n) in (float, int) or type(v_n) is np.float64)):
-        if (0 < J_r < 1e999 and 0 < n_m < 1e999 and 0 < omega_n < 1e999 and 0 < v_n < 1e999):
+        if (5e-8 <= J_r <= 1e6 and 1e-6 <= n_m <= 4e6 and 5e-5 <= omega_n <= 1.6e8
+                and 2e-7 <= v_n <= 1e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(J_r*n_m*omega_n**2/v_n**2)
             except (ArithmeticError, ValueError):
                 pass
-    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
-    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
-    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
-    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2', (5e-8, 1e6))
+    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1', (1e-6, 4e6))
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
     shape = _broadcast(J_r=J_r, n_m=n_m, omega_n=omega_n, v_n=v_n)
     return _into(out, shape, J_r*n_m*omega_n**2/v_n**2)
 
@@ -708,11 +714,11 @@ def startup_rated_force(P_m, n_m, v_n, *, out=None):
     Parameters
     ----------
     P_m : array_like
-        rated power of one motor [W], > 0
+        rated power of one motor [W], > 0; served from 0.005 to 5e10
     n_m : array_like
-        number of motors on one side of the portal [1], > 0
+        number of motors on one side of the portal [1], > 0; served from 1e-6 to 4e6
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -725,14 +731,14 @@ def startup_rated_force(P_m, n_m, v_n, *, out=None):
             and (type(P_m) in (float, int) or type(P_m) is np.float64)
             and (type(n_m) in (float, int) or type(n_m) is np.float64)
             and (type(v_n) in (float, int) or type(v_n) is np.float64)):
-        if (0 < P_m < 1e999 and 0 < n_m < 1e999 and 0 < v_n < 1e999):
+        if (0.005 <= P_m <= 5e10 and 1e-6 <= n_m <= 4e6 and 2e-7 <= v_n <= 1e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(P_m*n_m/v_n)
             except (ArithmeticError, ValueError):
                 pass
-    P_m = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
-    n_m = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
-    v_n = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    P_m = _checked('P_m', P_m, 'positive', 'rated power of one motor, W', (0.005, 5e10))
+    n_m = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1', (1e-6, 4e6))
+    v_n = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
     shape = _broadcast(P_m=P_m, n_m=n_m, v_n=v_n)
     return _into(out, shape, P_m*n_m/v_n)
 
@@ -743,11 +749,11 @@ def startup_no_load_speed(v_n, omega_0, omega_n, *, out=None):
     Parameters
     ----------
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     omega_0 : array_like
-        no-load (synchronous) motor speed [rad/s], > 0
+        no-load (synchronous) motor speed [rad/s], > 0; served from 6e-5 to 1.7e8
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -760,14 +766,14 @@ def startup_no_load_speed(v_n, omega_0, omega_n, *, out=None):
             and (type(v_n) in (float, int) or type(v_n) is np.float64)
             and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
-        if (0 < v_n < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+        if (2e-7 <= v_n <= 1e6 and 6e-5 <= omega_0 <= 1.7e8 and 5e-5 <= omega_n <= 1.6e8):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(omega_0*v_n/omega_n)
             except (ArithmeticError, ValueError):
                 pass
-    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
-    omega_0 = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
-    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
+    omega_0 = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s', (6e-5, 1.7e8))
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
     shape = _broadcast(v_n=v_n, omega_0=omega_0, omega_n=omega_n)
     return _into(out, shape, omega_0*v_n/omega_n)
 
@@ -778,11 +784,11 @@ def startup_backlash_at_rim(phi_b, v_n, omega_n, *, out=None):
     Parameters
     ----------
     phi_b : array_like
-        backlash of one drive, on its fast shaft [rad], >= 0
+        backlash of one drive, on its fast shaft [rad], >= 0; served from 0.0 to 6.3e6
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -795,14 +801,14 @@ def startup_backlash_at_rim(phi_b, v_n, omega_n, *, out=None):
             and (type(phi_b) in (float, int) or type(phi_b) is np.float64)
             and (type(v_n) in (float, int) or type(v_n) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
-        if (0 <= phi_b < 1e999 and 0 < v_n < 1e999 and 0 < omega_n < 1e999):
+        if (0.0 <= phi_b <= 6.3e6 and 2e-7 <= v_n <= 1e6 and 5e-5 <= omega_n <= 1.6e8):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(phi_b*v_n/omega_n)
             except (ArithmeticError, ValueError):
                 pass
-    phi_b   = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad')
-    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
-    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    phi_b   = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad', (0.0, 6.3e6))
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
     shape = _broadcast(phi_b=phi_b, v_n=v_n, omega_n=omega_n)
     return _into(out, shape, phi_b*v_n/omega_n)
 
@@ -813,17 +819,17 @@ def startup_first_slope(lambda_p, P_m, n_m, v_n, omega_0, omega_n, *, out=None):
     Parameters
     ----------
     lambda_p : array_like
-        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0; served from 1.2e-6 to 2.5e6
     P_m : array_like
-        rated power of one motor [W], > 0
+        rated power of one motor [W], > 0; served from 0.005 to 5e10
     n_m : array_like
-        number of motors on one side of the portal [1], > 0
+        number of motors on one side of the portal [1], > 0; served from 1e-6 to 4e6
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     omega_0 : array_like
-        no-load (synchronous) motor speed [rad/s], > 0
+        no-load (synchronous) motor speed [rad/s], > 0; served from 6e-5 to 1.7e8
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -839,18 +845,18 @@ def startup_first_slope(lambda_p, P_m, n_m, v_n, omega_0, omega_n, *, out=None):
             and (type(v_n) in (float, int) or type(v_n) is np.float64)
             and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
-        if (0 < lambda_p < 1e999 and 0 < P_m < 1e999 and 0 < n_m < 1e999 and 0 < v_n < 1e999
-                and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999):
+        if (1.2e-6 <= lambda_p <= 2.5e6 and 0.005 <= P_m <= 5e10 and 1e-6 <= n_m <= 4e6
+                and 2e-7 <= v_n <= 1e6 and 6e-5 <= omega_0 <= 1.7e8 and 5e-5 <= omega_n <= 1.6e8):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(P_m*lambda_p*n_m*omega_n/(omega_0*v_n**2))
             except (ArithmeticError, ValueError):
                 pass
-    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
-    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
-    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
-    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
-    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
-    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1', (1.2e-6, 2.5e6))
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W', (0.005, 5e10))
+    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1', (1e-6, 4e6))
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s', (6e-5, 1.7e8))
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
     shape = _broadcast(lambda_p=lambda_p, P_m=P_m, n_m=n_m, v_n=v_n, omega_0=omega_0, omega_n=omega_n)
     return _into(out, shape, P_m*lambda_p*n_m*omega_n/(omega_0*v_n**2))
 
@@ -861,11 +867,11 @@ def startup_slope_ratio(lambda_p, omega_0, omega_n, *, out=None):
     Parameters
     ----------
     lambda_p : array_like
-        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0; served from 1.2e-6 to 2.5e6
     omega_0 : array_like
-        no-load (synchronous) motor speed [rad/s], > 0
+        no-load (synchronous) motor speed [rad/s], > 0; served from 6e-5 to 1.7e8
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -883,15 +889,15 @@ def startup_slope_ratio(lambda_p, omega_0, omega_n, *, out=None):
             and (type(lambda_p) in (float, int) or type(lambda_p) is np.float64)
             and (type(omega_0) in (float, int) or type(omega_0) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)):
-        if (0 < lambda_p < 1e999 and 0 < omega_0 < 1e999 and 0 < omega_n < 1e999
+        if (1.2e-6 <= lambda_p <= 2.5e6 and 6e-5 <= omega_0 <= 1.7e8 and 5e-5 <= omega_n <= 1.6e8
                 and omega_0 - omega_n > 0):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(omega_0**(1/3)*(1/(omega_0 - omega_n))**(1/3)/lambda_p**(1/3))
             except (ArithmeticError, ValueError):
                 pass
-    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
-    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s')
-    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1', (1.2e-6, 2.5e6))
+    omega_0  = _checked('omega_0', omega_0, 'positive', 'no-load (synchronous) motor speed, rad/s', (6e-5, 1.7e8))
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
     shape = _broadcast(lambda_p=lambda_p, omega_0=omega_0, omega_n=omega_n)
     _required(omega_0 - omega_n, 'omega_0 > omega_n (the no-load speed above the rated one)')
     return _into(out, shape, omega_0**(1/3)*(1/(omega_0 - omega_n))**(1/3)/lambda_p**(1/3))
@@ -903,17 +909,17 @@ def startup_link_damping(zeta, c_l, J_r, n_m, omega_n, v_n, *, out=None):
     Parameters
     ----------
     zeta : array_like
-        damping ratio of a link against its motors [1], > 0
+        damping ratio of a link against its motors [1], > 0; served from 1e-8 to 200000.0
     c_l : array_like
-        stiffness of one elastic link (portal side and drive, at the rim) [N/m], > 0
+        stiffness of one elastic link (portal side and drive, at the rim) [N/m], > 0; served from 1.0 to 2e13
     J_r : array_like
-        moment of inertia of one motor rotor [kg*m^2], > 0
+        moment of inertia of one motor rotor [kg*m^2], > 0; served from 5e-8 to 1e6
     n_m : array_like
-        number of motors on one side of the portal [1], > 0
+        number of motors on one side of the portal [1], > 0; served from 1e-6 to 4e6
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -929,18 +935,18 @@ def startup_link_damping(zeta, c_l, J_r, n_m, omega_n, v_n, *, out=None):
             and (type(n_m) in (float, int) or type(n_m) is np.float64)
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)
             and (type(v_n) in (float, int) or type(v_n) is np.float64)):
-        if (0 < zeta < 1e999 and 0 < c_l < 1e999 and 0 < J_r < 1e999 and 0 < n_m < 1e999
-                and 0 < omega_n < 1e999 and 0 < v_n < 1e999):
+        if (1e-8 <= zeta <= 200000.0 and 1.0 <= c_l <= 2e13 and 5e-8 <= J_r <= 1e6
+                and 1e-6 <= n_m <= 4e6 and 5e-5 <= omega_n <= 1.6e8 and 2e-7 <= v_n <= 1e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(2*math.sqrt(J_r)*math.sqrt(c_l)*math.sqrt(n_m)*omega_n*zeta/v_n)
             except (ArithmeticError, ValueError):
                 pass
-    zeta    = _checked('zeta', zeta, 'positive', 'damping ratio of a link against its motors, 1')
-    c_l     = _checked('c_l', c_l, 'positive', 'stiffness of one elastic link (portal side and drive, at the rim), N/m')
-    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
-    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
-    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
-    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
+    zeta    = _checked('zeta', zeta, 'positive', 'damping ratio of a link against its motors, 1', (1e-8, 200000.0))
+    c_l     = _checked('c_l', c_l, 'positive', 'stiffness of one elastic link (portal side and drive, at the rim), N/m', (1.0, 2e13))
+    J_r     = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2', (5e-8, 1e6))
+    n_m     = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1', (1e-6, 4e6))
+    omega_n = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
+    v_n     = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
     shape = _broadcast(zeta=zeta, c_l=c_l, J_r=J_r, n_m=n_m, omega_n=omega_n, v_n=v_n)
     return _into(out, shape, 2*np.sqrt(J_r)*np.sqrt(c_l)*np.sqrt(n_m)*omega_n*zeta/v_n)
 
@@ -951,23 +957,23 @@ def startup_rigid_breakaway(lambda_p, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w
     Parameters
     ----------
     lambda_p : array_like
-        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0
+        starting-force multiple λ: force of the first characteristic at standstill over the rated force [1], > 0; served from 1.2e-6 to 2.5e6
     P_m : array_like
-        rated power of one motor [W], > 0
+        rated power of one motor [W], > 0; served from 0.005 to 5e10
     n_m : array_like
-        number of motors on one side of the portal [1], > 0
+        number of motors on one side of the portal [1], > 0; served from 1e-6 to 4e6
     v_n : array_like
-        rated travel speed of the crane [m/s], > 0
+        rated travel speed of the crane [m/s], > 0; served from 2e-7 to 1e6
     m_k : array_like
-        mass of the crane [kg], > 0
+        mass of the crane [kg], > 0; served from 0.1 to 5e11
     J_r : array_like
-        moment of inertia of one motor rotor [kg*m^2], > 0
+        moment of inertia of one motor rotor [kg*m^2], > 0; served from 5e-8 to 1e6
     omega_n : array_like
-        rated motor speed [rad/s], > 0
+        rated motor speed [rad/s], > 0; served from 5e-5 to 1.6e8
     W_f : array_like
-        friction resistance to travel [N], > 0
+        friction resistance to travel [N], > 0; served from 0.01 to 6e10
     W_w : array_like
-        wind resistance to travel [N], >= 0
+        wind resistance to travel [N], >= 0; served from 0.0 to 6e10
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -986,22 +992,22 @@ def startup_rigid_breakaway(lambda_p, P_m, n_m, v_n, m_k, J_r, omega_n, W_f, W_w
             and (type(omega_n) in (float, int) or type(omega_n) is np.float64)
             and (type(W_f) in (float, int) or type(W_f) is np.float64)
             and (type(W_w) in (float, int) or type(W_w) is np.float64)):
-        if (0 < lambda_p < 1e999 and 0 < P_m < 1e999 and 0 < n_m < 1e999 and 0 < v_n < 1e999
-                and 0 < m_k < 1e999 and 0 < J_r < 1e999 and 0 < omega_n < 1e999 and 0 < W_f < 1e999
-                and 0 <= W_w < 1e999):
+        if (1.2e-6 <= lambda_p <= 2.5e6 and 0.005 <= P_m <= 5e10 and 1e-6 <= n_m <= 4e6
+                and 2e-7 <= v_n <= 1e6 and 0.1 <= m_k <= 5e11 and 5e-8 <= J_r <= 1e6
+                and 5e-5 <= omega_n <= 1.6e8 and 0.01 <= W_f <= 6e10 and 0.0 <= W_w <= 6e10):
             try:    # a failed check or a math error: the array path decides
                 return np.float64((2*P_m*lambda_p*n_m/v_n - W_f - W_w)/(2*J_r*n_m*omega_n**2/v_n**2 + m_k))
             except (ArithmeticError, ValueError):
                 pass
-    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1')
-    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W')
-    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1')
-    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s')
-    m_k      = _checked('m_k', m_k, 'positive', 'mass of the crane, kg')
-    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2')
-    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s')
-    W_f      = _checked('W_f', W_f, 'positive', 'friction resistance to travel, N')
-    W_w      = _checked('W_w', W_w, 'nonnegative', 'wind resistance to travel, N')
+    lambda_p = _checked('lambda_p', lambda_p, 'positive', 'starting-force multiple λ: force of the first characteristic at standstill over the rated force, 1', (1.2e-6, 2.5e6))
+    P_m      = _checked('P_m', P_m, 'positive', 'rated power of one motor, W', (0.005, 5e10))
+    n_m      = _checked('n_m', n_m, 'positive', 'number of motors on one side of the portal, 1', (1e-6, 4e6))
+    v_n      = _checked('v_n', v_n, 'positive', 'rated travel speed of the crane, m/s', (2e-7, 1e6))
+    m_k      = _checked('m_k', m_k, 'positive', 'mass of the crane, kg', (0.1, 5e11))
+    J_r      = _checked('J_r', J_r, 'positive', 'moment of inertia of one motor rotor, kg*m^2', (5e-8, 1e6))
+    omega_n  = _checked('omega_n', omega_n, 'positive', 'rated motor speed, rad/s', (5e-5, 1.6e8))
+    W_f      = _checked('W_f', W_f, 'positive', 'friction resistance to travel, N', (0.01, 6e10))
+    W_w      = _checked('W_w', W_w, 'nonnegative', 'wind resistance to travel, N', (0.0, 6e10))
     shape = _broadcast(lambda_p=lambda_p, P_m=P_m, n_m=n_m, v_n=v_n, m_k=m_k, J_r=J_r, omega_n=omega_n,
                        W_f=W_f, W_w=W_w)
     return _into(out, shape, (2*P_m*lambda_p*n_m/v_n - W_f - W_w)/(2*J_r*n_m*omega_n**2/v_n**2 + m_k))
@@ -1013,19 +1019,19 @@ def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c, *, out=None):
     Parameters
     ----------
     psi : array_like
-        dynamic coefficient of the hoisted load (printed у) [1], > 0
+        dynamic coefficient of the hoisted load (printed у) [1], > 0; served from 1e-6 to 2e6
     G_g : array_like
-        rated weight of the load G_г [N], > 0
+        rated weight of the load G_г [N], > 0; served from 0.05 to 5e11
     G_pch : array_like
-        weight of the slewing part G_пч [N], > 0
+        weight of the slewing part G_пч [N], > 0; served from 0.5 to 3e12
     G_vs : array_like
-        weight of the portal's upper structure G_вс [N], > 0
+        weight of the portal's upper structure G_вс [N], > 0; served from 0.1 to 1e12
     L_max : array_like
-        maximum reach [m], > 0
+        maximum reach [m], > 0; served from 1.5e-5 to 4e7
     x_o : array_like
-        distance of the slewing part's centre of gravity from the slewing axis [m], > 0
+        distance of the slewing part's centre of gravity from the slewing axis [m], > 0; served from 5e-7 to 5e6
     c : array_like
-        arm of the couple by which the slewing part bears on the circular rail [m], > 0
+        arm of the couple by which the slewing part bears on the circular rail [m], > 0; served from 3e-6 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1042,20 +1048,21 @@ def max_support_load(psi, G_g, G_pch, G_vs, L_max, x_o, c, *, out=None):
             and (type(L_max) in (float, int) or type(L_max) is np.float64)
             and (type(x_o) in (float, int) or type(x_o) is np.float64)
             and (type(c) in (float, int) or type(c) is np.float64)):
-        if (0 < psi < 1e999 and 0 < G_g < 1e999 and 0 < G_pch < 1e999 and 0 < G_vs < 1e999
-                and 0 < L_max < 1e999 and 0 < x_o < 1e999 and 0 < c < 1e999):
+        if (1e-6 <= psi <= 2e6 and 0.05 <= G_g <= 5e11 and 0.5 <= G_pch <= 3e12
+                and 0.1 <= G_vs <= 1e12 and 1.5e-5 <= L_max <= 4e7 and 5e-7 <= x_o <= 5e6
+                and 3e-6 <= c <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = G_g*psi
                 return np.float64((1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c)
             except (ArithmeticError, ValueError):
                 pass
-    psi   = _checked('psi', psi, 'positive', 'dynamic coefficient of the hoisted load (printed у), 1')
-    G_g   = _checked('G_g', G_g, 'positive', 'rated weight of the load G_г, N')
-    G_pch = _checked('G_pch', G_pch, 'positive', 'weight of the slewing part G_пч, N')
-    G_vs  = _checked('G_vs', G_vs, 'positive', "weight of the portal's upper structure G_вс, N")
-    L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m')
-    x_o   = _checked('x_o', x_o, 'positive', "distance of the slewing part's centre of gravity from the slewing axis, m")
-    c     = _checked('c', c, 'positive', 'arm of the couple by which the slewing part bears on the circular rail, m')
+    psi   = _checked('psi', psi, 'positive', 'dynamic coefficient of the hoisted load (printed у), 1', (1e-6, 2e6))
+    G_g   = _checked('G_g', G_g, 'positive', 'rated weight of the load G_г, N', (0.05, 5e11))
+    G_pch = _checked('G_pch', G_pch, 'positive', 'weight of the slewing part G_пч, N', (0.5, 3e12))
+    G_vs  = _checked('G_vs', G_vs, 'positive', "weight of the portal's upper structure G_вс, N", (0.1, 1e12))
+    L_max = _checked('L_max', L_max, 'positive', 'maximum reach, m', (1.5e-5, 4e7))
+    x_o   = _checked('x_o', x_o, 'positive', "distance of the slewing part's centre of gravity from the slewing axis, m", (5e-7, 5e6))
+    c     = _checked('c', c, 'positive', 'arm of the couple by which the slewing part bears on the circular rail, m', (3e-6, 1e7))
     shape = _broadcast(psi=psi, G_g=G_g, G_pch=G_pch, G_vs=G_vs, L_max=L_max, x_o=x_o, c=c)
     x0 = G_g*psi
     return _into(out, shape, (1/4)*G_pch + (1/4)*G_vs + (1/4)*x0 + (1/2)*(-G_pch*x_o + L_max*x0)/c)

@@ -17,36 +17,40 @@ import numpy as np
 __all__ = ['pulsating_force']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -80,7 +84,7 @@ def pulsating_force(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -91,13 +95,13 @@ def pulsating_force(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0 <= t < 1e999):
+        if (0.0 <= t <= 2e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = math.sin(1.0471975511965979*t)
                 return np.float64(450*x0 - 150*abs(3*x0 - 2) + 300)
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e7))
     shape = _broadcast(t=t)
     x0 = np.sin(1.0471975511965979*t)
     if out is None and not shape:

@@ -18,36 +18,40 @@ import numpy as np
 __all__ = ['pointed_tip_shift', 'tip_thickness_shift', 'undercut_limit']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -165,7 +169,7 @@ def pointed_tip_shift(z, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -174,7 +178,7 @@ def pointed_tip_shift(z, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    z = _checked('z', z, 'positive', 'number of teeth, 1')
+    z = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
     shape = _broadcast(z=z)
     return _into(out, shape, _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, 0))
 
@@ -185,9 +189,9 @@ def tip_thickness_shift(z, sigma, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     sigma : array_like
-        tip tooth thickness over the module, s_a/m [1], >= 0
+        tip tooth thickness over the module, s_a/m [1], >= 0; served from 0.0 to 500000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -196,8 +200,8 @@ def tip_thickness_shift(z, sigma, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    z     = _checked('z', z, 'positive', 'number of teeth, 1')
-    sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1')
+    z     = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    sigma = _checked('sigma', sigma, 'nonnegative', 'tip tooth thickness over the module, s_a/m, 1', (0.0, 500000.0))
     shape = _broadcast(z=z, sigma=sigma)
     return _into(out, shape, _tip_shift(z, 6288211335136391/18014398509481984, 1, 0, sigma))
 
@@ -208,7 +212,7 @@ def undercut_limit(z, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -219,11 +223,11 @@ def undercut_limit(z, *, out=None):
     """
     if (out is None
             and (type(z) in (float, int) or type(z) is np.float64)):
-        if (0 < z < 1e999):
+        if (8e-6 <= z <= 1.5e8):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1 - 0.05848888922025548*z)
             except (ArithmeticError, ValueError):
                 pass
-    z = _checked('z', z, 'positive', 'number of teeth, 1')
+    z = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
     shape = _broadcast(z=z)
     return _into(out, shape, 1 - 0.05848888922025548*z)

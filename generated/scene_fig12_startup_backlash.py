@@ -23,36 +23,40 @@ import numpy as np
 __all__ = ['startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -149,7 +153,7 @@ def startup_backlash_at_rim(phi_b, *, out=None):
     Parameters
     ----------
     phi_b : array_like
-        backlash of one drive, on its fast shaft [rad], >= 0
+        backlash of one drive, on its fast shaft [rad], >= 0; served from 0.0 to 6.3e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -160,12 +164,12 @@ def startup_backlash_at_rim(phi_b, *, out=None):
     """
     if (out is None
             and (type(phi_b) in (float, int) or type(phi_b) is np.float64)):
-        if (0 <= phi_b < 1e999):
+        if (0.0 <= phi_b <= 6.3e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64((4803839602528529/881921639752878848)*phi_b)
             except (ArithmeticError, ValueError):
                 pass
-    phi_b = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad')
+    phi_b = _checked('phi_b', phi_b, 'nonnegative', 'backlash of one drive, on its fast shaft, rad', (0.0, 6.3e6))
     shape = _broadcast(phi_b=phi_b)
     return _into(out, shape, (4803839602528529/881921639752878848)*phi_b)
 

@@ -21,36 +21,40 @@ import numpy as np
 __all__ = ['operating_pressure_angle', 'shift_sum', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'undercut_limit']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -197,11 +201,11 @@ def tip_diameter(z, x, dy, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     x : array_like
-        shift coefficient of the gear [1]
+        shift coefficient of the gear [1]; served from -1e6 to 1e6
     dy : array_like
-        tip shortening coefficient Δy (>= 0) [1], >= 0
+        tip shortening coefficient Δy (>= 0) [1], >= 0; served from 0.0 to 300000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -214,14 +218,14 @@ def tip_diameter(z, x, dy, *, out=None):
             and (type(z) in (float, int) or type(z) is np.float64)
             and (type(x) in (float, int) or type(x) is np.float64)
             and (type(dy) in (float, int) or type(dy) is np.float64)):
-        if (0 < z < 1e999 and -1e999 < x < 1e999 and 0 <= dy < 1e999):
+        if (8e-6 <= z <= 1.5e8 and -1e6 <= x <= 1e6 and 0.0 <= dy <= 300000.0):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-5764607523034235/288230376151711744*dy + (5764607523034235/288230376151711744)*x + (5764607523034235/576460752303423488)*z + 5764607523034235/288230376151711744)
             except (ArithmeticError, ValueError):
                 pass
-    z  = _checked('z', z, 'positive', 'number of teeth, 1')
-    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
-    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    z  = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1', (-1e6, 1e6))
+    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1', (0.0, 300000.0))
     shape = _broadcast(z=z, x=x, dy=dy)
     return _into(out, shape, -5764607523034235/288230376151711744*dy + (5764607523034235/288230376151711744)*x + (5764607523034235/576460752303423488)*z + 5764607523034235/288230376151711744)
 
@@ -232,11 +236,11 @@ def tip_thickness(z, x, dy, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     x : array_like
-        shift coefficient of the gear [1]
+        shift coefficient of the gear [1]; served from -1e6 to 1e6
     dy : array_like
-        tip shortening coefficient Δy (>= 0) [1], >= 0
+        tip shortening coefficient Δy (>= 0) [1], >= 0; served from 0.0 to 300000.0
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -245,9 +249,9 @@ def tip_thickness(z, x, dy, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
-    z  = _checked('z', z, 'positive', 'number of teeth, 1')
-    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1')
-    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1')
+    z  = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
+    x  = _checked('x', x, 'real', 'shift coefficient of the gear, 1', (-1e6, 1e6))
+    dy = _checked('dy', dy, 'nonnegative', 'tip shortening coefficient Δy (>= 0), 1', (0.0, 300000.0))
     shape = _broadcast(z=z, x=x, dy=dy)
     return _into(out, shape, (5764607523034235/576460752303423488)*(-2*dy + 2*x + z + 2)*_tip_half_angle(x, z, 6288211335136391/18014398509481984, 1, dy, 'x: the tip circle lies inside the base circle (shift too negative)'))
 
@@ -258,9 +262,9 @@ def contact_ratio(x1, x2, *, out=None):
     Parameters
     ----------
     x1 : array_like
-        shift coefficient of the pinion [1]
+        shift coefficient of the pinion [1]; served from -1e6 to 1e6
     x2 : array_like
-        shift coefficient of the wheel [1]
+        shift coefficient of the wheel [1]; served from -1e6 to 1e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -269,8 +273,8 @@ def contact_ratio(x1, x2, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    x1 = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1')
-    x2 = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1')
+    x1 = _checked('x1', x1, 'real', 'shift coefficient of the pinion, 1', (-1e6, 1e6))
+    x2 = _checked('x2', x2, 'real', 'shift coefficient of the wheel, 1', (-1e6, 1e6))
     shape = _broadcast(x1=x1, x2=x2)
     return _into(out, shape, 3.9788735772973833*np.tan(_acos_checked(23.49231551964771/(2*x1 + 27), 'x1: the tip circle lies inside the base circle (shift too negative)')) + 6.684507609859604*np.tan(_acos_checked(19.733545036504076/(x2 + 22), 'x2: the tip circle lies inside the base circle (shift too negative)')) - 4.351545605487496)
 
@@ -281,7 +285,7 @@ def undercut_limit(z, *, out=None):
     Parameters
     ----------
     z : array_like
-        number of teeth [1], > 0
+        number of teeth [1], > 0; served from 8e-6 to 1.5e8
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -292,11 +296,11 @@ def undercut_limit(z, *, out=None):
     """
     if (out is None
             and (type(z) in (float, int) or type(z) is np.float64)):
-        if (0 < z < 1e999):
+        if (8e-6 <= z <= 1.5e8):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1 - 0.05848888922025548*z)
             except (ArithmeticError, ValueError):
                 pass
-    z = _checked('z', z, 'positive', 'number of teeth, 1')
+    z = _checked('z', z, 'positive', 'number of teeth, 1', (8e-6, 1.5e8))
     shape = _broadcast(z=z)
     return _into(out, shape, 1 - 0.05848888922025548*z)

@@ -19,36 +19,40 @@ import numpy as np
 __all__ = ['rigid_hook_speed_hoisting', 'rigid_hook_speed_lowering', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'elastic_gearbox_torque']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -126,7 +130,7 @@ def rigid_hook_speed_hoisting(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time since the emergency stop [s], >= 0
+        time since the emergency stop [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -137,14 +141,14 @@ def rigid_hook_speed_hoisting(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0 <= t < 1e999):
+        if (0.0 <= t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = (t <= 3602879701896397/36028797018963968)
                 x1 = (t <= 3602879701896397/9007199254740992)
                 return np.float64((((35184372088832/7374644389819187)*((5526748243772219/35184372088832 - 31563240217898936038604453381039675/240814792243731584959521748775076*t) if x0 else (380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 4073022120124561968745557783548175/11467371059225313569501035655956*t) if x1 else (25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 148620505179114067723167995330035715/240814792243731584959521748775076*t))) if (((t < 332730682526853830747576052992198902627202103411/277633197038935744755715933699117118675904102400)) if x0 else ((((t < 380203393868225896107927431037056805011223607411/752360310452656372006581127860164255283570278400)) if x1 else ((t < 77077911694384208659789090704944464415547392109093/167331812936068246568838292165462359392118804316160))))) else (0)))
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     x0 = np.less_equal(t, 3602879701896397/36028797018963968)
     x1 = np.less_equal(t, 3602879701896397/9007199254740992)
@@ -157,7 +161,7 @@ def rigid_hook_speed_lowering(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time since the emergency stop [s], >= 0
+        time since the emergency stop [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -168,14 +172,14 @@ def rigid_hook_speed_lowering(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0 <= t < 1e999):
+        if (0.0 <= t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = (t <= 3602879701896397/36028797018963968)
                 x1 = (t <= 3602879701896397/9007199254740992)
                 return np.float64((((35184372088832/7374644389819187)*(((31563240217898936038604453381039675/240814792243731584959521748775076)*t + 5526748243772219/35184372088832) if x0 else (380203393868225896107927431037056805011223607411/2118229313699556594490145576529263574864887808 - 22406984086817929266447806692432325/240814792243731584959521748775076*t) if x1 else (25692637231461402886596363568314821471849130703031/90377784051181081364912877931915245860901879808 - 85494024743316195645959088567956365/240814792243731584959521748775076*t))) if ((True) if x0 else ((((t < 380203393868225896107927431037056805011223607411/197093916374784882495149260461930017931762073600)) if x1 else ((t < 77077911694384208659789090704944464415547392109093/96257714494100695911375013138488377011087354101760))))) else (0)))
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s')
+    t = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     x0 = np.less_equal(t, 3602879701896397/36028797018963968)
     x1 = np.less_equal(t, 3602879701896397/9007199254740992)

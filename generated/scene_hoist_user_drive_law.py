@@ -24,36 +24,40 @@ import numpy as np
 __all__ = ['drive_acceleration', 'drive_speed', 'relative_forcing', 'rope_stretch', 'rope_stretch_rate', 'rope_force', 'dynamic_coefficient', 'load_acceleration']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -198,7 +202,7 @@ def drive_acceleration(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -207,7 +211,7 @@ def drive_acceleration(t, *, out=None):
     ndarray
         [m/s^2], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (2*t if np.less(t, 1/4) else 1/2 if np.less(t, 1) else 5/2 - 2*t if np.less(t, 5/4) else 0)
@@ -232,7 +236,7 @@ def drive_speed(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -241,7 +245,7 @@ def drive_speed(t, *, out=None):
     ndarray
         [m/s], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (t**2 if np.less(t, 1/4) else (1/2)*t - 1/16 if np.less(t, 1) else -t**2 + (5/2)*t - 17/16 if np.less(t, 5/4) else 1/2)
@@ -267,7 +271,7 @@ def relative_forcing(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -276,7 +280,7 @@ def relative_forcing(t, *, out=None):
     ndarray
         [m/s^2], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (10*t + 981/20 if np.less(t, 1/4) else 1031/20 if np.less(t, 1) else 1231/20 - 10*t if np.less(t, 5/4) else 981/20)
@@ -301,7 +305,7 @@ def rope_stretch(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -310,7 +314,7 @@ def rope_stretch(t, *, out=None):
     ndarray
         [m], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (981/12500 - 2/3125*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1031/12500 - 2.1237622053565318e-05*np.cos(25*t - 25/8) if np.less(t, 1) else -2.1237622053565318e-05*np.cos(25*t - 25/8) + (2/3125)*_sin_remainder(25*t - 25, 1) + 1031/12500 if np.less(t, 5/4) else 981/12500 - 2.81703877964031e-06*np.sin(25*t - 125/8))
@@ -338,7 +342,7 @@ def rope_stretch_rate(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -347,7 +351,7 @@ def rope_stretch_rate(t, *, out=None):
     ndarray
         [m/s], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return ((4/125)*np.sin((25/2)*t)**2 if np.less(t, 1/4) else 0.0005309405513391329*np.sin(25*t - 25/8) if np.less(t, 1) else -4/125*np.sin((25/2)*t - 25/2)**2 + 0.0005309405513391329*np.sin(25*t - 25/8) if np.less(t, 5/4) else -7.042596949100774e-05*np.cos(25*t - 125/8))
@@ -374,7 +378,7 @@ def rope_force(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -383,7 +387,7 @@ def rope_force(t, *, out=None):
     ndarray
         [N], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (78480 - 640*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 82480 - 21.237622053565318*np.cos(25*t - 25/8) if np.less(t, 1) else -21.237622053565318*np.cos(25*t - 25/8) + 640*_sin_remainder(25*t - 25, 1) + 82480 if np.less(t, 5/4) else 78480 - 2.81703877964031*np.sin(25*t - 125/8))
@@ -411,7 +415,7 @@ def dynamic_coefficient(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -420,7 +424,7 @@ def dynamic_coefficient(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (1 - 8/981*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1031/981 - 0.0002706119018038394*np.cos(25*t - 25/8) if np.less(t, 1) else -0.0002706119018038394*np.cos(25*t - 25/8) + (8/981)*_sin_remainder(25*t - 25, 1) + 1031/981 if np.less(t, 5/4) else 1 - 3.589498954689488e-05*np.sin(25*t - 125/8))
@@ -448,7 +452,7 @@ def load_acceleration(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0
+        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -457,7 +461,7 @@ def load_acceleration(t, *, out=None):
     ndarray
         [m/s^2], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s')
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (-2/25*_sin_remainder(25*t, 1) if np.less(t, 1/4) else 1/2 - 0.0026547027566956646*np.cos(25*t - 25/8) if np.less(t, 1) else -0.0026547027566956646*np.cos(25*t - 25/8) + (2/25)*_sin_remainder(25*t - 25, 1) + 1/2 if np.less(t, 5/4) else -0.0003521298474550387*np.sin(25*t - 125/8))

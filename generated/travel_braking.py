@@ -23,36 +23,40 @@ import numpy as np
 __all__ = ['natural_frequency', 'relative_displacement', 'elastic_force', 'peak_elastic_force', 'peak_time', 'rigid_link_force', 'velocity_m1', 'velocity_m2']
 
 
-def _checked(name, value, sign, what):
+def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
-    finite number of the required sign, TypeError if it is not a number."""
-    if type(value) in (float, int, np.float64):  # a plain number: no array pass
+    finite number of the required sign or lies outside ``serves`` (low, high),
+    the range the function returns finite values for; TypeError if it is not
+    a number."""
+    scalar = type(value) in (float, int, np.float64)
+    if scalar:                                   # a plain number: no array pass
         number = float(value) if abs(value) < 1e308 else float("inf")
         if number != number or abs(number) == float("inf"):
             raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
-        if sign == "positive" and not number > 0:
-            raise ValueError(f"{name} must be > 0 ({what}), got {number!r}")
-        if sign == "nonnegative" and not number >= 0:
-            raise ValueError(f"{name} must be >= 0 ({what}), got {number!r}")
-        return np.float64(number)
-    if isinstance(value, (str, bytes)):
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got a string {value!r}")
-    array = np.asarray(value)
-    if array.dtype.kind not in "iuf":
-        raise TypeError(f"{name} must be a number or array of numbers "
-                        f"({what}), got dtype {array.dtype}")
-    array = array.astype(float, copy=False)
-    if array.size == 0:
-        return array
-    low, high = array.min(), array.max()
-    if not (np.isfinite(low) and np.isfinite(high)):
-        raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
+        low = high = number
+    else:
+        if isinstance(value, (str, bytes)):
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got a string {value!r}")
+        array = np.asarray(value)
+        if array.dtype.kind not in "iuf":
+            raise TypeError(f"{name} must be a number or array of numbers "
+                            f"({what}), got dtype {array.dtype}")
+        array = array.astype(float, copy=False)
+        if array.size == 0:
+            return array
+        low, high = array.min(), array.max()
+        if not (np.isfinite(low) and np.isfinite(high)):
+            raise ValueError(f"{name} must be finite ({what}), got a NaN or inf")
     if sign == "positive" and not low > 0:
         raise ValueError(f"{name} must be > 0 ({what}), got {low!r}")
     if sign == "nonnegative" and not low >= 0:
         raise ValueError(f"{name} must be >= 0 ({what}), got {low!r}")
-    return array
+    if serves is not None and not serves[0] <= low <= high <= serves[1]:
+        bad = low if low < serves[0] else high
+        raise ValueError(f"{name} must be within [{serves[0]!r}, {serves[1]!r}] ({what}; "
+                         f"the range this function serves), got {float(bad)!r}")
+    return np.float64(number) if scalar else array
 
 
 def _broadcast(**arrays):
@@ -113,11 +117,11 @@ def natural_frequency(m1, m2, c, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
-        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0; served from 0.1 to 1e15
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -130,14 +134,14 @@ def natural_frequency(m1, m2, c, *, out=None):
             and (type(m1) in (float, int) or type(m1) is np.float64)
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(c) in (float, int) or type(c) is np.float64)):
-        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999):
+        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(math.sqrt(c)*math.sqrt(m1 + m2)/(math.sqrt(m1)*math.sqrt(m2)))
             except (ArithmeticError, ValueError):
                 pass
-    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     shape = _broadcast(m1=m1, m2=m2, c=c)
     return _into(out, shape, np.sqrt(c)*np.sqrt(m1 + m2)/(np.sqrt(m1)*np.sqrt(m2)))
 
@@ -148,17 +152,17 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
     Parameters
     ----------
     t : array_like
-        time since the brake was applied [s], >= 0
+        time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
-        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0; served from 0.1 to 1e15
     P_t : array_like
-        braking force [N], > 0
+        braking force [N], > 0; served from 0.001 to 1e12
     W : array_like
-        static travel resistance [N], >= 0
+        static travel resistance [N], >= 0; served from 0.0 to 1e11
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -174,8 +178,8 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
             and (type(c) in (float, int) or type(c) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
-                and 0 < P_t < 1e999 and 0 <= W < 1e999):
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+                and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
                 k0 = (1/2)*math.sqrt(c*x0/(m1*m2))
@@ -183,12 +187,12 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
                 return np.float64(k1*math.sin(k0*t)**2)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
-    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
-    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
     k0 = (1/2)*np.sqrt(c*x0/(m1*m2))
@@ -209,17 +213,17 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
     Parameters
     ----------
     t : array_like
-        time since the brake was applied [s], >= 0
+        time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
-        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0; served from 0.1 to 1e15
     P_t : array_like
-        braking force [N], > 0
+        braking force [N], > 0; served from 0.001 to 1e12
     W : array_like
-        static travel resistance [N], >= 0
+        static travel resistance [N], >= 0; served from 0.0 to 1e11
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -235,8 +239,8 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
             and (type(c) in (float, int) or type(c) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
-                and 0 < P_t < 1e999 and 0 <= W < 1e999):
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+                and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
                 k0 = (1/2)*math.sqrt(c*x0/(m1*m2))
@@ -244,12 +248,12 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
                 return np.float64(k1*math.sin(k0*t)**2)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
-    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
-    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W)
     x0 = m1 + m2
     k0 = (1/2)*np.sqrt(c*x0/(m1*m2))
@@ -270,13 +274,13 @@ def peak_elastic_force(m1, m2, P_t, W, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     P_t : array_like
-        braking force [N], > 0
+        braking force [N], > 0; served from 0.001 to 1e12
     W : array_like
-        static travel resistance [N], >= 0
+        static travel resistance [N], >= 0; served from 0.0 to 1e11
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -290,15 +294,16 @@ def peak_elastic_force(m1, m2, P_t, W, *, out=None):
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < P_t < 1e999 and 0 <= W < 1e999):
+        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.001 <= P_t <= 1e12
+                and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2))
             except (ArithmeticError, ValueError):
                 pass
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
-    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
     shape = _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
     return _into(out, shape, 2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2))
 
@@ -309,11 +314,11 @@ def peak_time(m1, m2, c, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
-        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0; served from 0.1 to 1e15
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -326,14 +331,14 @@ def peak_time(m1, m2, c, *, out=None):
             and (type(m1) in (float, int) or type(m1) is np.float64)
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(c) in (float, int) or type(c) is np.float64)):
-        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999):
+        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(3.141592653589793*math.sqrt(m1)*math.sqrt(m2)/(math.sqrt(c)*math.sqrt(m1 + m2)))
             except (ArithmeticError, ValueError):
                 pass
-    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     shape = _broadcast(m1=m1, m2=m2, c=c)
     return _into(out, shape, 3.141592653589793*np.sqrt(m1)*np.sqrt(m2)/(np.sqrt(c)*np.sqrt(m1 + m2)))
 
@@ -344,13 +349,13 @@ def rigid_link_force(m1, m2, P_t, W, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     P_t : array_like
-        braking force [N], > 0
+        braking force [N], > 0; served from 0.001 to 1e12
     W : array_like
-        static travel resistance [N], >= 0
+        static travel resistance [N], >= 0; served from 0.0 to 1e11
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -364,15 +369,16 @@ def rigid_link_force(m1, m2, P_t, W, *, out=None):
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < P_t < 1e999 and 0 <= W < 1e999):
+        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.001 <= P_t <= 1e12
+                and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-_diff_of_products(W, m1, P_t, m2)/(m1 + m2))
             except (ArithmeticError, ValueError):
                 pass
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
-    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
     shape = _broadcast(m1=m1, m2=m2, P_t=P_t, W=W)
     return _into(out, shape, -_diff_of_products(W, m1, P_t, m2)/(m1 + m2))
 
@@ -383,19 +389,19 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time since the brake was applied [s], >= 0
+        time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
-        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0; served from 0.1 to 1e15
     P_t : array_like
-        braking force [N], > 0
+        braking force [N], > 0; served from 0.001 to 1e12
     W : array_like
-        static travel resistance [N], >= 0
+        static travel resistance [N], >= 0; served from 0.0 to 1e11
     v0 : array_like
-        travel speed when braking begins [m/s], > 0
+        travel speed when braking begins [m/s], > 0; served from 1e-7 to 5e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -412,8 +418,8 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)
             and (type(v0) in (float, int) or type(v0) is np.float64)):
-        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
-                and 0 < P_t < 1e999 and 0 <= W < 1e999 and 0 < v0 < 1e999):
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+                and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11 and 1e-7 <= v0 <= 5e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
                 x1 = 1/m1
@@ -423,13 +429,13 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
                 return np.float64(k0*t + k2*math.sin(k1*t) + v0)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
-    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
-    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
+    v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s', (1e-7, 5e6))
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
     x1 = 1/(m1)
@@ -455,19 +461,19 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time since the brake was applied [s], >= 0
+        time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
     m2 : array_like
-        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0
+        reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
-        reduced stiffness of the transmission (mainly shafts) [N/m], > 0
+        reduced stiffness of the transmission (mainly shafts) [N/m], > 0; served from 0.1 to 1e15
     P_t : array_like
-        braking force [N], > 0
+        braking force [N], > 0; served from 0.001 to 1e12
     W : array_like
-        static travel resistance [N], >= 0
+        static travel resistance [N], >= 0; served from 0.0 to 1e11
     v0 : array_like
-        travel speed when braking begins [m/s], > 0
+        travel speed when braking begins [m/s], > 0; served from 1e-7 to 5e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -484,8 +490,8 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)
             and (type(v0) in (float, int) or type(v0) is np.float64)):
-        if (0 <= t < 1e999 and 0 < m1 < 1e999 and 0 < m2 < 1e999 and 0 < c < 1e999
-                and 0 < P_t < 1e999 and 0 <= W < 1e999 and 0 < v0 < 1e999):
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+                and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11 and 1e-7 <= v0 <= 5e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
                 x1 = 1/m2
@@ -495,13 +501,13 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
                 return np.float64(k0*t + k2*math.sin(k1*t) + v0)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s')
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg')
-    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg')
-    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m')
-    P_t = _checked('P_t', P_t, 'positive', 'braking force, N')
-    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N')
-    v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s')
+    t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
+    c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
+    P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
+    W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
+    v0  = _checked('v0', v0, 'positive', 'travel speed when braking begins, m/s', (1e-7, 5e6))
     shape = _broadcast(t=t, m1=m1, m2=m2, c=c, P_t=P_t, W=W, v0=v0)
     x0 = m1 + m2
     x1 = 1/(m2)

@@ -50,10 +50,12 @@ DAMPERS = (nu1, nu2, nu_y, nu_z, nu_t)
 
 
 def _entries(role: str, sign: str, rows) -> list[PhysicalSymbol]:
-    """Table rows (symbol, dimension, unit, description[, sample range])."""
+    """Table rows (symbol, dimension, unit, description[, sample range[, the
+    range generated functions serve]])."""
     return [PhysicalSymbol(row[0], row[1], row[2], row[3], role,
                            "nonnegative" if row[0] in DAMPERS else sign,
-                           row[4] if len(row) > 4 else (0.5, 2.0)) for row in rows]
+                           row[4] if len(row) > 4 else (0.5, 2.0),
+                           row[5] if len(row) > 5 else None) for row in rows]
 
 
 MODEL_SYMBOLS = [
@@ -88,8 +90,12 @@ MODEL_SYMBOLS = [
         (F0, force, "N", "pretension of both branches at rest", (1e3, 1e6)),
         (F1, force, "N", "force in the tight branch (F0 + C_t*e1 in the model)", (1e3, 1e6)),
         (F2, force, "N", "force in the slack branch (F0 + C_z*e2 in the model)", (1e3, 1e6)),
-        (mu, ONE, "1", "friction coefficient between element and drum", (0.05, 0.5)),
-        (alpha, ONE, "rad", "wrap angle of the element on the drum", (0.5, 10.0)),
+        # exp(mu*alpha) of (19) is finite while mu*alpha < 709: a friction
+        # coefficient of at most 2 and a wrap of at most 300 rad (48 turns).
+        (mu, ONE, "1", "friction coefficient between element and drum", (0.05, 0.5),
+         (5e-8, 2.0)),
+        (alpha, ONE, "rad", "wrap angle of the element on the drum", (0.5, 10.0),
+         (5e-7, 300.0)),
         (g, acceleration, "m/s^2", "acceleration of gravity", (9.80665, 9.80665)),
         (m_sum, mass, "kg", "total mass of the transported loads, Σ m_i(t) of (20)", (10, 1e5)),
         (mu_op, ONE, "1", "resistance coefficient of the loads' motion, μ_оп", (0.005, 0.1)),

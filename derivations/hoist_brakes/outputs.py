@@ -27,9 +27,10 @@ def physical(d: Derivation, expr: sp.Expr) -> sp.Expr:
                       M_st: d.step("rated static torque").statement.rhs})
 
 
-def _speed_law(d: Derivation, mode: str) -> tuple[sp.Expr, sp.Expr]:
+def _speed_law(d: Derivation, mode: str) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """Hook speed (m/s, in the direction of travel) of the rigid drive after an
-    emergency stop at t = 0 (motor torque lost), and the time it comes to rest.
+    emergency stop at t = 0 (motor torque lost), the time it comes to rest, and
+    the drive's deceleration with every brake on (> 0: it comes to rest).
 
     The accelerations of (1) in the three intervals (no brake, safety brakes,
     all brakes) are constant, so ω is piecewise linear; the brakes hold it at 0.
@@ -49,7 +50,7 @@ def _speed_law(d: Derivation, mode: str) -> tuple[sp.Expr, sp.Expr]:
     speed = sp.Piecewise((gear * free, free > 0), (0, True))
     stop = sp.Piecewise((-omega1 / a0, w_sb <= 0), (t_SB - w_sb / a1, w_bb <= 0),
                         (t_BB - w_bb / a2, True))
-    return speed, stop
+    return speed, stop, -a2
 
 
 def outputs(d: Derivation) -> list[Output]:
@@ -92,14 +93,17 @@ def outputs(d: Derivation) -> list[Output]:
     out.append(Output("backlash_at_motor_shaft", delta * i_g, (delta, i_g), ("Fig. 9",),
                       "The drum-coupling backlash seen at the motor shaft.", "rad"))
     for mode in ("hoisting", "lowering"):
-        speed, stop = _speed_law(d, mode)
+        speed, stop, braking = _speed_law(d, mode)
         out.append(Output(f"rigid_hook_speed_{mode}", speed, (t,) + HOIST[:4] + HOIST[5:]
                           + BRAKES, ("(1)",),
                           f"Hook speed of the rigid drive, {mode}, after an emergency stop "
                           "at t = 0: motor torque lost, brakes after their delays (Fig. 5).",
                           "m/s"))
         out.append(Output(f"rigid_stopping_time_{mode}", stop, HOIST[:4] + HOIST[5:] + BRAKES,
-                          ("(1)",), f"Time the rigid drive takes to stop, {mode}.", "s"))
+                          ("(1)",), f"Time the rigid drive takes to stop, {mode}.", "s",
+                          ((braking, "the brakes together decelerate the drive "
+                                     "(M_BB + M_SB/i_g above the load torque): else it "
+                                     "never stops"),)))
     return out
 
 

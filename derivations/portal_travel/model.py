@@ -71,8 +71,9 @@ _g = [
     PhysicalSymbol(a_w, length, "m", "centre distance", sample_range=(0.05, 5.0)),
     PhysicalSymbol(ha, ONE, "1", "addendum coefficient of the basic rack h_a*",
                    sample_range=(0.8, 1.25)),
+    # An involute profile angle lies below pi/2 (tan alpha finite): 80 degrees at most.
     PhysicalSymbol(alpha, ONE, "rad", "profile angle of the basic rack",
-                   sample_range=(0.2, 0.5)),
+                   sample_range=(0.2, 0.5), serve_range=(2e-7, 1.4)),
     PhysicalSymbol(x1, ONE, "1", "shift coefficient of the pinion", sign="real",
                    sample_range=(0.05, 1.0)),
     PhysicalSymbol(x2, ONE, "1", "shift coefficient of the wheel", sign="real",
