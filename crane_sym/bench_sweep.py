@@ -37,7 +37,8 @@ from .bench_odes import first_order, parameters
 from .bench_rows import least_time
 from .scenes import load_scene
 from .sweep import run_sweep
-from .sweep_spec import Axis, OutputSpec, SweepPlan, plan
+from .sweep_plan import Axis, OutputSpec, SweepPlan
+from .sweep_spec import plan
 
 __all__ = ["bench_sweep", "integrated_peak", "markdown"]
 

@@ -127,16 +127,31 @@ def _signature(out: Output, keyword: bool = False) -> str:
     return f"{out.name}({', '.join(names)})"
 
 
+def _rules(out: Output, table: SymbolTable, rules: Sequence[Rule] | None
+           ) -> tuple[set[sp.Symbol], Sequence[Rule]]:
+    """The time-like arguments of ``out`` and the rewrite rules it is printed with."""
+    varying = {e.expr for e in table.with_role(TIME)} & set(out.args)
+    scales = frozenset(a for a in out.args if a not in varying and any(
+        table[a].dimension == table[v].dimension for v in varying))
+    return varying, (rules_for(varying, scales) if rules is None else rules)
+
+
+def used_arguments(out: Output, table: SymbolTable) -> tuple[sp.Symbol, ...]:
+    """The arguments of a scalar ``out`` its generated function computes
+    with: those left in the expression the printer receives. An exact rewrite
+    may cancel one (a ratio of two masses written with Ω); the function still
+    accepts and validates it."""
+    free = optimize(out.expr, _rules(out, table, None)[1]).free_symbols
+    return tuple(a for a in out.args if a in free)
+
+
 def render_function(out: Output, table: SymbolTable,
                     rules: Sequence[Rule] | None = None,
                     helpers: dict[int, str] | None = None) -> str:
     """Source of one validated, vectorized NumPy function; the ``entire``
     helpers it calls are named in ``helpers`` (key -> name)."""
     printer = printer_for(helpers)
-    varying = {e.expr for e in table.with_role(TIME)} & set(out.args)
-    scales = frozenset(a for a in out.args if a not in varying and any(
-        table[a].dimension == table[v].dimension for v in varying))
-    rules = rules_for(varying, scales) if rules is None else rules
+    varying, rules = _rules(out, table, rules)
     shape = out.expr.shape if isinstance(out.expr, sp.MatrixBase) else None
     if shape is None:
         expr = optimize(out.expr, rules)

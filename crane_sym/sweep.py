@@ -46,7 +46,7 @@ from typing import Any
 import numpy as np
 
 from . import registry
-from .sweep_spec import SweepError, SweepPlan
+from .sweep_plan import SweepError, SweepPlan, shown_unit
 
 __all__ = ["CHUNK_BYTES", "SweepResult", "chunks_for", "connect", "evaluate_block",
            "grid_arrays", "run_sweep"]
@@ -198,7 +198,11 @@ def _remove(tmp: Path, made: bool) -> None:
 
 def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
     """The labelled dataset: one variable per output (SI), one coordinate per
-    axis in the user's units, units and provenance as attributes."""
+    axis in the user's units, units and provenance as attributes: per output
+    the unit the summary and the PNG show it in (``display_units``), the axes
+    it does not depend on, the window it is maximised over; the window's
+    start, stop, points and unit; the fixed values, the window's variable
+    not among them."""
     import xarray as xr
 
     from . import __version__
@@ -206,18 +210,30 @@ def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
     coords = {a.name: (a.name, a.values(), {"units": a.unit, "to_SI": a.to_si,
                                             "spacing": "log" if a.log else "linear"})
               for a in plan.axes}
-    variables = {o.name: (dims, arrays[o.name], {"units": o.unit, "long_name": o.summary,
-                                                 "kind": o.kind}) for o in plan.outputs}
+    variables = {}
+    for o in plan.outputs:
+        unit, factor = plan.unit_of(o.name)
+        attrs = {"units": shown_unit(o.unit), "long_name": o.summary, "kind": o.kind,
+                 "display_units": unit, "display_to_SI": factor}
+        if plan.independent_of(o.name):
+            attrs["independent_of"] = ", ".join(plan.independent_of(o.name))
+        if plan.windowed(o.name):
+            attrs["cell_methods"] = f"{plan.window.name}: maximum"
+            attrs["window"] = plan.window.text()
+        variables[o.name] = (dims, arrays[o.name], attrs)
+    window = plan.window
     attrs = {"scene": plan.scene, "derivation": plan.derivation,
              "fixed_SI": ", ".join(f"{k}={v!r}" for k, v in sorted(plan.fixed.items())
-                                   if k not in dims),
+                                   if k not in dims and (window is None or k != window.name)),
              "generated_by": f"crane_sym {__version__} (crane-sym sweep)"}
     if plan.limit is not None:
         attrs["limit"] = plan.limit.text()
-    if plan.window is not None:
-        name, samples = plan.window
-        attrs["window"] = (f"each output taking {name} is its maximum over {len(samples)} "
-                           f"samples of {name} in [{samples[0]!r}, {samples[-1]!r}] (SI)")
+    if window is not None:
+        attrs.update({"window": f"{window.text()}, {window.n} samples: each output that "
+                                f"depends on {window.name} is its maximum over them",
+                      "window_variable": window.name, "window_start": window.start,
+                      "window_stop": window.stop, "window_points": window.n,
+                      "window_units": window.unit, "window_to_SI": window.to_si})
     return xr.Dataset(variables, coords=coords, attrs=attrs)
 
 

@@ -35,7 +35,7 @@ from mpmath import iv
 from . import registry
 from .intervals import enclosure
 from .sweep import SweepResult
-from .sweep_spec import SweepError, SweepPlan
+from .sweep_plan import SweepError, SweepPlan
 
 __all__ = ["Certified", "CertifyTask", "certify", "certify_result", "prepare"]
 
@@ -90,10 +90,11 @@ def prepare(plan: SweepPlan, rel_tol: float) -> CertifyTask:
     box = tuple((float(a.si().min()), float(a.si().max())) for a in plan.axes
                 if a.name in variables)
     window = plan.window
-    if window is not None and window[0] in symbols:       # time is one more box side
-        variables += (window[0],)
-        box += ((window[1][0], window[1][-1]),)
-        axes = axes | {window[0]}
+    if window is not None and window.name in symbols:     # time is one more box side
+        samples = window.si()
+        variables += (window.name,)
+        box += ((float(samples[0]), float(samples[-1])),)
+        axes = axes | {window.name}
     values = {a: sp.Float(plan.fixed[str(a)]) for a in output.args if str(a) not in axes}
     sign = -1 if plan.limit and plan.limit.output == name and plan.limit.op == ">=" else 1
     if sign < 0 and window is not None:
@@ -191,6 +192,7 @@ def certify_result(task: CertifyTask, result: SweepResult,
             "unit": task.unit, "tolerance": found.tolerance / task.factor,
             "relative_tolerance": task.rel_tol, "boxes": found.boxes,
             "converged": found.converged, "method": "interval branch-and-bound (mpmath.iv)",
+            "over": list(task.variables),
             "grid_worst_inside": ends[0] <= grid <= ends[1],
             # the grid can miss a peak between its points, never exceed it
             "grid_worst_short_by": max(0.0, (task.sign * found.lower - grid) * task.sign)

@@ -13,130 +13,37 @@ with the option and the text that broke it.
 
 Outputs are the derivation's generated closed forms (``kind = "closed"``)
 or the simulated responses a paper declares in ``SWEEP_OUTPUTS``
-(``kind = "simulated"``, :class:`crane_sym.derivation.SweepOutput`).
+(``kind = "simulated"``, :class:`crane_sym.derivation.SweepOutput`). An axis
+must be an argument of an output: one its generated function computes with
+for a closed form (:func:`crane_sym.codegen.used_arguments`: a function may
+accept an argument its expression has lost, such as the masses of a dynamic
+coefficient written with Ω), a declared parameter for a simulated response.
+
+One unit per quantity: an axis is shown in its ``--vary`` unit (the scene's by
+default), an output in the one unit the scene file gives parameters of the
+same SI unit (kN for a force when ``P_t`` and ``W`` are in kN), else in the
+``--limit``'s unit, else in SI; a dimensionless quantity in no unit (``""``).
+The plan's types are in :mod:`crane_sym.sweep_plan`.
 """
 from __future__ import annotations
 
 import math
 import re
-from dataclasses import dataclass, field
-from typing import Any
-
-import numpy as np
 
 from . import registry, units
+from .codegen import used_arguments
 from .scenes import Scene, SceneError, read_toml
 from .symbols import TIME
+from .sweep_plan import (Axis, Limit, OutputSpec, SweepError, SweepPlan, Window,
+                         shown_unit)
 
-__all__ = ["Axis", "Limit", "OutputSpec", "SweepError", "SweepPlan", "parse_at",
-           "parse_limit", "parse_vary", "plan"]
+__all__ = ["SweepError", "parse_at", "parse_limit", "parse_vary", "plan"]
 
 _NUM = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 _NAME = r"[A-Za-z_][A-Za-z0-9_]{0,63}"
 _VARY = re.compile(rf"({_NAME})=({_NUM}):({_NUM}):(\d{{1,12}})(:log)?(?:\s+(\S.{{0,60}}))?")
 _LIMIT = re.compile(rf"\s*({_NAME})\s*(<=|>=)\s*({_NUM})\s*(\S.{{0,60}})?")
 _AT = re.compile(rf"({_NAME})=({_NUM})(?::({_NUM}):(\d{{1,7}}))?(?:\s*([A-Za-zµμ].{{0,60}}))?")
-
-
-class SweepError(ValueError):
-    """A sweep argument that cannot be honoured; the message names it."""
-
-
-@dataclass(frozen=True)
-class Axis:
-    """One swept parameter: ``n`` values from ``start`` to ``stop`` (both
-    included) in ``unit``, evenly or (``log``) geometrically spaced; ``to_si``
-    is the factor from ``unit`` to SI, applied once to the whole axis."""
-
-    name: str
-    start: float
-    stop: float
-    n: int
-    log: bool
-    unit: str
-    to_si: float
-
-    def values(self) -> np.ndarray:
-        """The axis in the user's unit, endpoints exact."""
-        make = np.geomspace if self.log else np.linspace
-        out = make(self.start, self.stop, self.n)
-        out[0], out[-1] = self.start, self.stop
-        return out
-
-    def si(self) -> np.ndarray:
-        """The axis in SI."""
-        return self.values() * self.to_si
-
-
-@dataclass(frozen=True)
-class Limit:
-    """``output <= value`` (or ``>=``), ``value`` in ``unit``."""
-
-    output: str
-    op: str
-    value: float
-    unit: str
-    to_si: float
-
-    @property
-    def si(self) -> float:
-        """The bound in SI."""
-        return self.value * self.to_si
-
-    def text(self) -> str:
-        """As the user wrote it, normalised: ``peak_elastic_force <= 40 kN``."""
-        return f"{self.output} {self.op} {self.value:g} {self.unit}".rstrip()
-
-
-@dataclass(frozen=True)
-class OutputSpec:
-    """An output to sweep: its generated function (``closed``) or the paper's
-    simulated response (``simulated``), arguments in order, SI unit."""
-
-    name: str
-    kind: str
-    args: tuple[str, ...]
-    unit: str
-    summary: str = ""
-
-
-@dataclass(frozen=True)
-class SweepPlan:
-    """Everything a sweep needs, checked: the fixed SI values of every other
-    argument (``fixed``), the axes in grid order, the outputs, the limit."""
-
-    scene: str
-    derivation: str
-    axes: tuple[Axis, ...]
-    outputs: tuple[OutputSpec, ...]
-    fixed: dict[str, float]
-    limit: Limit | None = None
-    display: dict[str, tuple[str, float]] = field(default_factory=dict)
-    options: dict[str, Any] = field(default_factory=dict)
-
-    @property
-    def window(self) -> tuple[str, tuple[float, ...]] | None:
-        """``(name, SI samples)`` of an ``--at`` window, or None."""
-        return self.options.get("window")
-
-    @property
-    def shape(self) -> tuple[int, ...]:
-        """Points per axis."""
-        return tuple(a.n for a in self.axes)
-
-    @property
-    def points(self) -> int:
-        """Designs in the grid."""
-        return math.prod(self.shape)
-
-    def unit_of(self, output: str) -> tuple[str, float]:
-        """The unit an output is reported in and its factor to SI: the limit's
-        unit for the limited output, else the output's own SI unit."""
-        return self.display.get(output, (self.output(output).unit, 1.0))
-
-    def output(self, name: str) -> OutputSpec:
-        """The output spec called ``name``."""
-        return next(o for o in self.outputs if o.name == name)
 
 
 def _unit(option: str, text: str, unit: str, dimension) -> float:
@@ -181,7 +88,7 @@ def parse_vary(text: str, scene_units: dict[str, str], symbols) -> Axis:
                                                       and not low >= 0):
         raise SweepError(f"--vary {text!r}: {name} must be "
                          f"{'> 0' if entry.sign == 'positive' else '>= 0'}")
-    return Axis(name, start_f, stop_f, count, bool(log), unit, factor)
+    return Axis(name, start_f, stop_f, count, bool(log), shown_unit(unit), factor)
 
 
 def parse_limit(text: str, outputs: tuple[OutputSpec, ...]) -> Limit:
@@ -197,14 +104,15 @@ def parse_limit(text: str, outputs: tuple[OutputSpec, ...]) -> Limit:
                          f"({', '.join(known)})")
     _, dimension = units.parse_unit(known[name].unit)
     unit = (unit or "").strip() or known[name].unit
-    return Limit(name, op, float(value), unit, _unit("--limit", text, unit, dimension))
+    factor = _unit("--limit", text, unit, dimension)
+    return Limit(name, op, float(value), shown_unit(unit), factor, float(value) * factor)
 
 
-def parse_at(text: str, symbols) -> tuple[str, np.ndarray]:
-    """``--at NAME=VALUE [UNIT]``: a value (SI) for an argument the scene does
-    not fix, such as the time ``t`` of a time response (unit s by default);
-    ``--at NAME=START:STOP:N [UNIT]``: N samples of a window over which the
-    sweep takes the output's maximum. Returns the name and the SI values."""
+def parse_at(text: str, symbols) -> Window:
+    """``--at NAME=VALUE [UNIT]``: a value for an argument the scene does not
+    fix, such as the time ``t`` of a time response (unit s by default), as a
+    :class:`Window` of one point; ``--at NAME=START:STOP:N [UNIT]``: N samples
+    of a window over which the sweep takes the output's maximum."""
     m = _AT.fullmatch(text.strip())
     if m is None:
         raise SweepError(f"--at {text!r}: expected NAME=VALUE [UNIT] or NAME=START:STOP:N "
@@ -215,14 +123,14 @@ def parse_at(text: str, symbols) -> tuple[str, np.ndarray]:
     except KeyError:
         raise SweepError(f"--at {text!r}: {name!r} is not a symbol of the derivation") \
             from None
-    default = "s" if entry.role == TIME else entry.unit
-    factor = _unit("--at", text, (unit or default).strip(), entry.dimension)
+    unit = (unit or ("s" if entry.role == TIME else entry.unit)).strip()
+    factor = _unit("--at", text, unit, entry.dimension)
     if stop is None:
-        return name, np.array([float(value) * factor])
+        return Window(name, float(value), float(value), 1, shown_unit(unit), factor)
     if int(n) < 2 or not float(value) < float(stop):
         raise SweepError(f"--at {text!r}: the window is empty or reversed (need START < STOP "
                          "and N >= 2)")
-    return name, np.linspace(float(value), float(stop), int(n)) * factor
+    return Window(name, float(value), float(stop), int(n), shown_unit(unit), factor)
 
 
 def _scene_units(scene: Scene, extra: tuple[str, ...]) -> dict[str, str]:
@@ -251,7 +159,7 @@ def _output_specs(derivation: str, names: list[str]) -> tuple[OutputSpec, ...]:
         if name in closed:
             o = closed[name]
             specs.append(OutputSpec(name, "closed", tuple(str(a) for a in o.args), o.unit,
-                                    o.summary))
+                                    o.summary, tuple(map(str, used_arguments(o, d.symbols)))))
         elif name in simulated:
             s = simulated[name]
             specs.append(OutputSpec(name, "simulated", s.parameters + s.options, s.unit,
@@ -264,6 +172,43 @@ def _output_specs(derivation: str, names: list[str]) -> tuple[OutputSpec, ...]:
     return tuple(specs)
 
 
+def _not_an_argument(name: str, specs: tuple[OutputSpec, ...]) -> str:
+    """Why an axis ``name`` is refused: the output(s) it is no argument of."""
+    if len(specs) > 1:
+        return (f"{name} is not an argument of any output "
+                f"({', '.join(s.name for s in specs)})")
+    s = specs[0]
+    why = (f" (its generated function accepts {name}, its value does not depend on it)"
+           if name in s.args else "")
+    return (f"{name} is not an argument of {s.name}{why}; it depends on "
+            f"{', '.join(s.depends) or 'nothing'}")
+
+
+def _same_unit(a: str, b: str) -> bool:
+    return a.replace(" ", "").replace("·", "*") == b.replace(" ", "").replace("·", "*")
+
+
+def _display_units(specs: tuple[OutputSpec, ...], scene_units: dict[str, str], symbols,
+                   limit: Limit | None) -> dict[str, tuple[str, float]]:
+    """Output -> (unit it is shown in, factor to SI): the one unit the scene
+    file gives its parameters of the output's SI unit, else the limit's unit
+    for the limited output, else SI; ``""`` for a dimensionless output."""
+    shown = {}
+    for s in specs:
+        given = {shown_unit(u) for n, u in scene_units.items()
+                 if n in symbols and _same_unit(symbols[n].unit, s.unit)}
+        if not shown_unit(s.unit):
+            shown[s.name] = ("", 1.0)
+        elif len(given) == 1 and "" not in given:
+            unit = given.pop()
+            shown[s.name] = (unit, units.parse_unit(unit)[0])
+        elif limit is not None and limit.output == s.name:
+            shown[s.name] = (limit.unit, limit.to_si)
+        else:
+            shown[s.name] = (s.unit, 1.0)
+    return shown
+
+
 def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
          limit: str | None = None) -> SweepPlan:
     """Check the sweep's arguments against the scene and its derivation.
@@ -272,8 +217,9 @@ def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
     ------
     SweepError
         Naming the option and its text: an unknown or repeated parameter or
-        output, an empty or reversed range, a log axis through zero, a unit of
-        the wrong dimension, an argument no value is given for.
+        output, an axis that is no argument of the outputs, an empty or
+        reversed range, a log axis through zero, a unit of the wrong
+        dimension, an argument no value is given for.
     """
     if not vary:
         raise SweepError("--vary: give at least one axis, e.g. --vary m1=1:100:200:log")
@@ -290,25 +236,25 @@ def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
                       for n in extra})
     except (KeyError, units.UnitError) as exc:
         raise SceneError(f"scene {scene.name!r}: [options] lacks or garbles {exc}") from None
-    axes = tuple(parse_vary(v, _scene_units(scene, extra), d.symbols) for v in vary)
+    scene_units = _scene_units(scene, extra)
+    axes = tuple(parse_vary(v, scene_units, d.symbols) for v in vary)
     names = [a.name for a in axes]
     if len(set(names)) != len(names):
         raise SweepError(f"--vary: a parameter is varied twice in {names}")
     for axis in axes:
-        if not any(axis.name in s.args for s in specs):
-            raise SweepError(f"--vary {axis.name}: none of the outputs "
-                             f"({', '.join(s.name for s in specs)}) depends on it")
+        if not any(axis.name in s.depends for s in specs):
+            raise SweepError(f"--vary {axis.name}: {_not_an_argument(axis.name, specs)}")
     window = None
     for text in at:
-        name, value = parse_at(text, d.symbols)
-        if name in names or name in scene.parameters or name in fixed:
-            raise SweepError(f"--at {text!r}: {name!r} is already given by "
-                             f"{'--vary' if name in names else 'the scene or --at'}")
-        if len(value) > 1:
+        found = parse_at(text, d.symbols)
+        if found.name in names or found.name in scene.parameters or found.name in fixed:
+            raise SweepError(f"--at {text!r}: {found.name!r} is already given by "
+                             f"{'--vary' if found.name in names else 'the scene or --at'}")
+        if found.n > 1:
             if window is not None:
                 raise SweepError(f"--at {text!r}: one window at most")
-            window = (name, tuple(float(v) for v in value))
-        fixed[name] = float(value[0])
+            window = found
+        fixed[found.name] = float(found.si()[0])
     for s in specs:
         missing = [a for a in s.args if a not in fixed and a not in names]
         if missing:
@@ -316,8 +262,11 @@ def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
             raise SweepError(f"--output {s.name}: no value for {', '.join(missing)}; "
                              f"give it with --at NAME=VALUE{hint}")
     found = parse_limit(limit, specs) if limit else None
-    display = {found.output: (found.unit, found.to_si)} if found else {}
+    display = _display_units(specs, scene_units, d.symbols, found)
+    if found is not None:
+        found = found.shown_in(*display[found.output])
     options = {k: scene.options[k] for k in ("duration", "points") if k in scene.options}
     if window is not None:
-        options["window"] = window
-    return SweepPlan(scene.name, scene.derivation, axes, specs, fixed, found, display, options)
+        options["window"] = (window.name, tuple(float(v) for v in window.si()))
+    return SweepPlan(scene.name, scene.derivation, axes, specs, fixed, found, display, options,
+                     window)

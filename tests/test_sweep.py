@@ -4,6 +4,7 @@ nothing written."""
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import numpy as np
@@ -112,7 +113,7 @@ BAD = [
     (["--vary", "m1=1:100:10 furlong"], "--vary 'm1=1:100:10 furlong'", "unknown unit"),
     (["--vary", "m1=-1:100:10"], "--vary 'm1=-1:100:10'", "must be > 0"),
     (["--vary", "m1=1:100:10", "--vary", "m1=1:2:3"], "--vary", "varied twice"),
-    (["--vary", "v0=1:2:3"], "--vary v0", "none of the outputs"),
+    (["--vary", "v0=1:2:3"], "--vary v0", "v0 is not an argument of peak_elastic_force"),
     (["--vary", "m1=1:100:10", "--limit", "peak_elastic_force<=40 kg"], "--limit",
      "does not fit"),
     (["--vary", "m1=1:100:10", "--limit", "peak_elastic_force<40"], "--limit",
@@ -219,7 +220,7 @@ def test_time_window_maximum_approaches_the_closed_form_peak_and_is_certified():
     from crane_sym.sweep_certify import certify, prepare
     chosen = plan(load_scene("overhead_crane_50t"), ["m1=1:100:20:log", "P_t=5:50:20"],
                   ["elastic_force", "peak_elastic_force"], ["t=0:1.5:1501"])
-    assert chosen.window[0] == "t" and len(chosen.window[1]) == 1501
+    assert chosen.window.name == "t" and chosen.window.n == 1501
     result = run_sweep(chosen, None, scheduler="synchronous")
     sampled, peak = result.worst["elastic_force"][0], result.worst["peak_elastic_force"][0]
     assert peak * (1 - 1e-4) < sampled <= peak * (1 + 1e-15)
@@ -250,3 +251,127 @@ def test_001_piecewise_peak_is_sweepable(tmp_path):
     report, _ = run_scene(scene, tmp_path / "run")
     assert values[1, 1] == pytest.approx(abs(report.values["peak_fig9_payload"]), rel=1e-9)
     assert values[1, 1] > values[1, 0] and values[1, 1] > values[0, 1]
+
+
+# --- issue 22, item 4: sweeps say what they did -----------------------------------------
+USER_LAW = ["sweep", "hoist_user_drive_law", "--vary", "m2=5:20:4", "--at", "t=0:2:21",
+            "--at", "Omega=25", "--at", "v0=0.5", "--at", "t_n=1", "--quiet"]
+
+
+def test_an_axis_the_output_does_not_depend_on_is_refused_naming_both(tmp_path, capsys):
+    """dynamic_coefficient_from_weight_a1 is written with Ω: its function takes m2
+    and ignores it, so sweeping m2 alone gave equal values and no word."""
+    out = tmp_path / "out"
+    argv = [*USER_LAW, "--output", "dynamic_coefficient_from_weight_a1", "--out", str(out)]
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert "--vary m2" in err and "m2 is not an argument of dynamic_coefficient_from_weight_a1" \
+        in err and "depends on t, Omega, g, v0, t_n" in err
+    assert main([*argv, "--output", "dynamic_coefficient_from_weight_a2"]) == 2
+    assert "m2 is not an argument of any output (dynamic_coefficient_from_weight_a1, " \
+           "dynamic_coefficient_from_weight_a2)" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_an_axis_only_some_outputs_depend_on_is_said_in_the_summary(tmp_path, capsys):
+    argv = [*USER_LAW, "--output", "dynamic_coefficient_from_weight_a1", "--output",
+            "natural_frequency", "--out", str(tmp_path), "--format", "json"]
+    assert main(argv) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["outputs"]["dynamic_coefficient_from_weight_a1"]["independent_of"] == ["m2"]
+    assert "independent_of" not in data["outputs"]["natural_frequency"]
+    ds = xr.open_zarr(data["dataset"])
+    assert ds["dynamic_coefficient_from_weight_a1"].attrs["independent_of"] == "m2"
+    values = ds["dynamic_coefficient_from_weight_a1"].values
+    assert np.all(values == values[0])                 # constant along m2, as it says
+    assert main([*argv[:-2], "--format", "table"]) == 0
+    assert "(dynamic_coefficient_from_weight_a1 does not depend on m2: constant along that " \
+           "axis)" in capsys.readouterr().out
+
+
+def _sweep(tmp_path, *argv):
+    """JSON and text summaries of one sweep, the plan and result behind them."""
+    from crane_sym import sweep_report
+    chosen = plan(load_scene(argv[0]), *argv[1:])
+    result = run_sweep(chosen, tmp_path, scheduler="synchronous")
+    data = sweep_report.summary(result)
+    return chosen, result, data, "\n".join(sweep_report.text_lines(data))
+
+
+def test_one_unit_per_quantity_in_text_json_dataset_and_png(tmp_path):
+    """Forces in the scene's kN everywhere (no limit: it was 98900.9 N beside a
+    certified 98.9009 kN), a limit given in N shown in kN; axes in t and kN."""
+    chosen, result, data, text = _sweep(
+        tmp_path, "overhead_crane_50t", ["m1=1:100:20:log", "P_t=5:50:20"],
+        ["peak_elastic_force", "elastic_force"], ["t=0:1.5:151"], "peak_elastic_force<=40000 N")
+    assert {o: e["worst"]["unit"] for o, e in data["outputs"].items()} == {
+        "peak_elastic_force": "kN", "elastic_force": "kN"}
+    assert data["outputs"]["elastic_force"]["unit"] == "kN"
+    assert data["worst_case"]["value"] == pytest.approx(98.9009, rel=1e-5)
+    assert data["limit"]["text"] == "peak_elastic_force <= 40 kN"
+    assert "max 98.9009 kN at m1 = 1 t, P_t = 50 kN" in text
+    assert "within peak_elastic_force <= 40 kN" in text
+    assert not re.search(r"\d N\b", text)           # no force left in N
+    ds = xr.open_zarr(result.dataset)
+    for name in ("peak_elastic_force", "elastic_force"):
+        assert ds[name].attrs["units"] == "N"       # the dataset stays SI ...
+        assert ds[name].attrs["display_units"] == "kN"  # ... and names the shown unit
+        assert ds[name].attrs["display_to_SI"] == 1e3
+    assert {a: ds[a].attrs["units"] for a in ("m1", "P_t")} == \
+        {a: e["unit"] for a, e in data["axes"].items()} == {"m1": "t", "P_t": "kN"}
+    from crane_sym.sweep_report import figure, labels
+    assert labels(chosen) == {"m1": "$m_{1}$ [t]", "P_t": "$P_{t}$ [kN]",
+                              "peak_elastic_force": r"$F_{\max}$ [kN]",
+                              "elastic_force": "elastic force [kN]", "t": "$t$ [s]"}
+    fig = figure(result)
+    ax, bar = fig.axes
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("$m_{1}$ [t]", "$P_{t}$ [kN]")
+    assert bar.get_ylabel() == r"$F_{\max}$ [kN]"
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == [
+        r"limit: $F_{\max}$ ≤ 40 kN", "worst: 98.901 kN"]
+
+
+def test_a_dimensionless_output_prints_no_bare_1(tmp_path):
+    chosen, result, data, text = _sweep(
+        tmp_path, "hoist_drive_laws", ["v0=0.1:1:5", "t_n=0.5:2:4"],
+        ["dynamic_coefficient_from_weight_a1"], ["t=0:3:61"])
+    entry = data["outputs"]["dynamic_coefficient_from_weight_a1"]
+    assert entry["worst"]["unit"] == ""
+    assert entry["unit"] == ""
+    assert re.search(r"max [\d.]+ at v0 = ", text) and not re.search(r"\d 1\b", text)
+    attrs = xr.open_zarr(result.dataset)["dynamic_coefficient_from_weight_a1"].attrs
+    assert attrs["units"] == attrs["display_units"] == ""
+    from crane_sym.sweep_report import figure, labels
+    label = labels(chosen)
+    assert label["v0"] == "$v_{0}$ [m/s]" and label["t_n"] == r"$t_\mathrm{п}$ [s]"
+    assert label["dynamic_coefficient_from_weight_a1"] == "dynamic coefficient from weight a1"
+    assert not any("[1]" in v for v in label.values())
+    worst = [t.get_text() for t in figure(result).legends[0].get_texts()][-1]
+    assert re.fullmatch(r"worst: [\d.]+", worst)
+
+
+def test_a_time_window_says_max_over_t_and_records_the_window(tmp_path):
+    """--at t=START:STOP:N: "max over t in [a, b]" in the text, JSON and PNG;
+    the window in the dataset's attributes; fixed_SI without a fake t = 0.0."""
+    chosen, result, data, text = _sweep(
+        tmp_path, "overhead_crane_50t", ["m1=1:100:20:log", "P_t=5:50:20"],
+        ["elastic_force", "peak_elastic_force"], ["t=0:1500:151 ms"])
+    assert "  elastic_force, max over t in [0, 1500] ms: max " in text
+    assert "  peak_elastic_force: max " in text     # takes no t: no window
+    assert data["outputs"]["elastic_force"]["over"] == "max over t in [0, 1500] ms"
+    assert "over" not in data["outputs"]["peak_elastic_force"]
+    assert data["window"] == {"name": "t", "start": 0.0, "stop": 1500.0, "points": 151,
+                              "unit": "ms", "to_SI": 1e-3, "reduction": "max",
+                              "text": "max over t in [0, 1500] ms"}
+    ds = xr.open_zarr(result.dataset)
+    assert {k: ds.attrs[k] for k in ("window_variable", "window_start", "window_stop",
+                                     "window_points", "window_units")} == {
+        "window_variable": "t", "window_start": 0.0, "window_stop": 1500.0,
+        "window_points": 151, "window_units": "ms"}
+    assert "t=" not in ds.attrs["fixed_SI"] and "m2=110000.0" in ds.attrs["fixed_SI"]
+    assert ds["elastic_force"].attrs["cell_methods"] == "t: maximum"
+    assert "cell_methods" not in ds["peak_elastic_force"].attrs
+    from crane_sym.sweep_report import figure
+    fig = figure(result)
+    assert fig.axes[1].get_ylabel() == "elastic force [kN], max over $t$ in [0, 1500] ms"
+    assert "max over t in [0, 1500] ms" in fig.get_suptitle()
