@@ -153,13 +153,14 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
     import importlib
 
     from .reference import accuracy
+    ids = _ids(args.ids)                     # an unknown id fails before any output
     # cond.·u: condition number times 2**-53 at the worst point (the error input
     # rounding alone causes); over target: largest error / max(1e-15, 2 cond.·u).
     print(f"{'function':<34} {'hard case':<40} {'points':>6} {'cond.·u':>9} "
           f"{'over target':>11}  max rel. error vs mpmath (50 digits)")
     checked, over = 0, []
     with progress.reporting(_progress(args)) as say:
-        for i in _ids(args.ids):
+        for i in ids:
             cases = getattr(registry.module(i), "hard_cases", None)
             if cases is None:
                 print(f"{i}: no hard cases defined")

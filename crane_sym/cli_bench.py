@@ -38,6 +38,7 @@ def _bench(args: argparse.Namespace) -> int:
     from . import bench, bench_memory, bench_targets as bt, scenes
     from .bench_report import as_markdown, headline, not_applicable, plot, plot_scaling
     say = progress.current()
+    ids = _ids(args.ids)                 # an unknown id fails before the folder is made
     out_dir = Path(args.out)
     out_dir.mkdir(parents=True, exist_ok=True)
     if args.sweep:
@@ -50,7 +51,7 @@ def _bench(args: argparse.Namespace) -> int:
     sizes = args.sizes or (bt.QUICK_SIZES if args.quick else bt.SIZES)
     compare = args.compare_points or (bt.QUICK_COMPARE_POINTS if args.quick
                                       else bt.COMPARE_POINTS)
-    for i in _ids(args.ids):
+    for i in ids:
         chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
                   if s.derivation == i and not s.load_table and "duration" in s.options]
         d = registry.get(i)
@@ -118,7 +119,7 @@ def _bench(args: argparse.Namespace) -> int:
     if goals and args.format == "table":
         print("\n## Targets (this run)\n")
         print(bt.goals_table(goals))
-    for i in _ids(args.ids):
+    for i in ids:
         if registry.get(i).tabulated:
             with say.task(f"{i}: piecewise-linear runs against solve_ivp"):
                 _bench_piecewise(i, out_dir, args.points, args.format == "table")

@@ -257,10 +257,12 @@ def _kernel_source(functions: Sequence[str]) -> str:
 
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
                   rules: Sequence[Rule] | None = None, scene_note: str = "",
-                  tables: Sequence[tuple[TabulatedOutput, PhaseTable]] = ()) -> str:
+                  tables: Sequence[tuple[TabulatedOutput, PhaseTable]] = (),
+                  regenerate: str = "crane-sym generate") -> str:
     """Full source of ``generated/<d.id>.py``; deterministic for a given
     derivation and SymPy version. ``scene_note`` describes a specialization;
-    ``tables`` are a scene's tabulated responses (``crane_sym.tabulated``)."""
+    ``tables`` are a scene's tabulated responses (``crane_sym.tabulated``);
+    ``regenerate`` is the command the header names to write the file again."""
     outputs = list(d.outputs if outputs is None else outputs)
     labels = sorted({lab for o in [*outputs, *(t for t, _ in tables)] for lab in o.labels},
                     key=lambda s: (not s.startswith("("), len(s), s))
@@ -274,7 +276,7 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
               + (f"{scene_note}\n" if scene_note else "") +
               f"Equations: {', '.join(labels)}.\n"
               f"Printed by SymPy {sp.__version__} with crane_sym {__version__}; "
-              "regenerate with `crane-sym generate`.\n\n"
+              f"regenerate with `{regenerate}`.\n\n"
               f"Functions and argument order:\n{listing}\n"
               '"""\n')
     names = ", ".join(repr(o.name) for o in [*outputs, *(t for t, _ in tables)])

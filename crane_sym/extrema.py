@@ -85,7 +85,7 @@ def _leq(x: sp.Expr, y: sp.Expr, decide: bool = False) -> bool | None:
 
 
 # --- pieces -----------------------------------------------------------------------
-def _smooth_pieces(expr: sp.Expr, t: sp.Symbol, a: sp.Expr,
+def smooth_pieces(expr: sp.Expr, t: sp.Symbol, a: sp.Expr,
                    b: sp.Expr) -> list[tuple[sp.Expr, sp.Expr, sp.Expr]]:
     """``(lo, hi, expr)`` pieces covering ``[a, b]`` for a Piecewise whose
     conditions read ``t < c`` or ``t <= c`` (in order) or True; a piece that
@@ -245,7 +245,7 @@ def _interval_critical(f: sp.Expr, t: sp.Symbol, lo: sp.Expr, hi: sp.Expr, dps: 
             s0, s1 = sign(left), sign(right)
             roots += [x for x, s in ((left, s0), (right, s1)) if s == 0]
             if s0 * s1 < 0:
-                roots.append(_bracketed_root(point, left, right))
+                roots.append(bracketed_root(point, left, right))
             continue
         if depth >= max_depth:
             unresolved.append((left, right, e0(box).b))
@@ -255,7 +255,7 @@ def _interval_critical(f: sp.Expr, t: sp.Symbol, lo: sp.Expr, hi: sp.Expr, dps: 
     return roots, unresolved, searched
 
 
-def _bracketed_root(func: Callable, left, right):
+def bracketed_root(func: Callable, left, right):
     """The single root of ``func`` in ``[left, right]`` (a sign change):
     Anderson–Björck, falling back to bisection."""
     try:
@@ -318,7 +318,7 @@ def maximum_on_interval(expr: sp.Expr, t: sp.Symbol, a: object, b: object, *,
         expr, a, b = (x.subs(values) for x in (expr, a, b))
     if not _leq(a, b, True):
         raise ValueError(f"the interval [{a}, {b}] is empty: a > b")
-    pieces = _smooth_pieces(sp.piecewise_fold(expr), t, a, b)
+    pieces = smooth_pieces(sp.piecewise_fold(expr), t, a, b)
     candidates: list[Candidate] = []
     method, unresolved, searched = SYMBOLIC, [], 0
     for k, (lo, hi, f) in enumerate(pieces):

@@ -2,20 +2,30 @@
 
 At most four panels to a figure; one title per figure (the scene's, with the
 group of its panels); legends to the right of the axes, outside the data
-area; labels in Matplotlib mathtext where the panels give it. Figures are
-built without pyplot's global state and written by :func:`save`.
+area; labels in Matplotlib mathtext where the panels give it. Where a
+panel's model does not hold (``Panel.invalid``) the axis is greyed, the
+curves are drawn faint, the y axis is scaled to the valid part and the legend
+says why (:func:`grey_invalid`). Figures are built without pyplot's global
+state and written by :func:`save`.
 """
 from __future__ import annotations
 
 from pathlib import Path
 from typing import Sequence
 
-from .scenes import Panel
+import numpy as np
 
-__all__ = ["MAX_PANELS", "chunks", "figures", "layout", "legend_outside", "numbered", "save"]
+from .panels import Panel, valid_mask
+
+__all__ = ["MAX_PANELS", "chunks", "figures", "grey_invalid", "layout", "legend_outside",
+           "numbered", "save"]
 
 #: The most panels one figure holds.
 MAX_PANELS = 4
+#: Fill of a span where the model does not hold, and the curves' opacity there.
+INVALID_FILL = {"facecolor": "0.85", "alpha": 0.6, "hatch": "//", "edgecolor": "0.6",
+                "linewidth": 0.0}
+INVALID_ALPHA = 0.3
 
 
 def layout(panels: Sequence[Panel]) -> list[tuple[str, list[Panel]]]:
@@ -67,18 +77,21 @@ def figures(panels: Sequence[Panel], title: str) -> list:
     pages = layout(panels)
     out = []
     for group, members in pages:
-        legends = any(len(p.curves) > 1 for p in members)
+        legends = any(len(p.curves) > 1 or p.invalid for p in members)
         fig = Figure(figsize=(10.5 if legends else 8.0, 2.9 * len(members) + 0.9),
                      layout="constrained")
         axes = fig.subplots(len(members), 1, squeeze=False)[:, 0]
         for ax, panel in zip(axes, members):
-            for label, x, y in panel.curves:
-                ax.plot(x, y, label=label, **panel.styles.get(label, {}))
+            if panel.invalid:
+                grey_invalid(ax, panel)
+            else:
+                for label, x, y in panel.curves:
+                    ax.plot(x, y, label=label, **panel.styles.get(label, {}))
             ax.set(xlabel=panel.xlabel, ylabel=panel.ylabel)
             if len(members) > 1:
                 ax.set_title(panel.title, fontsize=10)
             ax.grid(True, alpha=0.4)
-            if len(panel.curves) > 1:
+            if len(panel.curves) > 1 or panel.invalid:
                 legend_outside(ax, fontsize=9)
         heading = f"{title}: {group}" if group else title
         if len(members) == 1:
@@ -86,6 +99,39 @@ def figures(panels: Sequence[Panel], title: str) -> list:
         fig.suptitle(heading)
         out.append(fig)
     return out
+
+
+def grey_invalid(ax, panel: Panel) -> None:
+    """Plot ``panel``'s curves on ``ax`` with its ``invalid`` spans greyed:
+    the curves full where the model holds and faint (no legend entry) where
+    it does not, each span filled and named in the legend (its ``reason``),
+    the y axis scaled to the valid part."""
+    shown = []
+    for label, x, y in panel.curves:
+        x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
+        ok = valid_mask(x, panel.invalid)
+        faint = ~ok
+        faint[1:] |= ~ok[:-1]                    # joined to the valid part
+        faint[:-1] |= ~ok[1:]
+        style = panel.styles.get(label, {})
+        (line,) = ax.plot(x, np.where(ok, y, np.nan), label=label, **style)
+        ax.plot(x, np.where(faint, y, np.nan), label="_faint", alpha=INVALID_ALPHA,
+                **{**style, "color": line.get_color()})
+        shown.append(y[ok & np.isfinite(y)])
+    lo, hi = ax.get_xlim()                       # the data's range with its margins
+    named = set()
+    for span in panel.invalid:
+        left, right = max(span.start, lo), min(span.end, hi)
+        if left < right:
+            label = "_" if span.reason in named else span.reason
+            ax.axvspan(left, right, zorder=0, label=label, **INVALID_FILL)
+            named.add(span.reason)
+    ax.set_xlim(lo, hi)
+    values = np.concatenate(shown) if shown else np.empty(0)
+    if values.size:
+        bottom, top = float(values.min()), float(values.max())
+        pad = 0.05 * (top - bottom) or 0.05 * max(abs(top), 1.0)
+        ax.set_ylim(bottom - pad, top + pad)
 
 
 def save(fig, path: Path, dpi: int = 120) -> Path:

@@ -5,6 +5,9 @@ TOML (``scenes.load_scene``) → specialize (``specialize``) → generate its
 module, written beside the plot as ``scene_<name>.py``, the file
 ``crane-sym generate --scene`` writes → import that file and hand it to the
 derivation's ``scene_report(scene, module)`` → plot the report's panels.
+The scene's module is rendered before the output folder is made, so a scene
+refused there leaves no folder behind; a report that greys a panel where its
+model does not hold must say so in a ``warning:`` line.
 """
 from __future__ import annotations
 
@@ -16,6 +19,7 @@ from types import ModuleType
 from typing import Callable
 
 from . import progress, registry
+from .panels import WARNING
 from .scenes import Scene, SceneError, SceneReport, load_scene
 from .specialize import module_name, render_scene_module
 
@@ -73,16 +77,21 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, lis
     if make is None:
         raise SceneError(f"derivation {scene.derivation!r} has no scene_report()")
     say = progress.current()
+    with say.task(f"specializing and printing {module_name(scene)}"):
+        text = render_scene_module(scene)    # stage 2 refuses bad data: no folder yet
     outdir = Path(outdir)
     outdir.mkdir(parents=True, exist_ok=True)
     source = outdir / module_name(scene)
-    with say.task(f"specializing and printing {source.name}"):
-        text = render_scene_module(scene)
     source.write_text(text, encoding="utf-8")
     with say.task(f"running scene {scene.name}"):
         report = make(scene, import_module_file(source))
     if not isinstance(report, SceneReport) or not report.panels:
         raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
+    greyed = [p.title for p in report.panels if p.invalid]
+    if greyed and not report.warnings:
+        raise SceneError(f"{scene.derivation}.scene_report() greys where the model does not "
+                         f"hold in {greyed} but states it in no line starting with "
+                         f"{WARNING!r}")
     report.lines.append(f"module written to {source}")
     with say.task(f"plotting {len(report.panels)} panels"):
         paths = plot_report(report, scene.title, outdir / f"{scene.name}.png")

@@ -31,18 +31,20 @@ from __future__ import annotations
 import difflib
 import re
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 from sympy.physics.units import time as _TIME
 
 from . import registry, units
 from .derivation import SceneLoad
+from .panels import Panel, SceneReport, Span, format_quantity
 from .symbols import STATE, TIME, PhysicalSymbol
 
-__all__ = ["Panel", "Scene", "SceneError", "SceneReport", "format_quantity",
+# Panel, SceneReport, Span and format_quantity live in ``panels``; they are
+# named here too, where every report has always imported them from.
+__all__ = ["Panel", "Scene", "SceneError", "SceneReport", "Span", "format_quantity",
            "list_scenes", "load_scene", "read_toml", "scene_path", "scenes_directory"]
 
 _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
@@ -96,48 +98,6 @@ class Scene:
     switched_off: tuple[str, ...] = ()
     load_table: str = ""
     load: Any = None
-
-
-@dataclass
-class Panel:
-    """One subplot: curves ``(label, x, y)`` sharing a y axis. Text may use
-    Matplotlib mathtext (``$K_\\mathrm{дин}$``). Consecutive panels of one
-    ``group`` are plotted together, at most four to a figure, titled with it;
-    ``styles`` gives Matplotlib line options by curve label."""
-
-    title: str
-    ylabel: str
-    curves: list[tuple[str, np.ndarray, np.ndarray]] = field(default_factory=list)
-    xlabel: str = "$t$ [s]"
-    group: str = ""
-    styles: dict[str, dict] = field(default_factory=dict)
-
-
-@dataclass
-class SceneReport:
-    """What a derivation's ``scene_report(scene)`` returns.
-
-    Attributes
-    ----------
-    lines : list of str
-        Text to print, numbers already formatted with units.
-    values : dict of str to float
-        The same key results as numbers (SI), for tests and further use.
-    panels : list of Panel
-        Curves to plot, one subplot per panel.
-    """
-
-    lines: list[str] = field(default_factory=list)
-    values: dict[str, float] = field(default_factory=dict)
-    panels: list[Panel] = field(default_factory=list)
-
-
-def format_quantity(value: float, unit: str = "", digits: int = 4) -> str:
-    """``value`` with ``digits`` significant digits and its unit, e.g. ``"45.31 kN"``."""
-    text = f"{value:#.{digits}g}"
-    if "e" not in text:
-        text = text.rstrip(".")
-    return f"{text} {unit}".rstrip()
 
 
 def scenes_directory(derivation: str) -> Path:

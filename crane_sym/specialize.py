@@ -20,12 +20,12 @@ from .codegen import render_module
 from .derivation import Derivation, Output, SpecializedLoad, TabulatedOutput
 from .exact_phases import exact_table
 from .phase_table import PhaseTable
-from .scenes import Scene, SceneError, list_scenes, load_scene
+from .scenes import Scene, SceneError, list_scenes, load_scene, scene_path
 from .symbols import STATE, TIME, SymbolTable
 
-__all__ = ["module_name", "operation_count", "render_scene_module", "scene_files",
-           "scene_values", "shipped_scene_modules", "specialize", "specialize_load",
-           "switched_off", "tabulated_names", "tabulated_outputs"]
+__all__ = ["module_name", "operation_count", "regenerate_command", "render_scene_module",
+           "scene_files", "scene_values", "shipped_scene_modules", "specialize",
+           "specialize_load", "switched_off", "tabulated_names", "tabulated_outputs"]
 
 
 def scene_values(d: Derivation | SymbolTable, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
@@ -94,14 +94,25 @@ def module_name(scene: Scene) -> str:
     return f"scene_{scene.name}.py"
 
 
+def regenerate_command(scene: Scene) -> str:
+    """The command that writes the scene's module again, for its header: the
+    scene by name when it is a shipped one, else by its file's name (never an
+    absolute path, so a module reads the same on every machine)."""
+    shipped = scene.name in list_scenes() and scene_path(scene.name).resolve() == \
+        Path(scene.path).resolve()
+    return (f"crane-sym generate --scene {scene.name if shipped else Path(scene.path).name}"
+            " --out <folder>")
+
+
 def render_scene_module(scene: Scene) -> str:
     """Source of the module specialized to ``scene`` (pure; deterministic)."""
+    command = regenerate_command(scene)
     if scene.load_table:
         made = specialize_load(scene)
         package = registry.module(scene.derivation)
         d = Derivation(id=scene.derivation, paper=package.PAPER, title=package.TITLE,
                        citation="", model="", symbols=made.symbols)
-        return render_module(d, made.outputs, scene_note=made.note)
+        return render_module(d, made.outputs, scene_note=made.note, regenerate=command)
     d = registry.get(scene.derivation)
     given = ", ".join(f"{k} = {v!r} {d.symbols[k].unit}" for k, v in scene.parameters.items())
     note = (f"Specialized to scene {scene.name!r} ({scene.title}): outputs "
@@ -112,7 +123,7 @@ def render_scene_module(scene: Scene) -> str:
     if scene.inputs:
         note += f"\nInputs left as arguments: {', '.join(scene.inputs)}."
     return render_module(d, specialize(d, scene), scene_note=note,
-                         tables=tabulated_outputs(d, scene))
+                         tables=tabulated_outputs(d, scene), regenerate=command)
 
 
 def operation_count(outputs: list[Output]) -> int:

@@ -4,7 +4,7 @@ Source: crane_sym.derivations.drum_drive (paper 004_f118c513e0426caf.txt:
 Dynamic model of a drive with a driving drum).
 Specialized to scene 'drum_drive_example' (Driving drum of a closed-rope installation: start under a pulsating load): outputs pulsating_force; folded in: I1 = 13.0 kg*m^2, I2 = 3.0 kg*m^2, I3 = 50.0 kg*m^2, C1 = 20000.0 N*m/rad, C2 = 50000.0 N*m/rad, C_y = 20000000.0 N/m, C_t = 50000.0 N/m, C_z = 50000.0 N/m, q = 2.4 kg/m, L = 600.0 m, D = 0.5 m, M0 = 440.0 N*m, F0 = 20000.0 N, F1 = 21760.0 N, F2 = 20000.0 N, mu = 0.2 1, alpha = 3.141592653589793 rad, F1_t = 1200.0 N, F2_t = 1200.0 N, F3_t = 600.0 N, F4_t = 600.0 N, K1 = 800.0 N, K2 = 800.0 N, K3 = 400.0 N, K4 = 400.0 N, t_3 = 3.0 s.
 Equations: (21).
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene drum_drive_example --out <folder>`.
 
 Functions and argument order:
     pulsating_force(t) -> [N]    eq (21)

@@ -6,7 +6,7 @@ Specialized to scene 'drum_drive_undamped' (Driving drum, worked example without
 Switched off: damping (the Rayleigh dissipation Φ of (11): nu1 = 0, nu2 = 0, nu_y = 0, nu_z = 0, nu_t = 0).
 Inputs left as arguments: W.
 Equations: (12).
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene drum_drive_undamped --out <folder>`.
 
 Functions and argument order:
     state_derivative(W, s1, s2, s3, s4, s5, s6, s7, s8, s9, s10) -> [SI]    eq (12)

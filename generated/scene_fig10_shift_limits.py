@@ -5,7 +5,7 @@ Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with ba
 Specialized to scene 'fig10_shift_limits' (Paper 003, Fig. 10: shift coefficient limits against the number of teeth): outputs pointed_tip_shift, tip_thickness_shift, undercut_limit; folded in: h_a = 1.0 1, alpha = 0.3490658503988659 rad, dy = 0.0 1.
 Inputs left as arguments: z, sigma.
 Equations: pointed tip, undercut limit.
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene fig10_shift_limits --out <folder>`.
 
 Functions and argument order:
     pointed_tip_shift(z) -> [1]    eq pointed tip

@@ -5,7 +5,7 @@ Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with ba
 Specialized to scene 'fig12_startup_backlash' (Paper 003, Fig. 12 / Table 1: start-up of the travel drive with backlash): outputs startup_motor_mass, startup_rated_force, startup_no_load_speed, startup_backlash_at_rim, startup_first_slope, startup_slope_ratio, startup_link_damping, startup_rigid_breakaway; folded in: J_r = 0.225 kg*m^2, n_m = 2.0 1, omega_n = 97.91297103688188 rad/s, omega_0 = 104.71975511965977 rad/s, v_n = 0.5333333333333333 m/s, P_m = 13000.0 W, lambda_p = 2.0 1, c_l = 5000000.0 N/m, zeta = 0.05 1, m_k = 250000.0 kg, W_f = 30000.0 N, W_w = 30000.0 N.
 Inputs left as arguments: phi_b.
 Equations: start-up, rated force, start-up, slope ratio, start-up, link damping, start-up, no-load speed, start-up, rigid break-away, start-up, backlash at the rim, start-up, first characteristic, start-up, motor mass at the rim.
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene fig12_startup_backlash --out <folder>`.
 
 Functions and argument order:
     startup_motor_mass() -> [kg]    eq start-up, motor mass at the rim

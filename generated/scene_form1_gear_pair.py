@@ -5,7 +5,7 @@ Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with ba
 Specialized to scene 'form1_gear_pair' (Paper 003, Form 1: the travel bogie's open gear pair): outputs operating_pressure_angle, shift_sum, tip_diameter, tip_thickness, contact_ratio, undercut_limit; folded in: m = 0.01 m, z1 = 25.0 1, z2 = 42.0 1, a_w = 0.34 m, h_a = 1.0 1, alpha = 0.3490658503988659 rad, dy1 = 0.0 1, dy2 = 0.0 1.
 Inputs left as arguments: z, x, dy, x1, x2.
 Equations: Form 1, d_a1, Form 1, s_a1, Form 1, x_sum, undercut limit, Form 1, alpha_tw, Form 1, epsilon_alpha.
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene form1_gear_pair --out <folder>`.
 
 Functions and argument order:
     operating_pressure_angle() -> [rad]    eq Form 1, alpha_tw

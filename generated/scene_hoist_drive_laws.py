@@ -4,7 +4,7 @@ Source: crane_sym.derivations.hoist_startup (paper 002_f8509f3826f601de.txt:
 Duhamel's integral for the start-up of a crane hoist: rope loads and dynamic factors).
 Specialized to scene 'hoist_drive_laws' (Paper 002: rope dynamic coefficient for the four drive laws of (30)): outputs dynamic_coefficient_pickup_a1, dynamic_coefficient_pickup_a2, dynamic_coefficient_pickup_a3, dynamic_coefficient_pickup_a4, dynamic_coefficient_from_weight_a1, dynamic_coefficient_from_weight_a2, dynamic_coefficient_from_weight_a3, dynamic_coefficient_from_weight_a4, optimal_coefficient_from_weight_a1, optimal_coefficient_from_weight_a2, optimal_coefficient_from_weight_a3, optimal_coefficient_from_weight_a4; folded in: m1 = 2000.0 kg, m2 = 8000.0 kg, C = 1000000.0 N/m, g = 9.81 m/s^2, v0 = 0.25 m/s, t_n = 1.0 s, Omega = 25.0 rad/s, tau_0 = 0.31392 s.
 Equations: (26), (27), (28), (30), (63), (65).
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene hoist_drive_laws --out <folder>`.
 
 Functions and argument order:
     dynamic_coefficient_pickup_a1(t) -> [1]    eq (26), (28), (30)

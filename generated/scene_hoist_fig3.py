@@ -4,7 +4,7 @@ Source: crane_sym.derivations.hoist_startup (paper 002_f8509f3826f601de.txt:
 Duhamel's integral for the start-up of a crane hoist: rope loads and dynamic factors).
 Specialized to scene 'hoist_fig3' (Paper 002, Fig. 3: rope displacement under a suddenly applied load): outputs dynamic_coefficient_instant; folded in: m1 = 2000.0 kg, m2 = 8000.0 kg, C = 1000000.0 N/m, Omega = 25.0 rad/s.
 Equations: (38).
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene hoist_fig3 --out <folder>`.
 
 Functions and argument order:
     dynamic_coefficient_instant(t) -> [1]    eq (38)

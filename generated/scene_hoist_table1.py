@@ -4,7 +4,7 @@ Source: crane_sym.derivations.hoist_brakes (paper 001_544065b666a6bc39.txt:
 Hoists with safety brakes: gearbox torque in an emergency stop).
 Specialized to scene 'hoist_table1' (Table 1 hoist: emergency stop with safety brakes): outputs rigid_hook_speed_hoisting, rigid_hook_speed_lowering, elastic_natural_frequency, backlash_at_motor_shaft, elastic_gearbox_torque; folded in: omega1 = 157.07963267948966 rad/s, J1 = 20.0 kg*m^2, J2 = 500.0 kg*m^2, m_h = 10000.0 kg, m_p = 52000.0 kg, m_r = 52000.0 kg, r = 0.5 m, i_g = 26.2 1, i_t = 4.0 1, g = 9.81 m/s^2, M_SB = 130000.0 N*m, M_BB = 5800.0 N*m, c = 40000.0 N*m/rad, d_t = 1.0 s, t_SB = 0.1 s, t_BB = 0.4 s, delta = 0.05235987755982989 rad.
 Equations: (1), Fig. 9.
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene hoist_table1 --out <folder>`.
 
 Functions and argument order:
     rigid_hook_speed_hoisting(t) -> [m/s]    eq (1)

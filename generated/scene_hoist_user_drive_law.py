@@ -6,7 +6,7 @@ Drive law of scene 'hoist_user_drive_law' (Hoist start-up with a jerk-limited 3-
 a(t) [m/s^2] = [0, 1/4): 2*t; [1/4, 1): 1/2; [1, 5/4): 5/2 - 2*t; 0 elsewhere.
 Folded in (SI): m1 = 2000 kg, m2 = 8000 kg, C = 1000000 N/m, g = 981/100 m/s^2.
 Equations: (1), (2), (15), (18), (23), (24), (25), (27), (28), (31), (57).
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene hoist_user_drive_law --out <folder>`.
 
 Functions and argument order:
     drive_acceleration(t) -> [m/s^2]    eq (28), (31)

@@ -4,7 +4,7 @@ Source: crane_sym.derivations.travel_braking (paper 000_4ef6efc8a81a3b06.txt:
 Dynamic loads when the travel mechanism of an overhead crane brakes).
 Specialized to scene 'overhead_crane_50t' (50 t overhead crane: braking the bridge travel with full load): outputs elastic_force, velocity_m1, velocity_m2; folded in: m1 = 4400.0 kg, m2 = 110000.0 kg, c = 3000000.0 N/m, P_t = 24000.0 N, W = 11000.0 N, v0 = 1.3333333333333333 m/s.
 Equations: (1), (2), (13), (14).
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene overhead_crane_50t --out <folder>`.
 
 Functions and argument order:
     elastic_force(t) -> [N]    eq (14)

@@ -5,7 +5,7 @@ Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with ba
 Specialized to scene 'portal_support_loads' (Paper 003, (3)-(4): largest portal leg load; Table 3's normal law): outputs max_support_load; folded in: psi = 1.3 1, G_g = 98100.0 N, G_pch = 1275000.0 N, G_vs = 392000.0 N, x_o = 2.5 m, c = 6.0 m.
 Inputs left as arguments: L_max.
 Equations: (3), (4).
-Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate`.
+Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene portal_support_loads --out <folder>`.
 
 Functions and argument order:
     max_support_load(L_max) -> [N]    eq (3), (4)

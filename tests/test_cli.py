@@ -205,3 +205,19 @@ def test_accuracy_ends_with_a_verdict_and_its_exit_code(excess, code, capsys, mo
         assert "elastic_force (" in last
     else:
         assert last == f"PASS: all {pairs} function/case pairs within target"
+
+
+@pytest.mark.parametrize("argv", [["accuracy", "999"], ["accuracy", "000", "999"],
+                                  ["audit", "999"], ["walkthrough", "999"]])
+def test_an_unknown_id_prints_nothing_to_stdout_and_exits_2(argv, capsys):
+    """No table header before the error: ids are resolved before any output."""
+    assert main(argv) == 2
+    out, err = capsys.readouterr()
+    assert out == ""
+    assert err.startswith("crane-sym: error: unknown derivation '999'")
+
+
+def test_bench_with_an_unknown_id_makes_no_folder(tmp_path, capsys):
+    assert main(["bench", "999", "--out", str(tmp_path / "bench")]) == 2
+    assert not (tmp_path / "bench").exists()
+    assert capsys.readouterr().out == ""

@@ -101,7 +101,7 @@ def test_every_shipped_scene_generates_and_runs(name, tmp_path):
     assert main(["generate", "--scene", name, "--out", str(tmp_path / "gen")]) == 0
     written = (tmp_path / "gen" / f"scene_{name}.py").read_text(encoding="utf-8")
     shipped = importlib.import_module(f"crane_sym.generated.scene_{name}")
-    assert written == inspect.getsource(shipped)
+    assert written == inspect.getsource(shipped)     # bytes, as `generate --check`
     report, pngs = run_scene(name, tmp_path / "run")
     assert pngs and all(p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" for p in pngs)
     assert (tmp_path / "run" / f"scene_{name}.py").read_text(encoding="utf-8") == written

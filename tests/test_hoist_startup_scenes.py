@@ -70,7 +70,7 @@ def test_guaranteed_maxima_bound_and_match_a_dense_sample(laws, case, i):
     v, q = report.values, scene.parameters
     assert v["certified"] == 1.0
     gen = importlib.import_module(hss.GENERATED)
-    t = np.linspace(0.0, scene.options["duration"], 400_001)
+    t = np.linspace(v[f"valid_from_{case}_a{i}"], v[f"valid_to_{case}_a{i}"], 400_001)
     dense = hss._k(gen, case, i, t, q)
     top = v[f"K_max_{case}_a{i}"]
     assert dense.max() <= top * (1 + 1e-12)
@@ -86,10 +86,9 @@ def test_load_acceleration_maxima_bound_a_dense_sample(laws, case):
     scene, report = laws
     v, q = report.values, scene.parameters
     gen = importlib.import_module(hss.GENERATED)
-    start = q["tau_0"] if case == hss.drive_law.PICKUP else 0.0
-    t = np.linspace(start, q["t_n"], 200_001)
     weight = q["m2"] * q["g"]
     for i in range(1, 5):
+        t = np.linspace(v[f"valid_from_{case}_a{i}"], q["t_n"], 200_001)
         a0 = float(hss._law(gen, i, np.zeros(1), q)[0])
         force = hss._k(gen, case, i, t, q) * hss._reference(case, a0, q)
         load = (force - weight) / (q["m2"] * q["v0"] / q["t_n"])
@@ -130,3 +129,26 @@ def test_unknown_figure_is_refused(tmp_path):
     path.write_text(text.replace('figure = "fig3"', 'figure = "fig4"'), encoding="utf-8")
     with pytest.raises(SceneError, match="option 'figure' must be one of"):
         hss.scene_report(load_scene(path))
+
+
+def test_pickup_panels_are_greyed_until_the_load_lifts(laws):
+    """With pick-up (28) leaves the resting load free to move: the model holds
+    from lift-off (tau_0 over and the rope force at the weight) on; from
+    weight it holds throughout."""
+    scene, report = laws
+    v, q = report.values, scene.parameters
+    weight = q["m2"] * q["g"]
+    gen = importlib.import_module(hss.GENERATED)
+    for i in range(1, 5):
+        start = v[f"valid_from_pickup_a{i}"]
+        assert q["tau_0"] <= start < q["tau_0"] + 1e-3
+        assert v[f"valid_from_from_weight_a{i}"] == 0.0
+        assert v[f"valid_to_pickup_a{i}"] == v[f"valid_to_from_weight_a{i}"] == 2.0
+        a0 = float(hss._law(gen, i, np.zeros(1), q)[0])
+        force = hss._k(gen, "pickup", i, np.array([start]), q)[0] * hss._reference(
+            "pickup", a0, q)
+        assert force >= weight * (1 - 1e-9)          # the rope holds the load's weight
+    pickup = [p for p in report.panels if p.invalid]
+    assert len(pickup) == 4 and all("(26)" in p.group for p in pickup)
+    assert all("load on the ground" in p.invalid[0].reason for p in pickup)
+    assert len(report.warnings) == 3 and "after lift-off" in report.warnings[1]

@@ -109,3 +109,27 @@ def test_switch_and_input_errors_name_the_key(tmp_path, options, extra, inputs, 
     path.write_text(_scene_text(options, extra, inputs))
     with pytest.raises(scenes.SceneError, match=message):
         scenes.load_scene(path)
+
+
+def test_scene_module_header_names_the_command_that_regenerates_it(tmp_path, monkeypatch):
+    """A shipped scene by its name; a user's scene by its file's name (no
+    absolute path, so the shipped modules read the same on every machine),
+    and that command writes the same module again."""
+    shipped = specialize.render_scene_module(scenes.load_scene("overhead_crane_50t"))
+    assert ("regenerate with `crane-sym generate --scene overhead_crane_50t --out <folder>`."
+            in shipped)
+    source = scenes.scene_path("overhead_crane_50t").read_text(encoding="utf-8")
+    mine = tmp_path / "my_crane.toml"
+    mine.write_text(source.replace('name = "overhead_crane_50t"', 'name = "my_crane"'),
+                    encoding="utf-8")
+    text = specialize.render_scene_module(scenes.load_scene(mine))
+    assert "regenerate with `crane-sym generate --scene my_crane.toml --out <folder>`." in text
+    assert str(tmp_path) not in text and "regenerate with `crane-sym generate`." not in text
+    same_name = tmp_path / "copy.toml"          # a copy keeps the name, not the file
+    same_name.write_text(source, encoding="utf-8")
+    assert "--scene copy.toml " in specialize.render_scene_module(scenes.load_scene(same_name))
+    monkeypatch.chdir(tmp_path)
+    assert main(["generate", "--scene", "my_crane.toml", "--out", "again"]) == 0
+    assert (tmp_path / "again" / "scene_my_crane.py").read_text(encoding="utf-8") == text
+    import crane_sym.generated.travel_braking as general   # the paper's module: unchanged
+    assert "regenerate with `crane-sym generate`." in (general.__doc__ or "")

@@ -132,6 +132,7 @@ def example_report(scene, module):
     from scipy.integrate import solve_ivp
 
     from crane_sym import registry, units
+    from crane_sym.panels import outside
     from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
     d = registry.get(scene.derivation)
@@ -165,13 +166,26 @@ def example_report(scene, module):
     x = sol.y
     F1_sim = p["F0"] + p["C_t"] * (p["r"] * x[2] - x[3] - x[4])
     F2_sim = p["F0"] + p["C_z"] * (x[4] - x[3] - p["r"] * x[2])
+    # The model holds while both branches pull (F2 > 0) and the element grips the
+    # drum (Euler: F1 <= F2 e^(μα)); the peaks below are taken where it holds.
+    slack, slip = F2_sim <= 0, F1_sim > F2_sim * np.exp(p["mu"] * p["alpha"])
+    broken = np.flatnonzero(slack | slip)
+    t_valid = float(times[broken[0]]) if broken.size else duration
+    why = ("" if not broken.size else "the slack branch goes slack (F2 <= 0)"
+           if slack[broken[0]] else "the element slips on the drum (F1 > F2 e^(μα))")
+    invalid = outside(0.0, t_valid, after=rf"model not valid ($t \geq {t_valid:.4g}$ s): "
+                      + ("branch slack" if "F2 <=" in why else "element slips")) \
+        if broken.size else []
+    ok = times < t_valid if broken.size else np.ones(times.shape, dtype=bool)
     W_mean = float(np.mean(load(np.linspace(0, 2 * p["t_3"], 2001)[:-1])))
     v = {"omega_1": ev(d.output("drive_chain_frequency_1").expr),
          "omega_2": ev(d.output("drive_chain_frequency_2").expr),
          **{f"f_loaded_{i}": f for i, f in enumerate(f_loaded, 1)},
          **{f"f_empty_{i}": f for i, f in enumerate(f_empty, 1)},
-         "y_max": np.max(np.abs(x[3])), "y_swing": np.ptp(x[3][times > 1.0]),
-         "F1_max": F1_sim.max(), "F2_min": F2_sim.min(), "v_end": x[9][-1],
+         "y_max": np.max(np.abs(x[3][ok]), initial=0.0),
+         "y_swing": np.ptp(x[3][times > 1.0]), "t_valid_end": t_valid,
+         "F1_max": F1_sim[ok].max(initial=-np.inf),
+         "F2_min": F2_sim[ok].min(initial=np.inf), "v_end": x[9][-1],
          "margin_min": np.min(np.exp(p["mu"] * p["alpha"]) - 1.25 * F1_sim / F2_sim),
          **{f"running_{k}": ev(d.output(n).expr) for k, n in (
              ("F1", "running_tight_force"), ("F2", "running_slack_force"),
@@ -209,12 +223,19 @@ def example_report(scene, module):
         "does not change the linear model's frequencies; a lighter run (fewer loads) "
         "raises the lowest one, as listed above",
     ]
+    if invalid:
+        lines.append(f"warning: at t = {fq(t_valid, 's')} {why}, which the model does "
+                     "not cover; the plots grey what follows, max |y| and the branch "
+                     "forces are taken before it")
     panels = [
-        Panel("Drum-shaft displacement (Fig. 3)", "$y$ [mm]", [("$y(t)$", times, x[3] * 1e3)]),
+        Panel("Drum-shaft displacement (Fig. 3)", "$y$ [mm]", [("$y(t)$", times, x[3] * 1e3)],
+              invalid=invalid),
         Panel("Branch forces", "$F$ [kN]", [("$F_1$ (tight)", times, F1_sim / 1e3),
-                                            ("$F_2$ (slack)", times, F2_sim / 1e3)]),
+                                            ("$F_2$ (slack)", times, F2_sim / 1e3)],
+              invalid=invalid),
         Panel("Load on the run, (21)", "$W$ [kN]",
               [("$W(t) = F'(t)$", times, load(times) / 1e3)]),
-        Panel("Speed of the run", r"$\dot z$ [m/s]", [(r"$\dot z(t)$", times, x[9])]),
+        Panel("Speed of the run", r"$\dot z$ [m/s]", [(r"$\dot z(t)$", times, x[9])],
+              invalid=invalid),
     ]
     return SceneReport(lines=lines, values=v, panels=panels)

@@ -31,7 +31,7 @@ from crane_sym.law_tables import piecewise_law as drive_law
 from crane_sym.loads import Piece, PiecewiseLoad, exact_number
 
 __all__ = ["DriveLawResponse", "FROM_WEIGHT", "PICKUP", "drive_law", "drive_law_outputs",
-           "respond"]
+           "final_speed", "pickup_speed", "respond"]
 
 FROM_WEIGHT = "from_weight"
 PICKUP = "pickup"
@@ -129,6 +129,26 @@ class DriveLawResponse:
             lambda x, b: (self.C * x - _piece_of(self.resistance, b)) / self.m2)
 
 
+def final_speed(law: PiecewiseLoad) -> sp.Expr:
+    """:math:`v_0 = \\int_0^\\infty a\\,dt`, the speed the law ends at (``oo`` when
+    its last piece is not 0: it never ends)."""
+    law = law.starting_at_zero()
+    if law.intervals[-1].expr != 0:
+        return sp.oo
+    return sum((sp.integrate(p.expr, (law.t, p.start, p.end)) for p in law.intervals[:-1]),
+               sp.Integer(0))
+
+
+def pickup_speed(law: PiecewiseLoad) -> sp.Expr:
+    """:math:`v_0` of (29) for lifting with pick-up; ``ValueError`` unless the law
+    ends (last piece 0) at a speed :math:`v_0 > 0`."""
+    final = final_speed(law)
+    if final == sp.oo or not final.is_positive:
+        raise ValueError("lifting with pick-up needs tau_0 = m2 g/(C v0) of (29): the "
+                         f"law must end (last piece 0) at a speed v0 > 0, got {final}")
+    return final
+
+
 def _piecewise(exprs: list[sp.Expr], intervals: Sequence[Piece], t: sp.Symbol) -> sp.Expr:
     if len(exprs) == 1:
         return exprs[0]
@@ -166,21 +186,12 @@ def respond(law: PiecewiseLoad, m1: Any, m2: Any, C: Any, g: Any, lifting: str, 
     t = law.t
     law = law.starting_at_zero()
     omega = sp.sqrt((m1 + m2) * C / (m1 * m2))
-    last = law.intervals[-1]
-    final = sp.Integer(0)
-    for p in law.intervals[:-1]:
-        final += sp.integrate(p.expr, (t, p.start, p.end))
-    final = final if last.expr == 0 else sp.oo
+    final = final_speed(law)
     weight = m2 * g
     tau0 = None
     if lifting == PICKUP:
-        if contact_time is not None:
-            tau0 = _system(contact_time, "contact_time")
-        elif final.is_positive and final != sp.oo:
-            tau0 = weight / (C * final)
-        else:
-            raise ValueError("lifting with pick-up needs tau_0 = m2 g/(C v0) of (29): the "
-                             f"law must end (last piece 0) at a speed v0 > 0, got {final}")
+        tau0 = (_system(contact_time, "contact_time") if contact_time is not None
+                else weight / (C * pickup_speed(law)))
         resistance = PiecewiseLoad((0, tau0), (weight * t / tau0, weight), t)
     else:
         resistance = PiecewiseLoad((0,), (weight,), t)

@@ -32,11 +32,14 @@ from crane_sym.derivation import SceneLoad, SpecializedLoad
 from crane_sym.extrema import maximum_on_interval
 from crane_sym.law_tables import check_keys, piecewise_law, read_law_table
 from crane_sym.loads import DEFAULT_TIME, PiecewiseLoad, exact_number
+from crane_sym.panels import valid_mask
 from crane_sym.scenes import Panel, SceneError, SceneReport
 from crane_sym.scenes import format_quantity as fq
 from crane_sym.symbols import TIME, PhysicalSymbol, SymbolTable
 
-from .drive_law import FROM_WEIGHT, PICKUP, DriveLawResponse, drive_law_outputs, respond
+from .drive_law import (FROM_WEIGHT, PICKUP, DriveLawResponse, drive_law_outputs,
+                        pickup_speed, respond)
+from .validity import model_span
 
 __all__ = ["DRIVE_LAW", "DriveLaw", "drive_law_report", "read", "response", "specialize"]
 
@@ -79,7 +82,10 @@ def read(table: Mapping[str, Any], where: str = "") -> DriveLaw:
         raise ValueError(f"lifting must be {FROM_WEIGHT!r} or {PICKUP!r}, "
                          f"got {table['lifting']!r}")
     breakpoints, rows = read_law_table(table, "acceleration_unit", acceleration, "m/s^2")
-    return DriveLaw(table["lifting"], breakpoints, rows)
+    law = DriveLaw(table["lifting"], breakpoints, rows)
+    if law.lifting == PICKUP:
+        pickup_speed(law.law())          # (29) needs v0 > 0: refused here, before any file
+    return law
 
 
 def _system(scene) -> dict[str, sp.Rational]:
@@ -121,37 +127,57 @@ DRIVE_LAW = SceneLoad(
 
 
 def drive_law_report(scene, gen: ModuleType) -> SceneReport:
-    """Stage 4: curves of the scene's module ``gen`` over the scene's span and
-    the guaranteed maximum of K (interval arithmetic, not sampling)."""
+    """Stage 4: curves of the scene's module ``gen`` over the scene's span, the
+    part of it where the model holds (``validity.model_span``: the load
+    lifted, the rope taut), and the guaranteed maximum of K over that part
+    only (interval arithmetic, not sampling)."""
     r = response(scene)
     duration, points = scene.options["duration"], scene.options["points"]
     t = np.linspace(0.0, duration, points)
     k = gen.dynamic_coefficient(t)
-    found = maximum_on_interval(r.dynamic_coefficient(), DEFAULT_TIME, 0,
-                                exact_number(duration, "duration"),
-                                symbolic=False, max_depth=_MAX_DEPTH)
-    k_max, t_max = float(found.value), float(found.location)
-    if np.max(k) > k_max * (1 + _SAMPLE_SLACK):
-        raise SceneError(f"scene {scene.name!r}: the generated K reaches {np.max(k)!r}, "
-                         f"above the guaranteed maximum {k_max!r}")
+    span = model_span(r, duration)
     omega = math.sqrt(float(r.C * (r.m1 + r.m2) / (r.m1 * r.m2)))
-    case = "from weight (27)" if r.lifting == FROM_WEIGHT else "with pick-up (26)"
+    pickup = r.lifting == PICKUP
+    case = "with pick-up (26)" if pickup else "from weight (27)"
     v0 = float(r.final_speed)
     lines = [f"lifting {case}; natural frequency Omega = {omega:.4g} rad/s (2), "
              f"period T = {fq(2 * math.pi / omega, 's')}",
              f"final drive speed v0 = {fq(v0, 'm/s')}"
              + (f", rope picks up the load at tau_0 = {fq(float(r.contact_time), 's')}"
-                if r.contact_time is not None else ""),
-             f"K_max = {k_max:.6f} at t = {fq(t_max, 's')} over [0, {fq(duration, 's')}] "
-             f"(interval arithmetic, certified: {found.certified}); sampled max "
-             f"{np.max(k):.6f}"]
+                if pickup else ""),
+             *span.warnings()]
+    values = {"Omega": omega, "v0": v0, "valid_from": math.nan if span.empty else span.start,
+              "valid_to": span.end, "certified": float(span.certified)}
+    if span.empty:
+        lines.append("K_max: not given, the model is valid nowhere on "
+                     f"[0, {fq(duration, 's')}]")
+        values.update(K_max=math.nan, t_max=math.nan)
+    else:
+        found = maximum_on_interval(r.dynamic_coefficient(), DEFAULT_TIME,
+                                    exact_number(span.start, "start"),
+                                    exact_number(span.end, "end"),
+                                    symbolic=False, max_depth=_MAX_DEPTH)
+        k_max, t_max = float(found.value), float(found.location)
+        sampled = float(np.max(k[valid_mask(t, span.spans())], initial=-math.inf))
+        if sampled > k_max * (1 + _SAMPLE_SLACK):
+            raise SceneError(f"scene {scene.name!r}: the generated K reaches {sampled!r}, "
+                             f"above the guaranteed maximum {k_max!r}")
+        part = (f"[0, {fq(duration, 's')}]" if span.whole
+                else f"the valid part {span.interval()} only")
+        lines.append(f"K_max = {k_max:.6f} at t = {fq(t_max, 's')} over {part} (interval "
+                     f"arithmetic, certified: {found.certified and span.certified}); sampled "
+                     f"max {sampled:.6f}")
+        values.update(K_max=k_max, t_max=t_max,
+                      certified=float(found.certified and span.certified))
+    x_eq = "(22)" if pickup else "(24)"
     panels = [Panel("Drive law $a(t)$ and speed $v(t)$", "$a$ [m/s²], $v$ [m/s]",
                     [("$a(t)$", t, gen.drive_acceleration(t)),
                      ("$v(t)$", t, gen.drive_speed(t))]),
               Panel("Dynamic coefficient $K(t)$ (25)", "$K$", [("$K(t)$", t, k)]),
-              Panel("Rope force (24)", "$F$ [kN]", [(r"$C\,x(t)$", t, gen.rope_force(t) / 1e3)]),
+              Panel(f"Rope force {x_eq}", "$F$ [kN]",
+                    [(r"$C\,x(t)$", t, gen.rope_force(t) / 1e3)]),
               Panel("Load acceleration (1)", r"$\ddot x_2$ [m/s²]",
                     [(r"$\ddot x_2(t)$", t, gen.load_acceleration(t))])]
-    return SceneReport(lines=lines, values={"Omega": omega, "K_max": k_max, "t_max": t_max,
-                                            "v0": v0, "certified": float(found.certified)},
-                       panels=panels)
+    for panel in panels[1:]:              # the drive law is data: it holds throughout
+        panel.invalid = span.spans()
+    return SceneReport(lines=lines, values=values, panels=panels)

@@ -15,7 +15,9 @@ The scene option ``figure`` selects what a scene reproduces:
 ``"drive_laws"``
     :math:`K_{дин}(t)` for each law a_i of (30), lifting with pick-up (26)
     and from weight (27), beside the rope force of the rigid load (62); the
-    maximum of each over [0, duration]; the load's acceleration in the
+    maximum of each over the part of [0, duration] where the model holds
+    (``validity``: with pick-up only once the load is lifted, greyed
+    before); the load's acceleration in the
     normalisation of Table 1 against (65), Table 1 and the two maxima printed
     after it.
 
@@ -28,14 +30,16 @@ from __future__ import annotations
 import importlib
 import math
 from types import ModuleType
-from typing import Callable
+from typing import Any, Callable
 
 import numpy as np
 import sympy as sp
 
 from . import drive_law
-from crane_sym.extrema import Extremum, maximum_on_interval
+from .validity import model_span
+from crane_sym.extrema import maximum_on_interval
 from crane_sym.loads import DEFAULT_TIME, exact_number
+from crane_sym.panels import WARNING
 from crane_sym.scenes import Panel, Scene, SceneError, SceneReport
 from crane_sym.scenes import format_quantity as fq
 
@@ -237,13 +241,16 @@ def _printed_maxima() -> dict[int, tuple[float, str]]:
                 f"{table[4]}")}
 
 
-def maxima(scene: Scene) -> dict[tuple[str, int], dict[str, Extremum]]:
-    """Guaranteed maxima per (case, i).
+def maxima(scene: Scene) -> dict[tuple[str, int], dict[str, Any]]:
+    """Guaranteed maxima per (case, i), each over the part of [0, duration]
+    where the model holds.
 
-    ``"K"``: K of (26)/(27) over [0, duration]; ``"load"``: the load's
-    acceleration over :math:`v_0/t_п`, the elastic counterpart of k̃ of
-    (63)-(65), over Table 1's span ([0, t_п] from weight, [τ_0, t_п] with
-    pick-up); ``"rigid"``: k̃_i^(opt) of (65) over [0, t_п] (symbolic).
+    ``"span"``: that part (``validity.model_span``: with pick-up from
+    lift-off, :math:`t \\ge \\tau_0`, on; until the rope goes slack);
+    ``"K"``: K of (26)/(27) over it; ``"load"``: the load's acceleration
+    over :math:`v_0/t_п`, the elastic counterpart of k̃ of (63)-(65), over
+    Table 1's span ([0, t_п] from weight, [τ_0, t_п] with pick-up) within
+    it; ``"rigid"``: k̃_i^(opt) of (65) over [0, t_п] (symbolic).
 
     The elastic responses go straight to the interval search (``solveset``
     can stall factoring their derivatives, sums of sinusoids with long
@@ -254,7 +261,6 @@ def maxima(scene: Scene) -> dict[tuple[str, int], dict[str, Extremum]]:
     maximum found.
     """
     exact, t = _exact(scene), DEFAULT_TIME
-    t_end = exact_number(scene.options["duration"], "duration")
     unit = exact["v0"] / exact["t_n"]
     out = {}
     for i in range(1, 5):
@@ -262,13 +268,18 @@ def maxima(scene: Scene) -> dict[tuple[str, int], dict[str, Extremum]]:
                                     t, 0, exact["t_n"])
         for case in CASES:
             response = law_response(i, case, exact)
-            start = response.contact_time if case == drive_law.PICKUP else 0
+            span = model_span(response, scene.options["duration"])
+            if span.empty:
+                raise SceneError(f"scene {scene.name!r}: a{i} {_CASE_TEXT[case]}: the load "
+                                 "never lifts within the duration; lengthen it")
+            start, stop = (exact_number(x, "t") for x in (span.start, span.end))
             search = {"symbolic": False, "max_depth": _MAX_DEPTH}
             out[(case, i)] = {
-                "K": maximum_on_interval(response.dynamic_coefficient(), t, 0, t_end,
+                "span": span,
+                "K": maximum_on_interval(response.dynamic_coefficient(), t, start, stop,
                                          **search),
                 "load": maximum_on_interval(response.load_acceleration() / unit, t, start,
-                                            exact["t_n"], **search),
+                                            min(exact["t_n"], stop), **search),
                 "rigid": rigid}
     return out
 
@@ -277,8 +288,10 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
     """K(t) for each a_i of (30), both lifting cases, and the maxima against the paper.
 
     Values, per ``case`` in ``pickup``, ``from_weight`` and law ``i``:
-    ``K_max_{case}_a{i}``, ``t_K_max_{case}_a{i}`` (guaranteed, over [0,
-    duration]); ``K_max_sampled_{case}_a{i}`` (the generated function on the
+    ``valid_from_{case}_a{i}``, ``valid_to_{case}_a{i}`` (where the model
+    holds, ``validity.model_span``); ``K_max_{case}_a{i}``,
+    ``t_K_max_{case}_a{i}`` (guaranteed, over that part);
+    ``K_max_sampled_{case}_a{i}`` (the generated function on the whole
     grid); ``load_max_{case}_a{i}``, ``t_load_max_{case}_a{i}`` (guaranteed,
     Table 1's span); per law ``ktilde_opt_max_a{i}``, ``t_ktilde_opt_max_a{i}``
     (guaranteed max of (65), t in units of t_п) and, where the paper states
@@ -300,26 +313,30 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
                        f"t_ktilde_opt_max_a{i}": float(ext["rigid"].location / q["t_n"])})
         if i in printed:
             values[f"paper_ktilde_max_a{i}"] = printed[i][0]
+        span = ext["span"]
+        values.update({f"valid_from_{key}": span.start, f"valid_to_{key}": span.end})
         rows.append(f"a{i} {_CASE_TEXT[case]:<12} K_max = {fq(values[f'K_max_{key}'], digits=7)}"
                     f" at t = {fq(values[f't_K_max_{key}'], 's')}; load acceleration max "
                     f"{fq(values[f'load_max_{key}'], digits=5)} v0/t_n at t = "
-                    f"{fq(values[f't_load_max_{key}'], 's')}")
+                    f"{fq(values[f't_load_max_{key}'], 's')}"
+                    + ("" if span.whole else f"; valid {span.interval()}"))
         group = (rf"lifting {_CASE_TEXT[case]}, $K_\mathrm{{дин}}(t)$ "
                  f"{'(26)' if case == drive_law.PICKUP else '(27)'}")
         by_case[case].append(Panel(
             f"drive law $a_{i}$ of (30)", r"$K_\mathrm{дин}$",
             [("elastic rope, Duhamel (generated)", times, curve),
              (rf"rigid load, $\ddot x_2 = a_{i}$ (61)-(62)", times,
-              _rigid(gen, case, i, times, q))], group=group))
+              _rigid(gen, case, i, times, q))], group=group, invalid=span.spans()))
     values["certified"] = float(all(e.certified for d in found.values() for e in d.values()))
     span, period = scene.options["duration"], 2 * math.pi / q["Omega"]
-    lines = [f"maxima over [0, {fq(span, 's')}] by interval arithmetic (elastic) and "
-             f"solveset (rigid), all certified: {bool(values['certified'])}; "
-             f"T = {fq(period, 's')}, tau_0 = {fq(q['tau_0'], 's')}"]
+    lines = [f"maxima over [0, {fq(span, 's')}], where the model holds, by interval "
+             f"arithmetic (elastic) and solveset (rigid), all certified: "
+             f"{bool(values['certified'])}; T = {fq(period, 's')}, "
+             f"tau_0 = {fq(q['tau_0'], 's')}"]
     if span >= q["t_n"] + period:
         lines.append("after t_n the motion is a free undamped oscillation, so these are "
                      "the maxima for all t >= 0")
-    lines += rows
+    lines += _validity_warnings(found) + rows
     lines.append("k~_i^(opt) of (65) (rigid load, in v0/t_n) against the paper and the "
                  "elastic load's acceleration over Table 1's span:")
     for i in range(1, 5):
@@ -332,6 +349,18 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
         lines.append(f"a{i}: {ours}; {paper}; elastic: {elastic}")
     panels = [p for case in CASES for p in by_case[case]] + [_table1_panel(gen, times, q)]
     return SceneReport(lines, values, panels)
+
+
+def _validity_warnings(found: dict[tuple[str, int], dict[str, Any]]) -> list[str]:
+    """The ``warning:`` lines of the laws whose model does not hold throughout:
+    the first law's text, the others' instants."""
+    partial = [(i, d["span"]) for (_, i), d in found.items() if not d["span"].whole]
+    if not partial:
+        return []
+    first = partial[0][1].warnings(f"a{partial[0][0]}:")
+    others = ", ".join(f"a{i}: {s.interval()}" for i, s in partial[1:])
+    return first + (
+        [f"{WARNING} valid parts of the others: {others}"] if others else [])
 
 
 def _table1_panel(gen: ModuleType, times: np.ndarray, q: dict) -> Panel:

@@ -36,6 +36,7 @@ def scene_report(scene, module):
 
     from crane_sym.generated import travel_braking as gen
     from crane_sym.scene_run import time_function
+    from crane_sym.panels import outside, valid_mask
     from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
     q = scene.parameters
@@ -59,27 +60,33 @@ def scene_report(scene, module):
     link_rigid = float(gen.rigid_link_force(**rigid))
     peak = float(gen.peak_elastic_force(**rigid))
     peak_at = float(gen.peak_time(q["m1"], q["m2"], q["c"]))
+    # The model holds while the brake slips (v1 > 0) and the crane moves (v2 > 0):
+    # it ends at the first of the two zeros.
+    t_slip_end, t_v2_zero = first_zero(vel1), first_zero(vel2)
+    ends = [(t, why) for t, why in ((t_slip_end, "the brake stops slipping (v1 = 0)"),
+                                    (t_v2_zero, "the crane stops (v2 = 0)"))
+            if not math.isnan(t)]
+    t_valid, why_end = min(ends) if ends else (duration, "")
+    valid = valid_mask(times, outside(0.0, t_valid, after="x"))
     values = {
         "p": freq, "f": freq / (2 * math.pi), "F_r": link_rigid, "F_max": peak,
         "t_max": peak_at, "dynamic_factor": peak / link_rigid,
         "F_max_over_P_t": peak / q["P_t"],
-        "v1_min": float(vel1.min()), "v2_min": float(vel2.min()),
-        "t_slip_end": first_zero(vel1), "t_v2_zero": first_zero(vel2),
+        "v1_min": float(vel1[valid].min()), "v2_min": float(vel2[valid].min()),
+        "t_slip_end": t_slip_end, "t_v2_zero": t_v2_zero, "t_valid_end": t_valid,
         "t_stop_rigid": q["v0"] * (q["m1"] + q["m2"]) / (q["P_t"] + q["W"]),
     }
-    span = f"0…{fq(duration, 's')}"
-    if math.isnan(values["t_slip_end"]):
-        slip = (f"brake slips throughout {span}: v1 > 0 "
-                f"(min v1 = {fq(values['v1_min'], 'm/s')})")
-    else:
-        slip = (f"brake stops slipping (v1 = 0) at t = {fq(values['t_slip_end'], 's')}; "
-                "the model is not valid after that")
-    if math.isnan(values["t_v2_zero"]):
-        moving = (f"crane moves throughout {span}: v2 > 0 "
-                  f"(min v2 = {fq(values['v2_min'], 'm/s')})")
-    else:
-        moving = (f"crane stops (v2 = 0) at t = {fq(values['t_v2_zero'], 's')}; "
-                  "the model is not valid after that")
+    def validity(at: float, event: str, throughout: str, name: str) -> str:
+        if math.isnan(at):
+            return (f"{throughout} throughout 0…{fq(duration, 's')}: {name} > 0 "
+                    f"(min {name} = {fq(values[name + '_min'], 'm/s')})")
+        if at > t_valid:         # reached by the model's curve after it stops holding
+            return (f"{event} ({name} = 0) not while the model holds (its {name} "
+                    f"reaches 0 at t = {fq(at, 's')}, past t = {fq(t_valid, 's')})")
+        return f"{event} ({name} = 0) at t = {fq(at, 's')}; the model is not valid after that"
+
+    slip = validity(t_slip_end, "brake stops slipping", "brake slips", "v1")
+    moving = validity(t_v2_zero, "crane stops", "crane moves", "v2")
     lines = [
         f"natural frequency      p = {fq(freq, 'rad/s')}, f = p/2π = {fq(values['f'], 'Hz')}",
         f"rigid-drive link force F_r = {fq(link_rigid / 1e3, 'kN')}",
@@ -92,19 +99,28 @@ def scene_report(scene, module):
         f"rigid crane stops after v0·(m1 + m2)/(P_t + W) = "
         f"{fq(values['t_stop_rigid'], 's')}",
     ]
+    invalid = []
+    if ends:
+        invalid = outside(0.0, t_valid, after=rf"model not valid ($t > {t_valid:.4g}$ s): "
+                          + why_end.split(" (")[0].replace("the ", "", 1))
+        lines.append(f"warning: the duration {fq(duration, 's')} runs past the model's "
+                     f"validity: {why_end} at t = {fq(t_valid, 's')}; the plots grey "
+                     f"t > {fq(t_valid, 's')} and the minima are taken before it")
     if peak_at > duration:
         lines.append(f"note: t_max lies beyond the plotted duration {fq(duration, 's')}")
-    elif peak_at > values["t_slip_end"]:
-        lines.append("note: t_max comes after the brake stops slipping; "
-                     "the peak is not reached")
+    elif peak_at > t_valid:
+        reached = float(force[valid].max())
+        values["F_max_valid"] = reached
+        lines.append(f"note: t_max comes after the model stops holding; the peak is not "
+                     f"reached: largest force while it holds {fq(reached / 1e3, 'kN')}")
     panels = [
         Panel("Elastic link force", "$F$ [kN]", [
             ("$F(t)$ (14)", times, force / 1e3),
             (r"$F_\mathrm{r}$ (rigid drive)", times, np.full_like(times, link_rigid / 1e3)),
-        ]),
+        ], invalid=invalid),
         Panel("Velocities", "$v$ [m/s]", [
             ("$v_1$ (motor side, $m_1$)", times, vel1),
             ("$v_2$ (crane side, $m_2$)", times, vel2),
-        ]),
+        ], invalid=invalid),
     ]
     return SceneReport(lines=lines, values=values, panels=panels)
