@@ -170,15 +170,37 @@ def _uniform_rotations(theta: tuple[float, float], n: int) -> Rotations:
     return rotations
 
 
+#: Magnitudes the sampled-load functions serve: every product of three stays
+#: far from overflow, and every sum over a record of 1e9 samples with it.
+SERVES = 1e90
+
+
+def _serves(sign: str) -> tuple[float, float]:
+    return {"positive": (1.0 / SERVES, SERVES), "nonnegative": (0.0, SERVES)}.get(
+        sign, (-SERVES, SERVES))
+
+
+#: The largest phase Omega*(t_N - t_0) [rad] served: beyond it the low part of
+#: a double-double phase is no longer below one radian.
+PHASE_SPAN = 1e15
+
+
+def _phase_span(Omega: float, span: float) -> None:
+    if not Omega * span <= PHASE_SPAN:
+        raise ValueError(f"Omega*(t[-1] - t[0]) must be <= {PHASE_SPAN:g} rad (the phase of "
+                         f"the last sample; a double no longer resolves it beyond), got "
+                         f"{Omega * span:.3g}")
+
+
 def _scalar(value: object, name: str, sign: str, what: str) -> float:
-    array = _checked(name, value, sign, what)
+    array = _checked(name, value, sign, what, _serves(sign))
     if array.ndim != 0:
         raise ValueError(f"{name} must be a scalar ({what}), got shape {array.shape}")
     return float(array)
 
 
 def _load(S: ArrayLike, n: int | None) -> np.ndarray:
-    S = _checked("S", S, "real", "load samples, m/s^2")
+    S = _checked("S", S, "real", "load samples, m/s^2", _serves("real"))
     if S.ndim != 1:
         raise ValueError(f"S must be a 1-D array of load samples, got shape {S.shape}")
     if n is not None and S.size != n:
@@ -189,7 +211,7 @@ def _load(S: ArrayLike, n: int | None) -> np.ndarray:
 
 
 def _times(t: ArrayLike) -> np.ndarray:
-    t = _checked("t", t, "real", "sample times, s")
+    t = _checked("t", t, "real", "sample times, s", _serves("real"))
     if t.ndim != 1:
         raise ValueError(f"t must be a 1-D array of sample times, got shape {t.shape}")
     if t.size < 2:
@@ -239,7 +261,10 @@ def sampled_response(t: ArrayLike, S: ArrayLike, Omega: float, x0: float = 0.0,
     ------
     ValueError
         Naming the argument: times decreasing or repeated more than twice,
-        shapes that do not match, NaN or inf anywhere, ``Omega <= 0``.
+        shapes that do not match, NaN or inf anywhere, ``Omega <= 0``, a
+        magnitude beyond ``SERVES`` = 1e90 (``Omega`` below 1e-90), a phase
+        ``Omega*(t[-1] - t[0])`` beyond ``PHASE_SPAN`` = 1e15 rad: inside those
+        bounds every result is finite.
     TypeError
         For strings or non-numeric arrays.
 
@@ -259,6 +284,7 @@ def sampled_response(t: ArrayLike, S: ArrayLike, Omega: float, x0: float = 0.0,
     Omega = _scalar(Omega, "Omega", "positive", "natural circular frequency, rad/s")
     x0 = _scalar(x0, "x0", "real", "initial displacement, m")
     v0 = _scalar(v0, "v0", "real", "initial velocity, m/s")
+    _phase_span(Omega, float(t[-1]) - float(t[0]))
     return _sampled(t, S, Omega, x0, v0, acceleration, compensated=True)
 
 
@@ -302,6 +328,7 @@ def sampled_response_uniform(dt: float, S: ArrayLike, Omega: float, x0: float = 
     Omega = _scalar(Omega, "Omega", "positive", "natural circular frequency, rad/s")
     x0 = _scalar(x0, "x0", "real", "initial displacement, m")
     v0 = _scalar(v0, "v0", "real", "initial velocity, m/s")
+    _phase_span(Omega, dt * (S.size - 1))
     return _uniform(dt, S, Omega, x0, v0, acceleration, compensated=True)
 
 

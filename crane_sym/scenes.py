@@ -269,7 +269,8 @@ def _outputs(raw: Any, known: list[str], owner: str, where: str) -> list[str]:
 def _parameters(raw: dict[str, Any], entries: list[PhysicalSymbol],
                 needed: list[PhysicalSymbol], owner: str, where: str) -> dict[str, float]:
     """``[parameters]`` in SI: every name known, every needed one given, each of
-    the right dimension and of the sign its symbol admits."""
+    the right dimension, of the sign its symbol admits and within the range
+    its generated functions serve (``PhysicalSymbol.serves``)."""
     names = [e.name for e in entries]
     for key in raw:
         if key not in names:
@@ -293,6 +294,11 @@ def _parameters(raw: dict[str, Any], entries: list[PhysicalSymbol],
         if not ok:
             raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}) "
                              f"must be {text}, got {raw[entry.name]!r}")
+        low, high = entry.serves
+        if not low <= value <= high:
+            raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}) must "
+                             f"be within [{low:g}, {high:g}] {entry.unit} (the range its "
+                             f"generated functions serve), got {raw[entry.name]!r}")
         parameters[entry.name] = value
     return parameters
 

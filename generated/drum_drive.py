@@ -150,15 +150,15 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-8 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 1e-8 to 1e12
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 1e-8 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 1e-8 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 1e-19 to 1e19
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -173,8 +173,8 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
             and (type(I3) in (float, int) or type(I3) is np.float64)
             and (type(C1) in (float, int) or type(C1) is np.float64)
             and (type(C2) in (float, int) or type(C2) is np.float64)):
-        if (1e-6 <= I1 <= 1e8 and 5e-7 <= I2 <= 5e7 and 5e-6 <= I3 <= 5e8 and 0.001 <= C1 <= 1e12
-                and 0.001 <= C2 <= 1e12):
+        if (1e-8 <= I1 <= 1e8 and 1e-8 <= I2 <= 1e12 and 1e-8 <= I3 <= 5e8 and 1e-8 <= C1 <= 1e12
+                and 1e-19 <= C2 <= 1e19):
             try:    # a failed check or a math error: the array path decides
                 x0 = I1 + I2
                 x1 = C1*x0/I1
@@ -182,11 +182,11 @@ def drive_chain_frequency_1(I1, I2, I3, C1, C2, *, out=None):
                 return np.float64(1.4142135623730951*math.sqrt(C1)*math.sqrt(C2)*math.sqrt(I3 + x0)/(math.sqrt(I1)*math.sqrt(I3)*math.sqrt(x1 + x2 + math.sqrt(4*C1*C2 + (x1 - x2)**2))))
             except (ArithmeticError, ValueError):
                 pass
-    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
-    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
-    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
-    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
-    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
+    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-8, 1e8))
+    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (1e-8, 1e12))
+    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (1e-8, 5e8))
+    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (1e-8, 1e12))
+    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (1e-19, 1e19))
     shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = I1 + I2
     x1 = C1*x0/I1
@@ -200,15 +200,15 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-8 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 1e-8 to 1e12
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 1e-8 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 1e-8 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 1e-19 to 1e19
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -223,19 +223,19 @@ def drive_chain_frequency_2(I1, I2, I3, C1, C2, *, out=None):
             and (type(I3) in (float, int) or type(I3) is np.float64)
             and (type(C1) in (float, int) or type(C1) is np.float64)
             and (type(C2) in (float, int) or type(C2) is np.float64)):
-        if (1e-6 <= I1 <= 1e8 and 5e-7 <= I2 <= 5e7 and 5e-6 <= I3 <= 5e8 and 0.001 <= C1 <= 1e12
-                and 0.001 <= C2 <= 1e12):
+        if (1e-8 <= I1 <= 1e8 and 1e-8 <= I2 <= 1e12 and 1e-8 <= I3 <= 5e8 and 1e-8 <= C1 <= 1e12
+                and 1e-19 <= C2 <= 1e19):
             try:    # a failed check or a math error: the array path decides
                 x0 = C1*(I1 + I2)/I1
                 x1 = C2*(I2 + I3)/I3
                 return np.float64(0.7071067811865476*math.sqrt(x0 + x1 + math.sqrt(4*C1*C2 + (x0 - x1)**2))/math.sqrt(I2))
             except (ArithmeticError, ValueError):
                 pass
-    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
-    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
-    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
-    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
-    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
+    I1 = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-8, 1e8))
+    I2 = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (1e-8, 1e12))
+    I3 = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (1e-8, 5e8))
+    C1 = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (1e-8, 1e12))
+    C2 = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (1e-19, 1e19))
     shape = _broadcast(I1=I1, I2=I2, I3=I3, C1=C1, C2=C2)
     x0 = C1*(I1 + I2)/I1
     x1 = C2*(I2 + I3)/I3
@@ -258,7 +258,7 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     C_z : array_like
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.001 to 1e14
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -275,7 +275,7 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
             and (type(C_z) in (float, int) or type(C_z) is np.float64)
             and (type(C_y) in (float, int) or type(C_y) is np.float64)):
         if (1e-5 <= M0 <= 1e11 and 2e-7 <= D <= 4e6 and 0.001 <= F0 <= 1e12
-                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.1 <= C_y <= 1e14):
+                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.001 <= C_y <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 x0 = C_t*C_y
                 x1 = C_y*C_z
@@ -289,7 +289,7 @@ def running_tight_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.001, 1e14))
     shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
@@ -314,7 +314,7 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     C_z : array_like
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.001 to 1e14
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -331,7 +331,7 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
             and (type(C_z) in (float, int) or type(C_z) is np.float64)
             and (type(C_y) in (float, int) or type(C_y) is np.float64)):
         if (1e-5 <= M0 <= 1e11 and 2e-7 <= D <= 4e6 and 0.001 <= F0 <= 1e12
-                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.1 <= C_y <= 1e14):
+                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.001 <= C_y <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 x0 = C_t*C_y
                 x1 = C_y*C_z
@@ -345,7 +345,7 @@ def running_slack_force(M0, D, F0, C_t, C_z, C_y, *, out=None):
     F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.001, 1e14))
     shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = C_t*C_y
     x1 = C_y*C_z
@@ -370,7 +370,7 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
     C_z : array_like
         longitudinal stiffness of the slack (outgoing) branch [N/m], > 0; served from 0.001 to 1e13
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.001 to 1e14
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -387,7 +387,7 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
             and (type(C_z) in (float, int) or type(C_z) is np.float64)
             and (type(C_y) in (float, int) or type(C_y) is np.float64)):
         if (1e-5 <= M0 <= 1e11 and 2e-7 <= D <= 4e6 and 0.001 <= F0 <= 1e12
-                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.1 <= C_y <= 1e14):
+                and 0.001 <= C_t <= 1e13 and 0.001 <= C_z <= 1e13 and 0.001 <= C_y <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 x0 = D*F0
                 return np.float64(2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z)))
@@ -398,7 +398,7 @@ def running_drum_shaft_deflection(M0, D, F0, C_t, C_z, C_y, *, out=None):
     F0  = _checked('F0', F0, 'positive', 'pretension of both branches at rest, N', (0.001, 1e12))
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.001, 1e14))
     shape = _broadcast(M0=M0, D=D, F0=F0, C_t=C_t, C_z=C_z, C_y=C_y)
     x0 = D*F0
     return _into(out, shape, 2*(C_t*M0 + C_t*x0 - C_z*M0 + C_z*x0)/(D*(C_t*C_y + 4*C_t*C_z + C_y*C_z)))
@@ -412,7 +412,7 @@ def drum_torque(F1, F2, D, *, out=None):
     F1 : array_like
         force in the tight branch (F0 + C_t*e1 in the model) [N], > 0; served from 0.001 to 1e12
     F2 : array_like
-        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 0.001 to 1e12
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 1e-8 to 1e13
     D : array_like
         diameter of the driving drum, D = 2r [m], > 0; served from 2e-7 to 4e6
     out : ndarray, optional
@@ -427,13 +427,13 @@ def drum_torque(F1, F2, D, *, out=None):
             and (type(F1) in (float, int) or type(F1) is np.float64)
             and (type(F2) in (float, int) or type(F2) is np.float64)
             and (type(D) in (float, int) or type(D) is np.float64)):
-        if (0.001 <= F1 <= 1e12 and 0.001 <= F2 <= 1e12 and 2e-7 <= D <= 4e6):
+        if (0.001 <= F1 <= 1e12 and 1e-8 <= F2 <= 1e13 and 2e-7 <= D <= 4e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64((1/2)*D*(F1 - F2))
             except (ArithmeticError, ValueError):
                 pass
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N', (0.001, 1e12))
-    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (0.001, 1e12))
+    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (1e-8, 1e13))
     D  = _checked('D', D, 'positive', 'diameter of the driving drum, D = 2r, m', (2e-7, 4e6))
     shape = _broadcast(F1=F1, F2=F2, D=D)
     return _into(out, shape, (1/2)*D*(F1 - F2))
@@ -447,7 +447,7 @@ def traction_margin(F1, F2, mu, alpha, *, out=None):
     F1 : array_like
         force in the tight branch (F0 + C_t*e1 in the model) [N], > 0; served from 0.001 to 1e12
     F2 : array_like
-        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 0.001 to 1e12
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 1e-8 to 1e13
     mu : array_like
         friction coefficient between element and drum [1], > 0; served from 5e-8 to 2.0
     alpha : array_like
@@ -465,14 +465,14 @@ def traction_margin(F1, F2, mu, alpha, *, out=None):
             and (type(F2) in (float, int) or type(F2) is np.float64)
             and (type(mu) in (float, int) or type(mu) is np.float64)
             and (type(alpha) in (float, int) or type(alpha) is np.float64)):
-        if (0.001 <= F1 <= 1e12 and 0.001 <= F2 <= 1e12 and 5e-8 <= mu <= 2.0
+        if (0.001 <= F1 <= 1e12 and 1e-8 <= F2 <= 1e13 and 5e-8 <= mu <= 2.0
                 and 5e-7 <= alpha <= 300.0):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-5/4*F1/F2 + math.exp(alpha*mu))
             except (ArithmeticError, ValueError):
                 pass
     F1    = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N', (0.001, 1e12))
-    F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (0.001, 1e12))
+    F2    = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (1e-8, 1e13))
     mu    = _checked('mu', mu, 'positive', 'friction coefficient between element and drum, 1', (5e-8, 2.0))
     alpha = _checked('alpha', alpha, 'positive', 'wrap angle of the element on the drum, rad', (5e-7, 300.0))
     shape = _broadcast(F1=F1, F2=F2, mu=mu, alpha=alpha)
@@ -487,7 +487,7 @@ def least_mu_alpha(F1, F2, *, out=None):
     F1 : array_like
         force in the tight branch (F0 + C_t*e1 in the model) [N], > 0; served from 0.001 to 1e12
     F2 : array_like
-        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 0.001 to 1e12
+        force in the slack branch (F0 + C_z*e2 in the model) [N], > 0; served from 1e-8 to 1e13
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -499,13 +499,13 @@ def least_mu_alpha(F1, F2, *, out=None):
     if (out is None
             and (type(F1) in (float, int) or type(F1) is np.float64)
             and (type(F2) in (float, int) or type(F2) is np.float64)):
-        if (0.001 <= F1 <= 1e12 and 0.001 <= F2 <= 1e12):
+        if (0.001 <= F1 <= 1e12 and 1e-8 <= F2 <= 1e13):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(math.log((5/4)*F1/F2))
             except (ArithmeticError, ValueError):
                 pass
     F1 = _checked('F1', F1, 'positive', 'force in the tight branch (F0 + C_t*e1 in the model), N', (0.001, 1e12))
-    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (0.001, 1e12))
+    F2 = _checked('F2', F2, 'positive', 'force in the slack branch (F0 + C_z*e2 in the model), N', (1e-8, 1e13))
     shape = _broadcast(F1=F1, F2=F2)
     return _into(out, shape, np.log((5/4)*F1/F2))
 
@@ -615,15 +615,15 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-8 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 1e-8 to 1e12
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 1e-8 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 1e-8 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 1e-19 to 1e19
     nu1 : array_like
         resistance coefficient of the C1 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     nu2 : array_like
@@ -633,7 +633,7 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     m_L : array_like
         mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0; served from 0.0001 to 1e11
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.001 to 1e14
     nu_y : array_like
         resistance coefficient of the drum-shaft bending [N*s/m], >= 0; served from 0.0 to 1e11
     C_t : array_like
@@ -682,16 +682,16 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
     ndarray
         [SI], shape (10, 1) followed by the broadcast shape of the arguments.
     """
-    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
-    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
-    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
-    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
-    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
+    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-8, 1e8))
+    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (1e-8, 1e12))
+    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (1e-8, 5e8))
+    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (1e-8, 1e12))
+    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (1e-19, 1e19))
     nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad', (0.0, 1e9))
     nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad', (0.0, 1e9))
     m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg", (5e-5, 5e9))
     m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg', (0.0001, 1e11))
-    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.001, 1e14))
     nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m', (0.0, 1e11))
     C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
     C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
@@ -746,15 +746,15 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-8 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 1e-8 to 1e12
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 1e-8 to 5e8
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 1e-8 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 1e-19 to 1e19
     nu1 : array_like
         resistance coefficient of the C1 shaft [N*m*s/rad], >= 0; served from 0.0 to 1e9
     nu2 : array_like
@@ -764,7 +764,7 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     m_L : array_like
         mass of the loaded run (loads, carriers, element), lumped at z [kg], > 0; served from 0.0001 to 1e11
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.001 to 1e14
     nu_y : array_like
         resistance coefficient of the drum-shaft bending [N*s/m], >= 0; served from 0.0 to 1e11
     C_t : array_like
@@ -787,16 +787,16 @@ def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, n
     ndarray
         [SI], shape (10, 10) followed by the broadcast shape of the arguments.
     """
-    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
-    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
-    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
-    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
-    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
+    I1   = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-8, 1e8))
+    I2   = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (1e-8, 1e12))
+    I3   = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (1e-8, 5e8))
+    C1   = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (1e-8, 1e12))
+    C2   = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (1e-19, 1e19))
     nu1  = _checked('nu1', nu1, 'nonnegative', 'resistance coefficient of the C1 shaft, N*m*s/rad', (0.0, 1e9))
     nu2  = _checked('nu2', nu2, 'nonnegative', 'resistance coefficient of the C2 shaft, N*m*s/rad', (0.0, 1e9))
     m3   = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg", (5e-5, 5e9))
     m_L  = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg', (0.0001, 1e11))
-    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    C_y  = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.001, 1e14))
     nu_y = _checked('nu_y', nu_y, 'nonnegative', 'resistance coefficient of the drum-shaft bending, N*s/m', (0.0, 1e11))
     C_t  = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
     C_z  = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
@@ -848,11 +848,11 @@ def mass_matrix(I1, I2, I3, m3, m_L, q, L, r):
     Parameters
     ----------
     I1 : array_like
-        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-6 to 1e8
+        moment of inertia of the motor rotor (reduced to the drum shaft) [kg*m^2], > 0; served from 1e-8 to 1e8
     I2 : array_like
-        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 5e-7 to 5e7
+        moment of inertia of the intermediate mass (gearbox, couplings; reduced) [kg*m^2], > 0; served from 1e-8 to 1e12
     I3 : array_like
-        moment of inertia of the driving drum [kg*m^2], > 0; served from 5e-6 to 5e8
+        moment of inertia of the driving drum [kg*m^2], > 0; served from 1e-8 to 5e8
     m3 : array_like
         mass of the drum with its shaft's share (moves with y) [kg], > 0; served from 5e-5 to 5e9
     m_L : array_like
@@ -869,9 +869,9 @@ def mass_matrix(I1, I2, I3, m3, m_L, q, L, r):
     ndarray
         [SI], shape (5, 5) followed by the broadcast shape of the arguments.
     """
-    I1  = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-6, 1e8))
-    I2  = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (5e-7, 5e7))
-    I3  = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (5e-6, 5e8))
+    I1  = _checked('I1', I1, 'positive', 'moment of inertia of the motor rotor (reduced to the drum shaft), kg*m^2', (1e-8, 1e8))
+    I2  = _checked('I2', I2, 'positive', 'moment of inertia of the intermediate mass (gearbox, couplings; reduced), kg*m^2', (1e-8, 1e12))
+    I3  = _checked('I3', I3, 'positive', 'moment of inertia of the driving drum, kg*m^2', (1e-8, 5e8))
     m3  = _checked('m3', m3, 'positive', "mass of the drum with its shaft's share (moves with y), kg", (5e-5, 5e9))
     m_L = _checked('m_L', m_L, 'positive', 'mass of the loaded run (loads, carriers, element), lumped at z, kg', (0.0001, 1e11))
     q   = _checked('q', q, 'positive', 'mass of one metre of the traction element, kg/m', (5e-7, 2e7))
@@ -928,11 +928,11 @@ def stiffness_matrix(C1, C2, C_y, C_t, C_z, r):
     Parameters
     ----------
     C1 : array_like
-        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, motor to intermediate mass [N*m/rad], > 0; served from 1e-8 to 1e12
     C2 : array_like
-        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 0.001 to 1e12
+        torsional stiffness, intermediate mass to drum [N*m/rad], > 0; served from 1e-19 to 1e19
     C_y : array_like
-        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.1 to 1e14
+        bending stiffness of the drum shaft at the drum [N/m], > 0; served from 0.001 to 1e14
     C_t : array_like
         longitudinal stiffness of the tight (incoming) branch [N/m], > 0; served from 0.001 to 1e13
     C_z : array_like
@@ -945,9 +945,9 @@ def stiffness_matrix(C1, C2, C_y, C_t, C_z, r):
     ndarray
         [SI], shape (5, 5) followed by the broadcast shape of the arguments.
     """
-    C1  = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (0.001, 1e12))
-    C2  = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (0.001, 1e12))
-    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.1, 1e14))
+    C1  = _checked('C1', C1, 'positive', 'torsional stiffness, motor to intermediate mass, N*m/rad', (1e-8, 1e12))
+    C2  = _checked('C2', C2, 'positive', 'torsional stiffness, intermediate mass to drum, N*m/rad', (1e-19, 1e19))
+    C_y = _checked('C_y', C_y, 'positive', 'bending stiffness of the drum shaft at the drum, N/m', (0.001, 1e14))
     C_t = _checked('C_t', C_t, 'positive', 'longitudinal stiffness of the tight (incoming) branch, N/m', (0.001, 1e13))
     C_z = _checked('C_z', C_z, 'positive', 'longitudinal stiffness of the slack (outgoing) branch, N/m', (0.001, 1e13))
     r   = _checked('r', r, 'positive', 'radius of the driving drum, m', (1e-7, 2e6))

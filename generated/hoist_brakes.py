@@ -327,9 +327,9 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     m_r : array_like
         rated payload (Table 1: 52 t) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
@@ -364,8 +364,8 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
             and (type(g) in (float, int) or type(g) is np.float64)
             and (type(omega1) in (float, int) or type(omega1) is np.float64)
             and (type(d_t) in (float, int) or type(d_t) is np.float64)):
-        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
-                and 0.0001 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9
+                and 1e-6 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
                 and 5e-6 <= i_g <= 1e8 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6
                 and 1e-5 <= omega1 <= 4e8 and 1e-7 <= d_t <= 1e7):
             try:    # a failed check or a math error: the array path decides
@@ -375,8 +375,8 @@ def service_brake_factor_hoisting(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
                 pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
     r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
@@ -400,9 +400,9 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     m_r : array_like
         rated payload (Table 1: 52 t) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
@@ -437,8 +437,8 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
             and (type(g) in (float, int) or type(g) is np.float64)
             and (type(omega1) in (float, int) or type(omega1) is np.float64)
             and (type(d_t) in (float, int) or type(d_t) is np.float64)):
-        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
-                and 0.0001 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9
+                and 1e-6 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
                 and 5e-6 <= i_g <= 1e8 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6
                 and 1e-5 <= omega1 <= 4e8 and 1e-7 <= d_t <= 1e7):
             try:    # a failed check or a math error: the array path decides
@@ -448,8 +448,8 @@ def service_brake_factor_lowering(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1,
                 pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
     r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
@@ -473,9 +473,9 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, o
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     m_r : array_like
         rated payload (Table 1: 52 t) [kg], > 0; served from 0.0001 to 1e11
     r : array_like
@@ -510,8 +510,8 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, o
             and (type(g) in (float, int) or type(g) is np.float64)
             and (type(omega1) in (float, int) or type(omega1) is np.float64)
             and (type(d_t) in (float, int) or type(d_t) is np.float64)):
-        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
-                and 0.0001 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9
+                and 1e-6 <= m_h <= 1e11 and 0.0001 <= m_r <= 1e11 and 1e-7 <= r <= 2e6
                 and 5e-6 <= i_g <= 1e8 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6
                 and 1e-5 <= omega1 <= 4e8 and 1e-7 <= d_t <= 1e7):
             try:    # a failed check or a math error: the array path decides
@@ -521,8 +521,8 @@ def safety_brake_factor(m_p, J1, J2, m_h, m_r, r, i_g, i_t, g, omega1, d_t, *, o
                 pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     m_r    = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
     r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
@@ -546,9 +546,9 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     m_p : array_like
         payload [kg], >= 0; served from 0.0 to 1e11
     m_r : array_like
@@ -562,7 +562,7 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     g : array_like
         gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     c : array_like
-        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0; served from 0.001 to 1e13
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0; served from 1e-6 to 1e13
     M_SB : array_like
         torque of the safety brakes on the drums [N*m], > 0; served from 0.001 to 1e12
     t_SB : array_like
@@ -577,15 +577,15 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     """
     t    = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
     J1   = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2   = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h  = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2   = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h  = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     m_p  = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     m_r  = _checked('m_r', m_r, 'positive', 'rated payload (Table 1: 52 t), kg', (0.0001, 1e11))
     r    = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g  = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
     i_t  = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
     g    = _checked('g', g, 'positive', 'gravity, m/s^2', (9.8e-6, 9.82e6))
-    c    = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad', (0.001, 1e13))
+    c    = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad', (1e-6, 1e13))
     M_SB = _checked('M_SB', M_SB, 'positive', 'torque of the safety brakes on the drums, N*m', (0.001, 1e12))
     t_SB = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s', (0.0, 1e6))
     shape = _broadcast(t=t, J1=J1, J2=J2, m_h=m_h, m_p=m_p, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g, c=c,
@@ -637,9 +637,9 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     m_p : array_like
         payload [kg], >= 0; served from 0.0 to 1e11
     r : array_like
@@ -649,7 +649,7 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
     i_t : array_like
         ratio of the rope tackle (8 falls, 2 drums: 4) [1], > 0; served from 1e-6 to 8e6
     c : array_like
-        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0; served from 0.001 to 1e13
+        torsional stiffness of the gearbox, at the motor shaft [N*m/rad], > 0; served from 1e-6 to 1e13
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -667,22 +667,22 @@ def elastic_natural_frequency(J1, J2, m_h, m_p, r, i_g, i_t, c, *, out=None):
             and (type(i_g) in (float, int) or type(i_g) is np.float64)
             and (type(i_t) in (float, int) or type(i_t) is np.float64)
             and (type(c) in (float, int) or type(c) is np.float64)):
-        if (1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9 and 0.0001 <= m_h <= 1e11
+        if (1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9 and 1e-6 <= m_h <= 1e11
                 and 0.0 <= m_p <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
-                and 1e-6 <= i_t <= 8e6 and 0.001 <= c <= 1e13):
+                and 1e-6 <= i_t <= 8e6 and 1e-6 <= c <= 1e13):
             try:    # a failed check or a math error: the array path decides
                 x0 = r**2/i_t**2
                 return np.float64(math.sqrt(c)*math.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/J1))
             except (ArithmeticError, ValueError):
                 pass
     J1  = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2  = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2  = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     m_p = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     r   = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
     i_t = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
-    c   = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad', (0.001, 1e13))
+    c   = _checked('c', c, 'positive', 'torsional stiffness of the gearbox, at the motor shaft, N*m/rad', (1e-6, 1e13))
     shape = _broadcast(J1=J1, J2=J2, m_h=m_h, m_p=m_p, r=r, i_g=i_g, i_t=i_t, c=c)
     x0 = r**2/i_t**2
     return _into(out, shape, np.sqrt(c)*np.sqrt(i_g**2/(J2 + m_h*x0 + m_p*x0) + 1/(J1)))
@@ -731,9 +731,9 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     r : array_like
         drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
@@ -775,8 +775,8 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0.0 <= t <= 1e7 and 0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
-                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+        if (0.0 <= t <= 1e7 and 0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9
+                and 1e-6 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
                 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
                 and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
                 and 0.0 <= t_BB <= 1e6):
@@ -810,8 +810,8 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
     i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
@@ -859,9 +859,9 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     r : array_like
         drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
@@ -907,8 +907,8 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
-                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9
+                and 1e-6 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
                 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
                 and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
                 and 0.0 <= t_BB <= 1e6
@@ -930,8 +930,8 @@ def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
     i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
@@ -970,9 +970,9 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     r : array_like
         drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
@@ -1014,8 +1014,8 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0.0 <= t <= 1e7 and 0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
-                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+        if (0.0 <= t <= 1e7 and 0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9
+                and 1e-6 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
                 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
                 and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
                 and 0.0 <= t_BB <= 1e6):
@@ -1046,8 +1046,8 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     t      = _checked('t', t, 'nonnegative', 'time since the emergency stop, s', (0.0, 1e7))
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
     i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))
@@ -1092,9 +1092,9 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     J1 : array_like
         inertia of the motor shafts (rotors, brake discs, couplings), Table 1 [kg*m^2], > 0; served from 1e-6 to 2e8
     J2 : array_like
-        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-5 to 5e9
+        inertia of the drum shafts, Table 1 [kg*m^2], > 0; served from 1e-12 to 5e9
     m_h : array_like
-        mass of the hook (load-handling device) [kg], > 0; served from 0.0001 to 1e11
+        mass of the hook (load-handling device) [kg], > 0; served from 1e-6 to 1e11
     r : array_like
         drum radius [m], > 0; served from 1e-7 to 2e6
     i_g : array_like
@@ -1140,8 +1140,8 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
             and (type(M_BB) in (float, int) or type(M_BB) is np.float64)
             and (type(t_SB) in (float, int) or type(t_SB) is np.float64)
             and (type(t_BB) in (float, int) or type(t_BB) is np.float64)):
-        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-5 <= J2 <= 5e9
-                and 0.0001 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
+        if (0.0 <= m_p <= 1e11 and 1e-6 <= J1 <= 2e8 and 1e-12 <= J2 <= 5e9
+                and 1e-6 <= m_h <= 1e11 and 1e-7 <= r <= 2e6 and 5e-6 <= i_g <= 1e8
                 and 1e-6 <= i_t <= 8e6 and 9.8e-6 <= g <= 9.82e6 and 1e-5 <= omega1 <= 4e8
                 and 0.001 <= M_SB <= 1e12 and 0.0001 <= M_BB <= 1e11 and 0.0 <= t_SB <= 1e6
                 and 0.0 <= t_BB <= 1e6
@@ -1161,8 +1161,8 @@ def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
                 pass
     m_p    = _checked('m_p', m_p, 'nonnegative', 'payload, kg', (0.0, 1e11))
     J1     = _checked('J1', J1, 'positive', 'inertia of the motor shafts (rotors, brake discs, couplings), Table 1, kg*m^2', (1e-6, 2e8))
-    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-5, 5e9))
-    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (0.0001, 1e11))
+    J2     = _checked('J2', J2, 'positive', 'inertia of the drum shafts, Table 1, kg*m^2', (1e-12, 5e9))
+    m_h    = _checked('m_h', m_h, 'positive', 'mass of the hook (load-handling device), kg', (1e-6, 1e11))
     r      = _checked('r', r, 'positive', 'drum radius, m', (1e-7, 2e6))
     i_g    = _checked('i_g', i_g, 'positive', 'gear ratio of the gearbox, 1', (5e-6, 1e8))
     i_t    = _checked('i_t', i_t, 'positive', 'ratio of the rope tackle (8 falls, 2 drums: 4), 1', (1e-6, 8e6))

@@ -658,7 +658,7 @@ def natural_frequency(m1, m2, C, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     C : array_like
@@ -675,12 +675,12 @@ def natural_frequency(m1, m2, C, *, out=None):
             and (type(m1) in (float, int) or type(m1) is np.float64)
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(C) in (float, int) or type(C) is np.float64)):
-        if (0.0001 <= m1 <= 1e10 and 0.001 <= m2 <= 5e10 and 0.1 <= C <= 1e14):
+        if (1e-9 <= m1 <= 1e17 and 0.001 <= m2 <= 5e10 and 0.1 <= C <= 1e14):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(math.sqrt(C)*math.sqrt(m1 + m2)/(math.sqrt(m1)*math.sqrt(m2)))
             except (ArithmeticError, ValueError):
                 pass
-    m1 = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2 = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     C  = _checked('C', C, 'positive', 'stiffness of the rope (elastic link), N/m', (0.1, 1e14))
     shape = _broadcast(m1=m1, m2=m2, C=C)
@@ -733,7 +733,7 @@ def dynamic_coefficient_instant(t, Omega, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     out : ndarray, optional
@@ -747,13 +747,13 @@ def dynamic_coefficient_instant(t, Omega, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(Omega) in (float, int) or type(Omega) is np.float64)):
-        if (0.0 <= t <= 2e6 and 2e-6 <= Omega <= 6e7):
+        if (0.0 <= t <= 1e7 and 2e-6 <= Omega <= 6e7):
             try:    # a failed check or a math error: the array path decides
                 k0 = (1/2)*Omega
                 return np.float64(2*math.sin(k0*t)**2)
             except (ArithmeticError, ValueError):
                 pass
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
     shape = _broadcast(t=t, Omega=Omega)
     k0 = (1/2)*Omega
@@ -773,11 +773,11 @@ def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -790,15 +790,15 @@ def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0.0 <= t <= 2e6 and 2e-6 <= Omega <= 6e7 and 5e-7 <= t_n <= 3e6):
+        if (0.0 <= t <= 1e7 and 2e-6 <= Omega <= 6e7 and 1e-17 <= t_n <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 k0 = -1/(Omega*t_n)
                 return np.float64(k0*_remainder_float(Omega*t, 1, 1))
             except (ArithmeticError, ValueError):
                 pass
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, t_n=t_n)
     k0 = -1/(Omega*t_n)
     return _into(out, shape, k0*_sin_remainder(Omega*t, 1))
@@ -810,11 +810,11 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -823,9 +823,9 @@ def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 2*np.sin((1/2)*x0)**2
@@ -851,7 +851,7 @@ def pulse_peak_factor(Omega, theta, *, out=None):
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -863,13 +863,13 @@ def pulse_peak_factor(Omega, theta, *, out=None):
     if (out is None
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(theta) in (float, int) or type(theta) is np.float64)):
-        if (2e-6 <= Omega <= 6e7 and 1e-8 <= theta <= 2e6):
+        if (2e-6 <= Omega <= 6e7 and 1e-17 <= theta <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(((2*math.sin((1/2)*Omega*theta)) if (theta < 3.141592653589793/Omega) else (2)))
             except (ArithmeticError, ValueError):
                 pass
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-17, 1e7))
     shape = _broadcast(Omega=Omega, theta=theta)
     return _into(out, shape, np.select([np.less(theta, 3.141592653589793/Omega),True], [2*np.sin((1/2)*Omega*theta),2], default=np.nan))
 
@@ -882,7 +882,7 @@ def pulse_peak_time(Omega, theta, *, out=None):
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -894,7 +894,7 @@ def pulse_peak_time(Omega, theta, *, out=None):
     if (out is None
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(theta) in (float, int) or type(theta) is np.float64)):
-        if (2e-6 <= Omega <= 6e7 and 1e-8 <= theta <= 2e6):
+        if (2e-6 <= Omega <= 6e7 and 1e-17 <= theta <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 x0 = 1/Omega
                 x1 = 3.141592653589793*x0
@@ -902,7 +902,7 @@ def pulse_peak_time(Omega, theta, *, out=None):
             except (ArithmeticError, ValueError):
                 pass
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-17, 1e7))
     shape = _broadcast(Omega=Omega, theta=theta)
     x0 = 1/(Omega)
     x1 = 3.141592653589793*x0
@@ -915,11 +915,11 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -928,9 +928,9 @@ def dynamic_coefficient_ramp_hold(t, Omega, theta, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, theta=theta)
     x0 = Omega*theta
     k0 = 1/(Omega*theta)
@@ -958,7 +958,7 @@ def ramp_hold_peak_factor(Omega, theta, *, out=None):
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     theta : array_like
-        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-8 to 2e6
+        duration θ of the pulse or of the load rise (43)–(53) [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -970,13 +970,13 @@ def ramp_hold_peak_factor(Omega, theta, *, out=None):
     if (out is None
             and (type(Omega) in (float, int) or type(Omega) is np.float64)
             and (type(theta) in (float, int) or type(theta) is np.float64)):
-        if (2e-6 <= Omega <= 6e7 and 1e-8 <= theta <= 2e6):
+        if (2e-6 <= Omega <= 6e7 and 1e-17 <= theta <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1 + 2*abs(math.sin((1/2)*Omega*theta))/(Omega*theta))
             except (ArithmeticError, ValueError):
                 pass
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-8, 2e6))
+    theta = _checked('theta', theta, 'positive', 'duration θ of the pulse or of the load rise (43)–(53), s', (1e-17, 1e7))
     shape = _broadcast(Omega=Omega, theta=theta)
     return _into(out, shape, 1 + 2*abs(np.sin((1/2)*Omega*theta))/(Omega*theta))
 
@@ -987,13 +987,13 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1001,7 +1001,7 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1010,14 +1010,14 @@ def dynamic_coefficient_pickup_a1(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
@@ -1099,13 +1099,13 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1113,7 +1113,7 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1122,14 +1122,14 @@ def dynamic_coefficient_pickup_a2(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = m2*x0
@@ -1208,13 +1208,13 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1222,7 +1222,7 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1231,14 +1231,14 @@ def dynamic_coefficient_pickup_a3(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(Omega)
     x1 = 1/(m2)
@@ -1320,13 +1320,13 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1334,7 +1334,7 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1343,14 +1343,14 @@ def dynamic_coefficient_pickup_a4(t, Omega, tau_0, m1, m2, g, v0, t_n, *, out=No
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, tau_0=tau_0, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(m2)
     x1 = m1*x0
@@ -1431,11 +1431,11 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1443,7 +1443,7 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1452,13 +1452,13 @@ def dynamic_coefficient_from_weight_a1(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
@@ -1487,11 +1487,11 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1499,7 +1499,7 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1508,13 +1508,13 @@ def dynamic_coefficient_from_weight_a2(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = g*t_n
     x1 = 1/(v0 + x0)
@@ -1544,11 +1544,11 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1556,7 +1556,7 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1565,13 +1565,13 @@ def dynamic_coefficient_from_weight_a3(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
@@ -1601,11 +1601,11 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     Omega : array_like
         natural circular frequency Ω of the rope stretch [rad/s], > 0; served from 2e-6 to 6e7
     m1 : array_like
-        reduced mass of the drive (first mass) [kg], > 0; served from 0.0001 to 1e10
+        reduced mass of the drive (first mass) [kg], > 0; served from 1e-9 to 1e17
     m2 : array_like
         mass of the load (second mass) [kg], > 0; served from 0.001 to 5e10
     g : array_like
@@ -1613,7 +1613,7 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1622,13 +1622,13 @@ def dynamic_coefficient_from_weight_a4(t, Omega, m1, m2, g, v0, t_n, *, out=None
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     Omega = _checked('Omega', Omega, 'positive', 'natural circular frequency Ω of the rope stretch, rad/s', (2e-6, 6e7))
-    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (0.0001, 1e10))
+    m1    = _checked('m1', m1, 'positive', 'reduced mass of the drive (first mass), kg', (1e-9, 1e17))
     m2    = _checked('m2', m2, 'positive', 'mass of the load (second mass), kg', (0.001, 5e10))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, m1=m1, m2=m2, g=g, v0=v0, t_n=t_n)
     x0 = 1/(t_n)
     x1 = v0/g
@@ -1658,9 +1658,9 @@ def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1672,13 +1672,13 @@ def optimal_coefficient_from_weight_a1(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
+        if (0.0 <= t <= 1e7 and 1e-17 <= t_n <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n)
     return _into(out, shape, 1)
 
@@ -1689,15 +1689,15 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
         acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1706,11 +1706,11 @@ def optimal_coefficient_pickup_a1(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = g*t_n/(tau_0*v0)
     if out is None and not shape:      # one point: its own branch only
@@ -1731,9 +1731,9 @@ def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1745,15 +1745,15 @@ def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
+        if (0.0 <= t <= 1e7 and 1e-17 <= t_n <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 k0 = -t_n
                 k1 = -1/t_n
                 return np.float64(k1*(k0 + t))
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -1/t_n
@@ -1771,15 +1771,15 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
         acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1788,11 +1788,11 @@ def optimal_coefficient_pickup_a2(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = -t_n
     k1 = -1/t_n
@@ -1816,9 +1816,9 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1830,15 +1830,15 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
+        if (0.0 <= t <= 1e7 and 1e-17 <= t_n <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 k0 = -t_n
                 k1 = 12/t_n**3
                 return np.float64(k1*t*(k0 + t)**2)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = 12/_cube(t_n)
@@ -1859,15 +1859,15 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
         acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1876,11 +1876,11 @@ def optimal_coefficient_pickup_a3(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = -t_n
     k1 = 12/_cube(t_n)
@@ -1904,9 +1904,9 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1918,15 +1918,15 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)
             and (type(t_n) in (float, int) or type(t_n) is np.float64)):
-        if (0.0 <= t <= 2e6 and 5e-7 <= t_n <= 3e6):
+        if (0.0 <= t <= 1e7 and 1e-17 <= t_n <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 k0 = -t_n
                 k1 = -60/t_n**5
                 return np.float64(k1*t**2*(k0 + t)**3)
             except (ArithmeticError, ValueError):
                 pass
-    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t   = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n)
     k0 = -t_n
     k1 = -60/t_n**5
@@ -1950,15 +1950,15 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     t_n : array_like
-        duration of the start (transient) t_п [s], > 0; served from 5e-7 to 3e6
+        duration of the start (transient) t_п [s], > 0; served from 1e-17 to 1e7
     v0 : array_like
         steady hoisting speed after the start [m/s], > 0; served from 1e-7 to 1e6
     g : array_like
         acceleration of gravity [m/s^2], > 0; served from 9.8e-6 to 9.82e6
     tau_0 : array_like
-        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 5e-9 to 500000.0
+        duration τ_0 of the contact of the load with the ground when lifting with pick-up [s], > 0; served from 1e-17 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -1967,11 +1967,11 @@ def optimal_coefficient_pickup_a4(t, t_n, v0, g, tau_0, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
-    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (5e-7, 3e6))
+    t     = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
+    t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     v0    = _checked('v0', v0, 'positive', 'steady hoisting speed after the start, m/s', (1e-7, 1e6))
     g     = _checked('g', g, 'positive', 'acceleration of gravity, m/s^2', (9.8e-6, 9.82e6))
-    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (5e-9, 500000.0))
+    tau_0 = _checked('tau_0', tau_0, 'positive', 'duration τ_0 of the contact of the load with the ground when lifting with pick-up, s', (1e-17, 1e7))
     shape = _broadcast(t=t, t_n=t_n, v0=v0, g=g, tau_0=tau_0)
     k0 = -t_n
     k1 = -60/t_n**5

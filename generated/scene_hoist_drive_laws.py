@@ -346,7 +346,7 @@ def dynamic_coefficient_pickup_a1(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -355,7 +355,7 @@ def dynamic_coefficient_pickup_a1(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + ((351843720888320/5698460903507231)*_sin_half_squared(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.00027158521043857745, -0.0040859394325071935, _exact_phase(25, t, 1))) + (11045078086126142/5698460903507231)*_sin_half_squared(_exact_phase(25, t))
@@ -412,7 +412,7 @@ def dynamic_coefficient_pickup_a2(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -421,7 +421,7 @@ def dynamic_coefficient_pickup_a2(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return ((175921860444160/5698460903507231)*_entire_2(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.03076367256938085, -0.004096802840924737, _exact_phase(25, t, 1))) + ((3108913097059732764796651569152/100703913039958856128874132496575)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06174253581630276*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.0306871573751505*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21141077704121883) + (11045078086126142/5698460903507231)*_sin_half_squared(_exact_phase(25, t))
@@ -479,7 +479,7 @@ def dynamic_coefficient_pickup_a3(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -488,7 +488,7 @@ def dynamic_coefficient_pickup_a3(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return ((1688849860263936/690317380382883875)*_entire_3(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.00164390331194681, -0.015481093958489723, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_half_squared(_exact_phase(25, t))
@@ -546,7 +546,7 @@ def dynamic_coefficient_pickup_a4(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -555,7 +555,7 @@ def dynamic_coefficient_pickup_a4(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (-497366283847729152/86289672547860484375*_entire_4(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.005766654001314742, -0.0006858624108939049, _exact_phase(25, t, 1))) + ((562949953421312/17672124937801825)*_entire_1(_exact_phase(25, t)) if np.less_equal(t, 706884997512073/2251799813685248) else 0.06370935971463045*_sin_half_squared(_exact_phase(25, t, 706884997512073/2251799813685248)) + 0.03166470443730489*_sin_pair(_exact_phase(25, t, 706884997512073/2251799813685248), 1.0) + 0.21814532014268478) + 2*_sin_half_squared(_exact_phase(25, t))
@@ -613,7 +613,7 @@ def dynamic_coefficient_from_weight_a1(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -622,7 +622,7 @@ def dynamic_coefficient_from_weight_a1(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return ((281474976710656/5663276531418399)*_sin_half_squared(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.00021861799544051693, -0.003289059396067918, _exact_phase(25, t, 1))) + 5522539043063071/5663276531418399
@@ -643,7 +643,7 @@ def dynamic_coefficient_from_weight_a2(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -652,7 +652,7 @@ def dynamic_coefficient_from_weight_a2(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return ((140737488355328/5663276531418399)*_entire_2(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.02476383901260896, -0.0032978041158855387, _exact_phase(25, t, 1))) + 5522539043063071/5663276531418399
@@ -673,7 +673,7 @@ def dynamic_coefficient_from_weight_a3(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -682,7 +682,7 @@ def dynamic_coefficient_from_weight_a3(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return ((6755399441055744/3451586901914419375)*_entire_3(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(-0.001315122649557448, -0.012384875166791778, _exact_phase(25, t, 1))) + 1
@@ -703,7 +703,7 @@ def dynamic_coefficient_from_weight_a4(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -712,7 +712,7 @@ def dynamic_coefficient_from_weight_a4(t, *, out=None):
     ndarray
         [1], broadcast over the arguments.
     """
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:      # one point: its own branch only
         return (-1989465135390916608/431448362739302421875*_entire_4(_exact_phase(25, t)) if np.less_equal(t, 1) else _wave(0.004613323201051793, -0.0005486899287151239, _exact_phase(25, t, 1))) + 1
@@ -733,7 +733,7 @@ def optimal_coefficient_from_weight_a1(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -744,12 +744,12 @@ def optimal_coefficient_from_weight_a1(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0.0 <= t <= 2e6):
+        if (0.0 <= t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1)
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     return _into(out, shape, 1)
 
@@ -760,7 +760,7 @@ def optimal_coefficient_from_weight_a2(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -771,12 +771,12 @@ def optimal_coefficient_from_weight_a2(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0.0 <= t <= 2e6):
+        if (0.0 <= t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(1 - t)
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:
         return 1 - t
@@ -792,7 +792,7 @@ def optimal_coefficient_from_weight_a3(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -803,12 +803,12 @@ def optimal_coefficient_from_weight_a3(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0.0 <= t <= 2e6):
+        if (0.0 <= t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(12*t*(t - 1)**2)
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:
         return 12*t*(t - 1)**2
@@ -827,7 +827,7 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -838,12 +838,12 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0.0 <= t <= 2e6):
+        if (0.0 <= t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-60*t**2*(t - 1)**3)
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     if out is None and not shape:
         return -60*t**2*_cube(t - 1)

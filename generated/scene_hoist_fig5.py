@@ -170,7 +170,7 @@ def dynamic_coefficient_ramp(t, *, out=None):
     Parameters
     ----------
     t : array_like
-        time from the start of the drive [s], >= 0; served from 0.0 to 2e6
+        time from the start of the drive [s], >= 0; served from 0.0 to 1e7
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -181,11 +181,11 @@ def dynamic_coefficient_ramp(t, *, out=None):
     """
     if (out is None
             and (type(t) in (float, int) or type(t) is np.float64)):
-        if (0.0 <= t <= 2e6):
+        if (0.0 <= t <= 1e7):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-1/25*_remainder_float(25*t, 1, 1))
             except (ArithmeticError, ValueError):
                 pass
-    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e6))
+    t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
     return _into(out, shape, -1/25*_sin_remainder(25*t, 1))

@@ -117,7 +117,7 @@ def natural_frequency(m1, m2, c, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
@@ -134,12 +134,12 @@ def natural_frequency(m1, m2, c, *, out=None):
             and (type(m1) in (float, int) or type(m1) is np.float64)
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(c) in (float, int) or type(c) is np.float64)):
-        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15):
+        if (0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(math.sqrt(c)*math.sqrt(m1 + m2)/(math.sqrt(m1)*math.sqrt(m2)))
             except (ArithmeticError, ValueError):
                 pass
-    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     shape = _broadcast(m1=m1, m2=m2, c=c)
@@ -154,7 +154,7 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
     t : array_like
         time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
@@ -178,7 +178,7 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
             and (type(c) in (float, int) or type(c) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
                 and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
@@ -188,7 +188,7 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
             except (ArithmeticError, ValueError):
                 pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
@@ -215,7 +215,7 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
     t : array_like
         time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
@@ -239,7 +239,7 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
             and (type(c) in (float, int) or type(c) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
                 and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
@@ -249,7 +249,7 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
             except (ArithmeticError, ValueError):
                 pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
@@ -274,7 +274,7 @@ def peak_elastic_force(m1, m2, P_t, W, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     P_t : array_like
@@ -294,13 +294,13 @@ def peak_elastic_force(m1, m2, P_t, W, *, out=None):
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.001 <= P_t <= 1e12
+        if (0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.001 <= P_t <= 1e12
                 and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(2*_diff_of_products(P_t, m2, W, m1)/(m1 + m2))
             except (ArithmeticError, ValueError):
                 pass
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
@@ -314,7 +314,7 @@ def peak_time(m1, m2, c, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
@@ -331,12 +331,12 @@ def peak_time(m1, m2, c, *, out=None):
             and (type(m1) in (float, int) or type(m1) is np.float64)
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(c) in (float, int) or type(c) is np.float64)):
-        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15):
+        if (0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(3.141592653589793*math.sqrt(m1)*math.sqrt(m2)/(math.sqrt(c)*math.sqrt(m1 + m2)))
             except (ArithmeticError, ValueError):
                 pass
-    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1 = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2 = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     c  = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     shape = _broadcast(m1=m1, m2=m2, c=c)
@@ -349,7 +349,7 @@ def rigid_link_force(m1, m2, P_t, W, *, out=None):
     Parameters
     ----------
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     P_t : array_like
@@ -369,13 +369,13 @@ def rigid_link_force(m1, m2, P_t, W, *, out=None):
             and (type(m2) in (float, int) or type(m2) is np.float64)
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)):
-        if (0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.001 <= P_t <= 1e12
+        if (0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.001 <= P_t <= 1e12
                 and 0.0 <= W <= 1e11):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-_diff_of_products(W, m1, P_t, m2)/(m1 + m2))
             except (ArithmeticError, ValueError):
                 pass
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
     W   = _checked('W', W, 'nonnegative', 'static travel resistance, N', (0.0, 1e11))
@@ -391,7 +391,7 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     t : array_like
         time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
@@ -418,7 +418,7 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)
             and (type(v0) in (float, int) or type(v0) is np.float64)):
-        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
                 and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11 and 1e-7 <= v0 <= 5e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
@@ -430,7 +430,7 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
             except (ArithmeticError, ValueError):
                 pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))
@@ -463,7 +463,7 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     t : array_like
         time since the brake was applied [s], >= 0; served from 0.0 to 1e7
     m1 : array_like
-        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e11
+        reduced mass of the rotating drive parts (rotor, motor and brake couplings) [kg], > 0; served from 0.0001 to 1e12
     m2 : array_like
         reduced mass of the crane or trolley (translating and rotating parts, wheels) [kg], > 0; served from 0.001 to 1e12
     c : array_like
@@ -490,7 +490,7 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
             and (type(P_t) in (float, int) or type(P_t) is np.float64)
             and (type(W) in (float, int) or type(W) is np.float64)
             and (type(v0) in (float, int) or type(v0) is np.float64)):
-        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e11 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
+        if (0.0 <= t <= 1e7 and 0.0001 <= m1 <= 1e12 and 0.001 <= m2 <= 1e12 and 0.1 <= c <= 1e15
                 and 0.001 <= P_t <= 1e12 and 0.0 <= W <= 1e11 and 1e-7 <= v0 <= 5e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = m1 + m2
@@ -502,7 +502,7 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
             except (ArithmeticError, ValueError):
                 pass
     t   = _checked('t', t, 'nonnegative', 'time since the brake was applied, s', (0.0, 1e7))
-    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e11))
+    m1  = _checked('m1', m1, 'positive', 'reduced mass of the rotating drive parts (rotor, motor and brake couplings), kg', (0.0001, 1e12))
     m2  = _checked('m2', m2, 'positive', 'reduced mass of the crane or trolley (translating and rotating parts, wheels), kg', (0.001, 1e12))
     c   = _checked('c', c, 'positive', 'reduced stiffness of the transmission (mainly shafts), N/m', (0.1, 1e15))
     P_t = _checked('P_t', P_t, 'positive', 'braking force, N', (0.001, 1e12))

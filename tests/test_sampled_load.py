@@ -383,3 +383,39 @@ def test_memory_is_the_output_and_a_few_chunks():
         tracemalloc.stop()
     output = sum(a.nbytes for a in got)
     assert peak < output + 0.5 * S.nbytes
+
+
+# --- finite in, finite out --------------------------------------------------------------
+@settings(max_examples=150, deadline=None, derandomize=True)
+@given(st.floats(-90, 90), st.floats(-90, 90), st.floats(-90, 90), st.floats(-90, 90),
+       st.floats(-90, 90), st.booleans())
+def test_every_accepted_argument_gives_finite_values(log_omega, log_dt, log_s, log_x, log_v,
+                                                     uniform):
+    """Omega, dt, the load and the initial state anywhere within 1e±90
+    (sl.SERVES) and a phase span within 1e15 rad: x, x' and x'' are finite."""
+    Omega, dt = 10.0 ** log_omega, 10.0 ** log_dt
+    if Omega * dt * 4 > sl.PHASE_SPAN:
+        with pytest.raises(ValueError, match=r"^Omega\*\(t\[-1\] - t\[0\]\) must be <= 1e\+15"):
+            sl.sampled_response_uniform(dt, np.zeros(5), Omega)
+        return
+    S = 10.0 ** log_s * np.array([0.0, 0.5, -0.5, 0.25, 1.0])
+    x0, v0 = 10.0 ** log_x, -(10.0 ** log_v)
+    if uniform:
+        got = sl.sampled_response_uniform(dt, S, Omega, x0, v0, acceleration=True)
+    else:
+        t = np.cumsum(np.full(S.size, dt)) - dt
+        if not np.all(np.diff(t) > 0):
+            return                              # dt below the spacing of doubles at t
+        got = sl.sampled_response(t, S, Omega, x0, v0, acceleration=True)
+    for part in got:
+        assert np.all(np.isfinite(part))
+
+
+@pytest.mark.parametrize("kwargs,match", [
+    ({"Omega": 1e300}, r"^Omega must be within \[1e-90, 1e\+?90\]"),
+    ({"Omega": 1e-300}, r"^Omega must be within"), ({"x0": -1e100}, r"^x0 must be within"),
+    ({"S": np.array([0.0, 1e300])}, r"^S must be within")])
+def test_beyond_the_served_range_is_refused(kwargs, match):
+    args = {"dt": 1e-3, "S": np.array([0.0, 1.0, 2.0]), "Omega": 25.0} | kwargs
+    with pytest.raises(ValueError, match=match):
+        sl.sampled_response_uniform(**args)

@@ -63,18 +63,22 @@ MODEL_SYMBOLS = [
                    (1e-2, 20.0)),
     *_entries(PARAMETER, "positive", [
         (I1, INERTIA, "kg*m^2", "moment of inertia of the motor rotor (reduced to the drum "
-         "shaft)", (1, 100)),
+         "shaft)", (1, 100), (1e-8, 1e8)),      # hard cases: I1 -> 0
         (I2, INERTIA, "kg*m^2", "moment of inertia of the intermediate mass (gearbox, "
-         "couplings; reduced)", (0.5, 50)),
-        (I3, INERTIA, "kg*m^2", "moment of inertia of the driving drum", (5, 500)),
-        (C1, TORQUE, "N*m/rad", "torsional stiffness, motor to intermediate mass", (1e3, 1e6)),
-        (C2, TORQUE, "N*m/rad", "torsional stiffness, intermediate mass to drum", (1e3, 1e6)),
+         "couplings; reduced)", (0.5, 50), (1e-8, 1e12)),  # hard cases: inertia ratios
+        (I3, INERTIA, "kg*m^2", "moment of inertia of the driving drum", (5, 500),
+         (1e-8, 5e8)),                                       # hard cases: I3 -> 0
+        (C1, TORQUE, "N*m/rad", "torsional stiffness, motor to intermediate mass", (1e3, 1e6),
+         (1e-8, 1e12)),                                      # hard cases: stiffness ratios
+        (C2, TORQUE, "N*m/rad", "torsional stiffness, intermediate mass to drum", (1e3, 1e6),
+         (1e-19, 1e19)),                                     # hard cases: stiffness ratios
         (nu1, ROT_DAMP, "N*m*s/rad", "resistance coefficient of the C1 shaft", (1, 1e3)),
         (nu2, ROT_DAMP, "N*m*s/rad", "resistance coefficient of the C2 shaft", (1, 1e3)),
         (m3, mass, "kg", "mass of the drum with its shaft's share (moves with y)", (50, 5e3)),
         (m_L, mass, "kg", "mass of the loaded run (loads, carriers, element), lumped at z",
          (1e2, 1e5)),
-        (C_y, STIFF, "N/m", "bending stiffness of the drum shaft at the drum", (1e5, 1e8)),
+        (C_y, STIFF, "N/m", "bending stiffness of the drum shaft at the drum", (1e5, 1e8),
+         (1e-3, 1e14)),                                      # hard cases: C_y -> 0
         (nu_y, DAMP, "N*s/m", "resistance coefficient of the drum-shaft bending", (1e2, 1e5)),
         (C_t, STIFF, "N/m", "longitudinal stiffness of the tight (incoming) branch", (1e3, 1e7)),
         (C_z, STIFF, "N/m", "longitudinal stiffness of the slack (outgoing) branch", (1e3, 1e7)),
@@ -89,7 +93,8 @@ MODEL_SYMBOLS = [
          (10, 1e5)),
         (F0, force, "N", "pretension of both branches at rest", (1e3, 1e6)),
         (F1, force, "N", "force in the tight branch (F0 + C_t*e1 in the model)", (1e3, 1e6)),
-        (F2, force, "N", "force in the slack branch (F0 + C_z*e2 in the model)", (1e3, 1e6)),
+        (F2, force, "N", "force in the slack branch (F0 + C_z*e2 in the model)", (1e3, 1e6),
+         (1e-8, 1e13)),                                      # hard cases: F1/F2 extremes
         # exp(mu*alpha) of (19) is finite while mu*alpha < 709: a friction
         # coefficient of at most 2 and a wrap of at most 300 rad (48 turns).
         (mu, ONE, "1", "friction coefficient between element and drum", (0.05, 0.5),

@@ -1,6 +1,7 @@
 """The seeded hard cases of paper 001 for ``crane-sym accuracy``: payload → 0,
 MF → 1 (drum side and load vanishing against the motors), φ5 → 1, tiny and
-huge stiffness, backlash → 0, brake delays at the stop instants.
+huge stiffness, backlash → 0, brake delays at the stop instants; the safety
+brakes alone always hold the load (the rigid stopping time exists).
 """
 from __future__ import annotations
 
@@ -36,5 +37,9 @@ def hard_cases(points: int = 400, seed: int = 20261123) -> dict[str, dict[str, n
     stiff["c"] = np.logspace(-6, 12, n)                     # tiny to huge stiffness
     stiff["delta"] = np.logspace(-15, -1, n)                # backlash -> 0
     stiff["phi5"] = 1 + np.logspace(-15, -1, n)             # phi5 -> 1
-    return {"payload from 1e-12 kg": empty, "MF -> 1 (drum side, load -> 0)": motor,
-            "stiffness 1e-6..1e12, backlash and phi5 - 1 -> 0": stiff}
+    cases = {"payload from 1e-12 kg": empty, "MF -> 1 (drum side, load -> 0)": motor,
+             "stiffness 1e-6..1e12, backlash and phi5 - 1 -> 0": stiff}
+    for case in cases.values():     # brakes that can stop the drive (else no stopping time)
+        held = case["g"] * case["r"] * (case["m_h"] + case["m_p"]) / case["i_t"]
+        case["M_SB"] = np.maximum(case["M_SB"], 2.0 * held)
+    return cases

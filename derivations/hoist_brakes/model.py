@@ -42,9 +42,9 @@ SYMBOLS = SymbolTable([
     PhysicalSymbol(J1, inertia, "kg*m^2", "inertia of the motor shafts (rotors, brake "
                    "discs, couplings), Table 1", sample_range=(1.0, 200.0)),
     PhysicalSymbol(J2, inertia, "kg*m^2", "inertia of the drum shafts, Table 1",
-                   sample_range=(10.0, 5000.0)),
+                   sample_range=(10.0, 5000.0), serve_range=(1e-12, 5e9)),  # hard case: J2 -> 0
     PhysicalSymbol(m_h, mass, "kg", "mass of the hook (load-handling device)",
-                   sample_range=(1e2, 1e5)),
+                   sample_range=(1e2, 1e5), serve_range=(1e-6, 1e11)),  # hard case: m_h -> 0
     PhysicalSymbol(m_p, mass, "kg", "payload", sign="nonnegative", sample_range=(1e2, 1e5)),
     PhysicalSymbol(m_r, mass, "kg", "rated payload (Table 1: 52 t)", sample_range=(1e2, 1e5)),
     PhysicalSymbol(r, length, "m", "drum radius", sample_range=(0.1, 2.0)),
@@ -58,7 +58,8 @@ SYMBOLS = SymbolTable([
                    sample_range=(1e2, 1e5)),
     PhysicalSymbol(M_M, torque, "N*m", "motor torque", sign="real", sample_range=(1e2, 1e5)),
     PhysicalSymbol(c, torque, "N*m/rad", "torsional stiffness of the gearbox, at the "
-                   "motor shaft", sample_range=(1e3, 1e7)),
+                   "motor shaft", sample_range=(1e3, 1e7),
+                   serve_range=(1e-6, 1e13)),                   # hard case: c -> 0
     PhysicalSymbol(phi5, ONE, "1", "dynamic factor φ5 of EN 13001-2",
                    sample_range=(1.0, 2.0)),
     PhysicalSymbol(d_omega, rate, "rad/s", "change of the motor angular speed while braking",

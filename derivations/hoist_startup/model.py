@@ -107,29 +107,31 @@ one = length / length
 _sym = PhysicalSymbol
 
 
-def _defined(expr, dimension, unit, description, sign="real", rng=(0.5, 2.0)):
-    return PhysicalSymbol(expr, dimension, unit, description, DEFINED, sign, rng)
+def _defined(expr, dimension, unit, description, sign="real", rng=(0.5, 2.0), serve=None):
+    return PhysicalSymbol(expr, dimension, unit, description, DEFINED, sign, rng, serve)
 
 
 SYMBOLS = SymbolTable([
     _sym(t, time, "s", "time from the start of the drive", TIME, "nonnegative",
-         (1e-2, 2.0)),
+         (1e-2, 2.0), (1e-8, 1e7)),                     # hard cases: slow loads, long times
     _sym(vt, time, "s", "integration variable θ of the Duhamel integrals", TIME, "real",
          (1e-2, 2.0)),
-    _sym(m1, mass, "kg", "reduced mass of the drive (first mass)", sample_range=(1e2, 1e4)),
+    _sym(m1, mass, "kg", "reduced mass of the drive (first mass)", sample_range=(1e2, 1e4),
+         serve_range=(1e-9, 1e17)),                     # hard cases: m1/m2 from 1e-12 to 1e12
     _sym(m2, mass, "kg", "mass of the load (second mass)", sample_range=(1e3, 5e4)),
     _sym(C, stiffness, "N/m", "stiffness of the rope (elastic link)",
          sample_range=(1e5, 1e8)),
     _sym(g, acceleration, "m/s^2", "acceleration of gravity", sample_range=(9.80, 9.82)),
     _sym(v0, velocity, "m/s", "steady hoisting speed after the start",
          sample_range=(0.1, 1.0)),
-    _sym(t_n, time, "s", "duration of the start (transient) t_п", sample_range=(0.5, 3.0)),
+    _sym(t_n, time, "s", "duration of the start (transient) t_п", sample_range=(0.5, 3.0),
+         serve_range=(1e-17, 1e7)),                     # hard cases: t_n -> 0 (0/0 forms)
     _sym(Pbar0, force, "N", "constant value P̄_0 of the reduced load in (35)–(53)",
          sample_range=(1e3, 1e5)),
     _sym(k, force / time, "N/s", "rate k of the linearly growing load P̄ = k t",
          sample_range=(1e3, 1e5)),
     _sym(theta, time, "s", "duration θ of the pulse or of the load rise (43)–(53)",
-         sample_range=(1e-2, 2.0)),
+         sample_range=(1e-2, 2.0), serve_range=(1e-17, 1e7)),   # hard cases: θ -> 0
     _sym(x1, length, "m", "displacement of the drive mass m1 (up)", COORDINATE, "real"),
     _sym(x2, length, "m", "displacement of the load m2 (up)", COORDINATE, "real"),
     _sym(x, length, "m", "stretch of the rope x = x1 − x2", COORDINATE, "real"),
@@ -148,7 +150,8 @@ SYMBOLS = SymbolTable([
              (1e2, 1e4)),
     _defined(T, time, "s", "period of the natural vibration", "positive", (0.1, 3.0)),
     _defined(tau0, time, "s", "duration τ_0 of the contact of the load with the "
-             "ground when lifting with pick-up", "positive", (5e-3, 0.5)),
+             "ground when lifting with pick-up", "positive", (5e-3, 0.5),
+             (1e-17, 1e7)),                             # hard cases: τ_0 -> 0
     _defined(Q_0, force, "N", "weight Q_0 = m2 g in (28)", "positive", (1e4, 5e5)),
     _defined(P_at0, force, "N", "P(0), driving force at the start"),
     _defined(Q_at0, force, "N", "Q(0), resistance at the start"),

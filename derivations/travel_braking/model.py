@@ -37,7 +37,8 @@ SYMBOLS = SymbolTable([
     PhysicalSymbol(t, time, "s", "time since the brake was applied", TIME,
                    "nonnegative", (1e-3, 10.0)),
     PhysicalSymbol(m1, mass, "kg", "reduced mass of the rotating drive parts "
-                   "(rotor, motor and brake couplings)", sample_range=(1e2, 1e5)),
+                   "(rotor, motor and brake couplings)", sample_range=(1e2, 1e5),
+                   serve_range=(1e-4, 1e12)),                   # hard cases: m2/m1 -> 0
     PhysicalSymbol(m2, mass, "kg", "reduced mass of the crane or trolley "
                    "(translating and rotating parts, wheels)", sample_range=(1e3, 1e6)),
     PhysicalSymbol(c, stiffness, "N/m", "reduced stiffness of the transmission "
