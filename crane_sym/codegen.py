@@ -10,7 +10,7 @@ from __future__ import annotations
 import inspect
 import re
 import textwrap
-from typing import Iterable, Sequence
+from typing import Iterable, Mapping, Sequence
 
 import sympy as sp
 
@@ -255,14 +255,28 @@ def _kernel_source(functions: Sequence[str]) -> str:
     return "\n\n".join(inspect.getsource(f) for f in found.values())
 
 
+def docstring_text(text: str) -> str:
+    """``text`` made safe inside a module's triple-quoted docstring: no
+    backslash (no escape, no ``\\N{...}``), no double quote (nothing can close
+    the docstring), no control character but the newline. Text a user gave is
+    also kept whole, as a literal (:func:`render_module`'s ``constants``)."""
+    text = text.replace("\\", "/").replace('"', "'")
+    return "".join(c if c == "\n" or c.isprintable() else " " for c in text)
+
+
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
                   rules: Sequence[Rule] | None = None, scene_note: str = "",
                   tables: Sequence[tuple[TabulatedOutput, PhaseTable]] = (),
-                  regenerate: str = "crane-sym generate") -> str:
+                  regenerate: str = "crane-sym generate",
+                  constants: Mapping[str, str] = {}) -> str:
     """Full source of ``generated/<d.id>.py``; deterministic for a given
     derivation and SymPy version. ``scene_note`` describes a specialization;
     ``tables`` are a scene's tabulated responses (``crane_sym.tabulated``);
-    ``regenerate`` is the command the header names to write the file again."""
+    ``regenerate`` is the command the header names to write the file again.
+    Both may carry a user's text: they pass :func:`docstring_text`.
+    ``constants`` (name -> text) become module constants printed with
+    ``repr``, a literal whatever the text (a scene's title)."""
+    scene_note, regenerate = docstring_text(scene_note), docstring_text(regenerate)
     outputs = list(d.outputs if outputs is None else outputs)
     labels = sorted({lab for o in [*outputs, *(t for t, _ in tables)] for lab in o.labels},
                     key=lambda s: (not s.startswith("("), len(s), s))
@@ -287,7 +301,9 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     helper_source = ["\n" + render_helper(key, name) for key, name in helpers.items()]
     kernel_source = _kernel_source(functions + helper_source)
     uses_math = any("math." in f for f in [*functions, kernel_source])
+    literals = "".join(f"{key} = {value!r}\n" for key, value in constants.items()
+                       if key.isidentifier() and key.isupper())
     parts = [header, ("import math\n\n" if uses_math else "") + "import numpy as np\n",
-             f"__all__ = [{names}]\n",
+             f"__all__ = [{names}]\n" + (f"\n{literals}" if literals else ""),
              "\n" + kernel_source, *helper_source, *functions]
     return "\n".join(parts)

@@ -122,12 +122,18 @@ class Stage:
 
     def bytes(self, name: str, data: bytes) -> Path:
         """Write ``data`` for ``name``; return the final path."""
-        tmp = self.path(name)
+        self.write(name, data)
+        return self.folder / name
+
+    def write(self, name: str, data: bytes, suffix: str = "") -> Path:
+        """Write ``data`` for ``name``; return the temporary path (to read it
+        back before :meth:`commit`, e.g. to import a module written there)."""
+        tmp = self.path(name, suffix)
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | getattr(os, "O_NOFOLLOW", 0),
                      0o644)
         with os.fdopen(fd, "wb") as handle:
             handle.write(data)
-        return self.folder / name
+        return tmp
 
     def commit(self) -> list[Path]:
         """Rename every temporary onto its name, signals held off meanwhile; a

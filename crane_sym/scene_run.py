@@ -19,6 +19,7 @@ from types import ModuleType
 from typing import Callable
 
 from . import progress, registry
+from .output_files import Stage, check_folder, staged
 from .panels import WARNING
 from .scenes import Scene, SceneError, SceneReport, load_scene
 from .specialize import module_name, render_scene_module
@@ -77,31 +78,38 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, lis
     if make is None:
         raise SceneError(f"derivation {scene.derivation!r} has no scene_report()")
     say = progress.current()
+    check_folder(outdir)
     with say.task(f"specializing and printing {module_name(scene)}"):
-        text = render_scene_module(scene)    # stage 2 refuses bad data: no folder yet
-    outdir = Path(outdir)
-    outdir.mkdir(parents=True, exist_ok=True)
-    source = outdir / module_name(scene)
-    source.write_text(text, encoding="utf-8")
-    with say.task(f"running scene {scene.name}"):
-        report = make(scene, import_module_file(source))
-    if not isinstance(report, SceneReport) or not report.panels:
-        raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
-    greyed = [p.title for p in report.panels if p.invalid]
-    if greyed and not report.warnings:
-        raise SceneError(f"{scene.derivation}.scene_report() greys where the model does not "
-                         f"hold in {greyed} but states it in no line starting with "
-                         f"{WARNING!r}")
-    report.lines.append(f"module written to {source}")
-    with say.task(f"plotting {len(report.panels)} panels"):
-        paths = plot_report(report, scene.title, outdir / f"{scene.name}.png")
+        text = render_scene_module(scene)    # stage 2 refuses bad data: nothing written
+    # The module and the plots go to temporaries in the folder and are renamed
+    # into place together at the end: a failure or a signal leaves nothing.
+    with staged(outdir) as stage:
+        source = Path(outdir) / module_name(scene)
+        written = stage.write(source.name, text.encode("utf-8"), ".py")
+        with say.task(f"running scene {scene.name}"):
+            report = make(scene, import_module_file(written))
+        if not isinstance(report, SceneReport) or not report.panels:
+            raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
+        greyed = [p.title for p in report.panels if p.invalid]
+        if greyed and not report.warnings:
+            raise SceneError(f"{scene.derivation}.scene_report() greys where the model does "
+                             f"not hold in {greyed} but states it in no line starting with "
+                             f"{WARNING!r}")
+        report.lines.append(f"module written to {source}")
+        with say.task(f"plotting {len(report.panels)} panels"):
+            paths = plot_report(report, scene.title, stage, f"{scene.name}.png")
     return report, paths
 
 
-def plot_report(report: SceneReport, title: str, path: Path) -> list[Path]:
-    """Write the report's panels as PNGs: ``path`` when one figure holds them
-    all, else ``<stem>_1.png``, ``<stem>_2.png`` ... (see :func:`figures`)."""
+def plot_report(report: SceneReport, title: str, stage: Stage, name: str) -> list[Path]:
+    """Write the report's panels as PNGs into ``stage``: ``name`` when one
+    figure holds them all, else ``<stem>_1.png``, ``<stem>_2.png`` ... (see
+    :func:`crane_sym.plots.figures`); return the final paths. ``title`` is
+    text, never mathtext (a ``$`` in it is printed as a ``$``)."""
     from . import plots
 
-    made = plots.figures(report.panels, title)
-    return [plots.save(fig, p) for fig, p in zip(made, plots.numbered(path, len(made)))]
+    made = plots.figures(report.panels, title.replace("$", r"\$"))
+    paths = plots.numbered(stage.folder / name, len(made))
+    for fig, path in zip(made, paths):
+        plots.save(fig, stage.path(path.name, ".png"))
+    return paths

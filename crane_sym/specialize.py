@@ -10,6 +10,7 @@ by that load's ``SceneLoad.specialize``, the same stage for another input.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import replace
 from pathlib import Path
 
@@ -100,19 +101,23 @@ def regenerate_command(scene: Scene) -> str:
     absolute path, so a module reads the same on every machine)."""
     shipped = scene.name in list_scenes() and scene_path(scene.name).resolve() == \
         Path(scene.path).resolve()
-    return (f"crane-sym generate --scene {scene.name if shipped else Path(scene.path).name}"
+    name = Path(scene.path).name
+    plain = re.fullmatch(r"[A-Za-z0-9][A-Za-z0-9_.-]*", name) is not None
+    return (f"crane-sym generate --scene {scene.name if shipped else name if plain else 'FILE'}"
             " --out <folder>")
 
 
 def render_scene_module(scene: Scene) -> str:
     """Source of the module specialized to ``scene`` (pure; deterministic)."""
     command = regenerate_command(scene)
+    constants = {"SCENE_NAME": scene.name, "SCENE_TITLE": scene.title}
     if scene.load_table:
         made = specialize_load(scene)
         package = registry.module(scene.derivation)
         d = Derivation(id=scene.derivation, paper=package.PAPER, title=package.TITLE,
                        citation="", model="", symbols=made.symbols)
-        return render_module(d, made.outputs, scene_note=made.note, regenerate=command)
+        return render_module(d, made.outputs, scene_note=made.note, regenerate=command,
+                             constants=constants)
     d = registry.get(scene.derivation)
     given = ", ".join(f"{k} = {v!r} {d.symbols[k].unit}" for k, v in scene.parameters.items())
     note = (f"Specialized to scene {scene.name!r} ({scene.title}): outputs "
@@ -123,7 +128,8 @@ def render_scene_module(scene: Scene) -> str:
     if scene.inputs:
         note += f"\nInputs left as arguments: {', '.join(scene.inputs)}."
     return render_module(d, specialize(d, scene), scene_note=note,
-                         tables=tabulated_outputs(d, scene), regenerate=command)
+                         tables=tabulated_outputs(d, scene), regenerate=command,
+                         constants=constants)
 
 
 def operation_count(outputs: list[Output]) -> int:

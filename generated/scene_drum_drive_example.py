@@ -16,6 +16,9 @@ import numpy as np
 
 __all__ = ['pulsating_force']
 
+SCENE_NAME = 'drum_drive_example'
+SCENE_TITLE = 'Driving drum of a closed-rope installation: start under a pulsating load'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

@@ -17,6 +17,9 @@ import numpy as np
 
 __all__ = ['state_derivative', 'state_jacobian']
 
+SCENE_NAME = 'drum_drive_undamped'
+SCENE_TITLE = 'Driving drum, worked example without dissipation: the state derivative of (12)'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

@@ -17,6 +17,9 @@ import numpy as np
 
 __all__ = ['pointed_tip_shift', 'tip_thickness_shift', 'undercut_limit']
 
+SCENE_NAME = 'fig10_shift_limits'
+SCENE_TITLE = 'Paper 003, Fig. 10: shift coefficient limits against the number of teeth'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

@@ -22,6 +22,9 @@ import numpy as np
 
 __all__ = ['startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway']
 
+SCENE_NAME = 'fig12_startup_backlash'
+SCENE_TITLE = 'Paper 003, Fig. 12 / Table 1: start-up of the travel drive with backlash'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

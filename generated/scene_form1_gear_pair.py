@@ -20,6 +20,9 @@ import numpy as np
 
 __all__ = ['operating_pressure_angle', 'shift_sum', 'tip_diameter', 'tip_thickness', 'contact_ratio', 'undercut_limit']
 
+SCENE_NAME = 'form1_gear_pair'
+SCENE_TITLE = "Paper 003, Form 1: the travel bogie's open gear pair"
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

@@ -25,6 +25,9 @@ import numpy as np
 
 __all__ = ['dynamic_coefficient_pickup_a1', 'dynamic_coefficient_pickup_a2', 'dynamic_coefficient_pickup_a3', 'dynamic_coefficient_pickup_a4', 'dynamic_coefficient_from_weight_a1', 'dynamic_coefficient_from_weight_a2', 'dynamic_coefficient_from_weight_a3', 'dynamic_coefficient_from_weight_a4', 'optimal_coefficient_from_weight_a1', 'optimal_coefficient_from_weight_a2', 'optimal_coefficient_from_weight_a3', 'optimal_coefficient_from_weight_a4']
 
+SCENE_NAME = 'hoist_drive_laws'
+SCENE_TITLE = 'Paper 002: rope dynamic coefficient for the four drive laws of (30)'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

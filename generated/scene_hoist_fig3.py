@@ -16,6 +16,9 @@ import numpy as np
 
 __all__ = ['dynamic_coefficient_instant']
 
+SCENE_NAME = 'hoist_fig3'
+SCENE_TITLE = 'Paper 002, Fig. 3: rope displacement under a suddenly applied load'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

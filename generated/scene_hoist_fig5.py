@@ -16,6 +16,9 @@ import numpy as np
 
 __all__ = ['dynamic_coefficient_ramp']
 
+SCENE_NAME = 'hoist_fig5'
+SCENE_TITLE = 'Paper 002, Fig. 5: rope displacement under a linearly growing load'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

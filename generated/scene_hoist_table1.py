@@ -18,6 +18,9 @@ import numpy as np
 
 __all__ = ['rigid_hook_speed_hoisting', 'rigid_hook_speed_lowering', 'elastic_natural_frequency', 'backlash_at_motor_shaft', 'elastic_gearbox_torque']
 
+SCENE_NAME = 'hoist_table1'
+SCENE_TITLE = 'Table 1 hoist: emergency stop with safety brakes'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

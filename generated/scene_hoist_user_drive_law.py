@@ -23,6 +23,9 @@ import numpy as np
 
 __all__ = ['drive_acceleration', 'drive_speed', 'relative_forcing', 'rope_stretch', 'rope_stretch_rate', 'rope_force', 'dynamic_coefficient', 'load_acceleration']
 
+SCENE_NAME = 'hoist_user_drive_law'
+SCENE_TITLE = 'Hoist start-up with a jerk-limited 3-piece drive law, lifting from weight'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

@@ -18,6 +18,9 @@ import numpy as np
 
 __all__ = ['elastic_force', 'velocity_m1', 'velocity_m2']
 
+SCENE_NAME = 'overhead_crane_50t'
+SCENE_TITLE = '50 t overhead crane: braking the bridge travel with full load'
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a

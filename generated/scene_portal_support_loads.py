@@ -15,6 +15,9 @@ import numpy as np
 
 __all__ = ['max_support_load']
 
+SCENE_NAME = 'portal_support_loads'
+SCENE_TITLE = "Paper 003, (3)-(4): largest portal leg load; Table 3's normal law"
+
 
 def _checked(name, value, sign, what, serves=None):
     """``value`` as a float array; ValueError naming ``name`` if it is not a
