@@ -17,7 +17,7 @@ from crane_sym import registry
 from crane_sym.audit import (AGREEMENTS, CONFIRMATIONS, CONFIRMED_WITH_CONVENTION,
                              RESTATED, UNEXPLAINED, audit, audit_formula)
 from crane_sym.published import (BASES, DEFINITION, MODEL, READINGS, PublishedFormula)
-from crane_sym.report import as_json, as_markdown, by_cause, findings, summary
+from crane_sym.report import as_json, as_markdown, as_table, by_cause, findings, summary
 
 PAPERS = registry.ids()
 
@@ -44,7 +44,7 @@ def test_a_definition_is_never_a_confirmation(paper):
         if r.verdict == RESTATED:
             assert r.basis == DEFINITION, r.label
     restated = sum(r.verdict == RESTATED for r in records)
-    confirmations = sum(r.verdict in CONFIRMATIONS for r in records)
+    confirmations = sum(r.verdict in CONFIRMATIONS and not r.duplicate_of for r in records)
     assert f"{confirmations} confirmations" in summary(records)
     assert f"{restated} restated definitions (not counted" in summary(records)
 
@@ -58,8 +58,8 @@ def test_a_reading_keeps_the_literal_check(paper):
         assert r.literal.reading == "literal" and not r.literal.matches, r.label
         assert r.reading is not None and r.reading.reading in READINGS, r.label
         assert set(r.literal.checks) <= set(r.checks), r.label
-        assert r.detail.startswith("as printed: ") and f"Read with the {r.reading.reading}" \
-            in r.detail, r.label
+        assert r.detail.startswith(("as printed: ", "as reconstructed: ")), r.label
+        assert f"Read with the {r.reading.reading}" in r.detail, r.label
 
 
 def test_every_finding_has_a_cause(paper):
@@ -87,7 +87,32 @@ def test_markdown_groups_findings_by_cause(paper):
         assert f"### {cause_id} ({len(group)} record" in text
     for r in findings(records):
         if r.printed:
-            assert f"printed: ${r.printed}$" in text, r.label
+            shown = "the OCR kept: " if r.reconstructed else "printed: "
+            assert f"{shown}${r.printed}$" in text, r.label
+
+
+def test_every_format_shows_what_a_record_rests_on(paper):
+    """A reconstruction is flagged with its OCR, and a basis note is shown for a
+    confirmation as for a finding, in the table, the Markdown and the JSON; a
+    reconstructed transcription is never described as "as printed"."""
+    _, records = paper
+    table, markdown = as_table(records), as_markdown(records)
+    rows = {line for line in markdown.splitlines() if line.startswith("| ")}
+    for r in records:
+        label = r.label.replace("|", "\\|")
+        row = next(line for line in rows if line.startswith(f"| {r.derivation} | {label} |"))
+        if r.reconstructed:
+            assert "reconstructed from OCR damage; the OCR kept" in row, r.label
+            assert not r.detail.startswith("as printed"), r.label
+            assert all(a.note != "the print as printed" for a in r.attempts), r.label
+        if r.basis_note:
+            assert " ".join(r.basis_note.split())[:60] in row, r.label
+        assert r.as_dict()["transcription"] == r.transcription
+    for r in records:
+        if r.reconstructed:
+            assert f"the OCR kept: «{' '.join(r.printed.split())}»" in table, r.label
+        if r.basis_note:
+            assert f"rests on the {r.basis}: {' '.join(r.basis_note.split())}"[:80] in table
 
 
 def _scaled(relation: sp.Eq) -> sp.Eq:

@@ -110,7 +110,10 @@ PUBLISHED = [
              "whole-paper remark: (16) defines Y as the response to a unit impulse of "
              "S (m/s² · s); (34), (39), (43), (44), (48), (49) use the same name for the "
              "response to a unit impulse of the force P̄ = m S, smaller by the factor m",
-             compare_to="Y per unit force", kind=ASSUMPTION, cause=Y_TWO_MEANINGS),
+             compare_to="Y per unit force", kind=ASSUMPTION,
+             stated='"де Y(t) – реакція системи на одиничний імпульс" (16) ("Y(t), the '
+             'response of the system to a unit impulse"), the name (33)–(49) use',
+             cause=Y_TWO_MEANINGS),
     _printed("(35)", L35, sp.Eq(x, Pbar0 / (m * _W ** 2) * (1 - _cos)),
              "cos Ω t read as cos(Ωt)"),
     _printed("m Ω² = C (after (35))", r"m \cdot \Omega^2 = C", sp.Eq(m * _W ** 2, C),
