@@ -22,6 +22,7 @@ from .fits import fit_of
 from .latex import latex
 from .published import (ASSUMPTION, CHOSEN, DEFINITION, INTERNAL, READINGS,
                         RECONSTRUCTED, Cause, Convention, PublishedFormula)
+from .sampling import physical_definitions
 from .sensitivity import Sensitivity
 
 CONFIRMED = "confirmed"
@@ -180,10 +181,25 @@ class _Comparison:
     outcomes: tuple[CheckOutcome, ...]
 
 
+#: id(derivation) -> (number of steps, definitions): the definitions of its defined
+#: symbols in its data, found once per built derivation.
+_DEFINITIONS: dict[int, tuple[int, dict]] = {}
+
+
+def definitions(d: Derivation) -> dict[sp.Symbol, sp.Expr]:
+    """The defined symbols of ``d`` in its data (``sampling.physical_definitions``),
+    computed once per derivation (again if steps were added since)."""
+    cached = _DEFINITIONS.get(id(d))
+    if cached is None or cached[0] != len(d.steps):
+        cached = (len(d.steps), physical_definitions(d.steps, d.symbols))
+        _DEFINITIONS[id(d)] = cached
+    return cached[1]
+
+
 def _compare(reading: sp.Eq, derived: sp.Eq, d: Derivation,
              tolerance: float = 0.0) -> _Comparison:
     num = numeric_equivalence(reading, derived, d.symbols, tol=max(tolerance, 1e-20),
-                              names=d.latex_names)
+                              names=d.latex_names, definitions=definitions(d))
     if tolerance > 0:  # a rounded printed number: only numbers can decide
         skipped = CheckOutcome("symbolic", INCONCLUSIVE,
                                f"not tried: the print is rounded (tolerance {tolerance:g})")
