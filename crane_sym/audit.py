@@ -20,6 +20,7 @@ from .checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome, difference,
 from .derivation import Derivation
 from .fits import fit_of
 from .latex import latex
+from .machine_read import MachineRead, machine_read
 from .published import (ASSUMPTION, CHOSEN, DEFINITION, INTERNAL, READINGS,
                         RECONSTRUCTED, Cause, Convention, PublishedFormula)
 from .sampling import physical_definitions
@@ -95,7 +96,7 @@ class AuditRecord:
     paper_reading: str = ""                 # the paper's declared reading it uses
     duplicate_of: str = ""                  # label of an earlier record, same check
     target: str = ""                        # the derived step it is checked against
-    machine_read: object = None             # crane_sym.machine_read.MachineRead
+    machine_read: MachineRead | None = None  # the print read by machine
 
     @property
     def transcription(self) -> str:
@@ -355,13 +356,14 @@ def _check_key(f: PublishedFormula) -> tuple | None:
 
 
 def audit(d: Derivation) -> list[AuditRecord]:
-    """Verdicts on every published formula of ``d``, in the paper's order; a record
-    that repeats an earlier one's check (the same number printed twice, 8.9 and
-    890 %) names that record in ``duplicate_of`` and is counted once."""
+    """Verdicts on every published formula of ``d``, in the paper's order, each with
+    its print read by machine against the transcription (``machine_read``); a
+    record that repeats an earlier one's check (the same number printed twice, 8.9
+    and 890 %) names that record in ``duplicate_of`` and is counted once."""
     records, seen = [], {}
     for f in d.published:
         progress.current().step(f"{d.id}: checking printed formula {f.label}")
-        r = audit_formula(d, f)
+        r = replace(audit_formula(d, f), machine_read=machine_read(d, f))
         key = _check_key(f)
         if key is not None and key in seen:
             r = replace(r, duplicate_of=seen[key])

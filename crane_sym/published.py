@@ -223,6 +223,11 @@ class PublishedFormula:
         The derived step under the rejected reading of ``paper_reading``,
         tried when the record fails, so a finding says whether only that
         reading reproduces the print.
+    read_as : str
+        A named reading of the print's names that its text, not its LaTeX,
+        fixes (the instant "at t = 0" of a sentence, one name the paper uses
+        for two quantities): where the machine reading of the print differs
+        from the transcription, this is what explains it, shown in the record.
     """
 
     label: str
@@ -242,6 +247,7 @@ class PublishedFormula:
     stated: str = ""
     paper_reading: PaperReading | None = None
     rejected_target: str = ""
+    read_as: str = ""
 
     def __post_init__(self) -> None:
         if self.basis not in BASES:

@@ -540,6 +540,8 @@ def _late_rows() -> list[PublishedFormula]:
                  "drive chain's two frequencies) and is no evidence either way",
                  cause=C_K_THREE_MASSES),
         _printed("(14)", L14, sp.Eq(y, y_h + y_p), "y_1, y_2 of (14) are y_h, y_p here",
+                 read_as="the print's y_1, y_2 in (14) are the homogeneous and the particular "
+                 "solution (y_h, y_p), not the coordinates y_1, y_2 of (12)",
                  basis=DEFINITION, basis_note="y = y1 + y2 names the homogeneous and the "
                  "particular solution; step (14) restates it"),
         _printed("(14), homogeneous equation", L14b,

@@ -193,7 +193,8 @@ PUBLISHED = [
              cause=MINUS_AT_LINE_BREAK),
     _printed("(14)", L14, sp.Eq(P_d, C * x_s - C * x_s0 * _cos + Q_at0 * _cos
                                 - C / _W * x_s0_dot * _sin)),
-    _printed("(15)", L15, sp.Eq(x_s, INT_S_Y), "Y(t − θ) written out with (16)"),
+    _printed("(15)", L15, sp.Eq(x_s, INT_S_Y), "Y(t − θ) written out with (16)",
+             read_as="Y(t − θ) written out with its definition (16), sin(Ω(t − θ))/Ω"),
     _printed("(16)", L16, sp.Eq(Y, _sin / _W)),
     _printed("(17)", L17, sp.Eq(x_s, INT_S / _W)),
     _printed("(18)", L18, sp.Eq(x_s.diff(t), INT_S_COS)),
