@@ -3,7 +3,10 @@
 - a ``definition`` record is never counted as a confirmation;
 - a reading always leaves the literal check in the record, and is named there;
 - every finding has a cause the transcriber gave, one sentence per cause id;
-- a transcription mutated by scaling one term flips to a finding.
+- a transcription mutated by scaling one term flips to a finding;
+- every format shows what a record rests on (reconstruction, basis note);
+- a result of chosen parameters is decided by their band, never confirmed;
+- every print is read by machine, a difference explained, coverage in the README.
 """
 from __future__ import annotations
 
@@ -15,8 +18,9 @@ import sympy as sp
 
 from crane_sym import registry
 from crane_sym.audit import (AGREEMENTS, CONFIRMATIONS, CONFIRMED_WITH_CONVENTION,
-                             RESTATED, UNEXPLAINED, audit, audit_formula)
-from crane_sym.published import (BASES, DEFINITION, MODEL, READINGS, PublishedFormula)
+                             CONSISTENT, RESTATED, UNEXPLAINED, audit, audit_formula)
+from crane_sym.published import (BASES, CHOSEN, DEFINITION, MODEL, READINGS,
+                                 PublishedFormula)
 from crane_sym.report import as_json, as_markdown, as_table, by_cause, findings, summary
 
 PAPERS = registry.ids()
@@ -182,3 +186,20 @@ def test_readme_states_the_machine_read_coverage(paper):
     from crane_sym.report import machine_read_coverage
     d, records = paper
     assert _readme_coverage().get(d.id) == machine_read_coverage(records)
+
+
+def test_chosen_parameters_never_confirm(paper):
+    """A number that only a model with chosen parameters gives is decided by the
+    band those parameters span, stated in the record: consistent or a discrepancy,
+    never a confirmation and never a remark."""
+    d, records = paper
+    for f, r in zip(d.published, records):
+        chosen = f.printed is not None and d.step(f.target).sensitivity is not None
+        assert chosen == (f.kind == CHOSEN), f.label
+        if chosen:
+            assert r.verdict in (CONSISTENT, "discrepancy"), f.label
+            low, high = r.sensitivity.band
+            assert f"band {low:.4g}–{high:.4g}" in r.detail and "Sensitivity:" in r.detail
+            assert r.as_dict()["sensitivity"]["parameters"], f.label
+        if r.verdict == CONSISTENT:
+            assert chosen and r.verdict not in CONFIRMATIONS, f.label
