@@ -3,8 +3,10 @@
 1. ``symbolic``: the printed and the derived relation are the same, i.e. the
    difference of their residuals simplifies to zero, or their ratio simplifies
    to a nonzero factor free of the unknowns (same equation, rearranged).
-2. ``numeric``: the same question at seeded random points drawn from the
-   symbols' physical ranges, in mpmath at ``dps`` digits. Unknowns (time,
+2. ``numeric``: the same question at seeded random points inside the physics
+   (``crane_sym.sampling``: data from their physical ranges, a factor of 2
+   apart within a dimension, defined quantities from their definitions), in
+   mpmath at ``dps`` digits. Unknowns of an implicit relation (time,
    coordinates and their derivatives, defined quantities) are drawn twice per
    point: two equivalent relations have one residual ratio at both draws.
 3. ``dimension``: every term of the printed relation has one dimension.
@@ -23,6 +25,7 @@ import sympy as sp
 from .dimensions import check_equation, vector
 from .latex import latex
 from .outcomes import FAIL, INCONCLUSIVE, PASS, CheckOutcome
+from .sampling import PointSampler, draw
 from .symbols import COORDINATE, DEFINED, TIME, SymbolTable
 
 
@@ -72,24 +75,21 @@ def symbolic_equivalence(printed: sp.Eq, derived: sp.Eq,
                         "simplification did not reduce the difference to 0")
 
 
-def _draw(entry, rng: np.random.Generator) -> float:
-    lo, hi = entry.sample_range
-    value = float(np.exp(rng.uniform(np.log(lo), np.log(hi))))
-    if entry.sign == "real" and rng.random() < 0.5:
-        value = -value
-    return value
-
-
 def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
                         *, points: int = 6, dps: int = 30, seed: int = 2024,
-                        tol: float = 1e-20, names: dict | None = None) -> CheckOutcome:
+                        tol: float = 1e-20, names: dict | None = None,
+                        definitions: dict | None = None) -> CheckOutcome:
     """Compare two relations at seeded physical points in mpmath.
 
-    When both define the same quantity (same left-hand side) their right-hand
+    Data are drawn from their physical ranges, a factor of 2 apart within a
+    dimension where the ranges allow (``crane_sym.sampling``). When both
+    relations define the same quantity (same left-hand side) their right-hand
     sides are compared, within the relative tolerance ``tol`` (a printed
-    number rounded to a few digits needs its half-unit of the last digit).
-    Otherwise the residual ratio must be one constant for two draws of the
-    unknowns at each point.
+    number rounded to a few digits needs its half-unit of the last digit); a
+    defined symbol in them takes the value of its definition (``definitions``,
+    from ``sampling.physical_definitions``) at the drawn data. Otherwise the
+    residual ratio must be one constant for two draws of the unknowns at each
+    point, a defined unknown drawn within a factor of 3 of its definition.
     """
     same_lhs = printed.lhs == derived.lhs
     rp, rd = ((printed.rhs, derived.rhs) if same_lhs
@@ -97,40 +97,54 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
     frozen = _frozen(table, (rp, rd))
     rp, rd = rp.xreplace(frozen), rd.xreplace(frozen)
     free = rp.free_symbols | rd.free_symbols
-    unknown = sorted((unknowns_of(table) | set(frozen.values())) & free, key=str)
-    params = [e for e in table if e.expr in free and e.expr not in unknown]
-    stray = free - set(unknown) - {e.expr for e in params}
+    unknown_all = sorted((unknowns_of(table) | set(frozen.values())) & free, key=str)
+    defs = definitions or {}
+    computed = [u for u in unknown_all if same_lhs and u in defs]
+    unknown = [u for u in unknown_all if u not in computed]
+    params = [e for e in table if e.expr in free and e.expr not in unknown_all]
+    stray = free - set(unknown_all) - {e.expr for e in params}
     if stray:
         raise ValueError(f"symbols {sorted(map(str, stray))} are not in the symbol table")
-    args = [e.expr for e in params] + unknown
+    args = [e.expr for e in params] + computed + unknown
     f_p = sp.lambdify(args, rp, modules="mpmath")
     f_d = sp.lambdify(args, rd, modules="mpmath")
     rng = np.random.default_rng(seed)
     entries = {e.expr: e for e in table}
     original = {v: k for k, v in frozen.items()}
+    centred = [u for u in unknown if u in defs]
+    sampler = PointSampler(params, {u: defs[u] for u in computed + centred}, table)
 
-    def name_values(pvals: list, uvals: list) -> tuple[tuple[str, str], ...]:
+    def name_values(vals: list, syms: list) -> tuple[tuple[str, str], ...]:
         tex = dict(names or {})
-        named = [(latex(e.expr, symbol_names=tex), v) for e, v in zip(params, pvals)]
-        named += [(latex(original.get(u, u), symbol_names=tex), v)
-                  for u, v in zip(unknown, uvals)]
-        return tuple((k, mpmath.nstr(v, 12)) for k, v in named)
+        return tuple((latex(original.get(s, s), symbol_names=tex), mpmath.nstr(v, 12))
+                     for s, v in zip(syms, vals))
 
-    def draw_unknowns() -> list:
-        return [mpmath.mpf(_draw(entries[u], rng) if u in entries else rng.uniform(0.3, 3.0))
-                for u in unknown]
+    def draw_unknowns(at: dict) -> list:
+        """Defined unknowns about their definitions, the others in their ranges (a
+        frozen x(t) in x's); a derivative, which has no range, in [0.3, 3]."""
+        out = []
+        for u in unknown:
+            entry = entries.get(u) or entries.get(original.get(u))
+            if u in at and at[u] != 0:
+                out.append(at[u] * mpmath.mpf(float(np.exp(rng.uniform(-np.log(3),
+                                                                      np.log(3))))))
+            else:
+                out.append(mpmath.mpf(draw(entry, rng) if entry is not None
+                                      else rng.uniform(0.3, 3.0)))
+        return out
 
     worst = mpmath.mpf(0)
     tiny = mpmath.mpf(10) ** -dps
     with mpmath.workdps(dps):
         for _ in range(points):
-            pvals = [mpmath.mpf(_draw(e, rng)) for e in params]
+            pvals, at = sampler.point(rng)
+            known = pvals + [at[u] for u in computed]
             if same_lhs:
-                uvals = draw_unknowns()
-                a, b = f_p(*pvals, *uvals), f_d(*pvals, *uvals)
+                uvals = draw_unknowns(at)
+                a, b = f_p(*known, *uvals), f_d(*known, *uvals)
                 dev = abs(a - b) / max(abs(b), tiny)
                 if dev > tol:
-                    point = name_values(pvals, uvals)
+                    point = name_values(known + uvals, args)
                     return CheckOutcome(
                         "numeric", FAIL,
                         f"at {_at(point)} the printed right-hand side is "
@@ -140,8 +154,8 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
             else:
                 ratios, draws = [], []
                 for _draw_no in range(2):
-                    uvals = draw_unknowns()
-                    a, b = f_p(*pvals, *uvals), f_d(*pvals, *uvals)
+                    uvals = draw_unknowns(at)
+                    a, b = f_p(*known, *uvals), f_d(*known, *uvals)
                     if b != 0:
                         ratios.append(a / b)
                         draws.append(uvals)
@@ -151,8 +165,8 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
                 dev = abs(r0 - r1) / max(abs(r0), abs(r1), tiny)
                 if r0 == 0 or dev > tol:
                     second = ", ".join(f"{k} = {v}" for k, v in
-                                       name_values([], draws[1])) or "none"
-                    point = name_values(pvals, draws[0])
+                                       name_values(draws[1], unknown)) or "none"
+                    point = name_values(known + draws[0], args)
                     return CheckOutcome(
                         "numeric", FAIL,
                         f"at {_at(point)} the printed/derived residual ratio is "

@@ -13,6 +13,7 @@ import sympy as sp
 
 from . import progress
 from .published import PublishedFormula
+from .sensitivity import Sensitivity
 from .symbols import PhysicalSymbol, SymbolTable
 
 
@@ -33,6 +34,9 @@ class Step:
         Why the step is taken (for the walkthrough); optional.
     title : str
         A short heading for the walkthrough.
+    sensitivity : Sensitivity or None
+        For a number of a reconstructed model that needs parameters the paper
+        does not state: how far it moves over their plausible ranges.
     """
 
     label: str
@@ -41,6 +45,7 @@ class Step:
     why: str = ""
     title: str = ""
     seconds: float = field(default=0.0, compare=False)
+    sensitivity: Sensitivity | None = field(default=None, compare=False)
 
     @property
     def numbered(self) -> bool:
@@ -280,14 +285,16 @@ class Derivation:
         raise KeyError(f"{self.id}: no output named {name!r}")
 
     def add(self, label: str, statement: sp.Eq, how: str, why: str = "",
-            title: str = "") -> sp.Eq:
+            title: str = "", sensitivity: Sensitivity | None = None) -> sp.Eq:
         """Append a step and return its statement, so a derivation reads
         ``eq4 = d.add("(4)", ..., how="...")``. The step records the time
-        spent since the previous one (``crane-sym audit --profile``)."""
+        spent since the previous one (``crane-sym audit --profile``); a number
+        of a model with chosen parameters carries its ``sensitivity``."""
         if any(s.label == label for s in self.steps):
             raise ValueError(f"{self.id}: step {label!r} added twice")
         now = time.perf_counter()
-        self.steps.append(Step(label, statement, how, why, title, now - self._clock))
+        self.steps.append(Step(label, statement, how, why, title, now - self._clock,
+                               sensitivity))
         self._clock = now
         progress.current().step(f"{self.id}: step {label} done")
         return statement

@@ -19,7 +19,11 @@ from dataclasses import dataclass
 import sympy as sp
 
 EQUATION = "equation"      # a claim that must follow from the model
-ASSUMPTION = "assumption"  # a stated modelling choice; a difference is a remark
+ASSUMPTION = "assumption"  # a modelling choice the paper states; a difference is a remark
+#: A number a reconstructed model gives only through parameters the paper does not
+#: state: decided against the band those parameters span (``crane_sym.sensitivity``).
+CHOSEN = "result of chosen parameters"
+KINDS = (EQUATION, ASSUMPTION, CHOSEN)
 
 # --- What a verdict rests on -------------------------------------------------------
 MODEL = "model"
@@ -74,6 +78,66 @@ class Cause:
 
 
 @dataclass(frozen=True)
+class PaperReading:
+    """How a paper's data are read where the print allows two readings, declared
+    once per paper with the evidence for it; every record that depends on it
+    names it, and a printed number that only the rejected reading reproduces is
+    a finding that says so.
+
+    Parameters
+    ----------
+    subject : str
+        What is read, e.g. "Table 1's J1, J2 and M_SB".
+    reading : str
+        The reading taken, e.g. "values of the whole drive (both trains)".
+    evidence : str
+        Why: the printed numbers that decide between the readings.
+    rejected : str
+        The other reading, e.g. "values of each train (counted twice)".
+    """
+
+    subject: str
+    reading: str
+    evidence: str
+    rejected: str
+
+    @property
+    def text(self) -> str:
+        """``"<subject> read as <reading>"``."""
+        return f"{self.subject} read as {self.reading}"
+
+
+@dataclass(frozen=True)
+class Fit:
+    """A parameter the paper does not state, fitted to several printed numbers.
+
+    Each printed number that a ``fitted value`` reading with this fit checks
+    allows an interval of the parameter (its derived step is a function of
+    it, the print has its rounding); the audit shows that interval, the one
+    all of them share, and the value the reading takes, which must lie in it.
+
+    Parameters
+    ----------
+    symbol : sympy.Symbol
+        The parameter, free in the derived step of each record.
+    name : str
+        What it is, e.g. "the braking time Δt".
+    unit : str
+        Its unit as written.
+    value : sympy.Rational
+        The value the reading takes.
+    bracket : (float, float)
+        Where the fit looks for it.
+    """
+
+    symbol: sp.Symbol
+    name: str
+    unit: str
+    value: sp.Expr
+    bracket: tuple[float, float]
+
+
+@dataclass(frozen=True)
 class Convention:
     """A reading of the print under a stated convention.
 
@@ -88,17 +152,24 @@ class Convention:
     compare_to : str
         The derived step the reading is checked against, when the reading
         changes the derived side (a fitted instant); default: the formula's.
+    fit : Fit or None
+        For a ``fitted value``: the parameter fitted and the numbers it is
+        fitted to; the audit shows the fit in the record.
     """
 
     note: str
     reading: sp.Eq
     kind: str
     compare_to: str = ""
+    fit: Fit | None = None
 
     def __post_init__(self) -> None:
         if self.kind not in READINGS:
             raise ValueError(f"reading kind {self.kind!r} is not in the policy: "
                              f"{sorted(READINGS)}")
+        if self.fit is not None and self.kind != FITTED_VALUE:
+            raise ValueError(f"{self.note!r}: only a {FITTED_VALUE!r} reading carries a "
+                             "Fit")
 
 
 @dataclass(frozen=True)
@@ -121,7 +192,10 @@ class PublishedFormula:
     conventions : tuple of Convention
         Readings tried when the print as such does not match.
     kind : str
-        ``equation`` or ``assumption``.
+        ``equation``; ``assumption`` (a modelling choice the paper states:
+        ``stated`` quotes where); or ``result of chosen parameters`` (a number a
+        reconstructed model gives only through values the paper does not
+        state: its derived step carries their sensitivity, whose band decides).
     reconstructed : bool
         True when OCR damage forced a reconstruction from the text.
     not_checkable : str
@@ -141,6 +215,19 @@ class PublishedFormula:
         True when ``latex`` holds the OCR'd text of the print (a Mathcad form,
         a table cell) rather than LaTeX; the walkthrough shows it as text,
         beside the transcription typeset.
+    stated : str
+        For an ``assumption``: where the paper states it, quoted.
+    paper_reading : PaperReading or None
+        The paper's declared reading of its data that the derived step uses.
+    rejected_target : str
+        The derived step under the rejected reading of ``paper_reading``,
+        tried when the record fails, so a finding says whether only that
+        reading reproduces the print.
+    read_as : str
+        A named reading of the print's names that its text, not its LaTeX,
+        fixes (the instant "at t = 0" of a sentence, one name the paper uses
+        for two quantities): where the machine reading of the print differs
+        from the transcription, this is what explains it, shown in the record.
     """
 
     label: str
@@ -157,6 +244,10 @@ class PublishedFormula:
     basis_note: str = ""
     cause: Cause | None = None
     verbatim: bool = False
+    stated: str = ""
+    paper_reading: PaperReading | None = None
+    rejected_target: str = ""
+    read_as: str = ""
 
     def __post_init__(self) -> None:
         if self.basis not in BASES:
@@ -164,8 +255,17 @@ class PublishedFormula:
         if self.basis != MODEL and not self.basis_note:
             raise ValueError(f"{self.label}: a {self.basis!r} basis must say what "
                              "(basis_note)")
-        if self.kind not in (EQUATION, ASSUMPTION):
-            raise ValueError(f"kind must be {EQUATION!r} or {ASSUMPTION!r}")
+        if self.kind not in KINDS:
+            raise ValueError(f"{self.label}: kind must be one of {KINDS}")
+        if self.kind == ASSUMPTION and not self.stated.strip():
+            raise ValueError(f"{self.label}: an assumption is a remark only where the "
+                             "paper states it: quote where (stated)")
+        if self.kind == CHOSEN and self.basis != RECONSTRUCTED:
+            raise ValueError(f"{self.label}: a result of chosen parameters rests on a "
+                             f"{RECONSTRUCTED!r} basis")
+        if self.rejected_target and self.paper_reading is None:
+            raise ValueError(f"{self.label}: a rejected reading needs the paper's "
+                             "reading it is rejected for (paper_reading)")
         if not 0 <= self.tolerance < 1:
             raise ValueError(f"{self.label}: tolerance must be in [0, 1)")
         if self.printed is None and not self.not_checkable:

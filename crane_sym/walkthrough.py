@@ -13,10 +13,11 @@ import re
 
 import sympy as sp
 
-from .audit import (CONFIRMED, CONFIRMED_WITH_CONVENTION, DIMENSION_ERROR, DISCREPANCY,
-                    NOT_CHECKABLE, REMARK, RESTATED, AuditRecord, audit)
+from .audit import (CONFIRMED, CONFIRMED_WITH_CONVENTION, CONSISTENT, DIMENSION_ERROR,
+                    DISCREPANCY, NOT_CHECKABLE, REMARK, RESTATED, AuditRecord, audit)
 from .derivation import Derivation, Step
 from .latex import cyrillic_as_text, latex
+from .report import rests_on_lines
 from .symbols import COORDINATE, DEFINED, PARAMETER, TIME
 
 #: Roles whose symbols are always listed; DEFINED ones only when a step uses them.
@@ -92,10 +93,19 @@ _SAYS = {
     CONFIRMED: "the print, as printed, follows from the derivation",
     CONFIRMED_WITH_CONVENTION: "as printed it does not follow; read as below, it does",
     RESTATED: "the step restates the printed definition, so nothing could fail",
+    CONSISTENT: "the reconstruction reproduces it only through parameters the paper does "
+                "not state; the printed number lies in the band they span (not a "
+                "confirmation)",
     DISCREPANCY: "the print does not follow from the derivation",
     DIMENSION_ERROR: "a term of the print has the wrong dimension",
     NOT_CHECKABLE: "nothing checkable was printed",
-    REMARK: "a stated assumption that differs from what the model implies",
+    REMARK: "a modelling choice the paper states that differs from what the model implies",
+}
+#: What a verdict says of a transcription reconstructed from OCR damage.
+_SAYS_RECONSTRUCTED = {
+    CONFIRMED: "the print as reconstructed from OCR damage follows from the derivation",
+    CONFIRMED_WITH_CONVENTION: "as reconstructed it does not follow; read as below, it does",
+    DISCREPANCY: "the print as reconstructed does not follow from the derivation",
 }
 
 
@@ -103,8 +113,12 @@ def _verdict_line(record: AuditRecord) -> str:
     """The verdict in words: what it says, what decided it, what it rests on, and
     for a finding its cause, the reading, the difference and the offending terms."""
     rests = record.basis + (f" ({record.basis_note})" if record.basis_note else "")
-    lines = [f"Verdict: **{record.verdict}** — {_SAYS[record.verdict]} "
+    says = (_SAYS_RECONSTRUCTED if record.reconstructed else _SAYS).get(
+        record.verdict, _SAYS[record.verdict])
+    lines = [f"Verdict: **{record.verdict}** — {says} "
              f"(decided by the {record.method} check; rests on: {rests})."]
+    lines += [f"- {line[0].upper()}{line[1:]}." for line in rests_on_lines(record)
+              if not line.startswith("rests on the ")]     # the basis is said above
     reading = record.reading
     if reading is not None:
         lines.append(f"- Read with the {reading.reading}: {reading.note}.")
@@ -153,13 +167,15 @@ def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord],
 
 def _verdicts(d: Derivation, records: list[AuditRecord] | None) -> str:
     """Summary table: one row per audited (or, without records, published) formula."""
-    rows = ["| Formula | Verdict | Decided by | Rests on | Cause |",
-            "| --- | --- | --- | --- | --- |"]
+    rows = ["| Formula | Verdict | Decided by | Transcription | Rests on | Cause |",
+            "| --- | --- | --- | --- | --- | --- |"]
     if records is None:
-        rows += [f"| {_cell(f.label)} | not audited | — | — | — |" for f in d.published]
+        rows += [f"| {_cell(f.label)} | not audited | — | — | — | — |" for f in d.published]
     else:
         rows += [f"| {_cell(r.label)} | {_cell(r.verdict)} | {_cell(r.method)} | "
-                 f"{_cell(r.basis)} | {_cell(r.cause.id) if r.cause else '—'} |"
+                 f"{_cell(r.transcription)} | "
+                 f"{_cell(r.basis + (': ' + r.basis_note if r.basis_note else ''))} | "
+                 f"{_cell(r.cause.id) if r.cause else '—'} |"
                  for r in records]
     return "\n".join(rows)
 

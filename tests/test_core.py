@@ -106,13 +106,25 @@ def test_each_verdict_kind_comes_from_its_check():
             PublishedFormula("(3)", "...", sp.Eq(y, 2 * F0 / k), "toy"),
             PublishedFormula("(3)", "...", sp.Eq(y, F0 * k), "toy"),
             PublishedFormula("(3)", "...", None, "toy", not_checkable="OCR lost it"),
-            PublishedFormula("(3)", "...", sp.Eq(y, 0, evaluate=False), "toy", kind=ASSUMPTION),
+            PublishedFormula("(3)", "...", sp.Eq(y, 0, evaluate=False), "toy", kind=ASSUMPTION,
+                             stated='toy: "we take y = 0"'),
         ])
     finally:
         TABLE.entries.pop()
     assert got == [(A.CONFIRMED, "symbolic"), (A.CONFIRMED_WITH_CONVENTION, "symbolic"),
                    (A.DISCREPANCY, "numeric"), (A.DIMENSION_ERROR, "dimension"),
                    (A.NOT_CHECKABLE, "none"), (A.REMARK, "numeric")]
+
+
+def test_an_assumption_is_a_remark_only_where_the_paper_states_it():
+    """No quote, no remark: an unstated 'assumption' is refused, so a mismatch cannot
+    be turned into a remark without the paper's words; the remark quotes them."""
+    with pytest.raises(ValueError, match="stated"):
+        PublishedFormula("(3)", "...", sp.Eq(y, 0, evaluate=False), "toy", kind=ASSUMPTION)
+    (record,) = A.audit(_toy([PublishedFormula(
+        "(3)", "...", sp.Eq(y, 0, evaluate=False), "toy", kind=ASSUMPTION,
+        stated='toy: "we take y = 0"')]))
+    assert record.verdict == A.REMARK and 'toy: "we take y = 0"' in record.detail
 
 
 def test_discrepancy_gives_the_corrected_form():

@@ -106,7 +106,8 @@ def test_verdicts_in_summary_and_steps(built):
     _, records, _, text = built
     summary = _section(text, "Verdicts")
     for r in records:
-        assert f"| {r.label} | {r.verdict} | {r.method} | {r.basis} |" in summary
+        assert f"| {r.label} | {r.verdict} | {r.method} | {r.transcription} | {r.basis}" \
+            in summary
         assert f"Verdict: **{r.verdict}** — " in text
         assert f"(decided by the {r.method} check; rests on: {r.basis}" in text
         if r.cause:

@@ -412,6 +412,9 @@ def _energy_rows(e: dict) -> list[PublishedFormula]:
                  basis_note="the definition of the element's speed, restated by step (5)"),
         _printed("(6)", L6, sp.Eq(v_xi, a_v + b_v * xi),
                  "the hypothesis of a linear speed distribution", kind=ASSUMPTION,
+                 stated='"За гіпотезою про лінійний розподіл швидкостей тягового '
+                 'органу" ("by the hypothesis of a linear distribution of the speeds"), '
+                 'before (6)',
                  basis=DEFINITION, basis_note="the paper's hypothesis, adopted as printed "
                  "by step (6); what it implies is checked in (7)"),
         _printed("(7)", L7, sp.Eq(T_el, seven),
@@ -537,6 +540,8 @@ def _late_rows() -> list[PublishedFormula]:
                  "drive chain's two frequencies) and is no evidence either way",
                  cause=C_K_THREE_MASSES),
         _printed("(14)", L14, sp.Eq(y, y_h + y_p), "y_1, y_2 of (14) are y_h, y_p here",
+                 read_as="the print's y_1, y_2 in (14) are the homogeneous and the particular "
+                 "solution (y_h, y_p), not the coordinates y_1, y_2 of (12)",
                  basis=DEFINITION, basis_note="y = y1 + y2 names the homogeneous and the "
                  "particular solution; step (14) restates it"),
         _printed("(14), homogeneous equation", L14b,
@@ -567,7 +572,9 @@ def _late_rows() -> list[PublishedFormula]:
                  "the boundary of the printed inequality, F1 at its largest value F1_lim; "
                  "1.25 is a traction safety factor the text does not name, and μ is called "
                  "the element's resistance coefficient though it is its friction on the drum",
-                 kind=ASSUMPTION, cause=C_SAFETY),
+                 kind=ASSUMPTION, stated='"При виборі натягу тягово-несучого елемента '
+                 'необхідно задовольнити умову [1]" ("choosing the tension, the condition '
+                 '[1] must be met"), before (19)', cause=C_SAFETY),
         _printed("(20)", L20, sp.Eq(F1, m_sum * g * mu_op),
                  "Σ m_i(t) written m_sum; the print calls F1 the traction force, while "
                  "(18)–(19) use it as the tight branch's force",
@@ -584,11 +591,15 @@ def _late_rows() -> list[PublishedFormula]:
                  "check does not take Abs; with F2 = F1, K2 = K1, F4 = F3, K4 = K3 it is "
                  "½·min(F1·sin, K1) + ½·min(F3·sin, K3), negative for half of each period "
                  "2·t3 (step '(21), min form')", kind=ASSUMPTION, basis=DEFINITION,
+                 stated='"Дискретну пульсуючу силу можна подати у вигляді [9]" ("the '
+                 'discrete pulsing force can be written as [9]"), before (21)',
                  basis_note="an empirical load model, adopted as printed by step (21); "
                  "what it implies is shown by step '(21), min form'"),
         _printed("initial state", LINIT, sp.Eq(y0, 0, evaluate=False),
                  "the zero initial state of the example; y(0) = 0 is checked",
-                 kind=ASSUMPTION, basis=RECONSTRUCTED, basis_note=FIG1 + "; the "
+                 kind=ASSUMPTION, stated='"Як початкові умови прийнято: z(0) = 0; y(0) = '
+                 '0; φ(0) = 0; ..." ("taken as the initial conditions"), before Fig. 3',
+                 basis=RECONSTRUCTED, basis_note=FIG1 + "; the "
                  "pretension F0 of both branches is the model's", cause=C_ZERO_STATE),
     ]
 

@@ -3,8 +3,10 @@ and per reading of the data, so that each printed number is checked against
 what each reading gives (the model text says which reading is chosen, and why).
 
 Table 1 counts J1, J2 and M_SB once for a hoist with two motors and two drums:
-``per train`` counts each twice (one per motor, one per drum), ``totals`` reads
-them as the values of the whole drive.
+``totals`` reads them as the values of the whole drive (the paper's reading,
+``published.TABLE1_COUNTING``), ``per train`` counts each twice (one per motor,
+one per drum): the rejected reading, derived so that a printed number only it
+reproduces can be named.
 """
 from __future__ import annotations
 
@@ -67,8 +69,9 @@ def numbers(d: Derivation) -> None:
 
 
 def coordinated(d: Derivation) -> None:
-    """Figs 11–12: the brake factors (6)–(7) in percent at the ends of the payload
-    axis, stopping from n1 in Δt (unstated), and at Δt = 1 s."""
+    """Figs 11–12: the brake factors (6)–(7) at the ends of the payload axis (as
+    fractions; the text prints percent), stopping from n1 in Δt (unstated), and
+    at Δt = 1 s."""
     for mode in ("hoisting", "lowering"):
         for payload, end in ((0, "0 t"), (TABLE1["m_r"], "52 t")):
             vals = table1(d, payload)
@@ -76,13 +79,14 @@ def coordinated(d: Derivation) -> None:
                 expr = d.step(f"{label}, {mode}").statement.rhs
                 expr = expr.subs({MF: d.step("MF").statement.rhs,
                                   LF: d.step("LF").statement.rhs}).subs(d_omega, omega1)
-                pct = sp.simplify(100 * value_of(d, expr, vals))
+                factor_value = sp.simplify(value_of(d, expr, vals))
                 name = f"Fig. {11 if mode == 'hoisting' else 12}, {factor}, {end}"
-                d.add(name, sp.Eq(N, pct),
-                      f"{label}, {mode}, payload {end}, stopping from n1 (Δω = ω1) in Δt, "
-                      "in percent.", title="Figs 11–12" if (mode, end, label) ==
+                d.add(name, sp.Eq(N, factor_value),
+                      f"{label}, {mode}, payload {end}, stopping from n1 (Δω = ω1) in Δt "
+                      "(a fraction; the text prints percent).",
+                      title="Figs 11–12" if (mode, end, label) ==
                       ("hoisting", "0 t", "(7)") else "")
-                d.add(name + ", Δt = 1 s", sp.Eq(N, sp.nsimplify(pct.subs(d_t, 1))),
+                d.add(name + ", Δt = 1 s", sp.Eq(N, sp.nsimplify(factor_value.subs(d_t, 1))),
                       "The same with Δt = 1 s.")
 
 

@@ -43,7 +43,17 @@ FULL_WEIGHT_FROM_START = Cause(
     "while by its own Q(t) the load rests on the ground until τ_0; the rigid-hoist law "
     "(55) gives (m1 + m2)·a_i + Q(t)")
 #: The laws (30) are shapes taken from ref. [7]; the check is their scaling.
-_SHAPE = {"basis": INTERNAL,
+#: Where the paper states its modelling choices (quoted by the assumption records).
+CASE1 = ('"Випадок 1. Якщо початкові умови мають вигляд (7)" ("case 1: if the initial '
+         'conditions are (7)"), before (7)')
+CASE2 = ('"Випадок 2. Якщо до початку пуску система знаходилась під навантаженням ... то '
+         'початкові умови будуть наступними" (before (11))')
+PICKUP = ('"У першому випадку при підйомі вантажу «з підхватом» маємо (28)" ("in the first '
+          'case, lifting with pick-up, we have (28)")')
+LAWS = ('"ці значення прискорень наведені у [7] і відповідають певним (оптимальним) режимам '
+        'функціонування привідного механізму" and "У (30) t_n – тривалість перехідного '
+        'процесу (пуску)" (around (30))')
+_SHAPE = {"stated": LAWS, "basis": INTERNAL,
           "basis_note": "the shape is ref. [7]'s; checked is the scaling the text "
                         "states, ∫₀^tп a dt = v0"}
 
@@ -141,9 +151,9 @@ PUBLISHED = [
     _printed("(5)", L5, sp.Eq(P_d, C * (x_s + C1 * _cos + C2 * _sin))),
     _printed("(6)", L6, sp.Eq(T, 2 * sp.pi / _W)),
     _printed("(7)", L7, sp.Eq(x0, 0), "x(t)|_{t=0} = 0, equivalent to P_дин(0) = 0 "
-             + _x_ic, kind=ASSUMPTION),
+             + _x_ic, kind=ASSUMPTION, stated=CASE1),
     _printed("(7), velocity", L7, sp.Eq(x0_dot, 0), "first condition " + _x_ic,
-             kind=ASSUMPTION, basis=DEFINITION,
+             kind=ASSUMPTION, stated=CASE1, basis=DEFINITION,
              basis_note="the model adopts the rest state the text states"),
     _printed("(8)", L8, sp.Eq(C1, x_s0),
              "outer members of the first line, C_1 = x̃_*; its middle member −x_*(0) "
@@ -171,7 +181,7 @@ PUBLISHED = [
              cause=Cause("002-dot-on-x0", "(11) puts a dot on the initial displacement "
                          "x(0): a velocity equated to a length")),
     _printed("(11), velocity", L11, sp.Eq(x0_dot, 0), "second condition",
-             kind=ASSUMPTION, basis=DEFINITION,
+             kind=ASSUMPTION, stated=CASE2, basis=DEFINITION,
              basis_note="the model adopts the rest state the text states"),
     _printed("(12)", L12, sp.Eq(C1, Q_at0 / C - x_s0)),
     _printed("(12), C2", L12, sp.Eq(C2, -x_s0_dot / _W)),
@@ -183,7 +193,8 @@ PUBLISHED = [
              cause=MINUS_AT_LINE_BREAK),
     _printed("(14)", L14, sp.Eq(P_d, C * x_s - C * x_s0 * _cos + Q_at0 * _cos
                                 - C / _W * x_s0_dot * _sin)),
-    _printed("(15)", L15, sp.Eq(x_s, INT_S_Y), "Y(t − θ) written out with (16)"),
+    _printed("(15)", L15, sp.Eq(x_s, INT_S_Y), "Y(t − θ) written out with (16)",
+             read_as="Y(t − θ) written out with its definition (16), sin(Ω(t − θ))/Ω"),
     _printed("(16)", L16, sp.Eq(Y, _sin / _W)),
     _printed("(17)", L17, sp.Eq(x_s, INT_S / _W)),
     _printed("(18)", L18, sp.Eq(x_s.diff(t), INT_S_COS)),
@@ -218,10 +229,10 @@ PUBLISHED = [
              "first line: the drive pulls the full weight m2 g from t = 0 while the "
              "load still rests on the ground (Q < m2 g for t < τ_0); the rigid-hoist "
              "law, the paper's own (55), gives (m1 + m2)·a_i + Q(t)", kind=ASSUMPTION,
-             cause=FULL_WEIGHT_FROM_START),
+             stated=PICKUP, cause=FULL_WEIGHT_FROM_START),
     _printed("(28), P(0)", L28, sp.Eq(P_at0, (m1 + m2) * a_at0 + m2 * g),
              "second line; with Q(0) = 0 the rigid-hoist law gives (m1 + m2)·a_i(0)",
-             kind=ASSUMPTION, cause=FULL_WEIGHT_FROM_START),
+             kind=ASSUMPTION, stated=PICKUP, cause=FULL_WEIGHT_FROM_START),
     _printed("(28), Q(0)", L28, sp.Eq(Q_at0, 0),
              "reconstructed: the OCR reads 'Q(t) = 0.' and then the two branches "
              "without their left-hand side; read as Q(0) = 0 and Q(t) = {...}, the "

@@ -73,11 +73,15 @@ Y_TWO_MEANINGS = Cause("002-Y-two-meanings", "from (33) on the paper uses the na
                        "the force P̄, which is smaller by the mass m")
 
 
+#: How (39) is transcribed where its print keeps Y(θ) under the integral.
+_Y_OUT = "Y(θ) of (16) written out under the integral, and the integral evaluated"
+
+
 def _via_y(label: str, latex: str, printed_with_16, reading_per_force, target: str,
-           note: str) -> PublishedFormula:
+           note: str, read_as: str = "") -> PublishedFormula:
     """A member written with Y, Y_1 or Y_2: as printed Y is that of (16)."""
     return _printed(label, latex, sp.Eq(x, printed_with_16), note,
-                    compare_to=target,
+                    compare_to=target, read_as=read_as,
                     conventions=(Convention(_FORCE_Y, sp.Eq(x, reading_per_force),
                                             SYMBOL_FOR_ANOTHER),),
                     cause=Y_TWO_MEANINGS)
@@ -100,7 +104,9 @@ PUBLISHED = [
              basis=DEFINITION, basis_note="the line defines P̄"),
     _printed("(32), m", L32b, sp.Eq(m, m1 * m2 / (m1 + m2)), "unnumbered line after (32)"),
     _printed("(33)", L33, sp.Eq(x, x0 * _cos + x0_dot * _sin / _W + INT_P / (_W * m)),
-             "x_0 cos Ω·t read as x_0 cos(Ωt)"),
+             "x_0 cos Ω·t read as x_0 cos(Ωt)",
+             read_as="x_0 cos Ω·t read as x_0 cos(Ωt): the dot leaves the scope of cos "
+             "open (operator scope), and cos of a frequency alone has no meaning"),
     _printed("(34)", L34, sp.Eq(x_s, INT_P_REV / (_W * m)), "outer members"),
     _printed("(34), via Y", L34, sp.Eq(x_s, INT_P_Y16),
              "first equality, with Y of (16)", compare_to="(34)",
@@ -110,7 +116,10 @@ PUBLISHED = [
              "whole-paper remark: (16) defines Y as the response to a unit impulse of "
              "S (m/s² · s); (34), (39), (43), (44), (48), (49) use the same name for the "
              "response to a unit impulse of the force P̄ = m S, smaller by the factor m",
-             compare_to="Y per unit force", kind=ASSUMPTION, cause=Y_TWO_MEANINGS),
+             compare_to="Y per unit force", kind=ASSUMPTION,
+             stated='"де Y(t) – реакція системи на одиничний імпульс" (16) ("Y(t), the '
+             'response of the system to a unit impulse"), the name (33)–(49) use',
+             cause=Y_TWO_MEANINGS),
     _printed("(35)", L35, sp.Eq(x, Pbar0 / (m * _W ** 2) * (1 - _cos)),
              "cos Ω t read as cos(Ωt)"),
     _printed("m Ω² = C (after (35))", r"m \cdot \Omega^2 = C", sp.Eq(m * _W ** 2, C),
@@ -126,11 +135,12 @@ PUBLISHED = [
     _printed("(38)", L38, sp.Eq(K, 2 * sp.sin(_W * t / 2) ** 2), "Ω(t) read as Ωt"),
     _via_y("(39)", L39a, k * _Y2, k * _Y2m, "(39)",
            "x = ∫ k(t − θ) Y(θ) dθ = k Y_2(t) with Y_2 of the next line; the "
-           "integral evaluated by SymPy"),
+           "integral evaluated by SymPy", read_as=_Y_OUT),
     _printed("(39), Y_2", L39b, sp.Eq(Y2, sp.integrate((t - vt) * sp.sin(_W * vt) / _W,
                                                       (vt, 0, t))),
              "Y of (16); evaluated by SymPy. The text then defines Y_2 again as "
-             "∫ Y_1 with Y_1 = ∫ Y: the two agree", compare_to="Y_2 (after (39))"),
+             "∫ Y_1 with Y_1 = ∫ Y: the two agree", compare_to="Y_2 (after (39))",
+             read_as=_Y_OUT),
     _printed("(40)", L40, sp.Eq(x, k * t / C * (1 - _sin / (_W * t))), "outer members"),
     _printed("(40), in m and Ω", L40, sp.Eq(x, k * t / (m * _W ** 2)
                                             * (1 - _sin / (_W * t))), "first equality"),

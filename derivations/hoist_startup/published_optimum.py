@@ -82,6 +82,8 @@ PUBLISHED = [
              "not out of the force, so k̃ of (64) reaches 1 + g t_п/v0 at τ_0 (20 to 80 "
              "in Table 2): the 'very large values' of conclusion 3",
              compare_to="reference of (25), from weight", kind=ASSUMPTION,
+             stated="(57) as printed: k_дин(t) = {m2·ẍ2 + Q(t)}/(m2·v0/t_п), the reference "
+             "the paper chooses for (57)–(64)",
              basis=INTERNAL, basis_note="(57)'s reference against (25)'s",
              cause=Cause("002-three-references", "K_дин is normalised three ways: (25) by "
                          "the rigid rope force at t = 0, (37) by C·x_ст, (57)–(64) by "
@@ -99,6 +101,8 @@ PUBLISHED = [
              "text before (60): 'for any method of lifting'. With pick-up Q̇ jumps at "
              "τ_0, so Q̈ is a delta there and (60) holds on each side of τ_0 only",
              compare_to="Q̇ at τ_0 (before (60))", kind=ASSUMPTION,
+             stated='"Оскільки за будь-якого способу підйому вантажу («з ваги», «з '
+             'підхватом») Q̈(t) ≡ 0" ("since for any method of lifting Q̈ ≡ 0"), before (60)',
              cause=Cause("002-Q-kink-at-tau0", "with pick-up Q̇ jumps at τ_0, so Q̈ ≡ 0 "
                          "'for any method of lifting' fails there: Q̈ holds a delta")),
     _printed("(60)", L60, sp.Eq(x2.diff(t, 4), 0)),
@@ -109,6 +113,8 @@ PUBLISHED = [
                   f"It does not: ä_{i} ≠ 0, so (56) and (60) have no common solution "
                   f"for a_{i}, and (65), i = {i} is no extremal of (58)"),
                compare_to=f"(61), i = {i}", kind=ASSUMPTION,
+               stated='"Співставляючи рівняння (56) та умову Ейлера-Пуассона (60), матимемо '
+               '(61)" ("comparing (56) with the Euler–Poisson condition (60) we get (61)")',
                cause=None if i < 3 else NO_EXTREMAL) for i in range(1, 5)],
     _printed("(62)", L62, sp.Eq(k_d, (m2 * a + Q) / (m2 * v0 / t_n))),
     _printed("(63)", L63, sp.Eq(kt_d, m2 * a / (m2 * v0 / t_n)), "lifting from weight"),
@@ -120,7 +126,8 @@ PUBLISHED = [
              "the dynamic component of the rope force' (який враховує лише зміни у "
              "динамічній складовій пружної сили у канаті), which is continuous at τ_0; "
              "(64) keeps the weight before τ_0 and drops it after, a jump of g t_п/v0",
-             kind=ASSUMPTION, cause=Cause(
+             kind=ASSUMPTION, stated='"доцільно ввести k̃_дин(t), який враховує лише зміни '
+             'у динамічній складовій пружної сили у канаті" (before (63))', cause=Cause(
                  "002-64-jump", "(64) keeps the weight in k̃ before τ_0 and drops it "
                  "after, a jump of g·t_п/v0, though k̃ is said to hold only the dynamic "
                  "part of the rope force")),

@@ -113,7 +113,8 @@ PART2 = [
                    * (z1 + z2) / (2 * sp.tan(alpha))),
              "the fraction's denominator 2·tan(α) stands on the next OCR line",
              reconstructed=True),
-    _value(f"{FORM}, x_sum = 0.527", "xs = 0.527", V_xsum, "0.527", "x_Σ as printed"),
+    _value(f"{FORM}, x_sum = 0.527", "xs = 0.527", V_xsum, "0.527",
+           "x_Σ as printed; the OCR reads x_Σ as 'xs'", reconstructed=True),
     _data(f"{FORM}, x1", "Коэффициент смещения у шестерни по опыту конструирования "
           "x1 := x^", F_x1, _form_x_sum(),
           "x1 := x_Σ by design experience (the whole shift on the pinion); the OCR "
@@ -134,7 +135,7 @@ PART2 = [
              sp.Eq(d_a2, _tip(z2, x2, k2)), "'-' is the OCR's multiplication dot",
              conventions=(Convention("k2 is the signed change of the tip height, −Δy2",
                                      sp.Eq(d_a2, _tip(z2, x2, -dy2)), SYMBOL_FOR_ANOTHER),),
-             cause=K_SIGN),
+             cause=K_SIGN, reconstructed=True),
     _value(f"{FORM}, d_a2 = 440", "da2 = 440", V_da2, "440", "mm"),
 ]
 
@@ -172,6 +173,7 @@ PART3 = [
              basis_note="the form's requirement against its own derived ε_α"),
     _printed(f"{FORM}, epsilon_alpha = 1.54", "sa = 154", sp.Eq(V_eps, 154),
              "ε_α as printed (the OCR reads ε as 's')", tolerance=_number("154")[1],
+             reconstructed=True,
              compare_to="Form 1 value, eps",
              conventions=(Convention("a decimal comma lost: ε_α = 1,54", sp.Eq(
                  V_eps, sp.Rational(154, 100)), LOST_MARK),), cause=EPS_COMMA),
@@ -183,7 +185,7 @@ APPENDIX = [
     _appendix("t", "t := tan( a)", sp.Eq(t_ap, sp.tan(alpha)),
              basis=DEFINITION, basis_note="a name the appendix gives"),
     _appendix("b", "b := t - a", sp.Eq(b_ap, sp.tan(alpha) - alpha),
-             "b = inv α, with t := tan α"),
+             "b = inv α, with t := tan α; the OCR reads α as 'a'", reconstructed=True),
     _data(f"{FORM} appendix, k", "k:=0", F_k, 0),
     _data(f"{FORM} appendix, z", "z:=10", F_z, 10),
     _appendix("a", "a := 0.5n", sp.Eq(half_pi, sp.pi / 2),

@@ -26,6 +26,7 @@ import numpy as np
 
 from crane_sym.phase_table import largest, values
 from crane_sym.piecewise_linear import Guard, PiecewiseResult, simulate
+from crane_sym.sensitivity import Chosen, Sensitivity, sweep
 
 #: Crane states: standing, moving forward, moving back. Link states: driving
 #: flank, gap, trailing flank, linear (no backlash).
@@ -207,15 +208,50 @@ def drive(r: dict[str, float], p: dict[str, float],
                            slopes, tuple(holds), p["W_f"], p["W_w"])
 
 
-def table1_results(t_end: float = 4.0) -> dict[str, dict[str, float]]:
+#: The parameters of ``CHOSEN`` the paper does not state, with the range each could
+#: plausibly take (the others follow from the text: the motor MTF311-6 and its
+#: speeds, two per side to cover the stated 60 kN, 30 kN of friction and wind).
+PLAUSIBLE = (
+    Chosen("J_r", "rotor inertia J_r", "kg·m²", 0.225, 0.2, 0.3, "the MTF311-6 catalogue "
+           "rotor, up to a coupling or brake pulley more on the fast shaft"),
+    Chosen("v_n", "rated travel speed v_n", "m/min", 32, 25, 40, "portal cranes travel at "
+           "25–40 m/min", scale=1 / 60),
+    Chosen("lambda_p", "starting-force multiple λ", "", 2.0, 1.6, 2.4, "a relay start, "
+           "below the MTF311-6's breakdown multiple of about 2.4"),
+    Chosen("c_l", "link stiffness C_пр", "MN/m", 5, 2, 10, "10–50 mm of longitudinal "
+           "deflection of a portal side under 100 kN", scale=1e6),
+    Chosen("zeta", "damping ratio ζ of a link", "", 0.05, 0.02, 0.1, "a logarithmic "
+           "decrement of about 0.1–0.6"),
+    Chosen("m_k", "crane mass m_к", "t", 250, 200, 300, "the stated 30 kN of friction at a "
+           "specific resistance of 0.010–0.015", scale=1e3),
+)
+
+
+def table1_results(t_end: float = 4.0,
+                   p: dict[str, float] | None = None) -> dict[str, dict[str, float]]:
     """Per backlash of Table 1: F_max [kN], its time [s], ψ = F_max/F_ср, the crane's
-    mean acceleration over each start step [m/s²]."""
+    mean acceleration over each start step [m/s²]; with the parameters ``p``
+    (default: ``CHOSEN``)."""
+    p = CHOSEN if p is None else p
     out = {}
     for name, phi in BACKLASH.items():
-        model = drive(reduced(CHOSEN, phi), CHOSEN)
+        model = drive(reduced(p, phi), p)
         run = model.run(t_end)
         when, peak = model.peak(run)
         acc = model.step_accelerations(run)
         out[name] = {"F_max_kN": peak / 1e3, "t_max": when, "psi": peak / F_MEAN,
                      **{f"a{k + 1}": float(a) for k, a in enumerate(acc)}}
     return out
+
+
+def table1_sensitivities() -> dict[str, Sensitivity]:
+    """How far each of the model's Table 1 numbers moves when the parameters of
+    ``PLAUSIBLE`` go over their ranges, alone and together: ``"F_max, <backlash>"``,
+    ``"psi, <backlash>"``, ``"a<k>, <backlash>"`` -> Sensitivity."""
+    def evaluate(p: dict[str, float]) -> dict[str, float]:
+        out = {}
+        for gap, r in table1_results(p=p).items():
+            out |= {f"F_max, {gap}": r["F_max_kN"], f"psi, {gap}": r["psi"],
+                    **{f"a{k}, {gap}": r[f"a{k}"] for k in (1, 2, 3)}}
+        return out
+    return sweep(evaluate, PLAUSIBLE, CHOSEN)

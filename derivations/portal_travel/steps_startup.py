@@ -10,7 +10,7 @@ from crane_sym.lagrange import lagrange_equations
 
 from .model import (F_peak, J_r, a_cell, t_s, v_gap, P_m, P_nom, W_f, W_w, a_0, b_l, beta_1, c_l, lam, m_d, m_k,
                     n_m, omega_0, omega_n, phi_b, psi_cell, q_step, s_b, v_0, v_n, zeta)
-from .startup import table1_results
+from .startup import table1_results, table1_sensitivities
 
 t = sp.Symbol("t", nonnegative=True)
 
@@ -83,17 +83,19 @@ def reduction(d: Derivation) -> None:
 
 def table1_model(d: Derivation) -> None:
     """The model's F_max, ψ and step accelerations for each backlash of Table 1."""
-    results = table1_results()
+    results, swing = table1_results(), table1_sensitivities()
     for i, (gap, r) in enumerate(results.items()):
         head = "The model's Table 1" if i == 0 else ""
         d.add(f"start-up model, F_max, backlash {gap}",
               sp.Eq(F_peak, sp.Float(r["F_max_kN"], 15)),
               f"Largest F_1 + F_2 (at t = {r['t_max']:.3f} s), backlash {gap} rad in both "
               "drives, the chosen parameters (model text); per phase at the zeros of the "
-              "closed form's rate.", "Table 1's 'largest longitudinal load' [kN].", head)
+              "closed form's rate.", "Table 1's 'largest longitudinal load' [kN].", head,
+              sensitivity=swing[f"F_max, {gap}"])
         d.add(f"start-up model, psi, backlash {gap}", sp.Eq(psi_cell, sp.Float(r["psi"], 15)),
-              "F_max over Table 1's F_ср = 150 kN.")
+              "F_max over Table 1's F_ср = 150 kN.", sensitivity=swing[f"psi, {gap}"])
         for k in (1, 2, 3):
             d.add(f"start-up model, acceleration {k}, backlash {gap}",
                   sp.Eq(a_cell, sp.Float(r[f"a{k}"], 15)),
-                  f"The crane's speed gained over start step {k} over its hold time [m/s²].")
+                  f"The crane's speed gained over start step {k} over its hold time [m/s²].",
+                  sensitivity=swing[f"a{k}, {gap}"])

@@ -22,6 +22,13 @@ def _printed(label: str, latex: str, relation: sp.Eq | None, note: str = "",
 _stretch = x2 - x1
 _x_star = (P_t * m2 - W * m1) / (c * (m1 + m2))
 
+#: The instant the text gives the two initial conditions, which their print omits.
+AT_START = ("x_2 − x_1 (and its rate) of the print taken at t = 0, the instant the "
+            "sentence before it names ('при t = 0')")
+#: Where the paper states its initial conditions (quoted for the assumption records).
+INITIAL = ('"Начальные условия при t = 0 примем следующие:" ("we take the following '
+           'initial conditions at t = 0"), before (10)')
+
 PUBLISHED = [
     _printed("(1)", r"m_1 \ddot{x}_1 - c(x_2 - x_1) = -P_t; \quad (1)",
              sp.Eq(m1 * x1.diff(t, 2) - c * _stretch, -P_t)),
@@ -62,13 +69,14 @@ PUBLISHED = [
     _printed("initial stretch", r"x_2 - x_1 = 0;", sp.Eq(u0, 0),
              "initial conditions at t = 0, printed between (9) and (10); the "
              "step 'preloaded start' gives F(t) from the preloaded state",
-             compare_to="steady travel", kind=ASSUMPTION, cause=Cause(
+             read_as=AT_START, compare_to="steady travel", kind=ASSUMPTION, stated=INITIAL,
+             cause=Cause(
                  "000-unstretched-start", "the print starts braking from an unstretched "
                  "link, while steady travel against the resistance W stretches it by "
                  "−W/c")),
     _printed("initial relative velocity", r"\dot{x}_2 - \dot{x}_1 = 0.", sp.Eq(u0_dot, 0),
              "initial conditions at t = 0, printed between (9) and (10)",
-             kind=ASSUMPTION, basis=DEFINITION,
+             read_as=AT_START, kind=ASSUMPTION, stated=INITIAL, basis=DEFINITION,
              basis_note="the model adopts the equal speeds of steady travel"),
     _printed("(10)", r"(\dot{x}_2 - \dot{x}_1) = -pA \sin pt + pB \cos pt, \quad (10)",
              sp.Eq(_stretch.diff(t), -p * A * sp.sin(p * t) + p * B * sp.cos(p * t))),

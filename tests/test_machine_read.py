@@ -1,0 +1,97 @@
+"""Prints read by machine: each pre-pass rule on its own, the parse of a dynamics
+print, and a quiet fix of a transcription caught as an unexplained difference."""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import pytest
+import sympy as sp
+
+pytest.importorskip("lark")
+
+from crane_sym import registry  # noqa: E402
+from crane_sym.latex_parse import (bound_variables, candidates, layout, parse,  # noqa: E402
+                                   placeholder, split, wrap_calls)
+from crane_sym.machine_read import AGREES, DIFFERS, UNREADABLE, machine_read  # noqa: E402
+
+
+def _formula(paper: str, label: str):
+    d = registry.get(paper)
+    return d, next(f for f in d.published if f.label == label)
+
+
+def test_layout_drops_numbers_and_reads_commas_percent_and_mathcad():
+    assert layout(r"F = c(x_2 - x_1) \quad (3)") == "F = c(x_2 - x_1)"
+    assert layout("2,4") == "2.4"
+    assert layout("5%") == r"5 \cdot 10^{-2}"
+    assert layout("z1:=25") == "z1=25"
+    assert layout(r"\left\{ a \right\}") == "( a )"
+
+
+def test_split_gives_each_relation_of_a_chain_and_a_line():
+    assert split(r"a = b = c") == ["a = b", "b = c", "a = c"]
+    assert split(r"a = 1 \quad b = 2") == ["a = 1", "b = 2"]
+    assert split(r"x &= y \\ &= z") == ["x = y", "y = z", "x = z"]
+
+
+def test_a_call_is_its_own_factor():
+    """Without the wrap the parser reads sin(x t)/(x t) as sin(1)."""
+    assert wrap_calls(r"1 - \sin(x t) / (x t)") == r"1 - (\sin(x t)) / (x t)"
+    parsed = parse(wrap_calls(r"1 - \sin(x t) / (x t)"))
+    x, t = sp.symbols("x t")
+    assert sp.simplify(parsed.rhs - (1 - sp.sin(x * t) / (x * t))) == 0
+
+
+def test_a_bound_variable_becomes_a_letter():
+    renamed = bound_variables(r"\int_0^t S(\theta) d\theta")
+    assert " ".join(renamed.split()) == r"\int_0^t S(w) dw"
+
+
+def test_placeholders_are_single_symbols_to_the_parser():
+    assert placeholder(0) == "V_{pqa}" and placeholder(26) == "V_{pqaa}"
+    assert len({placeholder(k) for k in range(800)}) == 800
+    parsed = parse(f"{placeholder(3)} + 1")
+    assert len(parsed.rhs.free_symbols) == 1
+
+
+def test_a_dot_is_a_time_derivative_not_a_product():
+    """ẍ_1 of paper 000's (1) is read as d²x1/dt², not as dot·x."""
+    d, f = _formula("travel_braking", "(1)")
+    read = machine_read(d, f)
+    assert read.status == AGREES, read.detail
+    x1 = d.symbols["x1"].expr
+    assert "\\ddot{x}_{1}" in read.parsed and x1.diff(x1.args[0], 2) in f.printed.atoms(
+        sp.Derivative)
+
+
+def test_a_quiet_fix_is_an_unexplained_difference():
+    """A transcription that swaps m1 and m2 against its print differs, and nothing
+    the record names explains it: the defect the tests forbid."""
+    d, f = _formula("travel_braking", "(13)")
+    m1, m2 = d.symbols["m1"].expr, d.symbols["m2"].expr
+    fixed = replace(f, printed=f.printed.xreplace({m1: m2, m2: m1}))
+    read = machine_read(d, fixed)
+    assert read.status == DIFFERS and read.explained_by == ""
+    assert machine_read(d, f).status == AGREES
+
+
+def test_ocr_debris_is_unreadable_with_its_reason():
+    d, f = _formula("hoist_brakes", "(6), hoisting")
+    read = machine_read(d, f)
+    assert read.status == UNREADABLE and read.detail.startswith("OCR debris")
+
+
+def test_a_divide_leaves_its_scope_open():
+    d, f = _formula("travel_braking", "(7)")
+    assert machine_read(d, f).status == UNREADABLE
+    assert "\\div" in machine_read(d, f).detail
+
+
+def test_a_reconstruction_explains_a_difference():
+    d, f = _formula("portal_travel", "Form 1, epsilon_alpha = 1.54")
+    read = machine_read(d, f)
+    assert read.status == DIFFERS and "reconstruction" in read.explained_by
+
+
+def test_candidates_hold_every_relation_of_a_print():
+    assert len(candidates(r"\Omega^2 = a, \quad S(t) = b.")) == 2
