@@ -175,7 +175,7 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     LF : array_like
         load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 1e-6 to 4e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -188,14 +188,14 @@ def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
             and (type(MF) in (float, int) or type(MF) is np.float64)
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
-        if (0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6 and 5e-7 <= BF_SB <= 2e6):
+        if (0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6 and 1e-6 <= BF_SB <= 4e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(MF*(BF_SB + LF))
             except (ArithmeticError, ValueError):
                 pass
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (1e-6, 4e6))
     shape = _broadcast(MF=MF, LF=LF, BF_SB=BF_SB)
     return _into(out, shape, MF*(BF_SB + LF))
 
@@ -210,7 +210,7 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB, *, out=None):
     LF : array_like
         load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 1e-6 to 4e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -223,14 +223,14 @@ def relative_gearbox_torque_lowering(MF, LF, BF_SB, *, out=None):
             and (type(MF) in (float, int) or type(MF) is np.float64)
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
-        if (0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6 and 5e-7 <= BF_SB <= 2e6):
+        if (0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6 and 1e-6 <= BF_SB <= 4e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-MF*(BF_SB - LF))
             except (ArithmeticError, ValueError):
                 pass
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (1e-6, 4e6))
     shape = _broadcast(MF=MF, LF=LF, BF_SB=BF_SB)
     return _into(out, shape, -MF*(BF_SB - LF))
 
@@ -247,7 +247,7 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB, *, out=None):
     LF : array_like
         load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 1e-6 to 4e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -262,7 +262,7 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB, *, out=None):
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
         if (1e-6 <= phi5 <= 2e6 and 0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6
-                and 5e-7 <= BF_SB <= 2e6):
+                and 1e-6 <= BF_SB <= 4e6):
             try:    # a failed check or a math error: the array path decides
                 x0 = LF*phi5
                 return np.float64(BF_SB*MF*phi5 + LF + MF*x0 - x0)
@@ -271,7 +271,7 @@ def peak_relative_gearbox_torque_hoisting(phi5, MF, LF, BF_SB, *, out=None):
     phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1', (1e-6, 2e6))
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (1e-6, 4e6))
     shape = _broadcast(phi5=phi5, MF=MF, LF=LF, BF_SB=BF_SB)
     x0 = LF*phi5
     return _into(out, shape, BF_SB*MF*phi5 + LF + MF*x0 - x0)
@@ -289,7 +289,7 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB, *, out=None):
     LF : array_like
         load factor M_L/M_st [1], > 0; served from 5e-7 to 2e6
     BF_SB : array_like
-        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 5e-7 to 2e6
+        safety-brake factor M_SB/(i_g M_st) [1], > 0; served from 1e-6 to 4e6
     out : ndarray, optional
         float64 array of the broadcast shape; the result is written into it and returned.
 
@@ -304,7 +304,7 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB, *, out=None):
             and (type(LF) in (float, int) or type(LF) is np.float64)
             and (type(BF_SB) in (float, int) or type(BF_SB) is np.float64)):
         if (1e-6 <= phi5 <= 2e6 and 0.0 <= MF <= 2e6 and 5e-7 <= LF <= 2e6
-                and 5e-7 <= BF_SB <= 2e6):
+                and 1e-6 <= BF_SB <= 4e6):
             try:    # a failed check or a math error: the array path decides
                 return np.float64(-BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF)
             except (ArithmeticError, ValueError):
@@ -312,7 +312,7 @@ def peak_relative_gearbox_torque_lowering(phi5, MF, LF, BF_SB, *, out=None):
     phi5  = _checked('phi5', phi5, 'positive', 'dynamic factor φ5 of EN 13001-2, 1', (1e-6, 2e6))
     MF    = _checked('MF', MF, 'nonnegative', 'inertia factor J1/J, 1', (0.0, 2e6))
     LF    = _checked('LF', LF, 'positive', 'load factor M_L/M_st, 1', (5e-7, 2e6))
-    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (5e-7, 2e6))
+    BF_SB = _checked('BF_SB', BF_SB, 'positive', 'safety-brake factor M_SB/(i_g M_st), 1', (1e-6, 4e6))
     shape = _broadcast(phi5=phi5, MF=MF, LF=LF, BF_SB=BF_SB)
     return _into(out, shape, -BF_SB*MF*phi5 + LF*MF*phi5 - LF*phi5 + LF)
 
