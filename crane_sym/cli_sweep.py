@@ -74,14 +74,16 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "is maximised (sampled)")
     p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
                    help="count the designs within it, draw its contour")
-    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG")
+    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG "
+                   "(both replaced together, or neither)")
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
                    "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler, threads for "
                    "closed forms, processes for simulated responses; 'threads', 'processes' "
                    "or 'synchronous' force one)")
     p.add_argument("--chunk-mib", type=float, default=8.0,
-                   help="output bytes per block of the grid, in MiB (default 8)")
+                   help="output bytes per block of the grid, in MiB (default 8; at least "
+                   "0.1, at most the free memory for one block per core)")
     p.add_argument("--certify", action="store_true", help="also bound the maximum of the "
                    "(limited) output over the whole box by interval branch-and-bound")
     p.add_argument("--certify-tol", type=float, default=1e-6, metavar="REL",

@@ -183,6 +183,21 @@ def test_a_closed_local_cluster_is_one_line_and_leaves_nothing(tmp_path):
     assert not out.exists()
 
 
+def test_sigterm_on_a_live_cluster_stops_its_tasks_before_cleaning_up(tmp_path):
+    """The sweep's tasks are cancelled and the workers asked until none runs
+    one, so no block is written after the partial dataset is removed."""
+    out = tmp_path / "out"
+    with _cluster() as cluster:
+        proc = _start(out, *REMOTE, "--scheduler", cluster.scheduler_address)
+        _when_partial(out, proc)
+        time.sleep(0.5)
+        proc.send_signal(signal.SIGTERM)
+        _, err = proc.communicate(timeout=60)
+        time.sleep(1.0)                          # the workers still up: nothing comes
+        assert proc.returncode == 143 and len(err.splitlines()) == 1
+        assert not out.exists()
+
+
 def test_a_killed_scheduler_whose_workers_run_on_is_one_line_and_leaves_nothing(tmp_path):
     """A scheduler process killed (SIGKILL) mid-run, its two worker processes
     left running what they hold: nothing of the sweep is left, even after the
