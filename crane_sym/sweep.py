@@ -8,10 +8,13 @@ product to :func:`evaluate_block`, which calls the paper's generated NumPy
 function with the block's axis values shaped to broadcast (one call per block,
 the fixed values as scalars), or, for a simulated response, the paper's
 ``SweepOutput.evaluate`` (one integration per design). Nothing holds the grid:
-each block is written to Zarr (through xarray, under a temporary name renamed
-at the end) and reduced to its worst value, the flat index of that value and
-the count within the limit, in the same pass, so memory is bounded by the
-chunk size times the number of workers, not by the grid.
+each block is written to Zarr (through xarray, into a temporary of a
+:func:`crane_sym.sweep_store.sweep_stage`, renamed with the PNG at the end)
+and reduced to its worst value, the flat index of that value, the count
+within the limit and its share of the PNG's data (:func:`strided`), in the
+same pass, so memory is bounded by the chunk size times the number of
+workers, not by the grid. How the graph runs, and is stopped on a failure or
+signal before the temporary is removed, is :mod:`crane_sym.sweep_compute`.
 
 Schedulers: with none named, Dask's local scheduler. Threads for the
 closed forms: the generated functions spend their time in NumPy ufuncs, which
