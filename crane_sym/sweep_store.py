@@ -20,68 +20,16 @@ removed temporary never open as a dataset.
 """
 from __future__ import annotations
 
-import os
 import shutil
-import signal
-import threading
 import time
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
 from . import output_files
-from .output_files import OutputError, Stage
+from .output_files import OutputError, Stage, deferred_signals, folder_lock
 
 __all__ = ["deferred_signals", "folder_lock", "remove_settled", "sweep_stage"]
-
-
-@contextmanager
-def deferred_signals() -> Iterator[None]:
-    """SIGINT and SIGTERM held off inside the block and delivered at its end.
-
-    Python runs a signal's handler in the main thread whichever thread the
-    kernel hands the signal to, so blocking the signals in the main thread
-    (``pthread_sigmask``) does not hold them off while another thread runs (a
-    Dask pool, distributed's event loop): the handlers themselves are swapped
-    for one that only notes the signal. Outside the main thread: no effect.
-    """
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    caught: list[int] = []
-
-    def later(signum, frame) -> None:
-        caught.append(signum)
-
-    previous = {}
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        if signal.getsignal(sig) is not None:      # None: not set from Python
-            previous[sig] = signal.signal(sig, later)
-    try:
-        yield
-    finally:
-        for sig, handler in previous.items():
-            signal.signal(sig, handler)
-        if caught:
-            signal.raise_signal(caught[0])         # the restored handler runs now
-
-
-@contextmanager
-def folder_lock(folder: Path) -> Iterator[None]:
-    """An exclusive advisory lock (``flock``) on ``folder`` itself: no lock
-    file is made, and the lock goes with the process. No-op where ``fcntl``
-    is missing."""
-    try:
-        import fcntl
-    except ImportError:                            # pragma: no cover (Windows)
-        yield
-        return
-    fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
-    try:
-        fcntl.flock(fd, fcntl.LOCK_EX)
-        yield
-    finally:
-        os.close(fd)                               # closing releases the lock
 
 
 def remove_settled(path: Path, settle: float = 0.0, grace: float = 10.0) -> bool:
@@ -121,8 +69,7 @@ def sweep_stage(out: Path, option: str = "--out") -> Iterator[Stage]:
     stage = Stage(output_files.out_folder(out, option))
     try:
         yield stage
-        with deferred_signals(), folder_lock(stage.folder):
-            stage.commit()
+        stage.commit()
     except BaseException as err:
         with deferred_signals():
             stage.discard()
