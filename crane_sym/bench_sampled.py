@@ -11,7 +11,6 @@ exact response to its own double inputs.
 """
 from __future__ import annotations
 
-import importlib
 import math
 import time
 import warnings
@@ -24,6 +23,7 @@ import numpy as np
 import sympy as sp
 
 from . import loads
+from .bench_cases import sampled_cases
 from .duhamel import duhamel
 from .sampled_load import _uniform
 
@@ -200,31 +200,17 @@ class _Case:
 
 
 def _cases() -> list[_Case]:
-    hoist = importlib.import_module("crane_sym.generated.hoist_startup")
-    travel = importlib.import_module("crane_sym.generated.travel_braking")
+    """The cases the papers declare (``SAMPLED_BENCH_CASES``), each with the
+    exact response to the closed form's own inputs."""
     cases = []
-    Omega, t_n, theta = 31.0, 1.5, 0.5
-    for name, family, t1 in (("dynamic_coefficient_ramp", "ramp", t_n),
-                             ("dynamic_coefficient_ramp_hold", "ramp_hold", theta)):
-        fn = getattr(hoist, name)
-
-        def exact(since, family=family, t1=t1):
-            x = reference(family, since, Omega, 1.0, t1)[0]
-            return x * Omega ** 2           # K = x / x_st, x_st = S0/Omega^2, S0 = 1
-        cases.append(_Case(f"hoist_startup.{name}", family, Omega, 1.0, t1, 2.0 ** -12,
-                           lambda t, fn=fn, t1=t1: fn(t, Omega, t1), Omega ** 2, exact))
-    m1, m2, c, P_t, W = 4.4e3, 110e3, 3e6, 24e3, 11e3
-    Om = float(travel.natural_frequency(m1, m2, c))
-    S = P_t / m1 - W / m2                   # eq (2) of paper 002: S = P/m1 + Q/m2
-
-    def exact_force(since):
-        with mpmath.workdps(50):
-            M1, M2, C, P, Q = (mp_exact(v) for v in (m1, m2, c, P_t, W))
-            x = reference("step", [mp_exact(s) for s in since],
-                          mpmath.sqrt(C * (M1 + M2) / (M1 * M2)), P / M1 - Q / M2, 1.0)[0]
-        return x * c
-    cases.append(_Case("travel_braking.elastic_force", "step", Om, S, 1.0, 2.0 ** -17,
-                       lambda t: travel.elastic_force(t, m1, m2, c, P_t, W), c, exact_force))
+    for _, c in sampled_cases():
+        def exact_closed(since, c=c):
+            with mpmath.workdps(50):
+                Omega, S0_ = c.exact() if c.exact else (mp_exact(c.Omega), mp_exact(c.S0))
+                x = reference(c.family, [mp_exact(s) for s in since], Omega, S0_, c.t1)[0]
+            return x * c.scale
+        cases.append(_Case(c.name, c.family, c.Omega, c.S0, c.t1, c.step, c.closed_form,
+                           c.scale, exact_closed))
     return cases
 
 

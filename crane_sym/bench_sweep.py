@@ -1,9 +1,9 @@
 """``crane-sym bench --sweep``: design sweeps against per-design integration.
 
-Four measurements in one run (issue 16, item 5):
+Four measurements in one run, on the cases the papers declare
+(``SWEEP_BENCH_CASES``, :mod:`crane_sym.bench_cases`):
 
-(a) a sweep of 10⁴ designs of a closed-form peak (000 ``peak_elastic_force``
-    over m1 × P_t, 002 ``ramp_hold_peak_factor`` over Ω × θ) against SciPy
+(a) a sweep of 10⁴ designs of each case's closed-form peak against SciPy
     integrating each design at matched accuracy: the peak of the integrated
     response (DOP853 dense output over one period past the load's last change,
     sampled, then polished by bounded Brent on the interpolant) within 1e-9 of
@@ -12,7 +12,7 @@ Four measurements in one run (issue 16, item 5):
     for 10⁴ designs is extrapolated from its mean (stated in the report);
 (b) parallel efficiency: one block list evaluated by Dask's threaded
     scheduler with 1 and with 2 workers, T₁ / (2·T₂);
-(c) a 10⁸-design sweep of ``peak_elastic_force`` written to Zarr by the
+(c) a 10⁸-design sweep of the main case's peak written to Zarr by the
     command line in a subprocess: its wall time and peak resident memory;
 (d) a ``distributed.LocalCluster`` (2 worker processes, 1 thread each)
     against the local scheduler on the same plan, and whether the two
@@ -33,6 +33,7 @@ from typing import Any
 import numpy as np
 
 from . import registry
+from .bench_cases import SweepBenchCase, sweep_cases
 from .bench_odes import first_order, parameters
 from .bench_rows import least_time
 from .scenes import load_scene
@@ -45,7 +46,6 @@ __all__ = ["bench_sweep", "integrated_peak", "markdown"]
 RTOLS = (1e-9, 1e-10, 1e-11, 1e-12, 1e-13)
 MATCH = 1e-9
 SAMPLE = 12
-_SCENE_000 = "overhead_crane_50t"
 
 
 def integrated_peak(f, jac, y0, p: tuple, quantity, pieces: list[float], rtol: float) -> float:
@@ -73,68 +73,46 @@ def integrated_peak(f, jac, y0, p: tuple, quantity, pieces: list[float], rtol: f
     return best
 
 
-def _case_000():
-    from .generated.travel_braking import natural_frequency, peak_elastic_force
-    d = registry.get("travel_braking")
-    system = next(s for s in d.ode_systems if s.name.startswith("relative"))
+def _prepared(paper: str, case: SweepBenchCase, n: int = 100):
+    """The case's plan on n × n designs, the first-order system the integrator
+    gets (f, jac, y0), the quantity it maximises, and the system's parameters."""
+    d = registry.get(paper)
+    system = next(s for s in d.ode_systems if s.name == case.system)
     names = [str(s) for s in parameters(system)]
     f, jac, y0f, quantities = first_order(system, parameters(system))
-    scene = load_scene(_SCENE_000)
-    chosen = plan(scene, ["m1=1:100:100:log", "P_t=5:50:100"], ["peak_elastic_force"])
-
-    def design(m1, P_t):
-        values = {**scene.parameters, "m1": m1, "P_t": P_t}
-        p = tuple(values[n] for n in names)
-        period = 2 * np.pi / natural_frequency(m1, values["m2"], values["c"])
-        exact = peak_elastic_force(m1, values["m2"], P_t, values["W"])
-        return p, [1.25 * period], exact
-    return chosen, f, jac, y0f, quantities["elastic_force"], design
-
-
-def _case_002():
-    from .generated.hoist_startup import ramp_hold_peak_factor
-    d = registry.get("hoist_startup")
-    system = next(s for s in d.ode_systems if s.name.startswith("relative")
-                  and s.name.endswith("dynamic_coefficient_ramp_hold"))
-    names = [str(s) for s in parameters(system)]
-    f, jac, y0f, quantities = first_order(system, parameters(system))
-    fixed = {"m1": 2e3, "m2": 8e3, "g": 9.81}          # scene hoist_fig5's masses
-
-    def design(Omega, theta):
-        values = {**fixed, "Omega": Omega, "theta": theta}
-        p = tuple(values[n] for n in names)
-        return p, [theta, theta + 1.1 * 2 * np.pi / Omega], ramp_hold_peak_factor(Omega, theta)
-    return None, f, jac, y0f, quantities["dynamic_coefficient_ramp_hold"], design
-
-
-def _matched(case: str, seed: int = 16) -> dict[str, Any]:
-    """(a) for one paper: sweep of 10⁴ designs against integrating a sample."""
-    chosen, f, jac, y0f, quantity, design = _case_000() if case == "000" else _case_002()
-    rng = np.random.default_rng(seed)
-    if case == "000":
-        axes = [a.si() for a in chosen.axes]
-        run_sweep(chosen, None, scheduler="threads")            # imports, first call
-        sweep_seconds, swept = least_time(lambda: run_sweep(chosen, None, scheduler="threads"),
-                                          budget=1.0, repeats=5)
-        name = "peak_elastic_force"
-    else:
-        # No shipped scene gives θ: the plan is built directly, same machinery.
-        chosen = SweepPlan("bench", "hoist_startup",
-                           (Axis("Omega", 5.0, 50.0, 100, True, "rad/s", 1.0),
-                            Axis("theta", 0.05, 1.0, 100, False, "s", 1.0)),
-                           (OutputSpec("ramp_hold_peak_factor", "closed", ("Omega", "theta"),
+    axes = [a.format(n=n) for a in case.axes]
+    if case.scene is not None:
+        chosen = plan(load_scene(case.scene), axes, [case.output])
+    else:                              # no shipped scene gives these axes: a direct plan
+        spans = []
+        for text in axes:
+            name, spec = text.split("=")
+            lo, hi, count, *log = spec.split(":")
+            spans.append(Axis(name, float(lo), float(hi), int(count), bool(log),
+                              case.units[name], 1.0))
+        chosen = SweepPlan("bench", paper, tuple(spans),
+                           (OutputSpec(case.output, "closed", tuple(a.name for a in spans),
                                        "1"),), {})
-        axes = [a.si() for a in chosen.axes]
-        run_sweep(chosen, None, scheduler="threads")
-        sweep_seconds, swept = least_time(lambda: run_sweep(chosen, None, scheduler="threads"),
-                                          budget=1.0, repeats=5)
-        name = "ramp_hold_peak_factor"
+    return chosen, f, jac, y0f, quantities[case.quantity], names
+
+
+def _matched(paper: str, case: SweepBenchCase, seed: int = 16) -> dict[str, Any]:
+    """(a) for one case: sweep of 10⁴ designs against integrating a sample."""
+    chosen, f, jac, y0f, quantity, names = _prepared(paper, case)
+    base = dict(load_scene(case.scene).parameters) if case.scene else dict(case.fixed)
+    rng = np.random.default_rng(seed)
+    axes = [a.si() for a in chosen.axes]
+    run_sweep(chosen, None, scheduler="threads")            # imports, first call
+    sweep_seconds, swept = least_time(lambda: run_sweep(chosen, None, scheduler="threads"),
+                                      budget=1.0, repeats=5)
     picks = [(axes[0][rng.integers(100)], axes[1][rng.integers(100)]) for _ in range(SAMPLE)]
     chosen_rtol, per_design, worst = None, None, None
     for rtol in RTOLS:
         errors, seconds = [], 0.0
         for a, b in picks:
-            p, pieces, exact = design(a, b)
+            values, pieces, exact = case.design(
+                {**base, chosen.axes[0].name: a, chosen.axes[1].name: b})
+            p = tuple(values[n] for n in names)
             y0 = np.array(y0f(*p), dtype=float)
             t0 = time.perf_counter()
             peak = integrated_peak(f, jac, y0, p, quantity, pieces, rtol)
@@ -144,7 +122,7 @@ def _matched(case: str, seed: int = 16) -> dict[str, Any]:
         if worst <= MATCH:
             chosen_rtol, per_design = rtol, seconds / SAMPLE
             break
-    row = {"paper": case, "output": name, "designs": 10**4,
+    row = {"paper": paper, "output": case.output, "designs": 10**4,
            "sweep_seconds": sweep_seconds, "sample": SAMPLE, "rtol": chosen_rtol,
            "sample_worst_rel_error": worst}
     if per_design is not None:
@@ -155,14 +133,27 @@ def _matched(case: str, seed: int = 16) -> dict[str, Any]:
     return row
 
 
+def main_case() -> SweepBenchCase:
+    """The case the larger measurements (b)–(d) use: the first a paper
+    declares with a scene and a time response."""
+    return next(c for _, c in sweep_cases() if c.scene and c.response)
+
+
+def _main_plan(n: int) -> SweepPlan:
+    case = main_case()
+    return plan(load_scene(case.scene), [a.format(n=n) for a in case.axes],
+                [case.output, case.response[0]], [case.response[1]])
+
+
 def _efficiency(n: int = 4000) -> dict[str, Any]:
-    """(b) one block list (n × n designs of peak_elastic_force and of
-    elastic_force at t = 0.1 s), threads with 1 and with 2 workers."""
+    """(b) one block list (n × n designs of the main case's peak and of its
+    time response), threads with 1 and with 2 workers."""
     from .sweep import chunks_for, grid_arrays
-    chosen = plan(load_scene(_SCENE_000), [f"m1=1:100:{n}:log", f"P_t=5:50:{n}"],
-                  ["peak_elastic_force", "elastic_force"], ["t=0.1"])
+    case = main_case()
+    chosen = _main_plan(n)
     arrays = grid_arrays(chosen, chunks_for(chosen))
-    out = {"designs": chosen.points, "blocks": arrays["elastic_force"].npartitions}
+    out = {"designs": chosen.points, "blocks": arrays[case.response[0]].npartitions,
+           "outputs": [case.output, case.response[0]]}
     # the machine's own answer: np.sin over blocks of the same size, no Dask
     blocks = [np.linspace(0.0, 1.0 + k, chosen.points // 16) for k in range(16)]
     arrays["np.sin (no Dask, control)"] = blocks
@@ -200,11 +191,12 @@ def _cpu() -> float:
 
 
 def _big(out: Path, n: int = 10_000) -> dict[str, Any]:
-    """(c) the command line on n × n designs, in a subprocess; its peak RSS."""
-    argv = [sys.executable, "-m", "crane_sym", "sweep", _SCENE_000, "--vary",
-            f"m1=1:100:{n}:log", "--vary", f"P_t=5:50:{n}", "--output", "peak_elastic_force",
-            "--limit", "peak_elastic_force<=40 kN", "--out", str(out), "--format", "json",
-            "--quiet"]
+    """(c) the command line on n × n designs of the main case, in a subprocess;
+    its peak RSS."""
+    case = main_case()
+    argv = [sys.executable, "-m", "crane_sym", "sweep", case.scene,
+            *[part for a in case.axes for part in ("--vary", a.format(n=n))],
+            "--output", case.output, "--out", str(out), "--format", "json", "--quiet"]
     start = time.perf_counter()
     done = subprocess.run(argv, capture_output=True, text=True, check=True)
     wall = time.perf_counter() - start
@@ -212,16 +204,14 @@ def _big(out: Path, n: int = 10_000) -> dict[str, Any]:
     rss = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss / 1024
     return {"designs": data["points"], "blocks": data["chunks"], "sweep_seconds":
             data["seconds"], "command_seconds": wall, "peak_rss_mib": rss,
-            "fraction_within": data["limit"]["fraction_within"],
-            "worst_kN": data["worst_case"]["value"]}
+            "output": case.output}
 
 
 def _cluster(out: Path, n: int = 3000) -> dict[str, Any]:
     """(d) LocalCluster (2 processes × 1 thread) against the local scheduler."""
     import xarray as xr
     from distributed import LocalCluster
-    chosen = plan(load_scene(_SCENE_000), [f"m1=1:100:{n}:log", f"P_t=5:50:{n}"],
-                  ["peak_elastic_force", "elastic_force"], ["t=0.1"])
+    chosen = _main_plan(n)
     local = run_sweep(chosen, out / "local")
     start = time.perf_counter()
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
@@ -239,7 +229,7 @@ def _cluster(out: Path, n: int = 3000) -> dict[str, Any]:
 def bench_sweep() -> dict[str, Any]:
     """All four measurements (a)–(d); datasets in a temporary folder."""
     with tempfile.TemporaryDirectory(prefix="crane_sym_bench_sweep_") as tmp:
-        return {"matched_accuracy": [_matched("000"), _matched("002")],
+        return {"matched_accuracy": [_matched(i, c) for i, c in sweep_cases()],
                 "parallel_efficiency": _efficiency(),
                 "large": _big(Path(tmp) / "big"),
                 "cluster": _cluster(Path(tmp)),
@@ -269,12 +259,12 @@ def markdown(r: dict[str, Any]) -> str:
     lines += ["", f"## (b) Parallel efficiency, {e['designs']:.3g} designs in {e['blocks']} "
               "blocks, threads", "", "| output | 1 worker [s] | 2 workers [s] | T₁/(2·T₂) | cores the process got "
               "with 2 workers |", "| --- | --- | --- | --- | --- |"]
-    for name in ("peak_elastic_force", "elastic_force", "np.sin (no Dask, control)"):
+    for name in (*e["outputs"], "np.sin (no Dask, control)"):
         lines.append(f"| {name} | {e[name]['one_worker_s']:.3f} | "
                      f"{e[name]['two_workers_s']:.3f} | {100 * e[name]['efficiency']:.0f} % | "
                      f"{e[name]['cores_used_two']:.2f} |")
     b, c = r["large"], r["cluster"]
-    lines += ["", "## (c) 10⁸ designs of peak_elastic_force, written to Zarr", "",
+    lines += ["", f"## (c) 10⁸ designs of {b['output']}, written to Zarr", "",
               f"{b['designs']:.3g} designs in {b['blocks']} blocks: sweep {b['sweep_seconds']:.2f}"
               f" s, whole command (imports, Zarr, PNG) {b['command_seconds']:.1f} s, peak "
               f"resident memory {b['peak_rss_mib']:.0f} MiB.", "",

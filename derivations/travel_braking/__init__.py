@@ -17,6 +17,7 @@ Files:
 - ``steps.py``: the derivation steps (1)–(14) and beyond, in the paper's order.
 - ``published.py``: the published formulas as printed (``PUBLISHED``).
 - ``outputs.py``: the Outputs for code generation and the ODE systems.
+- ``bench_cases.py``: the cases the sweep and sampled-load benches run.
 - ``hard_cases.py``: the seeded hard cases for ``crane-sym accuracy``.
 - ``report.py``: ``scene_report`` for ``crane-sym run``.
 
@@ -29,13 +30,14 @@ import sympy as sp
 from crane_sym.derivation import Derivation
 
 from . import steps
+from .bench_cases import SAMPLED_BENCH_CASES, SWEEP_BENCH_CASES
 from .hard_cases import hard_cases
 from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .outputs import ode_systems, outputs
 from .published import PUBLISHED
 from .report import scene_report
 
-__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases",
+__all__ = ["SAMPLED_BENCH_CASES", "SWEEP_BENCH_CASES", "ID", "AUTHORS", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases",
            "scene_report"]
 
 
