@@ -37,6 +37,7 @@ from crane_sym.published import PublishedFormula
 from .hard_cases import hard_cases
 from .model import AUTHORS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .drive_law_scene import DRIVE_LAW
+from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .report import scene_report
 from .steps import (drive_laws, duhamel_integral, dynamic_coefficients,
                     equations_of_motion, initial_conditions)
@@ -46,8 +47,8 @@ from .steps_optimum import optimum
 #: Loads a scene may give as data (crane_sym.derivation.SceneLoad).
 SCENE_LOADS = {DRIVE_LAW.table: DRIVE_LAW}
 
-__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SCENE_LOADS", "build",
-           "hard_cases", "published_formulas", "scene_report"]
+__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SCENE_CHECKS", "SCENE_LOADS",
+           "SCENE_OPTIONS", "build", "hard_cases", "published_formulas", "scene_report"]
 
 
 def published_formulas() -> list[PublishedFormula]:
