@@ -20,6 +20,10 @@ model the derivation declares in ``Derivation.switches`` (e.g. ``damping``),
 and a table named after one of the derivation's scene loads
 (``SCENE_LOADS`` of its package, e.g. ``[drive_law]`` of paper 002) gives a
 load as data, which the specializer turns into the scene's functions.
+``[options]`` takes what ``crane_sym.scene_options.options_for`` declares for
+the scene (``duration``, ``points``, the switches, the paper's
+``SCENE_OPTIONS``), read into ``Scene.settings``; the paper's ``SCENE_CHECKS``
+run last. An unknown key in any table is an error naming the closest known one.
 Values are converted to SI by :func:`crane_sym.units.convert`; they are parsed,
 never evaluated, and checked against the sign the symbol table admits. This is
 stage 1 of the one scene pipeline (read and validate → ``specialize`` →
