@@ -256,9 +256,9 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("ids", nargs="*", help=ids_help)
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--out", default="bench", help="folder for Markdown and PNG (default: bench/)")
-    p.add_argument("--points", type=int, default=2000, help="grid points for the comparison")
+    p.add_argument("--points", type=int, default=2000, help="grid points for the comparison (2 to 1e7)")
     p.add_argument("--throughput-points", type=int, default=10**6,
-                   help="array length for the large-array np.cos comparison")
+                   help="array length for the large-array np.cos comparison (1 to 1e8)")
     p.add_argument("--methods", nargs="+", choices=("RK45", "DOP853", "LSODA", "Radau", "BDF"),
                    help="solve_ivp methods (default: RK45 DOP853 LSODA Radau; odeint "
                    "always runs)")
@@ -266,16 +266,18 @@ def parser() -> argparse.ArgumentParser:
                    help="fewer tolerances (1e-6 1e-9 1e-12), arrays of 1e4 and 1e5 points, "
                    "the integrator comparison at 100 and 2000 points")
     p.add_argument("--sizes", nargs="+", type=int,
-                   help="array lengths for the targets against np.cos (default: 1e4 1e5 1e6 1e7)")
+                   help="array lengths for the targets against np.cos, each 1 to 1e8 "
+                   "(default: 1e4 1e5 1e6 1e7)")
     p.add_argument("--compare-points", nargs="+", type=int,
                    help="numbers of points at which the closed form meets the best tuned "
-                   "integrator (default: 100 2000 100000)")
+                   "integrator, each 2 to 1e7 (default: 100 2000 100000)")
     p.add_argument("--sampled", action="store_true",
                    help="also bench loads sampled on a grid against the closed forms")
     p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
                    "per-design integration; alone, only that")
     p.add_argument("--rtols", nargs="+", type=float,
-                   help="integrator tolerances (default: every half decade 1e-6 ... 1e-13)")
+                   help="integrator tolerances, each 1e-13 to 0.1 (default: every half "
+                   "decade 1e-6 ... 1e-13)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
                     cmd_run, True)
     p.add_argument("scene", help="scene name or path to a scene TOML file")

@@ -10,7 +10,14 @@ import time
 from pathlib import Path
 from typing import Sequence
 
-from . import cli_sweep, progress, registry
+from . import cli_sweep, output_files, progress, registry
+
+#: What each count option of ``bench`` accepts: (least, most).
+COUNTS = {"--points": (2, 10**7), "--throughput-points": (1, 10**8),
+          "--sizes": (1, 10**8), "--compare-points": (2, 10**7)}
+#: Integrator tolerances ``--rtols`` accepts: solve_ivp raises one below
+#: 100 eps (2.2e-14) to that, and one of 0.1 or more checks nothing.
+RTOL_RANGE = (1e-13, 0.1)
 
 
 def _ids(names: Sequence[str]) -> list[str]:
@@ -34,14 +41,33 @@ def cmd_bench(args: argparse.Namespace) -> int:
         return _bench(args)
 
 
+def check_options(args: argparse.Namespace) -> None:
+    """ValueError naming the first bench option out of its range (``COUNTS``,
+    ``RTOL_RANGE``); an ``--out`` that cannot be written is an OutputError."""
+    for option, (least, most) in COUNTS.items():
+        given = getattr(args, option[2:].replace("-", "_"), None)
+        each = "each " if isinstance(given, list) else ""
+        for value in ([given] if isinstance(given, int) else given or []):
+            if not least <= value <= most:
+                raise ValueError(f"{option}: {each}must be an integer in {least}.."
+                                 f"1e{len(str(most)) - 1}, got {value}")
+    low, high = RTOL_RANGE
+    for rtol in args.rtols or []:
+        if not low <= rtol <= high:
+            raise ValueError(f"--rtols: each tolerance must be in [{low:g}, {high:g}], "
+                             f"got {rtol:g}")
+    output_files.check_folder(args.out)
+
+
 def _bench(args: argparse.Namespace) -> int:
     from . import bench, bench_memory, bench_targets as bt, scenes
     from .bench_report import as_markdown, headline, not_applicable, plot, plot_scaling
     say = progress.current()
     ids = _ids(args.ids)                 # an unknown id fails before the folder is made
+    check_options(args)                  # so does an option out of its range
     out_dir = Path(args.out)
-    out_dir.mkdir(parents=True, exist_ok=True)
     if args.sweep:
+        output_files.out_folder(out_dir)
         with say.task("design sweeps against per-design integration"):
             cli_sweep.run_bench(out_dir, args.format == "json")
         if not args.ids:                   # `bench --sweep` alone: the sweep bench only
@@ -83,6 +109,7 @@ def _bench(args: argparse.Namespace) -> int:
                          d, s, points=min(args.throughput_points, 200_000))]
         heads = headline(rows)
         skipped = not_applicable(d, rows)
+        output_files.out_folder(out_dir)   # made when there is something to write
         md = out_dir / f"bench_{i}.md"
         lines = [f"# Bench: {i}", "",
                  f"Scenes {', '.join(s.name for s in chosen)}; {args.points} seeded times on "
@@ -121,9 +148,11 @@ def _bench(args: argparse.Namespace) -> int:
         print(bt.goals_table(goals))
     for i in ids:
         if registry.get(i).tabulated:
+            output_files.out_folder(out_dir)
             with say.task(f"{i}: piecewise-linear runs against solve_ivp"):
                 _bench_piecewise(i, out_dir, args.points, args.format == "table")
     if args.sampled:
+        output_files.out_folder(out_dir)
         with say.task("loads sampled on a grid"):
             _bench_sampled(out_dir, args.format == "table")
     if args.format == "json":

@@ -11,10 +11,15 @@ written in::
 :func:`piecewise_law` builds the law from numbers only; :func:`read_law_table`
 checks a table's keys, converts to SI and returns exact numbers. Entries are
 checked by type (``loads.exact_number``): text is refused, never parsed or
-evaluated; unit text is parsed by ``crane_sym.units``.
+evaluated; unit text is parsed by ``crane_sym.units``. The symbolic work a law
+causes grows with its number of pieces and their degree, and its numbers
+must stay where the printed double-precision code holds: a reader states
+:class:`LawLimits` and :func:`read_law_table` refuses a law beyond them,
+naming the limit, before anything is convolved or written.
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import Any, Mapping, Sequence
 
 import sympy as sp
@@ -23,8 +28,83 @@ from sympy.physics.units.dimensions import Dimension
 
 from . import units
 from .loads import DEFAULT_TIME, PiecewiseLoad, exact_number, piecewise_polynomial
+from .scene_options import did_you_mean
 
-__all__ = ["check_keys", "piecewise_law", "read_law_table"]
+__all__ = ["LawLimits", "check_keys", "piecewise_law", "read_law_table"]
+
+
+@dataclass(frozen=True)
+class LawLimits:
+    """Bounds on a law a scene gives as numbers, checked on reading.
+
+    Attributes
+    ----------
+    pieces : int
+        Most pieces (``len(breakpoints) - 1``).
+    degree : int
+        Highest polynomial degree of a piece (``len(row) - 1``).
+    end : float
+        Latest breakpoint [s]; the law starts at or after 0.
+    shortest : float
+        Shortest piece [s]: the Duhamel response of a short piece of high
+        degree is a difference of large terms.
+    value : float
+        Largest :math:`|c_{kj}| b_{k+1}^j` (SI of the law's values): the
+        printed code expands :math:`c_{kj} (t - b_k)^j` in powers of t, and no
+        power exceeds about this on :math:`[0, b_{k+1}]`, so none cancels
+        another beyond what double precision keeps.
+    unit : str
+        The SI unit of the law's values, for the messages.
+    """
+
+    pieces: int
+    degree: int
+    end: float
+    shortest: float
+    value: float
+    unit: str
+
+    def check_counts(self, rows: Any) -> None:
+        """ValueError if the coefficient rows, as given, are more pieces or of a
+        higher degree than allowed (rows that are no sequences are left to
+        :func:`piecewise_law`)."""
+        if not _is_list(rows):
+            return
+        if len(rows) > self.pieces:
+            raise ValueError(f"has {len(rows)} pieces; at most {self.pieces} are allowed "
+                             f"(len(coefficients) <= {self.pieces})")
+        for k, row in enumerate(rows):
+            if _is_list(row) and len(row) - 1 > self.degree:
+                raise ValueError(f"coefficients[{k}] has degree {len(row) - 1}; at most "
+                                 f"{self.degree} is allowed (len(coefficients[{k}]) <= "
+                                 f"{self.degree + 1})")
+
+    def check_values(self, breakpoints: Sequence[sp.Rational],
+                     rows: Sequence[Sequence[sp.Rational]]) -> None:
+        """ValueError naming the first breakpoint or coefficient (SI) beyond the
+        limits."""
+        if breakpoints[-1] > self.end:
+            raise ValueError(f"breakpoints[{len(breakpoints) - 1}] = "
+                             f"{float(breakpoints[-1]):g} s is after {self.end:g} s, the "
+                             "latest end of a law")
+        for k, row in enumerate(rows):
+            start, end = breakpoints[k], breakpoints[k + 1]
+            if end - start < self.shortest:
+                raise ValueError(f"piece {k} [{float(start):g} s, {float(end):g} s] lasts "
+                                 f"{float(end - start):g} s, less than {self.shortest:g} s, "
+                                 "the shortest piece")
+            for j, c in enumerate(row):
+                if abs(c) * end ** j > self.value:
+                    term = f"|c|*b^{j}" if j else "|c|"
+                    at = f" (b = {float(end):g} s, the piece's end)" if j else ""
+                    raise ValueError(
+                        f"coefficients[{k}][{j}] = {float(c):.4g} (SI) is too large: {term} = "
+                        f"{float(abs(c) * end ** j):.4g} {self.unit}{at}, more than "
+                        f"{self.value:g} {self.unit}")
+
+
+def _is_list(value: Any) -> bool:
+    return isinstance(value, Sequence) and not isinstance(value, (str, bytes))
 
 
 def piecewise_law(breakpoints: Sequence[Any], coefficients: Sequence[Sequence[Any]], *,
@@ -62,13 +142,15 @@ def piecewise_law(breakpoints: Sequence[Any], coefficients: Sequence[Sequence[An
 
 def check_keys(table: Mapping[str, Any], allowed: Sequence[str],
                required: Sequence[str]) -> None:
-    """ValueError naming the unknown and the missing keys of ``table``."""
+    """ValueError naming the unknown and the missing keys of ``table`` (and the
+    allowed key closest to an unknown one)."""
     unknown = sorted(set(table) - set(allowed))
     missing = [k for k in required if k not in table]
     if unknown or missing:
         wrong = " and ".join(([f"unknown keys {unknown}"] if unknown else [])
                              + ([f"missing {missing}"] if missing else []))
-        raise ValueError(f"has {wrong}; it takes {list(allowed)}")
+        hint = did_you_mean(unknown[0], allowed) if unknown else ""
+        raise ValueError(f"has {wrong}; {hint}it takes {list(allowed)}")
 
 
 def _unit_factor(table: Mapping[str, Any], key: str, default: str, dim: Dimension
@@ -88,7 +170,7 @@ def _unit_factor(table: Mapping[str, Any], key: str, default: str, dim: Dimensio
 
 
 def read_law_table(table: Mapping[str, Any], value_key: str, dimension: Dimension,
-                   default_unit: str
+                   default_unit: str, limits: LawLimits
                    ) -> tuple[tuple[sp.Rational, ...], tuple[tuple[sp.Rational, ...], ...]]:
     """Breakpoints [s] and coefficient rows (SI) of a law written in a table.
 
@@ -98,14 +180,18 @@ def read_law_table(table: Mapping[str, Any], value_key: str, dimension: Dimensio
     time unit to the power j. Other keys are the caller's to check.
 
     Raises ``TypeError`` for an entry that is not a number and ``ValueError``
-    for a missing key, a bad unit, or counts that do not match.
+    for a missing key, a bad unit, counts that do not match, or a law beyond
+    ``limits`` (its counts checked before any entry is read).
     """
     missing = [k for k in ("breakpoints", "coefficients") if k not in table]
     if missing:
         raise ValueError(f"missing {missing}")
     to_s = _unit_factor(table, "time_unit", "s", _TIME)
     to_si = _unit_factor(table, value_key, default_unit, dimension)
+    limits.check_counts(table["coefficients"])    # before any entry is read
     checked = piecewise_law(table["breakpoints"], table["coefficients"])
     rows = tuple(tuple(exact_number(c, "c") * to_si / to_s ** j for j, c in enumerate(row))
                  for row in table["coefficients"])
-    return tuple(b * to_s for b in checked.breakpoints), rows
+    breakpoints = tuple(b * to_s for b in checked.breakpoints)
+    limits.check_values(breakpoints, rows)
+    return breakpoints, rows

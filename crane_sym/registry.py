@@ -54,6 +54,20 @@ def scene_loads(name: str) -> dict[str, SceneLoad]:
     return dict(getattr(module(name), "SCENE_LOADS", {}))
 
 
+def scene_options(name: str) -> tuple:
+    """The options scenes of this derivation may give beside ``duration`` and
+    ``points`` (``crane_sym.scene_options.SceneOption``), from the package's
+    ``SCENE_OPTIONS``; no build needed."""
+    return tuple(getattr(module(name), "SCENE_OPTIONS", ()))
+
+
+def scene_checks(name: str) -> tuple:
+    """Conditions between a scene's options and parameters, checked on load
+    (``crane_sym.scene_options.SceneCheck``), from the package's
+    ``SCENE_CHECKS``; no build needed."""
+    return tuple(getattr(module(name), "SCENE_CHECKS", ()))
+
+
 def sweep_outputs(name: str) -> dict[str, SweepOutput]:
     """Simulated responses a design sweep may ask for (name -> SweepOutput),
     from the package's ``SWEEP_OUTPUTS``; no build needed."""

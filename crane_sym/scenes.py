@@ -20,6 +20,10 @@ model the derivation declares in ``Derivation.switches`` (e.g. ``damping``),
 and a table named after one of the derivation's scene loads
 (``SCENE_LOADS`` of its package, e.g. ``[drive_law]`` of paper 002) gives a
 load as data, which the specializer turns into the scene's functions.
+``[options]`` takes what ``crane_sym.scene_options.options_for`` declares for
+the scene (``duration``, ``points``, the switches, the paper's
+``SCENE_OPTIONS``), read into ``Scene.settings``; the paper's ``SCENE_CHECKS``
+run last. An unknown key in any table is an error naming the closest known one.
 Values are converted to SI by :func:`crane_sym.units.convert`; they are parsed,
 never evaluated, and checked against the sign the symbol table admits. This is
 stage 1 of the one scene pipeline (read and validate → ``specialize`` →
@@ -28,18 +32,18 @@ generate → ``scene_run``). Scenes shipped with the package live in
 """
 from __future__ import annotations
 
-import difflib
 import re
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Sequence
 
 from sympy.physics.units import time as _TIME
 
 from . import registry, units
 from .derivation import SceneLoad
 from .panels import Panel, SceneReport, Span, format_quantity
+from .scene_options import OptionError, did_you_mean, failed_check, options_for, read_options
 from .symbols import STATE, TIME, PhysicalSymbol
 
 # Panel, SceneReport, Span and format_quantity live in ``panels``; they are
@@ -51,7 +55,6 @@ _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
 _SCENE_KEYS = ("name", "derivation", "title", "outputs")
 _OPTIONAL_SCENE_KEYS = ("inputs",)
 _TABLES = ("scene", "parameters", "options")
-_MAX_POINTS = 1_000_000
 
 
 class SceneError(ValueError):
@@ -73,7 +76,8 @@ class Scene:
     parameters : dict of str to float
         SI values, in the order of the derivation's symbol table.
     options : dict
-        ``duration`` (float, s), ``points`` (int) and any other raw values.
+        The ``[options]`` table as written, but ``duration`` (float, s) and
+        ``points`` (int); reports read :attr:`settings`.
     path : Path
         The TOML file the scene was read from.
     inputs : tuple of str
@@ -85,6 +89,10 @@ class Scene:
         The table of a scene load (``"drive_law"``), or ``""``.
     load : object
         The load as its ``SceneLoad.read`` validated it, or None.
+    settings : dict
+        Every option the scene takes (``scene_options``), read by its
+        declaration: given or default, bounds checked, quantities in SI.
+        What a report reads.
     """
 
     name: str
@@ -98,6 +106,7 @@ class Scene:
     switched_off: tuple[str, ...] = ()
     load_table: str = ""
     load: Any = None
+    settings: dict[str, Any] = field(default_factory=dict)
 
 
 def scenes_directory(derivation: str) -> Path:
@@ -161,26 +170,28 @@ def load_scene(path_or_name: str | Path) -> Scene:
     Returns
     -------
     Scene
-        With every parameter in SI units.
+        With every parameter in SI units and every option read by its
+        declaration (``Scene.settings``).
 
     Raises
     ------
     SceneError
-        For unreadable TOML, missing or unknown keys, an unknown derivation or
-        output, a missing, unknown, badly dimensioned or out-of-sign parameter
-        (the message names the parameter), and a scene load that its
-        ``SceneLoad.read`` refuses (the message names the table).
+        For unreadable TOML, missing or unknown keys in any table (with the
+        names close to an unknown one), an unknown derivation or output, a
+        missing, unknown, badly dimensioned or out-of-range parameter or option
+        (the message names it and its bound or choices), a scene load that its
+        ``SceneLoad.read`` refuses (the message names the table), and a
+        condition the paper declares between options and parameters
+        (``SCENE_CHECKS``) that the scene breaks.
     """
     path = _locate(path_or_name)
     data = read_toml(path)
     where = f"scene file {path.name!r}"
     head = _table(data, "scene", where)
+    _known_keys(head, [*_SCENE_KEYS, *_OPTIONAL_SCENE_KEYS], "[scene] key", where)
     missing = [k for k in ("name", "derivation", "title") if k not in head]
     if missing:
         raise SceneError(f"{where}: [scene] lacks {missing}")
-    unknown = sorted(set(head) - set(_SCENE_KEYS) - set(_OPTIONAL_SCENE_KEYS))
-    if unknown:
-        raise SceneError(f"{where}: unknown [scene] keys {unknown}")
     name = head["name"]
     if not isinstance(name, str) or not _SAFE_NAME.fullmatch(name):
         raise SceneError(f"{where}: name must be letters, digits, '_', '-' or '.', "
@@ -193,21 +204,25 @@ def load_scene(path_or_name: str | Path) -> Scene:
     except KeyError as exc:
         raise SceneError(f"{where}: {exc.args[0]}") from None
     loads = registry.scene_loads(derivation_id)
-    extra = sorted(set(data) - set(_TABLES) - set(loads))
-    if extra:
-        raise SceneError(f"{where}: unknown tables {extra}; expected "
-                         f"{list(_TABLES) + sorted(loads)}")
+    _known_keys(data, [*_TABLES, *sorted(loads)], "table", where)
     given = [key for key in loads if key in data]
     if len(given) > 1:
         raise SceneError(f"{where}: give one scene load, not {given}")
     # A derivation without time (gear geometry, statics) has no duration to give.
     timed = bool(given) or bool(registry.get(derivation_id).symbols.with_role(TIME))
-    options = _options(_table(data, "options", where), where, timed)
+    raw_options = _table(data, "options", where)
     raw = _table(data, "parameters", where)
     if given:
-        return _load_scene_with_load(path, head, derivation_id, loads[given[0]], data,
-                                     raw, options, where)
+        scene = _load_scene_with_load(path, head, derivation_id, loads[given[0]], data,
+                                      raw, where)
+    else:
+        scene = _load_plain_scene(path, head, derivation_id, raw, raw_options, where)
+    return _with_options(scene, raw_options, timed, where)
 
+
+def _load_plain_scene(path: Path, head: dict[str, Any], derivation_id: str,
+                      raw: dict[str, Any], raw_options: dict[str, Any], where: str) -> Scene:
+    """The outputs, inputs, switches and parameters of a scene without a load."""
     if "outputs" not in head:
         raise SceneError(f"{where}: [scene] lacks ['outputs']")
     derivation = registry.get(derivation_id)
@@ -219,7 +234,7 @@ def load_scene(path_or_name: str | Path) -> Scene:
     allowed = {a for o in known for a in o.args}
     entries = [e for e in derivation.symbols
                if e.expr in allowed and e.role not in (TIME, STATE)]
-    switched_off = _switched_off(derivation, options, where)
+    switched_off = _switched_off(derivation, raw_options, where)
     fixed = {str(s) for name in switched_off for s, _ in derivation.switches[name].off}
     inputs = _inputs(head.get("inputs", []), {str(a) for a in required}, where)
     for key in sorted((fixed | set(inputs)) & set(raw)):
@@ -227,13 +242,13 @@ def load_scene(path_or_name: str | Path) -> Scene:
         raise SceneError(f"{where}: parameter {key!r} {why}; remove it from [parameters]")
     needed = [e for e in entries if e.expr in required and e.name not in fixed | set(inputs)]
     parameters = _parameters(raw, entries, needed, derivation_id, where)
-    return Scene(name, derivation_id, head["title"], tuple(outputs), parameters,
-                 options, path, inputs, switched_off)
+    return Scene(head["name"], derivation_id, head["title"], tuple(outputs), parameters,
+                 {}, path, inputs, switched_off)
 
 
 def _load_scene_with_load(path: Path, head: dict[str, Any], derivation_id: str,
                           load: SceneLoad, data: dict[str, Any], raw: dict[str, Any],
-                          options: dict[str, Any], where: str) -> Scene:
+                          where: str) -> Scene:
     """The rest of :func:`load_scene` for a scene that gives a load as data: the
     load's own parameters, its outputs, its table read by ``load.read``."""
     if "inputs" in head:
@@ -250,7 +265,27 @@ def _load_scene_with_load(path: Path, head: dict[str, Any], derivation_id: str,
     except (TypeError, ValueError) as exc:
         raise SceneError(f"{where}: [{load.table}] {exc}") from None
     return Scene(head["name"], derivation_id, head["title"], tuple(outputs), parameters,
-                 options, path, load_table=load.table, load=value)
+                 {}, path, load_table=load.table, load=value)
+
+
+def _with_options(scene: Scene, raw: dict[str, Any], timed: bool, where: str) -> Scene:
+    """``scene`` with its options read by their declarations (``options_for``)
+    and the paper's conditions (``SCENE_CHECKS``) checked."""
+    if not timed and "duration" in raw:
+        raise SceneError(f"{where}: [options] duration: the derivation has no time")
+    if timed and "duration" not in raw:
+        raise SceneError(f"{where}: [options] lacks 'duration', e.g. duration = \"2 s\"")
+    try:
+        settings = read_options(raw, options_for(scene.derivation, scene.outputs,
+                                                 scene.load_table, timed))
+        options = {**raw, **{k: settings[k] for k in ("duration", "points") if k in settings}}
+        scene = replace(scene, options=options, settings=settings)
+        failure = failed_check(scene)
+    except OptionError as exc:
+        raise SceneError(f"{where}: {exc}") from None
+    if failure:
+        raise SceneError(f"{where}: {failure}")
+    return scene
 
 
 def _outputs(raw: Any, known: list[str], owner: str, where: str) -> list[str]:
@@ -274,9 +309,7 @@ def _parameters(raw: dict[str, Any], entries: list[PhysicalSymbol],
     names = [e.name for e in entries]
     for key in raw:
         if key not in names:
-            close = difflib.get_close_matches(key, names, n=3)
-            hint = f"did you mean {', '.join(map(repr, close))}? " if close else ""
-            raise SceneError(f"{where}: unknown parameter {key!r}; {hint}"
+            raise SceneError(f"{where}: unknown parameter {key!r}; {did_you_mean(key, names)}"
                              f"{owner!r} takes {', '.join(names)}")
     parameters: dict[str, float] = {}
     for entry in entries:
@@ -306,11 +339,11 @@ def _parameters(raw: dict[str, Any], entries: list[PhysicalSymbol],
 def _switched_off(derivation, options: dict[str, Any], where: str) -> tuple[str, ...]:
     """Names of the derivation's switches the options turn off (true/false only)."""
     off = []
-    for name in derivation.switches:
+    for name, switch in derivation.switches.items():
         if name in options:
             if not isinstance(options[name], bool):
-                raise SceneError(f"{where}: option {name!r} must be true or false, "
-                                 f"got {options[name]!r}")
+                raise SceneError(f"{where}: [options] {name} ({switch.description}) must be "
+                                 f"true or false, got {options[name]!r}")
             if not options[name]:
                 off.append(name)
     return tuple(off)
@@ -334,24 +367,10 @@ def _table(data: dict[str, Any], key: str, where: str) -> dict[str, Any]:
     return value
 
 
-def _options(raw: dict[str, Any], where: str, timed: bool = True) -> dict[str, Any]:
-    options = dict(raw)
-    if not timed:
-        if "duration" in raw:
-            raise SceneError(f"{where}: [options] duration: the derivation has no time")
-        return options
-    if "duration" not in raw:
-        raise SceneError(f"{where}: [options] lacks 'duration', e.g. duration = \"2 s\"")
-    try:
-        duration = units.convert("duration", raw["duration"], _TIME)
-    except units.UnitError as exc:
-        raise SceneError(f"{where}: {exc}") from None
-    if not duration > 0:
-        raise SceneError(f"{where}: duration must be > 0, got {raw['duration']!r}")
-    points = raw.get("points", 1001)
-    if isinstance(points, bool) or not isinstance(points, int) \
-            or not 2 <= points <= _MAX_POINTS:
-        raise SceneError(f"{where}: points must be an integer in 2..{_MAX_POINTS}, "
-                         f"got {points!r}")
-    options.update(duration=duration, points=points)
-    return options
+def _known_keys(table: dict[str, Any], known: Sequence[str], what: str, where: str) -> None:
+    """SceneError for the first key of ``table`` that is not ``known``, with
+    the known names close to it."""
+    for key in table:
+        if key not in known:
+            raise SceneError(f"{where}: unknown {what} {key!r}; {did_you_mean(key, known)}"
+                             f"expected {', '.join(known)}")

@@ -30,8 +30,8 @@ from dataclasses import dataclass
 from sympy.physics.units import Dimension, force, length, mass, time
 from sympy.physics.units.systems.si import dimsys_SI
 
-__all__ = ["UNITS", "Quantity", "UnitError", "convert", "format_dimension",
-           "parse_quantity", "parse_unit", "same_dimension", "unit_text"]
+__all__ = ["UNITS", "Quantity", "UnitError", "convert", "describe_dimension",
+           "format_dimension", "parse_quantity", "parse_unit", "same_dimension", "unit_text"]
 
 _ONE = Dimension(1)
 _PI, _G0 = math.pi, 9.80665  # _G0: standard gravity in m/s^2
@@ -230,6 +230,11 @@ _NAMED = {
 }
 
 
+def describe_dimension(d: Dimension) -> str:
+    """A dimension as messages name it: ``"mass (e.g. kg)"``, ``"force/length (e.g. N/m)"``."""
+    return _describe(d)
+
+
 def _describe(d: Dimension, example: bool = True) -> str:
     deps = _deps(d)
     key = tuple(deps.get(n, 0) for n in _ORDER)
@@ -252,7 +257,7 @@ def _real(x: object) -> float:
     return f
 
 
-def convert(name: str, value: object, expected: Dimension) -> float:
+def convert(name: str, value: object, expected: Dimension, what: str = "parameter") -> float:
     """Convert a scene parameter to an SI float, checking its dimension.
 
     Parameters
@@ -264,6 +269,8 @@ def convert(name: str, value: object, expected: Dimension) -> float:
         (only when ``expected`` is dimensionless).
     expected : Dimension
         Required dimension.
+    what : str
+        What ``name`` is, for the messages (``"parameter"``, ``"option"``).
 
     Returns
     -------
@@ -271,7 +278,7 @@ def convert(name: str, value: object, expected: Dimension) -> float:
         The value in SI units.
     """
     if isinstance(value, bool):
-        raise UnitError(f"parameter {name!r} expects a quantity, got a boolean {value}")
+        raise UnitError(f"{what} {name!r} expects a quantity, got a boolean {value}")
     bare = isinstance(value, numbers.Real)
     try:
         if bare:
@@ -292,11 +299,11 @@ def convert(name: str, value: object, expected: Dimension) -> float:
         else:
             raise UnitError(f"expected text like '50 t', got {type(value).__name__}")
     except UnitError as exc:
-        raise UnitError(f"parameter {name!r}: {exc}") from None
+        raise UnitError(f"{what} {name!r}: {exc}") from None
     if bare and not same_dimension(expected, _ONE):
-        raise UnitError(f"parameter {name!r} needs a unit of {_describe(expected)}, "
+        raise UnitError(f"{what} {name!r} needs a unit of {_describe(expected)}, "
                         f"got a bare number {value!r}")
     if not same_dimension(dim, expected):
-        raise UnitError(f"parameter {name!r} expects {_describe(expected)}, got "
+        raise UnitError(f"{what} {name!r} expects {_describe(expected)}, got "
                         f"{text!r} which is {_describe(dim, example=False)}")
     return number

@@ -225,9 +225,10 @@ def test_bad_system_data_and_tables_are_named(tmp_path):
                                        + law + OPTIONS))
     with pytest.raises(SceneError, match="parameter 'C'"):
         load_scene(_write(tmp_path, HEAD.replace("N/m", "N") + law + OPTIONS))
-    with pytest.raises(SceneError, match=r"unknown tables \['extra'\]"):
+    with pytest.raises(SceneError, match=r"unknown table 'extra'; expected scene, "
+                                         r"parameters, options, drive_law$"):
         load_scene(_write(tmp_path, HEAD + law + OPTIONS + "[extra]\n"))
-    with pytest.raises(SceneError, match=r"unknown tables \['drive_law'\]"):
+    with pytest.raises(SceneError, match=r"unknown table 'drive_law'"):
         load_scene(_write(tmp_path, HEAD.replace(
             '"hoist_startup"', '"travel_braking"') + law + OPTIONS))
 

@@ -98,7 +98,8 @@ def _scene_text(options: str, extra_parameters: str = "", inputs: str = '["W"]')
 
 
 @pytest.mark.parametrize("options, extra, inputs, message", [
-    ('damping = "off"', "", '["W"]', "option 'damping' must be true or false"),
+    ('damping = "off"', "", '["W"]', r"\[options\] damping \(.*\) must be true or false, "
+     "got 'off'"),
     ("damping = false", 'nu1 = "20 N*m*s/rad"\n', '["W"]', "'nu1' is fixed by a switch"),
     ("damping = false", 'W = "1 kN"\n', '["W"]', "'W' is an input of the scene"),
     ("damping = false", "", '["mu"]', "input 'mu' is not a parameter"),

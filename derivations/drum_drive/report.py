@@ -9,14 +9,11 @@ with its own module alone (``report_state``).
 from __future__ import annotations
 
 import sympy as sp
-from sympy.physics.units import mass
 
 from crane_sym.derivation import Derivation
 
 from .model import COORDS, STATE
-
-#: Simulation-only values a scene gives in [options] (not arguments of any output).
-SIM_OPTIONS = ("m3", "m_L", "nu1", "nu2", "nu_y", "nu_z", "nu_t")
+from .options import SIM_OPTIONS
 
 
 def argument_orders(generated) -> dict[str, list[str]]:
@@ -109,9 +106,10 @@ def example_report(scene, module):
     Parameters
     ----------
     scene : crane_sym.scenes.Scene
-        SI parameters of the outputs; options ``duration``, ``points``, the
-        simulation-only values ``SIM_OPTIONS`` and ``m_L_empty`` (mass of the run
-        without loads), with units, and optionally ``method`` of ``solve_ivp``.
+        SI parameters of the outputs; settings (``options.SCENE_OPTIONS``, SI)
+        ``duration``, ``points``, the simulation-only values ``SIM_OPTIONS``,
+        ``m_L_empty`` (mass of the run without loads) and ``method`` of
+        ``solve_ivp``.
     module : module
         The scene's generated module: its ``pulsating_force(t)`` is the load W(t)
         of (21) on the run.
@@ -131,15 +129,14 @@ def example_report(scene, module):
     import numpy as np
     from scipy.integrate import solve_ivp
 
-    from crane_sym import registry, units
+    from crane_sym import registry
     from crane_sym.panels import outside
     from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
     d = registry.get(scene.derivation)
-    p = dict(scene.parameters)
-    p.update({n: units.convert(n, scene.options[n], d.symbols[n].dimension)
-              for n in SIM_OPTIONS}, r=p["D"] / 2)
-    empty = units.convert("m_L_empty", scene.options["m_L_empty"], mass)
+    p, o = dict(scene.parameters), scene.settings
+    p.update({n: o[n] for n in SIM_OPTIONS}, r=p["D"] / 2)
+    empty = o["m_L_empty"]
 
     def ev(expr, **at):
         args = sorted(expr.free_symbols, key=str)
@@ -154,8 +151,8 @@ def example_report(scene, module):
         return np.sqrt(lam[lam > 1e-9 * lam.max()]) / (2 * np.pi)
 
     f_loaded, f_empty = hertz(Mn), hertz(make({**p, "m_L": empty}, load)[3][0])
-    duration, method = scene.options["duration"], scene.options.get("method", "LSODA")
-    times = np.linspace(0.0, duration, scene.options["points"])
+    duration, method = o["duration"], o["method"]
+    times = np.linspace(0.0, duration, o["points"])
     implicit = {"jac": jac} if method in ("LSODA", "Radau", "BDF") else {}
     start = clock.perf_counter()
     sol = solve_ivp(rhs, (0.0, duration), np.zeros(12), method=method, t_eval=times,

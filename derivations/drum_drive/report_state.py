@@ -11,7 +11,7 @@ real part, 0 to rounding when the damping is switched off.
 """
 from __future__ import annotations
 
-from crane_sym.scenes import Panel, SceneError, SceneReport
+from crane_sym.scenes import Panel, SceneReport
 from crane_sym.scenes import format_quantity as fq
 
 from .model import COORDS
@@ -26,17 +26,8 @@ def state_report(scene, module) -> SceneReport:
     import numpy as np
     from scipy.integrate import solve_ivp
     from scipy.linalg import expm
-    from sympy.physics.units import force
 
-    from crane_sym import units
-
-    if "state_derivative" not in scene.outputs or "state_jacobian" not in scene.outputs:
-        raise SceneError(f"scene {scene.name!r}: a run needs pulsating_force, or "
-                         "state_derivative with state_jacobian")
-    try:
-        load = units.convert("W", scene.options.get("W", "1 kN"), force)
-    except units.UnitError as exc:
-        raise SceneError(f"scene {scene.name!r}: option {exc}") from None
+    load = scene.settings["W"]           # read and checked on load (options.py)
     n = 2 * len(COORDS)
     jac = np.asarray(module.state_jacobian(), dtype=float).reshape(n, n)
     f0 = np.asarray(module.state_derivative(load, *np.zeros(n)), dtype=float).ravel()
@@ -44,7 +35,7 @@ def state_report(scene, module) -> SceneReport:
     def rhs(_t, x):
         return np.asarray(module.state_derivative(load, *x), dtype=float).ravel()
 
-    duration, points = scene.options["duration"], scene.options["points"]
+    duration, points = scene.settings["duration"], scene.settings["points"]
     times = np.linspace(0.0, duration, points)
     sol = solve_ivp(rhs, (0.0, duration), np.zeros(n), method="DOP853", t_eval=times,
                     rtol=1e-11, atol=1e-14)

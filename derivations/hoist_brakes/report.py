@@ -14,8 +14,9 @@ def scene_report(scene, module):
     Parameters
     ----------
     scene : crane_sym.scenes.Scene
-        SI parameters of the hoist (Table 1's names), options ``duration`` [s],
-        ``points`` and ``payload_limit`` (``"rated"``: m_p above m_r is refused).
+        SI parameters of the hoist (Table 1's names), settings ``duration`` [s]
+        and ``points`` (a payload above the rated one was refused on load,
+        ``options.py``).
     module : module
         The scene's generated module (``scene_<name>.py``).
 
@@ -30,16 +31,12 @@ def scene_report(scene, module):
 
     from crane_sym.generated import hoist_brakes as gen
     from crane_sym.scene_run import time_function
-    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
     from .elastic import hoist_from
 
-    q = scene.parameters
-    if scene.options.get("payload_limit", "rated") == "rated" and q["m_p"] > q["m_r"]:
-        raise SceneError(f"scene {scene.name!r}: parameter 'm_p' (payload) = {q['m_p']:g} kg "
-                         f"is above the rated payload m_r = {q['m_r']:g} kg "
-                         "(options: payload_limit = \"rated\")")
-    times = np.linspace(0.0, scene.options["duration"], scene.options["points"])
+    q = scene.parameters               # a payload above the rated one is refused on load
+    times = np.linspace(0.0, scene.settings["duration"], scene.settings["points"])
     hoist = {k: q[k] for k in ("J1", "J2", "m_h", "r", "i_g", "i_t", "g", "omega1",
                                "M_SB", "M_BB", "t_SB", "t_BB")}
     kmh = 60.0  # m/s -> m/min

@@ -39,6 +39,7 @@ from .bench_cases import SAMPLED_BENCH_CASES, SWEEP_BENCH_CASES
 from .hard_cases import hard_cases
 from .model import AUTHORS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .drive_law_scene import DRIVE_LAW
+from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .report import scene_report
 from .steps import (drive_laws, duhamel_integral, dynamic_coefficients,
                     equations_of_motion, initial_conditions)
@@ -48,7 +49,8 @@ from .steps_optimum import optimum
 #: Loads a scene may give as data (crane_sym.derivation.SceneLoad).
 SCENE_LOADS = {DRIVE_LAW.table: DRIVE_LAW}
 
-__all__ = ["SAMPLED_BENCH_CASES", "SWEEP_BENCH_CASES", "ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SCENE_LOADS", "build",
+__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SAMPLED_BENCH_CASES",
+           "SCENE_CHECKS", "SCENE_LOADS", "SCENE_OPTIONS", "SWEEP_BENCH_CASES", "build",
            "hard_cases", "published_formulas", "scene_report"]
 
 

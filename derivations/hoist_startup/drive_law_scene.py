@@ -30,7 +30,7 @@ from sympy.physics.units import time as _TIME
 
 from crane_sym.derivation import SceneLoad, SpecializedLoad
 from crane_sym.extrema import maximum_on_interval
-from crane_sym.law_tables import check_keys, piecewise_law, read_law_table
+from crane_sym.law_tables import LawLimits, check_keys, piecewise_law, read_law_table
 from crane_sym.loads import DEFAULT_TIME, PiecewiseLoad, exact_number
 from crane_sym.panels import valid_mask
 from crane_sym.scenes import Panel, SceneError, SceneReport
@@ -46,6 +46,14 @@ __all__ = ["DRIVE_LAW", "DriveLaw", "drive_law_report", "read", "response", "spe
 _KEYS = ("lifting", "breakpoints", "coefficients", "time_unit", "acceleration_unit")
 _MAX_DEPTH = 16        # bisection depth of the interval search
 _SAMPLE_SLACK = 1e-12  # relative: a sampled K may exceed the bound by rounding only
+#: What a [drive_law] may hold. The symbolic work (the Duhamel response, its
+#: printed module, the certified maximum) grows with the pieces (about as
+#: their square) and their degree: the largest law allowed, 5 pieces of
+#: degree 5 lifting with pick-up, takes about 30 s of CPU to generate and 40 s
+#: to run (README, "Scenes"); 8 pieces took 44 s to generate, 30 pieces 170 s.
+#: The other bounds keep the printed double-precision code accurate.
+LIMITS = LawLimits(pieces=5, degree=5, end=1000.0, shortest=0.01, value=1000.0,
+                   unit="m/s^2")
 #: What the law's model needs from [parameters].
 PARAMETERS = (
     PhysicalSymbol(sp.Symbol("m1", positive=True), mass, "kg", "reduced mass of the drive"),
@@ -81,7 +89,8 @@ def read(table: Mapping[str, Any], where: str = "") -> DriveLaw:
     if table["lifting"] not in (FROM_WEIGHT, PICKUP):
         raise ValueError(f"lifting must be {FROM_WEIGHT!r} or {PICKUP!r}, "
                          f"got {table['lifting']!r}")
-    breakpoints, rows = read_law_table(table, "acceleration_unit", acceleration, "m/s^2")
+    breakpoints, rows = read_law_table(table, "acceleration_unit", acceleration, "m/s^2",
+                                       LIMITS)
     law = DriveLaw(table["lifting"], breakpoints, rows)
     if law.lifting == PICKUP:
         pickup_speed(law.law())          # (29) needs v0 > 0: refused here, before any file

@@ -46,29 +46,11 @@ from crane_sym.scenes import format_quantity as fq
 GENERATED = "crane_sym.generated.hoist_startup"
 CASES = (drive_law.PICKUP, drive_law.FROM_WEIGHT)
 _CASE_TEXT = {drive_law.PICKUP: "with pick-up", drive_law.FROM_WEIGHT: "from weight"}
-_CONSISTENCY = 1e-9      # relative agreement of Omega, tau_0 with (2), (29)
 _MAX_DEPTH = 16          # bisection depth of the interval search (see ``maxima``)
 
 
 def _generated() -> ModuleType:
     return importlib.import_module(GENERATED)
-
-
-def _check_defined(scene: Scene, gen: ModuleType) -> None:
-    """Omega and tau_0, where the scene gives them with the data of (2) or (29),
-    must equal what those equations give (the generated functions take them as
-    arguments, so nothing else would notice a mismatch)."""
-    q = scene.parameters
-    for name, func, args, eq in (
-            ("Omega", gen.natural_frequency, ("m1", "m2", "C"), "(2)"),
-            ("tau_0", gen.pickup_contact_time, ("m2", "g", "C", "v0"), "(29)")):
-        if name in q and all(a in q for a in args):
-            derived = float(func(*(q[a] for a in args)))
-            if not math.isclose(q[name], derived, rel_tol=_CONSISTENCY):
-                raise SceneError(
-                    f"scene {scene.name!r}: parameter {name!r} = {q[name]!r} does not "
-                    f"follow from {', '.join(args)}: {eq}, {func.__name__}, gives "
-                    f"{derived!r}")
 
 
 def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
@@ -81,10 +63,11 @@ def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
     Parameters
     ----------
     scene : crane_sym.scenes.Scene
-        SI parameters of its outputs (``Omega``, ``t_n``, ...; Omega and
-        tau_0 must agree with (2) and (29) when m1, m2, C, g, v0 are given);
-        options ``figure`` (one of ``"fig3"``, ``"fig5"``, ``"drive_laws"``),
-        ``duration``, ``points``.
+        SI parameters of its outputs (``Omega``, ``t_n``, ...); settings
+        ``figure`` (one of ``"fig3"``, ``"fig5"``, ``"drive_laws"``),
+        ``duration``, ``points``. What ``options.SCENE_CHECKS`` checked on
+        load holds: the figure's parameters are given, Omega and tau_0 agree
+        with (2) and (29).
 
     Returns
     -------
@@ -95,20 +78,15 @@ def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
     if scene.load_table == "drive_law":
         from .drive_law_scene import drive_law_report
         return drive_law_report(scene, module)
-    figure = scene.options.get("figure")
-    if figure not in FIGURES:
-        raise SceneError(f"scene {scene.name!r}: option 'figure' must be one of "
-                         f"{sorted(FIGURES)}, got {figure!r}")
-    gen = _generated()
-    _check_defined(scene, gen)
-    report = FIGURES[figure](scene, gen)
+    # the figure, its parameters, Omega and tau_0 were checked on load (options.py)
+    report = FIGURES[scene.settings["figure"]](scene, _generated())
     omega = scene.parameters["Omega"]
     report.values.update(Omega=omega, T=2 * math.pi / omega)
     return report
 
 
 def _times(scene: Scene) -> np.ndarray:
-    return np.linspace(0.0, scene.options["duration"], scene.options["points"])
+    return np.linspace(0.0, scene.settings["duration"], scene.settings["points"])
 
 
 def fig3(scene: Scene, gen: ModuleType) -> SceneReport:
@@ -268,7 +246,7 @@ def maxima(scene: Scene) -> dict[tuple[str, int], dict[str, Any]]:
                                     t, 0, exact["t_n"])
         for case in CASES:
             response = law_response(i, case, exact)
-            span = model_span(response, scene.options["duration"])
+            span = model_span(response, scene.settings["duration"])
             if span.empty:
                 raise SceneError(f"scene {scene.name!r}: a{i} {_CASE_TEXT[case]}: the load "
                                  "never lifts within the duration; lengthen it")
@@ -328,7 +306,7 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
              (rf"rigid load, $\ddot x_2 = a_{i}$ (61)-(62)", times,
               _rigid(gen, case, i, times, q))], group=group, invalid=span.spans()))
     values["certified"] = float(all(e.certified for d in found.values() for e in d.values()))
-    span, period = scene.options["duration"], 2 * math.pi / q["Omega"]
+    span, period = scene.settings["duration"], 2 * math.pi / q["Omega"]
     lines = [f"maxima over [0, {fq(span, 's')}], where the model holds, by interval "
              f"arithmetic (elastic) and solveset (rigid), all certified: "
              f"{bool(values['certified'])}; T = {fq(period, 's')}, "

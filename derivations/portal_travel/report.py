@@ -9,23 +9,14 @@ scene's generated module, never from SymPy. Imports happen only when run.
 from __future__ import annotations
 
 
-def _int_option(scene, key: str, default: int, lo: int, hi: int) -> int:
-    from crane_sym.scenes import SceneError
-    value = scene.options.get(key, default)
-    if isinstance(value, bool) or not isinstance(value, int) or not lo <= value <= hi:
-        raise SceneError(f"scene {scene.name!r}: [options] {key} must be an integer in "
-                         f"{lo}..{hi}, got {value!r}")
-    return value
-
-
 def fig10_report(scene, module):
-    """Fig. 10: curves 1–4 over the tooth numbers z_min..z_max."""
+    """Fig. 10: curves 1–4 over the tooth numbers z_min..z_max (settings,
+    z_min < z_max checked on load)."""
     import numpy as np
 
     from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
 
-    z_min = _int_option(scene, "z_min", 8, 3, 10_000)
-    z_max = _int_option(scene, "z_max", 100, z_min + 1, 100_000)
+    z_min, z_max = scene.settings["z_min"], scene.settings["z_max"]
     z = np.arange(z_min, z_max + 1, dtype=float)
     curves = [("1: $s_a = 0$", module.pointed_tip_shift(z)),
               ("2: $s_a = 0.3\\,m$", module.tip_thickness_shift(z, 0.3)),
@@ -52,26 +43,18 @@ def fig10_report(scene, module):
 
 def gear_pair_report(scene, module):
     """A gear pair checked like Form 1: x_Σ from a_w, put on the pinion by the
-    option ``pinion_share`` (Form 1: 1.0); undercut refused when the scene's
-    option ``forbid_undercut`` is true."""
+    setting ``pinion_share`` (Form 1: 1.0). A centre distance the mesh cannot
+    have, and undercut when ``forbid_undercut`` is true, were refused on load
+    (``options.py``)."""
     import numpy as np
 
-    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
-    q, o = scene.parameters, scene.options
-    share = o.get("pinion_share", 1.0)
-    if isinstance(share, bool) or not isinstance(share, (int, float)) or not 0 <= share <= 1:
-        raise SceneError(f"scene {scene.name!r}: [options] pinion_share must be in [0, 1]")
+    q, share = scene.parameters, scene.settings["pinion_share"]
     angle = float(module.operating_pressure_angle())
     x_sum = float(module.shift_sum())
     x1, x2 = share * x_sum, (1 - share) * x_sum
     limits = [float(module.undercut_limit(q[zn])) for zn in ("z1", "z2")]
-    if o.get("forbid_undercut", False):
-        for zn, xi, lim in (("z1", x1, limits[0]), ("z2", x2, limits[1])):
-            if xi < lim:
-                raise SceneError(f"scene {scene.name!r}: {zn} = {q[zn]:g} teeth are "
-                                 f"undercut with shift {xi:.4g}: the shift must be at "
-                                 f"least {lim:.4g} (forbid_undercut = true)")
     m = q["m"]
     tips = [float(module.tip_diameter(q[zn], xi, q["dy1" if zn == "z1" else "dy2"]))
             for zn, xi in (("z1", x1), ("z2", x2))]
@@ -113,15 +96,14 @@ def support_report(scene, module):
     import numpy as np
 
     from crane_sym.load_statistics import log_exceedance_probability
-    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
+    from .options import REACH_FROM
     from .tables import table3_normal
 
-    largest = scene.options.get("largest_reach_m", 30.0)
-    if isinstance(largest, bool) or not isinstance(largest, (int, float)) or largest <= 0:
-        raise SceneError(f"scene {scene.name!r}: [options] largest_reach_m must be > 0")
-    load = float(module.max_support_load(float(largest)))
-    reach = np.linspace(0.3 * largest, largest, 101)
+    largest = scene.settings["largest_reach_m"]
+    load = float(module.max_support_load(largest))
+    reach = np.linspace(REACH_FROM * largest, largest, 101)
     along = module.max_support_load(reach)
     values = {"R_max": load}
     lines = [f"largest leg load (3)–(4), derived portal, at L = {fq(largest, 'm')}: "
@@ -147,47 +129,19 @@ def support_report(scene, module):
     return SceneReport(lines=lines, values=values, panels=panels)
 
 
-def _quantities(scene, key: str, default: list[str], dimension) -> list[float]:
-    """[options] ``key``: a non-empty list of quantities with units, each >= 0, in SI."""
-    from crane_sym import units
-    from crane_sym.scenes import SceneError
-    raw = scene.options.get(key, default)
-    if not isinstance(raw, list) or not raw or len(raw) > 6:
-        raise SceneError(f"scene {scene.name!r}: [options] {key} must be a list of 1..6 "
-                         f"quantities, got {raw!r}")
-    try:
-        values = [units.convert(key, item, dimension) for item in raw]
-    except units.UnitError as exc:
-        raise SceneError(f"scene {scene.name!r}: [options] {exc}") from None
-    if not all(v >= 0 for v in values):
-        raise SceneError(f"scene {scene.name!r}: [options] {key} must be >= 0, got {raw!r}")
-    return values
-
-
 def startup_report(scene, module):
-    """Fig. 12 and Table 1: the start-up for each backlash of the option ``backlash``,
-    start steps held for the option ``holds``; loads and speeds up to ``end``."""
+    """Fig. 12 and Table 1: the start-up for each backlash of the setting ``backlash``,
+    start steps held for the setting ``holds``; loads and speeds up to ``end``."""
     import numpy as np
-    import sympy as sp
-    from sympy.physics.units import time
 
-    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
 
     from crane_sym.generated import portal_travel as gen
 
     from .startup import F_MEAN, ThreeMassTravel
 
-    q = scene.parameters
-    if not q["omega_0"] > q["omega_n"]:
-        raise SceneError(f"scene {scene.name!r}: parameter 'omega_0' (no-load speed) = "
-                         f"{q['omega_0']:g} rad/s must exceed omega_n = {q['omega_n']:g} rad/s")
-    gaps = _quantities(scene, "backlash", ["0 rad", "0.5 rev", "1 rev"], sp.S.One)
-    holds = _quantities(scene, "holds", ["0.4 s", "0.8 s", "0.8 s"], time)
-    end = _quantities(scene, "end", ["4 s"], time)[0]
-    if not all(h > 0 for h in holds) or not end > sum(holds):
-        raise SceneError(f"scene {scene.name!r}: [options] holds must be > 0 and end must "
-                         "exceed their sum")
-    points = _int_option(scene, "points", 2001, 2, 100_000)
+    q, o = scene.parameters, scene.settings   # omega_0 > omega_n, end > sum(holds): on load
+    gaps, holds, end, points = o["backlash"], o["holds"], o["end"][0], o["points"]
     m_d, b = float(module.startup_motor_mass()), float(module.startup_link_damping())
     v0, ratio = float(module.startup_no_load_speed()), float(module.startup_slope_ratio())
     beta = float(module.startup_first_slope())
