@@ -45,8 +45,17 @@ def fig10_report(scene, module):
              f"s_a = 0.3m at z = 10   x = {fq(values['x_03m_z10'])}",
              f"s_a = 0.4m at z = 10   x = {fq(values['x_04m_z10'])}",
              f"no undercut at z = 10  x >= {fq(values['x_min_z10'])}"]
+    # the y axis keeps curves 1-3 legible, as the paper's figure does: curve 4
+    # (x_min = (z_min - z)/z_min, a line) leaves it below, which its label says
+    upper = max(float(np.max(c)) for _, c in curves[:3])
+    lower = min(-1.0, min(float(np.min(c)) for _, c in curves[:3]))
+    below = z[curves[3][1] < lower]
+    if below.size:
+        curves[3] = (curves[3][0] + f" (below ${lower:g}$ from $z = {below[0]:g}$)",
+                     curves[3][1])
     panel = Panel("Fig. 10: shift coefficient limits", "shift coefficient $x$",
-                  [(name, z, c) for name, c in curves], xlabel="number of teeth $z$")
+                  [(name, z, c) for name, c in curves], xlabel="number of teeth $z$",
+                  ylim=(lower, upper + 0.1 * (upper - lower)))
     return SceneReport(lines=lines, values=values, panels=[panel])
 
 
@@ -204,6 +213,7 @@ def startup_report(scene, module):
              f" per step, holds {', '.join(fq(h, 's') for h in holds)}",
              f"rigid drive at break-away      a0 = {fq(values['a0_rigid'], 'm/s^2')}"]
     panels = []
+    loads, speeds = [], []          # one y scale for each kind, across the cases
     for i, phi in enumerate(gaps):
         s = float(module.startup_backlash_at_rim(phi))
         model = ThreeMassTravel(m_d, q["m_k"], q["c_l"], b, s, s, v0, slopes, tuple(holds),
@@ -234,6 +244,14 @@ def startup_report(scene, module):
             Panel(f"{tag}: speeds", "speed at the rim [m/s]",
                   [("motors $v_1$", times, x[:, 1]), ("crane $v_к$", times, x[:, 5]),
                    ("no-load $v_0$", times, np.full_like(times, v0))], group=tag)]
+        loads.append(panels[-2])
+        speeds.append(panels[-1])
+    for same in (loads, speeds):
+        ys = np.concatenate([np.asarray(y, dtype=float) for p in same for _, _, y in p.curves])
+        low, high = float(np.min(ys)), float(np.max(ys))
+        pad = 0.05 * (high - low or 1.0)
+        for p in same:
+            p.ylim = (low - pad, high + pad)
     return SceneReport(lines=lines, values=values, panels=panels)
 
 
