@@ -39,7 +39,12 @@ def numbers_tex(statement: sp.Basic, values: dict[str, float], names: dict) -> s
         return ""
 
     def side(expr: sp.Basic) -> str:
-        return latex(sp.N(expr.xreplace(subs), DIGITS), symbol_names=names)
+        expr = expr.xreplace(subs)
+        try:
+            expr = sp.N(expr, DIGITS)
+        except Exception:   # noqa: BLE001 (a function with no evalf, e.g. inv⁻¹: as is)
+            pass
+        return latex(expr, symbol_names=names)
 
     if isinstance(statement, sp.Equality):
         return f"{side(statement.lhs)} = {side(statement.rhs)}"
