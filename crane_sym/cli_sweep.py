@@ -3,39 +3,60 @@ from __future__ import annotations
 
 import argparse
 import json
+import logging
+from contextlib import contextmanager
 from pathlib import Path
+from typing import Iterator
 
-from . import progress
+from . import output_files, progress
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
-    """A design sweep: outputs over a grid of designs, on Dask."""
+    """A design sweep: outputs over a grid of designs, on Dask. Every option
+    is checked, and ``--out`` and the grid's size against memory and disk,
+    before anything is computed; the dataset and its PNG are written under
+    temporary names and renamed together (:func:`crane_sym.sweep_store.sweep_stage`)."""
     from .scenes import load_scene
-    from .sweep import run_sweep
+    from .sweep import check_grid, run_sweep
     from .sweep_report import plot, summary, text_lines
-    from .sweep_spec import SweepError, plan
-    if not 0 < args.chunk_mib <= 4096:
-        raise SweepError(f"--chunk-mib {args.chunk_mib}: expected a size in (0, 4096] MiB")
+    from .sweep_spec import parse_chunk_mib, plan
+    from .sweep_store import sweep_stage
+    chunk_bytes = parse_chunk_mib(args.chunk_mib)
+    out = output_files.check_folder(args.out, "--out")
     scene = load_scene(args.scene)
     chosen = plan(scene, args.vary, args.output, args.at or [], args.limit)
+    check_grid(chosen, out, chunk_bytes)
     certify = None
     if args.certify:
         from .sweep_certify import prepare
         certify = prepare(chosen, args.certify_tol)   # refuses before anything is written
-    out = Path(args.out)
     quiet = not progress.wanted(getattr(args, "quiet", False))
-    result = run_sweep(chosen, out, scheduler=args.scheduler,
-                       chunk_bytes=int(args.chunk_mib * 2**20), quiet=quiet)
-    plot(result, out / f"{scene.name}_sweep.png")
-    if certify is not None:
-        from .sweep_certify import certify_result
-        result.extra["certified"] = certify_result(certify, result, args.scheduler)
+    with _distributed_quiet(), sweep_stage(out) as stage:
+        result = run_sweep(chosen, stage, scheduler=args.scheduler, chunk_bytes=chunk_bytes,
+                           quiet=quiet)
+        plot(result, stage)
+        if certify is not None:
+            from .sweep_certify import certify_result
+            result.extra["certified"] = certify_result(certify, result, args.scheduler)
     data = summary(result)
     if args.format == "json":
         print(json.dumps(data, indent=2, ensure_ascii=False))
     else:
         print("\n".join(text_lines(data)))
     return 0
+
+
+@contextmanager
+def _distributed_quiet() -> Iterator[None]:
+    """No log records while the sweep runs: dask.distributed logs a lost
+    connection as an ERROR with its traceback (on loggers its configuration
+    sets one by one); the command says it in one line."""
+    previous = logging.root.manager.disable
+    logging.disable(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        logging.disable(previous)
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -53,14 +74,16 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "is maximised (sampled)")
     p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
                    help="count the designs within it, draw its contour")
-    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG")
+    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG "
+                   "(both replaced together, or neither)")
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
                    "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler, threads for "
                    "closed forms, processes for simulated responses; 'threads', 'processes' "
                    "or 'synchronous' force one)")
     p.add_argument("--chunk-mib", type=float, default=8.0,
-                   help="output bytes per block of the grid, in MiB (default 8)")
+                   help="output bytes per block of the grid, in MiB (default 8; at least "
+                   "0.1, at most the free memory for one block per core)")
     p.add_argument("--certify", action="store_true", help="also bound the maximum of the "
                    "(limited) output over the whole box by interval branch-and-bound")
     p.add_argument("--certify-tol", type=float, default=1e-6, metavar="REL",

@@ -1,7 +1,7 @@
 """Code generation: rewrite rules -> printer -> template -> file.
 
-``render_module`` is pure (derivation in, source text out); ``write``,
-``compare`` and ``stale`` are the only functions that touch files. Generated
+``render_module`` is pure (derivation in, source text out); the files are
+written and compared by :mod:`crane_sym.module_files`. Generated
 modules import NumPy only, validate every argument, and evaluate
 parameter-only parts once as scalars before the array work.
 """

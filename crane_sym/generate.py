@@ -20,4 +20,4 @@ def all_files() -> dict[str, str]:
     for name in list_scenes():
         with say.task(f"specializing scene {name}"):
             modules.update(specialize.scene_files(name))
-    return module_files.rendered([], modules)
+    return module_files.with_package_init(modules)

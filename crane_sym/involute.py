@@ -261,12 +261,6 @@ def tip_shift_np(z, alpha, ha=1.0, dy=0.0, sigma=0.0) -> np.ndarray:
     return gear_kernels._tip_shift(z, alpha, ha, dy, sigma)
 
 
-def undercut_limit_np(z, alpha, ha=1.0) -> np.ndarray:
-    """The least shift free of undercut, ha − z·sin²alpha/2."""
-    return ha - np.asarray(z, dtype=float) * np.sin(alpha) ** 2 / 2
-
-
 __all__ = ["ACOS_MESSAGES", "acos_checked", "inverse_involute", "inverse_involute_mp",
            "involute", "inverse_involute_fn", "involute_np", "involute_point", "rack_space_width",
-           "thickness_at_radius", "tip_half_angle", "tip_shift", "tip_shift_mp", "tip_shift_np",
-           "undercut_limit_np"]
+           "thickness_at_radius", "tip_half_angle", "tip_shift", "tip_shift_mp", "tip_shift_np"]

@@ -8,12 +8,10 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from .codegen import render_module
-from .derivation import Derivation
 from .output_files import staged
 
-__all__ = ["Freshness", "compare", "default_directory", "render_package_init", "rendered",
-           "stale", "write"]
+__all__ = ["Freshness", "compare", "default_directory", "render_package_init", "stale",
+           "with_package_init", "write"]
 
 
 def render_package_init(ids: Sequence[str]) -> str:
@@ -38,12 +36,9 @@ def default_directory() -> Path:
     return package / "generated"  # an installed wheel
 
 
-def rendered(derivations: Sequence[Derivation],
-             extra: dict[str, str] | None = None) -> dict[str, str]:
-    """File name -> source for every derivation with outputs, plus ``extra``
-    modules (scene-specialized ones), and the package's ``__init__``."""
-    files = {f"{d.id}.py": render_module(d) for d in derivations if d.outputs}
-    files.update(extra or {})
+def with_package_init(modules: dict[str, str]) -> dict[str, str]:
+    """``modules`` (file name -> source) and the package's ``__init__`` listing them."""
+    files = dict(modules)
     files["__init__.py"] = render_package_init([name[:-3] for name in files])
     return files
 

@@ -19,11 +19,13 @@ import os
 import secrets
 import shutil
 import signal
+import threading
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
-__all__ = ["OutputError", "Stage", "check_folder", "describe", "out_file", "out_folder", "staged", "write_text"]
+__all__ = ["OutputError", "Stage", "check_folder", "deferred_signals", "describe",
+           "folder_lock", "out_file", "out_folder", "staged", "write_text"]
 
 
 class OutputError(OSError):
@@ -136,10 +138,10 @@ class Stage:
         return tmp
 
     def commit(self) -> list[Path]:
-        """Rename every temporary onto its name, signals held off meanwhile; a
-        folder already at a name (a Zarr store) is replaced whole."""
-        held = _hold_signals()
-        try:
+        """Rename every temporary onto its name, under :func:`folder_lock` and
+        with signals deferred (:func:`deferred_signals`); a folder already at a
+        name (a Zarr store) is replaced whole."""
+        with deferred_signals(), folder_lock(self.folder):
             done = []
             for tmp, target in self._moves:
                 if not tmp.exists():
@@ -156,8 +158,6 @@ class Stage:
                 done.append(target)
             self._moves.clear()
             return done
-        finally:
-            _release_signals(held)
 
     def discard(self) -> None:
         """Remove every temporary not yet renamed."""
@@ -201,12 +201,50 @@ def write_text(folder: str | Path, name: str, text: str, option: str = "--out") 
     return path
 
 
-def _hold_signals() -> set | None:
-    if not hasattr(signal, "pthread_sigmask"):
-        return None
-    return signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+@contextmanager
+def deferred_signals() -> Iterator[None]:
+    """SIGINT and SIGTERM held off inside the block and delivered at its end.
+
+    Python runs a signal's handler in the main thread whichever thread the
+    kernel hands the signal to, so blocking the signals in the main thread
+    (``pthread_sigmask``) does not hold them off while another thread runs (a
+    Dask pool, distributed's event loop): the handlers themselves are swapped
+    for one that only notes the signal. Outside the main thread: no effect.
+    """
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    caught: list[int] = []
+
+    def later(signum, frame) -> None:
+        caught.append(signum)
+
+    previous = {}
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        if signal.getsignal(sig) is not None:      # None: not set from Python
+            previous[sig] = signal.signal(sig, later)
+    try:
+        yield
+    finally:
+        for sig, handler in previous.items():
+            signal.signal(sig, handler)
+        if caught:
+            signal.raise_signal(caught[0])         # the restored handler runs now
 
 
-def _release_signals(previous: set | None) -> None:
-    if previous is not None:
-        signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+@contextmanager
+def folder_lock(folder: Path) -> Iterator[None]:
+    """An exclusive advisory lock (``flock``) on ``folder`` itself: no lock
+    file is made, and the lock goes with the process. No-op where ``fcntl``
+    is missing."""
+    try:
+        import fcntl
+    except ImportError:                            # pragma: no cover (Windows)
+        yield
+        return
+    fd = os.open(folder, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+    try:
+        fcntl.flock(fd, fcntl.LOCK_EX)
+        yield
+    finally:
+        os.close(fd)                               # closing releases the lock

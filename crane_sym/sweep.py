@@ -8,10 +8,13 @@ product to :func:`evaluate_block`, which calls the paper's generated NumPy
 function with the block's axis values shaped to broadcast (one call per block,
 the fixed values as scalars), or, for a simulated response, the paper's
 ``SweepOutput.evaluate`` (one integration per design). Nothing holds the grid:
-each block is written to Zarr (through xarray, under a temporary name renamed
-at the end) and reduced to its worst value, the flat index of that value and
-the count within the limit, in the same pass, so memory is bounded by the
-chunk size times the number of workers, not by the grid.
+each block is written to Zarr (through xarray, into a temporary of a
+:func:`crane_sym.sweep_store.sweep_stage`, renamed with the PNG at the end)
+and reduced to its worst value, the flat index of that value, the count
+within the limit and its share of the PNG's data (:func:`strided`), in the
+same pass, so memory is bounded by the chunk size times the number of
+workers, not by the grid. How the graph runs, and is stopped on a failure or
+signal before the temporary is removed, is :mod:`crane_sym.sweep_compute`.
 
 Schedulers: with none named, Dask's local scheduler. Threads for the
 closed forms: the generated functions spend their time in NumPy ufuncs, which
@@ -32,11 +35,11 @@ simulated sweeps on a machine with free cores, the case they serve. With ``sched
 from __future__ import annotations
 
 import functools
+import hashlib
 import importlib
 import math
 import os
 import shutil
-import sys
 import time
 import warnings
 from dataclasses import dataclass, field
@@ -46,13 +49,22 @@ from typing import Any
 import numpy as np
 
 from . import registry
+from .output_files import Stage
 from .sweep_plan import SweepError, SweepPlan, shown_unit
+from .sweep_compute import compute_local, compute_remote, connect, scheduler_lost
+from .sweep_store import deferred_signals, remove_settled, sweep_stage
 
-__all__ = ["CHUNK_BYTES", "SweepResult", "chunks_for", "connect", "evaluate_block",
-           "grid_arrays", "run_sweep"]
+__all__ = ["CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid", "chunks_for",
+           "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
+           "scheduler_lost", "strided", "sweep_id"]
 
 #: Bytes of float64 output per block of the grid (closed forms).
 CHUNK_BYTES = 8 * 2**20
+#: The most blocks (all outputs together) a sweep plans: Dask keeps a few
+#: tasks per block in memory and spends ~0.1 ms a task.
+MAX_BLOCKS = 100_000
+#: The most values per axis the PNG draws (a larger axis is strided).
+MAX_PLOT = 1000
 #: Free disk space kept in reserve beyond the dataset's size (bytes).
 _RESERVE = 64 * 2**20
 
@@ -145,6 +157,12 @@ class SweepResult:
     dataset: Path | None = None
     plot: Path | None = None
     extra: dict[str, Any] = field(default_factory=dict)
+    #: The PNG's data (SI), computed with the blocks: :func:`plotted` at the
+    #: :func:`strided` first two axes, worst over the others; None if nothing
+    #: was written.
+    view: np.ndarray | None = None
+    #: :func:`sweep_id` of the plan: in the dataset, the PNG and the summary.
+    sweep_id: str = ""
 
     @property
     def blocks(self) -> int:
@@ -152,48 +170,33 @@ class SweepResult:
         return math.prod(len(c) for c in self.chunks)
 
 
-def connect(address: str, timeout: float = 3.0):
-    """A ``distributed.Client`` on the scheduler at ``address``; SweepError
-    naming ``--scheduler`` if the address is malformed or nothing answers."""
-    import re
-    if not re.fullmatch(r"(?:(?:tcp|tls|ucx|inproc)://)?[A-Za-z0-9_.\-\[\]:]{1,200}:\d{1,5}"
-                        r"(?:/[A-Za-z0-9_\-]*)?", address):
-        raise SweepError(f"--scheduler {address!r}: expected an address such as "
-                         "tcp://127.0.0.1:8786")
-    from distributed import Client
-    try:
-        return Client(address, timeout=timeout, set_as_default=False)
-    except (OSError, TimeoutError) as exc:
-        raise SweepError(f"--scheduler {address!r}: no Dask scheduler answers there "
-                         f"within {timeout:g} s ({type(exc).__name__})") from None
-
-
-def _check_disk(out: Path, plan: SweepPlan) -> None:
-    """SweepError naming ``--out`` if the dataset cannot fit on its disk."""
-    need = 8 * plan.points * len(plan.outputs) + _RESERVE
-    probe = out
-    while not probe.exists():
-        probe = probe.parent
-    free = shutil.disk_usage(probe).free
-    if need > free:
-        raise SweepError(f"--out {str(out)!r}: the grid of {plan.points:.3g} designs needs "
-                         f"about {need / 2**30:.3g} GiB, only {free / 2**30:.3g} GiB are free")
-
-
-def _remove(tmp: Path, made: bool) -> None:
-    """Remove a partial dataset (and ``--out`` if the sweep created it). Tasks
-    of the failed graph still running may write a chunk after the error: the
-    removal is repeated until the folder stays gone."""
-    for _ in range(50):
-        shutil.rmtree(tmp, ignore_errors=True)
-        time.sleep(0.1)
-        if not tmp.exists():
-            break
-    if made:
-        try:
-            tmp.parent.rmdir()
-        except OSError:
-            pass
+def check_grid(plan: SweepPlan, out: Path | None, chunk_bytes: int = CHUNK_BYTES) -> None:
+    """SweepError naming the option if the grid cannot be planned or held:
+    an axis whose values do not fit in memory (``--vary``), a dataset larger
+    than the free disk of ``out`` (``--out``), more blocks than
+    :data:`MAX_BLOCKS` (``--chunk-mib``). Nothing is computed or written."""
+    import psutil
+    free = psutil.virtual_memory().available
+    for a in plan.axes:                        # values, SI, coordinate, Dask copy
+        if 32 * a.n > free / 4:
+            raise SweepError(f"--vary {a.name}: {a.n:.3g} values need about "
+                             f"{32 * a.n / 2**30:.3g} GiB of memory, "
+                             f"{free / 2**30:.3g} GiB are available")
+    if out is not None:
+        need = 8 * plan.points * len(plan.outputs) + _RESERVE
+        probe = out
+        while not probe.exists():
+            probe = probe.parent
+        free = shutil.disk_usage(probe).free
+        if need > free:
+            raise SweepError(f"--out {str(out)!r}: the grid of {plan.points:.3g} designs needs "
+                             f"about {need / 2**30:.3g} GiB, only {free / 2**30:.3g} GiB are "
+                             "free")
+    blocks = math.prod(len(c) for c in chunks_for(plan, chunk_bytes)) * len(plan.outputs)
+    if blocks > MAX_BLOCKS:
+        raise SweepError(f"--chunk-mib {chunk_bytes / 2**20:.3g}: the grid of {plan.points:.3g} "
+                         f"designs makes {blocks:.3g} blocks, more than the {MAX_BLOCKS} "
+                         "Dask can plan; give larger blocks or fewer designs")
 
 
 def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
@@ -225,7 +228,8 @@ def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
     attrs = {"scene": plan.scene, "derivation": plan.derivation,
              "fixed_SI": ", ".join(f"{k}={v!r}" for k, v in sorted(plan.fixed.items())
                                    if k not in dims and (window is None or k != window.name)),
-             "generated_by": f"crane_sym {__version__} (crane-sym sweep)"}
+             "generated_by": f"crane_sym {__version__} (crane-sym sweep)",
+             "sweep_id": sweep_id(plan)}
     if plan.limit is not None:
         attrs["limit"] = plan.limit.text()
     if window is not None:
@@ -237,28 +241,120 @@ def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
     return xr.Dataset(variables, coords=coords, attrs=attrs)
 
 
-def run_sweep(plan: SweepPlan, out: Path | None, *, scheduler: str | None = None,
+def sweep_id(plan: SweepPlan) -> str:
+    """A name for the sweep that ``plan`` describes (a hash of it): the same in
+    the dataset's attributes, the PNG's metadata and the summary, so a
+    dataset and a PNG can be checked to belong together."""
+    return hashlib.sha256(repr(plan).encode("utf-8")).hexdigest()[:16]
+
+
+def strided(n: int) -> slice:
+    """Every k-th of ``n`` values, at most :data:`MAX_PLOT` of them."""
+    return slice(None, None, max(1, -(-n // MAX_PLOT)))
+
+
+def plotted(plan: SweepPlan) -> str:
+    """The output the PNG shows: the limited one, else the first."""
+    return plan.limit.output if plan.limit else plan.outputs[0].name
+
+
+def _view(plan: SweepPlan, arrays: dict[str, Any]):
+    """The PNG's data, as a delayed NumPy array: :func:`plotted` over the
+    first two axes (:func:`strided`), its worst over any further axes (SI).
+    (Delayed, not a Dask array: ``dask.compute`` of delayed, an array, and
+    delayed again returned the results out of order.)"""
+    import dask
+    field = arrays[plotted(plan)]
+    axes = plan.axes
+    field = field[tuple(strided(a.n) if i < 2 else slice(None) for i, a in enumerate(axes))]
+    if len(axes) > 2:
+        others = tuple(range(2, len(axes)))
+        worst_max = not (plan.limit and plan.limit.op == ">=")
+        field = field.max(axis=others) if worst_max else field.min(axis=others)
+    return dask.delayed(np.asarray)(field)
+
+
+def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | None = None,
               chunk_bytes: int = CHUNK_BYTES, quiet: bool = True) -> SweepResult:
-    """Evaluate the grid, write ``<scene>_sweep.zarr`` into ``out`` (None: write
-    nothing), and reduce it to the worst case of each output and the designs
-    within the limit, in one pass over the blocks.
+    """Evaluate the grid, write ``<scene>_sweep.zarr`` into ``out`` (a folder,
+    or a :class:`~crane_sym.output_files.Stage` the caller commits with the
+    PNG; None: write nothing), and reduce it to the worst case of each output,
+    the designs within the limit and the PNG's data, in one pass over the
+    blocks.
 
     ``scheduler``: None for Dask's local scheduler (threads for closed forms,
     processes for simulated responses), ``"synchronous"``, ``"threads"``,
     ``"processes"``, or the address of a ``dask.distributed`` scheduler.
+    On a failure or signal, the tasks that write are stopped (local pools) or
+    cancelled and waited for (a live scheduler) before the partial dataset is
+    removed; a lost scheduler is a SweepError naming ``--scheduler``.
     """
-    import dask
-    if out is not None:
-        _check_disk(out, plan)
+    if out is not None and not isinstance(out, Stage):
+        check_grid(plan, Path(out), chunk_bytes)
+        with sweep_stage(Path(out)) as stage:
+            return run_sweep(plan, stage, scheduler=scheduler, chunk_bytes=chunk_bytes,
+                             quiet=quiet)
+    check_grid(plan, None, chunk_bytes)
     client = None
     if scheduler and scheduler not in ("synchronous", "threads", "processes"):
         client = connect(scheduler)
-    workers = len(client.scheduler_info()["workers"]) if client is not None else None
-    chunks = chunks_for(plan, chunk_bytes, workers)
-    arrays = grid_arrays(plan, chunks)
+    target = tmp = None
+    if out is not None:
+        target = out.folder / f"{plan.scene}_sweep.zarr"
+        tmp = out.path(target.name)
+    try:
+        workers = len(client.scheduler_info()["workers"]) if client is not None else None
+        chunks = chunks_for(plan, chunk_bytes, workers)
+        arrays = grid_arrays(plan, chunks)
+        tasks, order = _summaries(plan, arrays, chunks), [o.name for o in plan.outputs]
+        if tmp is not None:
+            tasks.append(_view(plan, arrays))
+            # metadata written here, now; the blocks by the tasks; consolidated
+            # below, here again: a worker never writes metadata
+            tasks.append(_dataset(plan, arrays).to_zarr(tmp, mode="w-", compute=False,
+                                                        zarr_format=2, consolidated=False))
+        local = scheduler if client is None else None
+        if client is None and local is None:
+            simulated = any(o.kind == "simulated" for o in plan.outputs)
+            local = "processes" if simulated else "threads"
+        start = time.perf_counter()
+        if client is not None:
+            results = compute_remote(client, tasks, quiet, scheduler)
+        else:
+            results = compute_local(tasks, local, quiet, own_pool=tmp is not None)
+        seconds = time.perf_counter() - start
+        if tmp is not None:
+            import zarr
+            zarr.consolidate_metadata(str(tmp), zarr_format=2)
+    except BaseException:
+        if tmp is not None:
+            # zarr writes from an I/O thread of its own, which a signal does not
+            # stop, and a lost scheduler's workers may still write a block:
+            # removed until it stays gone
+            with deferred_signals():
+                remove_settled(tmp, settle=1.0 if client is not None else 0.25)
+        raise
+    finally:
+        if client is not None:
+            client.close(timeout=2)
+    worst, within = {}, None
+    for name, (value, flat, count) in zip(order, results):
+        worst[name] = (value, tuple(int(i) for i in np.unravel_index(flat, plan.shape)))
+        if count >= 0:
+            within = count
+    view = np.asarray(results[len(order)], dtype=float) if tmp is not None else None
+    return SweepResult(plan, chunks, worst, within, seconds,
+                       scheduler if client is not None else local, target, view=view,
+                       sweep_id=sweep_id(plan))
+
+
+def _summaries(plan: SweepPlan, arrays: dict[str, Any], chunks) -> list:
+    """Per output, the delayed (worst value, its flat index, designs within
+    the limit) of the whole grid, from the blocks' summaries."""
+    import dask
     starts = [np.cumsum((0,) + c[:-1]) for c in chunks]
     limit = plan.limit
-    tasks, order = [], []
+    tasks = []
     for o in plan.outputs:
         worst_is_max = not (limit is not None and limit.output == o.name and limit.op == ">=")
         bound = limit.si if limit is not None and limit.output == o.name else None
@@ -269,56 +365,4 @@ def run_sweep(plan: SweepPlan, out: Path | None, *, scheduler: str | None = None
                                               limit.op if bound is not None else "")
                  for ix in np.ndindex(blocks.shape)]
         tasks.append(dask.delayed(_combine)(parts, worst_is_max))
-        order.append(o.name)
-    target = tmp = None
-    made = out is not None and not out.exists()
-    if out is not None:
-        out.mkdir(parents=True, exist_ok=True)
-        target = out / f"{plan.scene}_sweep.zarr"
-        tmp = out / f".{target.name}.partial-{os.getpid()}"
-        shutil.rmtree(tmp, ignore_errors=True)
-        tasks.append(_dataset(plan, arrays).to_zarr(tmp, mode="w", compute=False,
-                                                    zarr_format=2))
-    local = scheduler if client is None else None
-    if client is None and local is None:
-        simulated = any(o.kind == "simulated" for o in plan.outputs)
-        local = "processes" if simulated else "threads"
-    start = time.perf_counter()
-    try:
-        if client is not None:
-            futures = client.compute(tasks)
-            if not quiet:
-                from distributed import progress
-                progress(futures)
-            results = client.gather(futures)
-        else:
-            from dask.diagnostics import ProgressBar
-            bar = ProgressBar(minimum=2.0, out=sys.stderr) if not quiet else None
-            if bar is not None:
-                bar.register()
-            try:
-                results = dask.compute(*tasks, scheduler=local)
-            finally:
-                if bar is not None:
-                    bar.unregister()
-    except BaseException:
-        if tmp is not None:
-            _remove(tmp, made)
-        raise
-    finally:
-        if client is not None:
-            client.close()
-    seconds = time.perf_counter() - start
-    if target is not None:
-        old = out / f".{target.name}.old-{os.getpid()}"
-        if target.exists():
-            target.rename(old)
-        tmp.rename(target)
-        shutil.rmtree(old, ignore_errors=True)
-    worst, within = {}, None
-    for name, (value, flat, count) in zip(order, results):
-        worst[name] = (value, tuple(int(i) for i in np.unravel_index(flat, plan.shape)))
-        if count >= 0:
-            within = count
-    return SweepResult(plan, chunks, worst, within, seconds,
-                       scheduler if client is not None else local, target)
+    return tasks

@@ -182,6 +182,12 @@ def certify_result(task: CertifyTask, result: SweepResult,
     try:
         workers = len(client.scheduler_info()["workers"]) if client else 2
         found = certify(task, client, workers)
+    except Exception as exc:
+        from .sweep import scheduler_lost
+        why = scheduler_lost(client, exc) if client is not None else None
+        if why is None:
+            raise
+        raise SweepError(f"--scheduler {scheduler!r}: {why} (certifying)") from None
     finally:
         if client is not None:
             client.close()

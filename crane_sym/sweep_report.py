@@ -2,11 +2,13 @@
 
 The summary (``crane-sym sweep --format json``) gives the points, the blocks,
 the seconds, per output the worst case with its design in the user's units,
-and the fraction of designs within the limit. The PNG reads the written Zarr
-dataset back lazily: a heat map for two axes (more axes: the worst over the
-others), lines for one, the contour of the limit, the worst case marked. A
-grid larger than :data:`MAX_PLOT` per axis is drawn from an evenly strided
-subset (the worst case is marked from the full grid).
+and the fraction of designs within the limit. The PNG is drawn from the data
+the sweep computed with its blocks (:attr:`SweepResult.view`), never read back
+from a file: a heat map for two axes (more axes: the worst over the others),
+lines for one, the contour of the limit, the worst case marked. A grid larger
+than :data:`MAX_PLOT` per axis is drawn from an evenly strided subset (the
+worst case is marked from the full grid). The PNG carries the sweep's
+``sweep_id`` in its metadata, as the dataset's attributes and the summary do.
 
 Each quantity is shown in one unit, the plan's (:meth:`SweepPlan.unit_of` for
 an output, the axis's own unit), in the text, the JSON and the PNG; a
@@ -22,13 +24,11 @@ from typing import Any
 
 import numpy as np
 
-from .sweep import SweepResult
+from .output_files import Stage
+from .sweep import MAX_PLOT, SweepResult, plotted, strided
 from .sweep_plan import SweepPlan
 
 __all__ = ["MAX_PLOT", "figure", "labels", "names", "plot", "summary", "text_lines"]
-
-#: The most values per axis a heat map or line draws.
-MAX_PLOT = 1000
 
 
 def _quantity(value: float | str, unit: str, digits: int = 6) -> str:
@@ -63,7 +63,7 @@ def summary(result: SweepResult) -> dict[str, Any]:
                           "spacing": "log" if a.log else "linear"} for a in plan.axes},
         "chunks": result.blocks * len(plan.outputs),
         "chunk_shape": [max(c) for c in result.chunks], "seconds": round(result.seconds, 4),
-        "scheduler": result.scheduler, "outputs": outputs,
+        "scheduler": result.scheduler, "sweep_id": result.sweep_id, "outputs": outputs,
         "worst_case": {"output": first, **outputs[first]["worst"]}}
     if plan.window is not None:
         w = plan.window
@@ -165,28 +165,20 @@ def labels(plan: SweepPlan) -> dict[str, str]:
     return {k: f"{v} [{units[k]}]" if units[k] else v for k, v in names(plan).items()}
 
 
-def _strided(n: int) -> slice:
-    return slice(None, None, max(1, -(-n // MAX_PLOT)))
-
-
 def figure(result: SweepResult):
     """The Matplotlib figure of the first output (the limited one if there is
-    a limit), from the written dataset."""
-    import xarray as xr
+    a limit), from the data the sweep computed (:attr:`SweepResult.view`)."""
     from matplotlib.figure import Figure
 
     plan = result.plan
-    name = plan.limit.output if plan.limit else plan.outputs[0].name
+    if result.view is None:
+        raise ValueError("the sweep kept no data to draw: run it with a folder to write to")
+    name = plotted(plan)
     unit, factor = plan.unit_of(name)
     tex, label = names(plan), labels(plan)
-    field = xr.open_zarr(result.dataset)[name]
     axes = plan.axes
-    worst_max = not (plan.limit and plan.limit.op == ">=")
-    if len(axes) > 2:
-        others = [a.name for a in axes[2:]]
-        field = field.max(others) if worst_max else field.min(others)
-    field = field.isel({a.name: _strided(a.n) for a in axes[:2]})
-    values = np.asarray(field.values) / factor
+    coords = [a.values()[strided(a.n)] for a in axes[:2]]
+    values = result.view / factor
     value, index = result.worst[name]
     best = [a.values()[i] for a, i in zip(axes, index)]
     over = ""
@@ -203,7 +195,7 @@ def figure(result: SweepResult):
                   linestyle="none", label=f"worst: {_quantity(value / factor, unit, 5)}",
                   clip_on=False, zorder=5)
     if len(axes) == 1:
-        x = field[axes[0].name].values
+        x = coords[0]
         ax.plot(x, values, color="C0", label=tex[name])
         ax.plot(best[0], value / factor, **marker)
         if plan.limit:
@@ -213,7 +205,7 @@ def figure(result: SweepResult):
         if axes[0].log:
             ax.set_xscale("log")
     else:
-        x, y = field[axes[0].name].values, field[axes[1].name].values
+        x, y = coords
         mesh = ax.pcolormesh(x, y, values.T, shading="nearest", cmap="viridis")
         fig.colorbar(mesh, ax=ax, label=label[name] + over + (
             " (worst over " + ", ".join(tex[a.name] for a in axes[2:]) + ")"
@@ -233,11 +225,12 @@ def figure(result: SweepResult):
     return fig
 
 
-def plot(result: SweepResult, path: Path) -> Path:
-    """:func:`figure` as a PNG, written under a temporary name and renamed."""
-    fig = figure(result)
-    tmp = path.with_name(f".{path.name}.partial.png")
-    fig.savefig(tmp, dpi=110)
-    tmp.replace(path)
-    result.plot = path
-    return path
+def plot(result: SweepResult, stage: Stage) -> Path:
+    """:func:`figure` as ``<scene>_sweep.png`` in ``stage``, its ``sweep_id``
+    in the PNG's metadata; renamed into place with the dataset when the stage
+    is committed. Returns the final path."""
+    name = f"{result.plan.scene}_sweep.png"
+    figure(result).savefig(stage.path(name, ".png"), dpi=110,
+                           metadata={"sweep_id": result.sweep_id})
+    result.plot = stage.folder / name
+    return result.plot

@@ -37,7 +37,12 @@ from .symbols import TIME
 from .sweep_plan import (Axis, Limit, OutputSpec, SweepError, SweepPlan, Window,
                          shown_unit)
 
-__all__ = ["SweepError", "parse_at", "parse_limit", "parse_vary", "plan"]
+__all__ = ["MIN_CHUNK_MIB", "SweepError", "parse_at", "parse_chunk_mib", "parse_limit",
+           "parse_vary", "plan"]
+
+#: The smallest block ``--chunk-mib`` accepts: below it Dask's cost per task
+#: (~0.1 ms) outweighs a block's work.
+MIN_CHUNK_MIB = 0.1
 
 _NUM = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 _NAME = r"[A-Za-z_][A-Za-z0-9_]{0,63}"
@@ -84,6 +89,8 @@ def parse_vary(text: str, scene_units: dict[str, str], symbols) -> Axis:
     unit = unit.strip() if unit else scene_units[name]
     factor = _unit("--vary", text, unit, entry.dimension)
     low = start_f * factor
+    if not (math.isfinite(low) and math.isfinite(stop_f * factor)):
+        raise SweepError(f"--vary {text!r}: START and STOP must be finite in SI")
     if (entry.sign == "positive" and not low > 0) or (entry.sign == "nonnegative"
                                                       and not low >= 0):
         raise SweepError(f"--vary {text!r}: {name} must be "
@@ -105,6 +112,8 @@ def parse_limit(text: str, outputs: tuple[OutputSpec, ...]) -> Limit:
     _, dimension = units.parse_unit(known[name].unit)
     unit = (unit or "").strip() or known[name].unit
     factor = _unit("--limit", text, unit, dimension)
+    if not (math.isfinite(float(value)) and math.isfinite(float(value) * factor)):
+        raise SweepError(f"--limit {text!r}: the bound must be a finite number")
     return Limit(name, op, float(value), shown_unit(unit), factor, float(value) * factor)
 
 
@@ -125,12 +134,36 @@ def parse_at(text: str, symbols) -> Window:
             from None
     unit = (unit or ("s" if entry.role == TIME else entry.unit)).strip()
     factor = _unit("--at", text, unit, entry.dimension)
+    ends = [float(value)] + ([float(stop)] if stop is not None else [])
+    if not all(math.isfinite(v) and math.isfinite(v * factor) for v in ends):
+        raise SweepError(f"--at {text!r}: the value must be a finite number")
     if stop is None:
         return Window(name, float(value), float(value), 1, shown_unit(unit), factor)
     if int(n) < 2 or not float(value) < float(stop):
         raise SweepError(f"--at {text!r}: the window is empty or reversed (need START < STOP "
                          "and N >= 2)")
     return Window(name, float(value), float(stop), int(n), shown_unit(unit), factor)
+
+
+def parse_chunk_mib(value: float, free_bytes: int | None = None,
+                    workers: int | None = None) -> int:
+    """``--chunk-mib`` as bytes: a finite size from :data:`MIN_CHUNK_MIB` up to
+    what fits in the free memory (``free_bytes``, the machine's available
+    memory by default) once per worker (``workers``, the cores by default:
+    each holds a block at a time), else SweepError naming the option."""
+    import os
+    if free_bytes is None:
+        import psutil
+        free_bytes = psutil.virtual_memory().available
+    workers = workers or os.cpu_count() or 1
+    if not math.isfinite(value) or value < MIN_CHUNK_MIB:
+        raise SweepError(f"--chunk-mib {value:g}: expected a finite block size of at least "
+                         f"{MIN_CHUNK_MIB:g} MiB (smaller blocks cost Dask more than "
+                         "they compute)")
+    if value * 2**20 * workers > free_bytes:
+        raise SweepError(f"--chunk-mib {value:g}: {workers} blocks at once (one per core) "
+                         f"need more than the {free_bytes / 2**20:.0f} MiB of free memory")
+    return int(value * 2**20)
 
 
 def _scene_units(scene: Scene, extra: tuple[str, ...]) -> dict[str, str]:

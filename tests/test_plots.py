@@ -31,8 +31,9 @@ def written(tmp_path_factory):
         for name in list_scenes():
             seen.clear()
             _, paths = run_scene(name, folder)
-            assert paths == [p for _, p in seen]
-            out[name] = list(seen)
+            # each figure drawn to a temporary, renamed onto its path at the end
+            assert len(paths) == len(seen) and all(p.is_file() for p in paths)
+            out[name] = [(fig, path) for (fig, _), path in zip(seen, paths)]
     return out
 
 
