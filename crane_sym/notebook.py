@@ -42,8 +42,9 @@ def numbers_tex(statement: sp.Basic, values: dict[str, float], names: dict) -> s
         expr = expr.xreplace(subs)
         try:
             expr = sp.N(expr, DIGITS)
-        except Exception:   # noqa: BLE001 (a function with no evalf, e.g. inv⁻¹: as is)
-            pass
+        except Exception:   # noqa: BLE001 (a function with no evalf, e.g. inv⁻¹): its
+            expr = expr.xreplace({f: sp.Float(f, DIGITS)       # numbers to the digits
+                                  for f in expr.atoms(sp.Float)})
         return latex(expr, symbol_names=names)
 
     if isinstance(statement, sp.Equality):
