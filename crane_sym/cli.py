@@ -28,7 +28,8 @@ EXAMPLES = {
     "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
              "--format json --quiet > verdicts.json",
     "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md\n"
-                   "  crane-sym walkthrough 002 --format ipynb -o hoist_startup.ipynb",
+                   "  crane-sym walkthrough 002 --format ipynb -o hoist_startup.ipynb\n"
+                   "  crane-sym walkthrough 001 --format html -o hoist_brakes.html",
     "generate": "crane-sym generate\n  crane-sym generate --check\n"
                 "  crane-sym generate --scene hoist_user_drive_law --out out/",
     "accuracy": "crane-sym accuracy 002",
@@ -99,11 +100,13 @@ def cmd_audit(args: argparse.Namespace) -> int:
 
 
 def cmd_walkthrough(args: argparse.Namespace) -> int:
-    """The derivation step by step, as Markdown or as a Jupyter notebook."""
+    """The derivation step by step, as Markdown, a Jupyter notebook or a printable
+    HTML page."""
+    from .handout_html import handout_page
     from .notebook import notebook
     from .walkthrough import walkthrough
     name = registry.resolve(args.id)
-    make = notebook if args.format == "ipynb" else walkthrough
+    make = {"ipynb": notebook, "html": handout_page}.get(args.format, walkthrough)
     target = output_files.out_file(args.output, "-o") if args.output else None
     with progress.reporting(_progress(args)) as say, say.task(f"walkthrough of {name}"):
         text = make(name)
@@ -234,11 +237,13 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("ids", nargs="*", help=ids_help)
     p.add_argument("--format", choices=("table", "json", "markdown"), default="table")
     p.add_argument("--profile", action="store_true", help="time per derivation on stderr")
-    p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown or a notebook",
-                    cmd_walkthrough, True)
+    p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown, a notebook "
+                    "or a printable page", cmd_walkthrough, True)
     p.add_argument("id")
-    p.add_argument("--format", choices=("markdown", "ipynb"), default="markdown",
-                   help="ipynb: a Jupyter notebook with a code cell per step")
+    p.add_argument("--format", choices=("markdown", "ipynb", "html"), default="markdown",
+                   help="ipynb: a Jupyter notebook with a code cell per step; html: one "
+                   "self-contained page (math as MathML, the first scene's figures, "
+                   "contents) to print or post")
     p.add_argument("-o", "--output", help="write to this file instead of stdout")
     p = _subcommand(sub, "generate", "write generated/ (or check that it is up to date)",
                     cmd_generate, True)

@@ -2,10 +2,13 @@
 Markdown cells, and a code cell per step that shows the step crane_sym derived.
 
 The first code cell rebuilds the whole derivation from the physics
-(``registry.get``); each step's cell then shows that step's relation and,
-with the values of the parameter cell (SI units), the same relation in
-numbers, so a student can change a value and rerun. The notebook is written as
-nbformat 4 JSON by hand: writing one needs no Jupyter package.
+(``registry.get``); each step's cell then shows that step's relation once, in
+the walkthrough's notation (ẋ, the paper's symbols, a long form with named
+quantities), and, with the values of the parameter cell (SI units), the same
+relation evaluated in numbers, so a student can change a value and rerun.
+``show`` returns nothing, so Jupyter shows no raw SymPy result beside it. The
+notebook is written as nbformat 4 JSON by hand: writing one needs no Jupyter
+package.
 """
 from __future__ import annotations
 
@@ -16,16 +19,43 @@ import sympy as sp
 
 from .audit import AuditRecord, audit
 from .derivation import Derivation, Step
+from .handout_verdicts import Voice
 from .latex import latex
 from .symbols import PARAMETER
-from .walkthrough import _model, _printed_blocks, _step_head
+from .walkthrough import _model, handout_words, printed_blocks, relation_tex, step_head
 
-__all__ = ["notebook", "render_notebook", "show"]
+__all__ = ["notebook", "numbers_tex", "render_notebook", "show"]
+
+#: Significant digits of the numbers line.
+DIGITS = 6
+
+
+def numbers_tex(statement: sp.Basic, values: dict[str, float], names: dict) -> str:
+    """The relation with ``values`` (SI, by symbol name) put in and evaluated to
+    ``DIGITS`` significant digits; "" when no symbol of it has a value."""
+    subs = {s: sp.Float(values[s.name]) for s in statement.free_symbols
+            if s.name in values}
+    if not subs:
+        return ""
+
+    def side(expr: sp.Basic) -> str:
+        expr = expr.xreplace(subs)
+        try:
+            expr = sp.N(expr, DIGITS)
+        except Exception:   # noqa: BLE001 (a function with no evalf, e.g. inv⁻¹): its
+            expr = expr.xreplace({f: sp.Float(f, DIGITS)       # numbers to the digits
+                                  for f in expr.atoms(sp.Float)})
+        return latex(expr, symbol_names=names)
+
+    if isinstance(statement, sp.Equality):
+        return f"{side(statement.lhs)} = {side(statement.rhs)}"
+    return side(statement)
 
 
 def show(step: Step, values: dict[str, float] | None = None,
-         names: dict | None = None) -> sp.Basic:
-    """Display a step's relation (and, with ``values``, its numbers); return it.
+         names: dict | None = None) -> None:
+    """Display a step's relation once, in the walkthrough's notation, and with
+    ``values`` the same relation evaluated in numbers.
 
     Parameters
     ----------
@@ -36,17 +66,22 @@ def show(step: Step, values: dict[str, float] | None = None,
         stay symbols.
     names : dict, optional
         The paper's LaTeX names of symbols.
+
+    Returns
+    -------
+    None
+        Nothing, so that Jupyter adds no raw SymPy result to the cell.
     """
     from IPython.display import Math, display  # only inside a notebook
 
-    statement = step.statement
-    display(Math(latex(statement, symbol_names=dict(names or {}))))
-    if values:
-        subs = {s: sp.Float(values[s.name]) for s in statement.free_symbols
-                if s.name in values}
-        if subs:
-            display(Math(latex(statement.xreplace(subs), symbol_names=dict(names or {}))))
-    return statement
+    names = dict(names or {})
+    main, defs = relation_tex(step.statement, names)
+    display(Math(main), metadata={"crane_sym": "relation"})
+    for definition in defs:
+        display(Math(r"\text{with } " + definition), metadata={"crane_sym": "named"})
+    numbers = numbers_tex(step.statement, dict(values or {}), names)
+    if numbers:
+        display(Math(numbers), metadata={"crane_sym": "numbers"})
 
 
 def _id(k: int) -> str:
@@ -93,13 +128,18 @@ def _parameters(d: Derivation) -> str:
     return "\n".join(lines)
 
 
-def render_notebook(d: Derivation, records: list[AuditRecord] | None = None) -> str:
+def render_notebook(d: Derivation, records: list[AuditRecord] | None = None,
+                    latex_names: dict | None = None, words: dict | None = None) -> str:
     """The notebook of a built derivation as nbformat 4 JSON text.
 
     Each step's code cell is tagged in its metadata with the step's label
-    (``crane_sym_step``), so a test can compare its result with the step.
+    (``crane_sym_step``), so a test can compare what it shows with the step.
+    ``latex_names`` and ``words`` are the paper's ``LATEX_NAMES`` and
+    ``HANDOUT_WORDS``, as for :func:`crane_sym.walkthrough.render`.
     """
     by_label = {r.label: r for r in records or []}
+    names = dict(d.latex_names) | dict(latex_names or {})
+    voice = Voice(d, dict(words or {}))
     cells: list[dict[str, Any]] = []
 
     def add(cell_maker, text: str) -> dict[str, Any]:
@@ -107,15 +147,16 @@ def render_notebook(d: Derivation, records: list[AuditRecord] | None = None) -> 
         cells.append(cell)
         return cell
 
-    add(_markdown, f"# {d.title}\n\nPaper: `{d.paper}` — {d.citation}\n\n"
-        f"## The model\n\n{_model(d.model)}")
+    add(_markdown, f"# {d.title}\n\nPaper: {d.citation}\n\n"
+        f"## The model\n\n{_model(d.model, voice)}")
     add(_code, "from crane_sym import registry\nfrom crane_sym.notebook import show\n\n"
         f"d = registry.get({d.id!r})   # rebuilds every step from the physics\n"
-        "names = d.latex_names")
+        f"names = d.latex_names | getattr(registry.module({d.id!r}), 'LATEX_NAMES', {{}})")
     add(_code, _parameters(d))
     for k, step in enumerate(d.steps, start=1):
-        text = _step_head(k, step) + _printed_blocks(
-            [f for f in d.published if f.target == step.label], by_label, d.latex_names)
+        text = step_head(k, step, voice) + printed_blocks(
+            [f for f in d.published if f.target == step.label], by_label, names, voice,
+            step)
         add(_markdown, "\n\n".join(text))
         cell = add(_code, f"show(d.step({step.label!r}), values, names)")
         cell["metadata"]["crane_sym_step"] = step.label
@@ -129,5 +170,7 @@ def notebook(name: str) -> str:
     """The notebook of a registered derivation, audited (see :func:`render_notebook`)."""
     from . import registry
 
-    d = registry.get(registry.resolve(name))
-    return render_notebook(d, audit(d))
+    key = registry.resolve(name)
+    d = registry.get(key)
+    return render_notebook(d, audit(d), getattr(registry.module(key), "LATEX_NAMES", {}),
+                           handout_words(key))

@@ -49,7 +49,9 @@ class Panel:
     Matplotlib mathtext (``$K_\\mathrm{дин}$``). Consecutive panels of one
     ``group`` are plotted together, at most four to a figure, titled with it;
     ``styles`` gives Matplotlib line options by curve label; ``invalid`` the
-    parts of the x axis where the model does not hold (greyed)."""
+    parts of the x axis where the model does not hold (greyed); ``ylim`` the y
+    range when the data's own would hide what matters (cases compared on one
+    scale, a curve that runs far off the paper's axes: say so in its label)."""
 
     title: str
     ylabel: str
@@ -58,6 +60,7 @@ class Panel:
     group: str = ""
     styles: dict[str, dict] = field(default_factory=dict)
     invalid: list[Span] = field(default_factory=list)
+    ylim: tuple[float, float] | None = None
 
 
 @dataclass

@@ -10,6 +10,7 @@ state and written by :func:`save`.
 """
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Sequence
 
@@ -71,7 +72,8 @@ def figures(panels: Sequence[Panel], title: str) -> list:
     """One Matplotlib figure per entry of :func:`layout`, each with one title:
     ``title``, the panels' group if they have one, and the panel's own title
     when the figure holds a single panel (several panels keep theirs as
-    captions)."""
+    captions); the group is said once, not again when that title starts with
+    it ("Fig. 5: …" under "Fig. 5")."""
     from matplotlib.figure import Figure
 
     pages = layout(panels)
@@ -88,14 +90,21 @@ def figures(panels: Sequence[Panel], title: str) -> list:
                 for label, x, y in panel.curves:
                     ax.plot(x, y, label=label, **panel.styles.get(label, {}))
             ax.set(xlabel=panel.xlabel, ylabel=panel.ylabel)
+            if panel.ylim is not None:
+                ax.set_ylim(*panel.ylim)
             if len(members) > 1:
                 ax.set_title(panel.title, fontsize=10)
             ax.grid(True, alpha=0.4)
             if len(panel.curves) > 1 or panel.invalid:
                 legend_outside(ax, fontsize=9)
-        heading = f"{title}: {group}" if group else title
-        if len(members) == 1:
-            heading += "\n" + members[0].title
+        single = members[0].title if len(members) == 1 else ""
+        # a figure's name once: not again when the panel's own title starts with it
+        heading = f"{title}: {group}" if group and not single.startswith(group) else title
+        named = re.match(r"(Fig\. \d+[a-z]?): ", single)
+        if named and named.group(1) in heading:
+            single = single[named.end():]
+        if single:
+            heading += "\n" + single
         fig.suptitle(heading)
         out.append(fig)
     return out

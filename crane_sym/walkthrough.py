@@ -1,9 +1,12 @@
-"""A derivation as a Markdown walkthrough a student can follow.
+"""A derivation as a Markdown walkthrough a teacher can hand out.
 
 The walkthrough goes from the mechanical model, through every step in the
-paper's order (with what was done, why, and the formula as the paper printed
-it beside its verdict), to a summary of the verdicts. Formulas are LaTeX:
-``$...$`` inline and ``$$...$$`` on lines of their own for displays.
+paper's order (what was done, why, the formula as the paper printed it beside
+its verdict), to a summary of the verdicts. Formulas are LaTeX: ``$...$``
+inline and ``$$...$$`` on lines of their own for displays. A derived number
+is shown as a decimal (beside a print, to the print's digits); a long closed
+form is written with named intermediate quantities (``handout_math``); the
+verdicts are said in words (``handout_verdicts``).
 
 Both functions are pure: they return text and neither print nor write files.
 """
@@ -13,12 +16,15 @@ import re
 
 import sympy as sp
 
-from .audit import (CONFIRMED, CONFIRMED_WITH_CONVENTION, CONSISTENT, DIMENSION_ERROR,
-                    DISCREPANCY, NOT_CHECKABLE, REMARK, RESTATED, AuditRecord, audit)
+from .audit import AuditRecord, audit
 from .derivation import Derivation, Step
+from .handout_math import (broken_lines, decimal, escape_specials, is_number, is_value,
+                           named_lines, printed_digits)
+from .handout_verdicts import Voice, verdict_name
 from .latex import cyrillic_as_text, latex
-from .report import rests_on_lines
 from .symbols import COORDINATE, DEFINED, PARAMETER, TIME
+
+__all__ = ["render", "walkthrough"]
 
 #: Roles whose symbols are always listed; DEFINED ones only when a step uses them.
 _LISTED_ROLES = (PARAMETER, TIME, COORDINATE)
@@ -29,17 +35,16 @@ def _tex(expr: sp.Basic, latex_names: dict) -> str:
     return latex(expr, symbol_names=latex_names)
 
 
-def _statement_tex(statement: sp.Basic, latex_names: dict) -> str:
-    """``lhs = rhs`` for an equation; the plain LaTeX of anything else."""
-    if isinstance(statement, sp.Equality):
-        return (_tex(statement.lhs, latex_names) + " = "
-                + _tex(statement.rhs, latex_names))
-    return _tex(statement, latex_names)
-
-
 def _display(tex: str) -> str:
     """A display formula with ``$$`` on lines of their own."""
     return f"$$\n{cyrillic_as_text(tex.strip())}\n$$"
+
+
+def _relation(statement: sp.Basic, names: dict) -> list[str]:
+    """A derived relation as displays: the relation, then "with" its named
+    intermediate quantities when it is long."""
+    main, defs = named_lines(statement, names)
+    return [_display(main)] + (["with"] + [_display(d) for d in defs] if defs else [])
 
 
 def _cell(text: str) -> str:
@@ -59,9 +64,9 @@ def _fenced(text: str) -> str:
     return f"{fence}text\n{text}\n{fence}"
 
 
-def _model(model: str) -> str:
-    """The model: prose paragraphs as text, indented paragraphs (the diagram)
-    verbatim in a code block."""
+def _model(model: str, voice: Voice | None = None) -> str:
+    """The model: prose paragraphs as text (in the handout's words), indented
+    paragraphs (the diagram) verbatim in a code block."""
     blocks = []
     for para in re.split(r"\n[ \t]*\n", model.strip("\n")):
         lines = [line.rstrip() for line in para.split("\n")]
@@ -70,7 +75,8 @@ def _model(model: str) -> str:
         if all(line[:1] in (" ", "\t") for line in lines if line):
             blocks.append(_fenced("\n".join(lines)))
         else:
-            blocks.append(" ".join(line.strip() for line in lines if line.strip()))
+            text = " ".join(line.strip() for line in lines if line.strip())
+            blocks.append(voice.say(text) if voice else text)
     return "\n\n".join(blocks)
 
 
@@ -89,102 +95,92 @@ def _symbols(d: Derivation, latex_names: dict) -> str:
     return "\n".join(rows)
 
 
-_SAYS = {
-    CONFIRMED: "the print, as printed, follows from the derivation",
-    CONFIRMED_WITH_CONVENTION: "as printed it does not follow; read as below, it does",
-    RESTATED: "the step restates the printed definition, so nothing could fail",
-    CONSISTENT: "the reconstruction reproduces it only through parameters the paper does "
-                "not state; the printed number lies in the band they span (not a "
-                "confirmation)",
-    DISCREPANCY: "the print does not follow from the derivation",
-    DIMENSION_ERROR: "a term of the print has the wrong dimension",
-    NOT_CHECKABLE: "nothing checkable was printed",
-    REMARK: "a modelling choice the paper states that differs from what the model implies",
-}
-#: What a verdict says of a transcription reconstructed from OCR damage.
-_SAYS_RECONSTRUCTED = {
-    CONFIRMED: "the print as reconstructed from OCR damage follows from the derivation",
-    CONFIRMED_WITH_CONVENTION: "as reconstructed it does not follow; read as below, it does",
-    DISCREPANCY: "the print as reconstructed does not follow from the derivation",
-}
+def _printed_display(f) -> list[str]:
+    """The paper's LaTeX as printed (TeX specials escaped, broken into lines)."""
+    return [_display("\n".join(broken_lines(escape_specials(f.latex))))]
 
 
-def _verdict_line(record: AuditRecord) -> str:
-    """The verdict in words: what it says, what decided it, what it rests on, and
-    for a finding its cause, the reading, the difference and the offending terms."""
-    rests = record.basis + (f" ({record.basis_note})" if record.basis_note else "")
-    says = (_SAYS_RECONSTRUCTED if record.reconstructed else _SAYS).get(
-        record.verdict, _SAYS[record.verdict])
-    lines = [f"Verdict: **{record.verdict}** — {says} "
-             f"(decided by the {record.method} check; rests on: {rests})."]
-    lines += [f"- {line[0].upper()}{line[1:]}." for line in rests_on_lines(record)
-              if not line.startswith("rests on the ")]     # the basis is said above
-    reading = record.reading
-    if reading is not None:
-        lines.append(f"- Read with the {reading.reading}: {reading.note}.")
-    if record.cause:
-        lines.append(f"- Cause `{record.cause.id}`: {record.cause.sentence}")
-    literal = record.literal
-    if record.verdict in (CONFIRMED, RESTATED) or literal is None or reading is not None:
-        return "\n".join(lines)
-    dim = next((c for c in literal.checks
-                if c.method == "dimension" and c.status == "fail"), None)
-    if dim is not None:
-        lines.append(f"- Dimensions: {dim.detail}.")
-    elif literal.difference and len(literal.difference) <= _SHORT:
-        lines.append(f"- Printed − derived: ${literal.difference}$.")
-    return "\n".join(lines)
+def _inline_print(f) -> bool:
+    """A printed number (``0,90``, ``5%``) goes on the line that introduces it, and
+    needs no transcription beside it."""
+    return (is_value(f.printed) and not f.reconstructed
+            and re.fullmatch(r"\s*-?[\d.,]+\s*(%|\\%)?\s*", f.latex) is not None)
 
 
-#: A difference longer than this (LaTeX characters) is left to ``crane-sym audit``.
-_SHORT = 300
+def _transcribed(f, step: Step | None, names: dict) -> list[str]:
+    """A transcription as displays: a printed number to its digits, a relation the
+    same as the step's in words, else the relation (named quantities if long)."""
+    relation = f.printed
+    if step is not None and relation == step.statement:
+        return ["(the relation derived above)"]
+    if is_value(relation):
+        places = printed_digits(relation.rhs, f.tolerance)
+        return [_display(f"{_tex(relation.lhs, names)} = {decimal(relation.rhs, places)}")]
+    if step is not None and named_lines(relation, names) == named_lines(step.statement, names):
+        return ["(the relation derived above)"]
+    return _relation(relation, names)
 
 
-def _printed_blocks(formulas: list, by_label: dict[str, AuditRecord],
-                    latex_names: dict | None = None) -> list[str]:
-    """The paper's print of each formula, verbatim, with its verdict; a print
-    rebuilt from OCR damage shows the OCR as text, then the reconstruction and why."""
+def printed_blocks(formulas: list, by_label: dict[str, AuditRecord], names: dict,
+                   voice: Voice, step: Step | None = None) -> list[str]:
+    """The paper's print of each formula with its verdict; a print rebuilt from
+    OCR damage shows the OCR as text, then the reconstruction and why."""
     blocks = []
-    latex_names = latex_names or {}
     for f in formulas:
-        label = f.label if f.label.startswith("(") else f"({f.label})"
-        if f.verbatim or (f.reconstructed and f.printed is not None):
-            # OCR'd text of the print, then what it is read as, and why
+        label = voice.say(f.label if f.label.startswith("(") else f"({f.label})")
+        note = voice.say(f.provenance.partition("; ")[2])
+        if _inline_print(f):
+            blocks.append(f"**As printed in the paper** {label}: "
+                          f"${escape_specials(f.latex.strip())}$")
+        elif f.verbatim or (f.reconstructed and f.printed is not None):
             blocks.append(f"**As printed in the paper** {label}"
                           + (", the OCR verbatim:" if f.reconstructed else ":"))
             blocks.append(_fenced(f.latex.strip()))
             if f.printed is not None:
-                blocks.append(f"**Read as** (a reconstruction; {f.provenance}):"
-                              if f.reconstructed else "Transcribed:")
-                blocks.append(_display(_statement_tex(f.printed, latex_names)))
+                shown = _transcribed(f, step, names)
+                head = ((f"**Read as** (a reconstruction; {note})" if note else
+                         "**Read as** (a reconstruction)")
+                        if f.reconstructed else "Transcribed")
+                if shown[0].startswith("("):
+                    blocks.append(f"{head}: {shown[0][1:-1]}.")
+                else:
+                    blocks += [head + ":"] + shown
         else:
             blocks.append(f"**As printed in the paper** {label}:")
-            blocks.append(_display(f.latex))
+            blocks += _printed_display(f)
         if f.label in by_label:
-            blocks.append(_verdict_line(by_label[f.label]))
+            blocks.append("\n".join(voice.verdict_lines(by_label[f.label], f)))
     return blocks
 
 
-def _verdicts(d: Derivation, records: list[AuditRecord] | None) -> str:
-    """Summary table: one row per audited (or, without records, published) formula."""
-    rows = ["| Formula | Verdict | Decided by | Transcription | Rests on | Cause |",
-            "| --- | --- | --- | --- | --- | --- |"]
-    if records is None:
-        rows += [f"| {_cell(f.label)} | not audited | — | — | — | — |" for f in d.published]
-    else:
-        rows += [f"| {_cell(r.label)} | {_cell(r.verdict)} | {_cell(r.method)} | "
-                 f"{_cell(r.transcription)} | "
-                 f"{_cell(r.basis + (': ' + r.basis_note if r.basis_note else ''))} | "
-                 f"{_cell(r.cause.id) if r.cause else '—'} |"
-                 for r in records]
-    return "\n".join(rows)
-
-
-def _step_head(k: int, step: Step) -> list[str]:
+def step_head(k: int, step: Step, voice: Voice) -> list[str]:
     """Heading, what was done and why, of step ``k`` (walkthrough and notebook)."""
-    head = [f"### Step {k} — {step.label}" + (f" · {step.title}" if step.title else ""),
-            f"**What was done.** {step.how}"]
-    return head + ([f"**Why.** {step.why}"] if step.why else [])
+    head = [f"### Step {k} — {voice.say(step.label)}"
+            + (f" · {voice.say(step.title)}" if step.title else ""),
+            f"**What was done.** {voice.say(step.how)}"]
+    return head + ([f"**Why.** {voice.say(step.why)}"] if step.why else [])
+
+
+def relation_tex(statement: sp.Basic, names: dict) -> tuple[str, list[str]]:
+    """A step's relation as LaTeX: a number as its decimal (with its exact form
+    when that is short), a long closed form with named quantities (then their
+    definitions)."""
+    if is_value(statement):
+        value, lhs = statement.rhs, _tex(statement.lhs, names)
+        if value.is_Integer or (value.is_Rational and printed_digits(value) <= 4):
+            return f"{lhs} = {decimal(value, printed_digits(value))}", []
+        exact = _tex(value, names)
+        short = len(re.findall(r"\d", exact)) <= 8 and len(exact) <= 40
+        shown = f" = {exact}" if short and not value.has(sp.Float) else ""
+        return f"{lhs}{shown} \\approx {decimal(value)}", []
+    return named_lines(statement, names)
+
+
+def step_relation(step: Step, names: dict) -> list[str]:
+    """A step's relation as displays (``relation_tex``), "with" its named
+    quantities."""
+    main, defs = relation_tex(step.statement, names)
+    return [_display(main)] + (["with"] + [_display(d) for d in defs] if defs else [])
 
 
 _TABLE_STEP = re.compile(r"^(Table \d+), ")
@@ -200,39 +196,45 @@ def _table_groups(d: Derivation) -> dict[str, list]:
     return groups
 
 
-def _number(step: Step) -> str:
+def _number(step: Step, f) -> str:
+    """A table cell's derived value, to the digits of its print."""
     value = step.statement.rhs
-    return sp.sstr(sp.N(value, 6)) if value.is_number else f"${latex(value)}$"
+    if not is_number(value):
+        return f"${latex(value)}$"
+    places = printed_digits(f.printed.rhs, f.tolerance) if is_number(f.printed.rhs) else None
+    return f"${decimal(value, None if places is None else places + 1)}$"
 
 
-def _table(name: str, cells: list, d: Derivation,
-           by_label: dict[str, AuditRecord]) -> list[str]:
-    """A printed table as one table: each cell beside its derived value and verdict."""
+def _table(name: str, cells: list, d: Derivation, by_label: dict[str, AuditRecord],
+           voice: Voice) -> list[str]:
+    """A printed table as one table: each cell beside its derived value (one digit
+    more than printed) and verdict."""
     readings = any(f.conventions for f in cells)
     head = "| cell | printed | derived" + (" | derived, read as noted" if readings else "")
     rows = [head + " | verdict | cause |",
             "| --- " * (5 + readings) + "|"]
     for f in cells:
         r = by_label.get(f.label)
-        row = [_cell(f.label.removeprefix(name + ", ")), _cell(f.latex),
-               _number(d.step(f.target))]
+        row = [_cell(voice.say(f.label.removeprefix(name + ", "))),
+               _cell(f.latex) if f.verbatim else _math_cell(escape_specials(f.latex)),
+               _number(d.step(f.target), f)]
         if readings:
-            row.append(_number(d.step(f.conventions[0].compare_to or f.target))
+            row.append(_number(d.step(f.conventions[0].compare_to or f.target), f)
                        if f.conventions else "—")
-        row += [_cell(r.verdict) if r else "not audited",
-                f"`{r.cause.id}`" if r and r.cause else "—"]
+        row += [verdict_name(r.verdict) if r else "not audited",
+                voice.letter(r) if r and r.cause else "—"]
         rows.append("| " + " | ".join(row) + " |")
     notes = {f.conventions[0].note for f in cells if f.conventions}
-    causes = {r.cause.id: r.cause.sentence for f in cells
-              if (r := by_label.get(f.label)) and r.cause}
+    causes = {r.cause.id: r for f in cells if (r := by_label.get(f.label)) and r.cause}
     out = [f"### {name}", "\n".join(rows)]
-    out += [f"*Read as noted:* {n}." for n in sorted(notes)]
-    out += [f"*Cause* `{k}`: {v}" for k, v in causes.items()]
+    out += [f"*Read as noted:* {voice.say(n)}." for n in sorted(notes)]
+    out += [f"*Cause {voice.causes[k]}:* {voice.say(r.cause.sentence)}"
+            for k, r in causes.items() if voice.cause_first[k] == r.label]
     return out
 
 
 def render(d: Derivation, records: list[AuditRecord] | None = None,
-           latex_names: dict | None = None) -> str:
+           latex_names: dict | None = None, words: dict | None = None) -> str:
     """The walkthrough of a derivation as Markdown with LaTeX.
 
     Parameters
@@ -244,41 +246,55 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
         formulas are shown without verdicts and the summary says "not audited".
     latex_names : dict, optional
         Map from SymPy symbol to the LaTeX the paper uses for it.
+    words : dict of str to str, optional
+        The paper's ``HANDOUT_WORDS``: the words a reader gets for a code name
+        in its labels and notes.
 
     Returns
     -------
     str
-        Markdown: title, model, symbols, every step in order, verdicts.
+        Markdown: title, model, symbols, every step in order (numbered without
+        gaps), verdicts.
     """
     names = dict(d.latex_names) | dict(latex_names or {})
+    voice = Voice(d, dict(words or {}))
     by_label = {r.label: r for r in records or []}
     tables = _table_groups(d)
     in_table = {c.target: name for name, cells in tables.items() for c in cells}
     in_table |= {v.compare_to: name for name, cells in tables.items()
                  for c in cells for v in c.conventions if v.compare_to}
     shown: set[str] = set()
-    parts = [f"# {d.title}", f"Paper: `{d.paper}` — {d.citation}",
-             "## The model", _model(d.model),
+    parts = [f"# {d.title}", f"Paper: {d.citation}",
+             "## The model", _model(d.model, voice),
              "## Symbols", _symbols(d, names),
              "## Derivation"]
-    for k, step in enumerate(d.steps, start=1):
+    k = 0
+    for step in d.steps:
         if step.label in in_table:              # a table cell: one table for all
             name = in_table[step.label]
             if name not in shown:
                 shown.add(name)
-                parts += _table(name, tables[name], d, by_label)
+                parts += _table(name, tables[name], d, by_label, voice)
             continue
-        parts += _step_head(k, step)
-        parts.append(_display(_statement_tex(step.statement, names)))
-        parts += _printed_blocks([f for f in d.published if f.target == step.label
-                                  and f.target not in in_table], by_label, names)
+        k += 1
+        parts += step_head(k, step, voice)
+        parts += step_relation(step, names)
+        parts += printed_blocks([f for f in d.published if f.target == step.label
+                                 and f.target not in in_table], by_label, names, voice, step)
     labels = {s.label for s in d.steps}
     orphans = [f for f in d.published if f.target not in labels]
     if orphans:
         parts.append("### Printed formulas without a derived step")
-        parts += _printed_blocks(orphans, by_label, names)
-    parts += ["## Verdicts", _verdicts(d, records)]
+        parts += printed_blocks(orphans, by_label, names, voice)
+    parts += ["## Verdicts"] + voice.table(records)
     return "\n\n".join(parts) + "\n"
+
+
+def handout_words(key: str) -> dict[str, str]:
+    """The registered paper's ``HANDOUT_WORDS`` (empty when it declares none)."""
+    from . import registry
+
+    return dict(getattr(registry.module(key), "HANDOUT_WORDS", {}))
 
 
 def walkthrough(name: str) -> str:
@@ -293,12 +309,12 @@ def walkthrough(name: str) -> str:
     Returns
     -------
     str
-        :func:`render` of the built derivation, with its audit records and
-        the module's ``LATEX_NAMES`` (empty when the module defines none).
+        :func:`render` of the built derivation, with its audit records, the
+        module's ``LATEX_NAMES`` and ``HANDOUT_WORDS`` (empty when it defines none).
     """
     from . import registry
 
     key = registry.resolve(name)
     d = registry.get(key)
     latex_names = getattr(registry.module(key), "LATEX_NAMES", {})
-    return render(d, audit(d), latex_names)
+    return render(d, audit(d), latex_names, handout_words(key))

@@ -332,7 +332,7 @@ def test_walkthrough_runs_through_form1_then_the_loads(capsys):
     text = capsys.readouterr().out
     assert text.index("· Operating pressure angle") < text.index("· Pointed tip") \
         < text.index("· Support loads")
-    assert "003-moment-halved-twice" in text
+    assert "(3) shares M_в/c between two legs with its own 0.5" in text   # the cause, in words
 
 
 # --- accuracy on the hard cases ---------------------------------------------------

@@ -8,6 +8,7 @@ import sympy as sp
 
 from crane_sym import registry
 from crane_sym.audit import NOT_CHECKABLE, AuditRecord, audit
+from crane_sym.handout_verdicts import verdict_name
 from crane_sym.published import PublishedFormula
 from crane_sym.walkthrough import render, walkthrough
 
@@ -48,7 +49,7 @@ def test_sections_in_order(built):
     text = built[3]
     d = built[0]
     assert text.startswith(f"# {d.title}\n")
-    assert d.paper in text.splitlines()[2] and d.citation in text.splitlines()[2]
+    assert d.citation in text.splitlines()[2] and d.paper not in text   # no file names
     order = [text.index(f"## {h}\n") for h in
              ("The model", "Symbols", "Derivation", "Verdicts")]
     assert order == sorted(order)
@@ -106,12 +107,13 @@ def test_verdicts_in_summary_and_steps(built):
     _, records, _, text = built
     summary = _section(text, "Verdicts")
     for r in records:
-        assert f"| {r.label} | {r.verdict} | {r.method} | {r.transcription} | {r.basis}" \
-            in summary
-        assert f"Verdict: **{r.verdict}** — " in text
+        assert f"| {r.label} | {verdict_name(r.verdict)} | {r.method} | {r.transcription} " \
+            f"| {r.basis} |" in summary
+        assert f"Verdict: **{verdict_name(r.verdict)}** — " in text
         assert f"(decided by the {r.method} check; rests on: {r.basis}" in text
-        if r.cause:
-            assert f"Cause `{r.cause.id}`: {r.cause.sentence}" in text
+        if r.cause:       # stated in full once, then named by its letter
+            assert text.count(f": {r.cause.sentence}") == 1
+            assert re.search(rf"- Cause [A-Z]: {re.escape(r.cause.sentence)}", text)
 
 
 def test_deterministic(built):
@@ -146,7 +148,7 @@ def test_published_without_step_is_listed():
     d.published = list(d.published) + [orphan]
     records = [AuditRecord(d.id, "(99)", NOT_CHECKABLE, "none", "no such step")]
     text = render(d, records, {})
-    assert "| (99) | not_checkable | none |" in _section(text, "Verdicts")
+    assert "| (99) | not checkable | none |" in _section(text, "Verdicts")
     assert "$$\nQ = 0\n$$" in text
     assert len(registry.get(ID).published) == len(d.published) - 1
 

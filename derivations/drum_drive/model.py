@@ -168,6 +168,8 @@ LATEX_NAMES = {
     M_d: r"M_{o\delta}", F1_lim: r"F_{1,\lim}", F_pulse: "F'(t)", Delta: r"\Delta",
     mu_alpha_min: r"(\mu\alpha)_{\min}", omega_1: r"\omega_1", omega_2: r"\omega_2",
 }
+#: The words a handout gives for the code names in this paper's notes.
+HANDOUT_WORDS = {"crane_sym.lagrange on the other": "Lagrange's equations on the other"}
 
 MODEL = r"""
 The drive chain: motor rotor I1, intermediate mass I2 (gearbox, couplings) and

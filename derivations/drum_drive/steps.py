@@ -74,7 +74,7 @@ def kinetic_energy(d: Derivation, e: dict) -> None:
     total = sp.collect(sp.simplify(total), [_dot(y)**2, _dot(z)**2])
     d.add("(7)", sp.Eq(T_el, total),
           "∫ q·v²/2 dξ over the four pieces (the last two with ż along [0, y] and "
-          "[y, δy]), integrated by SymPy; √(1 + slope²) of a flat span is 1.",
+          "[y, δy]), integrated symbolically; √(1 + slope²) of a flat span is 1.",
           "The result does not depend on where the moved point sits (z or y): each span "
           "moves like a third of its mass.")
     d.add("effective mass", sp.Eq(m_eff, sp.diff(total, _dot(y), 2)),
@@ -153,7 +153,7 @@ def equations_of_motion(d: Derivation, eqs: dict) -> None:
     """(12): the equations of motion, one step per coordinate."""
     for i, (name, eq) in enumerate(eqs.items()):
         d.add(f"(12), {name}", eq, f"Lagrange's equation with dissipation for {name}: "
-              "crane_sym.lagrange.lagrange_equations of T, Π, Φ and δA.",
+              "Lagrange's equations of the second kind of T, Π, Φ and δA.",
               "The model is linear already (quadratic T, Π, Φ with constant coefficients), "
               "so the paper's 'first approximation' changes nothing." if i == 0 else "",
               "Equations of motion" if i == 0 else "")

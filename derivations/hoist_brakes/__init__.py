@@ -33,7 +33,7 @@ from crane_sym.derivation import Derivation
 
 from . import elastic, steps, steps_numbers
 from .hard_cases import hard_cases
-from .model import (AUTHORS, BF_SB, CITATION, ID, LATEX_NAMES, LF, MF, MODEL, PAPER, SYMBOLS,
+from .model import (AUTHORS, BF_SB, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, LF, MF, MODEL, PAPER, SYMBOLS,
                     TITLE, phi5)
 from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .outputs import outputs, physical, tabulated
@@ -41,8 +41,8 @@ from .published import PUBLISHED
 from .report import scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
 
-__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS", "SCENE_OPTIONS",
-           "SWEEP_OUTPUTS", "TITLE", "build", "hard_cases", "scene_report"]
+__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
+           "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE", "build", "hard_cases", "scene_report"]
 
 
 def build() -> Derivation:

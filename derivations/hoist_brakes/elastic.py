@@ -270,9 +270,8 @@ def fig9_steps(d: Derivation) -> None:
                     "their limit. Between two contact changes the drive is linear, "
                     "x' = A x + b, so each phase is exp(Mt) in closed form, and the next "
                     "change is found on that closed form by a search whose steps are "
-                    "bounded by the derivative, so no crossing is stepped over "
-                    "(crane_sym.piecewise_linear). A scene's module carries the run of its "
-                    "payload as a table of those closed forms (elastic_gearbox_torque). "
+                    "bounded by the derivative, so no crossing is stepped over. A scene "
+                    "carries the run of its payload as a table of those closed forms. "
                     "The paper states neither damping nor the motor's delay: with them "
                     f"over their plausible ranges the peak spans {swing.text()}.")
         d.add(f"Fig. 9 peak, {name}", sp.Eq(N, sp.Float(abs(value), 15)), how,

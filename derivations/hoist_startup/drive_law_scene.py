@@ -179,14 +179,15 @@ def drive_law_report(scene, gen: ModuleType) -> SceneReport:
         values.update(K_max=k_max, t_max=t_max,
                       certified=float(found.certified and span.certified))
     x_eq = "(22)" if pickup else "(24)"
-    panels = [Panel("Drive law $a(t)$ and speed $v(t)$", "$a$ [m/s²], $v$ [m/s]",
-                    [("$a(t)$", t, gen.drive_acceleration(t)),
-                     ("$v(t)$", t, gen.drive_speed(t))]),
+    panels = [Panel("Drive law: acceleration $a(t)$", "$a$ [m/s²]",
+                    [("$a(t)$", t, gen.drive_acceleration(t))]),
+              Panel("Drive law: speed $v(t)$", "$v$ [m/s]",
+                    [("$v(t)$", t, gen.drive_speed(t))]),
               Panel("Dynamic coefficient $K(t)$ (25)", "$K$", [("$K(t)$", t, k)]),
               Panel(f"Rope force {x_eq}", "$F$ [kN]",
                     [(r"$C\,x(t)$", t, gen.rope_force(t) / 1e3)]),
               Panel("Load acceleration (1)", r"$\ddot x_2$ [m/s²]",
                     [(r"$\ddot x_2(t)$", t, gen.load_acceleration(t))])]
-    for panel in panels[1:]:              # the drive law is data: it holds throughout
+    for panel in panels[2:]:              # the drive law is data: it holds throughout
         panel.invalid = span.spans()
     return SceneReport(lines=lines, values=values, panels=panels)

@@ -36,15 +36,15 @@ from crane_sym.derivation import Derivation
 
 from . import steps, steps_loads, steps_startup
 from .hard_cases import hard_cases
-from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
+from .model import AUTHORS, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .outputs import outputs
 from .published import PUBLISHED
 from .published_loads import PUBLISHED_LOADS
 from .report import scene_report
 
-__all__ = ["ID", "AUTHORS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS", "SCENE_OPTIONS", "TITLE",
-           "build", "hard_cases", "scene_report"]
+__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
+           "SCENE_OPTIONS", "TITLE", "build", "hard_cases", "scene_report"]
 
 
 def build() -> Derivation:

@@ -36,8 +36,17 @@ def fig10_report(scene, module):
              f"s_a = 0.3m at z = 10   x = {fq(values['x_03m_z10'])}",
              f"s_a = 0.4m at z = 10   x = {fq(values['x_04m_z10'])}",
              f"no undercut at z = 10  x >= {fq(values['x_min_z10'])}"]
+    # the y axis keeps curves 1-3 legible, as the paper's figure does: curve 4
+    # (x_min = (z_min - z)/z_min, a line) leaves it below, which its label says
+    upper = max(float(np.max(c)) for _, c in curves[:3])
+    lower = min(-1.0, min(float(np.min(c)) for _, c in curves[:3]))
+    below = z[curves[3][1] < lower]
+    if below.size:
+        curves[3] = (curves[3][0] + f" (below ${lower:g}$ from $z = {below[0]:g}$)",
+                     curves[3][1])
     panel = Panel("Fig. 10: shift coefficient limits", "shift coefficient $x$",
-                  [(name, z, c) for name, c in curves], xlabel="number of teeth $z$")
+                  [(name, z, c) for name, c in curves], xlabel="number of teeth $z$",
+                  ylim=(lower, upper + 0.1 * (upper - lower)))
     return SceneReport(lines=lines, values=values, panels=[panel])
 
 
@@ -109,11 +118,14 @@ def support_report(scene, module):
     lines = [f"largest leg load (3)–(4), derived portal, at L = {fq(largest, 'm')}: "
              f"R_max = {fq(load / 1e3, 'kN')}"]
     curves = []
-    for variant in ("ship-to-store", "mixed"):
-        mean, std = table3_normal("vertical pressure", variant)
-        level = mean + std * np.linspace(0.0, 12.0, 121)
-        log10p = log_exceedance_probability(level, mean, std) / math.log(10)
-        curves.append((f"{variant}: $m_R = {mean:g}$, $\\sigma_R = {std:g}$", level, log10p))
+    # Table 3 prints no unit: the level is read against each variant's mean,
+    # r/m_R, up to six standard deviations of the wider law (P down to ~1e-9)
+    laws = {v: table3_normal("vertical pressure", v) for v in ("ship-to-store", "mixed")}
+    ratio = np.linspace(1.0, 1.0 + 6.0 * max(s / m for m, s in laws.values()), 121)
+    for variant, (mean, std) in laws.items():
+        log10p = log_exceedance_probability(ratio * mean, mean, std) / math.log(10)
+        curves.append((f"{variant}: $m_R = {mean:g}$, $\\sigma_R = {std:g}$", ratio,
+                       log10p))
         key = variant.replace("-", "_")
         values[f"log10_P_6sigma_{key}"] = float(
             log_exceedance_probability(mean + 6 * std, mean, std) / math.log(10))
@@ -124,7 +136,8 @@ def support_report(scene, module):
               [("$R_{\\max}$ by (3)–(4), derived", reach, along / 1e3)],
               xlabel="reach $L$ [m]"),
         Panel("Table 3: exceedance of the vertical support load", "$\\log_{10} P(R > r)$",
-              curves, xlabel="level $r$ (Table 3's unit)"),
+              curves, xlabel="level over the variant's mean, $r/m_R$ (Table 3 prints no unit)",
+              ylim=(-10.0, 0.5)),
     ]
     return SceneReport(lines=lines, values=values, panels=panels)
 
@@ -158,6 +171,7 @@ def startup_report(scene, module):
              f" per step, holds {', '.join(fq(h, 's') for h in holds)}",
              f"rigid drive at break-away      a0 = {fq(values['a0_rigid'], 'm/s^2')}"]
     panels = []
+    loads, speeds = [], []          # one y scale for each kind, across the cases
     for i, phi in enumerate(gaps):
         s = float(module.startup_backlash_at_rim(phi))
         model = ThreeMassTravel(m_d, q["m_k"], q["c_l"], b, s, s, v0, slopes, tuple(holds),
@@ -188,6 +202,14 @@ def startup_report(scene, module):
             Panel(f"{tag}: speeds", "speed at the rim [m/s]",
                   [("motors $v_1$", times, x[:, 1]), ("crane $v_к$", times, x[:, 5]),
                    ("no-load $v_0$", times, np.full_like(times, v0))], group=tag)]
+        loads.append(panels[-2])
+        speeds.append(panels[-1])
+    for same in (loads, speeds):
+        ys = np.concatenate([np.asarray(y, dtype=float) for p in same for _, _, y in p.curves])
+        low, high = float(np.min(ys)), float(np.max(ys))
+        pad = 0.05 * (high - low or 1.0)
+        for p in same:
+            p.ylim = (low - pad, high + pad)
     return SceneReport(lines=lines, values=values, panels=panels)
 
 

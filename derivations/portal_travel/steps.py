@@ -80,7 +80,7 @@ def mesh(d: Derivation) -> None:
     d.add("Form 1, x_sum", sp.Eq(x_sum, expected.subs(w, alpha_tw)),
           "No backlash: s_w1 + s_w2 equals the operating pitch πd_w1/z1, with "
           "d_wi = m z_i cos α/cos α_tw and s_wi from 'thickness at a radius'; solved "
-          "for x1 + x2 by SymPy and checked against inv α_tw = inv α + 2x_Σ tan α/(z1 + z2).",
+          "for x1 + x2 and checked against inv α_tw = inv α + 2x_Σ tan α/(z1 + z2).",
           "The meshing equation ties the shifts to the centre distance.", "Sum of shifts")
     inv_w = inv(alpha) + 2 * x_sum * sp.tan(alpha) / (z1 + z2)
     d.add("centre distance from the shifts",
@@ -189,7 +189,7 @@ def form1_numbers(d: Derivation) -> dict[str, sp.Expr]:
             (V_sa1m, "sa1m", "s_a1/m at the data."),
             (V_eps, "eps", "'Form 1, epsilon_alpha' at the data."),
             (V_xp, "xp", "'pointed tip' solved for x at z = 10, α = 20°, h_a = 1, Δy = 0 "
-                         "(bracketed mpmath solve, 40 digits).")):
+                         "(solved within a bracket to 40 digits).")):
         d.add(f"Form 1 value, {key}", sp.Eq(sym, values[key]), how)
     d.add("Form 1 value, 0.4m", sp.Eq(V_samin, sp.Rational(2, 5) * FORM1["m"]),
           "0.4·m with m = 10 mm.")

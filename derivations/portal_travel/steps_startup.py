@@ -32,7 +32,7 @@ def equations_of_motion(d: Derivation) -> None:
     for i, (name, eq) in enumerate(zip(("left motors", "right motors", "crane"), eqs)):
         d.add(f"start-up, {name}", eq, how if i == 0 else "The same Lagrangian.",
               "Second stage: joint motion of the motor and crane masses. Fig. 12 (loads and "
-              "speeds for backlash 0, π, 2π): `crane-sym run fig12_startup_backlash`."
+              "speeds for backlash 0, π, 2π): the paper's start-up scene draws it."
               if i == 2 else "",
               "Start-up with backlash (Fig. 11)" if i == 0 else "")
     d.add("start-up, first stage", sp.Eq(m_d * x1.diff(t, 2),
@@ -42,7 +42,7 @@ def equations_of_motion(d: Derivation) -> None:
           "flank closes: the first stage, 'taking up the backlash until the link load "
           "reaches the resistance to travel'.", "Each phase is linear: x' = A x + b, "
           "solved in closed form; the instants where a flank closes or opens, the crane "
-          "breaks away or stops, are roots of those closed forms (piecewise_linear).")
+          "breaks away or stops, are roots of those closed forms.")
 
 
 def reduction(d: Derivation) -> None:
