@@ -286,8 +286,9 @@ def test_run_writes_the_module_and_a_plot_and_bounds_the_samples(tmp_path):
     law = ('[drive_law]\nlifting = "from_weight"\nbreakpoints = [0.0, 0.3]\n'
            "coefficients = [[1.0]]\n")
     path = _write(tmp_path, HEAD + law + '[options]\nduration = "0.6 s"\npoints = 301\n')
-    report, (figure,) = run_scene(path, tmp_path / "out")
-    assert figure.is_file() and figure.stat().st_size > 0
+    report, figures = run_scene(path, tmp_path / "out")
+    assert [f.name for f in figures] == ["probe_1.png", "probe_2.png"]   # a and v apart
+    assert all(f.is_file() and f.stat().st_size > 0 for f in figures)
     written = (tmp_path / "out" / "scene_probe.py").read_text(encoding="utf-8")
     assert written == scene_files(path)["scene_probe.py"]
     module = _import(written, tmp_path / "again.py")

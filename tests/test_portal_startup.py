@@ -179,8 +179,8 @@ def test_walkthrough_has_the_startup_model(capsys):
     assert main(["walkthrough", "003"]) == 0
     text = capsys.readouterr().out
     for needle in ("lost in the OCR", "start-up, motor speed in the gap",
-                   "start-up model, F_max, backlash 2pi", "003-startup-unstated-parameters",
-                   "fig12_startup_backlash", "chosen, not fitted"):
+                   r"start-up model, F_max, backlash $2\pi$", "parameters the paper does not state",
+                   "Fig. 12 (loads and speeds for backlash 0, π, 2π)", "chosen, not fitted"):
         assert needle in text, needle
 
 
