@@ -11,10 +11,10 @@ from typing import Any, Callable, Mapping
 
 import sympy as sp
 
-from . import progress
-from .published import PublishedFormula
-from .sensitivity import Sensitivity
-from .symbols import PhysicalSymbol, SymbolTable
+from crane_sym import progress
+from crane_sym.published import PublishedFormula
+from crane_sym.sensitivity import Sensitivity
+from crane_sym.symbols import PhysicalSymbol, SymbolTable
 
 
 @dataclass(frozen=True)
@@ -88,7 +88,7 @@ class TabulatedOutput:
     A piecewise-linear run (backlash, brakes that stick) has phases whose
     number and ends depend on the data, so it has no one expression in the
     parameters. A scene fixes the data: ``run(values, options)`` (SI values by
-    name, the scene's options) returns the ``crane_sym.phase_table.HybridRun``,
+    name, the scene's options) returns the ``crane_sym.mechanics.phase_table.HybridRun``,
     whose table (the phases in closed form) the scene's module carries as
     arrays. ``args`` are the parameters it needs; the generated function takes
     time only.
@@ -173,7 +173,7 @@ class SceneLoad:
         by type, units by ``crane_sym.units``); raises ``ValueError`` or
         ``TypeError`` naming the key.
     specialize : callable
-        ``specialize(scene) -> SpecializedLoad`` for a ``crane_sym.scenes.Scene``
+        ``specialize(scene) -> SpecializedLoad`` for a ``crane_sym.scenes.reading.Scene``
         whose ``load`` is what ``read`` returned and whose ``parameters`` (SI)
         hold every one of ``parameters``.
     """

@@ -16,7 +16,7 @@ from sympy.core.function import AppliedUndef
 from sympy.physics.units import Dimension
 from sympy.physics.units.systems.si import dimsys_SI
 
-from .latex import latex
+from crane_sym.latex import latex
 
 #: Exponent vector: base-dimension name -> rational exponent (zeros dropped).
 DimVec = tuple[tuple[str, sp.Rational], ...]

@@ -8,7 +8,7 @@ import importlib
 from functools import lru_cache
 from types import ModuleType
 
-from .derivation import Derivation, SceneLoad, SweepOutput
+from crane_sym.derivation import Derivation, SceneLoad, SweepOutput
 
 #: id -> module under ``crane_sym.derivations``, in paper order.
 DERIVATIONS: dict[str, str] = {
@@ -56,14 +56,14 @@ def scene_loads(name: str) -> dict[str, SceneLoad]:
 
 def scene_options(name: str) -> tuple:
     """The options scenes of this derivation may give beside ``duration`` and
-    ``points`` (``crane_sym.scene_options.SceneOption``), from the package's
+    ``points`` (``crane_sym.scenes.options.SceneOption``), from the package's
     ``SCENE_OPTIONS``; no build needed."""
     return tuple(getattr(module(name), "SCENE_OPTIONS", ()))
 
 
 def scene_checks(name: str) -> tuple:
     """Conditions between a scene's options and parameters, checked on load
-    (``crane_sym.scene_options.SceneCheck``), from the package's
+    (``crane_sym.scenes.options.SceneCheck``), from the package's
     ``SCENE_CHECKS``; no build needed."""
     return tuple(getattr(module(name), "SCENE_CHECKS", ()))
 

@@ -13,7 +13,7 @@ corners of the ranges instead costs 2**n runs and reaches combinations no
 one would choose (a stiff, undamped, weakly started crane at once); the
 stack-up needs 2n runs and is exact for effects that add. A
 :class:`Sensitivity` carries the result into the step that derives the
-number, where the audit reads it (``crane_sym.audit``): the band is the
+number, where the audit reads it (``crane_sym.audit.verdicts``): the band is the
 tolerance that decides the record.
 """
 from __future__ import annotations

@@ -264,7 +264,8 @@ _TABLE_ELASTIC_GEARBOX_TORQUE = (
 def elastic_gearbox_torque(t, *, out=None):
     """Relative gearbox torque M_G/M_st of the elastic drive with the coupling backlash, emergency stop while lowering the payload m_p: motor torque lost at t = 0, safety brakes after t_SB, service brakes after t_BB, brakes that stick at zero speed. Eq Fig. 9.
 
-    Solved for this scene phase by phase in mpmath (crane_sym.exact_phases).
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
     The run has 30 phases, each in closed form; they end at
     0.1 s safety brake, 0.107472 s open, 0.147935 s close other, 0.171507 s
     open, 0.21197 s close hold, 0.227769 s open, 0.268232 s close other,

@@ -2,7 +2,7 @@
 import pytest
 
 from crane_sym import registry
-from crane_sym.audit import audit
+from crane_sym.audit.verdicts import audit
 
 
 @pytest.fixture(scope="module")

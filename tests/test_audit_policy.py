@@ -17,11 +17,11 @@ import pytest
 import sympy as sp
 
 from crane_sym import registry
-from crane_sym.audit import (AGREEMENTS, CONFIRMATIONS, CONFIRMED_WITH_CONVENTION,
+from crane_sym.audit.verdicts import (AGREEMENTS, CONFIRMATIONS, CONFIRMED_WITH_CONVENTION,
                              CONSISTENT, RESTATED, UNEXPLAINED, audit, audit_formula)
 from crane_sym.published import (BASES, CHOSEN, DEFINITION, MODEL, READINGS,
                                  PublishedFormula)
-from crane_sym.report import as_json, as_markdown, as_table, by_cause, findings, summary
+from crane_sym.audit.formats import as_json, as_markdown, as_table, by_cause, findings, summary
 
 PAPERS = registry.ids()
 
@@ -183,7 +183,7 @@ def _readme_coverage() -> dict[str, dict[str, int]]:
 
 
 def test_readme_states_the_machine_read_coverage(paper):
-    from crane_sym.report import machine_read_coverage
+    from crane_sym.audit.formats import machine_read_coverage
     d, records = paper
     assert _readme_coverage().get(d.id) == machine_read_coverage(records)
 

@@ -10,9 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from crane_sym.cli import main
-from crane_sym.scenes import load_scene, scene_path
-from crane_sym.scene_run import run_scene
+from crane_sym.cli.main import main
+from crane_sym.scenes.reading import load_scene, scene_path
+from crane_sym.scenes.run import run_scene
 
 BASE = scene_path("overhead_crane_50t").read_text(encoding="utf-8")
 

@@ -12,8 +12,13 @@ import sympy as sp
 
 pytest.importorskip("scipy")
 
-from crane_sym import bench, bench_duhamel, bench_linear, bench_report, registry, scenes  # noqa: E402
-from crane_sym.cli import main  # noqa: E402
+from crane_sym import registry  # noqa: E402
+from crane_sym.bench import functions as bench
+from crane_sym.bench import duhamel as bench_duhamel
+from crane_sym.bench import linear as bench_linear
+from crane_sym.bench import report as bench_report
+from crane_sym.scenes import reading as scenes
+from crane_sym.cli.main import main  # noqa: E402
 from crane_sym.derivation import ODESystem  # noqa: E402
 
 
@@ -149,7 +154,7 @@ def test_bench_command_json(tmp_path, capsys, monkeypatch):
 def test_targets_classify_and_judge():
     """Which functions are piecewise, and met / not met from given measurements
     (no timing is asserted)."""
-    from crane_sym import bench_targets as bt
+    from crane_sym.bench import targets as bt
     kinds = bt.time_functions(registry.get("hoist_startup"))
     assert kinds["dynamic_coefficient_ramp_hold"] == "piecewise"
     assert kinds["dynamic_coefficient_instant"] == "single"
@@ -256,7 +261,7 @@ def test_piecewise_bench_rows_and_errors():
     summary names the fastest integrator reaching each accuracy (or none)."""
     import numpy as np
 
-    from crane_sym.bench_piecewise import bench_run, summary
+    from crane_sym.bench.piecewise import bench_run, summary
     from crane_sym.derivations.hoist_brakes.elastic import table1_hoist
     run = table1_hoist(0.0).emergency_stop(50 * np.pi, 0.3)
     rows, table = bench_run(run, points=200, reference_points=60, methods=("DOP853",),

@@ -4,7 +4,7 @@ broadcast, scalar and out= inputs."""
 import numpy as np
 import pytest
 
-from crane_sym.cell_kernels import _at, _cells, _put, _selector
+from crane_sym.kernels.cells import _at, _cells, _put, _selector
 from crane_sym.generated import hoist_startup as gen
 
 

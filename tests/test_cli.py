@@ -12,8 +12,11 @@ from pathlib import Path
 
 import pytest
 
-from crane_sym import generate, module_files, progress, reference, registry
-from crane_sym.cli import EXAMPLES, main, parser
+from crane_sym import progress, registry
+from crane_sym.scenes import generate
+from crane_sym.codegen import files as module_files
+from crane_sym.bench import accuracy as reference
+from crane_sym.cli.main import EXAMPLES, main, parser
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -18,11 +18,11 @@ import numpy as np
 import pytest
 
 from crane_sym import registry
-from crane_sym.audit import VERDICTS, audit
-from crane_sym.cli import main
-from crane_sym.scene_run import run_scene
-from crane_sym.scenes import list_scenes, load_scene, scenes_directory
-from crane_sym.specialize import module_name
+from crane_sym.audit.verdicts import VERDICTS, audit
+from crane_sym.cli.main import main
+from crane_sym.scenes.run import run_scene
+from crane_sym.scenes.reading import list_scenes, load_scene, scenes_directory
+from crane_sym.scenes.specialize import module_name
 
 IDS = registry.ids()
 #: An equation number "(12)" (maybe with a qualifier), or a name that starts with a letter.

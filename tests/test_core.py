@@ -5,14 +5,14 @@ import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
 from sympy.physics.units import force, length, mass, time
 
-from crane_sym import audit as A
-from crane_sym.checks import (FAIL, PASS, dimension_consistency, numeric_equivalence,
+from crane_sym.audit import verdicts as A
+from crane_sym.audit.checks import (FAIL, PASS, dimension_consistency, numeric_equivalence,
                               symbolic_equivalence)
 from crane_sym.derivation import Derivation, Output
 from crane_sym.dimensions import check_equation, dimension_of, format_vector, vector
-from crane_sym.elimination import relative_coordinate
-from crane_sym.lagrange import lagrange_equations
-from crane_sym.odes import solve_constant_coefficient
+from crane_sym.mechanics.elimination import relative_coordinate
+from crane_sym.mechanics.lagrange import lagrange_equations
+from crane_sym.mechanics.odes import solve_constant_coefficient
 from crane_sym.published import ASSUMPTION, SYMBOL_FOR_ANOTHER, Convention, PublishedFormula
 from crane_sym.symbols import COORDINATE, DEFINED, TIME, PhysicalSymbol, SymbolTable
 
@@ -226,7 +226,7 @@ def test_dimensions_of_integrals_piecewise_and_functions_of_other_arguments():
 
 
 def test_rewrite_rules_produce_the_stable_forms():
-    from crane_sym.rewriting import rules_for, optimize
+    from crane_sym.codegen.rewriting import rules_for, optimize
     T, tn, th = sp.symbols("T t_n theta", positive=True)
     rules = rules_for({t})
     # x - sin x, and its higher analogues, become Taylor remainders

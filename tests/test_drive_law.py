@@ -10,9 +10,9 @@ import sympy as sp
 
 from crane_sym.derivations.hoist_startup import drive_law as dl
 from crane_sym.derivations.hoist_startup import drive_law_scene as dls
-from crane_sym.scene_run import run_scene
-from crane_sym.scenes import SceneError, load_scene, scenes_directory
-from crane_sym.specialize import render_scene_module, scene_files
+from crane_sym.scenes.run import run_scene
+from crane_sym.scenes.reading import SceneError, load_scene, scenes_directory
+from crane_sym.scenes.specialize import render_scene_module, scene_files
 
 integrate = pytest.importorskip("scipy.integrate")
 
@@ -275,7 +275,7 @@ def test_cli_files_are_deterministic_and_named_by_the_scene(tmp_path):
     text = files["scene_hoist_user_drive_law.py"]
     assert "Drive law of scene 'hoist_user_drive_law'" in text
     assert "def rope_stretch(t, *, out=None):" in text and "eval(" not in text
-    from crane_sym import specialize
+    from crane_sym.scenes import specialize
     shipped = specialize.shipped_scene_modules()
     assert shipped["scene_hoist_user_drive_law.py"] == text
 

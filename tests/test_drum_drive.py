@@ -12,14 +12,14 @@ import pytest
 import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
 
-from crane_sym.audit import (AGREEMENTS, CONFIRMATIONS, UNEXPLAINED,
+from crane_sym.audit.verdicts import (AGREEMENTS, CONFIRMATIONS, UNEXPLAINED,
                              audit_formula)
 from crane_sym.derivations import drum_drive
 from crane_sym.derivations.drum_drive import model as m
 from crane_sym.derivations.drum_drive import published as pub
 from crane_sym.derivations.drum_drive.report import _rhs_functions
-from crane_sym.lagrange import lagrange_equations
-from crane_sym.scenes import scenes_directory
+from crane_sym.mechanics.lagrange import lagrange_equations
+from crane_sym.scenes.reading import scenes_directory
 
 integrate = pytest.importorskip("scipy.integrate")
 
@@ -110,7 +110,7 @@ DERIVATION = drum_drive.ID
 
 @pytest.fixture(scope="module")
 def scene():
-    from crane_sym.scenes import load_scene
+    from crane_sym.scenes.reading import load_scene
     return load_scene(SCENE)
 
 
@@ -391,7 +391,7 @@ def test_example_against_the_papers_fig3(report):
 
 
 def test_scene_loads_and_runs(scene, tmp_path):
-    from crane_sym.scene_run import run_scene
+    from crane_sym.scenes.run import run_scene
     assert scene.parameters["C1"] == 2e4 and scene.parameters["D"] == 0.5
     assert scene.options["duration"] == 10.0
     rep, (path,) = run_scene(scene, tmp_path)
@@ -430,7 +430,7 @@ def test_generated_state_derivative_against_the_symbolic_system(derivation):
 def test_undamped_scene_runs_its_own_state_derivative(tmp_path):
     """drum_drive_undamped: the scene's module alone, no damping left in it, the
     integrator within 1e-8 of the exact (matrix exponential) solution."""
-    from crane_sym.scene_run import run_scene
+    from crane_sym.scenes.run import run_scene
     rep, (path,) = run_scene("drum_drive_undamped", tmp_path)
     v = rep.values
     assert path.is_file() and (tmp_path / "scene_drum_drive_undamped.py").is_file()

@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 
 import crane_sym.generated.drum_drive as gen
 from crane_sym.derivations.drum_drive.hard_cases import hard_cases
-from crane_sym.reference import accuracy
+from crane_sym.bench.accuracy import accuracy
 
 EPS = np.finfo(float).eps
 

@@ -1,4 +1,4 @@
-"""Tests for crane_sym.duhamel and crane_sym.loads.
+"""Tests for crane_sym.mechanics.duhamel and crane_sym.mechanics.loads.
 
 The machinery's symbolic solutions are checked by substitution into the ODE,
 against numerical quadrature of the convolution with a textbook kernel
@@ -14,9 +14,9 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import loads
-from crane_sym.duhamel import duhamel, duhamel_laplace, free_response, impulse_response
-from crane_sym.extrema import SYMBOLIC, maximum_on_interval
+from crane_sym.mechanics import loads
+from crane_sym.mechanics.duhamel import duhamel, duhamel_laplace, free_response, impulse_response
+from crane_sym.mechanics.extrema import SYMBOLIC, maximum_on_interval
 
 integrate = pytest.importorskip("scipy.integrate")
 

@@ -1,4 +1,4 @@
-"""The piecewise-linear run in mpmath (crane_sym.exact_phases): the numbers a
+"""The piecewise-linear run in mpmath (crane_sym.mechanics.exact_phases): the numbers a
 scene's module prints do not depend on the machine's floating-point libraries."""
 import math
 import types
@@ -7,13 +7,15 @@ import mpmath
 import numpy as np
 import pytest
 
-from crane_sym import closed_forms, exact_phases, piecewise_linear
+from crane_sym.mechanics import closed_forms
+from crane_sym.mechanics import exact_phases
+from crane_sym.mechanics import piecewise_linear
 from crane_sym.derivations.hoist_brakes.elastic import table1_hoist, torque_run
 from crane_sym.derivations.portal_travel.startup import BACKLASH, CHOSEN, drive, reduced
-from crane_sym.exact_phases import exact_form, exact_table, illinois, simulate_exact
-from crane_sym.phase_table import HybridRun
-from crane_sym.scenes import load_scene
-from crane_sym.tabulated import render_tabulated
+from crane_sym.mechanics.exact_phases import exact_form, exact_table, illinois, simulate_exact
+from crane_sym.mechanics.phase_table import HybridRun
+from crane_sym.scenes.reading import load_scene
+from crane_sym.codegen.tabulated import render_tabulated
 
 
 def _hoist_run() -> HybridRun:

@@ -1,10 +1,10 @@
-"""Tests for crane_sym.extrema: symbolic and interval-verified maxima."""
+"""Tests for crane_sym.mechanics.extrema: symbolic and interval-verified maxima."""
 import mpmath
 import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym.extrema import (INTERVAL, SYMBOLIC, maximum_on_interval,
+from crane_sym.mechanics.extrema import (INTERVAL, SYMBOLIC, maximum_on_interval,
                                minimum_on_interval)
 
 t = sp.Symbol("t", real=True)

@@ -19,8 +19,8 @@ from typing import Callable
 import pytest
 
 from crane_sym import output_files
-from crane_sym.cli import Terminated, main
-from crane_sym.scenes import scene_path
+from crane_sym.cli.main import Terminated, main
+from crane_sym.scenes.reading import scene_path
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from crane_sym import registry
-from crane_sym.reference import accuracy
+from crane_sym.bench.accuracy import accuracy
 
 PAPERS = registry.ids()
 

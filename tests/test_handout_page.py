@@ -17,9 +17,9 @@ from pathlib import Path
 
 import pytest
 
-from crane_sym.cli import main
-from crane_sym.handout_html import handout_page, math_pieces
-from crane_sym.walkthrough import walkthrough
+from crane_sym.cli.main import main
+from crane_sym.docs.page import handout_page, math_pieces
+from crane_sym.docs.walkthrough import walkthrough
 
 PAPER = "001"
 #: The flags Chromium needs on a machine with no network and no screen.

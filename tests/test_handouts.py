@@ -14,10 +14,10 @@ import sympy as sp
 from handout_metrics import code_names, metrics
 
 from crane_sym import registry
-from crane_sym.handout_html import math_pieces
-from crane_sym.handout_math import LIMIT, math_errors
+from crane_sym.docs.page import math_pieces
+from crane_sym.docs.numbers import LIMIT, math_errors
 from crane_sym.latex import cyrillic_as_text, latex
-from crane_sym.walkthrough import walkthrough
+from crane_sym.docs.walkthrough import walkthrough
 
 #: What SymPy's str() or its default LaTeX leaves in a text, and internal names.
 LEAKS = ("Derivative(", "Integral(", "Piecewise(", "sqrt(", r"{\left(t \right)}",

@@ -5,9 +5,9 @@ import numpy as np
 import pytest
 
 from crane_sym import registry
-from crane_sym.reference import accuracy
-from crane_sym.scene_run import run_scene
-from crane_sym.scenes import SceneError, load_scene
+from crane_sym.bench.accuracy import accuracy
+from crane_sym.scenes.run import run_scene
+from crane_sym.scenes.reading import SceneError, load_scene
 
 integrate = pytest.importorskip("scipy.integrate")
 
@@ -93,7 +93,7 @@ def test_one_reading_of_table1_for_the_whole_paper(derivation, records):
 
 
 def test_the_braking_time_is_fitted_and_the_fit_shown(records):
-    from crane_sym.fits import fit_of
+    from crane_sym.audit.fits import fit_of
     from crane_sym.derivations.hoist_brakes.published import BRAKING_FIT
     result = fit_of(registry.get(DERIVATION), BRAKING_FIT)
     assert len(result.each) == 8 and result.holds
@@ -107,7 +107,7 @@ def test_a_moved_percentage_leaves_the_fit(derivation):
     """92 % printed as 95 % allows no Δt that the other prints allow: a finding."""
     from dataclasses import replace
     import sympy as sp
-    from crane_sym.audit import audit_formula
+    from crane_sym.audit.verdicts import audit_formula
     f = next(f for f in derivation.published if f.label == "Fig. 11, BF_BB, 0 t (text)")
     moved = replace(f, printed=sp.Eq(f.printed.lhs, sp.Rational(95, 100)), conventions=(
         replace(f.conventions[0], reading=sp.Eq(f.printed.lhs, sp.Rational(95, 100))),))

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import codegen
+from crane_sym.codegen import module as codegen
 from crane_sym.derivations import hoist_startup as pkg
 from crane_sym.derivations.hoist_startup import model as m
 from crane_sym.derivations.hoist_startup import outputs, tables

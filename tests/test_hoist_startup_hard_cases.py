@@ -13,7 +13,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from crane_sym import registry
-from crane_sym.reference import accuracy
+from crane_sym.bench.accuracy import accuracy
 
 ID = "hoist_startup"
 POINTS = 100                                # per case; mpmath at 50+ digits is slow

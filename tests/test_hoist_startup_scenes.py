@@ -8,8 +8,8 @@ import pytest
 
 from crane_sym import registry
 from crane_sym.derivations.hoist_startup import report as hss
-from crane_sym.scene_run import run_scene
-from crane_sym.scenes import SceneError, SceneReport, load_scene, scenes_directory
+from crane_sym.scenes.run import run_scene
+from crane_sym.scenes.reading import SceneError, SceneReport, load_scene, scenes_directory
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 SCENES = ("hoist_fig3", "hoist_fig5", "hoist_drive_laws")

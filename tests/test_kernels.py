@@ -6,8 +6,8 @@ import mpmath
 import numpy as np
 import pytest
 
-from crane_sym import kernels as k
-from crane_sym import phase_kernels as pk
+from crane_sym.kernels import arithmetic as k
+from crane_sym.kernels import phase as pk
 
 rng = np.random.default_rng(7)
 

@@ -1,10 +1,10 @@
-"""crane_sym.modal: the chain's relative dynamic matrix and stable 2×2 eigenvalues."""
+"""crane_sym.mechanics.modal: the chain's relative dynamic matrix and stable 2×2 eigenvalues."""
 import mpmath
 import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym.modal import eigenvalues_2x2, relative_dynamic_matrix
+from crane_sym.mechanics.modal import eigenvalues_2x2, relative_dynamic_matrix
 
 I1, I2, I3, C1, C2, lam = sp.symbols("I1 I2 I3 C1 C2 lambda", positive=True)
 K = sp.Matrix([[C1, -C1, 0], [-C1, C1 + C2, -C2], [0, -C2, C2]])

@@ -10,9 +10,9 @@ nbclient = pytest.importorskip("nbclient")
 nbformat = pytest.importorskip("nbformat")
 
 from crane_sym import registry  # noqa: E402
-from crane_sym.audit import audit  # noqa: E402
-from crane_sym.notebook import render_notebook  # noqa: E402
-from crane_sym.walkthrough import handout_words, relation_tex  # noqa: E402
+from crane_sym.audit.verdicts import audit  # noqa: E402
+from crane_sym.docs.notebook import render_notebook  # noqa: E402
+from crane_sym.docs.walkthrough import handout_words, relation_tex  # noqa: E402
 
 
 #: What raw SymPy output looks like in a cell: its repr, its default LaTeX.

@@ -1,4 +1,4 @@
-"""crane_sym.piecewise_linear: closed forms against expm, event search without a
+"""crane_sym.mechanics.piecewise_linear: closed forms against expm, event search without a
 skipped crossing, and paper 001's Fig. 9 run against solve_ivp with events
 (and its backlash -> 0 limit against the no-backlash closed form)."""
 from dataclasses import replace
@@ -6,9 +6,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from crane_sym.bench_piecewise import integrate_hybrid
+from crane_sym.bench.piecewise import integrate_hybrid
 from crane_sym.derivations.hoist_brakes.elastic import FORWARD, HOLD, OFF, table1_hoist
-from crane_sym.piecewise_linear import closed_form, first_crossing, simulate
+from crane_sym.mechanics.piecewise_linear import closed_form, first_crossing, simulate
 
 linalg = pytest.importorskip("scipy.linalg")
 integrate = pytest.importorskip("scipy.integrate")
@@ -162,10 +162,10 @@ def test_first_crossing_is_never_later_than_a_dense_scan():
         assert abs(form.state(hit, x0) @ w - 0.3) < 1e-8 * (1 + np.abs(g).max())
 
 
-# --- the tabulated response a scene's module carries (crane_sym.phase_table) -------
+# --- the tabulated response a scene's module carries (crane_sym.mechanics.phase_table) -------
 def _scene_module(tmp_path):
-    from crane_sym.scene_run import import_module_file
-    from crane_sym.specialize import scene_files
+    from crane_sym.scenes.run import import_module_file
+    from crane_sym.scenes.specialize import scene_files
     (name, text), = scene_files("hoist_table1").items()
     (tmp_path / name).write_text(text)
     return import_module_file(tmp_path / name)
@@ -175,9 +175,9 @@ def test_scene_module_carries_the_derivation_table(tmp_path):
     """The printed arrays are the run's table rounded to 13 digits, and the
     function is the phases' closed forms to ~1e-12 of the peak."""
     from crane_sym.derivations.hoist_brakes.elastic import hoist_from, torque_run
-    from crane_sym.exact_phases import exact_table
-    from crane_sym.scenes import load_scene
-    from crane_sym.tabulated import rounded
+    from crane_sym.mechanics.exact_phases import exact_table
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.codegen.tabulated import rounded
     module = _scene_module(tmp_path)
     scene = load_scene("hoist_table1")
     table = exact_table(torque_run(scene.parameters, scene.options))
@@ -200,7 +200,7 @@ def test_scene_module_against_solve_ivp(tmp_path):
     """The generated function against DOP853 with events at rtol 1e-12, the
     whole run of the scene (1 s, the rated payload lowered)."""
     from crane_sym.derivations.hoist_brakes.elastic import torque_run
-    from crane_sym.scenes import load_scene
+    from crane_sym.scenes.reading import load_scene
     module = _scene_module(tmp_path)
     scene = load_scene("hoist_table1")
     run = torque_run(scene.parameters, scene.options)
@@ -216,7 +216,7 @@ def test_scene_module_against_solve_ivp(tmp_path):
 def test_table_is_the_run_on_hard_cases(payload, stiffness, backlash_deg):
     """Payload -> 0, tiny and huge stiffness, backlash -> 0: the table (what a
     scene's module evaluates) against the run's own closed forms."""
-    from crane_sym.phase_table import tabulate
+    from crane_sym.mechanics.phase_table import tabulate
     h = table1_hoist(payload, backlash_deg=backlash_deg, stiffness=stiffness)
     run = h.run(50 * np.pi, 1.0, 0.0, 0.1, 0.4)
     table = tabulate(run, h.relative)
@@ -254,8 +254,8 @@ def test_scene_function_rejects_bad_times(tmp_path, bad, match):
 def test_check_flags_a_last_digit_change_of_a_table(tmp_path):
     """generate --check compares bytes: a table number one digit off in its
     last place is stale (the table is solved in mpmath, the same everywhere)."""
-    from crane_sym.module_files import compare
-    from crane_sym.specialize import scene_files
+    from crane_sym.codegen.files import compare
+    from crane_sym.scenes.specialize import scene_files
     files = scene_files("hoist_table1")
     (name, text), = files.items()
     (tmp_path / name).write_text(text, encoding="utf-8")

@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 
-from crane_sym import plots
-from crane_sym.scene_run import run_scene
-from crane_sym.scenes import Panel, list_scenes
+from crane_sym.scenes import plots
+from crane_sym.scenes.run import run_scene
+from crane_sym.scenes.reading import Panel, list_scenes
 
 
 @pytest.fixture(scope="module")
@@ -127,8 +127,8 @@ def test_cyrillic_inside_mathtext_renders():
 
 
 def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
-    from crane_sym.bench_report import plot
-    from crane_sym.bench_rows import GENERATED, INTEGRATOR, BenchRow
+    from crane_sym.bench.report import plot
+    from crane_sym.bench.rows import GENERATED, INTEGRATOR, BenchRow
     rows = [BenchRow("demo", f"f{k}", method, 1e-3 * (1 + j), 100, err, 1.0, err, kind=kind)
             for k in range(6)
             for j, (method, err, kind) in enumerate([("generated", 1e-16, GENERATED),

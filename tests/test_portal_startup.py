@@ -13,13 +13,13 @@ import pytest
 import sympy as sp
 
 from crane_sym import registry
-from crane_sym.bench_piecewise import integrate_hybrid
+from crane_sym.bench.piecewise import integrate_hybrid
 from crane_sym.derivations.portal_travel import published_loads as pl
 from crane_sym.derivations.portal_travel.startup import (CHOSEN, FORWARD, LINEAR, STAND,
                                                          drive, reduced, table1_results)
-from crane_sym.phase_table import HybridRun
-from crane_sym.scene_run import run_scene
-from crane_sym.scenes import SceneError, load_scene
+from crane_sym.mechanics.phase_table import HybridRun
+from crane_sym.scenes.run import run_scene
+from crane_sym.scenes.reading import SceneError, load_scene
 
 DERIVATION = "portal_travel"
 SCENE = Path(__file__).resolve().parents[1] / "derivations" / "portal_travel" / "scenes" \
@@ -175,7 +175,7 @@ def test_bad_scene_data_is_refused_by_name(tmp_path, edit, name):
 
 
 def test_walkthrough_has_the_startup_model(capsys):
-    from crane_sym.cli import main
+    from crane_sym.cli.main import main
     assert main(["walkthrough", "003"]) == 0
     text = capsys.readouterr().out
     for needle in ("lost in the OCR", "start-up, motor speed in the gap",
@@ -198,7 +198,7 @@ def test_slope_ratio_refuses_a_rated_speed_at_or_above_no_load(omega_n):
 def test_a_scene_that_folds_in_a_broken_condition_is_refused(tmp_path):
     """Values folded into a scene module are checked when it is generated."""
     from crane_sym.derivation import Output
-    from crane_sym.specialize import specialize
+    from crane_sym.scenes.specialize import specialize
     d = registry.get("portal_travel")
     scene = load_scene(SCENE)
     broken = replace(scene, outputs=("startup_slope_ratio",),

@@ -11,10 +11,10 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym.audit import audit_formula
-from crane_sym.cli import main
-from crane_sym.scene_run import run_scene
-from crane_sym.scenes import SceneError, load_scene
+from crane_sym.audit.verdicts import audit_formula
+from crane_sym.cli.main import main
+from crane_sym.scenes.run import run_scene
+from crane_sym.scenes.reading import SceneError, load_scene
 
 DERIVATION = "portal_travel"
 SCENES = Path(__file__).resolve().parents[1] / "derivations" / "portal_travel" / "scenes"
@@ -211,7 +211,7 @@ def test_fig10_scene_draws_four_curves(tmp_path):
 
 # --- involute kernels ------------------------------------------------------------------
 def test_involute_is_stable_where_tan_minus_angle_cancels():
-    from crane_sym.involute import inverse_involute, involute_np
+    from crane_sym.mechanics.involute import inverse_involute, involute_np
     # down to 1e-100, where a³/3 is still a normal double
     a = np.concatenate([np.logspace(-100, 0, 300), np.linspace(0.55, 1.55, 50)])
     got = involute_np(a)
@@ -299,7 +299,7 @@ def test_max_support_load_is_the_derived_statics(gen, derivation):
 
 
 def test_exceedance_probability_in_the_far_tail_against_mpmath():
-    from crane_sym.load_statistics import (exceedance_probability, level_for_exceedance,
+    from crane_sym.mechanics.load_statistics import (exceedance_probability, level_for_exceedance,
                                            log_exceedance_probability)
     from crane_sym.derivations.portal_travel.tables import table3_normal
     mean, std = table3_normal("vertical pressure", "ship-to-store")
@@ -338,7 +338,7 @@ def test_walkthrough_runs_through_form1_then_the_loads(capsys):
 # --- accuracy on the hard cases ---------------------------------------------------
 def test_closed_forms_on_a_hard_case_within_target(gen, derivation):
     from crane_sym.derivations.portal_travel.hard_cases import hard_cases
-    from crane_sym.reference import accuracy
+    from crane_sym.bench.accuracy import accuracy
     cases = hard_cases(points=12)
     for case in ("small angles alpha 1e-4..1e-1", "large tooth numbers 150..1e5"):
         for name in ("operating_pressure_angle", "shift_sum", "centre_distance",

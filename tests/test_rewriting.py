@@ -1,8 +1,8 @@
-"""Rewrite rules of crane_sym.rewriting that are not covered by a paper's tests."""
+"""Rewrite rules of crane_sym.codegen.rewriting that are not covered by a paper's tests."""
 import sympy as sp
 from sympy.codegen.cfunctions import log1p
 
-from crane_sym.rewriting import log1p_form
+from crane_sym.codegen.rewriting import log1p_form
 
 
 def test_log1p_form_keeps_log_of_a_ratio_whole():

@@ -1,4 +1,4 @@
-"""crane_sym.sampled_load against mpmath references derived by crane_sym.duhamel.
+"""crane_sym.mechanics.sampled_load against mpmath references derived by crane_sym.mechanics.duhamel.
 
 Error norm, unless a test says otherwise: the worst |computed - exact| over
 the checked samples divided by the peak |exact| over the same samples, for x
@@ -16,9 +16,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from hypothesis.extra.numpy import arrays
 
-from crane_sym import sampled_load as sl
-from crane_sym.bench_sampled import mp_exact, reference, samples
-from crane_sym.duhamel import duhamel
+from crane_sym.mechanics import sampled_load as sl
+from crane_sym.bench.sampled import mp_exact, reference, samples
+from crane_sym.mechanics.duhamel import duhamel
 
 EPS = 2.0 ** -52
 TOL = 1e-13
@@ -195,7 +195,7 @@ def test_compensated_sum_is_what_keeps_long_records_accurate():
 # --- piecewise-linear loads: exactness ----------------------------------------------
 @pytest.fixture(scope="module")
 def one_segment():
-    """x, x' after a time s under S = a + m s from (x0, v0), by crane_sym.duhamel."""
+    """x, x' after a time s under S = a + m s from (x0, v0), by crane_sym.mechanics.duhamel."""
     t = sp.Symbol("t", nonnegative=True)
     W = sp.Symbol("Omega", positive=True)
     a, m, x0, v0 = sp.symbols("a m x0 v0", real=True)
@@ -355,7 +355,7 @@ def test_response_is_linear_in_the_load(steps, S1, S2, a, b, Omega, uniform):
 def test_chunks_do_not_change_the_response(monkeypatch, uniform):
     """Chunks of 128 samples and one chunk for the whole record agree to a few
     ulp of the peak (a ramp-hold with a jump, read off both states)."""
-    from crane_sym import sampled_states
+    from crane_sym.mechanics import sampled_states
     n = 5001
     t = np.arange(n) * 1e-3
     S = np.where(t < 2.0, t, 2.0) + np.where(t > 3.0, 0.5, 0.0)

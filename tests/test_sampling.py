@@ -10,9 +10,9 @@ import pytest
 import sympy as sp
 
 from crane_sym import registry
-from crane_sym.audit import definitions
-from crane_sym.checks import FAIL, PASS, numeric_equivalence
-from crane_sym.sampling import SEPARATION, PointSampler, physical_definitions
+from crane_sym.audit.verdicts import definitions
+from crane_sym.audit.checks import FAIL, PASS, numeric_equivalence
+from crane_sym.audit.sampling import SEPARATION, PointSampler, physical_definitions
 
 
 def _formula(d, label):

@@ -12,10 +12,10 @@ import pytest
 from sympy.physics.units import mass
 
 from crane_sym import registry
-from crane_sym.cli import main
-from crane_sym.scene_options import (REQUIRED, OptionError, SceneCheck, SceneOption,
+from crane_sym.cli.main import main
+from crane_sym.scenes.options import (REQUIRED, OptionError, SceneCheck, SceneOption,
                                      options_for, read_options)
-from crane_sym.scenes import SceneError, list_scenes, load_scene, scene_path
+from crane_sym.scenes.reading import SceneError, list_scenes, load_scene, scene_path
 
 ROOT = Path(__file__).resolve().parents[1]
 LAW = "hoist_user_drive_law"

@@ -1,4 +1,4 @@
-"""Tests for crane_sym.scenes and travel_braking.scene_report."""
+"""Tests for crane_sym.scenes.reading and travel_braking.scene_report."""
 import math
 import os
 from pathlib import Path
@@ -6,9 +6,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from crane_sym.scenes import (Scene, SceneError, SceneReport, format_quantity,
+from crane_sym.scenes.reading import (Scene, SceneError, SceneReport, format_quantity,
                               list_scenes, load_scene, scenes_directory)
-from crane_sym.scene_run import run_scene
+from crane_sym.scenes.run import run_scene
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"
 

@@ -5,8 +5,10 @@ import importlib.util
 import numpy as np
 import pytest
 
-from crane_sym import registry, scenes, specialize
-from crane_sym.cli import main
+from crane_sym import registry
+from crane_sym.scenes import reading as scenes
+from crane_sym.scenes import specialize
+from crane_sym.cli.main import main
 
 
 @pytest.fixture(scope="module")
@@ -54,7 +56,7 @@ def test_scene_module_is_smaller_and_takes_time_only(scene):
 def test_shipped_scene_modules_are_generated_and_fresh(scene):
     files = specialize.shipped_scene_modules()
     assert "scene_overhead_crane_50t.py" in files
-    from crane_sym import module_files
+    from crane_sym.codegen import files as module_files
     on_disk = module_files.default_directory() / "scene_overhead_crane_50t.py"
     assert on_disk.read_text() == files["scene_overhead_crane_50t.py"]
 

@@ -10,11 +10,11 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from crane_sym import sweep
-from crane_sym.cli import main
-from crane_sym.scenes import load_scene
-from crane_sym.sweep import run_sweep
-from crane_sym.sweep_spec import plan
+from crane_sym.sweep import grid as sweep
+from crane_sym.cli.main import main
+from crane_sym.scenes.reading import load_scene
+from crane_sym.sweep.grid import run_sweep
+from crane_sym.sweep.spec import plan
 
 xr = pytest.importorskip("xarray")
 DONE_WHEN = ["sweep", "overhead_crane_50t", "--vary", "m1=1:100:200:log", "--vary",
@@ -149,8 +149,8 @@ def test_unknown_output_and_missing_time_are_named(tmp_path, capsys):
 def test_drum_drive_response_without_closed_form_is_swept_per_design(tmp_path):
     """Paper 004: max |y| of the Fig. 3 start, one integration per design; at
     the scene's own design it is what `crane-sym run` reports (rtol 1e-10)."""
-    from crane_sym.scene_run import run_scene
-    from crane_sym.scenes import scene_path
+    from crane_sym.scenes.run import run_scene
+    from crane_sym.scenes.reading import scene_path
     text = scene_path("drum_drive_example").read_text(encoding="utf-8")
     short = tmp_path / "drum_short.toml"
     short.write_text(text.replace('name = "drum_drive_example"', 'name = "drum_short"')
@@ -180,7 +180,7 @@ def test_certified_enclosure_holds_the_grid_maximum(tmp_path, capsys):
 def test_certified_maximum_between_grid_points_is_above_the_grid(tmp_path):
     """elastic_force(t = 0.3 s) peaks inside the box: a coarse grid misses the
     peak, the enclosure holds it; a fine grid near it lands inside."""
-    from crane_sym.sweep_certify import certify, prepare
+    from crane_sym.sweep.certify import certify, prepare
     scene = load_scene("overhead_crane_50t")
     coarse = plan(scene, ["m1=1:100:12:log", "c=1e6:1e7:12"], ["elastic_force"], ["t=0.3"])
     task = prepare(coarse, 1e-5)
@@ -206,9 +206,9 @@ def test_certify_refuses_an_output_without_an_enclosure(tmp_path, capsys):
 def test_bench_integrated_peak_matches_the_closed_form_at_1e_9(index):
     """The bench's per-design alternative reaches the accuracy it is matched
     at, on each case a paper declares (SWEEP_BENCH_CASES)."""
-    from crane_sym import bench_sweep
-    from crane_sym.bench_cases import sweep_cases
-    from crane_sym.scenes import load_scene
+    from crane_sym.bench import sweeps as bench_sweep
+    from crane_sym.bench.cases import sweep_cases
+    from crane_sym.scenes.reading import load_scene
     paper, case = sweep_cases()[index]
     chosen, f, jac, y0f, quantity, names = bench_sweep._prepared(paper, case)
     base = dict(load_scene(case.scene).parameters) if case.scene else dict(case.fixed)
@@ -226,7 +226,7 @@ def test_bench_integrated_peak_matches_the_closed_form_at_1e_9(index):
 def test_time_window_maximum_approaches_the_closed_form_peak_and_is_certified():
     """max over t of eq. (14) is peak_elastic_force: the sampled window stays
     below it and close; the certified box with time as a side encloses it."""
-    from crane_sym.sweep_certify import certify, prepare
+    from crane_sym.sweep.certify import certify, prepare
     chosen = plan(load_scene("overhead_crane_50t"), ["m1=1:100:20:log", "P_t=5:50:20"],
                   ["elastic_force", "peak_elastic_force"], ["t=0:1.5:1501"])
     assert chosen.window.name == "t" and chosen.window.n == 1501
@@ -251,7 +251,7 @@ def test_001_piecewise_peak_is_sweepable(tmp_path):
     """Paper 001's Fig. 9 peak (a piecewise-linear run per design, numeric
     closed forms) over stiffness and backlash: at Table 1's design it is the
     peak the scene reports (exact Jordan forms), and more backlash hits harder."""
-    from crane_sym.scene_run import run_scene
+    from crane_sym.scenes.run import run_scene
     scene = load_scene("hoist_table1")
     chosen = plan(scene, ["c=2e4:4e4:2", "delta=1:3:2"], ["peak_elastic_gearbox_torque"])
     assert chosen.output("peak_elastic_gearbox_torque").kind == "simulated"
@@ -300,7 +300,7 @@ def test_an_axis_only_some_outputs_depend_on_is_said_in_the_summary(tmp_path, ca
 
 def _sweep(tmp_path, *argv):
     """JSON and text summaries of one sweep, the plan and result behind them."""
-    from crane_sym import sweep_report
+    from crane_sym.sweep import report as sweep_report
     chosen = plan(load_scene(argv[0]), *argv[1:])
     result = run_sweep(chosen, tmp_path, scheduler="synchronous")
     data = sweep_report.summary(result)
@@ -328,7 +328,7 @@ def test_one_unit_per_quantity_in_text_json_dataset_and_png(tmp_path):
         assert ds[name].attrs["display_to_SI"] == 1e3
     assert {a: ds[a].attrs["units"] for a in ("m1", "P_t")} == \
         {a: e["unit"] for a, e in data["axes"].items()} == {"m1": "t", "P_t": "kN"}
-    from crane_sym.sweep_report import figure, labels
+    from crane_sym.sweep.report import figure, labels
     assert labels(chosen) == {"m1": "$m_{1}$ [t]", "P_t": "$P_{t}$ [kN]",
                               "peak_elastic_force": r"$F_{\max}$ [kN]",
                               "elastic_force": "elastic force [kN]", "t": "$t$ [s]"}
@@ -350,7 +350,7 @@ def test_a_dimensionless_output_prints_no_bare_1(tmp_path):
     assert re.search(r"max [\d.]+ at v0 = ", text) and not re.search(r"\d 1\b", text)
     attrs = xr.open_zarr(result.dataset)["dynamic_coefficient_from_weight_a1"].attrs
     assert attrs["units"] == attrs["display_units"] == ""
-    from crane_sym.sweep_report import figure, labels
+    from crane_sym.sweep.report import figure, labels
     label = labels(chosen)
     assert label["v0"] == "$v_{0}$ [m/s]" and label["t_n"] == r"$t_\mathrm{п}$ [s]"
     assert label["dynamic_coefficient_from_weight_a1"] == "dynamic coefficient from weight a1"
@@ -380,7 +380,7 @@ def test_a_time_window_says_max_over_t_and_records_the_window(tmp_path):
     assert "t=" not in ds.attrs["fixed_SI"] and "m2=110000.0" in ds.attrs["fixed_SI"]
     assert ds["elastic_force"].attrs["cell_methods"] == "t: maximum"
     assert "cell_methods" not in ds["peak_elastic_force"].attrs
-    from crane_sym.sweep_report import figure
+    from crane_sym.sweep.report import figure
     fig = figure(result)
     assert fig.axes[1].get_ylabel() == "elastic force [kN], max over $t$ in [0, 1500] ms"
     assert "max over t in [0, 1500] ms" in fig.get_suptitle()

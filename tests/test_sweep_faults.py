@@ -17,12 +17,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from crane_sym import sweep_store
-from crane_sym.cli import Terminated, main
+from crane_sym.sweep import store as sweep_store
+from crane_sym.cli.main import Terminated, main
 from crane_sym.output_files import Stage
-from crane_sym.scenes import load_scene
-from crane_sym.sweep import check_grid, run_sweep
-from crane_sym.sweep_spec import plan
+from crane_sym.scenes.reading import load_scene
+from crane_sym.sweep.grid import check_grid, run_sweep
+from crane_sym.sweep.spec import plan
 
 xr = pytest.importorskip("xarray")
 SCENE = "overhead_crane_50t"
@@ -265,7 +265,7 @@ def test_what_a_late_worker_writes_never_opens_as_a_dataset(tmp_path, monkeypatc
     """A worker of a lost scheduler may write its block after the cleanup: into
     the hidden ``.partial`` temporary, chunk files only (the metadata is this
     process's to write), which xr.open_zarr refuses."""
-    from crane_sym import sweep
+    from crane_sym.sweep import grid as sweep
     made = []
     real_path = Stage.path
 

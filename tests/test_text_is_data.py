@@ -8,9 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from crane_sym.cli import main
-from crane_sym.scene_run import import_module_file
-from crane_sym.scenes import scene_path
+from crane_sym.cli.main import main
+from crane_sym.scenes.run import import_module_file
+from crane_sym.scenes.reading import scene_path
 
 TITLES = [
     'x"""; __import__("os").system("touch PWNED"); """',

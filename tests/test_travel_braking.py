@@ -8,9 +8,11 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import codegen, module_files, registry
-from crane_sym.cli import main
-from crane_sym.reference import accuracy
+from crane_sym import registry
+from crane_sym.codegen import module as codegen
+from crane_sym.codegen import files as module_files
+from crane_sym.cli.main import main
+from crane_sym.bench.accuracy import accuracy
 
 integrate = pytest.importorskip("scipy.integrate")
 
@@ -202,8 +204,8 @@ def test_exact_phases_on_request_reach_an_ulp_at_long_times(derivation, tmp_path
     once and stays within twice the condition bound)."""
     import importlib.util
 
-    from crane_sym.codegen import render_module
-    from crane_sym.rewriting import rules_for
+    from crane_sym.codegen.module import render_module
+    from crane_sym.codegen.rewriting import rules_for
     out = derivation.output("elastic_force")
     t = derivation.symbols["t"].expr
     path = tmp_path / "exact_phase_module.py"

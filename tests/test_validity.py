@@ -17,11 +17,11 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import plots
-from crane_sym.crossings import first_reaching
-from crane_sym.panels import Panel, SceneReport, Span, outside, valid_mask
-from crane_sym.scene_run import import_module_file, run_scene
-from crane_sym.scenes import SceneError, load_scene, scenes_directory
+from crane_sym.scenes import plots
+from crane_sym.mechanics.crossings import first_reaching
+from crane_sym.scenes.panels import Panel, SceneReport, Span, outside, valid_mask
+from crane_sym.scenes.run import import_module_file, run_scene
+from crane_sym.scenes.reading import SceneError, load_scene, scenes_directory
 
 pytest.importorskip("scipy")
 
@@ -233,7 +233,7 @@ def test_drum_slip_is_warned(tmp_path):
 def test_a_refused_law_leaves_no_folder(tmp_path):
     """Defect (b): a pick-up law that ends at a negative speed is refused on
     reading, so `crane-sym run` makes no folder."""
-    from crane_sym.cli import main
+    from crane_sym.cli.main import main
     text = HOIST.format(duration="1 s", points=101).replace("[0.5, -2.0]", "[0.5, -20.0]")
     path = _write(tmp_path, text, "backwards")
     with pytest.raises(SceneError, match=r"\[drive_law\] .*v0 > 0, got -1/16"):

@@ -1,4 +1,4 @@
-"""Tests for crane_sym.variational.
+"""Tests for crane_sym.mechanics.variational.
 
 ``euler_poisson`` implements the Euler–Poisson sum itself; SymPy's
 ``euler_equations`` is the independent route it is checked against.
@@ -7,7 +7,7 @@ import pytest
 import sympy as sp
 from sympy.calculus.euler import euler_equations
 
-from crane_sym.variational import euler_poisson, solve_boundary_value
+from crane_sym.mechanics.variational import euler_poisson, solve_boundary_value
 
 t = sp.Symbol("t", real=True)
 u = sp.Function("u")(t)

@@ -1,4 +1,4 @@
-"""Tests for crane_sym.walkthrough against the real travel_braking derivation."""
+"""Tests for crane_sym.docs.walkthrough against the real travel_braking derivation."""
 import copy
 import dataclasses
 import re
@@ -7,10 +7,10 @@ import pytest
 import sympy as sp
 
 from crane_sym import registry
-from crane_sym.audit import NOT_CHECKABLE, AuditRecord, audit
-from crane_sym.handout_verdicts import verdict_name
+from crane_sym.audit.verdicts import NOT_CHECKABLE, AuditRecord, audit
+from crane_sym.docs.verdicts import verdict_name
 from crane_sym.published import PublishedFormula
-from crane_sym.walkthrough import render, walkthrough
+from crane_sym.docs.walkthrough import render, walkthrough
 
 ID = "travel_braking"
 

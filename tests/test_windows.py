@@ -1,4 +1,4 @@
-"""Window pieces and entire functions (crane_sym.windows, crane_sym.entire):
+"""Window pieces and entire functions (crane_sym.codegen.windows, crane_sym.codegen.entire):
 the rewritten expressions equal the derived ones, and the generated helpers
 are accurate on both sides of their cutoff."""
 import mpmath
@@ -6,12 +6,12 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym import codegen
-from crane_sym.duhamel import duhamel
-from crane_sym.entire import Z, closed_form, entire, entire_node, laurent, plan
-from crane_sym.loads import PiecewiseLoad, ramp
-from crane_sym.reference import reference_value
-from crane_sym.windows import split_windows, window_pieces
+from crane_sym.codegen import module as codegen
+from crane_sym.mechanics.duhamel import duhamel
+from crane_sym.codegen.entire import Z, closed_form, entire, entire_node, laurent, plan
+from crane_sym.mechanics.loads import PiecewiseLoad, ramp
+from crane_sym.bench.accuracy import reference_value
+from crane_sym.codegen.windows import split_windows, window_pieces
 
 t = sp.Symbol("t", nonnegative=True)
 W, c, v = sp.symbols("Omega c v", positive=True)

@@ -5,12 +5,12 @@ paper (``report.example_report``): it gives the simulation-only values of
 the model (masses and resistances that no generated function takes), the
 mass of the run without loads and, optionally, the integrator. A scene that
 asks for the state derivative (``report_state``) gives the constant load on
-the run. ``crane_sym.scenes.load_scene`` reads them all before any file is
+the run. ``crane_sym.scenes.reading.load_scene`` reads them all before any file is
 written.
 """
 from __future__ import annotations
 
-from crane_sym.scene_options import SceneCheck, SceneOption, from_symbol
+from crane_sym.scenes.options import SceneCheck, SceneOption, from_symbol
 
 from .model import MODEL_SYMBOLS
 

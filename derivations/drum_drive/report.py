@@ -105,7 +105,7 @@ def example_report(scene, module):
 
     Parameters
     ----------
-    scene : crane_sym.scenes.Scene
+    scene : crane_sym.scenes.reading.Scene
         SI parameters of the outputs; settings (``options.SCENE_OPTIONS``, SI)
         ``duration``, ``points``, the simulation-only values ``SIM_OPTIONS``,
         ``m_L_empty`` (mass of the run without loads) and ``method`` of
@@ -116,7 +116,7 @@ def example_report(scene, module):
 
     Returns
     -------
-    crane_sym.scenes.SceneReport
+    crane_sym.scenes.reading.SceneReport
         ``values`` (SI): ``omega_1``, ``omega_2`` (chain), ``f_loaded_i``,
         ``f_empty_i`` (model frequencies, Hz), ``y_max``, ``y_swing`` (after 1 s),
         ``F1_max``, ``F2_min``, ``v_end``, ``margin_min``, ``running_*``,
@@ -130,8 +130,8 @@ def example_report(scene, module):
     from scipy.integrate import solve_ivp
 
     from crane_sym import registry
-    from crane_sym.panels import outside
-    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+    from crane_sym.scenes.panels import outside
+    from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
     d = registry.get(scene.derivation)
     p, o = dict(scene.parameters), scene.settings

@@ -11,8 +11,8 @@ real part, 0 to rounding when the damping is switched off.
 """
 from __future__ import annotations
 
-from crane_sym.scenes import Panel, SceneReport
-from crane_sym.scenes import format_quantity as fq
+from crane_sym.scenes.reading import Panel, SceneReport
+from crane_sym.scenes.reading import format_quantity as fq
 
 from .model import COORDS
 
@@ -77,7 +77,7 @@ def _displacement_panels(augmented, n: int, times, y) -> list:
     import numpy as np
     from scipy.linalg import expm
 
-    from crane_sym.scenes import Panel
+    from crane_sym.scenes.reading import Panel
 
     duration = float(times[-1])
     centred = y - y.mean()

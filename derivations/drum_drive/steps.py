@@ -12,9 +12,9 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.lagrange import lagrange_equations
-from crane_sym.modal import eigenvalues_2x2, relative_dynamic_matrix
-from crane_sym.odes import solve_constant_coefficient
+from crane_sym.mechanics.lagrange import lagrange_equations
+from crane_sym.mechanics.modal import eigenvalues_2x2, relative_dynamic_matrix
+from crane_sym.mechanics.odes import solve_constant_coefficient
 
 from . import published as pub
 from .model import (

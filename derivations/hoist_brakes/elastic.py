@@ -1,6 +1,6 @@
 """The elasto-kinetic emergency stop of Fig. 9: two inertias, gearbox stiffness,
 coupling backlash, brakes as delayed steps that stick, solved phase by phase in
-closed form by ``crane_sym.piecewise_linear``.
+closed form by ``crane_sym.mechanics.piecewise_linear``.
 
 Everything is reduced to the motor shaft; the direction of lowering is +.
 
@@ -21,8 +21,8 @@ from typing import Any, Mapping
 import numpy as np
 
 from crane_sym.derivation import Derivation
-from crane_sym.phase_table import HybridRun, largest, values
-from crane_sym.piecewise_linear import Guard, PiecewiseResult
+from crane_sym.mechanics.phase_table import HybridRun, largest, values
+from crane_sym.mechanics.piecewise_linear import Guard, PiecewiseResult
 from crane_sym.sensitivity import Chosen, sweep
 
 #: Brake states of one side: no brake yet, sliding forward/backward, stuck.

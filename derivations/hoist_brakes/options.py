@@ -1,13 +1,13 @@
 """What a scene of paper 001 takes in ``[options]``, and what is checked on load.
 
 Beside ``duration`` and ``points``, a scene says whether its payload may
-exceed the rated one (``payload_limit``); ``crane_sym.scenes.load_scene``
+exceed the rated one (``payload_limit``); ``crane_sym.scenes.reading.load_scene``
 refuses a payload above the rated one, before any file is written, unless
 the scene allows it.
 """
 from __future__ import annotations
 
-from crane_sym.scene_options import SceneCheck, SceneOption
+from crane_sym.scenes.options import SceneCheck, SceneOption
 
 SCENE_OPTIONS = (
     SceneOption("payload_limit", "choice", "the largest payload m_p the scene admits: "

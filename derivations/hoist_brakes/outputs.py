@@ -109,7 +109,7 @@ def outputs(d: Derivation) -> list[Output]:
 
 def tabulated() -> list[TabulatedOutput]:
     """The elasto-kinetic response of Fig. 9 with backlash: its phases depend on
-    the data, so a scene's module carries it as a table (``crane_sym.phase_table``)."""
+    the data, so a scene's module carries it as a table (``crane_sym.mechanics.phase_table``)."""
     return [TabulatedOutput(
         "elastic_gearbox_torque",
         (J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, delta, M_SB, M_BB, t_SB, t_BB, omega1),

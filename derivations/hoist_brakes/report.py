@@ -9,11 +9,11 @@ from __future__ import annotations
 
 
 def scene_report(scene, module):
-    """Numbers and figures of a scene (see ``crane_sym.scenes``) for this model.
+    """Numbers and figures of a scene (see ``crane_sym.scenes.reading``) for this model.
 
     Parameters
     ----------
-    scene : crane_sym.scenes.Scene
+    scene : crane_sym.scenes.reading.Scene
         SI parameters of the hoist (Table 1's names), settings ``duration`` [s]
         and ``points`` (a payload above the rated one was refused on load,
         ``options.py``).
@@ -22,7 +22,7 @@ def scene_report(scene, module):
 
     Returns
     -------
-    crane_sym.scenes.SceneReport
+    crane_sym.scenes.reading.SceneReport
         ``values`` (SI): ``t_stop_hoisting``, ``t_stop_lowering``, ``p``,
         ``backlash_motor``, ``peak_fig9``, ``t_peak_fig9``, ``peak_fig9_payload``;
         panels in the groups "Fig. 5", "Fig. 8", "Fig. 9", "Fig. 11", "Fig. 12" (one PNG each).
@@ -30,8 +30,8 @@ def scene_report(scene, module):
     import numpy as np
 
     from crane_sym.generated import hoist_brakes as gen
-    from crane_sym.scene_run import time_function
-    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+    from crane_sym.scenes.run import time_function
+    from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
     from .elastic import hoist_from
 

@@ -2,7 +2,7 @@
 
 The emergency stop with coupling backlash (Fig. 9) has phases whose number
 and ends depend on the design, so a sweep solves each design's run phase by
-phase in closed form (``elastic.py``, ``crane_sym.piecewise_linear``), with
+phase in closed form (``elastic.py``, ``crane_sym.mechanics.piecewise_linear``), with
 the numeric eigenvector route of the closed forms (each design has new
 matrices; SymPy's exact Jordan form would cost ~0.2 s a design). A sweep of
 it gains only parallelism, not the closed forms' vectorisation.

@@ -1,4 +1,4 @@
-"""Bench cases of paper 002 (``crane_sym.bench_cases``).
+"""Bench cases of paper 002 (``crane_sym.bench.cases``).
 
 - Sweep: the peak factor of the ramp-hold load (48)–(53) over Ω × θ, against
   integrating the relative coordinate (2) through the ramp and 1.1 periods
@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crane_sym.bench_cases import SampledBenchCase, SweepBenchCase
+from crane_sym.bench.cases import SampledBenchCase, SweepBenchCase
 
 
 def _design(values):

@@ -26,9 +26,9 @@ from typing import Any, Sequence
 import sympy as sp
 
 from crane_sym.derivation import Output
-from crane_sym.duhamel import DuhamelResult, duhamel
-from crane_sym.law_tables import piecewise_law as drive_law
-from crane_sym.loads import Piece, PiecewiseLoad, exact_number
+from crane_sym.mechanics.duhamel import DuhamelResult, duhamel
+from crane_sym.scenes.law_tables import piecewise_law as drive_law
+from crane_sym.mechanics.loads import Piece, PiecewiseLoad, exact_number
 
 __all__ = ["DriveLawResponse", "FROM_WEIGHT", "PICKUP", "drive_law", "drive_law_outputs",
            "final_speed", "pickup_speed", "respond"]

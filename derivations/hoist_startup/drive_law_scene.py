@@ -29,12 +29,12 @@ from sympy.physics.units import acceleration, force, length, mass
 from sympy.physics.units import time as _TIME
 
 from crane_sym.derivation import SceneLoad, SpecializedLoad
-from crane_sym.extrema import maximum_on_interval
-from crane_sym.law_tables import LawLimits, check_keys, piecewise_law, read_law_table
-from crane_sym.loads import DEFAULT_TIME, PiecewiseLoad, exact_number
-from crane_sym.panels import valid_mask
-from crane_sym.scenes import Panel, SceneError, SceneReport
-from crane_sym.scenes import format_quantity as fq
+from crane_sym.mechanics.extrema import maximum_on_interval
+from crane_sym.scenes.law_tables import LawLimits, check_keys, piecewise_law, read_law_table
+from crane_sym.mechanics.loads import DEFAULT_TIME, PiecewiseLoad, exact_number
+from crane_sym.scenes.panels import valid_mask
+from crane_sym.scenes.reading import Panel, SceneError, SceneReport
+from crane_sym.scenes.reading import format_quantity as fq
 from crane_sym.symbols import TIME, PhysicalSymbol, SymbolTable
 
 from .drive_law import (FROM_WEIGHT, PICKUP, DriveLawResponse, drive_law_outputs,

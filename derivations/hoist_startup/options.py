@@ -1,7 +1,7 @@
 """What a scene of paper 002 takes in ``[options]``, and what is checked on load.
 
 A scene without a drive law of its own names the figure it reproduces
-(``figure``, one of ``report.FIGURES``); ``crane_sym.scenes.load_scene``
+(``figure``, one of ``report.FIGURES``); ``crane_sym.scenes.reading.load_scene``
 checks, before any file is written, that the scene gives the parameters the
 figure reads and that Omega and tau_0, where the scene gives them with the
 data of (2) or (29), agree with those equations. A scene with a
@@ -15,7 +15,7 @@ from __future__ import annotations
 import importlib
 import math
 
-from crane_sym.scene_options import SceneCheck, SceneOption
+from crane_sym.scenes.options import SceneCheck, SceneOption
 
 from .drive_law_scene import DRIVE_LAW
 from .report import FIGURES, GENERATED

@@ -23,8 +23,8 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation, ODESystem, Output
-from crane_sym.duhamel import duhamel
-from crane_sym.loads import PiecewiseLoad, ramp, step
+from crane_sym.mechanics.duhamel import duhamel
+from crane_sym.mechanics.loads import PiecewiseLoad, ramp, step
 
 from . import model as hs
 from .model import PRINTED_LAWS, C, Omega, g, m1, m2, t, t_n, tau0, theta, v0

@@ -37,11 +37,11 @@ import sympy as sp
 
 from . import drive_law
 from .validity import model_span
-from crane_sym.extrema import maximum_on_interval
-from crane_sym.loads import DEFAULT_TIME, exact_number
-from crane_sym.panels import WARNING
-from crane_sym.scenes import Panel, Scene, SceneError, SceneReport
-from crane_sym.scenes import format_quantity as fq
+from crane_sym.mechanics.extrema import maximum_on_interval
+from crane_sym.mechanics.loads import DEFAULT_TIME, exact_number
+from crane_sym.scenes.panels import WARNING
+from crane_sym.scenes.reading import Panel, Scene, SceneError, SceneReport
+from crane_sym.scenes.reading import format_quantity as fq
 
 GENERATED = "crane_sym.generated.hoist_startup"
 CASES = (drive_law.PICKUP, drive_law.FROM_WEIGHT)
@@ -54,7 +54,7 @@ def _generated() -> ModuleType:
 
 
 def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
-    """Numbers and curves of a paper-002 scene (see ``crane_sym.scenes``).
+    """Numbers and curves of a paper-002 scene (see ``crane_sym.scenes.reading``).
 
     A scene with its own ``[drive_law]`` is evaluated through its own module
     (``drive_law_scene.drive_law_report``); the figure scenes read the
@@ -62,7 +62,7 @@ def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
 
     Parameters
     ----------
-    scene : crane_sym.scenes.Scene
+    scene : crane_sym.scenes.reading.Scene
         SI parameters of its outputs (``Omega``, ``t_n``, ...); settings
         ``figure`` (one of ``"fig3"``, ``"fig5"``, ``"drive_laws"``),
         ``duration``, ``points``. What ``options.SCENE_CHECKS`` checked on
@@ -71,7 +71,7 @@ def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
 
     Returns
     -------
-    crane_sym.scenes.SceneReport
+    crane_sym.scenes.reading.SceneReport
         Always the values ``Omega`` [rad/s] and ``T`` [s]; the others are
         listed by :func:`fig3`, :func:`fig5`, :func:`drive_laws`.
     """

@@ -11,10 +11,10 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.duhamel import impulse_response
-from crane_sym.elimination import relative_coordinate
-from crane_sym.lagrange import lagrange_equations
-from crane_sym.odes import solve_constant_coefficient
+from crane_sym.mechanics.duhamel import impulse_response
+from crane_sym.mechanics.elimination import relative_coordinate
+from crane_sym.mechanics.lagrange import lagrange_equations
+from crane_sym.mechanics.odes import solve_constant_coefficient
 
 from .model import (A_LAW, C1, C2, LAW_SHAPES, PRINTED_LAWS, C, F_r, K, K1, K2, Omega, P,
                     P_at0, P_d, Q, Q_0, Q_at0, S, S_at0, S_f, T, Y, a, a_at0, convolution,

@@ -9,9 +9,9 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.duhamel import duhamel, free_response, impulse_response
-from crane_sym.loads import linear, ramp, rectangular_pulse, step
-from crane_sym.rewriting import cos_pair_to_sin_squared
+from crane_sym.mechanics.duhamel import duhamel, free_response, impulse_response
+from crane_sym.mechanics.loads import linear, ramp, rectangular_pulse, step
+from crane_sym.codegen.rewriting import cos_pair_to_sin_squared
 
 from .model import (C, K, Omega, Pbar, Pbar0, Pbar_f, S, Y, Y2, convolution, d_max, k, m,
                     t, t_max, t_n, theta, theta_half, vt, x, x0, x0_dot, x_max, x_s, x_st)

@@ -5,9 +5,9 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.extrema import maximum_on_interval
+from crane_sym.mechanics.extrema import maximum_on_interval
 from crane_sym.latex import latex
-from crane_sym.variational import euler_poisson
+from crane_sym.mechanics.variational import euler_poisson
 
 from .model import (K_OPT, LATEX_NAMES, PRINTED_LAWS, C, F_ref, J, Omega, P, Q, Q_0, a, a_at0,
                     dQdot_tau0, dk_tau0, g, k3_max, k4_max, k_d, kt_d, m1, m2, t, t3_star,

@@ -25,7 +25,7 @@ slack. Before :math:`t_{lift}` it does not describe the hoist, and its state
 at :math:`t_{lift}` carries what the contact phase got wrong.
 
 :func:`model_span` finds both instants by interval arithmetic
-(``crane_sym.crossings``), not by sampling.
+(``crane_sym.mechanics.crossings``), not by sampling.
 """
 from __future__ import annotations
 
@@ -35,10 +35,10 @@ from dataclasses import dataclass
 import numpy as np
 import sympy as sp
 
-from crane_sym.crossings import first_reaching
-from crane_sym.loads import exact_number
-from crane_sym.panels import WARNING, Span, outside
-from crane_sym.scenes import format_quantity as fq
+from crane_sym.mechanics.crossings import first_reaching
+from crane_sym.mechanics.loads import exact_number
+from crane_sym.scenes.panels import WARNING, Span, outside
+from crane_sym.scenes.reading import format_quantity as fq
 
 from .drive_law import PICKUP, DriveLawResponse
 

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crane_sym.involute import involute_np, tip_shift_np
+from crane_sym.mechanics.involute import involute_np, tip_shift_np
 
 
 def _gear(rng: np.random.Generator, n: int, z_lo: float, z_hi: float,

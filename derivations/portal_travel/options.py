@@ -8,7 +8,7 @@ backlash values, the hold times, the end of the plot and its points (the
 paper has no time symbol, so ``points`` is its own here). The conditions the
 reports need (z_min < z_max, a centre distance the mesh can have, no undercut
 when forbidden, a synchronous speed above the rated one, a plot that outlasts
-the start) are checked by ``crane_sym.scenes.load_scene`` before any file is
+the start) are checked by ``crane_sym.scenes.reading.load_scene`` before any file is
 written; the gear pair through the paper's generated functions, which name
 the value they refuse.
 """
@@ -19,7 +19,7 @@ import importlib
 from sympy import S
 from sympy.physics.units import time
 
-from crane_sym.scene_options import SceneCheck, SceneOption
+from crane_sym.scenes.options import SceneCheck, SceneOption
 
 from .model import SYMBOLS
 

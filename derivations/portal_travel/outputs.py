@@ -13,7 +13,7 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation, Output
-from crane_sym.involute import acos_checked, involute, tip_half_angle, tip_shift
+from crane_sym.mechanics.involute import acos_checked, involute, tip_half_angle, tip_shift
 
 from .model import (G_g, G_pch, G_vs, J_r, L_max, M_v, P_m, P_nom, W_f, W_w, a_w, alpha,
                     alpha_a1, alpha_a2, alpha_tw, c_arm, c_l, d_a1, d_a2, dy, dy1, dy2, ha,

@@ -193,7 +193,7 @@ APPENDIX = [
              reconstructed=True, basis=DEFINITION, basis_note="a name the appendix gives"),
     _data(f"{FORM} appendix, starting guess", "Начальное значение переменной X:=0", F_x0, 0,
           "Mathcad's Find needs a starting value; the toolkit's bracketed solver needs "
-          "none (crane_sym.gear_kernels._tip_shift)"),
+          "none (crane_sym.kernels.gears._tip_shift)"),
     _appendix("Fo", "Fo(x) := ... z + 2- (1 + x + k)",
              sp.Eq(Fo, _Fo), "rebuilt: Fo(x) := z·c/(z + 2·(1 + x + k)), c := cos α",
              reconstructed=True, conventions=(Convention(

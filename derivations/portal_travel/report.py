@@ -14,7 +14,7 @@ def fig10_report(scene, module):
     z_min < z_max checked on load)."""
     import numpy as np
 
-    from crane_sym.scenes import Panel, SceneError, SceneReport, format_quantity as fq
+    from crane_sym.scenes.reading import Panel, SceneError, SceneReport, format_quantity as fq
 
     z_min, z_max = scene.settings["z_min"], scene.settings["z_max"]
     z = np.arange(z_min, z_max + 1, dtype=float)
@@ -57,7 +57,7 @@ def gear_pair_report(scene, module):
     (``options.py``)."""
     import numpy as np
 
-    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+    from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
     q, share = scene.parameters, scene.settings["pinion_share"]
     angle = float(module.operating_pressure_angle())
@@ -104,8 +104,8 @@ def support_report(scene, module):
 
     import numpy as np
 
-    from crane_sym.load_statistics import log_exceedance_probability
-    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+    from crane_sym.mechanics.load_statistics import log_exceedance_probability
+    from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
     from .options import REACH_FROM
     from .tables import table3_normal
@@ -147,7 +147,7 @@ def startup_report(scene, module):
     start steps held for the setting ``holds``; loads and speeds up to ``end``."""
     import numpy as np
 
-    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+    from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
     from crane_sym.generated import portal_travel as gen
 

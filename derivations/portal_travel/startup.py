@@ -1,6 +1,6 @@
 """The start-up of the travel drive with backlash (Fig. 11, Table 1, Fig. 12): three
 masses, two elastic links with backlash, a stepped rheostat start, solved phase by
-phase in closed form by ``crane_sym.piecewise_linear``.
+phase in closed form by ``crane_sym.mechanics.piecewise_linear``.
 
 Everything is reduced to the rim of the running wheels; travel is +.
 
@@ -24,8 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from crane_sym.phase_table import largest, values
-from crane_sym.piecewise_linear import Guard, PiecewiseResult, simulate
+from crane_sym.mechanics.phase_table import largest, values
+from crane_sym.mechanics.piecewise_linear import Guard, PiecewiseResult, simulate
 from crane_sym.sensitivity import Chosen, Sensitivity, sweep
 
 #: Crane states: standing, moving forward, moving back. Link states: driving

@@ -11,7 +11,7 @@ import mpmath
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.involute import (inverse_involute_fn, involute_point, rack_space_width, thickness_at_radius,
+from crane_sym.mechanics.involute import (inverse_involute_fn, involute_point, rack_space_width, thickness_at_radius,
                                 tip_shift_mp)
 
 from .model import (C_eps, C_sa, F_alpha, F_aw, F_ha, F_k, F_k1, F_k2, F_m, F_x1, F_x2,

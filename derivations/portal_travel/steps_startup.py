@@ -6,7 +6,7 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.lagrange import lagrange_equations
+from crane_sym.mechanics.lagrange import lagrange_equations
 
 from .model import (F_peak, J_r, a_cell, t_s, v_gap, P_m, P_nom, W_f, W_w, a_0, b_l, beta_1, c_l, lam, m_d, m_k,
                     n_m, omega_0, omega_n, phi_b, psi_cell, q_step, s_b, v_0, v_n, zeta)

@@ -1,4 +1,4 @@
-"""Bench cases of paper 000 (``crane_sym.bench_cases``).
+"""Bench cases of paper 000 (``crane_sym.bench.cases``).
 
 - Sweep: the peak elastic force (14) over m1 × P_t of scene
   ``overhead_crane_50t``, against integrating the relative coordinate (4)
@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crane_sym.bench_cases import SampledBenchCase, SweepBenchCase
+from crane_sym.bench.cases import SampledBenchCase, SweepBenchCase
 
 
 def _design(values):

@@ -6,7 +6,7 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation, ODESystem, Output
-from crane_sym.elimination import RelativeEquation
+from crane_sym.mechanics.elimination import RelativeEquation
 
 from .model import P_t, W, c, m1, m2, p, t, u, v0, x1, x2
 

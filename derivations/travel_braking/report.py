@@ -8,13 +8,13 @@ from __future__ import annotations
 
 
 def scene_report(scene, module):
-    """Numbers and curves of a scene (see ``crane_sym.scenes``) for this model.
+    """Numbers and curves of a scene (see ``crane_sym.scenes.reading``) for this model.
 
     Uses the generated NumPy modules, not SymPy.
 
     Parameters
     ----------
-    scene : crane_sym.scenes.Scene
+    scene : crane_sym.scenes.reading.Scene
         With SI parameters ``m1, m2, c, P_t, W, v0`` and options
         ``duration`` [s] and ``points``.
     module : module
@@ -23,7 +23,7 @@ def scene_report(scene, module):
 
     Returns
     -------
-    crane_sym.scenes.SceneReport
+    crane_sym.scenes.reading.SceneReport
         Lines to print; ``values`` (SI): ``p``, ``f``, ``F_r``, ``F_max``,
         ``t_max``, ``dynamic_factor``, ``F_max_over_P_t``, ``v1_min``,
         ``v2_min``, ``t_slip_end`` and ``t_v2_zero`` (NaN when not reached
@@ -35,9 +35,9 @@ def scene_report(scene, module):
     import numpy as np
 
     from crane_sym.generated import travel_braking as gen
-    from crane_sym.scene_run import time_function
-    from crane_sym.panels import outside, valid_mask
-    from crane_sym.scenes import Panel, SceneReport, format_quantity as fq
+    from crane_sym.scenes.run import time_function
+    from crane_sym.scenes.panels import outside, valid_mask
+    from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
     q = scene.parameters
     rigid = {k: q[k] for k in ("m1", "m2", "P_t", "W")}

@@ -9,10 +9,10 @@ from __future__ import annotations
 import sympy as sp
 
 from crane_sym.derivation import Derivation
-from crane_sym.elimination import RelativeEquation, relative_coordinate
+from crane_sym.mechanics.elimination import RelativeEquation, relative_coordinate
 from crane_sym.latex import latex
-from crane_sym.lagrange import lagrange_equations
-from crane_sym.odes import ODESolution, solve_constant_coefficient
+from crane_sym.mechanics.lagrange import lagrange_equations
+from crane_sym.mechanics.odes import ODESolution, solve_constant_coefficient
 
 from .model import (A, B, F, F_max, F_r, P_t, W, c, k_d, m1, m2, p, t, t_max, u,
                     u0, u0_dot, v0, v1, v2, x1, x2, x_p)

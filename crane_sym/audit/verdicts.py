@@ -1,0 +1,380 @@
+"""Verdicts on published formulas, from checks that can fail.
+
+For each published formula the audit runs the symbolic, numeric and dimension
+checks on the print as transcribed and keeps that literal result in the record.
+Only when the literal print fails does it try the formula's readings, and only
+the kinds the reading policy allows (``published.READINGS``). The verdict
+names the check that decided, the basis it rests on and, for a finding, its
+cause.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+import sympy as sp
+
+from crane_sym import progress
+from crane_sym.audit.checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome, difference,
+                     dimension_consistency, numeric_equivalence,
+                     symbolic_equivalence)
+from crane_sym.derivation import Derivation
+from crane_sym.audit.fits import fit_of
+from crane_sym.latex import latex
+from crane_sym.audit.machine_read import MachineRead, machine_read
+from crane_sym.published import (ASSUMPTION, CHOSEN, DEFINITION, INTERNAL, READINGS,
+                        RECONSTRUCTED, Cause, Convention, PublishedFormula)
+from crane_sym.audit.sampling import physical_definitions
+from crane_sym.sensitivity import Sensitivity
+
+CONFIRMED = "confirmed"
+CONFIRMED_WITH_CONVENTION = "confirmed_with_convention"
+RESTATED = "restated"
+CONSISTENT = "consistent"
+DISCREPANCY = "discrepancy"
+DIMENSION_ERROR = "dimension_error"
+NOT_CHECKABLE = "not_checkable"
+REMARK = "remark"
+VERDICTS = (CONFIRMED, CONFIRMED_WITH_CONVENTION, RESTATED, CONSISTENT, DISCREPANCY,
+            DIMENSION_ERROR, NOT_CHECKABLE, REMARK)
+#: Verdicts that hold nothing to report: no cause.
+AGREEMENTS = (CONFIRMED, RESTATED)
+#: Verdicts that count as confirmations (never a ``definition`` record, never a
+#: number reproduced only through chosen parameters: that is ``consistent``).
+CONFIRMATIONS = (CONFIRMED, CONFIRMED_WITH_CONVENTION)
+#: What a confirmation rests on, as the summary counts them (``AuditRecord.rests_on``).
+ON_MODEL = "on the model"
+ON_PAPER = "on the paper itself"
+ON_RECONSTRUCTION = "on a reconstruction"
+ON_READING = "on a reading"
+RESTS_ON = (ON_MODEL, ON_PAPER, ON_RECONSTRUCTION, ON_READING)
+#: The cause given to a finding whose formula names none (a test forbids it).
+UNEXPLAINED = "unexplained"
+#: How a record's transcription is described: a reconstruction is never "as printed".
+AS_PRINTED, AS_RECONSTRUCTED = "as printed", "as reconstructed"
+#: The attempt of a record's rejected reading (``PublishedFormula.rejected_target``).
+REJECTED = "rejected reading"
+
+
+@dataclass(frozen=True)
+class Attempt:
+    """One reading of the print (the literal one first) against the derivation."""
+
+    reading: str            # "literal" or the policy's reading kind
+    note: str               # what the reading is
+    matches: bool           # same relation and consistent dimensions
+    summary: str            # one sentence on how it came out
+    derived: str            # LaTeX of the derived relation it was compared with
+    difference: str         # LaTeX of the simplified difference ("" if none or too big)
+    checks: tuple[CheckOutcome, ...]
+
+    def as_dict(self) -> dict:
+        """JSON-ready form."""
+        return {"reading": self.reading, "note": self.note, "matches": self.matches,
+                "summary": self.summary, "derived": self.derived,
+                "difference": self.difference,
+                "checks": [_check_dict(c) for c in self.checks]}
+
+
+@dataclass(frozen=True)
+class AuditRecord:
+    """The verdict on one published formula, with what it rests on."""
+
+    derivation: str
+    label: str
+    verdict: str
+    method: str
+    detail: str
+    checks: tuple[CheckOutcome, ...] = field(default=())
+    basis: str = "model"
+    basis_note: str = ""
+    cause: Cause | None = None
+    printed: str = ""                       # LaTeX as printed
+    note: str = ""                          # the transcriber's note (provenance)
+    attempts: tuple[Attempt, ...] = ()      # literal first, then readings tried
+    reconstructed: bool = False             # the print was rebuilt from OCR damage
+    sensitivity: Sensitivity | None = None  # of a result of chosen parameters
+    paper_reading: str = ""                 # the paper's declared reading it uses
+    duplicate_of: str = ""                  # label of an earlier record, same check
+    target: str = ""                        # the derived step it is checked against
+    machine_read: MachineRead | None = None  # the print read by machine
+
+    @property
+    def transcription(self) -> str:
+        """``"reconstructed from OCR damage"`` or ``"as printed"``."""
+        return "reconstructed from OCR damage" if self.reconstructed else AS_PRINTED
+
+    @property
+    def literal(self) -> Attempt | None:
+        """How the print as printed came out (kept even when a reading decides)."""
+        return self.attempts[0] if self.attempts else None
+
+    @property
+    def reading(self) -> Attempt | None:
+        """The reading of the policy that decided a ``confirmed_with_convention``
+        verdict (never the rejected reading of the paper's declared one)."""
+        return next((a for a in self.attempts[1:] if a.matches and a.reading in READINGS),
+                    None)
+
+    @property
+    def rests_on(self) -> str:
+        """What a confirmation rests on: a reconstruction (of the print or of the
+        model) before a reading (of the policy, or the paper's declared one),
+        before the paper against itself, before the model."""
+        if self.reconstructed or self.basis == RECONSTRUCTED:
+            return ON_RECONSTRUCTION
+        if self.verdict == CONFIRMED_WITH_CONVENTION or self.paper_reading:
+            return ON_READING
+        return ON_PAPER if self.basis == INTERNAL else ON_MODEL
+
+    @property
+    def point(self) -> tuple[tuple[str, str], ...]:
+        """The sampled point at which the literal print fails numerically."""
+        lit = self.literal
+        return next((c.point for c in lit.checks if c.point), ()) if lit else ()
+
+    def as_dict(self) -> dict:
+        """JSON-ready form."""
+        return {"derivation": self.derivation, "label": self.label,
+                "verdict": self.verdict, "method": self.method,
+                "basis": self.basis, "basis_note": self.basis_note,
+                "cause": ({"id": self.cause.id, "sentence": self.cause.sentence}
+                          if self.cause else None),
+                "detail": self.detail, "printed": self.printed,
+                "transcription": self.transcription,
+                "note": self.note, "target": self.target,
+                "paper_reading": self.paper_reading or None,
+                "sensitivity": _sensitivity_dict(self.sensitivity),
+                "duplicate_of": self.duplicate_of or None,
+                "rests_on": self.rests_on if self.verdict in CONFIRMATIONS else None,
+                "machine_read": (self.machine_read.as_dict()
+                                 if self.machine_read is not None else None),
+                "literal": self.literal.as_dict() if self.literal else None,
+                "readings": [a.as_dict() for a in self.attempts[1:]],
+                "point": dict(self.point),
+                "checks": [_check_dict(c) for c in self.checks]}
+
+
+def _sensitivity_dict(s: Sensitivity | None) -> dict | None:
+    if s is None:
+        return None
+    low, high = s.band
+    return {"value": s.value, "band": [low, high], "tolerance": s.spread, "how": s.how,
+            "parameters": [{"name": w.parameter.name, "unit": w.parameter.unit,
+                            "chosen": w.parameter.chosen,
+                            "plausible": [w.parameter.low, w.parameter.high],
+                            "why": w.parameter.why, "at_low": w.at_low,
+                            "at_high": w.at_high} for w in s.swings]}
+
+
+def _check_dict(c: CheckOutcome) -> dict:
+    out = {"method": c.method, "status": c.status, "detail": c.detail}
+    if c.point:
+        out["point"] = dict(c.point)
+    return out
+
+
+@dataclass(frozen=True)
+class _Comparison:
+    """Symbolic then numeric comparison of one reading with the derivation."""
+
+    same: bool
+    method: str
+    outcomes: tuple[CheckOutcome, ...]
+
+
+#: id(derivation) -> (number of steps, definitions): the definitions of its defined
+#: symbols in its data, found once per built derivation.
+_DEFINITIONS: dict[int, tuple[int, dict]] = {}
+
+
+def definitions(d: Derivation) -> dict[sp.Symbol, sp.Expr]:
+    """The defined symbols of ``d`` in its data (``sampling.physical_definitions``),
+    computed once per derivation (again if steps were added since)."""
+    cached = _DEFINITIONS.get(id(d))
+    if cached is None or cached[0] != len(d.steps):
+        cached = (len(d.steps), physical_definitions(d.steps, d.symbols))
+        _DEFINITIONS[id(d)] = cached
+    return cached[1]
+
+
+def _compare(reading: sp.Eq, derived: sp.Eq, d: Derivation,
+             tolerance: float = 0.0) -> _Comparison:
+    num = numeric_equivalence(reading, derived, d.symbols, tol=max(tolerance, 1e-20),
+                              names=d.latex_names, definitions=definitions(d))
+    if tolerance > 0:  # a rounded printed number: only numbers can decide
+        skipped = CheckOutcome("symbolic", INCONCLUSIVE,
+                               f"not tried: the print is rounded (tolerance {tolerance:g})")
+        return _Comparison(num.status == PASS, "numeric", (skipped, num))
+    if num.status == FAIL:  # a refuted relation cannot simplify to the derived one
+        skipped = CheckOutcome("symbolic", INCONCLUSIVE,
+                               "not tried: the numeric check refuted the relation")
+        return _Comparison(False, "numeric", (skipped, num))
+    sym = symbolic_equivalence(reading, derived, d.symbols)
+    if sym.status == PASS:
+        return _Comparison(True, "symbolic", (sym, num))
+    return _Comparison(num.status == PASS, "numeric", (sym, num))
+
+
+def _attempt(d: Derivation, f: PublishedFormula, reading: str, note: str,
+             relation: sp.Eq, target: str) -> tuple[Attempt, _Comparison, CheckOutcome]:
+    derived = d.step(target).statement
+    comp = _compare(relation, derived, d, f.tolerance)
+    dim = dimension_consistency(relation, d.symbols, d.latex_names)
+    matches = comp.same and dim.status == PASS
+    diff = "" if comp.same else _difference_latex(relation, derived, d.latex_names)
+    summary = (f"matches derived step {target} ({comp.method})" if matches
+               else _why_not(comp, dim))
+    attempt = Attempt(reading, note, matches, summary,
+                      latex(derived, symbol_names=d.latex_names), diff,
+                      comp.outcomes + (dim,))
+    return attempt, comp, dim
+
+
+def _difference_latex(relation: sp.Eq, derived: sp.Eq, names: dict) -> str:
+    diff = difference(relation, derived)
+    return "" if diff is None else latex(diff, symbol_names=names)
+
+
+def _convention_note(d: Derivation, f: PublishedFormula, conv: Convention) -> str:
+    """The reading's note; for a fitted value, with the fit shown."""
+    if conv.fit is None:
+        return conv.note
+    return f"{conv.note} ({fit_of(d, conv.fit, f).text(f.label)})"
+
+
+def _band(d: Derivation, f: PublishedFormula, literal: Attempt,
+          how: str) -> tuple[str, Attempt, str]:
+    """A result of chosen parameters against the band they span: ``consistent``
+    inside it, ``discrepancy`` outside; the band's half-width is the tolerance."""
+    sens = d.step(f.target).sensitivity
+    if sens is None or f.printed is None or not f.printed.rhs.is_number:
+        raise ValueError(f"{d.id} {f.label}: a result of chosen parameters is a printed "
+                         f"number whose derived step ({f.target}) carries a sensitivity")
+    value, (low, high) = float(f.printed.rhs), sens.band
+    slack = f.tolerance
+    inside = low - slack * abs(low) <= value <= high + slack * abs(high)
+    check = CheckOutcome(
+        "numeric", PASS if inside else FAIL,
+        f"the printed {value:g} is {'inside' if inside else 'outside'} the band "
+        f"{low:.4g}–{high:.4g} that the chosen parameters span (tolerance ±"
+        f"{100 * sens.spread:.2g} % about {sens.value:.4g}, from their plausible ranges, "
+        f"widened by the print's rounding ±{100 * slack:.2g} %)")
+    attempt = Attempt("sensitivity band", sens.text(), inside, check.detail,
+                      f"{low:.4g} \\ldots {high:.4g}", "", (check,))
+    detail = (f"{how}: {literal.summary} at the chosen parameters; {check.detail}. "
+              f"Sensitivity: {sens.text()}.")
+    return (CONSISTENT if inside else DISCREPANCY), attempt, detail
+
+
+def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
+    """The verdict on one published formula of derivation ``d``."""
+    sensitivity = d.step(f.target).sensitivity if f.kind == CHOSEN else None
+
+    def record(verdict: str, method: str, detail: str,
+               attempts: tuple[Attempt, ...] = ()) -> AuditRecord:
+        cause = None
+        read = any(a.matches for a in attempts[1:])  # the literal print needed a reading
+        if verdict not in AGREEMENTS or read:
+            cause = f.cause or Cause(UNEXPLAINED, f"{d.id} {f.label}: the transcriber "
+                                                  "gave no cause for this finding")
+        checks = tuple(c for a in attempts for c in a.checks)
+        return AuditRecord(d.id, f.label, verdict, method, detail, checks, f.basis,
+                           f.basis_note, cause, f.latex, f.provenance, attempts,
+                           f.reconstructed, sensitivity,
+                           f.paper_reading.text if f.paper_reading else "", "", f.target)
+
+    if f.printed is None:
+        return record(NOT_CHECKABLE, "none", f.not_checkable)
+    how = AS_RECONSTRUCTED if f.reconstructed else AS_PRINTED
+    literal, comp, dim = _attempt(
+        d, f, "literal", "the reconstruction of the damaged print" if f.reconstructed
+        else "the print as printed", f.printed, f.target)
+    if f.kind == CHOSEN:
+        verdict, band, detail = _band(d, f, literal, how)
+        return record(verdict, "numeric", detail, (literal, band))
+    on = f" (on the paper's reading: {f.paper_reading.text})" if f.paper_reading else ""
+    if literal.matches:
+        verdict = RESTATED if f.basis == DEFINITION else CONFIRMED
+        return record(verdict, comp.method, f"{how}, {literal.summary}{on}; "
+                      f"{dim.detail}", (literal,))
+    attempts = [literal]
+    for conv in f.conventions:
+        again, comp_r, _ = _attempt(d, f, conv.kind, _convention_note(d, f, conv),
+                                    conv.reading, conv.compare_to or f.target)
+        attempts.append(again)
+        if again.matches:
+            verdict = RESTATED if f.basis == DEFINITION else CONFIRMED_WITH_CONVENTION
+            return record(verdict, comp_r.method,
+                          f"{how}: {literal.summary}. Read with the {conv.kind} "
+                          f"'{again.note}', it {again.summary}.", tuple(attempts))
+    if f.rejected_target:
+        other, _, _ = _attempt(d, f, REJECTED, f.paper_reading.rejected, f.printed,
+                               f.rejected_target)
+        attempts.append(other)
+    tried = "".join(f" Read with the {a.reading} '{a.note}': {a.summary}."
+                    for a in attempts[1:])
+    if f.rejected_target and attempts[-1].matches:
+        tried += (f" Only the reading this paper rejects ({f.paper_reading.rejected}) "
+                  f"reproduces it; the paper's reading is {f.paper_reading.reading}.")
+    tried += f" Derived form: ${literal.derived}$." + (
+        f" Printed − derived: ${literal.difference}$." if literal.difference else "")
+    if f.kind == ASSUMPTION:
+        return record(REMARK, comp.method if not comp.same else "dimension",
+                      f"a modelling choice the paper states ({f.stated}); {how}: "
+                      f"{literal.summary}.{tried}", tuple(attempts))
+    if dim.status == FAIL:
+        follows = (f"; the relation does follow from step {f.target}, which carries "
+                   "the same error" if comp.same else "")
+        return record(DIMENSION_ERROR, "dimension",
+                      f"{how}: {literal.summary}{follows}.{tried}", tuple(attempts))
+    if comp.outcomes[1].status == FAIL:
+        return record(DISCREPANCY, "numeric", f"{how}: {literal.summary}{on}.{tried}",
+                      tuple(attempts))
+    return record(NOT_CHECKABLE, "none",
+                  "neither check could decide: "
+                  + "; ".join(c.detail for c in literal.checks), tuple(attempts))
+
+
+def _why_not(comp: _Comparison, dim: CheckOutcome) -> str:
+    parts = []
+    if not comp.same:
+        num = comp.outcomes[1]
+        parts.append(num.detail if num.status == FAIL else
+                     "the comparison was inconclusive")
+    if dim.status == FAIL:
+        parts.append("dimensions: " + dim.detail)
+    return "; ".join(parts) or "matches"
+
+
+def _check_key(f: PublishedFormula) -> tuple | None:
+    """What makes two records one check: the same transcription against the same
+    derived step, of the same kind (8.9 and 890 % are one number, printed to
+    different digits)."""
+    if f.printed is None:
+        return None
+    return (f.target, sp.srepr(f.printed), f.kind, f.rejected_target)
+
+
+def audit(d: Derivation) -> list[AuditRecord]:
+    """Verdicts on every published formula of ``d``, in the paper's order, each with
+    its print read by machine against the transcription (``machine_read``); a
+    record that repeats an earlier one's check (the same number printed twice, 8.9
+    and 890 %) names that record in ``duplicate_of`` and is counted once."""
+    records, seen = [], {}
+    for f in d.published:
+        progress.current().step(f"{d.id}: checking printed formula {f.label}")
+        r = replace(audit_formula(d, f), machine_read=machine_read(d, f))
+        key = _check_key(f)
+        if key is not None and key in seen:
+            r = replace(r, duplicate_of=seen[key])
+        elif key is not None:
+            seen[key] = f.label
+        records.append(r)
+    return records
+
+
+__all__ = ["AGREEMENTS", "CONFIRMATIONS", "CONFIRMED", "CONFIRMED_WITH_CONVENTION",
+           "CONSISTENT", "DIMENSION_ERROR", "DISCREPANCY", "NOT_CHECKABLE", "ON_MODEL",
+           "ON_PAPER", "ON_READING", "ON_RECONSTRUCTION", "REMARK", "RESTATED", "RESTS_ON",
+           "UNEXPLAINED", "VERDICTS", "Attempt", "AuditRecord", "Convention",
+           "audit", "audit_formula"]

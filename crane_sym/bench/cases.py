@@ -1,0 +1,96 @@
+"""What a paper offers the benches: cases it declares, the benches discover.
+
+The machinery names no paper, scene or value. A paper that wants a closed form
+of its swept against per-design integration declares :class:`SweepBenchCase`
+values in ``SWEEP_BENCH_CASES``; one with a response a sampled load can
+reproduce declares :class:`SampledBenchCase` values in ``SAMPLED_BENCH_CASES``
+(both in the paper's ``bench_cases.py``, re-exported by its package, as
+``hard_cases``). :func:`sweep_cases` and :func:`sampled_cases` collect them
+through the registry.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Callable, Mapping, Sequence
+
+from crane_sym import registry
+
+__all__ = ["SampledBenchCase", "SweepBenchCase", "sampled_cases", "sweep_cases"]
+
+
+@dataclass(frozen=True)
+class SweepBenchCase:
+    """A closed-form peak swept over two axes against integrating each design.
+
+    Attributes
+    ----------
+    output : str
+        The generated function the sweep maps (time-free, a peak).
+    axes : tuple of str
+        Two ``--vary`` texts with ``{n}`` for the number of values an axis
+        takes (``"m1=1:100:{n}:log"``).
+    scene : str or None
+        A shipped scene that gives every other value; None builds the plan
+        from ``fixed`` and the axes' ``units`` alone.
+    system : str
+        The paper's ODE system a user would integrate instead
+        (``ODESystem.name``), and ``quantity``, the one of its quantities that
+        is the output's time response.
+    design : callable
+        ``design(values)`` for one design's SI values by name: (the system's
+        parameters by name, the ends of the pieces to integrate over, the
+        closed-form peak).
+    response : (str, str) or None
+        A time response of the scene and the ``--at`` that fixes its time, for
+        the parallel-efficiency and cluster measurements (the main case only).
+    fixed, units :
+        With no scene: the values (SI) of the parameters no axis sets, and the
+        unit of each axis.
+    """
+
+    output: str
+    axes: tuple[str, str]
+    scene: str | None
+    system: str
+    quantity: str
+    design: Callable[[Mapping[str, float]], tuple[Mapping[str, float], list[float], float]]
+    response: tuple[str, str] | None = None
+    fixed: Mapping[str, float] = None
+    units: Mapping[str, str] = None
+
+
+@dataclass(frozen=True)
+class SampledBenchCase:
+    """A generated response the sampled-load route reproduces: the response of
+    x'' + Ω²x = S(t) to a load family of ``bench_sampled`` (``family``, with
+    amplitude ``S0`` and time ``t1``), ``closed_form(t)`` the generated
+    function, ``scale`` what turns x into it; ``step`` a power of 2 [s].
+    ``exact()``, where the closed form's inputs are not Ω and S0 themselves,
+    gives the Ω and S0 (mpmath, at the working precision) that its double
+    inputs imply exactly."""
+
+    name: str
+    family: str
+    Omega: float
+    S0: float
+    t1: float
+    step: float
+    closed_form: Callable
+    scale: float
+    exact: Callable[[], tuple] | None = None
+
+
+def sweep_cases() -> list[tuple[str, SweepBenchCase]]:
+    """(paper id, case) of every paper that declares ``SWEEP_BENCH_CASES``."""
+    return [(i, c) for i in registry.ids()
+            for c in getattr(registry.module(i), "SWEEP_BENCH_CASES", ())]
+
+
+def sampled_cases() -> list[tuple[str, SampledBenchCase]]:
+    """(paper id, case) of every paper that declares ``SAMPLED_BENCH_CASES``."""
+    return [(i, c) for i in registry.ids()
+            for c in _call(getattr(registry.module(i), "SAMPLED_BENCH_CASES", ()))]
+
+
+def _call(cases) -> Sequence:
+    return cases() if callable(cases) else cases

@@ -1,0 +1,193 @@
+"""The speed targets of the generated code, measured in one run, and the
+closed form against the best tuned integrator as the number of points grows.
+
+Targets (ratios to one ``np.cos`` over the same array): a single-expression
+time function at most 1.25x warm and 1.5x cold at 1e4-1e7 points; a
+piecewise one (evaluated window by window) at most 3x at 1e5; a call on
+scalars at most 1.5 µs; every closed form faster than the fastest integrator
+that reaches 1e-9 of the peak, at every number of points compared. Warm is the
+least time of repeated calls on one array; cold is a first call, on a fresh
+array, against a first ``np.cos`` on another fresh array.
+"""
+from __future__ import annotations
+
+import importlib
+import inspect
+import time
+from dataclasses import dataclass
+from typing import Sequence
+
+import numpy as np
+
+from crane_sym.bench import functions as bench
+from crane_sym.bench.rows import GENERATED, INTEGRATOR, BenchRow, best_time
+from crane_sym.derivation import Derivation
+
+SIZES = (10**4, 10**5, 10**6, 10**7)
+QUICK_SIZES = (10**4, 10**5)
+#: Numbers of points at which the closed form meets the best tuned integrator.
+COMPARE_POINTS = (100, 2000, 10**5)
+QUICK_COMPARE_POINTS = (100, 2000)
+TARGET = 1e-9
+
+
+@dataclass(frozen=True)
+class Goal:
+    """One target of one paper: the worst measured value against its limit."""
+
+    paper: str
+    target: str
+    measured: float
+    limit: float
+    worst: str                     # the function (and size) that sets ``measured``
+
+    @property
+    def met(self) -> bool:
+        """True when the worst measurement is within the limit."""
+        return self.measured <= self.limit
+
+
+def time_functions(d: Derivation) -> dict[str, str]:
+    """Generated functions of ``d`` that take time: name -> 'piecewise' (window
+    by window) or 'single' (one expression)."""
+    module = importlib.import_module(f"crane_sym.generated.{d.id}")
+    found = {}
+    for out in d.outputs:
+        if any(str(a) == "t" for a in out.args) and not hasattr(out.expr, "shape"):
+            source = inspect.getsource(getattr(module, out.name))
+            found[out.name] = "piecewise" if "_cells(" in source else "single"
+    return found
+
+
+def _cold(f, make) -> float:
+    """Least time of a first call on a fresh array (three tries)."""
+    times = []
+    for _ in range(3):
+        fresh = make()
+        t0 = time.perf_counter()
+        f(fresh)
+        times.append(time.perf_counter() - t0)
+        del fresh
+    return min(times)
+
+
+def array_ratios(d: Derivation, values: dict, duration: float, sizes: Sequence[int]
+                 ) -> list[tuple[str, str, int, float, float]]:
+    """(function, kind, points, warm ratio, cold ratio) to ``np.cos``."""
+    module = importlib.import_module(f"crane_sym.generated.{d.id}")
+    kinds = time_functions(d)
+    out = []
+    for n in sizes:
+        t = np.linspace(0.0, duration, n)
+        fresh = lambda: np.linspace(0.0, duration, n)  # noqa: E731
+        cos_warm = best_time(lambda: np.cos(t), budget=0.5, repeats=7)
+        cos_cold = _cold(np.cos, fresh)
+        for name, kind in kinds.items():
+            fn = getattr(module, name)
+            params = [p for p in inspect.signature(fn).parameters if p != "out"]
+
+            def call(tt, fn=fn, params=params):
+                return fn(*[tt if p == "t" else values[p] for p in params])
+            warm = best_time(lambda: call(t), budget=0.5, repeats=7)
+            out.append((name, kind, n, warm / cos_warm, _cold(call, fresh) / cos_cold))
+    return out
+
+
+def scalar_call(d: Derivation, values: dict, duration: float) -> list[tuple[str, float]]:
+    """(function, seconds per call) of each single-expression time function on
+    Python floats."""
+    module = importlib.import_module(f"crane_sym.generated.{d.id}")
+    found = []
+    for name, kind in time_functions(d).items():
+        if kind != "single":
+            continue
+        fn = getattr(module, name)
+        params = [p for p in inspect.signature(fn).parameters if p != "out"]
+        args = [0.37 * duration if p == "t" else float(values[p]) for p in params]
+        loops = 2000
+        best = min(_loop(fn, args, loops) for _ in range(5)) / loops
+        found.append((name, best))
+    return found
+
+
+def _loop(fn, args, loops: int) -> float:
+    t0 = time.perf_counter()
+    for _ in range(loops):
+        fn(*args)
+    return time.perf_counter() - t0
+
+
+def scaling(d: Derivation, values: dict, duration: float, rows: Sequence[BenchRow],
+            points: Sequence[int]) -> list[tuple[str, int, str, float, float]]:
+    """(function, points, fastest integrator reaching TARGET of the peak, its
+    seconds, closed form's seconds) at each number of points; the methods and
+    tolerances tried are those of the fastest run reaching TARGET in ``rows``
+    (the full run), per function."""
+    good = []
+    for name in dict.fromkeys(r.function for r in rows):
+        ok = [r for r in rows if r.function == name and r.kind == INTEGRATOR
+              and r.max_error_over_peak <= TARGET]
+        good += [min(ok, key=lambda r: r.seconds)] if ok else []
+    if not good:
+        return []
+    methods = sorted({r.method.split()[0] for r in good} - {"odeint"})
+    rtols = sorted({float(r.method.split("rtol=")[1].split()[0]) for r in good})
+    found = []
+    for n in points:
+        at_n = bench.bench(d, values, duration, points=n, reference_points=60,
+                           methods=methods, rtols=rtols, alternatives=False)
+        gens = {r.function: r for r in at_n if r.kind == GENERATED}
+        for name in dict.fromkeys(r.function for r in at_n if r.kind == INTEGRATOR):
+            ok = [r for r in at_n if r.function == name and r.kind == INTEGRATOR
+                  and r.max_error_over_peak <= TARGET]
+            if name in gens and ok:
+                best = min(ok, key=lambda r: r.seconds)
+                found.append((name, n, best.method, best.seconds, gens[name].seconds))
+    return found
+
+
+def goals(paper: str, arrays, scalars, scaled) -> list[Goal]:
+    """The targets of one paper from the measurements above."""
+    def worst(items, limit, what):
+        if not items:
+            return []
+        value, where = max(items)
+        return [Goal(paper, what, value, limit, where)]
+
+    single = [(w, f"{f} at {n:.0e}") for f, k, n, w, _ in arrays if k == "single"]
+    cold = [(c, f"{f} at {n:.0e}") for f, k, n, _, c in arrays if k == "single"]
+    piece = [(w, f"{f}") for f, k, n, w, _ in arrays if k == "piecewise" and n == 10**5]
+    return (worst(single, 1.25, "single expression, warm (x np.cos)")
+            + worst(cold, 1.5, "single expression, cold (x np.cos)")
+            + worst(piece, 3.0, "piecewise at 1e5, warm (x np.cos)")
+            + worst([(s * 1e6, f) for f, s in scalars], 1.5, "scalar call (µs)")
+            + worst([(g / i, f"{f} at N={n} vs {m}") for f, n, m, i, g in scaled], 1.0,
+                    "closed form / best integrator (time)"))
+
+
+def goals_table(found: Sequence[Goal]) -> str:
+    """Markdown table of the targets with a met / not met column."""
+    lines = ["| paper | target | measured (worst) | limit | met | worst case |",
+             "| --- | --- | ---: | ---: | --- | --- |"]
+    lines += [f"| {g.paper} | {g.target} | {g.measured:.3g} | {g.limit:g} | "
+              f"{'met' if g.met else 'NOT MET'} | {g.worst} |" for g in found]
+    return "\n".join(lines)
+
+
+def scaling_table(scaled) -> str:
+    """Markdown: closed form against the best tuned integrator at each N."""
+    lines = ["| function | points | best integrator reaching 1e-9 of the peak | "
+             "integrator s | closed form s | integrator / closed form |",
+             "| --- | ---: | --- | ---: | ---: | ---: |"]
+    lines += [f"| {f} | {n} | {m} | {i:.3g} | {g:.3g} | "
+              f"{i / g:.3g}{' (integrator wins)' if i < g else ''} |"
+              for f, n, m, i, g in scaled]
+    return "\n".join(lines)
+
+
+def arrays_table(arrays) -> str:
+    """Markdown: warm and cold ratios to np.cos per function and size."""
+    lines = ["| function | kind | points | warm / np.cos | cold / np.cos |",
+             "| --- | --- | ---: | ---: | ---: |"]
+    lines += [f"| {f} | {k} | {n} | {w:.3g} | {c:.3g} |" for f, k, n, w, c in arrays]
+    return "\n".join(lines)

@@ -1,0 +1,202 @@
+"""`crane-sym bench`: speed against error of the generated code and the SciPy
+alternatives, the targets table, piecewise-linear runs, sampled loads and
+(with ``--sweep``) design sweeps."""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import time
+from pathlib import Path
+from typing import Sequence
+
+from crane_sym import output_files, progress, registry
+from crane_sym.cli import sweep as cli_sweep
+
+#: What each count option of ``bench`` accepts: (least, most).
+COUNTS = {"--points": (2, 10**7), "--throughput-points": (1, 10**8),
+          "--sizes": (1, 10**8), "--compare-points": (2, 10**7)}
+#: Integrator tolerances ``--rtols`` accepts: solve_ivp raises one below
+#: 100 eps (2.2e-14) to that, and one of 0.1 or more checks nothing.
+RTOL_RANGE = (1e-13, 0.1)
+
+
+def _ids(names: Sequence[str]) -> list[str]:
+    return [registry.resolve(n) for n in names] if names else registry.ids()
+
+
+def _machine() -> str:
+    import platform
+
+    import numpy
+    import scipy
+    return (f"{platform.machine()} {platform.processor() or platform.system()}, "
+            f"Python {platform.python_version()}, NumPy {numpy.__version__}, "
+            f"SciPy {scipy.__version__}")
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    """Speed against error of the generated functions and the SciPy alternatives."""
+    quiet = getattr(args, "quiet", False)
+    with progress.reporting(progress.Progress(progress.wanted(quiet))):
+        return _bench(args)
+
+
+def check_options(args: argparse.Namespace) -> None:
+    """ValueError naming the first bench option out of its range (``COUNTS``,
+    ``RTOL_RANGE``); an ``--out`` that cannot be written is an OutputError."""
+    for option, (least, most) in COUNTS.items():
+        given = getattr(args, option[2:].replace("-", "_"), None)
+        each = "each " if isinstance(given, list) else ""
+        for value in ([given] if isinstance(given, int) else given or []):
+            if not least <= value <= most:
+                raise ValueError(f"{option}: {each}must be an integer in {least}.."
+                                 f"1e{len(str(most)) - 1}, got {value}")
+    low, high = RTOL_RANGE
+    for rtol in args.rtols or []:
+        if not low <= rtol <= high:
+            raise ValueError(f"--rtols: each tolerance must be in [{low:g}, {high:g}], "
+                             f"got {rtol:g}")
+    output_files.check_folder(args.out)
+
+
+def _bench(args: argparse.Namespace) -> int:
+    from crane_sym.bench import functions as bench
+    from crane_sym.bench import memory as bench_memory
+    from crane_sym.bench import targets as bt
+    from crane_sym.scenes import reading as scenes
+    from crane_sym.bench.report import as_markdown, headline, not_applicable, plot, plot_scaling
+    say = progress.current()
+    ids = _ids(args.ids)                 # an unknown id fails before the folder is made
+    check_options(args)                  # so does an option out of its range
+    out_dir = Path(args.out)
+    if args.sweep:
+        output_files.out_folder(out_dir)
+        with say.task("design sweeps against per-design integration"):
+            cli_sweep.run_bench(out_dir, args.format == "json")
+        if not args.ids:                   # `bench --sweep` alone: the sweep bench only
+            return 0
+    everything, goals = [], []
+    rtols = args.rtols or (bench.QUICK_RTOLS if args.quick else bench.RTOLS)
+    sizes = args.sizes or (bt.QUICK_SIZES if args.quick else bt.SIZES)
+    compare = args.compare_points or (bt.QUICK_COMPARE_POINTS if args.quick
+                                      else bt.COMPARE_POINTS)
+    for i in ids:
+        chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
+                  if s.derivation == i and not s.load_table and "duration" in s.options]
+        d = registry.get(i)
+        if not chosen or not d.outputs:
+            print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)
+            continue
+        values = bench.grid_values(d, chosen)
+        duration = max(s.options["duration"] for s in chosen)
+        start = time.perf_counter()
+        with say.task(f"{i}: generated functions and integrators, {len(rtols)} tolerances"):
+            rows = bench.bench(d, values, duration, points=args.points,
+                               methods=args.methods or bench.METHODS, rtols=rtols)
+        with say.task(f"{i}: throughput on {args.throughput_points} points"):
+            big = bench.throughput(d, values, duration, points=args.throughput_points)
+        everything += rows + big
+        with say.task(f"{i}: against np.cos at {', '.join(f'{n:.0e}' for n in sizes)} points"):
+            arrays = bt.array_ratios(d, values, duration, sizes)
+            scalars = bt.scalar_call(d, values, duration)
+        with say.task(f"{i}: closed form against the best integrator at N = "
+                      + ", ".join(map(str, compare))):
+            scaled = bt.scaling(d, values, duration, rows, compare)
+        goals += bt.goals(i, arrays, scalars, scaled)
+        memory_points = 10**6 if args.quick else 10**7
+        with say.task(f"{i}: peak memory on {memory_points:.0e} points"):
+            memory = bench_memory.function_memory(d, values, duration, memory_points)
+        with say.task(f"{i}: scene modules against the general module"):
+            sized = [line for s in chosen
+                     for line in bench.scene_comparison(
+                         d, s, points=min(args.throughput_points, 200_000))]
+        heads = headline(rows)
+        skipped = not_applicable(d, rows)
+        output_files.out_folder(out_dir)   # made when there is something to write
+        md = out_dir / f"bench_{i}.md"
+        lines = [f"# Bench: {i}", "",
+                 f"Scenes {', '.join(s.name for s in chosen)}; {args.points} seeded times on "
+                 f"[0, {duration:g}] s; time-free functions on {args.points} seeded parameter "
+                 "sets (each scene value times 2^U(-1, 1)). Absolute times are this machine's "
+                 f"({_machine()}); every ratio comes from this one run "
+                 f"({time.perf_counter() - start:.0f} s).", "",
+                 *[f"- {h}" for h in heads], "",
+                 "## Targets", "", bt.goals_table([g for g in goals if g.paper == i]), "",
+                 "## Closed form against the best tuned integrator, by number of points",
+                 "", bt.scaling_table(scaled), "",
+                 "## Against one np.cos over the same array (warm: repeated calls; cold: "
+                 "a first call on a fresh array)", "", bt.arrays_table(arrays), "",
+                 "Scalar calls (Python floats): " + ", ".join(
+                     f"{f} {sec * 1e6:.2f} µs" for f, sec in scalars), "",
+                 "## Peak memory of one call (traced NumPy allocations)", "",
+                 bench_memory.as_markdown(memory), "",
+                 "## Targets that do not apply", "",
+                 "| function | target | why |", "| --- | --- | --- |",
+                 *[f"| {f} | {what} | {why} |" for f, what, why in skipped], "",
+                 "## Scene modules against the general module", "",
+                 *[f"- {s}" for s in sized],
+                 "", f"## Throughput on {args.throughput_points} points against one np.cos",
+                 "", as_markdown(big), "", "## Every function and alternative", "",
+                 as_markdown(rows), ""]
+        md.write_text("\n".join(lines), encoding="utf-8")
+        pngs = plot(rows, out_dir / f"bench_{i}.png",
+                    f"{i}: time against error ({args.points} points, this machine)")
+        pngs += plot_scaling(scaled, out_dir / f"bench_{i}_points.png",
+                             f"{i}: best tuned integrator / closed form against N")
+        if args.format == "table":
+            print("\n".join(lines[:5 + len(heads)]))
+            print(f"wrote {md}" + (f" and {', '.join(map(str, pngs))}" if pngs else ""))
+    if goals and args.format == "table":
+        print("\n## Targets (this run)\n")
+        print(bt.goals_table(goals))
+    for i in ids:
+        if registry.get(i).tabulated:
+            output_files.out_folder(out_dir)
+            with say.task(f"{i}: piecewise-linear runs against solve_ivp"):
+                _bench_piecewise(i, out_dir, args.points, args.format == "table")
+    if args.sampled:
+        output_files.out_folder(out_dir)
+        with say.task("loads sampled on a grid"):
+            _bench_sampled(out_dir, args.format == "table")
+    if args.format == "json":
+        print(json.dumps(bench.as_dicts(everything), indent=2))
+    return 0
+
+
+def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
+    """Piecewise-linear runs in closed form against solve_ivp with events."""
+    from crane_sym.bench.piecewise import scene_sections
+    start = time.perf_counter()
+    sections = scene_sections(i, points)
+    text = "\n".join([f"# Bench: {i}, piecewise-linear runs against solve_ivp", "",
+                      f"Absolute times are this machine's ({_machine()}); every ratio comes "
+                      f"from this one run ({time.perf_counter() - start:.0f} s).", "",
+                      *sections])
+    path = out_dir / f"bench_piecewise_{i}.md"
+    path.write_text(text, encoding="utf-8")
+    if show:
+        print(text)
+        print(f"wrote {path}")
+
+
+def _bench_sampled(out_dir: Path, show: bool) -> None:
+    """Sampled-load Duhamel responses against the closed forms, and their memory."""
+    from crane_sym.bench import memory as bench_memory
+    from crane_sym.bench.sampled import accuracy_markdown, as_markdown, sampled_accuracy, \
+        sampled_comparison
+    start = time.perf_counter()
+    speed, accuracy = as_markdown(sampled_comparison()), accuracy_markdown(sampled_accuracy())
+    text = "\n".join([
+        "# Bench: loads sampled on a grid (crane_sym.mechanics.sampled_load)", "",
+        f"N = 1e5 samples; exact references by mpmath (50 digits). Absolute times are this "
+        f"machine's ({_machine()}); ratios come from this one run "
+        f"({time.perf_counter() - start:.0f} s).", "", "## Speed against the closed form", "",
+        speed, "", "## Accuracy on loads with a closed form", "", accuracy, "",
+        "## Peak memory of one call (traced NumPy allocations)", "",
+        bench_memory.as_markdown(bench_memory.sampled_memory()), ""])
+    path = out_dir / "bench_sampled.md"
+    path.write_text(text, encoding="utf-8")
+    if show:
+        print(text)
+        print(f"wrote {path}")

@@ -1,0 +1,341 @@
+"""The crane-sym command line: one function per subcommand, and the parser."""
+from __future__ import annotations
+
+import argparse
+import json
+import signal
+import sys
+import threading
+import time
+from importlib import metadata
+from pathlib import Path
+from typing import Sequence
+
+from crane_sym import __version__, output_files, progress, registry
+from crane_sym.cli import sweep as cli_sweep
+from crane_sym.cli.bench import cmd_bench
+
+DESCRIPTION = """\
+Derive, audit and generate code for the dynamics of crane mechanisms.
+
+For each published paper crane-sym rebuilds the derivation with SymPy, checks
+every printed formula against it, writes fast NumPy modules, and runs scenes
+(one concrete question with its data, in TOML). Papers are named by id
+(travel_braking) or by the number of their source file (000)."""
+
+#: One example (or two) per subcommand, shown at the end of its --help.
+EXAMPLES = {
+    "list": "crane-sym list\n  crane-sym list --format json",
+    "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
+             "--format json --quiet > verdicts.json",
+    "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md\n"
+                   "  crane-sym walkthrough 002 --format ipynb -o hoist_startup.ipynb\n"
+                   "  crane-sym walkthrough 001 --format html -o hoist_brakes.html",
+    "generate": "crane-sym generate\n  crane-sym generate --check\n"
+                "  crane-sym generate --scene hoist_user_drive_law --out out/",
+    "accuracy": "crane-sym accuracy 002",
+    "bench": "crane-sym bench 000 002 004 --out bench/",
+    "run": "crane-sym run overhead_crane_50t --out out/",
+    "sweep": "crane-sym sweep overhead_crane_50t --vary m1=1:100:200:log --vary P_t=5:50:200 "
+             "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
+             "--out sweep/ --format json",
+}
+
+
+def _ids(names: Sequence[str]) -> list[str]:
+    return [registry.resolve(n) for n in names] if names else registry.ids()
+
+
+def version() -> str:
+    """The installed version of crane_sym (package metadata), or the source's."""
+    try:
+        return metadata.version("crane_sym")
+    except metadata.PackageNotFoundError:
+        return __version__
+
+
+def _progress(args: argparse.Namespace) -> progress.Progress:
+    """A reporter for this command: on when stderr is a terminal and not --quiet."""
+    return progress.Progress(progress.wanted(getattr(args, "quiet", False)))
+
+
+def cmd_list(args: argparse.Namespace) -> int:
+    """Registered papers: id, number, authors, title."""
+    numbers = {i: n for n, i in registry.ALIASES.items()}
+    rows = []
+    for i in registry.ids():
+        paper = registry.module(i)
+        rows.append({"id": i, "number": numbers.get(i, ""), "authors": list(paper.AUTHORS),
+                     "title": paper.TITLE, "paper": paper.PAPER})
+    if args.format == "json":
+        print(json.dumps(rows, indent=2, ensure_ascii=False))
+    else:
+        for row in rows:
+            print(f"{row['id']:<16} {row['number']:<4} {', '.join(row['authors'])}\n"
+                  f"{'':<21} {row['title']}")
+    return 0
+
+
+def cmd_audit(args: argparse.Namespace) -> int:
+    """Verdicts on the printed formulas of the chosen papers."""
+    from crane_sym.audit.verdicts import audit
+    from crane_sym.audit.formats import FORMATS
+    records, timings = [], []
+    with progress.reporting(_progress(args)) as say:
+        for i in _ids(args.ids):
+            start = time.perf_counter()
+            with say.task(f"building {i}"):
+                d = registry.get(i)
+            built = time.perf_counter()
+            with say.task(f"auditing {i} ({len(d.published)} printed formulas)"):
+                records += audit(d)
+            timings.append((i, built - start, time.perf_counter() - built))
+    print(FORMATS[args.format](records))
+    if args.profile:
+        for i, b, a in timings:
+            print(f"{i}: build {b:.2f} s, audit {a:.2f} s; slowest steps:", file=sys.stderr)
+            steps = sorted(registry.get(i).steps, key=lambda s: -s.seconds)[:5]
+            for s in steps:
+                print(f"    {s.seconds:7.3f} s  {s.label}", file=sys.stderr)
+    return 0
+
+
+def cmd_walkthrough(args: argparse.Namespace) -> int:
+    """The derivation step by step, as Markdown, a Jupyter notebook or a printable
+    HTML page."""
+    from crane_sym.docs.page import handout_page
+    from crane_sym.docs.notebook import notebook
+    from crane_sym.docs.walkthrough import walkthrough
+    name = registry.resolve(args.id)
+    make = {"ipynb": notebook, "html": handout_page}.get(args.format, walkthrough)
+    target = output_files.out_file(args.output, "-o") if args.output else None
+    with progress.reporting(_progress(args)) as say, say.task(f"walkthrough of {name}"):
+        text = make(name)
+    if target:
+        output_files.write_text(target[0], target[1], text, "-o")
+        print(f"wrote {args.output}")
+    else:
+        print(text)
+    return 0
+
+
+def cmd_generate(args: argparse.Namespace) -> int:
+    """Write generated/ (or one scene's module), or check that it is fresh."""
+    from crane_sym.codegen import files as module_files
+    from crane_sym.scenes import specialize
+    from crane_sym.scenes.generate import all_files
+    if args.scene:
+        directory = Path(args.out or ".")
+    else:
+        directory = Path(args.out) if args.out else module_files.default_directory()
+    if not args.check:
+        output_files.check_folder(directory)
+    with progress.reporting(_progress(args)):
+        files = specialize.scene_files(args.scene) if args.scene else all_files()
+    if args.check:
+        found = module_files.compare(files, directory, strays=not args.scene)
+        for name in found.missing:
+            print(f"missing: {directory / name} is not there")
+        for name in found.differs:
+            print(f"stale: {directory / name} differs from what the derivations produce")
+        for name in found.stray:
+            print(f"stray: {directory / name} is not produced by any derivation or scene")
+        if not found.ok:
+            print(f"{len(found.missing)} missing, {len(found.differs)} stale, "
+                  f"{len(found.stray)} stray; run `crane-sym generate` (delete stray "
+                  "files) and commit generated/", file=sys.stderr)
+            return 1
+        print(f"{directory} is up to date ({len(files)} files)")
+        return 0
+    for path in module_files.write(files, directory):
+        print(f"wrote {path}")
+    return 0
+
+
+def cmd_accuracy(args: argparse.Namespace) -> int:
+    """Generated functions against mpmath on the hard cases; exit 1 when one
+    is over its target."""
+    import importlib
+
+    from crane_sym.bench.accuracy import accuracy
+    ids = _ids(args.ids)                     # an unknown id fails before any output
+    # cond.·u: condition number times 2**-53 at the worst point (the error input
+    # rounding alone causes); over target: largest error / max(1e-15, 2 cond.·u).
+    print(f"{'function':<34} {'hard case':<40} {'points':>6} {'cond.·u':>9} "
+          f"{'over target':>11}  max rel. error vs mpmath (50 digits)")
+    checked, over = 0, []
+    with progress.reporting(_progress(args)) as say:
+        for i in ids:
+            cases = getattr(registry.module(i), "hard_cases", None)
+            if cases is None:
+                print(f"{i}: no hard cases defined")
+                continue
+            with say.task(f"building {i}"):
+                d = registry.get(i)
+            generated = importlib.import_module(f"crane_sym.generated.{i}")
+            for case, columns in cases().items():
+                for out in (o for o in d.outputs if not o.expr.is_Matrix):
+                    say.step(f"{i}: {out.name} on {case}")
+                    row = accuracy(out, getattr(generated, out.name), case, columns)
+                    say.done()                  # the step line off the screen first
+                    checked += 1
+                    if not row.excess <= 1:
+                        over.append(f"{out.name} ({case})")
+                    print(f"{out.name:<34} {case:<40} {row.points:>6} {row.bound:9.2e} "
+                          f"{row.excess:11.2f}  {row.max_rel_error:.2e}")
+    if over:
+        print(f"FAIL: {len(over)} of {checked} function/case pairs over target: "
+              + ", ".join(over))
+        return 1
+    print(f"PASS: all {checked} function/case pairs within target")
+    return 0
+
+
+def cmd_run(args: argparse.Namespace) -> int:
+    """Run one scene: print its numbers, write its module and plots."""
+    from crane_sym.scenes.run import run_scene
+    from crane_sym.scenes.reading import load_scene
+    with progress.reporting(_progress(args)) as say:
+        with say.task(f"reading scene {args.scene}"):
+            scene = load_scene(args.scene)
+        report, figures = run_scene(scene, Path(args.out))
+    print(f"scene {scene.name}: {scene.title}")
+    for line in report.lines:
+        print(f"  {line}")
+    print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
+          + ", ".join(str(f) for f in figures))
+    return 0
+
+
+def _subcommand(sub, name: str, text: str, func, quiet: bool = False):
+    """A subcommand with ``text`` as help and description, its example as the
+    epilog, and (for the long commands) ``--quiet``."""
+    p = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".",
+                       epilog=("examples:" if "\n" in EXAMPLES[name] else "example:")
+                       + "\n  " + EXAMPLES[name],
+                       formatter_class=argparse.RawDescriptionHelpFormatter)
+    if quiet:
+        p.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
+                       help="no progress on stderr (progress is shown only on a terminal)")
+    p.set_defaults(func=func)
+    return p
+
+
+def parser() -> argparse.ArgumentParser:
+    """The argument parser (exposed for documentation and tests)."""
+    top = argparse.ArgumentParser(
+        prog="crane-sym", description=DESCRIPTION,
+        epilog="example:\n  crane-sym audit 000\n\nRun `crane-sym COMMAND --help` for "
+               "the options and an example of each command.",
+        formatter_class=argparse.RawDescriptionHelpFormatter)
+    top.add_argument("--version", action="version", version=f"crane-sym {version()}")
+    top.add_argument("-q", "--quiet", action="store_true",
+                     help="no progress on stderr (progress is shown only on a terminal)")
+    sub = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
+    ids_help = "derivation ids or paper numbers (default: all)"
+    p = _subcommand(sub, "list", "registered papers: id, number, authors, title", cmd_list)
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p = _subcommand(sub, "audit", "verdict on every published formula", cmd_audit, True)
+    p.add_argument("ids", nargs="*", help=ids_help)
+    p.add_argument("--format", choices=("table", "json", "markdown"), default="table")
+    p.add_argument("--profile", action="store_true", help="time per derivation on stderr")
+    p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown, a notebook "
+                    "or a printable page", cmd_walkthrough, True)
+    p.add_argument("id")
+    p.add_argument("--format", choices=("markdown", "ipynb", "html"), default="markdown",
+                   help="ipynb: a Jupyter notebook with a code cell per step; html: one "
+                   "self-contained page (math as MathML, the first scene's figures, "
+                   "contents) to print or post")
+    p.add_argument("-o", "--output", help="write to this file instead of stdout")
+    p = _subcommand(sub, "generate", "write generated/ (or check that it is up to date)",
+                    cmd_generate, True)
+    p.add_argument("--check", action="store_true", help="write nothing; name the missing, "
+                   "stale and stray files; exit 1 if there are any")
+    p.add_argument("--out", help="folder to write to or check (default: the package's "
+                   "generated/, or . with --scene)")
+    p.add_argument("--scene", help="write only the module specialized to this scene "
+                   "(name or TOML path)")
+    p = _subcommand(sub, "accuracy", "generated functions against mpmath on the hard cases; "
+                    "exit 1 if one is over its target", cmd_accuracy, True)
+    p.add_argument("ids", nargs="*", help=ids_help)
+    p = _subcommand(sub, "bench", "speed against error, with SciPy alternatives", cmd_bench,
+                    True)
+    p.add_argument("ids", nargs="*", help=ids_help)
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--out", default="bench", help="folder for Markdown and PNG (default: bench/)")
+    p.add_argument("--points", type=int, default=2000, help="grid points for the comparison (2 to 1e7)")
+    p.add_argument("--throughput-points", type=int, default=10**6,
+                   help="array length for the large-array np.cos comparison (1 to 1e8)")
+    p.add_argument("--methods", nargs="+", choices=("RK45", "DOP853", "LSODA", "Radau", "BDF"),
+                   help="solve_ivp methods (default: RK45 DOP853 LSODA Radau; odeint "
+                   "always runs)")
+    p.add_argument("--quick", action="store_true",
+                   help="fewer tolerances (1e-6 1e-9 1e-12), arrays of 1e4 and 1e5 points, "
+                   "the integrator comparison at 100 and 2000 points")
+    p.add_argument("--sizes", nargs="+", type=int,
+                   help="array lengths for the targets against np.cos, each 1 to 1e8 "
+                   "(default: 1e4 1e5 1e6 1e7)")
+    p.add_argument("--compare-points", nargs="+", type=int,
+                   help="numbers of points at which the closed form meets the best tuned "
+                   "integrator, each 2 to 1e7 (default: 100 2000 100000)")
+    p.add_argument("--sampled", action="store_true",
+                   help="also bench loads sampled on a grid against the closed forms")
+    p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
+                   "per-design integration; alone, only that")
+    p.add_argument("--rtols", nargs="+", type=float,
+                   help="integrator tolerances, each 1e-13 to 0.1 (default: every half "
+                   "decade 1e-6 ... 1e-13)")
+    p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
+                    cmd_run, True)
+    p.add_argument("scene", help="scene name or path to a scene TOML file")
+    p.add_argument("--out", default=".", help="folder for the scene module and the plots "
+                   "(default: .)")
+    p = _subcommand(sub, "sweep", "a design sweep: outputs over a grid of designs, on Dask",
+                    cli_sweep.cmd_sweep, True)
+    cli_sweep.add_arguments(p)
+    return top
+
+
+class Terminated(BaseException):
+    """SIGTERM, raised in the main thread so that every ``finally`` runs (the
+    temporaries of :mod:`crane_sym.output_files` are removed)."""
+
+
+def _terminate(signum, frame) -> None:
+    raise Terminated()
+
+
+def _os_message(err: OSError) -> str:
+    """One line for an operating-system error: the path and why."""
+    if isinstance(err, output_files.OutputError):
+        return str(err)
+    where = f"{err.filename!r}: " if err.filename else ""
+    return f"{where}{output_files.describe(err)}"
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the command line; return the exit code: 0 done, 1 a check failed
+    (``generate --check``, ``accuracy``), 2 an error (one line on stderr),
+    130 interrupted (SIGINT), 143 terminated (SIGTERM)."""
+    args = parser().parse_args(argv)
+    previous = None
+    if threading.current_thread() is threading.main_thread():
+        previous = signal.signal(signal.SIGTERM, _terminate)
+    try:
+        return args.func(args)
+    except (KeyError, ValueError) as err:
+        message = err.args[0] if isinstance(err, KeyError) and err.args else err
+        print(f"crane-sym: error: {message}", file=sys.stderr)
+        return 2
+    except OSError as err:
+        print(f"crane-sym: error: {_os_message(err)}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        print("crane-sym: interrupted (SIGINT); nothing half-written is left", file=sys.stderr)
+        return 130
+    except Terminated:
+        print("crane-sym: terminated (SIGTERM); nothing half-written is left", file=sys.stderr)
+        return 143
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGTERM, previous)

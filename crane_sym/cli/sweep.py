@@ -1,0 +1,102 @@
+"""The command line of design sweeps: ``crane-sym sweep`` and ``bench --sweep``."""
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Iterator
+
+from crane_sym import output_files, progress
+
+
+def cmd_sweep(args: argparse.Namespace) -> int:
+    """A design sweep: outputs over a grid of designs, on Dask. Every option
+    is checked, and ``--out`` and the grid's size against memory and disk,
+    before anything is computed; the dataset and its PNG are written under
+    temporary names and renamed together (:func:`crane_sym.sweep.store.sweep_stage`)."""
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep.grid import check_grid, run_sweep
+    from crane_sym.sweep.report import plot, summary, text_lines
+    from crane_sym.sweep.spec import parse_chunk_mib, plan
+    from crane_sym.sweep.store import sweep_stage
+    chunk_bytes = parse_chunk_mib(args.chunk_mib)
+    out = output_files.check_folder(args.out, "--out")
+    scene = load_scene(args.scene)
+    chosen = plan(scene, args.vary, args.output, args.at or [], args.limit)
+    check_grid(chosen, out, chunk_bytes)
+    certify = None
+    if args.certify:
+        from crane_sym.sweep.certify import prepare
+        certify = prepare(chosen, args.certify_tol)   # refuses before anything is written
+    quiet = not progress.wanted(getattr(args, "quiet", False))
+    with _distributed_quiet(), sweep_stage(out) as stage:
+        result = run_sweep(chosen, stage, scheduler=args.scheduler, chunk_bytes=chunk_bytes,
+                           quiet=quiet)
+        plot(result, stage)
+        if certify is not None:
+            from crane_sym.sweep.certify import certify_result
+            result.extra["certified"] = certify_result(certify, result, args.scheduler)
+    data = summary(result)
+    if args.format == "json":
+        print(json.dumps(data, indent=2, ensure_ascii=False))
+    else:
+        print("\n".join(text_lines(data)))
+    return 0
+
+
+@contextmanager
+def _distributed_quiet() -> Iterator[None]:
+    """No log records while the sweep runs: dask.distributed logs a lost
+    connection as an ERROR with its traceback (on loggers its configuration
+    sets one by one); the command says it in one line."""
+    previous = logging.root.manager.disable
+    logging.disable(logging.CRITICAL)
+    try:
+        yield
+    finally:
+        logging.disable(previous)
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    """The options of ``crane-sym sweep``."""
+    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values)")
+    p.add_argument("--vary", action="append", metavar="NAME=START:STOP:N[:log] [UNIT]",
+                   help="a grid axis over a parameter of the scene, in the unit the scene "
+                   "gives it unless UNIT is named (repeat for more axes)")
+    p.add_argument("--output", action="append", metavar="NAME",
+                   help="an output to sweep: a generated function or a simulated response "
+                   "of the paper (repeatable)")
+    p.add_argument("--at", action="append", metavar="NAME=VALUE [UNIT]",
+                   help="a value for an argument the scene does not give (t=0.12, "
+                   "t=120 ms), or a window t=START:STOP:N over which each output taking t "
+                   "is maximised (sampled)")
+    p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
+                   help="count the designs within it, draw its contour")
+    p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG "
+                   "(both replaced together, or neither)")
+    p.add_argument("--format", choices=("table", "json"), default="table")
+    p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
+                   "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler, threads for "
+                   "closed forms, processes for simulated responses; 'threads', 'processes' "
+                   "or 'synchronous' force one)")
+    p.add_argument("--chunk-mib", type=float, default=8.0,
+                   help="output bytes per block of the grid, in MiB (default 8; at least "
+                   "0.1, at most the free memory for one block per core)")
+    p.add_argument("--certify", action="store_true", help="also bound the maximum of the "
+                   "(limited) output over the whole box by interval branch-and-bound")
+    p.add_argument("--certify-tol", type=float, default=1e-6, metavar="REL",
+                   help="width of the certified enclosure, relative to its value "
+                   "(default 1e-6)")
+
+
+def run_bench(out_dir: Path, as_json: bool) -> None:
+    """Design sweeps against per-design integration, efficiency, 10⁸ designs,
+    LocalCluster (issue 16, item 5)."""
+    from crane_sym.bench.sweeps import bench_sweep, markdown
+    results = bench_sweep()
+    text = markdown(results)
+    path = out_dir / "bench_sweep.md"
+    path.write_text(text, encoding="utf-8")
+    print(json.dumps(results, indent=2) if as_json else f"{text}\nwrote {path}")

@@ -1,0 +1,11 @@
+"""Mechanics: from physics to equations of motion and their solutions.
+
+Lagrange's equations with Rayleigh dissipation, elimination to a relative
+coordinate, linear ODEs, load laws, Duhamel's integral, the Euler–Poisson
+extremals, guaranteed extrema and crossings, closed forms of one phase and
+piecewise-linear runs (in double and in mpmath), interval enclosures, involute
+gear geometry, sampled loads.
+
+May import: the top-level vocabulary (``symbols``, ``units``, ``dimensions``,
+``latex``, ``derivation``, ``outcomes``, ...) and ``kernels``.
+"""
