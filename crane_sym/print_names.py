@@ -198,7 +198,7 @@ def map_symbols(expr: sp.Basic, vocab: dict[str, sp.Basic],
             return sp.E
         raise Unreadable(f"no symbol of the derivation is printed {name!r}")
     calls = {}
-    for call in expr.atoms(AppliedUndef):
+    for call in sorted(expr.atoms(AppliedUndef), key=sp.default_sort_key):   # one message a run
         target = symbol_for(type(call).__name__)
         args = tuple(map_symbols(a, vocab, tokens) for a in call.args)
         if isinstance(target, AppliedUndef) and len(target.args) == len(args):
@@ -206,7 +206,7 @@ def map_symbols(expr: sp.Basic, vocab: dict[str, sp.Basic],
         else:
             raise Unreadable(f"{call} is not a function the derivation defines")
     expr = expr.xreplace(calls)
-    subs = {s: symbol_for(s.name) for s in expr.free_symbols}
+    subs = {s: symbol_for(s.name) for s in sorted(expr.free_symbols, key=sp.default_sort_key)}
     mapped = expr.xreplace(subs)
     floats = {f: sp.Rational(str(f)) for f in mapped.atoms(sp.Float)}
     return mapped.xreplace(floats)
