@@ -2,6 +2,7 @@
 print, and a quiet fix of a transcription caught as an unexplained difference."""
 from __future__ import annotations
 
+import os
 from dataclasses import replace
 
 import pytest
@@ -95,3 +96,20 @@ def test_a_reconstruction_explains_a_difference():
 
 def test_candidates_hold_every_relation_of_a_print():
     assert len(candidates(r"\Omega^2 = a, \quad S(t) = b.")) == 2
+
+
+def test_an_unreadable_print_gives_one_message_whatever_the_hash_seed():
+    """Which unknown name a message names does not depend on set order, so the
+    audit JSON is the same bytes in every process."""
+    import subprocess
+    import sys
+    code = ("import sympy as sp\n"
+            "from crane_sym.print_names import map_symbols, Unreadable\n"
+            "t = sp.Symbol('t')\n"
+            "e = sp.Function('f')(t) + sp.Function('g')(t) + sp.Symbol('a') * sp.Symbol('b')\n"
+            "try:\n    map_symbols(e, {}, {'t': t})\n"
+            "except Unreadable as exc:\n    print(exc)\n")
+    messages = {subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                               env={**os.environ, "PYTHONHASHSEED": str(seed)},
+                               check=True).stdout for seed in range(6)}
+    assert messages == {"no symbol of the derivation is printed 'f'\n"}

@@ -169,7 +169,7 @@ LATEX_NAMES = {
     mu_alpha_min: r"(\mu\alpha)_{\min}", omega_1: r"\omega_1", omega_2: r"\omega_2",
 }
 #: The words a handout gives for the code names in this paper's notes.
-HANDOUT_WORDS = {"crane_sym.mechanics.lagrange on the other": "Lagrange's equations on the other"}
+HANDOUT_WORDS = {"the toolkit's Lagrange equations": "Lagrange's equations"}
 
 MODEL = r"""
 The drive chain: motor rotor I1, intermediate mass I2 (gearbox, couplings) and

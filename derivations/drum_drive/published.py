@@ -344,7 +344,7 @@ def _sum(terms) -> sp.Expr:
 LAGRANGE_FORM = (
     "(1) restates Lagrange's equations of the second kind with Rayleigh's function, a "
     "textbook form; both sides are built from the model's T, Π, Φ (the printed operator "
-    "on one, crane_sym.mechanics.lagrange on the other), so the record tests only the printed "
+    "on one, the toolkit's Lagrange equations on the other), so the record tests only the printed "
     "operator, not the paper's energies")
 
 

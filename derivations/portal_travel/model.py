@@ -252,7 +252,7 @@ HANDOUT_WORDS = {
     "eps": r"$\varepsilon_\alpha$", "xp": "the shift of the pointed tip", "psi": r"$\psi$",
     "2pi": r"$2\pi$", "pi": r"$\pi$",
     "the three-mass start-up of startup.py": "the three-mass start-up of the model text",
-    " (startup.PLAUSIBLE)": "", "none (crane_sym.kernels.gears._tip_shift)": "none"}
+    " (startup.PLAUSIBLE)": ""}
 
 MODEL = r"""
 Form 1 and Fig. 10: a pair of involute spur gears cut by generating with a

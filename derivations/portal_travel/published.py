@@ -192,8 +192,8 @@ APPENDIX = [
              "the OCR reads π as 'n'; the name is printed like α's 'a'",
              reconstructed=True, basis=DEFINITION, basis_note="a name the appendix gives"),
     _data(f"{FORM} appendix, starting guess", "Начальное значение переменной X:=0", F_x0, 0,
-          "Mathcad's Find needs a starting value; the toolkit's bracketed solver needs "
-          "none (crane_sym.kernels.gears._tip_shift)"),
+          "Mathcad's Find needs a starting value; the toolkit's bracketed solver of the "
+          "pointed-tip shift needs none"),
     _appendix("Fo", "Fo(x) := ... z + 2- (1 + x + k)",
              sp.Eq(Fo, _Fo), "rebuilt: Fo(x) := z·c/(z + 2·(1 + x + k)), c := cos α",
              reconstructed=True, conventions=(Convention(
