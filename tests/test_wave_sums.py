@@ -10,7 +10,7 @@ from crane_sym.kernels import phase as k
 from crane_sym.kernels.cells import _blocks, _cancelled, _selector
 from crane_sym.generated import hoist_startup as gen
 from crane_sym.codegen.wave_sums import merge_waves
-from crane_sym.codegen.windows import exact_phase, offset_wave, phase_cos, phase_sin, wave
+from crane_sym.codegen.waves import exact_phase, offset_wave, phase_cos, phase_sin, wave
 
 rng = np.random.default_rng(11)
 t, W, c1, c2 = sp.symbols("t W c1 c2", positive=True)

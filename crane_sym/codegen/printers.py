@@ -11,7 +11,7 @@ from sympy.printing.numpy import NumPyPrinter
 
 from crane_sym.codegen.entire import Z, plan
 from crane_sym.mechanics.involute import ACOS_MESSAGES
-from crane_sym.codegen.windows import phase_cos, phase_sin
+from crane_sym.codegen.waves import phase_cos, phase_sin
 
 __all__ = ["Printer", "TernaryPrinter", "DoubleDoublePrinter", "printer_for", "render_helper"]
 

@@ -23,7 +23,7 @@ from collections import defaultdict
 
 import sympy as sp
 
-from crane_sym.codegen.windows import exact_phase, offset_wave, phase_cos, phase_sin, wave
+from crane_sym.codegen.waves import exact_phase, offset_wave, phase_cos, phase_sin, wave
 
 __all__ = ["merge_waves"]
 
