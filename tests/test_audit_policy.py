@@ -18,7 +18,7 @@ import sympy as sp
 
 from crane_sym import registry
 from crane_sym.audit.verdicts import (AGREEMENTS, CONFIRMATIONS, CONFIRMED_WITH_CONVENTION,
-                             CONSISTENT, RESTATED, UNEXPLAINED, audit, audit_formula)
+                                      CONSISTENT, RESTATED, UNEXPLAINED, audit, audit_formula)
 from crane_sym.published import (BASES, CHOSEN, DEFINITION, MODEL, READINGS,
                                  PublishedFormula)
 from crane_sym.audit.formats import as_json, as_markdown, as_table, by_cause, findings, summary

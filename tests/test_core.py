@@ -7,7 +7,7 @@ from sympy.physics.units import force, length, mass, time
 
 from crane_sym.audit import verdicts as A
 from crane_sym.audit.checks import (FAIL, PASS, dimension_consistency, numeric_equivalence,
-                              symbolic_equivalence)
+                                    symbolic_equivalence)
 from crane_sym.derivation import Derivation, Output
 from crane_sym.dimensions import check_equation, dimension_of, format_vector, vector
 from crane_sym.mechanics.elimination import relative_coordinate

@@ -13,10 +13,11 @@ import sympy as sp
 from sympy.physics.mechanics import LagrangesMethod, dynamicsymbols
 
 from crane_sym.audit.verdicts import (AGREEMENTS, CONFIRMATIONS, UNEXPLAINED,
-                             audit_formula)
+                                      audit_formula)
 from crane_sym.derivations import drum_drive
 from crane_sym.derivations.drum_drive import model as m
-from crane_sym.derivations.drum_drive import published as pub
+from crane_sym.derivations.drum_drive import print_notation as notation
+from crane_sym.derivations.drum_drive import causes
 from crane_sym.derivations.drum_drive.report import _rhs_functions
 from crane_sym.mechanics.lagrange import lagrange_equations
 from crane_sym.scenes.reading import scenes_directory
@@ -136,7 +137,7 @@ def test_every_finding_has_its_cause(records):
     for label, r in findings.items():
         assert r.cause is not None and r.cause.id != UNEXPLAINED, label
         assert r.cause.id.startswith("004-") and r.cause.sentence.endswith("."), label
-        assert pub.CAUSES[r.cause.id] is r.cause, label   # one object per cause
+        assert causes.CAUSES[r.cause.id] is r.cause, label   # one object per cause
     by_cause = {}
     for label, r in findings.items():
         by_cause.setdefault(r.cause.id, set()).add(label)
@@ -253,8 +254,8 @@ def test_steps_in_paper_order_and_every_equation_audited(derivation):
 def test_transcriptions_keep_the_print(derivation):
     by = {f.label: f for f in derivation.published}
     assert by["(19)"].printed.lhs.has(sp.Rational(5, 4))
-    assert by["(13)"].printed.lhs.has(pub.C3)
-    assert by["(8)"].printed.rhs.has(pub.phi4.diff(m.t))
+    assert by["(13)"].printed.lhs.has(notation.C3)
+    assert by["(8)"].printed.rhs.has(notation.phi4.diff(m.t))
 
 
 # --- The model against independent routes -----------------------------------------
@@ -283,7 +284,7 @@ def test_equations_of_motion_are_symmetric_and_dissipative(derivation):
 def test_effective_mass_against_quadrature(derivation):
     rng = np.random.default_rng(4)
     m_eff = _f(derivation, "branch_effective_mass")
-    T7 = sp.lambdify([m.q, m.L, pub.delta_y, m.y.diff(m.t), m.z.diff(m.t)],
+    T7 = sp.lambdify([m.q, m.L, notation.delta_y, m.y.diff(m.t), m.z.diff(m.t)],
                      derivation.step("(7)").statement.rhs)
     for _ in range(20):
         q, L, dl, vy, vz = rng.uniform(0.5, 20), rng.uniform(10, 3e3), rng.uniform(10, 3e3), \

@@ -5,7 +5,7 @@ import pytest
 import sympy as sp
 
 from crane_sym.mechanics.extrema import (INTERVAL, SYMBOLIC, maximum_on_interval,
-                               minimum_on_interval)
+                                         minimum_on_interval)
 
 t = sp.Symbol("t", real=True)
 A, omega, S0, theta = sp.symbols("A omega S0 theta", positive=True)

@@ -12,7 +12,7 @@ pytest.importorskip("lark")
 
 from crane_sym import registry  # noqa: E402
 from crane_sym.audit.latex_parse import (bound_variables, candidates, layout, parse,  # noqa: E402
-                                   placeholder, split, wrap_calls)
+                                         placeholder, split, wrap_calls)
 from crane_sym.audit.machine_read import AGREES, DIFFERS, UNREADABLE, machine_read  # noqa: E402
 
 

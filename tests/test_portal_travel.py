@@ -300,7 +300,7 @@ def test_max_support_load_is_the_derived_statics(gen, derivation):
 
 def test_exceedance_probability_in_the_far_tail_against_mpmath():
     from crane_sym.mechanics.load_statistics import (exceedance_probability, level_for_exceedance,
-                                           log_exceedance_probability)
+                                                     log_exceedance_probability)
     from crane_sym.derivations.portal_travel.tables import table3_normal
     mean, std = table3_normal("vertical pressure", "ship-to-store")
     u = np.array([-8.0, -1.0, 0.0, 1.0, 5.0, 10.0, 20.0, 37.0])

@@ -14,7 +14,7 @@ from sympy.physics.units import mass
 from crane_sym import registry
 from crane_sym.cli.main import main
 from crane_sym.scenes.options import (REQUIRED, OptionError, SceneCheck, SceneOption,
-                                     options_for, read_options)
+                                      options_for, read_options)
 from crane_sym.scenes.reading import SceneError, list_scenes, load_scene, scene_path
 
 ROOT = Path(__file__).resolve().parents[1]

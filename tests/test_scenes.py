@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from crane_sym.scenes.reading import (Scene, SceneError, SceneReport, format_quantity,
-                              list_scenes, load_scene, scenes_directory)
+                                      list_scenes, load_scene, scenes_directory)
 from crane_sym.scenes.run import run_scene
 
 PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

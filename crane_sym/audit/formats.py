@@ -13,7 +13,7 @@ from collections import Counter
 from typing import Sequence
 
 from crane_sym.audit.verdicts import (AGREEMENTS, CONFIRMATIONS, CONSISTENT, RESTS_ON, VERDICTS,
-                    AuditRecord)
+                                      AuditRecord)
 from crane_sym.published import BASES, READINGS
 
 

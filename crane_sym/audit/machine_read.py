@@ -28,7 +28,7 @@ from crane_sym.derivation import Derivation
 from crane_sym.latex import latex
 from crane_sym.audit.latex_parse import Parsed, Unreadable, bound_variables, candidates, parse
 from crane_sym.audit.print_names import (BOUND_SYMBOL, cached_vocabulary, calls_pass, map_symbols,
-                          names_pass)
+                                         names_pass)
 from crane_sym.published import PublishedFormula
 
 __all__ = ["AGREES", "DIFFERS", "UNREADABLE", "MachineRead", "machine_read"]

@@ -15,14 +15,14 @@ import sympy as sp
 
 from crane_sym import progress
 from crane_sym.audit.checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome, difference,
-                     dimension_consistency, numeric_equivalence,
-                     symbolic_equivalence)
+                                    dimension_consistency, numeric_equivalence,
+                                    symbolic_equivalence)
 from crane_sym.derivation import Derivation
 from crane_sym.audit.fits import fit_of
 from crane_sym.latex import latex
 from crane_sym.audit.machine_read import MachineRead, machine_read
 from crane_sym.published import (ASSUMPTION, CHOSEN, DEFINITION, INTERNAL, READINGS,
-                        RECONSTRUCTED, Cause, Convention, PublishedFormula)
+                                 RECONSTRUCTED, Cause, Convention, PublishedFormula)
 from crane_sym.audit.sampling import physical_definitions
 from crane_sym.sensitivity import Sensitivity
 

@@ -27,7 +27,8 @@ from crane_sym.bench import duhamel as bench_duhamel
 from crane_sym.bench import linear as bench_linear
 from crane_sym.bench import odes as bench_odes
 from crane_sym.bench.rows import (DUHAMEL, DUHAMEL_RTOLS, FLOOR, GENERATED, INTEGRATOR, LAMBDIFY,
-                         METHODS, NAN, QUICK_RTOLS, REFERENCE, RTOLS, BenchRow, Target, best_time, errors, least_time)
+                                  METHODS, NAN, QUICK_RTOLS, REFERENCE, RTOLS, BenchRow, Target,
+                                  best_time, errors, least_time)
 from crane_sym.derivation import Derivation, Output
 from crane_sym.bench.accuracy import mp_values
 from crane_sym.scenes.specialize import module_name, operation_count, specialize, switched_off

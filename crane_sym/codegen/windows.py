@@ -31,7 +31,7 @@ import mpmath
 import sympy as sp
 
 from crane_sym.codegen.waves import (coefficient, entire_at, exact_phase, grouped, offset_form,
-                                    phase_sin, wave)
+                                     phase_sin, wave)
 
 Rule = Callable[[sp.Expr], sp.Expr]
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from crane_sym.audit.verdicts import (CONFIRMED, CONFIRMED_WITH_CONVENTION, CONSISTENT, DIMENSION_ERROR,
-                    DISCREPANCY, NOT_CHECKABLE, REMARK, RESTATED, AuditRecord)
+                                      DISCREPANCY, NOT_CHECKABLE, REMARK, RESTATED, AuditRecord)
 from crane_sym.derivation import Derivation
 from crane_sym.docs.numbers import LIMIT, decimal, is_value, printed_digits
 from crane_sym.published import PublishedFormula

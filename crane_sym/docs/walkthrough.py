@@ -19,7 +19,7 @@ import sympy as sp
 from crane_sym.audit.verdicts import AuditRecord, audit
 from crane_sym.derivation import Derivation, Step
 from crane_sym.docs.numbers import (broken_lines, decimal, escape_specials, is_number, is_value,
-                           named_lines, printed_digits)
+                                    named_lines, printed_digits)
 from crane_sym.docs.verdicts import Voice, verdict_name
 from crane_sym.latex import cyrillic_as_text, latex
 from crane_sym.symbols import COORDINATE, DEFINED, PARAMETER, TIME

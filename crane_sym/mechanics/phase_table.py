@@ -24,7 +24,7 @@ import numpy as np
 
 from crane_sym.kernels.arithmetic import _phase_sum
 from crane_sym.mechanics.piecewise_linear import (HybridSystem, PiecewiseResult, Segment, by_phase, first_crossing,
-                               simulate)
+                                                  simulate)
 
 __all__ = ["HybridRun", "PhaseTable", "largest", "stationary_times", "tabulate", "values"]
 

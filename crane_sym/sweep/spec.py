@@ -35,7 +35,7 @@ from crane_sym.codegen.module import used_arguments
 from crane_sym.scenes.reading import Scene, SceneError, read_toml
 from crane_sym.symbols import TIME
 from crane_sym.sweep.plan import (Axis, Limit, OutputSpec, SweepError, SweepPlan, Window,
-                         shown_unit)
+                                  shown_unit)
 
 __all__ = ["MIN_CHUNK_MIB", "SweepError", "parse_at", "parse_chunk_mib", "parse_limit",
            "parse_vary", "plan"]

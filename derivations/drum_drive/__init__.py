@@ -40,6 +40,7 @@ from crane_sym.derivation import Derivation
 from crane_sym.symbols import SymbolTable
 
 from . import published as pub
+from .print_notation import PRINT_LATEX_NAMES, PRINT_SYMBOLS
 from . import steps
 from .hard_cases import hard_cases
 from .model import AUTHORS, HANDOUT_WORDS, LATEX_NAMES, MODEL, MODEL_SYMBOLS, PAPER, model_energies
@@ -60,8 +61,8 @@ def build() -> Derivation:
     """Rebuild eqs (1)–(21) of the drum-drive model; attach the print and outputs."""
     d = Derivation(id=ID, paper=PAPER, title=TITLE,
                    citation="M.P. Martyntsiv, O.M. Udovytskyi, B.V. Sologub, Lviv, 2010",
-                   model=MODEL, symbols=SymbolTable(MODEL_SYMBOLS + pub.PRINT_SYMBOLS),
-                   latex_names=LATEX_NAMES | pub.PRINT_LATEX_NAMES)
+                   model=MODEL, symbols=SymbolTable(MODEL_SYMBOLS + PRINT_SYMBOLS),
+                   latex_names=LATEX_NAMES | PRINT_LATEX_NAMES)
     e = model_energies()
     eqs = steps.lagrange(d, e)                # (1)
     steps.kinetic_energy(d, e)                # (2)–(7)

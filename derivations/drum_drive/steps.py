@@ -16,6 +16,7 @@ from crane_sym.mechanics.lagrange import lagrange_equations
 from crane_sym.mechanics.modal import eigenvalues_2x2, relative_dynamic_matrix
 from crane_sym.mechanics.odes import solve_constant_coefficient
 
+from . import print_notation as notation
 from . import published as pub
 from .model import (
     C1, C2, C_t, C_y, C_z, COORDS, D, Delta, F0, F1, F1_lim, F2, FORCES, F_pulse, F1_t,
@@ -30,17 +31,17 @@ def lagrange(d: Derivation, e: dict) -> dict:
     motion by coordinate name, for (12)."""
     motion = lagrange_equations(e["T"], e["Pi"], COORDS, t, FORCES, e["Phi"])
     eqs = dict(zip(("φ1", "φ2", "φ3", "y", "z"), motion.equations))
-    d.add("(1), coordinates", sp.Eq(pub.n_q, len(COORDS)),
+    d.add("(1), coordinates", sp.Eq(notation.n_q, len(COORDS)),
           "The model has five coordinates: φ1, φ2, φ3, y, z (see MODEL).",
           "The print's (1) has three (φ, z, y) while its T and Π use φ1, φ2, φ3.",
           "Lagrange's equations")
-    for label, name, Q in (("(1), φ", "φ3", pub.Q1), ("(1), z", "z", pub.Q2),
-                           ("(1), y", "y", pub.Q3)):
+    for label, name, Q in (("(1), φ", "φ3", notation.Q1), ("(1), z", "z", notation.Q2),
+                           ("(1), y", "y", notation.Q3)):
         d.add(label, sp.Eq(eqs[name].lhs, Q),
               f"d/dt ∂T/∂q̇ − ∂T/∂q + ∂Π/∂q + ∂Φ/∂q̇ for q = {name}, with the T, Π, Φ of "
               "(2)–(11); the generalized force named as in the print.",
               "The Rayleigh term is ∂Φ/∂q̇: Φ depends on the velocities only."
-              if Q is pub.Q1 else "")
+              if Q is notation.Q1 else "")
     return eqs
 
 
@@ -51,17 +52,17 @@ def kinetic_energy(d: Derivation, e: dict) -> None:
           "½·m_L·ż² of the loaded run, plus the element's T_т.ор.",
           "Only the drum translates; motor and gearbox sit on rigid frames (the print's "
           "x_i are not defined).", "Kinetic energy")
-    d.add("(3)", sp.Eq(pub.dT, pub.dm * (_dot(z)**2 + _dot(y)**2) / 2),
+    d.add("(3)", sp.Eq(notation.dT, notation.dm * (_dot(z)**2 + _dot(y)**2) / 2),
           "½·dm·v² of a piece with the velocity components ż and ẏ, as (3) sets it up.")
-    d.add("(4)", sp.Eq(pub.dm, q * pub.dl), "Mass of a piece dl at q per metre.")
-    d.add("(5)", sp.Eq(pub.v_z, pub.dl / pub.dt), "The element's speed, as the print "
-          "defines it.")
+    d.add("(4)", sp.Eq(notation.dm, q * notation.dl), "Mass of a piece dl at q per metre.")
+    d.add("(5)", sp.Eq(notation.v_z, notation.dl / notation.dt),
+          "The element's speed, as the print defines it.")
     d.add("(6)", sp.Eq(v_xi, a_v + b_v * xi), "The paper's hypothesis, adopted.",
           "With it the element's kinetic energy becomes an effective mass.")
     # The print's geometry for (7): a span [0, L] at rest at both ends, moved
     # across at ξ = z(t) with ẏ; a second span [0, δy] moved along at s = y(t) with ż.
     pieces = []
-    for vel, apex, end in ((_dot(y), z, L), (_dot(z), y, pub.delta_y)):
+    for vel, apex, end in ((_dot(y), z, L), (_dot(z), y, notation.delta_y)):
         left = sp.solve([a_v, a_v + b_v * apex - vel], [a_v, b_v])
         right = sp.solve([a_v + b_v * apex - vel, a_v + b_v * end], [a_v, b_v])
         pieces += [((a_v + b_v * xi).subs(left), 0, apex),
@@ -122,11 +123,11 @@ def potential_and_forces(d: Derivation, e: dict) -> None:
     on_drum = _in_branch_forces(2 * F0 - sp.diff(Vb, y), e) - C_y * y
     on_run = _in_branch_forces(-W - sp.diff(Vb, z), e)
     for label, dA_i, Q, v, what in (
-            ("(9), δA_1", pub.dA1, torque, pub.vphi, "a rigid rotation δφ of the drive "
-             "(shafts unstrained): M0 and the branch torque"),
-            ("(9), δA_2", pub.dA2, on_drum, vy, "δy of the drum: both branch forces pull "
+            ("(9), δA_1", notation.dA1, torque, notation.vphi,
+             "a rigid rotation δφ of the drive (shafts unstrained): M0 and the branch torque"),
+            ("(9), δA_2", notation.dA2, on_drum, vy, "δy of the drum: both branch forces pull "
              "it toward the line, the shaft resists"),
-            ("(9), δA_3", pub.dA3, on_run, vz, "δz of the run: F1 pulls it forward, F2 "
+            ("(9), δA_3", notation.dA3, on_run, vz, "δz of the run: F1 pulls it forward, F2 "
              "back, W resists")):
         d.add(label, sp.Eq(dA_i, Q * v), f"Virtual work of every force on {what} (branch "
               "forces taken as given, as in the print).", "To check the print's lines on "
@@ -135,9 +136,9 @@ def potential_and_forces(d: Derivation, e: dict) -> None:
         d.add(label, sp.Eq(Q, Qv), "The print's own δA line divided by its virtual "
               "displacement (9), uncorrected.", "To compare (10) with the lines it "
               "should repeat.")
-    for label, Q, Qv, on in (("(10), Q1", pub.Q1, torque, "δφ"), ("(10), Q2", pub.Q2,
+    for label, Q, Qv, on in (("(10), Q1", notation.Q1, torque, "δφ"), ("(10), Q2", notation.Q2,
                                                                on_run, "δz"),
-                             ("(10), Q3", pub.Q3, on_drum, "δy")):
+                             ("(10), Q3", notation.Q3, on_drum, "δy")):
         d.add(label, sp.Eq(Q, Qv), f"(9): the derived δA line divided by {on}.")
 
 
@@ -217,30 +218,30 @@ def frequencies(d: Derivation, eqs: dict) -> None:
           "negative number there); the sum of squares cannot.")
     d.add("ω1", sp.Eq(omega_1, sp.sqrt(small)),
           "The smaller root as det A/ω2² (Vieta), which avoids b − √(b² − 4c).")
-    d.add("(13), k", sp.Eq(pub.k, c**sp.Rational(1, 4)),
+    d.add("(13), k", sp.Eq(notation.k, c**sp.Rational(1, 4)),
           "Vieta: ω1²·ω2² = C1·C2·(I1 + I2 + I3)/(I1·I2·I3); its fourth root, the geometric "
           "mean of ω1 and ω2, is the one frequency of the printed shape.")
     label, statement = pub.printed_homogeneous()
     d.add(label, statement, "The print's (13) with its right-hand side set to zero.",
           "(14) should solve this.")
-    d.add("(14)", sp.Eq(y, pub.y_h + pub.y_p),
+    d.add("(14)", sp.Eq(y, notation.y_h + notation.y_p),
           "A linear equation's general solution: homogeneous plus particular.")
     Cc, Cs = sp.symbols("C_c C_s")
-    free = solve_constant_coefficient(sp.Eq(_dot(pub.y_h, 2) + pub.k**2 * pub.y_h, 0),
-                                      pub.y_h, (Cc, Cs))
-    shifted = pub.A_y * sp.sin(pub.k * t + pub.a_ph)
+    y_h, k = notation.y_h, notation.k
+    free = solve_constant_coefficient(sp.Eq(_dot(y_h, 2) + k**2 * y_h, 0), y_h, (Cc, Cs))
+    shifted = notation.A_y * sp.sin(notation.k * t + notation.a_ph)
     assert sp.simplify(sp.expand_trig(shifted) - free.general.subs(
-        {Cc: pub.A_y * sp.sin(pub.a_ph), Cs: pub.A_y * sp.cos(pub.a_ph)})) == 0
-    d.add("(14), y1", sp.Eq(pub.y_h, shifted),
+        {Cc: notation.A_y * sp.sin(notation.a_ph), Cs: notation.A_y * sp.cos(notation.a_ph)})) == 0
+    d.add("(14), y1", sp.Eq(notation.y_h, shifted),
           "dsolve of ÿ1 + k²·y1 = 0 gives C_c·cos kt + C_s·sin kt; C_c = A·sin a, "
           "C_s = A·cos a make it A·sin(kt + a).")
 
 
 def torque_traction_load(d: Derivation, e: dict) -> None:
     """(17)–(21): shaft bending, drum torque, traction and the pulsating load."""
-    w, x = pub.w, pub.x_ax
-    d.add("(17)", sp.Eq(w.diff(x, 4) + pub.a17 * w.diff(t, 2) + pub.b17 * w.diff(x, t)
-                        + pub.kappa * w.diff(x, 2), 0),
+    w, x = notation.w, notation.x_ax
+    d.add("(17)", sp.Eq(w.diff(x, 4) + notation.a17 * w.diff(t, 2) + notation.b17 * w.diff(x, t)
+                        + notation.kappa * w.diff(x, 2), 0),
           "The printed form with a coefficient κ on ∂²y/∂x² (κ = −N/EI for an axial "
           "force N); a and b stay unspecified, as printed.",
           "The least change that gives every term the dimension 1/m³.",

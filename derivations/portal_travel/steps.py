@@ -12,7 +12,7 @@ import sympy as sp
 
 from crane_sym.derivation import Derivation
 from crane_sym.mechanics.involute import (inverse_involute_fn, involute_point, rack_space_width, thickness_at_radius,
-                                tip_shift_mp)
+                                          tip_shift_mp)
 
 from .model import (C_eps, C_sa, F_alpha, F_aw, F_ha, F_k, F_k1, F_k2, F_m, F_x1, F_x2,
                     F_x0, F_z, F_z1, F_z2, Fo, V_atw, V_da1, V_da2, V_eps, V_sa1, V_sa1m,
