@@ -18,6 +18,7 @@ import numpy as np
 
 from crane_sym.bench.targets import time_functions
 from crane_sym.derivation import Derivation
+from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
 
 __all__ = ["MemoryRow", "as_markdown", "function_memory", "peak_bytes", "sampled_memory"]
 
@@ -73,7 +74,6 @@ def function_memory(d: Derivation, values: dict, duration: float,
 def sampled_memory(points: int = 10**7) -> list[MemoryRow]:
     """Rows for the sampled-load responses (x and x') on ``points`` samples;
     ``sampled_response`` takes the times as well, so its input is two arrays."""
-    from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
     t = np.arange(points) * 1e-3
     S = np.sin(t) + 1.0
     uniform = peak_bytes(lambda: sampled_response_uniform(1e-3, S, 25.0))

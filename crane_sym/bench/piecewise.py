@@ -19,9 +19,13 @@ import mpmath
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
+from crane_sym import registry
 from crane_sym.mechanics.closed_forms import clear_cache
+from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, by_phase
+from crane_sym.scenes.reading import list_scenes, load_scene
+from crane_sym.scenes.run import import_module_file
+from crane_sym.scenes.specialize import module_name, render_scene_module
 
 __all__ = ["IntegratedRun", "PiecewiseRow", "as_markdown", "bench_run", "integrate_hybrid",
            "mp_reference", "RTOLS", "scene_sections", "summary"]
@@ -254,11 +258,6 @@ def scene_sections(derivation_id: str, points: int = 2000,
     the integrators, in one run."""
     import tempfile
     from pathlib import Path
-
-    from crane_sym import registry
-    from crane_sym.scenes.run import import_module_file
-    from crane_sym.scenes.reading import list_scenes, load_scene
-    from crane_sym.scenes.specialize import module_name, render_scene_module
 
     d = registry.get(derivation_id)
     sections = []

@@ -7,7 +7,8 @@ from pathlib import Path
 from statistics import median
 from typing import Sequence
 
-from crane_sym.bench.rows import DUHAMEL, GENERATED, INTEGRATOR, LAMBDIFY, REFERENCE, BenchRow
+from crane_sym.bench.rows import BenchRow, DUHAMEL, GENERATED, INTEGRATOR, LAMBDIFY, REFERENCE
+from crane_sym.scenes.plots import chunks, numbered, save
 
 ALTERNATIVES = (INTEGRATOR, DUHAMEL)
 
@@ -155,8 +156,6 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     none when no function has an alternative (paper 001's factors)."""
     from matplotlib import colormaps
 
-    from crane_sym.scenes.plots import chunks, numbered, save
-
     names = [n for n in dict.fromkeys(r.function for r in rows)
              if any(r.function == n and r.kind in ALTERNATIVES for r in rows)]
     if not names:                        # no function has an alternative: no plot
@@ -224,8 +223,6 @@ def plot_scaling(scaled: Sequence[tuple], path: Path, title: str) -> list[Path]:
     if not scaled:
         return []
     from matplotlib.figure import Figure
-
-    from crane_sym.scenes.plots import save
 
     names = list(dict.fromkeys(f for f, *_ in scaled))
     fig = Figure(figsize=(WIDTH, 3.6))

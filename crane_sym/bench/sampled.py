@@ -22,10 +22,10 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from crane_sym.mechanics import loads
 from crane_sym.bench.cases import sampled_cases
+from crane_sym.mechanics import loads
 from crane_sym.mechanics.duhamel import duhamel
-from crane_sym.mechanics.sampled_load import _uniform
+from crane_sym.mechanics.sampled_load import _uniform, sampled_response, sampled_response_uniform
 
 T = sp.Symbol("t", nonnegative=True)
 OMEGA = sp.Symbol("Omega", positive=True)
@@ -250,8 +250,6 @@ def sampled_comparison(points: int = 100_000, reference_points: int = 2000,
     ``time_per_point_vs_closed_form`` is seconds per point over the closed
     form's.
     """
-    from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
-
     rows = []
     check = np.unique(np.linspace(0, points - 1, min(reference_points, points)).astype(int))
     quad_at = np.unique(np.linspace(0, points - 1, min(quad_points, points)).astype(int))
@@ -328,8 +326,6 @@ def sampled_accuracy(points: int = 100_001, thetas: Sequence[float] = (1e-6, 1e-
     """Errors of both sampled routes against the mpmath reference on each
     family, with t1 = 1024 steps and exact samples (S at k/1024 of t1); the
     times route gets 0.375 + k q, q the power of 2 nearest theta/Omega."""
-    from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
-
     m = 1024
     check = np.unique(np.append(np.linspace(0, points - 1, reference_points).astype(int),
                                 [1, 2, m]))

@@ -37,7 +37,7 @@ from crane_sym.bench.cases import SweepBenchCase, sweep_cases
 from crane_sym.bench.odes import first_order, parameters
 from crane_sym.bench.rows import least_time
 from crane_sym.scenes.reading import load_scene
-from crane_sym.sweep.grid import run_sweep
+from crane_sym.sweep.grid import chunks_for, grid_arrays, run_sweep
 from crane_sym.sweep.plan import Axis, OutputSpec, SweepPlan
 from crane_sym.sweep.spec import plan
 
@@ -148,7 +148,6 @@ def _main_plan(n: int) -> SweepPlan:
 def _efficiency(n: int = 4000) -> dict[str, Any]:
     """(b) one block list (n × n designs of the main case's peak and of its
     time response), threads with 1 and with 2 workers."""
-    from crane_sym.sweep.grid import chunks_for, grid_arrays
     case = main_case()
     chosen = _main_plan(n)
     arrays = grid_arrays(chosen, chunks_for(chosen))

@@ -17,12 +17,15 @@ from typing import Any
 
 import sympy as sp
 
+from crane_sym import registry
 from crane_sym.audit.verdicts import AuditRecord, audit
 from crane_sym.derivation import Derivation, Step
 from crane_sym.docs.verdicts import Voice
+from crane_sym.docs.walkthrough import (_model, handout_words, printed_blocks, relation_tex,
+                                        step_head)
 from crane_sym.latex import latex
+from crane_sym.scenes.reading import load_scene, scenes_directory
 from crane_sym.symbols import PARAMETER
-from crane_sym.docs.walkthrough import _model, handout_words, printed_blocks, relation_tex, step_head
 
 __all__ = ["notebook", "numbers_tex", "render_notebook", "show"]
 
@@ -100,8 +103,6 @@ def _code(k: int, source: str) -> dict[str, Any]:
 
 def _scene_values(d: Derivation) -> tuple[str, dict[str, float]]:
     """The first shipped scene of the paper and its SI values (none: empty)."""
-    from crane_sym.scenes.reading import load_scene, scenes_directory
-
     files = sorted(scenes_directory(d.id).glob("*.toml"))
     if not files:
         return "", {}
@@ -168,8 +169,6 @@ def render_notebook(d: Derivation, records: list[AuditRecord] | None = None,
 
 def notebook(name: str) -> str:
     """The notebook of a registered derivation, audited (see :func:`render_notebook`)."""
-    from crane_sym import registry
-
     key = registry.resolve(name)
     d = registry.get(key)
     return render_notebook(d, audit(d), getattr(registry.module(key), "LATEX_NAMES", {}),

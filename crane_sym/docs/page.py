@@ -19,7 +19,11 @@ from pathlib import Path
 from markdown_it import MarkdownIt
 from mdit_py_plugins.dollarmath import dollarmath_plugin
 
+from crane_sym import registry
 from crane_sym.docs.numbers import mathml
+from crane_sym.docs.walkthrough import walkthrough
+from crane_sym.scenes.reading import load_scene, scenes_directory
+from crane_sym.scenes.run import run_scene
 
 __all__ = ["handout_page", "markdown_parser", "math_pieces", "render_page"]
 
@@ -151,10 +155,6 @@ def render_page(markdown: str, title: str, figures: list[tuple[str, bytes]] = ()
 def scene_figures(derivation: str) -> tuple[str, list[tuple[str, bytes]]]:
     """The figures of the first scene shipped with ``derivation`` (by file name),
     run now: (a sentence on where they come from, [(caption, PNG)])."""
-    from crane_sym import registry
-    from crane_sym.scenes.run import run_scene
-    from crane_sym.scenes.reading import load_scene, scenes_directory
-
     files = sorted(scenes_directory(registry.resolve(derivation)).glob("*.toml"))
     if not files:
         return "", []
@@ -171,9 +171,6 @@ def scene_figures(derivation: str) -> tuple[str, list[tuple[str, bytes]]]:
 def handout_page(name: str) -> str:
     """The printable page of a registered derivation: its audited walkthrough,
     with the figures of its first shipped scene."""
-    from crane_sym import registry
-    from crane_sym.docs.walkthrough import walkthrough
-
     key = registry.resolve(name)
     note, figures = scene_figures(key)
     return render_page(walkthrough(key), registry.get(key).title, figures, note)

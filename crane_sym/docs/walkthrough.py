@@ -16,6 +16,7 @@ import re
 
 import sympy as sp
 
+from crane_sym import registry
 from crane_sym.audit.verdicts import AuditRecord, audit
 from crane_sym.derivation import Derivation, Step
 from crane_sym.docs.numbers import (broken_lines, decimal, escape_specials, is_number, is_value,
@@ -292,8 +293,6 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
 
 def handout_words(key: str) -> dict[str, str]:
     """The registered paper's ``HANDOUT_WORDS`` (empty when it declares none)."""
-    from crane_sym import registry
-
     return dict(getattr(registry.module(key), "HANDOUT_WORDS", {}))
 
 
@@ -312,8 +311,6 @@ def walkthrough(name: str) -> str:
         :func:`render` of the built derivation, with its audit records, the
         module's ``LATEX_NAMES`` and ``HANDOUT_WORDS`` (empty when it defines none).
     """
-    from crane_sym import registry
-
     key = registry.resolve(name)
     d = registry.get(key)
     latex_names = getattr(registry.module(key), "LATEX_NAMES", {})

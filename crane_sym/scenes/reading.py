@@ -38,8 +38,6 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Sequence
 
-from sympy.physics.units import time as _TIME
-
 from crane_sym import registry, units
 from crane_sym.derivation import SceneLoad
 from crane_sym.scenes.panels import Panel, SceneReport, Span, format_quantity

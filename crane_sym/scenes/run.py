@@ -20,6 +20,7 @@ from typing import Callable
 
 from crane_sym import progress, registry
 from crane_sym.output_files import Stage, check_folder, staged
+from crane_sym.scenes import plots
 from crane_sym.scenes.panels import WARNING
 from crane_sym.scenes.reading import Scene, SceneError, SceneReport, load_scene
 from crane_sym.scenes.specialize import module_name, render_scene_module
@@ -106,8 +107,6 @@ def plot_report(report: SceneReport, title: str, stage: Stage, name: str) -> lis
     figure holds them all, else ``<stem>_1.png``, ``<stem>_2.png`` ... (see
     :func:`crane_sym.scenes.plots.figures`); return the final paths. ``title`` is
     text, never mathtext (a ``$`` in it is printed as a ``$``)."""
-    from crane_sym.scenes import plots
-
     made = plots.figures(report.panels, title.replace("$", r"\$"))
     paths = plots.numbered(stage.folder / name, len(made))
     for fig, path in zip(made, paths):

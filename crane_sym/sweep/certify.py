@@ -34,7 +34,7 @@ from mpmath import iv
 
 from crane_sym import registry
 from crane_sym.mechanics.intervals import enclosure
-from crane_sym.sweep.grid import SweepResult
+from crane_sym.sweep.grid import SweepResult, connect, scheduler_lost
 from crane_sym.sweep.plan import SweepError, SweepPlan
 
 __all__ = ["Certified", "CertifyTask", "certify", "certify_result", "prepare"]
@@ -177,13 +177,11 @@ def certify_result(task: CertifyTask, result: SweepResult,
     """Certify, and say whether the sweep's grid worst lies inside (user's units)."""
     client = None
     if scheduler and scheduler not in ("synchronous", "threads", "processes"):
-        from crane_sym.sweep.grid import connect
         client = connect(scheduler)
     try:
         workers = len(client.scheduler_info()["workers"]) if client else 2
         found = certify(task, client, workers)
     except Exception as exc:
-        from crane_sym.sweep.grid import scheduler_lost
         why = scheduler_lost(client, exc) if client is not None else None
         if why is None:
             raise

@@ -48,10 +48,10 @@ from typing import Any
 
 import numpy as np
 
-from crane_sym import registry
+from crane_sym import __version__, registry
 from crane_sym.output_files import Stage
-from crane_sym.sweep.plan import SweepError, SweepPlan, shown_unit
 from crane_sym.sweep.compute import compute_local, compute_remote, connect, scheduler_lost
+from crane_sym.sweep.plan import SweepError, SweepPlan, shown_unit
 from crane_sym.sweep.store import deferred_signals, remove_settled, sweep_stage
 
 __all__ = ["CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid", "chunks_for",
@@ -208,7 +208,6 @@ def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
     not among them."""
     import xarray as xr
 
-    from crane_sym import __version__
     dims = tuple(a.name for a in plan.axes)
     coords = {a.name: (a.name, a.values(), {"units": a.unit, "to_SI": a.to_si,
                                             "spacing": "log" if a.log else "linear"})

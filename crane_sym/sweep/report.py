@@ -22,8 +22,10 @@ import re
 from pathlib import Path
 from typing import Any
 
-import numpy as np
+import sympy as sp
 
+from crane_sym import registry
+from crane_sym.latex import latex
 from crane_sym.output_files import Stage
 from crane_sym.sweep.grid import MAX_PLOT, SweepResult, plotted, strided
 from crane_sym.sweep.plan import SweepPlan
@@ -130,10 +132,6 @@ def names(plan: SweepPlan) -> dict[str, str]:
     variable: the paper's LaTeX name in mathtext (``LATEX_NAMES``, else
     SymPy's name of the symbol; an output by the symbol a step of the
     derivation defines as its expression, else in words)."""
-    import sympy as sp
-
-    from crane_sym import registry
-    from crane_sym.latex import latex
     d = registry.get(plan.derivation)
 
     def tex(symbol, fallback: str) -> str:
