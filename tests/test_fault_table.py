@@ -47,6 +47,16 @@ def _scene(tmp: Path, shipped: str, **replace: str) -> Path:
     return path
 
 
+def _coefficient(tmp: Path, value: str) -> Path:
+    """The shipped user drive law with its second piece's constant set to ``value``."""
+    text = scene_path("hoist_user_drive_law").read_text(encoding="utf-8")
+    assert "    [0.5],          # a = 0.5\n" in text
+    path = tmp / "hoist_user_drive_law.toml"
+    path.write_text(text.replace("    [0.5],          # a = 0.5\n", f"    [{value}],\n"),
+                    encoding="utf-8")
+    return path
+
+
 def _file(tmp: Path, name: str = "out") -> Path:
     (tmp / name).write_text("a file, not a folder")
     return tmp / name
@@ -155,6 +165,42 @@ ROWS: dict[str, Fault] = {
         r"^crane-sym: interrupted \(SIGINT\); nothing half-written is left\n$", code=130,
         arrange=lambda t, mp: ((t / "out").mkdir(),
                                _interrupt_after_first_write(KeyboardInterrupt)(t, mp))),
+    # scene options and laws: checked on load, before anything is written
+    "run an unknown [options] key": Fault(
+        lambda t: ["run", str(_scene(t, RUN, duration='"1.5 s"\ndurration = "2 s"')),
+                   "--out", str(t / "out")],
+        r"^crane-sym: error: scene 'overhead_crane_50t': unknown \[options\] key 'durration'; "
+        r"did you mean 'duration'\? .*\n$"),
+    "run a negative simulation-only mass": Fault(
+        lambda t: ["run", str(_scene(t, "drum_drive_example", m3='"-800 kg"')),
+                   "--out", str(t / "out")],
+        r"^crane-sym: error: scene 'drum_drive_example': \[options\] m3 \(.*\) must be a "
+        r"quantity of mass .*, got '-800 kg'\n$"),
+    "run z_min above z_max": Fault(
+        lambda t: ["run", str(_scene(t, "fig10_shift_limits", z_min="120")),
+                   "--out", str(t / "out")],
+        r"^crane-sym: error: scene 'fig10_shift_limits': \[options\] z_min = 120 must be "
+        r"below z_max = 100\n$"),
+    "generate --scene a reach that is not a number": Fault(
+        lambda t: ["generate", "--scene",
+                   str(_scene(t, "portal_support_loads", largest_reach_m='"x"')),
+                   "--out", str(t / "out")],
+        r"^crane-sym: error: scene 'portal_support_loads': \[options\] largest_reach_m "
+        r"\(.*\) must be a number in .*, got 'x'\n$"),
+    "run a drive-law coefficient of 1e308": Fault(
+        lambda t: ["run", str(_coefficient(t, "1e308")), "--out", str(t / "out")],
+        r"^crane-sym: error: scene 'hoist_user_drive_law': \[drive_law\] "
+        r"coefficients\[1\]\[0\] = 1e\+308 \(SI\) is too large: .*\n$"),
+    # bench options
+    "bench --points 0": Fault(
+        lambda t: ["bench", "000", "--points", "0", "--out", str(t / "out")],
+        r"^crane-sym: error: --points: must be an integer in 2\.\.1e7, got 0\n$"),
+    "bench --rtols -1": Fault(
+        lambda t: ["bench", "000", "--rtols", "-1", "--out", str(t / "out")],
+        r"^crane-sym: error: --rtols: each tolerance must be in \[1e-13, 0\.1\], got -1\n$"),
+    "bench --sizes 0": Fault(
+        lambda t: ["bench", "000", "--sizes", "0", "--out", str(t / "out")],
+        r"^crane-sym: error: --sizes: each must be an integer in 1\.\.1e8, got 0\n$"),
     # sweep options
     "sweep --limit infinite": Fault(
         lambda t: ["sweep", RUN, "--vary", "m1=1:10:3", "--output", "peak_elastic_force",
