@@ -18,6 +18,7 @@ import numpy as np
 
 from crane_sym.bench.targets import time_functions
 from crane_sym.derivation import Derivation
+from crane_sym.markdown import markdown_table
 
 __all__ = ["MemoryRow", "as_markdown", "function_memory", "peak_bytes", "sampled_memory"]
 
@@ -84,10 +85,9 @@ def sampled_memory(points: int = 10**7) -> list[MemoryRow]:
 
 def as_markdown(rows: list[MemoryRow]) -> str:
     """The rows as one Markdown table, with the target met or not."""
-    lines = ["| function | points | input MB | output MB | peak MB | limit MB "
-             "(2 input + output) | met |", "| --- | ---: | ---: | ---: | ---: | ---: | --- |"]
-    for r in rows:
-        lines.append(f"| {r.function} | {r.points:.0e} | {r.input_bytes / 1e6:.0f} | "
-                     f"{r.output_bytes / 1e6:.0f} | {r.peak_bytes / 1e6:.0f} | "
-                     f"{r.limit / 1e6:.0f} | {'met' if r.met else 'NOT MET'} |")
-    return "\n".join(lines)
+    return markdown_table(
+        ["function", "points", "input MB", "output MB", "peak MB",
+         "limit MB (2 input + output)", "met"],
+        [[r.function, f"{r.points:.0e}", f"{r.input_bytes / 1e6:.0f}",
+          f"{r.output_bytes / 1e6:.0f}", f"{r.peak_bytes / 1e6:.0f}", f"{r.limit / 1e6:.0f}",
+          "met" if r.met else "NOT MET"] for r in rows], align="lrrrrrl")

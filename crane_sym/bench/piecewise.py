@@ -19,6 +19,7 @@ import mpmath
 import numpy as np
 from scipy.integrate import solve_ivp
 
+from crane_sym.markdown import markdown_table
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.closed_forms import clear_cache
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, by_phase
@@ -235,15 +236,14 @@ def as_markdown(rows: Sequence[PiecewiseRow], points: int) -> str:
     (event search, table and evaluation of ``points`` times)."""
     closed = sum(r.seconds for r in rows if r.method.startswith("closed form")
                  and not r.method.endswith("cold"))
-    lines = ["| method | rtol | seconds | × closed form | error / peak | phases |",
-             "| --- | --- | --- | --- | --- | --- |"]
+    lines = []
     for r in rows:
         rtol = "" if np.isnan(r.rtol) else f"{r.rtol:.3g}"
         err = "" if np.isnan(r.error) else f"{r.error:.1e}"
         ratio = "" if r.method.startswith(("closed", "scene")) else f"{r.seconds / closed:.2g}"
-        lines.append(f"| {r.method} | {rtol} | {r.seconds:.2e} | {ratio} | {err} | "
-                     f"{r.phases} |")
-    return "\n".join(lines)
+        lines.append([r.method, rtol, f"{r.seconds:.2e}", ratio, err, r.phases])
+    return markdown_table(["method", "rtol", "seconds", "× closed form", "error / peak",
+                           "phases"], lines)
 
 
 def scene_sections(derivation_id: str, points: int = 2000,

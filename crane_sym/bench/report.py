@@ -8,6 +8,7 @@ from statistics import median
 from typing import Sequence
 
 from crane_sym.bench.rows import DUHAMEL, GENERATED, INTEGRATOR, LAMBDIFY, REFERENCE, BenchRow
+from crane_sym.markdown import markdown_table
 
 ALTERNATIVES = (INTEGRATOR, DUHAMEL)
 
@@ -18,15 +19,13 @@ def _num(x: float, spec: str) -> str:
 
 def as_markdown(rows: Sequence[BenchRow]) -> str:
     """One Markdown table of ``rows``."""
-    lines = ["| function | method | points | evals/s | max rel. error | max error / peak "
-             "| time / generated (per evaluation) | time / np.cos |",
-             "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
-    for r in rows:
-        lines.append(f"| {r.function} | {r.method} | {r.points} | "
-                     f"{_num(r.points / r.seconds, '.3g')} | {_num(r.max_rel_error, '.2e')} | "
-                     f"{_num(r.max_error_over_peak, '.2e')} | "
-                     f"{_num(r.ratio_to_generated, '.3g')} | {_num(r.ratio_to_floor, '.3g')} |")
-    return "\n".join(lines)
+    return markdown_table(
+        ["function", "method", "points", "evals/s", "max rel. error", "max error / peak",
+         "time / generated (per evaluation)", "time / np.cos"],
+        [[r.function, r.method, r.points, _num(r.points / r.seconds, ".3g"),
+          _num(r.max_rel_error, ".2e"), _num(r.max_error_over_peak, ".2e"),
+          _num(r.ratio_to_generated, ".3g"), _num(r.ratio_to_floor, ".3g")] for r in rows],
+        align="llrrrrrr")
 
 
 def not_applicable(d, rows: Sequence[BenchRow]) -> list[tuple[str, str, str]]:

@@ -24,6 +24,7 @@ import sympy as sp
 
 from crane_sym.mechanics import loads
 from crane_sym.bench.cases import sampled_cases
+from crane_sym.markdown import markdown_table
 from crane_sym.mechanics.duhamel import duhamel
 from crane_sym.mechanics.sampled_load import _uniform
 
@@ -356,21 +357,19 @@ def sampled_accuracy(points: int = 100_001, thetas: Sequence[float] = (1e-6, 1e-
 
 def as_markdown(rows: Sequence[SampledRow]) -> str:
     """The rows as one Markdown table."""
-    lines = ["| function | method | points | seconds | time/point vs closed form | "
-             "max error / peak |", "| --- | --- | ---: | ---: | ---: | ---: |"]
-    for r in rows:
-        lines.append(f"| {r.function} | {r.method} | {r.points} | {r.seconds:.3g} | "
-                     f"{r.time_per_point_vs_closed_form:.3g} | {r.max_rel_error:.2e} |")
-    return "\n".join(lines)
+    return markdown_table(
+        ["function", "method", "points", "seconds", "time/point vs closed form",
+         "max error / peak"],
+        [[r.function, r.method, r.points, f"{r.seconds:.3g}",
+          f"{r.time_per_point_vs_closed_form:.3g}", f"{r.max_rel_error:.2e}"] for r in rows],
+        align="llrrrr")
 
 
 def accuracy_markdown(rows: Sequence[AccuracyRow]) -> str:
     """The accuracy rows as one Markdown table."""
-    lines = ["| load | Omega h | route | points | x: error / peak | x': error / peak | "
-             "x: pointwise | x': pointwise |",
-             "| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
-    for r in rows:
-        lines.append(f"| {r.family} | {r.theta:g} | {r.route} | {r.points} | "
-                     f"{r.x_over_peak:.1e} | {r.v_over_peak:.1e} | {r.x_pointwise:.1e} | "
-                     f"{r.v_pointwise:.1e} |")
-    return "\n".join(lines)
+    return markdown_table(
+        ["load", "Omega h", "route", "points", "x: error / peak", "x': error / peak",
+         "x: pointwise", "x': pointwise"],
+        [[r.family, f"{r.theta:g}", r.route, r.points, f"{r.x_over_peak:.1e}",
+          f"{r.v_over_peak:.1e}", f"{r.x_pointwise:.1e}", f"{r.v_pointwise:.1e}"]
+         for r in rows], align="lrlrrrrr")

@@ -22,6 +22,7 @@ import numpy as np
 from crane_sym.bench import functions as bench
 from crane_sym.bench.rows import GENERATED, INTEGRATOR, BenchRow, best_time
 from crane_sym.derivation import Derivation
+from crane_sym.markdown import markdown_table
 
 SIZES = (10**4, 10**5, 10**6, 10**7)
 QUICK_SIZES = (10**4, 10**5)
@@ -167,27 +168,23 @@ def goals(paper: str, arrays, scalars, scaled) -> list[Goal]:
 
 def goals_table(found: Sequence[Goal]) -> str:
     """Markdown table of the targets with a met / not met column."""
-    lines = ["| paper | target | measured (worst) | limit | met | worst case |",
-             "| --- | --- | ---: | ---: | --- | --- |"]
-    lines += [f"| {g.paper} | {g.target} | {g.measured:.3g} | {g.limit:g} | "
-              f"{'met' if g.met else 'NOT MET'} | {g.worst} |" for g in found]
-    return "\n".join(lines)
+    return markdown_table(
+        ["paper", "target", "measured (worst)", "limit", "met", "worst case"],
+        [[g.paper, g.target, f"{g.measured:.3g}", f"{g.limit:g}",
+          "met" if g.met else "NOT MET", g.worst] for g in found], align="llrrll")
 
 
 def scaling_table(scaled) -> str:
     """Markdown: closed form against the best tuned integrator at each N."""
-    lines = ["| function | points | best integrator reaching 1e-9 of the peak | "
-             "integrator s | closed form s | integrator / closed form |",
-             "| --- | ---: | --- | ---: | ---: | ---: |"]
-    lines += [f"| {f} | {n} | {m} | {i:.3g} | {g:.3g} | "
-              f"{i / g:.3g}{' (integrator wins)' if i < g else ''} |"
-              for f, n, m, i, g in scaled]
-    return "\n".join(lines)
+    return markdown_table(
+        ["function", "points", "best integrator reaching 1e-9 of the peak", "integrator s",
+         "closed form s", "integrator / closed form"],
+        [[f, n, m, f"{i:.3g}", f"{g:.3g}", f"{i / g:.3g}" + (" (integrator wins)" if i < g else "")]
+         for f, n, m, i, g in scaled], align="lrlrrr")
 
 
 def arrays_table(arrays) -> str:
     """Markdown: warm and cold ratios to np.cos per function and size."""
-    lines = ["| function | kind | points | warm / np.cos | cold / np.cos |",
-             "| --- | --- | ---: | ---: | ---: |"]
-    lines += [f"| {f} | {k} | {n} | {w:.3g} | {c:.3g} |" for f, k, n, w, c in arrays]
-    return "\n".join(lines)
+    return markdown_table(["function", "kind", "points", "warm / np.cos", "cold / np.cos"],
+                          [[f, k, n, f"{w:.3g}", f"{c:.3g}"] for f, k, n, w, c in arrays],
+                          align="llrrr")
