@@ -6,11 +6,11 @@ error against an mpmath reference (50 digits), the same for a plain
 ``sympy.lambdify`` of the derived expression, and the throughput floor, one
 ``np.cos`` over an array of the same length. For every quantity a derivation
 also declares as an ODE system: SciPy's integrators at four tolerances
-(``bench_odes``) and, where the system is x'' + Ω²x = S(t), Duhamel's integral
-by quadrature and by discrete convolution (``bench_duhamel``). A response with
-no closed form is benched against a modal mpmath solution (``bench_linear``).
+(``bench.odes``) and, where the system is x'' + Ω²x = S(t), Duhamel's integral
+by quadrature and by discrete convolution (``bench.duhamel``). A response with
+no closed form is benched against a modal mpmath solution (``bench.linear``).
 Times are this machine's; ratios are taken within one run. Tables and plots:
-``bench_report``.
+``bench.report``.
 """
 from __future__ import annotations
 

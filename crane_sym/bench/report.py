@@ -151,7 +151,8 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     colour per method, one line style per coordinate system and right-hand
     side, the legend below the panels. Drawn at page width with 9-pt type, two
     panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more;
-    none when no function has an alternative (paper 001's factors)."""
+    none when no function has an alternative (Vöth and Tyulenev's torque and
+    brake factors)."""
     from matplotlib import colormaps
 
     from crane_sym.scenes.plots import chunks, numbered, save

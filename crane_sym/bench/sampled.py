@@ -38,7 +38,7 @@ _ARGS = (T, OMEGA, X0, V0, S0, T1)
 def family_load(name: str) -> loads.PiecewiseLoad:
     """The load of one family in the amplitude ``S0`` and the time ``t1``.
 
-    ``step`` S0 (paper 002, eq (35)); ``ramp`` S0 t/t1 without end (eq (40));
+    ``step`` S0 (Chovnyuk et al., eq (35)); ``ramp`` S0 t/t1 without end (eq (40));
     ``ramp_hold`` up to S0 at t1, then held (eqs (48)–(49)); ``pulse`` S0
     until t1 (eq (44)); ``trapezoid`` a polynomial of degree 1 on each of
     [0, t1], [t1, 2t1], [2t1, 3t1], zero after (rise, hold, fall); ``cubic``

@@ -5,8 +5,8 @@ paper's order (what was done, why, the formula as the paper printed it beside
 its verdict), to a summary of the verdicts. Formulas are LaTeX: ``$...$``
 inline and ``$$...$$`` on lines of their own for displays. A derived number
 is shown as a decimal (beside a print, to the print's digits); a long closed
-form is written with named intermediate quantities (``handout_math``); the
-verdicts are said in words (``handout_verdicts``).
+form is written with named intermediate quantities (``docs.numbers``); the
+verdicts are said in words (``docs.verdicts``).
 
 Both functions are pure: they return text and neither print nor write files.
 """

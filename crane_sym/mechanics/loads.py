@@ -7,7 +7,7 @@ A load is a list of breakpoints and one expression per piece,
     S(t) = S_k(t), \\qquad b_k \\le t < b_{k+1}, \\qquad k = 0, \\dots, N - 1,
 
 with :math:`b_N = \\infty` and :math:`S(t) = 0` before :math:`b_0`. The
-constructors build the laws of the Duhamel examples of paper 002 (sudden
+constructors build the laws of the Duhamel examples of Chovnyuk et al. (sudden
 load, linear rise, linear rise then hold, rectangular pulse) and polynomial
 laws given by numbers from a scene file. Numbers from a user are checked by
 type and never parsed or evaluated (``exact_number``).
@@ -170,18 +170,18 @@ class PiecewiseLoad:
 
 # --- Constructors ------------------------------------------------------------
 def step(S0: sp.Expr | Number, *, t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Sudden load :math:`S(t) = S_0` for :math:`t \\ge 0` (paper 002, eq (35))."""
+    """Sudden load :math:`S(t) = S_0` for :math:`t \\ge 0` (Chovnyuk et al., eq (35))."""
     return PiecewiseLoad((0,), (as_expression(S0, "S0"),), t)
 
 
 def linear(rate: sp.Expr | Number, *, t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Unbounded linear rise :math:`S(t) = k t` (paper 002, eq (40))."""
+    """Unbounded linear rise :math:`S(t) = k t` (Chovnyuk et al., eq (40))."""
     return PiecewiseLoad((0,), (as_expression(rate, "rate") * t,), t)
 
 
 def ramp(S0: sp.Expr | Number, t1: sp.Expr | Number, *,
          t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Linear rise to :math:`S_0` at :math:`t_1`, then hold (paper 002, eqs (48)–(49)).
+    """Linear rise to :math:`S_0` at :math:`t_1`, then hold (Chovnyuk et al., eqs (48)–(49)).
 
     .. math::
 
@@ -193,7 +193,7 @@ def ramp(S0: sp.Expr | Number, t1: sp.Expr | Number, *,
 
 def rectangular_pulse(S0: sp.Expr | Number, theta: sp.Expr | Number, *,
                       t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Load :math:`S_0` for :math:`0 \\le t < \\theta`, zero after (paper 002, eq (44))."""
+    """Load :math:`S_0` for :math:`0 \\le t < \\theta`, zero after (Chovnyuk et al., eq (44))."""
     S0, theta = as_expression(S0, "S0"), as_expression(theta, "theta")
     return PiecewiseLoad((0, theta), (S0, sp.Integer(0)), t)
 

@@ -13,7 +13,7 @@ scene's data); an output g = w·x + k of the state is then, on phase i,
 with the terms of the phase's closed form merged by (k, σ, ω). The table is
 what a scene's generated module carries (``crane_sym.codegen.tabulated`` prints it):
 the response as arithmetic only, no event search at run time. The same kernel
-(``kernels._phase_sum``) evaluates it here and in the generated code.
+(``kernels.arithmetic._phase_sum``) evaluates it here and in the generated code.
 """
 from __future__ import annotations
 
@@ -48,7 +48,7 @@ class PhaseTable:
     events: tuple[str, ...]
 
     def arrays(self) -> tuple[np.ndarray, ...]:
-        """The arrays in the order ``kernels._phase_sum`` takes them."""
+        """The arrays in the order ``kernels.arithmetic._phase_sum`` takes them."""
         return (self.edges, self.first, self.powers, self.sigmas, self.omegas,
                 self.cos_amps, self.sin_amps, self.consts)
 

@@ -26,8 +26,9 @@ Switching
 :func:`simulate` runs a :class:`HybridSystem`: a set of modes (any hashable
 key), each with its (A, b), its guards, and a rule that maps a fired guard or
 a scheduled instant to the next mode and state (e.g. a brake that sticks sets
-a speed to zero). Paper 001's two-mass hoist with coupling backlash and paper
-003's three-mass travel drive with backlash in two stages are such systems.
+a speed to zero). Vöth and Tyulenev's two-mass hoist with coupling backlash and
+Andrianov and Ivanov's three-mass travel drive with backlash in two stages are
+such systems.
 """
 from __future__ import annotations
 

@@ -7,7 +7,7 @@ still resting on the ground) marks that part as :class:`Span` s in
 ``Panel.invalid`` (:func:`outside` makes them from the valid interval);
 ``crane_sym.scenes.plots`` greys them, draws the curves there faint, scales the y
 axis to the valid part and names the reason in the legend. The report says
-so in a line that starts with ``warning:`` (``scene_run`` refuses a report
+so in a line that starts with ``warning:`` (``scenes.run`` refuses a report
 that greys a panel without one), and takes its maxima over the valid part
 (:func:`valid_mask`).
 """

@@ -18,7 +18,7 @@ Optional: ``[scene] inputs`` lists parameters left as arguments of the
 scene's functions, ``[options] <switch> = false`` turns off a part of the
 model the derivation declares in ``Derivation.switches`` (e.g. ``damping``),
 and a table named after one of the derivation's scene loads
-(``SCENE_LOADS`` of its package, e.g. ``[drive_law]`` of paper 002) gives a
+(``SCENE_LOADS`` of its package, e.g. ``[drive_law]`` of Chovnyuk et al.) gives a
 load as data, which the specializer turns into the scene's functions.
 ``[options]`` takes what ``crane_sym.scenes.options.options_for`` declares for
 the scene (``duration``, ``points``, the switches, the paper's
@@ -27,7 +27,7 @@ run last. An unknown key in any table is an error naming the closest known one.
 Values are converted to SI by :func:`crane_sym.units.convert`; they are parsed,
 never evaluated, and checked against the sign the symbol table admits. This is
 stage 1 of the one scene pipeline (read and validate → ``specialize`` →
-generate → ``scene_run``). Scenes shipped with the package live in
+generate → ``scenes.run``). Scenes shipped with the package live in
 ``derivations/<id>/scenes/`` of each paper.
 """
 from __future__ import annotations
@@ -90,7 +90,7 @@ class Scene:
     load : object
         The load as its ``SceneLoad.read`` validated it, or None.
     settings : dict
-        Every option the scene takes (``scene_options``), read by its
+        Every option the scene takes (``scenes.options``), read by its
         declaration: given or default, bounds checked, quantities in SI.
         What a report reads.
     """

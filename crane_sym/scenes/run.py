@@ -1,7 +1,7 @@
 """Stage 4 of the scene pipeline: run a scene and plot it.
 
 Every scene takes the same path (``crane-sym run``): read and validate the
-TOML (``scenes.load_scene``) → specialize (``specialize``) → generate its
+TOML (``scenes.reading.load_scene``) → specialize (``specialize``) → generate its
 module, written beside the plot as ``scene_<name>.py``, the file
 ``crane-sym generate --scene`` writes → import that file and hand it to the
 derivation's ``scene_report(scene, module)`` → plot the report's panels.

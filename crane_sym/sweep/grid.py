@@ -25,7 +25,7 @@ Zarr store; the difference is the blocks' transfer between processes).
 Processes for the simulated responses: one SciPy integration per design runs
 Python code that holds the GIL, so threads never pass one core (measured: 0.98
 CPU seconds per wall second with two threads). On this shared machine the
-measurement did not favour them (004, 24 designs: threads 11.2 s, processes
+measurement did not favour them (Martyntsiv et al.'s drum, 24 designs: threads 11.2 s, processes
 14.1 s, synchronous 11.1 s at load ≈ 3 on 2 cores): starting two worker
 processes costs ~3 s and the second core was busy; they are kept for large
 simulated sweeps on a machine with free cores, the case they serve. With ``scheduler=ADDRESS`` a
