@@ -58,7 +58,19 @@ def peak_bytes(call: Callable[[], object]) -> tuple[int, int]:
 
 def function_memory(d: Derivation, values: dict, duration: float,
                     points: int = 10**7) -> list[MemoryRow]:
-    """A row for every generated time function of ``d`` on ``points`` times."""
+    """A row for every generated time function of ``d`` on ``points`` times.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    values : dict
+        Scalar values (SI) for the functions' other arguments.
+    duration : float
+        The time span [0, duration] [s].
+    points : int, optional
+        Length of the time array.
+    """
     module = importlib.import_module(f"crane_sym.generated.{d.id}")
     t = np.linspace(0.0, duration, points)
     rows = []
@@ -73,7 +85,13 @@ def function_memory(d: Derivation, values: dict, duration: float,
 
 def sampled_memory(points: int = 10**7) -> list[MemoryRow]:
     """Rows for the sampled-load responses (x and x') on ``points`` samples;
-    ``sampled_response`` takes the times as well, so its input is two arrays."""
+    ``sampled_response`` takes the times as well, so its input is two arrays.
+
+    Parameters
+    ----------
+    points : int, optional
+        Number of load samples.
+    """
     from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
     t = np.arange(points) * 1e-3
     S = np.sin(t) + 1.0
@@ -84,7 +102,13 @@ def sampled_memory(points: int = 10**7) -> list[MemoryRow]:
 
 
 def as_markdown(rows: list[MemoryRow]) -> str:
-    """The rows as one Markdown table, with the target met or not."""
+    """The rows as one Markdown table, with the target met or not.
+
+    Parameters
+    ----------
+    rows : list of MemoryRow
+        Rows from :func:`function_memory` or :func:`sampled_memory`.
+    """
     return markdown_table(
         ["function", "points", "input MB", "output MB", "peak MB",
          "limit MB (2 input + output)", "met"],

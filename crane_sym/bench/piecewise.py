@@ -251,7 +251,19 @@ def scene_sections(derivation_id: str, points: int = 2000,
                    rtols: Sequence[float] = RTOLS) -> list[str]:
     """One Markdown section per tabulated output of every shipped scene of the
     derivation: the closed form (the library's and the scene module's) against
-    the integrators, in one run."""
+    the integrators, in one run.
+
+    Parameters
+    ----------
+    derivation_id : str
+        A registered derivation id.
+    points : int, optional
+        Number of output times.
+    methods : sequence of str, optional
+        ``solve_ivp`` methods compared with the closed form.
+    rtols : sequence of float, optional
+        Integrator tolerances.
+    """
     import tempfile
     from pathlib import Path
 

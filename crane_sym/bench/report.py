@@ -18,7 +18,13 @@ def _num(x: float, spec: str) -> str:
 
 
 def as_markdown(rows: Sequence[BenchRow]) -> str:
-    """One Markdown table of ``rows``."""
+    """One Markdown table of ``rows``.
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one bench run.
+    """
     return markdown_table(
         ["function", "method", "points", "evals/s", "max rel. error", "max error / peak",
          "time / generated (per evaluation)", "time / np.cos"],
@@ -29,7 +35,15 @@ def as_markdown(rows: Sequence[BenchRow]) -> str:
 
 
 def not_applicable(d, rows: Sequence[BenchRow]) -> list[tuple[str, str, str]]:
-    """(function, target, why) for each comparison that does not apply."""
+    """(function, target, why) for each comparison that does not apply.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation (its outputs).
+    rows : sequence of BenchRow
+        The rows of its bench run.
+    """
     kinds = {}
     for r in rows:
         kinds.setdefault(r.function, set()).add(r.kind)
@@ -64,7 +78,15 @@ def _spread(values: list[float]) -> str:
 def headline(rows: Sequence[BenchRow], target: float = 1e-9) -> list[str]:
     """The paper's summary line, then one line per function. Errors are
     normwise (max error over the peak |value|) so that quantities through zero
-    compare fairly; ratios are time per evaluation, from one run."""
+    compare fairly; ratios are time per evaluation, from one run.
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one paper's bench run.
+    target : float, optional
+        The error over the peak an integrator has to reach to be compared.
+    """
     if not rows:
         return []
     by_name: dict[str, list[BenchRow]] = {}
@@ -152,7 +174,17 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     side, the legend below the panels. Drawn at page width with 9-pt type, two
     panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more;
     none when no function has an alternative (Vöth and Tyulenev's torque and
-    brake factors)."""
+    brake factors).
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one paper's bench run.
+    path : Path
+        The PNG to write (numbered when there are several).
+    title : str
+        The figure's title.
+    """
     from matplotlib import colormaps
 
     from crane_sym.scenes.plots import chunks, numbered, save
@@ -220,7 +252,18 @@ def _figure(rows: Sequence[BenchRow], names: Sequence[str], families: Sequence[s
 def plot_scaling(scaled: Sequence[tuple], path: Path, title: str) -> list[Path]:
     """Time of the best tuned integrator over the closed form's against the
     number of points, one line per function (log-log; below 1 the integrator
-    wins); the legend to the right of the panel. [] when there is nothing."""
+    wins); the legend to the right of the panel. [] when there is nothing.
+
+    Parameters
+    ----------
+    scaled : sequence of tuple
+        (function, points, integrator, its seconds, closed form's seconds), as
+        :func:`crane_sym.bench.targets.scaling` returns them.
+    path : Path
+        The PNG to write.
+    title : str
+        The figure's title.
+    """
     if not scaled:
         return []
     from matplotlib.figure import Figure

@@ -250,6 +250,15 @@ def sampled_comparison(points: int = 100_000, reference_points: int = 2000,
     return x and x', the closed form one quantity.
     ``time_per_point_vs_closed_form`` is seconds per point over the closed
     form's.
+
+    Parameters
+    ----------
+    points : int, optional
+        Number of samples.
+    reference_points : int, optional
+        Samples checked against mpmath.
+    quad_points : int, optional
+        Samples the QUADPACK rule runs on.
     """
     from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
 
@@ -328,7 +337,23 @@ def sampled_accuracy(points: int = 100_001, thetas: Sequence[float] = (1e-6, 1e-
                      S0: float = 2.5) -> list[AccuracyRow]:
     """Errors of both sampled routes against the mpmath reference on each
     family, with t1 = 1024 steps and exact samples (S at k/1024 of t1); the
-    times route gets 0.375 + k q, q the power of 2 nearest theta/Omega."""
+    times route gets 0.375 + k q, q the power of 2 nearest theta/Omega.
+
+    Parameters
+    ----------
+    points : int, optional
+        Number of samples of each load.
+    thetas : sequence of float, optional
+        The values of Omega h (step times frequency) to test.
+    families : sequence of str, optional
+        Load families (:func:`family_load`).
+    reference_points : int, optional
+        Samples checked against mpmath.
+    Omega : float, optional
+        Natural circular frequency [rad/s].
+    S0 : float, optional
+        Load amplitude [m/s^2].
+    """
     from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
 
     m = 1024
@@ -356,7 +381,13 @@ def sampled_accuracy(points: int = 100_001, thetas: Sequence[float] = (1e-6, 1e-
 
 
 def as_markdown(rows: Sequence[SampledRow]) -> str:
-    """The rows as one Markdown table."""
+    """The rows as one Markdown table.
+
+    Parameters
+    ----------
+    rows : sequence of SampledRow
+        Rows from :func:`sampled_comparison`.
+    """
     return markdown_table(
         ["function", "method", "points", "seconds", "time/point vs closed form",
          "max error / peak"],
@@ -366,7 +397,13 @@ def as_markdown(rows: Sequence[SampledRow]) -> str:
 
 
 def accuracy_markdown(rows: Sequence[AccuracyRow]) -> str:
-    """The accuracy rows as one Markdown table."""
+    """The accuracy rows as one Markdown table.
+
+    Parameters
+    ----------
+    rows : sequence of AccuracyRow
+        Rows from :func:`sampled_accuracy`.
+    """
     return markdown_table(
         ["load", "Omega h", "route", "points", "x: error / peak", "x': error / peak",
          "x: pointwise", "x': pointwise"],

@@ -248,7 +248,13 @@ def _matched(a: dict[str, Any]) -> list[str]:
 
 
 def markdown(r: dict[str, Any]) -> str:
-    """The results as the Markdown of ``bench_sweep.md``."""
+    """The results as the Markdown of ``bench_sweep.md``.
+
+    Parameters
+    ----------
+    r : dict
+        The results of :func:`bench_sweep`.
+    """
     lines = ["# Bench: design sweeps (crane-sym sweep)", "",
              f"{r['cores']} cores, load average {r['load_average']:.1f} at the end (the "
              "machine is shared; ratios come from this one run).", "",

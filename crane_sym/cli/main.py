@@ -344,7 +344,13 @@ def _os_message(err: OSError) -> str:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit code: 0 done, 1 a check failed
     (``generate --check``, ``accuracy``), 2 an error (one line on stderr),
-    130 interrupted (SIGINT), 143 terminated (SIGTERM)."""
+    130 interrupted (SIGINT), 143 terminated (SIGTERM).
+
+    Parameters
+    ----------
+    argv : sequence of str, optional
+        The arguments after ``crane-sym`` (default: ``sys.argv[1:]``).
+    """
     args = parser().parse_args(argv)
     previous = None
     if threading.current_thread() is threading.main_thread():

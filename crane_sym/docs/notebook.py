@@ -167,7 +167,13 @@ def render_notebook(d: Derivation, records: list[AuditRecord] | None = None,
 
 
 def notebook(name: str) -> str:
-    """The notebook of a registered derivation, audited (see :func:`render_notebook`)."""
+    """The notebook of a registered derivation, audited (see :func:`render_notebook`).
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number.
+    """
     from crane_sym import registry
 
     key = registry.resolve(name)

@@ -170,7 +170,13 @@ def scene_figures(derivation: str) -> tuple[str, list[tuple[str, bytes]]]:
 
 def handout_page(name: str) -> str:
     """The printable page of a registered derivation: its audited walkthrough,
-    with the figures of its first shipped scene."""
+    with the figures of its first shipped scene.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number.
+    """
     from crane_sym import registry
     from crane_sym.docs.walkthrough import walkthrough
 

@@ -123,6 +123,17 @@ def free_response(omega: sp.Expr, t: sp.Symbol, u0: sp.Expr, v0: sp.Expr,
 
     .. math:: u_{\\mathrm{free}}(t) = u_0 \\cos\\omega t + \\frac{v_0}{\\omega}\\sin\\omega t
               \\quad (n = 0).
+
+    Parameters
+    ----------
+    omega : positive expression or number
+        Natural circular frequency.
+    t : Symbol
+        Time.
+    u0, v0 : expression or number
+        Initial displacement and velocity.
+    damping : expression or number
+        :math:`n \\ge 0` (not critical).
     """
     osc = _Oscillator.of(omega, damping)
     u0, v0 = as_expression(u0, "u0"), as_expression(v0, "v0")

@@ -89,7 +89,17 @@ class SceneReport:
 
 
 def format_quantity(value: float, unit: str = "", digits: int = 4) -> str:
-    """``value`` with ``digits`` significant digits and its unit, e.g. ``"45.31 kN"``."""
+    """``value`` with ``digits`` significant digits and its unit, e.g. ``"45.31 kN"``.
+
+    Parameters
+    ----------
+    value : float
+        The value.
+    unit : str, optional
+        Its unit.
+    digits : int, optional
+        Significant digits.
+    """
     text = f"{value:#.{digits}g}"
     if "e" not in text:
         text = text.rstrip(".")
@@ -103,6 +113,13 @@ def outside(start: float, end: float, before: str = "", after: str = "") -> list
 
     >>> [s.end for s in outside(-math.inf, 2.5, after="crane stopped")]
     [inf]
+
+    Parameters
+    ----------
+    start, end : float
+        The valid interval.
+    before, after : str, optional
+        Why the model does not hold below ``start`` and above ``end``.
     """
     spans = []
     if before and start > -math.inf:
@@ -113,7 +130,15 @@ def outside(start: float, end: float, before: str = "", after: str = "") -> list
 
 
 def valid_mask(x: np.ndarray | Sequence[float], spans: Sequence[Span]) -> np.ndarray:
-    """True where ``x`` lies in none of ``spans``."""
+    """True where ``x`` lies in none of ``spans``.
+
+    Parameters
+    ----------
+    x : array_like
+        The x values.
+    spans : sequence of Span
+        The invalid spans.
+    """
     x = np.asarray(x, dtype=float)
     ok = np.ones(x.shape, dtype=bool)
     for span in spans:

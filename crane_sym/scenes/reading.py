@@ -110,7 +110,13 @@ class Scene:
 
 
 def scenes_directory(derivation: str) -> Path:
-    """The folder of the scenes shipped with a derivation's package."""
+    """The folder of the scenes shipped with a derivation's package.
+
+    Parameters
+    ----------
+    derivation : str
+        A derivation id.
+    """
     return Path(registry.module_path(derivation)).parent / "scenes"
 
 
@@ -132,7 +138,13 @@ def list_scenes() -> list[str]:
 
 
 def scene_path(name: str) -> Path:
-    """The file of the shipped scene ``name``."""
+    """The file of the shipped scene ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A shipped scene's name.
+    """
     shipped = _shipped()
     if not _SAFE_NAME.fullmatch(name) or name not in shipped:
         raise SceneError(f"unknown scene {name!r}; known: {', '.join(sorted(shipped))}")
@@ -151,7 +163,13 @@ def _locate(path_or_name: str | Path) -> Path:
 
 
 def read_toml(path: Path) -> dict[str, Any]:
-    """The scene file's tables; SceneError if it is not valid UTF-8 TOML."""
+    """The scene file's tables; SceneError if it is not valid UTF-8 TOML.
+
+    Parameters
+    ----------
+    path : Path
+        The scene file.
+    """
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:

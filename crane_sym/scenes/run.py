@@ -29,7 +29,13 @@ __all__ = ["import_module_file", "plot_report", "run_scene", "time_function"]
 
 def import_module_file(path: Path) -> ModuleType:
     """Import the module the printer wrote at ``path`` (our own output, never
-    user text)."""
+    user text).
+
+    Parameters
+    ----------
+    path : Path
+        The module's file.
+    """
     spec = importlib.util.spec_from_file_location(f"_crane_sym_scene_{path.stem}", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
@@ -39,7 +45,17 @@ def import_module_file(path: Path) -> ModuleType:
 def time_function(scene: Scene, module: ModuleType, name: str) -> Callable:
     """``name`` as a function of time alone: from the scene's own module when
     the scene names it among its outputs, else from the paper's general
-    module ``crane_sym.generated.<id>`` with the scene's parameters filled in."""
+    module ``crane_sym.generated.<id>`` with the scene's parameters filled in.
+
+    Parameters
+    ----------
+    scene : Scene
+        The scene.
+    module : module
+        Its specialized module.
+    name : str
+        An output of the paper.
+    """
     if name in scene.outputs:
         return getattr(module, name)
     general = getattr(importlib.import_module(f"crane_sym.generated.{scene.derivation}"),
