@@ -153,7 +153,7 @@ class SceneLoad:
     One more kind of scene input beside parameter values, switches and
     inputs: the scene reader hands the table to ``read``, and the specializer
     hands the validated scene to ``specialize``, which returns the scene's
-    functions (e.g. the drive law a(t) of paper 002, convolved by Duhamel's
+    functions (e.g. Chovnyuk et al.'s drive law a(t), convolved by Duhamel's
     integral).
     A paper package declares its loads in ``SCENE_LOADS`` (table -> SceneLoad),
     readable without building the derivation.

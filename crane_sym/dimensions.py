@@ -36,7 +36,13 @@ class DimensionMismatch(Exception):
 
 
 def vector(dim: Dimension) -> DimVec:
-    """Canonical exponent vector of a SymPy ``Dimension``."""
+    """Canonical exponent vector of a SymPy ``Dimension``.
+
+    Parameters
+    ----------
+    dim : Dimension
+        A SymPy dimension.
+    """
     deps = dimsys_SI.get_dimensional_dependencies(dim)
     return _normal({str(k.name): sp.Rational(v) for k, v in deps.items()})
 
@@ -162,7 +168,17 @@ class DimensionReport:
 def check_equation(lhs: sp.Expr, rhs: sp.Expr, dims: Mapping[sp.Basic, DimVec],
                    names: Mapping[sp.Basic, str] | None = None) -> DimensionReport:
     """Check that every term on both sides of ``lhs = rhs`` shares one dimension;
-    offending terms are named in LaTeX (``names``: the paper's symbol names)."""
+    offending terms are named in LaTeX (``names``: the paper's symbol names).
+
+    Parameters
+    ----------
+    lhs, rhs : sympy.Expr
+        The two sides.
+    dims : mapping of sympy.Basic to DimVec
+        The dimension of every symbol and function in them.
+    names : mapping of sympy.Basic to str, optional
+        LaTeX names for the report.
+    """
     terms = list(sp.Add.make_args(lhs)) + list(sp.Add.make_args(rhs))
     terms = [t for t in terms if t != 0]
     try:

@@ -21,7 +21,13 @@ _TEXT = re.compile(r"\\(?:text|mathrm)\{[^{}]*\}")
 
 def cyrillic_as_text(tex: str) -> str:
     """``tex`` with each Cyrillic run outside ``\\text{}``/``\\mathrm{}`` wrapped
-    in ``\\text{}``, so that math renderers set it upright as a word."""
+    in ``\\text{}``, so that math renderers set it upright as a word.
+
+    Parameters
+    ----------
+    tex : str
+        LaTeX text.
+    """
     out, last = [], 0
     for m in _TEXT.finditer(tex):
         out.append(_CYRILLIC.sub(lambda c: rf"\text{{{c.group(0)}}}", tex[last:m.start()]))
@@ -88,5 +94,13 @@ class _MechanicsPrinter(LatexPrinter):
 
 def latex(expr: sp.Basic, **settings) -> str:
     """LaTeX of ``expr`` with x(t) printed x, its time derivatives dotted, and
-    Cyrillic (the papers' subscripts) set as text."""
+    Cyrillic (the papers' subscripts) set as text.
+
+    Parameters
+    ----------
+    expr : sympy.Basic
+        The expression.
+    **settings
+        Passed to SymPy's ``LatexPrinter`` (e.g. ``symbol_names``).
+    """
     return cyrillic_as_text(_MechanicsPrinter(settings).doprint(expr))

@@ -39,7 +39,13 @@ _REASONS = {"EEXIST": "exists", "ENOTDIR": "is not a folder", "EISDIR": "is a fo
 
 
 def describe(err: OSError) -> str:
-    """The reason of an operating-system error in a few words."""
+    """The reason of an operating-system error in a few words.
+
+    Parameters
+    ----------
+    err : OSError
+        The error.
+    """
     import errno
     name = errno.errorcode.get(err.errno or 0, "")
     return _REASONS.get(name, err.strerror or type(err).__name__)
@@ -49,7 +55,15 @@ def check_folder(path: str | Path, option: str = "--out") -> Path:
     """``path`` if a command could write into it (an existing writable folder,
     or one that can be made in a writable folder), without making it;
     :class:`OutputError` naming ``option`` otherwise. A command checks its
-    output folder so before its work, and makes it only when it writes."""
+    output folder so before its work, and makes it only when it writes.
+
+    Parameters
+    ----------
+    path : str or Path
+        The folder a command is to write into.
+    option : str, optional
+        The command-line option an error names.
+    """
     folder = Path(path)
     if folder.exists() and not folder.is_dir():
         raise OutputError(f"{option} {str(folder)!r} is a file, not a folder")
@@ -68,7 +82,15 @@ def check_folder(path: str | Path, option: str = "--out") -> Path:
 
 def out_folder(path: str | Path, option: str = "--out") -> Path:
     """The folder ``path``, created if missing; :class:`OutputError` naming
-    ``option`` if it is a file or cannot be made or written."""
+    ``option`` if it is a file or cannot be made or written.
+
+    Parameters
+    ----------
+    path : str or Path
+        The folder.
+    option : str, optional
+        The command-line option an error names.
+    """
     folder = check_folder(path, option)
     try:
         folder.mkdir(parents=True, exist_ok=True)
@@ -84,7 +106,15 @@ def out_folder(path: str | Path, option: str = "--out") -> Path:
 def out_file(path: str | Path, option: str = "-o") -> tuple[Path, str]:
     """(folder, name) of the file ``path`` a command is to write;
     :class:`OutputError` naming ``option`` if it is a folder or its folder
-    is missing or not writable."""
+    is missing or not writable.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file to write.
+    option : str, optional
+        The command-line option an error names.
+    """
     target = Path(path)
     if target.is_dir():
         raise OutputError(f"{option} {str(target)!r} is a folder; give a file name")
@@ -178,7 +208,15 @@ def staged(folder: str | Path, option: str = "--out") -> Iterator[Stage]:
     are renamed into place when the block ends normally, and removed when it
     raises (an error, KeyboardInterrupt, a SIGTERM turned into an exception).
     An operating-system error inside the block becomes an :class:`OutputError`
-    naming ``option``: keep reads out of the block."""
+    naming ``option``: keep reads out of the block.
+
+    Parameters
+    ----------
+    folder : str or Path
+        The folder the files go into.
+    option : str, optional
+        The command-line option an error names.
+    """
     stage = Stage(out_folder(folder, option))
     try:
         yield stage
@@ -195,7 +233,19 @@ def staged(folder: str | Path, option: str = "--out") -> Iterator[Stage]:
 
 
 def write_text(folder: str | Path, name: str, text: str, option: str = "--out") -> Path:
-    """Write one file ``name`` into ``folder`` through a :class:`Stage`."""
+    """Write one file ``name`` into ``folder`` through a :class:`Stage`.
+
+    Parameters
+    ----------
+    folder : str or Path
+        The folder.
+    name : str
+        The file name.
+    text : str
+        The content (UTF-8).
+    option : str, optional
+        The command-line option an error names.
+    """
     with staged(folder, option) as stage:
         path = stage.text(name, text)
     return path
@@ -236,7 +286,13 @@ def deferred_signals() -> Iterator[None]:
 def folder_lock(folder: Path) -> Iterator[None]:
     """An exclusive advisory lock (``flock``) on ``folder`` itself: no lock
     file is made, and the lock goes with the process. No-op where ``fcntl``
-    is missing."""
+    is missing.
+
+    Parameters
+    ----------
+    folder : Path
+        An existing folder.
+    """
     try:
         import fcntl
     except ImportError:                            # pragma: no cover (Windows)

@@ -76,7 +76,13 @@ def current() -> Progress:
 
 @contextmanager
 def reporting(progress: Progress) -> Iterator[Progress]:
-    """Use ``progress`` for the duration of the block."""
+    """Use ``progress`` for the duration of the block.
+
+    Parameters
+    ----------
+    progress : Progress
+        The reporter ``current()`` returns inside the block.
+    """
     _CURRENT.append(progress)
     try:
         yield progress
@@ -87,7 +93,15 @@ def reporting(progress: Progress) -> Iterator[Progress]:
 
 def wanted(quiet: bool, stream: TextIO | None = None) -> bool:
     """Whether to show progress: not ``quiet`` and ``stream`` (default
-    ``sys.stderr``) is a terminal."""
+    ``sys.stderr``) is a terminal.
+
+    Parameters
+    ----------
+    quiet : bool
+        The user's ``--quiet``.
+    stream : text stream, optional
+        Where progress would go.
+    """
     stream = stream if stream is not None else sys.stderr
     isatty = getattr(stream, "isatty", None)
     return not quiet and callable(isatty) and bool(isatty())

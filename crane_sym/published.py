@@ -285,7 +285,23 @@ class PublishedFormula:
 def printed(paper: str, label: str, latex: str, relation: sp.Eq | None,
             note: str = "", **kwargs) -> PublishedFormula:
     """A formula of ``paper`` with its provenance written the same way everywhere:
-    ``"<paper>, eq (n); <note>"`` for a numbered equation, else ``"<paper>, <label>"``."""
+    ``"<paper>, eq (n); <note>"`` for a numbered equation, else ``"<paper>, <label>"``.
+
+    Parameters
+    ----------
+    paper : str
+        The paper's source file name.
+    label : str
+        The equation number as printed, ``"(n)"``, or another label.
+    latex : str
+        The printed LaTeX.
+    relation : sympy.Eq or None
+        The transcription (None: nothing to check).
+    note : str, optional
+        The transcriber's note.
+    **kwargs
+        Further fields of :class:`PublishedFormula`.
+    """
     where = f"{paper}, eq {label}" if label.startswith("(") else f"{paper}, {label}"
     return PublishedFormula(label, latex, relation, where + (f"; {note}" if note else ""),
                             **kwargs)

@@ -30,7 +30,13 @@ def ids() -> list[str]:
 
 
 def resolve(name: str) -> str:
-    """The id for ``name`` (an id or a paper number such as ``000``)."""
+    """The id for ``name`` (an id or a paper number such as ``000``).
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
     key = ALIASES.get(name, name)
     if key not in DERIVATIONS:
         known = ", ".join(f"{k} ({a})" for a, k in ALIASES.items())
@@ -39,38 +45,74 @@ def resolve(name: str) -> str:
 
 
 def module(name: str) -> ModuleType:
-    """The derivation module for ``name``."""
+    """The derivation module for ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
     return importlib.import_module(DERIVATIONS[resolve(name)])
 
 
 def module_path(name: str) -> str:
-    """The file of the derivation's package (its ``__init__.py``)."""
+    """The file of the derivation's package (its ``__init__.py``).
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
     return str(module(name).__file__)
 
 
 def scene_loads(name: str) -> dict[str, SceneLoad]:
     """The loads a scene of this derivation may give as data (table -> SceneLoad),
-    from the package's ``SCENE_LOADS``; no build needed."""
+    from the package's ``SCENE_LOADS``; no build needed.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
     return dict(getattr(module(name), "SCENE_LOADS", {}))
 
 
 def scene_options(name: str) -> tuple:
     """The options scenes of this derivation may give beside ``duration`` and
     ``points`` (``crane_sym.scenes.options.SceneOption``), from the package's
-    ``SCENE_OPTIONS``; no build needed."""
+    ``SCENE_OPTIONS``; no build needed.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
     return tuple(getattr(module(name), "SCENE_OPTIONS", ()))
 
 
 def scene_checks(name: str) -> tuple:
     """Conditions between a scene's options and parameters, checked on load
     (``crane_sym.scenes.options.SceneCheck``), from the package's
-    ``SCENE_CHECKS``; no build needed."""
+    ``SCENE_CHECKS``; no build needed.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
     return tuple(getattr(module(name), "SCENE_CHECKS", ()))
 
 
 def sweep_outputs(name: str) -> dict[str, SweepOutput]:
     """Simulated responses a design sweep may ask for (name -> SweepOutput),
-    from the package's ``SWEEP_OUTPUTS``; no build needed."""
+    from the package's ``SWEEP_OUTPUTS``; no build needed.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
     return dict(getattr(module(name), "SWEEP_OUTPUTS", {}))
 
 

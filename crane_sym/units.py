@@ -181,7 +181,13 @@ def parse_quantity(text: str) -> Quantity:
 
 def unit_text(text: str) -> str:
     """The unit part of a quantity as written: ``"4.4 t"`` -> ``"t"``, ``"1.2"`` -> ``""``
-    (checked by :func:`parse_quantity` first)."""
+    (checked by :func:`parse_quantity` first).
+
+    Parameters
+    ----------
+    text : str
+        A quantity as written, e.g. ``"4.4 t"``.
+    """
     parse_quantity(text)
     return text[_NUMBER.match(text).end():].strip()
 
@@ -192,7 +198,13 @@ def _deps(d: Dimension) -> dict[str, int]:
 
 
 def same_dimension(a: Dimension, b: Dimension) -> bool:
-    """True if ``a`` and ``b`` reduce to the same SI base dimensions."""
+    """True if ``a`` and ``b`` reduce to the same SI base dimensions.
+
+    Parameters
+    ----------
+    a, b : Dimension
+        SymPy dimensions.
+    """
     return _deps(a) == _deps(b)
 
 
@@ -200,7 +212,13 @@ _ORDER = ("mass", "length", "time")
 
 
 def format_dimension(d: Dimension) -> str:
-    """Canonical base form, e.g. ``"mass*length/time**2"`` or ``"dimensionless"``."""
+    """Canonical base form, e.g. ``"mass*length/time**2"`` or ``"dimensionless"``.
+
+    Parameters
+    ----------
+    d : Dimension
+        A SymPy dimension.
+    """
     deps = _deps(d)
     names = sorted(deps, key=lambda n: (_ORDER.index(n) if n in _ORDER else 9, n))
     if not names:
@@ -231,7 +249,13 @@ _NAMED = {
 
 
 def describe_dimension(d: Dimension) -> str:
-    """A dimension as messages name it: ``"mass (e.g. kg)"``, ``"force/length (e.g. N/m)"``."""
+    """A dimension as messages name it: ``"mass (e.g. kg)"``, ``"force/length (e.g. N/m)"``.
+
+    Parameters
+    ----------
+    d : Dimension
+        A SymPy dimension.
+    """
     return _describe(d)
 
 

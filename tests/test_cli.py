@@ -5,7 +5,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import re
-import shutil
+import shlex
 import sys
 from importlib import metadata
 from pathlib import Path
@@ -136,6 +136,34 @@ def test_list_shows_authors_and_title_not_the_file(capsys):
     # in Latin letters (transliterated from Cyrillic; a German ö stays an ö)
     assert all(r["authors"] and not any(re.search("[А-Яа-яЁёІіЇїЄєҐґ]", a)
                                         for a in r["authors"]) for r in rows)
+
+
+def test_list_scenes_names_every_shipped_scene_and_its_paper(capsys):
+    from crane_sym.scenes.reading import list_scenes
+    assert main(["list", "--scenes", "--format", "json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert [r["name"] for r in rows] == list_scenes()
+    assert {r["derivation"] for r in rows} <= set(registry.ids())
+    assert main(["list", "--scenes"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert [line.split()[:2] for line in lines] == [[r["name"], r["derivation"]] for r in rows]
+
+
+def test_every_name_in_an_example_can_be_listed(capsys):
+    """The papers and scenes an example names are ones `crane-sym list` shows,
+    and its help says so."""
+    from crane_sym.scenes.reading import list_scenes
+    papers, scenes = set(registry.ids()) | set(registry.ALIASES), set(list_scenes())
+    for name, example in EXAMPLES.items():
+        named = []
+        for command in example.replace("\\\n", " ").split("\n"):
+            args = vars(parser().parse_args(shlex.split(command.split(">")[0])[1:]))
+            named += [(w, papers) for w in args.get("ids", [])]
+            named += [(args[k], papers) for k in ("id",) if k in args]
+            named += [(args[k], scenes) for k in ("scene",) if args.get(k)]
+        assert [w for w, known in named if w not in known] == [], name
+        if named:
+            assert "crane-sym list" in _help([name], capsys).split("example", 1)[1], name
 
 
 @pytest.mark.parametrize("terminal, argv", [

@@ -100,7 +100,7 @@ def test_the_printer_writes_as_a_person_does():
 
 
 #: What each walkthrough may reach: lines, and the longest line (prose paragraphs
-#: and table rows; a line of math is held to ``LIMIT`` apart). Before issue 26:
+#: and table rows; a line of math is held to ``LIMIT`` apart). Before the handouts:
 #: 000 436 / 331, 001 1030 / 1284, 002 2780 / 600, 003 1811 / 1842, 004 1113 / 1423.
 LIMITS = {"travel_braking": (450, 340), "hoist_brakes": (960, 1250),
           "hoist_startup": (2900, 430), "portal_travel": (1600, 1150),

@@ -1,4 +1,4 @@
-"""Scene options declared by each paper and checked on load (issue 23, item 5):
+"""Scene options declared by each paper and checked on load:
 every bad option, unknown key, broken condition between options and
 parameters, and drive law beyond its limits is refused by ``load_scene`` with
 one line naming it; ``run`` and ``generate --scene`` exit 2 with that line and

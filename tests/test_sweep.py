@@ -1,6 +1,6 @@
-"""Design sweeps (issue 16): the Done-when command, a real LocalCluster against
-the local scheduler bit for bit, and every bad input refused by name, exit 2,
-nothing written."""
+"""Design sweeps: a 200 × 200 design grid against Eq. (14) by hand, a real
+LocalCluster against the local scheduler bit for bit, and every bad input
+refused by name, exit 2, nothing written."""
 from __future__ import annotations
 
 import json
@@ -17,9 +17,9 @@ from crane_sym.sweep.grid import run_sweep
 from crane_sym.sweep.spec import plan
 
 xr = pytest.importorskip("xarray")
-DONE_WHEN = ["sweep", "overhead_crane_50t", "--vary", "m1=1:100:200:log", "--vary",
-             "P_t=5:50:200", "--output", "peak_elastic_force", "--limit",
-             "peak_elastic_force<=40 kN", "--format", "json", "--quiet"]
+GRID_200x200 = ["sweep", "overhead_crane_50t", "--vary", "m1=1:100:200:log", "--vary",
+                "P_t=5:50:200", "--output", "peak_elastic_force", "--limit",
+                "peak_elastic_force<=40 kN", "--format", "json", "--quiet"]
 
 
 def _independent(m1_t, P_t_kN):
@@ -28,9 +28,9 @@ def _independent(m1_t, P_t_kN):
     return 2 * (P * 110e3 - 11e3 * m1) / (m1 + 110e3)
 
 
-def test_done_when_command_writes_dataset_png_and_summary(tmp_path, capsys):
+def test_a_200_by_200_sweep_writes_dataset_png_and_summary(tmp_path, capsys):
     out = tmp_path / "sweep"
-    assert main([*DONE_WHEN, "--out", str(out)]) == 0
+    assert main([*GRID_200x200, "--out", str(out)]) == 0
     data = json.loads(capsys.readouterr().out)
     m1, P = np.geomspace(1, 100, 200), np.linspace(5, 50, 200)
     expected = _independent(m1, P)
@@ -169,7 +169,7 @@ def test_drum_drive_response_without_closed_form_is_swept_per_design(tmp_path):
 
 
 def test_certified_enclosure_holds_the_grid_maximum(tmp_path, capsys):
-    assert main([*DONE_WHEN, "--out", str(tmp_path), "--certify"]) == 0
+    assert main([*GRID_200x200, "--out", str(tmp_path), "--certify"]) == 0
     data = json.loads(capsys.readouterr().out)
     c, grid = data["certified"], data["worst_case"]["value"]
     assert c["converged"] and c["upper"] - c["lower"] <= c["tolerance"]
@@ -262,7 +262,7 @@ def test_001_piecewise_peak_is_sweepable(tmp_path):
     assert values[1, 1] > values[1, 0] and values[1, 1] > values[0, 1]
 
 
-# --- issue 22, item 4: sweeps say what they did -----------------------------------------
+# --- sweeps say what they did ----------------------------------------------------------
 USER_LAW = ["sweep", "hoist_user_drive_law", "--vary", "m2=5:20:4", "--at", "t=0:2:21",
             "--at", "Omega=25", "--at", "v0=0.5", "--at", "t_n=1", "--quiet"]
 

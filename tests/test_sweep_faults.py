@@ -1,4 +1,4 @@
-"""Design sweeps under faults (issue 23): signals to a real `crane-sym sweep`,
+"""Design sweeps under faults: signals to a real `crane-sym sweep`,
 two sweeps into one folder, a lost Dask scheduler, a killed worker, and every
 bad option — each ends in one line (or a whole result) with nothing left
 behind that `xr.open_zarr` opens and no temporaries."""

@@ -1,4 +1,4 @@
-"""Physical validity is stated, never silently crossed (issue 22, item 5).
+"""Physical validity is stated, never silently crossed.
 
 A scene whose load or duration takes a model outside the range it holds for
 gets a ``warning:`` line, panels greyed where the model does not hold, and

@@ -14,6 +14,7 @@ from typing import Sequence
 
 from crane_sym.audit.verdicts import (AGREEMENTS, CONFIRMATIONS, CONSISTENT, RESTS_ON, VERDICTS,
                                       AuditRecord)
+from crane_sym.markdown import markdown_table
 from crane_sym.published import BASES, READINGS
 
 
@@ -170,10 +171,9 @@ def as_markdown(records: Sequence[AuditRecord]) -> str:
     it; then the table of every record with what it rests on; then the counts."""
     on = confirmations(records)
     lines = ["# Audit", "", "## Counts", "", "```", summary(records), "```", "",
-             "| verdict | " + " | ".join(BASES) + " |",
-             "| --- |" + " --- |" * len(BASES)]
-    for verdict, row in counts_by_basis(records).items():
-        lines.append(f"| {verdict} | " + " | ".join(str(row.get(b, 0)) for b in BASES) + " |")
+             markdown_table(["verdict", *BASES],
+                            [[verdict, *(row.get(b, 0) for b in BASES)]
+                             for verdict, row in counts_by_basis(records).items()])]
     lines += ["", "Confirmations, each check counted once: "
               + ", ".join(f"{n} {k}" for k, n in on.items()) + "."]
     lines += ["", "## Findings by cause", ""]
@@ -183,14 +183,12 @@ def as_markdown(records: Sequence[AuditRecord]) -> str:
         for r in group:
             lines += _finding_details(r)
         lines.append("")
-    lines += ["## Every record", "",
-              "| derivation | label | verdict | basis | cause | decided by | transcription "
-              "| rests on | detail |",
-              "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
-    for r in records:
-        lines.append(f"| {r.derivation} | {_md(r.label)} | **{r.verdict}** | {r.basis} | "
-                     f"{r.cause.id if r.cause else '—'} | {r.method} | {r.transcription} | "
-                     f"{_md('; '.join(rests_on_lines(r)) or '—')} | {_md(r.detail)} |")
+    lines += ["## Every record", "", markdown_table(
+        ["derivation", "label", "verdict", "basis", "cause", "decided by", "transcription",
+         "rests on", "detail"],
+        [[r.derivation, _md(r.label), f"**{r.verdict}**", r.basis,
+          r.cause.id if r.cause else "—", r.method, r.transcription,
+          _md("; ".join(rests_on_lines(r)) or "—"), _md(r.detail)] for r in records])]
     lines += ["", "## The reading policy", ""]
     lines += [f"- **{kind}**: {what}" for kind, what in READINGS.items()]
     return "\n".join(lines)

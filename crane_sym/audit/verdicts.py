@@ -359,7 +359,13 @@ def audit(d: Derivation) -> list[AuditRecord]:
     """Verdicts on every published formula of ``d``, in the paper's order, each with
     its print read by machine against the transcription (``machine_read``); a
     record that repeats an earlier one's check (the same number printed twice, 8.9
-    and 890 %) names that record in ``duplicate_of`` and is counted once."""
+    and 890 %) names that record in ``duplicate_of`` and is counted once.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation (``registry.get``), its ``published`` formulas to judge.
+    """
     records, seen = [], {}
     for f in d.published:
         progress.current().step(f"{d.id}: checking printed formula {f.label}")

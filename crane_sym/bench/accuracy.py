@@ -119,7 +119,21 @@ def accuracy(out: Output, function, case: str, columns: Mapping[str, np.ndarray]
     """Compare ``function`` (generated) with the mpmath reference of ``out``.
 
     The condition number is computed at the worst point and wherever the
-    error exceeds ``tolerance``."""
+    error exceeds ``tolerance``.
+
+    Parameters
+    ----------
+    out : Output
+        The derived output; its expression, evaluated in mpmath, is the reference.
+    function : callable
+        The generated function of ``out``, called with the columns as keywords.
+    case : str
+        The hard case's name, for the row.
+    columns : mapping of str to ndarray
+        One array per argument of ``function``, all of one length.
+    tolerance : float, optional
+        Relative error above which a point's condition number is computed too.
+    """
     args = [np.asarray(columns[str(a)], dtype=float) for a in out.args]
     computed = np.broadcast_to(function(*args), np.broadcast(*args).shape)
     f = _lambdified(out)

@@ -62,7 +62,7 @@ class SweepBenchCase:
 @dataclass(frozen=True)
 class SampledBenchCase:
     """A generated response the sampled-load route reproduces: the response of
-    x'' + Ω²x = S(t) to a load family of ``bench_sampled`` (``family``, with
+    x'' + Ω²x = S(t) to a load family of ``bench.sampled`` (``family``, with
     amplitude ``S0`` and time ``t1``), ``closed_form(t)`` the generated
     function, ``scale`` what turns x into it; ``step`` a power of 2 [s].
     ``exact()``, where the closed form's inputs are not Ω and S0 themselves,

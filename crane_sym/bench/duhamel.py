@@ -1,7 +1,7 @@
 """Duhamel's integral the ways a user would evaluate it numerically.
 
 For a one-coordinate system x'' + Ω²x = S(t) (the relative coordinate of
-papers 000 and 002),
+Semenyuk and Vudvud's travel brake and Chovnyuk et al.'s hoist start-up),
 
     x(t) = x(0)·cos Ωt + ẋ(0)/Ω·sin Ωt + (1/Ω)·∫_0^t S(θ)·sin Ω(t − θ) dθ,
 

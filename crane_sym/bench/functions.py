@@ -6,11 +6,11 @@ error against an mpmath reference (50 digits), the same for a plain
 ``sympy.lambdify`` of the derived expression, and the throughput floor, one
 ``np.cos`` over an array of the same length. For every quantity a derivation
 also declares as an ODE system: SciPy's integrators at four tolerances
-(``bench_odes``) and, where the system is x'' + Ω²x = S(t), Duhamel's integral
-by quadrature and by discrete convolution (``bench_duhamel``). A response with
-no closed form is benched against a modal mpmath solution (``bench_linear``).
+(``bench.odes``) and, where the system is x'' + Ω²x = S(t), Duhamel's integral
+by quadrature and by discrete convolution (``bench.duhamel``). A response with
+no closed form is benched against a modal mpmath solution (``bench.linear``).
 Times are this machine's; ratios are taken within one run. Tables and plots:
-``bench_report``.
+``bench.report``.
 """
 from __future__ import annotations
 
@@ -41,7 +41,15 @@ __all__ = ["DUHAMEL", "FLOOR", "GENERATED", "INTEGRATOR", "LAMBDIFY", "METHODS",
 def grid_values(d: Derivation, scenes: Sequence) -> dict[str, float]:
     """Scalar values of the bench grid (SI): the scenes' parameters (the first
     scene that sets one wins), scene options that name a symbol of ``d``
-    (simulation values), then ``d.bench_parameters`` for what no scene sets."""
+    (simulation values), then ``d.bench_parameters`` for what no scene sets.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    scenes : sequence of Scene
+        Its shipped scenes, in order (the first that sets a value wins).
+    """
     values: dict[str, float] = {}
     for scene in scenes:
         for name, value in scene.parameters.items():
@@ -126,7 +134,29 @@ def bench(d: Derivation, values: dict[str, float], duration: float,
     """Rows for every generated function and every alternative, one run. The
     quadratures of ``bench_duhamel`` run at the tolerances of ``rtols`` that
     are in ``DUHAMEL_RTOLS`` (all of ``rtols`` if none is); without
-    ``alternatives``, the integrators alone."""
+    ``alternatives``, the integrators alone.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation whose generated functions are benched.
+    values : dict of str to float
+        Scalar values of the grid (SI), from :func:`grid_values`.
+    duration : float
+        The time span [0, duration] the time functions are evaluated on [s].
+    points : int, optional
+        Grid points of the comparison.
+    reference_points : int, optional
+        Points of the grid checked against the mpmath reference.
+    methods : sequence of str, optional
+        ``solve_ivp`` methods (``odeint`` always runs).
+    rtols : sequence of float, optional
+        Integrator tolerances.
+    seed : int, optional
+        Seed of the random parameter sets of time-free functions.
+    alternatives : bool, optional
+        False: the integrators alone, no Duhamel quadratures.
+    """
     generated = importlib.import_module(f"crane_sym.generated.{d.id}")
     grid = scene_grid(values, duration, points, seed)
     rng = np.random.default_rng(seed + 1)
@@ -156,7 +186,19 @@ def bench(d: Derivation, values: dict[str, float], duration: float,
 def throughput(d: Derivation, values: dict[str, float], duration: float,
                points: int = 10**6) -> list[BenchRow]:
     """Large-array speed of each time-dependent generated function against one
-    ``np.cos`` over the same array: first call and best of repeated calls."""
+    ``np.cos`` over the same array: first call and best of repeated calls.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    values : dict of str to float
+        Scalar values of the grid (SI).
+    duration : float
+        The time span [0, duration] [s].
+    points : int, optional
+        Length of the time array.
+    """
     generated = importlib.import_module(f"crane_sym.generated.{d.id}")
     t = np.linspace(0.0, duration, points)
     floor = best_time(lambda: np.cos(t), budget=1.0, repeats=5)
@@ -180,7 +222,17 @@ def throughput(d: Derivation, values: dict[str, float], duration: float,
 
 def scene_comparison(d: Derivation, scene, points: int = 10**6) -> list[str]:
     """Size (SymPy operation count) and speed of the scene-specialized module
-    against the general one, for each output the scene asks for."""
+    against the general one, for each output the scene asks for.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation (its general module is the comparison).
+    scene : Scene
+        The scene whose specialized module is measured.
+    points : int, optional
+        Length of the time array each module is timed on.
+    """
     general = importlib.import_module(f"crane_sym.generated.{d.id}")
     special = importlib.import_module(f"crane_sym.generated.{module_name(scene)[:-3]}")
     rng = np.random.default_rng(4)
@@ -206,7 +258,13 @@ def scene_comparison(d: Derivation, scene, points: int = 10**6) -> list[str]:
 
 def as_dicts(rows: Sequence[BenchRow]) -> list[dict]:
     """JSON-ready rows (keys function, method, seconds, points, max_rel_error, ...);
-    a value that does not apply (NaN) is None."""
+    a value that does not apply (NaN) is None.
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one bench run.
+    """
     return [{k: (None if isinstance(v, float) and v != v else v) for k, v in asdict(r).items()}
             for r in rows]
 

@@ -1,7 +1,7 @@
 """A linear response with no closed form: integrators against a modal solution.
 
 For an ODE system M·q̈ + C·q̇ + K·q = F0 + F_W·W(t) whose quantities are no
-generated function (paper 004), the bench integrates the first-order form
+generated function (Martyntsiv et al.'s drum drive), the bench integrates the first-order form
 with the generated ``state_derivative`` and ``state_jacobian`` (evaluated
 once: the model is linear) and W(t) lambdified from its law, with SciPy's
 methods at each tolerance, and measures the quantities against an mpmath

@@ -18,6 +18,7 @@ import numpy as np
 
 from crane_sym.bench.targets import time_functions
 from crane_sym.derivation import Derivation
+from crane_sym.markdown import markdown_table
 from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
 
 __all__ = ["MemoryRow", "as_markdown", "function_memory", "peak_bytes", "sampled_memory"]
@@ -58,7 +59,19 @@ def peak_bytes(call: Callable[[], object]) -> tuple[int, int]:
 
 def function_memory(d: Derivation, values: dict, duration: float,
                     points: int = 10**7) -> list[MemoryRow]:
-    """A row for every generated time function of ``d`` on ``points`` times."""
+    """A row for every generated time function of ``d`` on ``points`` times.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    values : dict
+        Scalar values (SI) for the functions' other arguments.
+    duration : float
+        The time span [0, duration] [s].
+    points : int, optional
+        Length of the time array.
+    """
     module = importlib.import_module(f"crane_sym.generated.{d.id}")
     t = np.linspace(0.0, duration, points)
     rows = []
@@ -73,7 +86,13 @@ def function_memory(d: Derivation, values: dict, duration: float,
 
 def sampled_memory(points: int = 10**7) -> list[MemoryRow]:
     """Rows for the sampled-load responses (x and x') on ``points`` samples;
-    ``sampled_response`` takes the times as well, so its input is two arrays."""
+    ``sampled_response`` takes the times as well, so its input is two arrays.
+
+    Parameters
+    ----------
+    points : int, optional
+        Number of load samples.
+    """
     t = np.arange(points) * 1e-3
     S = np.sin(t) + 1.0
     uniform = peak_bytes(lambda: sampled_response_uniform(1e-3, S, 25.0))
@@ -83,11 +102,16 @@ def sampled_memory(points: int = 10**7) -> list[MemoryRow]:
 
 
 def as_markdown(rows: list[MemoryRow]) -> str:
-    """The rows as one Markdown table, with the target met or not."""
-    lines = ["| function | points | input MB | output MB | peak MB | limit MB "
-             "(2 input + output) | met |", "| --- | ---: | ---: | ---: | ---: | ---: | --- |"]
-    for r in rows:
-        lines.append(f"| {r.function} | {r.points:.0e} | {r.input_bytes / 1e6:.0f} | "
-                     f"{r.output_bytes / 1e6:.0f} | {r.peak_bytes / 1e6:.0f} | "
-                     f"{r.limit / 1e6:.0f} | {'met' if r.met else 'NOT MET'} |")
-    return "\n".join(lines)
+    """The rows as one Markdown table, with the target met or not.
+
+    Parameters
+    ----------
+    rows : list of MemoryRow
+        Rows from :func:`function_memory` or :func:`sampled_memory`.
+    """
+    return markdown_table(
+        ["function", "points", "input MB", "output MB", "peak MB",
+         "limit MB (2 input + output)", "met"],
+        [[r.function, f"{r.points:.0e}", f"{r.input_bytes / 1e6:.0f}",
+          f"{r.output_bytes / 1e6:.0f}", f"{r.peak_bytes / 1e6:.0f}", f"{r.limit / 1e6:.0f}",
+          "met" if r.met else "NOT MET"] for r in rows], align="lrrrrrl")

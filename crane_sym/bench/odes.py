@@ -90,7 +90,7 @@ def budgeted(f):
 
 def run(call) -> tuple[str, float, np.ndarray | None]:
     """(suffix, least seconds, states or None) of ``call()`` (see
-    ``bench.least_time``); a failed or stopped run is marked in the suffix."""
+    ``bench.rows.least_time``); a failed or stopped run is marked in the suffix."""
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")

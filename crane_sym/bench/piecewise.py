@@ -20,6 +20,7 @@ import numpy as np
 from scipy.integrate import solve_ivp
 
 from crane_sym import registry
+from crane_sym.markdown import markdown_table
 from crane_sym.mechanics.closed_forms import clear_cache
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, by_phase
@@ -239,15 +240,14 @@ def as_markdown(rows: Sequence[PiecewiseRow], points: int) -> str:
     (event search, table and evaluation of ``points`` times)."""
     closed = sum(r.seconds for r in rows if r.method.startswith("closed form")
                  and not r.method.endswith("cold"))
-    lines = ["| method | rtol | seconds | × closed form | error / peak | phases |",
-             "| --- | --- | --- | --- | --- | --- |"]
+    lines = []
     for r in rows:
         rtol = "" if np.isnan(r.rtol) else f"{r.rtol:.3g}"
         err = "" if np.isnan(r.error) else f"{r.error:.1e}"
         ratio = "" if r.method.startswith(("closed", "scene")) else f"{r.seconds / closed:.2g}"
-        lines.append(f"| {r.method} | {rtol} | {r.seconds:.2e} | {ratio} | {err} | "
-                     f"{r.phases} |")
-    return "\n".join(lines)
+        lines.append([r.method, rtol, f"{r.seconds:.2e}", ratio, err, r.phases])
+    return markdown_table(["method", "rtol", "seconds", "× closed form", "error / peak",
+                           "phases"], lines)
 
 
 def scene_sections(derivation_id: str, points: int = 2000,
@@ -255,7 +255,19 @@ def scene_sections(derivation_id: str, points: int = 2000,
                    rtols: Sequence[float] = RTOLS) -> list[str]:
     """One Markdown section per tabulated output of every shipped scene of the
     derivation: the closed form (the library's and the scene module's) against
-    the integrators, in one run."""
+    the integrators, in one run.
+
+    Parameters
+    ----------
+    derivation_id : str
+        A registered derivation id.
+    points : int, optional
+        Number of output times.
+    methods : sequence of str, optional
+        ``solve_ivp`` methods compared with the closed form.
+    rtols : sequence of float, optional
+        Integrator tolerances.
+    """
     import tempfile
     from pathlib import Path
 

@@ -7,7 +7,8 @@ from pathlib import Path
 from statistics import median
 from typing import Sequence
 
-from crane_sym.bench.rows import BenchRow, DUHAMEL, GENERATED, INTEGRATOR, LAMBDIFY, REFERENCE
+from crane_sym.bench.rows import DUHAMEL, GENERATED, INTEGRATOR, LAMBDIFY, REFERENCE, BenchRow
+from crane_sym.markdown import markdown_table
 from crane_sym.scenes.plots import chunks, numbered, save
 
 ALTERNATIVES = (INTEGRATOR, DUHAMEL)
@@ -18,20 +19,32 @@ def _num(x: float, spec: str) -> str:
 
 
 def as_markdown(rows: Sequence[BenchRow]) -> str:
-    """One Markdown table of ``rows``."""
-    lines = ["| function | method | points | evals/s | max rel. error | max error / peak "
-             "| time / generated (per evaluation) | time / np.cos |",
-             "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |"]
-    for r in rows:
-        lines.append(f"| {r.function} | {r.method} | {r.points} | "
-                     f"{_num(r.points / r.seconds, '.3g')} | {_num(r.max_rel_error, '.2e')} | "
-                     f"{_num(r.max_error_over_peak, '.2e')} | "
-                     f"{_num(r.ratio_to_generated, '.3g')} | {_num(r.ratio_to_floor, '.3g')} |")
-    return "\n".join(lines)
+    """One Markdown table of ``rows``.
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one bench run.
+    """
+    return markdown_table(
+        ["function", "method", "points", "evals/s", "max rel. error", "max error / peak",
+         "time / generated (per evaluation)", "time / np.cos"],
+        [[r.function, r.method, r.points, _num(r.points / r.seconds, ".3g"),
+          _num(r.max_rel_error, ".2e"), _num(r.max_error_over_peak, ".2e"),
+          _num(r.ratio_to_generated, ".3g"), _num(r.ratio_to_floor, ".3g")] for r in rows],
+        align="llrrrrrr")
 
 
 def not_applicable(d, rows: Sequence[BenchRow]) -> list[tuple[str, str, str]]:
-    """(function, target, why) for each comparison that does not apply."""
+    """(function, target, why) for each comparison that does not apply.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation (its outputs).
+    rows : sequence of BenchRow
+        The rows of its bench run.
+    """
     kinds = {}
     for r in rows:
         kinds.setdefault(r.function, set()).add(r.kind)
@@ -66,7 +79,15 @@ def _spread(values: list[float]) -> str:
 def headline(rows: Sequence[BenchRow], target: float = 1e-9) -> list[str]:
     """The paper's summary line, then one line per function. Errors are
     normwise (max error over the peak |value|) so that quantities through zero
-    compare fairly; ratios are time per evaluation, from one run."""
+    compare fairly; ratios are time per evaluation, from one run.
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one paper's bench run.
+    target : float, optional
+        The error over the peak an integrator has to reach to be compared.
+    """
     if not rows:
         return []
     by_name: dict[str, list[BenchRow]] = {}
@@ -153,7 +174,18 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     colour per method, one line style per coordinate system and right-hand
     side, the legend below the panels. Drawn at page width with 9-pt type, two
     panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more;
-    none when no function has an alternative (paper 001's factors)."""
+    none when no function has an alternative (Vöth and Tyulenev's torque and
+    brake factors).
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one paper's bench run.
+    path : Path
+        The PNG to write (numbered when there are several).
+    title : str
+        The figure's title.
+    """
     from matplotlib import colormaps
 
     names = [n for n in dict.fromkeys(r.function for r in rows)
@@ -219,7 +251,18 @@ def _figure(rows: Sequence[BenchRow], names: Sequence[str], families: Sequence[s
 def plot_scaling(scaled: Sequence[tuple], path: Path, title: str) -> list[Path]:
     """Time of the best tuned integrator over the closed form's against the
     number of points, one line per function (log-log; below 1 the integrator
-    wins); the legend to the right of the panel. [] when there is nothing."""
+    wins); the legend to the right of the panel. [] when there is nothing.
+
+    Parameters
+    ----------
+    scaled : sequence of tuple
+        (function, points, integrator, its seconds, closed form's seconds), as
+        :func:`crane_sym.bench.targets.scaling` returns them.
+    path : Path
+        The PNG to write.
+    title : str
+        The figure's title.
+    """
     if not scaled:
         return []
     from matplotlib.figure import Figure

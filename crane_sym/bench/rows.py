@@ -1,8 +1,8 @@
 """The rows of a bench and what they are measured against.
 
-Shared by ``bench`` and the modules that bench the alternatives
-(``bench_odes``, ``bench_duhamel``, ``bench_linear``) and report them
-(``bench_report``): the row and target types, the row kinds, the tolerances,
+Shared by ``bench.functions`` and the modules that bench the alternatives
+(``bench.odes``, ``bench.duhamel``, ``bench.linear``) and report them
+(``bench.report``): the row and target types, the row kinds, the tolerances,
 and the timers.
 """
 from __future__ import annotations
@@ -18,7 +18,7 @@ from crane_sym.bench.accuracy import relative_errors
 METHODS = ("RK45", "DOP853", "LSODA", "Radau")
 #: Integrator tolerances: every half decade from 1e-6 to 1e-13 (atol scaled to each
 #: state's peak); ``QUICK_RTOLS`` for ``crane-sym bench --quick``; the quadratures
-#: of ``bench_duhamel`` take ``DUHAMEL_RTOLS``.
+#: of ``bench.duhamel`` take ``DUHAMEL_RTOLS``.
 RTOLS = tuple(float(f"{10 ** (-k / 2):.3g}") for k in range(12, 27))
 QUICK_RTOLS = (1e-6, 1e-9, 1e-12)
 DUHAMEL_RTOLS = (1e-6, 1e-9, 1e-12)

@@ -23,6 +23,7 @@ import numpy as np
 import sympy as sp
 
 from crane_sym.bench.cases import sampled_cases
+from crane_sym.markdown import markdown_table
 from crane_sym.mechanics import loads
 from crane_sym.mechanics.duhamel import duhamel
 from crane_sym.mechanics.sampled_load import _uniform, sampled_response, sampled_response_uniform
@@ -37,7 +38,7 @@ _ARGS = (T, OMEGA, X0, V0, S0, T1)
 def family_load(name: str) -> loads.PiecewiseLoad:
     """The load of one family in the amplitude ``S0`` and the time ``t1``.
 
-    ``step`` S0 (paper 002, eq (35)); ``ramp`` S0 t/t1 without end (eq (40));
+    ``step`` S0 (Chovnyuk et al., eq (35)); ``ramp`` S0 t/t1 without end (eq (40));
     ``ramp_hold`` up to S0 at t1, then held (eqs (48)–(49)); ``pulse`` S0
     until t1 (eq (44)); ``trapezoid`` a polynomial of degree 1 on each of
     [0, t1], [t1, 2t1], [2t1, 3t1], zero after (rise, hold, fall); ``cubic``
@@ -249,6 +250,15 @@ def sampled_comparison(points: int = 100_000, reference_points: int = 2000,
     return x and x', the closed form one quantity.
     ``time_per_point_vs_closed_form`` is seconds per point over the closed
     form's.
+
+    Parameters
+    ----------
+    points : int, optional
+        Number of samples.
+    reference_points : int, optional
+        Samples checked against mpmath.
+    quad_points : int, optional
+        Samples the QUADPACK rule runs on.
     """
     rows = []
     check = np.unique(np.linspace(0, points - 1, min(reference_points, points)).astype(int))
@@ -325,7 +335,23 @@ def sampled_accuracy(points: int = 100_001, thetas: Sequence[float] = (1e-6, 1e-
                      S0: float = 2.5) -> list[AccuracyRow]:
     """Errors of both sampled routes against the mpmath reference on each
     family, with t1 = 1024 steps and exact samples (S at k/1024 of t1); the
-    times route gets 0.375 + k q, q the power of 2 nearest theta/Omega."""
+    times route gets 0.375 + k q, q the power of 2 nearest theta/Omega.
+
+    Parameters
+    ----------
+    points : int, optional
+        Number of samples of each load.
+    thetas : sequence of float, optional
+        The values of Omega h (step times frequency) to test.
+    families : sequence of str, optional
+        Load families (:func:`family_load`).
+    reference_points : int, optional
+        Samples checked against mpmath.
+    Omega : float, optional
+        Natural circular frequency [rad/s].
+    S0 : float, optional
+        Load amplitude [m/s^2].
+    """
     m = 1024
     check = np.unique(np.append(np.linspace(0, points - 1, reference_points).astype(int),
                                 [1, 2, m]))
@@ -351,22 +377,32 @@ def sampled_accuracy(points: int = 100_001, thetas: Sequence[float] = (1e-6, 1e-
 
 
 def as_markdown(rows: Sequence[SampledRow]) -> str:
-    """The rows as one Markdown table."""
-    lines = ["| function | method | points | seconds | time/point vs closed form | "
-             "max error / peak |", "| --- | --- | ---: | ---: | ---: | ---: |"]
-    for r in rows:
-        lines.append(f"| {r.function} | {r.method} | {r.points} | {r.seconds:.3g} | "
-                     f"{r.time_per_point_vs_closed_form:.3g} | {r.max_rel_error:.2e} |")
-    return "\n".join(lines)
+    """The rows as one Markdown table.
+
+    Parameters
+    ----------
+    rows : sequence of SampledRow
+        Rows from :func:`sampled_comparison`.
+    """
+    return markdown_table(
+        ["function", "method", "points", "seconds", "time/point vs closed form",
+         "max error / peak"],
+        [[r.function, r.method, r.points, f"{r.seconds:.3g}",
+          f"{r.time_per_point_vs_closed_form:.3g}", f"{r.max_rel_error:.2e}"] for r in rows],
+        align="llrrrr")
 
 
 def accuracy_markdown(rows: Sequence[AccuracyRow]) -> str:
-    """The accuracy rows as one Markdown table."""
-    lines = ["| load | Omega h | route | points | x: error / peak | x': error / peak | "
-             "x: pointwise | x': pointwise |",
-             "| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: |"]
-    for r in rows:
-        lines.append(f"| {r.family} | {r.theta:g} | {r.route} | {r.points} | "
-                     f"{r.x_over_peak:.1e} | {r.v_over_peak:.1e} | {r.x_pointwise:.1e} | "
-                     f"{r.v_pointwise:.1e} |")
-    return "\n".join(lines)
+    """The accuracy rows as one Markdown table.
+
+    Parameters
+    ----------
+    rows : sequence of AccuracyRow
+        Rows from :func:`sampled_accuracy`.
+    """
+    return markdown_table(
+        ["load", "Omega h", "route", "points", "x: error / peak", "x': error / peak",
+         "x: pointwise", "x': pointwise"],
+        [[r.family, f"{r.theta:g}", r.route, r.points, f"{r.x_over_peak:.1e}",
+          f"{r.v_over_peak:.1e}", f"{r.x_pointwise:.1e}", f"{r.v_pointwise:.1e}"]
+         for r in rows], align="lrlrrrrr")

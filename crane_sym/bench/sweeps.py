@@ -36,6 +36,7 @@ from crane_sym import registry
 from crane_sym.bench.cases import SweepBenchCase, sweep_cases
 from crane_sym.bench.odes import first_order, parameters
 from crane_sym.bench.rows import least_time
+from crane_sym.markdown import markdown_table
 from crane_sym.scenes.reading import load_scene
 from crane_sym.sweep.grid import chunks_for, grid_arrays, run_sweep
 from crane_sym.sweep.plan import Axis, OutputSpec, SweepPlan
@@ -235,8 +236,24 @@ def bench_sweep() -> dict[str, Any]:
                 "cores": os.cpu_count(), "load_average": os.getloadavg()[0]}
 
 
+def _matched_row(a: dict[str, Any]) -> list[str]:
+    """A row of table (a): the sweep against the integrator that matched it."""
+    if a.get("rtol") is None:
+        return [a["paper"], a["output"], f"{a['sweep_seconds']:.4f}",
+                f"none reached {MATCH:g} (best {a['sample_worst_rel_error']:.1e})", "", "", ""]
+    return [a["paper"], a["output"], f"{a['sweep_seconds']:.4f}", f"{a['rtol']:g}",
+            f"{1e3 * a['integrate_seconds_per_design']:.2f}",
+            f"{a['integrate_seconds_extrapolated']:.1f}", f"{a['speedup']:.3g}×"]
+
+
 def markdown(r: dict[str, Any]) -> str:
-    """The results as the Markdown of ``bench_sweep.md``."""
+    """The results as the Markdown of ``bench_sweep.md``.
+
+    Parameters
+    ----------
+    r : dict
+        The results of :func:`bench_sweep`.
+    """
     lines = ["# Bench: design sweeps (crane-sym sweep)", "",
              f"{r['cores']} cores, load average {r['load_average']:.1f} at the end (the "
              "machine is shared; ratios come from this one run).", "",
@@ -244,24 +261,17 @@ def markdown(r: dict[str, Any]) -> str:
              f"Integration: DOP853 with dense output, peak sampled and polished; loosest rtol "
              f"reaching {MATCH:g} of the closed-form peak on all {SAMPLE} sampled designs; "
              "time for 10⁴ designs extrapolated from the sample mean.", "",
-             "| paper | output | sweep of 10⁴ [s] | rtol | per design [ms] | 10⁴ integrated "
-             "(extrapolated) [s] | speed-up |", "| --- | --- | --- | --- | --- | --- | --- |"]
-    for a in r["matched_accuracy"]:
-        if a.get("rtol") is None:
-            lines.append(f"| {a['paper']} | {a['output']} | {a['sweep_seconds']:.4f} | none "
-                         f"reached {MATCH:g} (best {a['sample_worst_rel_error']:.1e}) | | | |")
-            continue
-        lines.append(f"| {a['paper']} | {a['output']} | {a['sweep_seconds']:.4f} | "
-                     f"{a['rtol']:g} | {1e3 * a['integrate_seconds_per_design']:.2f} | "
-                     f"{a['integrate_seconds_extrapolated']:.1f} | {a['speedup']:.3g}× |")
+             markdown_table(["paper", "output", "sweep of 10⁴ [s]", "rtol", "per design [ms]",
+                             "10⁴ integrated (extrapolated) [s]", "speed-up"],
+                            [_matched_row(a) for a in r["matched_accuracy"]])]
     e = r["parallel_efficiency"]
     lines += ["", f"## (b) Parallel efficiency, {e['designs']:.3g} designs in {e['blocks']} "
-              "blocks, threads", "", "| output | 1 worker [s] | 2 workers [s] | T₁/(2·T₂) | cores the process got "
-              "with 2 workers |", "| --- | --- | --- | --- | --- |"]
-    for name in (*e["outputs"], "np.sin (no Dask, control)"):
-        lines.append(f"| {name} | {e[name]['one_worker_s']:.3f} | "
-                     f"{e[name]['two_workers_s']:.3f} | {100 * e[name]['efficiency']:.0f} % | "
-                     f"{e[name]['cores_used_two']:.2f} |")
+              "blocks, threads", "", markdown_table(
+                  ["output", "1 worker [s]", "2 workers [s]", "T₁/(2·T₂)",
+                   "cores the process got with 2 workers"],
+                  [[name, f"{e[name]['one_worker_s']:.3f}", f"{e[name]['two_workers_s']:.3f}",
+                    f"{100 * e[name]['efficiency']:.0f} %", f"{e[name]['cores_used_two']:.2f}"]
+                   for name in (*e["outputs"], "np.sin (no Dask, control)")])]
     b, c = r["large"], r["cluster"]
     lines += ["", f"## (c) 10⁸ designs of {b['output']}, written to Zarr", "",
               f"{b['designs']:.3g} designs in {b['blocks']} blocks: sweep {b['sweep_seconds']:.2f}"

@@ -22,6 +22,7 @@ import numpy as np
 from crane_sym.bench import functions as bench
 from crane_sym.bench.rows import GENERATED, INTEGRATOR, BenchRow, best_time
 from crane_sym.derivation import Derivation
+from crane_sym.markdown import markdown_table
 
 SIZES = (10**4, 10**5, 10**6, 10**7)
 QUICK_SIZES = (10**4, 10**5)
@@ -73,7 +74,19 @@ def _cold(f, make) -> float:
 
 def array_ratios(d: Derivation, values: dict, duration: float, sizes: Sequence[int]
                  ) -> list[tuple[str, str, int, float, float]]:
-    """(function, kind, points, warm ratio, cold ratio) to ``np.cos``."""
+    """(function, kind, points, warm ratio, cold ratio) to ``np.cos``.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    values : dict
+        Scalar values (SI) for the functions' other arguments.
+    duration : float
+        The time span [0, duration] [s].
+    sizes : sequence of int
+        Array lengths.
+    """
     module = importlib.import_module(f"crane_sym.generated.{d.id}")
     kinds = time_functions(d)
     out = []
@@ -95,7 +108,17 @@ def array_ratios(d: Derivation, values: dict, duration: float, sizes: Sequence[i
 
 def scalar_call(d: Derivation, values: dict, duration: float) -> list[tuple[str, float]]:
     """(function, seconds per call) of each single-expression time function on
-    Python floats."""
+    Python floats.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    values : dict
+        Scalar values (SI) for the functions' other arguments.
+    duration : float
+        The time span [s]; the call is at 0.37 of it.
+    """
     module = importlib.import_module(f"crane_sym.generated.{d.id}")
     found = []
     for name, kind in time_functions(d).items():
@@ -122,7 +145,21 @@ def scaling(d: Derivation, values: dict, duration: float, rows: Sequence[BenchRo
     """(function, points, fastest integrator reaching TARGET of the peak, its
     seconds, closed form's seconds) at each number of points; the methods and
     tolerances tried are those of the fastest run reaching TARGET in ``rows``
-    (the full run), per function."""
+    (the full run), per function.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    values : dict
+        Scalar values (SI) for the functions' other arguments.
+    duration : float
+        The time span [0, duration] [s].
+    rows : sequence of BenchRow
+        The rows of the full bench run, which name the methods to try.
+    points : sequence of int
+        The numbers of points to compare at.
+    """
     good = []
     for name in dict.fromkeys(r.function for r in rows):
         ok = [r for r in rows if r.function == name and r.kind == INTEGRATOR
@@ -147,7 +184,19 @@ def scaling(d: Derivation, values: dict, duration: float, rows: Sequence[BenchRo
 
 
 def goals(paper: str, arrays, scalars, scaled) -> list[Goal]:
-    """The targets of one paper from the measurements above."""
+    """The targets of one paper from the measurements above.
+
+    Parameters
+    ----------
+    paper : str
+        The derivation id, for the rows.
+    arrays : sequence of tuple
+        Rows of :func:`array_ratios`.
+    scalars : sequence of tuple
+        Rows of :func:`scalar_call`.
+    scaled : sequence of tuple
+        Rows of :func:`scaling`.
+    """
     def worst(items, limit, what):
         if not items:
             return []
@@ -166,28 +215,42 @@ def goals(paper: str, arrays, scalars, scaled) -> list[Goal]:
 
 
 def goals_table(found: Sequence[Goal]) -> str:
-    """Markdown table of the targets with a met / not met column."""
-    lines = ["| paper | target | measured (worst) | limit | met | worst case |",
-             "| --- | --- | ---: | ---: | --- | --- |"]
-    lines += [f"| {g.paper} | {g.target} | {g.measured:.3g} | {g.limit:g} | "
-              f"{'met' if g.met else 'NOT MET'} | {g.worst} |" for g in found]
-    return "\n".join(lines)
+    """Markdown table of the targets with a met / not met column.
+
+    Parameters
+    ----------
+    found : sequence of Goal
+        Rows of :func:`goals`.
+    """
+    return markdown_table(
+        ["paper", "target", "measured (worst)", "limit", "met", "worst case"],
+        [[g.paper, g.target, f"{g.measured:.3g}", f"{g.limit:g}",
+          "met" if g.met else "NOT MET", g.worst] for g in found], align="llrrll")
 
 
 def scaling_table(scaled) -> str:
-    """Markdown: closed form against the best tuned integrator at each N."""
-    lines = ["| function | points | best integrator reaching 1e-9 of the peak | "
-             "integrator s | closed form s | integrator / closed form |",
-             "| --- | ---: | --- | ---: | ---: | ---: |"]
-    lines += [f"| {f} | {n} | {m} | {i:.3g} | {g:.3g} | "
-              f"{i / g:.3g}{' (integrator wins)' if i < g else ''} |"
-              for f, n, m, i, g in scaled]
-    return "\n".join(lines)
+    """Markdown: closed form against the best tuned integrator at each N.
+
+    Parameters
+    ----------
+    scaled : sequence of tuple
+        Rows of :func:`scaling`.
+    """
+    return markdown_table(
+        ["function", "points", "best integrator reaching 1e-9 of the peak", "integrator s",
+         "closed form s", "integrator / closed form"],
+        [[f, n, m, f"{i:.3g}", f"{g:.3g}", f"{i / g:.3g}" + (" (integrator wins)" if i < g else "")]
+         for f, n, m, i, g in scaled], align="lrlrrr")
 
 
 def arrays_table(arrays) -> str:
-    """Markdown: warm and cold ratios to np.cos per function and size."""
-    lines = ["| function | kind | points | warm / np.cos | cold / np.cos |",
-             "| --- | --- | ---: | ---: | ---: |"]
-    lines += [f"| {f} | {k} | {n} | {w:.3g} | {c:.3g} |" for f, k, n, w, c in arrays]
-    return "\n".join(lines)
+    """Markdown: warm and cold ratios to np.cos per function and size.
+
+    Parameters
+    ----------
+    arrays : sequence of tuple
+        Rows of :func:`array_ratios`.
+    """
+    return markdown_table(["function", "kind", "points", "warm / np.cos", "cold / np.cos"],
+                          [[f, k, n, f"{w:.3g}", f"{c:.3g}"] for f, k, n, w, c in arrays],
+                          align="llrrr")

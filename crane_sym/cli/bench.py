@@ -18,6 +18,7 @@ from typing import Sequence
 
 from crane_sym import output_files, progress, registry
 from crane_sym.cli import sweep as cli_sweep
+from crane_sym.markdown import markdown_table
 
 #: What each count option of ``bench`` accepts: (least, most).
 COUNTS = {"--points": (2, 10**7), "--throughput-points": (1, 10**8),
@@ -140,8 +141,7 @@ def _bench(args: argparse.Namespace) -> int:
                  "## Peak memory of one call (traced NumPy allocations)", "",
                  bench_memory.as_markdown(memory), "",
                  "## Targets that do not apply", "",
-                 "| function | target | why |", "| --- | --- | --- |",
-                 *[f"| {f} | {what} | {why} |" for f, what, why in skipped], "",
+                 markdown_table(["function", "target", "why"], skipped), "",
                  "## Scene modules against the general module", "",
                  *[f"- {s}" for s in sized],
                  "", f"## Throughput on {args.throughput_points} points against one np.cos",

@@ -27,11 +27,12 @@ Derive, audit and generate code for the dynamics of crane mechanisms.
 For each published paper crane-sym rebuilds the derivation with SymPy, checks
 every printed formula against it, writes fast NumPy modules, and runs scenes
 (one concrete question with its data, in TOML). Papers are named by id
-(travel_braking) or by the number of their source file (000)."""
+(travel_braking) or by the number of their source file (000): `crane-sym list`
+names them, `crane-sym list --scenes` the scenes shipped with them."""
 
 #: One example (or two) per subcommand, shown at the end of its --help.
 EXAMPLES = {
-    "list": "crane-sym list\n  crane-sym list --format json",
+    "list": "crane-sym list\n  crane-sym list --scenes\n  crane-sym list --format json",
     "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
              "--format json --quiet > verdicts.json",
     "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md\n"
@@ -46,6 +47,12 @@ EXAMPLES = {
              "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
              "--out sweep/ --format json",
 }
+_PAPERS = "Papers by id or number: `crane-sym list` names them."
+_SCENES = ("A scene by name (`crane-sym list --scenes` names the shipped ones)\n"
+           "or by the path of a TOML file.")
+#: Where the names an example uses come from, shown after it.
+NAMES = {"audit": _PAPERS, "walkthrough": _PAPERS, "accuracy": _PAPERS, "bench": _PAPERS,
+         "generate": _SCENES, "run": _SCENES, "sweep": _SCENES}
 
 
 def _ids(names: Sequence[str]) -> list[str]:
@@ -66,7 +73,10 @@ def _progress(args: argparse.Namespace) -> progress.Progress:
 
 
 def cmd_list(args: argparse.Namespace) -> int:
-    """Registered papers: id, number, authors, title."""
+    """Registered papers: id, number, authors, title; with ``--scenes``, the
+    shipped scenes: name, paper id, title."""
+    if args.scenes:
+        return _list_scenes(args.format)
     numbers = {i: n for n, i in registry.ALIASES.items()}
     rows = []
     for i in registry.ids():
@@ -79,6 +89,21 @@ def cmd_list(args: argparse.Namespace) -> int:
         for row in rows:
             print(f"{row['id']:<16} {row['number']:<4} {', '.join(row['authors'])}\n"
                   f"{'':<21} {row['title']}")
+    return 0
+
+
+def _list_scenes(form: str) -> int:
+    """The shipped scenes, each with the paper it belongs to and its title."""
+    from crane_sym.scenes.reading import list_scenes, read_toml, scene_path
+    rows = []
+    for name in list_scenes():
+        head = read_toml(scene_path(name))["scene"]
+        rows.append({"name": name, "derivation": head["derivation"], "title": head["title"]})
+    if form == "json":
+        print(json.dumps(rows, indent=2, ensure_ascii=False))
+    else:
+        for row in rows:
+            print(f"{row['name']:<24} {row['derivation']:<16} {row['title']}")
     return 0
 
 
@@ -223,7 +248,8 @@ def _subcommand(sub, name: str, text: str, func, quiet: bool = False):
     epilog, and (for the long commands) ``--quiet``."""
     p = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".",
                        epilog=("examples:" if "\n" in EXAMPLES[name] else "example:")
-                       + "\n  " + EXAMPLES[name],
+                       + "\n  " + EXAMPLES[name]
+                       + (f"\n\n{NAMES[name]}" if name in NAMES else ""),
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     if quiet:
         p.add_argument("-q", "--quiet", action="store_true", default=argparse.SUPPRESS,
@@ -245,6 +271,8 @@ def parser() -> argparse.ArgumentParser:
     sub = top.add_subparsers(dest="command", required=True, metavar="COMMAND")
     ids_help = "derivation ids or paper numbers (default: all)"
     p = _subcommand(sub, "list", "registered papers: id, number, authors, title", cmd_list)
+    p.add_argument("--scenes", action="store_true",
+                   help="the shipped scenes instead: name, paper id, title")
     p.add_argument("--format", choices=("table", "json"), default="table")
     p = _subcommand(sub, "audit", "verdict on every published formula", cmd_audit, True)
     p.add_argument("ids", nargs="*", help=ids_help)
@@ -327,7 +355,13 @@ def _os_message(err: OSError) -> str:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit code: 0 done, 1 a check failed
     (``generate --check``, ``accuracy``), 2 an error (one line on stderr),
-    130 interrupted (SIGINT), 143 terminated (SIGTERM)."""
+    130 interrupted (SIGINT), 143 terminated (SIGTERM).
+
+    Parameters
+    ----------
+    argv : sequence of str, optional
+        The arguments after ``crane-sym`` (default: ``sys.argv[1:]``).
+    """
     args = parser().parse_args(argv)
     previous = None
     if threading.current_thread() is threading.main_thread():

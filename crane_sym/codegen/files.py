@@ -37,7 +37,13 @@ def default_directory() -> Path:
 
 
 def with_package_init(modules: dict[str, str]) -> dict[str, str]:
-    """``modules`` (file name -> source) and the package's ``__init__`` listing them."""
+    """``modules`` (file name -> source) and the package's ``__init__`` listing them.
+
+    Parameters
+    ----------
+    modules : dict of str to str
+        File name -> source of each generated module.
+    """
     files = dict(modules)
     files["__init__.py"] = render_package_init([name[:-3] for name in files])
     return files
@@ -45,7 +51,17 @@ def with_package_init(modules: dict[str, str]) -> dict[str, str]:
 
 def write(files: dict[str, str], directory: Path, option: str = "--out") -> list[Path]:
     """Write ``files`` into ``directory``, all or none (renamed into place
-    together, :mod:`crane_sym.output_files`); return the paths written."""
+    together, :mod:`crane_sym.output_files`); return the paths written.
+
+    Parameters
+    ----------
+    files : dict of str to str
+        File name -> source.
+    directory : Path
+        The folder to write into (made if missing).
+    option : str, optional
+        The command-line option an error names.
+    """
     with staged(directory, option) as stage:
         paths = [stage.text(name, text) for name, text in sorted(files.items())]
     return paths
@@ -67,7 +83,17 @@ class Freshness:
 
 def compare(files: dict[str, str], directory: Path, strays: bool = True) -> Freshness:
     """Compare ``directory`` with ``files``: names missing on disk, names that
-    differ, and (if ``strays``) ``.py`` files on disk that would not be written."""
+    differ, and (if ``strays``) ``.py`` files on disk that would not be written.
+
+    Parameters
+    ----------
+    files : dict of str to str
+        File name -> source, as the printer renders them.
+    directory : Path
+        The folder to compare with.
+    strays : bool, optional
+        Also name ``.py`` files on disk that would not be written.
+    """
     missing, differs = [], []
     for name, text in sorted(files.items()):
         path = directory / name

@@ -20,6 +20,11 @@ def cos_pair_to_sin_squared(expr: sp.Expr) -> sp.Expr:
 
     Matches any sum that, collected in one ``cos(x)``, is ``a·cos(x) + b``
     with ``a + b = 0``; other terms of the sum are kept.
+
+    Parameters
+    ----------
+    expr : sympy.Expr
+        The expression to rewrite (every sum in it).
     """
     def rewrite(add: sp.Add) -> sp.Expr:
         for cos_x in sorted(add.atoms(sp.cos), key=sp.default_sort_key):

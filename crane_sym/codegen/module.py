@@ -144,7 +144,15 @@ def used_arguments(out: Output, table: SymbolTable) -> tuple[sp.Symbol, ...]:
     """The arguments of a scalar ``out`` its generated function computes
     with: those left in the expression the printer receives. An exact rewrite
     may cancel one (a ratio of two masses written with Ω); the function still
-    accepts and validates it."""
+    accepts and validates it.
+
+    Parameters
+    ----------
+    out : Output
+        A scalar output.
+    table : SymbolTable
+        The derivation's symbols.
+    """
     free = optimize(out.expr, _rules(out, table, None)[1]).free_symbols
     return tuple(a for a in out.args if a in free)
 
@@ -279,7 +287,25 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     ``regenerate`` is the command the header names to write the file again.
     Both may carry a user's text: they pass :func:`docstring_text`.
     ``constants`` (name -> text) become module constants printed with
-    ``repr``, a literal whatever the text (a scene's title)."""
+    ``repr``, a literal whatever the text (a scene's title).
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation.
+    outputs : iterable of Output, optional
+        The functions to print (default: ``d.outputs``).
+    rules : sequence of Rule, optional
+        Rewrite rules (default: the printer's).
+    scene_note : str, optional
+        What the specialization fixed, for the header.
+    tables : sequence of (TabulatedOutput, PhaseTable), optional
+        A scene's tabulated responses.
+    regenerate : str, optional
+        The command the header names.
+    constants : mapping of str to str, optional
+        Module constants (name -> text).
+    """
     scene_note, regenerate = docstring_text(scene_note), docstring_text(regenerate)
     outputs = list(d.outputs if outputs is None else outputs)
     labels = sorted({lab for o in [*outputs, *(t for t, _ in tables)] for lab in o.labels},

@@ -4,7 +4,7 @@ The scene's run is solved when the module is generated, in mpmath
 (:func:`crane_sym.mechanics.exact_phases.exact_table`: no number of it depends on the
 machine's libm, NumPy or LAPACK); the module carries its
 :class:`~crane_sym.mechanics.phase_table.PhaseTable` as arrays and evaluates it with
-``kernels._phase_sum``, one partition of the time array and each phase's
+``kernels.arithmetic._phase_sum``, one partition of the time array and each phase's
 terms on its own points. Numbers are printed to 13 significant digits, so the
 module is the same bytes on every machine and ``generate --check`` compares
 bytes.

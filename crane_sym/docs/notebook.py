@@ -168,7 +168,13 @@ def render_notebook(d: Derivation, records: list[AuditRecord] | None = None,
 
 
 def notebook(name: str) -> str:
-    """The notebook of a registered derivation, audited (see :func:`render_notebook`)."""
+    """The notebook of a registered derivation, audited (see :func:`render_notebook`).
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number.
+    """
     key = registry.resolve(name)
     d = registry.get(key)
     return render_notebook(d, audit(d), getattr(registry.module(key), "LATEX_NAMES", {}),

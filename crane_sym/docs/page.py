@@ -5,7 +5,7 @@ table of contents, the figures of the paper's first shipped scene inline (PNG
 as data URIs) and every formula as MathML (``latex2mathml``), which browsers
 typeset natively (MathML Core: Chromium 109+, Firefox, Safari): no script, no
 font and no address outside the file, so it prints, mails and posts as it is
-on a machine with no network. ``handout_math.math_errors`` checks the same
+on a machine with no network. ``docs.numbers.math_errors`` checks the same
 conversion, so a formula that would not typeset fails the tests.
 """
 from __future__ import annotations
@@ -170,7 +170,13 @@ def scene_figures(derivation: str) -> tuple[str, list[tuple[str, bytes]]]:
 
 def handout_page(name: str) -> str:
     """The printable page of a registered derivation: its audited walkthrough,
-    with the figures of its first shipped scene."""
+    with the figures of its first shipped scene.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number.
+    """
     key = registry.resolve(name)
     note, figures = scene_figures(key)
     return render_page(walkthrough(key), registry.get(key).title, figures, note)

@@ -20,6 +20,7 @@ from crane_sym.audit.verdicts import (CONFIRMED, CONFIRMED_WITH_CONVENTION, CONS
                                       DISCREPANCY, NOT_CHECKABLE, REMARK, RESTATED, AuditRecord)
 from crane_sym.derivation import Derivation
 from crane_sym.docs.numbers import LIMIT, decimal, is_value, printed_digits
+from crane_sym.markdown import markdown_table
 from crane_sym.published import PublishedFormula
 
 __all__ = ["Voice", "verdict_name"]
@@ -213,16 +214,13 @@ class Voice:
     # --- the summary ------------------------------------------------------------
     def table(self, records: list[AuditRecord] | None) -> list[str]:
         """One row per printed formula, then the causes by letter."""
-        rows = ["| Formula | Verdict | Decided by | Transcription | Rests on | Cause |",
-                "| --- | --- | --- | --- | --- | --- |"]
+        header = ["Formula", "Verdict", "Decided by", "Transcription", "Rests on", "Cause"]
         if records is None:
-            return ["\n".join(rows + [f"| {_cell(self.say(f.label))} | not audited | — | — "
-                                      "| — | — |" for f in self.d.published])]
-        for r in records:
-            cause = self.letter(r) if r.cause else "—"
-            rows.append(f"| {_cell(self.say(r.label))} | {verdict_name(r.verdict)} | "
-                        f"{r.method} | {r.transcription} | {r.basis} | {cause} |")
-        out = ["\n".join(rows)]
+            return [markdown_table(header, [[_cell(self.say(f.label)), "not audited", "—", "—",
+                                             "—", "—"] for f in self.d.published])]
+        out = [markdown_table(header, [
+            [_cell(self.say(r.label)), verdict_name(r.verdict), r.method, r.transcription,
+             r.basis, self.letter(r) if r.cause else "—"] for r in records])]
         sentences = {r.cause.id: r.cause.sentence for r in records if r.cause}
         if sentences:
             out.append("Causes of the findings:")

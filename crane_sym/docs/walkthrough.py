@@ -5,8 +5,8 @@ paper's order (what was done, why, the formula as the paper printed it beside
 its verdict), to a summary of the verdicts. Formulas are LaTeX: ``$...$``
 inline and ``$$...$$`` on lines of their own for displays. A derived number
 is shown as a decimal (beside a print, to the print's digits); a long closed
-form is written with named intermediate quantities (``handout_math``); the
-verdicts are said in words (``handout_verdicts``).
+form is written with named intermediate quantities (``docs.numbers``); the
+verdicts are said in words (``docs.verdicts``).
 
 Both functions are pure: they return text and neither print nor write files.
 """
@@ -23,6 +23,7 @@ from crane_sym.docs.numbers import (broken_lines, decimal, escape_specials, is_n
                                     named_lines, printed_digits)
 from crane_sym.docs.verdicts import Voice, verdict_name
 from crane_sym.latex import cyrillic_as_text, latex
+from crane_sym.markdown import markdown_table
 from crane_sym.symbols import COORDINATE, DEFINED, PARAMETER, TIME
 
 __all__ = ["render", "walkthrough"]
@@ -83,7 +84,7 @@ def _model(model: str, voice: Voice | None = None) -> str:
 
 def _symbols(d: Derivation, latex_names: dict) -> str:
     """Table of the symbols the student meets (unused defined ones skipped)."""
-    rows = ["| Symbol | Meaning | Unit |", "| --- | --- | --- |"]
+    rows = []
     for entry in d.symbols:
         used = entry.role in _LISTED_ROLES or (
             entry.role == DEFINED and any(s.statement.has(entry.expr) for s in d.steps))
@@ -91,9 +92,8 @@ def _symbols(d: Derivation, latex_names: dict) -> str:
             tex = _tex(entry.expr, latex_names)
             if isinstance(entry.expr, sp.core.function.AppliedUndef):
                 tex += r"(" + ", ".join(latex(a) for a in entry.expr.args) + ")"
-            rows.append(f"| {_math_cell(tex)} "
-                        f"| {_cell(entry.description)} | {_cell(entry.unit)} |")
-    return "\n".join(rows)
+            rows.append([_math_cell(tex), _cell(entry.description), _cell(entry.unit)])
+    return markdown_table(["Symbol", "Meaning", "Unit"], rows)
 
 
 def _printed_display(f) -> list[str]:
@@ -211,9 +211,9 @@ def _table(name: str, cells: list, d: Derivation, by_label: dict[str, AuditRecor
     """A printed table as one table: each cell beside its derived value (one digit
     more than printed) and verdict."""
     readings = any(f.conventions for f in cells)
-    head = "| cell | printed | derived" + (" | derived, read as noted" if readings else "")
-    rows = [head + " | verdict | cause |",
-            "| --- " * (5 + readings) + "|"]
+    header = ["cell", "printed", "derived", *(["derived, read as noted"] if readings else []),
+              "verdict", "cause"]
+    rows = []
     for f in cells:
         r = by_label.get(f.label)
         row = [_cell(voice.say(f.label.removeprefix(name + ", "))),
@@ -224,10 +224,10 @@ def _table(name: str, cells: list, d: Derivation, by_label: dict[str, AuditRecor
                        if f.conventions else "—")
         row += [verdict_name(r.verdict) if r else "not audited",
                 voice.letter(r) if r and r.cause else "—"]
-        rows.append("| " + " | ".join(row) + " |")
+        rows.append(row)
     notes = {f.conventions[0].note for f in cells if f.conventions}
     causes = {r.cause.id: r for f in cells if (r := by_label.get(f.label)) and r.cause}
-    out = [f"### {name}", "\n".join(rows)]
+    out = [f"### {name}", markdown_table(header, rows)]
     out += [f"*Read as noted:* {voice.say(n)}." for n in sorted(notes)]
     out += [f"*Cause {voice.causes[k]}:* {voice.say(r.cause.sentence)}"
             for k, r in causes.items() if voice.cause_first[k] == r.label]

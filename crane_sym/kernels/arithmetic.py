@@ -365,7 +365,15 @@ DEPENDS = {
 
 def closure(names: set[str], depends: dict | None = None) -> list[str]:
     """``names`` and every kernel they depend on, in the order of ``depends``
-    (default: this module's ``DEPENDS``)."""
+    (default: this module's ``DEPENDS``).
+
+    Parameters
+    ----------
+    names : set of str
+        Kernel names a module calls.
+    depends : dict, optional
+        Kernel name -> the kernels it calls.
+    """
     depends = DEPENDS if depends is None else depends
     needed: set[str] = set()
     todo = list(names)

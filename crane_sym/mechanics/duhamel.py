@@ -1,4 +1,4 @@
-"""Response of a single oscillator to a load, by Duhamel's integral (paper 002).
+"""Response of a single oscillator to a load, by Duhamel's integral (Chovnyuk et al.).
 
 For the relative coordinate of a two-mass drive,
 
@@ -8,7 +8,7 @@ For the relative coordinate of a two-mass drive,
     \\dot u(0) = v_0,
 
 the solution is the free response plus the convolution of the load with the
-unit-impulse response :math:`h` (paper 002, eqs (15)–(17), (33)):
+unit-impulse response :math:`h` (Chovnyuk et al., eqs (15)–(17), (33)):
 
 .. math::
 
@@ -96,7 +96,7 @@ def _homogeneous(osc: _Oscillator, t: sp.Symbol, u0: sp.Expr, v0: sp.Expr) -> sp
 
 
 def impulse_response(omega: sp.Expr, t: sp.Symbol, damping: sp.Expr = 0) -> sp.Expr:
-    """Unit-impulse response :math:`h(t)` (paper 002, eq (16)) of
+    """Unit-impulse response :math:`h(t)` (Chovnyuk et al., eq (16)) of
 
     .. math:: \\ddot u + 2n\\dot u + \\omega^2 u = \\delta(t),
 
@@ -119,10 +119,21 @@ def impulse_response(omega: sp.Expr, t: sp.Symbol, damping: sp.Expr = 0) -> sp.E
 def free_response(omega: sp.Expr, t: sp.Symbol, u0: sp.Expr, v0: sp.Expr,
                   damping: sp.Expr = 0) -> sp.Expr:
     """Free motion from :math:`u(0) = u_0`, :math:`\\dot u(0) = v_0`, the first
-    two terms of paper 002, eq (33):
+    two terms of Chovnyuk et al.'s eq (33):
 
     .. math:: u_{\\mathrm{free}}(t) = u_0 \\cos\\omega t + \\frac{v_0}{\\omega}\\sin\\omega t
               \\quad (n = 0).
+
+    Parameters
+    ----------
+    omega : positive expression or number
+        Natural circular frequency.
+    t : Symbol
+        Time.
+    u0, v0 : expression or number
+        Initial displacement and velocity.
+    damping : expression or number
+        :math:`n \\ge 0` (not critical).
     """
     osc = _Oscillator.of(omega, damping)
     u0, v0 = as_expression(u0, "u0"), as_expression(v0, "v0")
@@ -181,7 +192,7 @@ class DuhamelResult:
 
     @property
     def velocity_pieces(self) -> tuple[Piece, ...]:
-        """:math:`\\dot u` on each interval (paper 002, eq (18))."""
+        """:math:`\\dot u` on each interval (Chovnyuk et al., eq (18))."""
         return tuple(Piece(p.start, p.end, sp.simplify(p.expr.diff(self.t)))
                      for p in self.pieces)
 
@@ -252,7 +263,7 @@ def duhamel(forcing: PiecewiseLoad | sp.Expr, omega: sp.Expr, t: sp.Symbol, *,
         + \\sum_{j<k} \\int_{b_j}^{b_{j+1}} h(t-\\tau) S_j(\\tau)\\,d\\tau
         + \\int_{b_k}^{t} h(t-\\tau) S_k(\\tau)\\,d\\tau
 
-    (paper 002, eqs (15), (33); for a pulse, eqs (44), (49)).
+    (Chovnyuk et al., eqs (15), (33); for a pulse, eqs (44), (49)).
 
     Parameters
     ----------

@@ -44,6 +44,15 @@ def relative_coordinate(eq1: sp.Eq, eq2: sp.Eq, x1: sp.Expr, x2: sp.Expr,
 
     Raises ``ValueError`` when the difference of the accelerations still
     depends on the absolute coordinates (the system does not decouple).
+
+    Parameters
+    ----------
+    eq1, eq2 : sympy.Eq
+        The equations of motion of the two masses.
+    x1, x2 : applied functions of t
+        Their coordinates.
+    u : applied function of t
+        The relative coordinate to introduce.
     """
     t = x1.args[0]
     a1 = sp.solve(eq1, x1.diff(t, 2), dict=True)

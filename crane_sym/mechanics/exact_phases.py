@@ -360,6 +360,14 @@ def tabulate_exact(run: ExactRun, output: Callable[[Hashable], tuple[np.ndarray,
 
 def exact_table(run: HybridRun, dps: int = DPS) -> PhaseTable:
     """The table a scene's module prints: ``run`` solved in mpmath
-    (:func:`simulate_exact`), each number rounded once to double."""
+    (:func:`simulate_exact`), each number rounded once to double.
+
+    Parameters
+    ----------
+    run : HybridRun
+        The system, its start and the output a scene wants.
+    dps : int, optional
+        Decimal digits of the mpmath solution.
+    """
     exact = simulate_exact(run.system, run.mode, run.x0, run.t_end, run.schedule, dps=dps)
     return tabulate_exact(exact, run.output, run.scale)

@@ -16,7 +16,7 @@ Critical points are found
 
 A box still undecided at the depth limit is bounded by an enclosure of
 :math:`f` itself; the result is ``certified`` when no such bound exceeds the
-maximum found. Used for the dynamic coefficients of paper 002, eqs (37)–(53).
+maximum found. Used for the dynamic coefficients of Chovnyuk et al., eqs (37)–(53).
 """
 from __future__ import annotations
 

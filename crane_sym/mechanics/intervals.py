@@ -30,6 +30,13 @@ def enclosure(expr: sp.Expr, variables: Sequence[sp.Symbol]) -> Enclosure:
     """Compile ``expr`` into ``X -> ivmpf`` enclosing its range over the box
     ``X`` (a sequence of ``iv.mpf``, one per symbol of ``variables``).
 
+    Parameters
+    ----------
+    expr : sympy.Expr
+        The expression to enclose.
+    variables : sequence of Symbol
+        Its free symbols, in the order of the box.
+
     Raises
     ------
     ValueError

@@ -157,7 +157,21 @@ def tip_shift_mp(z, alpha, ha, dy, sigma):
 
     Independent of the NumPy kernel: bracketed in x itself, from the shift
     that puts the tip on the reference circle (or just above the base circle)
-    up to a shift found by doubling, then mpmath's Anderson–Björk solver."""
+    up to a shift found by doubling, then mpmath's Anderson–Björk solver.
+
+    Parameters
+    ----------
+    z : number
+        Number of teeth.
+    alpha : number
+        Profile angle [rad].
+    ha : number
+        Addendum coefficient.
+    dy : number
+        Tip shortening coefficient.
+    sigma : number
+        Tip thickness over the module.
+    """
     z, alpha, ha, dy, sigma = (_mpf(v) for v in (z, alpha, ha, dy, sigma))
 
     def f(x):
@@ -194,7 +208,15 @@ class tip_shift(sp.Function):  # noqa: N801
 
 def involute_point(r_b: sp.Expr, phi: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
     """A point of the involute of the base circle r_b at roll angle phi: the
-    end of a string of length r_b·phi unwound from the circle."""
+    end of a string of length r_b·phi unwound from the circle.
+
+    Parameters
+    ----------
+    r_b : sympy.Expr
+        Base circle radius.
+    phi : sympy.Expr
+        Roll angle [rad].
+    """
     return (r_b * (sp.cos(phi) + phi * sp.sin(phi)),
             r_b * (sp.sin(phi) - phi * sp.cos(phi)))
 
@@ -202,7 +224,17 @@ def involute_point(r_b: sp.Expr, phi: sp.Expr) -> tuple[sp.Expr, sp.Expr]:
 def rack_space_width(m: sp.Expr, alpha: sp.Expr, height: sp.Expr) -> sp.Expr:
     """Width of the rack's tooth space at ``height`` above its datum line
     (towards its tips): the space is πm/2 wide on the datum and each flank,
-    inclined at alpha to the normal of the datum, opens it by height·tan alpha."""
+    inclined at alpha to the normal of the datum, opens it by height·tan alpha.
+
+    Parameters
+    ----------
+    m : sympy.Expr
+        Module.
+    alpha : sympy.Expr
+        Profile angle of the rack [rad].
+    height : sympy.Expr
+        Height above the datum line.
+    """
     right = sp.pi * m / 4 + height * sp.tan(alpha)
     left = -sp.pi * m / 4 - height * sp.tan(alpha)
     return right - left
@@ -211,7 +243,19 @@ def rack_space_width(m: sp.Expr, alpha: sp.Expr, height: sp.Expr) -> sp.Expr:
 def thickness_at_radius(s: sp.Expr, r: sp.Expr, r_y: sp.Expr, alpha: sp.Expr,
                         alpha_y: sp.Expr) -> sp.Expr:
     """Tooth thickness at radius r_y from the thickness s at radius r: the half
-    angle grows by the involute's polar angle from alpha_y down to alpha."""
+    angle grows by the involute's polar angle from alpha_y down to alpha.
+
+    Parameters
+    ----------
+    s : sympy.Expr
+        Tooth thickness at radius ``r``.
+    r : sympy.Expr
+        Radius where the thickness is known.
+    r_y : sympy.Expr
+        Radius where it is wanted.
+    alpha, alpha_y : sympy.Expr
+        Pressure angles at ``r`` and ``r_y`` [rad].
+    """
     return 2 * r_y * (s / (2 * r) + (sp.tan(alpha) - alpha) - (sp.tan(alpha_y) - alpha_y))
 
 
@@ -219,7 +263,13 @@ def thickness_at_radius(s: sp.Expr, r: sp.Expr, r_y: sp.Expr, alpha: sp.Expr,
 
 
 def involute_np(a: np.ndarray | float) -> np.ndarray:
-    """tan a − a, stable at small a (NumPy)."""
+    """tan a − a, stable at small a (NumPy).
+
+    Parameters
+    ----------
+    a : float or ndarray
+        Pressure angle [rad].
+    """
     return gear_kernels._involute(a)
 
 
@@ -257,7 +307,21 @@ def inverse_involute_mp(v) -> mpmath.mpf:
 
 
 def tip_shift_np(z, alpha, ha=1.0, dy=0.0, sigma=0.0) -> np.ndarray:
-    """The shift giving tip thickness sigma·m (NumPy kernel)."""
+    """The shift giving tip thickness sigma·m (NumPy kernel).
+
+    Parameters
+    ----------
+    z : float or ndarray
+        Number of teeth.
+    alpha : float or ndarray
+        Profile angle [rad].
+    ha : float or ndarray, optional
+        Addendum coefficient.
+    dy : float or ndarray, optional
+        Tip shortening coefficient.
+    sigma : float or ndarray, optional
+        Tip thickness over the module.
+    """
     return gear_kernels._tip_shift(z, alpha, ha, dy, sigma)
 
 

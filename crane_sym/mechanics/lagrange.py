@@ -47,6 +47,8 @@ def lagrange_equations(T: sp.Expr, V: sp.Expr, coordinates: Sequence[sp.Expr],
         first derivatives.
     coordinates : sequence of applied functions of ``t``
         The generalized coordinates ``q_i(t)``.
+    t : Symbol
+        Time.
     forces : mapping coordinate -> expression, optional
         Generalized non-conservative forces ``Q_i`` (virtual work
         ``δA = Σ Q_i δq_i``); missing coordinates get 0.

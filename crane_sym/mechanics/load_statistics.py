@@ -37,7 +37,15 @@ def log_exceedance_probability(level, mean, std) -> np.ndarray:
     """log P(R > level): finite far beyond the underflow of P itself.
 
     For u > 0 from erfcx (no overflow, no cancellation); for u <= 0 as
-    log1p(−Q(−u)), with Q(−u) = P(R < level) at most 1/2."""
+    log1p(−Q(−u)), with Q(−u) = P(R < level) at most 1/2.
+
+    Parameters
+    ----------
+    level : float or ndarray
+        The level R must exceed.
+    mean, std : float or ndarray
+        Mean and standard deviation of the normal R (std > 0).
+    """
     u = _standardized(level, mean, std)
     t = u / math.sqrt(2.0)
     with np.errstate(divide="ignore"):

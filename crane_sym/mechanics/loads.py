@@ -7,7 +7,7 @@ A load is a list of breakpoints and one expression per piece,
     S(t) = S_k(t), \\qquad b_k \\le t < b_{k+1}, \\qquad k = 0, \\dots, N - 1,
 
 with :math:`b_N = \\infty` and :math:`S(t) = 0` before :math:`b_0`. The
-constructors build the laws of the Duhamel examples of paper 002 (sudden
+constructors build the laws of the Duhamel examples of Chovnyuk et al. (sudden
 load, linear rise, linear rise then hold, rectangular pulse) and polynomial
 laws given by numbers from a scene file. Numbers from a user are checked by
 type and never parsed or evaluated (``exact_number``).
@@ -38,6 +38,13 @@ def exact_number(value: object, what: str) -> sp.Rational:
     decimal it prints as (``0.1 -> 1/10``). Everything else, strings first of
     all, is refused by type alone: the value is never converted, parsed or
     evaluated before it is accepted.
+
+    Parameters
+    ----------
+    value : object
+        The number as given.
+    what : str
+        Its name, for the error message.
 
     Raises
     ------
@@ -170,22 +177,47 @@ class PiecewiseLoad:
 
 # --- Constructors ------------------------------------------------------------
 def step(S0: sp.Expr | Number, *, t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Sudden load :math:`S(t) = S_0` for :math:`t \\ge 0` (paper 002, eq (35))."""
+    """Sudden load :math:`S(t) = S_0` for :math:`t \\ge 0` (Chovnyuk et al., eq (35)).
+
+    Parameters
+    ----------
+    S0 : expression or number
+        The load.
+    t : Symbol, optional
+        Time.
+    """
     return PiecewiseLoad((0,), (as_expression(S0, "S0"),), t)
 
 
 def linear(rate: sp.Expr | Number, *, t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Unbounded linear rise :math:`S(t) = k t` (paper 002, eq (40))."""
+    """Unbounded linear rise :math:`S(t) = k t` (Chovnyuk et al., eq (40)).
+
+    Parameters
+    ----------
+    rate : expression or number
+        The slope :math:`k`.
+    t : Symbol, optional
+        Time.
+    """
     return PiecewiseLoad((0,), (as_expression(rate, "rate") * t,), t)
 
 
 def ramp(S0: sp.Expr | Number, t1: sp.Expr | Number, *,
          t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Linear rise to :math:`S_0` at :math:`t_1`, then hold (paper 002, eqs (48)–(49)).
+    """Linear rise to :math:`S_0` at :math:`t_1`, then hold (Chovnyuk et al., eqs (48)–(49)).
 
     .. math::
 
         S(t) = S_0 \\frac{t}{t_1} \\; (0 \\le t < t_1), \\qquad S(t) = S_0 \\; (t \\ge t_1)
+
+    Parameters
+    ----------
+    S0 : expression or number
+        The load held after the rise.
+    t1 : expression or number
+        Duration of the rise (> 0).
+    t : Symbol, optional
+        Time.
     """
     S0, t1 = as_expression(S0, "S0"), as_expression(t1, "t1")
     return PiecewiseLoad((0, t1), (S0 * t / t1, S0), t)
@@ -193,7 +225,17 @@ def ramp(S0: sp.Expr | Number, t1: sp.Expr | Number, *,
 
 def rectangular_pulse(S0: sp.Expr | Number, theta: sp.Expr | Number, *,
                       t: sp.Symbol = DEFAULT_TIME) -> PiecewiseLoad:
-    """Load :math:`S_0` for :math:`0 \\le t < \\theta`, zero after (paper 002, eq (44))."""
+    """Load :math:`S_0` for :math:`0 \\le t < \\theta`, zero after (Chovnyuk et al., eq (44)).
+
+    Parameters
+    ----------
+    S0 : expression or number
+        The load during the pulse.
+    theta : expression or number
+        Duration of the pulse (> 0).
+    t : Symbol, optional
+        Time.
+    """
     S0, theta = as_expression(S0, "S0"), as_expression(theta, "theta")
     return PiecewiseLoad((0, theta), (S0, sp.Integer(0)), t)
 
@@ -213,6 +255,8 @@ def piecewise_polynomial(breakpoints: Sequence[Number],
         :math:`b_0 < b_1 < \\dots`.
     coefficients : sequence of sequences of numbers
         ``coefficients[k][j]`` is :math:`c_{kj}`.
+    t : Symbol, optional
+        Time.
 
     Every entry must be an ``int``, ``float``, ``Fraction`` or
     ``sympy.Rational`` (see ``exact_number``); anything else, a string in

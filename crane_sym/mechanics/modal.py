@@ -21,6 +21,13 @@ def relative_dynamic_matrix(inertia: sp.Matrix, stiffness: sp.Matrix) -> sp.Matr
     For M·φ̈ + K·φ = 0 with K of a chain (rows summing to zero: the chain is
     free), θ = D·φ with D the difference matrix; then θ̈ = −A·θ where
     A = D·M⁻¹·K·D⁺ restricted to the n − 1 twists (K·φ depends on θ only).
+
+    Parameters
+    ----------
+    inertia : sympy.Matrix
+        The mass (inertia) matrix M of the chain.
+    stiffness : sympy.Matrix
+        Its stiffness matrix K (rows summing to zero).
     """
     n = inertia.shape[0]
     if any(sp.simplify(sum(stiffness.row(i))) != 0 for i in range(n)):
@@ -33,7 +40,13 @@ def relative_dynamic_matrix(inertia: sp.Matrix, stiffness: sp.Matrix) -> sp.Matr
 
 def eigenvalues_2x2(A: sp.Matrix) -> tuple[sp.Expr, sp.Expr]:
     """Eigenvalues (smaller, larger) of a 2×2 matrix with positive trace and
-    a₁₂·a₂₁ ≥ 0, free of cancellation (module docstring)."""
+    a₁₂·a₂₁ ≥ 0, free of cancellation (module docstring).
+
+    Parameters
+    ----------
+    A : sympy.Matrix
+        The 2x2 matrix.
+    """
     if A.shape != (2, 2):
         raise ValueError(f"expected a 2x2 matrix, got {A.shape}")
     (a, b), (c, d) = A.tolist()

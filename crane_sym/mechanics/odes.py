@@ -50,6 +50,8 @@ def solve_constant_coefficient(equation: sp.Eq, u: sp.Expr,
         in a fixed order: the one equal to 1 at ``t0`` (cos, cosh) first.
     initial : mapping derivative order -> value at ``t0``, optional
         E.g. ``{0: 0, 1: 0}`` for ``u(t0) = 0, u'(t0) = 0``.
+    t0 : sympy.Expr, optional
+        The instant the initial values hold at.
     """
     t = u.args[0]
     general = sp.dsolve(equation, u).rhs

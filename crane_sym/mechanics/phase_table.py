@@ -13,7 +13,7 @@ scene's data); an output g = w·x + k of the state is then, on phase i,
 with the terms of the phase's closed form merged by (k, σ, ω). The table is
 what a scene's generated module carries (``crane_sym.codegen.tabulated`` prints it):
 the response as arithmetic only, no event search at run time. The same kernel
-(``kernels._phase_sum``) evaluates it here and in the generated code.
+(``kernels.arithmetic._phase_sum``) evaluates it here and in the generated code.
 """
 from __future__ import annotations
 
@@ -48,7 +48,7 @@ class PhaseTable:
     events: tuple[str, ...]
 
     def arrays(self) -> tuple[np.ndarray, ...]:
-        """The arrays in the order ``kernels._phase_sum`` takes them."""
+        """The arrays in the order ``kernels.arithmetic._phase_sum`` takes them."""
         return (self.edges, self.first, self.powers, self.sigmas, self.omegas,
                 self.cos_amps, self.sin_amps, self.consts)
 
@@ -113,7 +113,17 @@ class HybridRun:
 
 
 def values(result: PiecewiseResult, times: np.ndarray, affine: Affine) -> np.ndarray:
-    """w·x + k at ``times`` (inside the run), (w, k) = ``affine(mode)`` of each phase."""
+    """w·x + k at ``times`` (inside the run), (w, k) = ``affine(mode)`` of each phase.
+
+    Parameters
+    ----------
+    result : PiecewiseResult
+        The run.
+    times : ndarray
+        Times inside the run.
+    affine : callable
+        Mode -> (w, k) of the output w·x + k.
+    """
     times = np.asarray(times, dtype=float)
     out = np.empty(times.shape)
     for i, mask in by_phase([s.t0 for s in result.segments], times):
@@ -144,7 +154,19 @@ def largest(result: PiecewiseResult, system: HybridSystem, affine: Affine,
             magnitude: bool = False) -> tuple[float, float]:
     """(time, value) of the largest w·x + k over the run (of |w·x + k| with
     ``magnitude``; the value keeps its sign): each phase's ends and stationary
-    points are the only candidates."""
+    points are the only candidates.
+
+    Parameters
+    ----------
+    result : PiecewiseResult
+        The run.
+    system : HybridSystem
+        The system it is a run of.
+    affine : callable
+        Mode -> (w, k) of the output w·x + k.
+    magnitude : bool, optional
+        The largest absolute value instead.
+    """
     best, best_key = (0.0, np.nan), -np.inf
     for seg in result.segments:
         w, k = affine(seg.mode)

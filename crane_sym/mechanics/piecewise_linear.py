@@ -26,8 +26,9 @@ Switching
 :func:`simulate` runs a :class:`HybridSystem`: a set of modes (any hashable
 key), each with its (A, b), its guards, and a rule that maps a fired guard or
 a scheduled instant to the next mode and state (e.g. a brake that sticks sets
-a speed to zero). Paper 001's two-mass hoist with coupling backlash and paper
-003's three-mass travel drive with backlash in two stages are such systems.
+a speed to zero). Vöth and Tyulenev's two-mass hoist with coupling backlash and
+Andrianov and Ivanov's three-mass travel drive with backlash in two stages are
+such systems.
 """
 from __future__ import annotations
 
@@ -215,7 +216,15 @@ class PiecewiseResult:
 
 def by_phase(starts: Sequence[float], times: np.ndarray) -> Iterator[tuple[int, np.ndarray]]:
     """(i, mask) for each phase i (phases start at ``starts``, in order) that
-    holds some of ``times``; a time before the first start goes to phase 0."""
+    holds some of ``times``; a time before the first start goes to phase 0.
+
+    Parameters
+    ----------
+    starts : sequence of float
+        The phases' start times, increasing.
+    times : ndarray
+        The times to sort.
+    """
     which = np.clip(np.searchsorted(starts, times, side="right") - 1, 0, None)
     for i in range(len(starts)):
         mask = which == i
@@ -235,6 +244,25 @@ def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: f
     ``exact`` chooses the closed forms' route (:func:`closed_form`); False, the
     numeric eigenvectors, is what a sweep over many designs wants (each design
     has new matrices, and SymPy's Jordan form costs ~0.2 s a run).
+
+    Parameters
+    ----------
+    system : HybridSystem
+        The modes, their (A, b), guards and switch rule.
+    mode : hashable
+        The mode at t = 0.
+    x0 : sequence of float
+        The state at t = 0.
+    t_end : float
+        End of the run.
+    schedule : sequence of (float, str), optional
+        Events known in advance.
+    h_min : float, optional
+        Shortest step of the event search.
+    max_events : int, optional
+        The run fails beyond this many phases.
+    exact : bool, optional
+        The closed forms' route (None: the system's choice).
     """
     x = np.asarray(x0, dtype=float)
     pending = sorted((float(t), name) for t, name in schedule if 0 <= t < t_end)

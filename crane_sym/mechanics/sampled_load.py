@@ -1,14 +1,15 @@
 """Response of the undamped oscillator to a sampled load.
 
 Users have measured drive-force records, not formulas. For the relative
-coordinate of papers 000 and 002,
+coordinate of Semenyuk and Vudvud's travel brake and Chovnyuk et al.'s
+hoist start-up,
 
 .. math::
 
     \\ddot x + \\Omega^2 x = S(t), \\qquad x(t_0) = x_0, \\quad \\dot x(t_0) = v_0,
 
 with :math:`S` known at samples :math:`t_0 \\le t_1 \\le \\dots \\le t_N` and
-linear between them, Duhamel's integral (paper 002, eqs (15)–(18), (33)) is
+linear between them, Duhamel's integral (Chovnyuk et al., eqs (15)–(18), (33)) is
 evaluated exactly, up to rounding, at every sample. The complex state
 :math:`w = \\dot x + i\\Omega x` obeys :math:`\\dot w = i\\Omega w + S`, so
 
@@ -41,10 +42,10 @@ terms, two prefix sums, rotations. Accuracy holds over long records because
   carried from chunk to chunk in double-double): a plain ``np.cumsum`` loses
   ~:math:`\\sqrt N` roundings of the sum;
 * the weights have no cancellation at small :math:`\\Omega h`
-  (:math:`1 - \\cos\\theta = 2\\sin^2(\\theta/2)`, ``kernels._sin_remainder``);
+  (:math:`1 - \\cos\\theta = 2\\sin^2(\\theta/2)`, ``kernels.arithmetic._sin_remainder``);
 * :math:`|w_0 + \\sum| = |w_k|`: the final rotation cannot amplify errors.
 
-Units (SI, as in paper 002, eq (2)): times in s, :math:`S` in m/s^2 (the
+Units (SI, as in Chovnyuk et al., eq (2)): times in s, :math:`S` in m/s^2 (the
 reduced load :math:`S = P/m_1 + Q/m_2`), :math:`\\Omega` in rad/s, :math:`x`
 in m, :math:`\\dot x` in m/s, :math:`\\ddot x` in m/s^2. Any consistent set of
 units works the same way.
@@ -93,7 +94,7 @@ def segment_weights(theta: ArrayLike) -> Weights:
     so that :math:`\\int_0^h e^{-i\\Omega s} S(s)\\,ds = h\\,(S(0) A + S(h) B)`
     for a linear :math:`S`. Written without cancellation at small
     :math:`\\theta`, with :math:`q = 2\\sin^2(\\theta/2) = 1 - \\cos\\theta`
-    and :math:`r = \\sin\\theta - \\theta` (``kernels._sin_remainder``):
+    and :math:`r = \\sin\\theta - \\theta` (``kernels.arithmetic._sin_remainder``):
 
     .. math::
 
@@ -241,7 +242,7 @@ def sampled_response(t: ArrayLike, S: ArrayLike, Omega: float, x0: float = 0.0,
         marks a jump of the load: ``S`` holds the values before and after it.
     S : array_like, shape (N + 1,)
         The load at those times [m/s^2], the reduced load
-        :math:`S = P/m_1 + Q/m_2` of paper 002, eq (2) (a force over a mass).
+        :math:`S = P/m_1 + Q/m_2` of Chovnyuk et al., eq (2) (a force over a mass).
     Omega : float
         Natural circular frequency :math:`\\Omega` [rad/s], > 0.
     x0, v0 : float
@@ -269,7 +270,7 @@ def sampled_response(t: ArrayLike, S: ArrayLike, Omega: float, x0: float = 0.0,
         For strings or non-numeric arrays.
 
     Exact for a load linear between samples, up to rounding that grows like
-    the square root of N: against mpmath (``bench_sampled.sampled_accuracy``:
+    the square root of N: against mpmath (``bench.sampled.sampled_accuracy``:
     step, ramp, ramp-hold, trapezoid, N = 1e5, :math:`\\Omega h` from 1e-6
     to 1) the errors of x and x' stay below 2e-14 of their peaks. A load
     curved between samples is replaced by its chords (an error

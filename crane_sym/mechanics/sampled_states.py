@@ -50,7 +50,7 @@ def prefix_sums(terms: np.ndarray, n: int, compensated: bool) -> np.ndarray:
     """Prefix sums of the first ``n`` of ``terms`` (a 1-D array padded with
     zeros to a multiple of BLOCK), in place: a plain cumsum inside each block
     of BLOCK terms, and the blocks' totals accumulated by
-    ``kernels._compensated_cumsum``. As accurate as the compensated sum of
+    ``kernels.arithmetic._compensated_cumsum``. As accurate as the compensated sum of
     all terms (a few ulp of each sum) at about the cost of one ``np.cumsum``;
     ``compensated=False`` is the plain ``np.cumsum``, for comparison."""
     if not compensated:

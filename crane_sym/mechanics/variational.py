@@ -1,4 +1,4 @@
-"""Extremals of functionals with higher derivatives (paper 002, eqs (58)–(61)).
+"""Extremals of functionals with higher derivatives (Chovnyuk et al., eqs (58)–(61)).
 
 For :math:`J[u] = \\int L(t, u, \\dot u, \\dots, u^{(n)})\\,dt` the
 Euler–Poisson equation is
@@ -48,7 +48,7 @@ def euler_poisson(L: sp.Expr, u: sp.Expr, t: sp.Symbol) -> sp.Eq:
 
     The partial derivatives treat :math:`u, \\dot u, \\dots, u^{(n)}` as
     independent variables; the total derivatives act on everything,
-    including given functions of time such as :math:`Q(t)` (paper 002,
+    including given functions of time such as :math:`Q(t)` (Chovnyuk et al.,
     (58) -> (59)).
 
     Parameters

@@ -143,7 +143,17 @@ def piecewise_law(breakpoints: Sequence[Any], coefficients: Sequence[Sequence[An
 def check_keys(table: Mapping[str, Any], allowed: Sequence[str],
                required: Sequence[str]) -> None:
     """ValueError naming the unknown and the missing keys of ``table`` (and the
-    allowed key closest to an unknown one)."""
+    allowed key closest to an unknown one).
+
+    Parameters
+    ----------
+    table : mapping
+        The table as read.
+    allowed : sequence of str
+        Every key it may have.
+    required : sequence of str
+        The keys it must have.
+    """
     unknown = sorted(set(table) - set(allowed))
     missing = [k for k in required if k not in table]
     if unknown or missing:
@@ -182,6 +192,19 @@ def read_law_table(table: Mapping[str, Any], value_key: str, dimension: Dimensio
     Raises ``TypeError`` for an entry that is not a number and ``ValueError``
     for a missing key, a bad unit, counts that do not match, or a law beyond
     ``limits`` (its counts checked before any entry is read).
+
+    Parameters
+    ----------
+    table : mapping
+        The table as read from TOML.
+    value_key : str
+        The key of the values' unit.
+    dimension : Dimension
+        The dimension of the law's values.
+    default_unit : str
+        The values' unit when the table names none.
+    limits : LawLimits
+        The largest law accepted.
     """
     missing = [k for k in ("breakpoints", "coefficients") if k not in table]
     if missing:

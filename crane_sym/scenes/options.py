@@ -216,7 +216,23 @@ def from_symbol(symbol: PhysicalSymbol, *, default: Any = REQUIRED,
                 length: tuple[int, int] = (1, 1)) -> SceneOption:
     """An option that gives a value of a symbol of the paper (a simulation-only
     mass, a backlash the report runs): its dimension, its description, its
-    sign and the range its generated functions serve (``PhysicalSymbol.serves``)."""
+    sign and the range its generated functions serve (``PhysicalSymbol.serves``).
+
+    Parameters
+    ----------
+    symbol : PhysicalSymbol
+        The paper's symbol the option sets.
+    default : optional
+        The value when the scene leaves the option out (default: the scene must
+        give it).
+    outputs : tuple of str, optional
+        As :attr:`SceneOption.outputs` (empty: every scene of the paper that
+        gives no scene load).
+    kind : str, optional
+        ``quantity`` or ``quantities``.
+    length : tuple of int, optional
+        Least and most entries of a ``quantities`` option.
+    """
     low, high = symbol.serves
     return SceneOption(symbol.name, kind, symbol.description, default, symbol.unit,
                        symbol.dimension, low=low, high=high, length=length, outputs=outputs)

@@ -7,7 +7,7 @@ still resting on the ground) marks that part as :class:`Span` s in
 ``Panel.invalid`` (:func:`outside` makes them from the valid interval);
 ``crane_sym.scenes.plots`` greys them, draws the curves there faint, scales the y
 axis to the valid part and names the reason in the legend. The report says
-so in a line that starts with ``warning:`` (``scene_run`` refuses a report
+so in a line that starts with ``warning:`` (``scenes.run`` refuses a report
 that greys a panel without one), and takes its maxima over the valid part
 (:func:`valid_mask`).
 """
@@ -89,7 +89,17 @@ class SceneReport:
 
 
 def format_quantity(value: float, unit: str = "", digits: int = 4) -> str:
-    """``value`` with ``digits`` significant digits and its unit, e.g. ``"45.31 kN"``."""
+    """``value`` with ``digits`` significant digits and its unit, e.g. ``"45.31 kN"``.
+
+    Parameters
+    ----------
+    value : float
+        The value.
+    unit : str, optional
+        Its unit.
+    digits : int, optional
+        Significant digits.
+    """
     text = f"{value:#.{digits}g}"
     if "e" not in text:
         text = text.rstrip(".")
@@ -103,6 +113,13 @@ def outside(start: float, end: float, before: str = "", after: str = "") -> list
 
     >>> [s.end for s in outside(-math.inf, 2.5, after="crane stopped")]
     [inf]
+
+    Parameters
+    ----------
+    start, end : float
+        The valid interval.
+    before, after : str, optional
+        Why the model does not hold below ``start`` and above ``end``.
     """
     spans = []
     if before and start > -math.inf:
@@ -113,7 +130,15 @@ def outside(start: float, end: float, before: str = "", after: str = "") -> list
 
 
 def valid_mask(x: np.ndarray | Sequence[float], spans: Sequence[Span]) -> np.ndarray:
-    """True where ``x`` lies in none of ``spans``."""
+    """True where ``x`` lies in none of ``spans``.
+
+    Parameters
+    ----------
+    x : array_like
+        The x values.
+    spans : sequence of Span
+        The invalid spans.
+    """
     x = np.asarray(x, dtype=float)
     ok = np.ones(x.shape, dtype=bool)
     for span in spans:

@@ -43,7 +43,15 @@ def layout(panels: Sequence[Panel]) -> list[tuple[str, list[Panel]]]:
 
 def chunks(items: Sequence, size: int = MAX_PANELS) -> list[list]:
     """``items`` in the fewest runs of at most ``size``, of nearly equal length
-    (nine in fours: 3, 3, 3)."""
+    (nine in fours: 3, 3, 3).
+
+    Parameters
+    ----------
+    items : sequence
+        The items.
+    size : int, optional
+        Most items a run.
+    """
     parts = max(1, -(-len(items) // size))
     length, extra = divmod(len(items), parts)
     out, start = [], 0
@@ -55,7 +63,15 @@ def chunks(items: Sequence, size: int = MAX_PANELS) -> list[list]:
 
 
 def numbered(path: Path, count: int) -> list[Path]:
-    """``[path]`` for one figure, else ``<stem>_1<suffix>`` ... ``_<count>``."""
+    """``[path]`` for one figure, else ``<stem>_1<suffix>`` ... ``_<count>``.
+
+    Parameters
+    ----------
+    path : Path
+        The file named for one figure.
+    count : int
+        Number of figures.
+    """
     path = Path(path)
     if count == 1:
         return [path]
@@ -144,7 +160,17 @@ def grey_invalid(ax, panel: Panel) -> None:
 
 
 def save(fig, path: Path, dpi: int = 120) -> Path:
-    """Write ``fig`` to the PNG ``path`` (deterministic bytes); return ``path``."""
+    """Write ``fig`` to the PNG ``path`` (deterministic bytes); return ``path``.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+    path : Path
+        The PNG to write.
+    dpi : int, optional
+        Resolution.
+    """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     fig.savefig(path, dpi=dpi, metadata={"Software": None})

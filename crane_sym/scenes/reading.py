@@ -18,7 +18,7 @@ Optional: ``[scene] inputs`` lists parameters left as arguments of the
 scene's functions, ``[options] <switch> = false`` turns off a part of the
 model the derivation declares in ``Derivation.switches`` (e.g. ``damping``),
 and a table named after one of the derivation's scene loads
-(``SCENE_LOADS`` of its package, e.g. ``[drive_law]`` of paper 002) gives a
+(``SCENE_LOADS`` of its package, e.g. ``[drive_law]`` of Chovnyuk et al.) gives a
 load as data, which the specializer turns into the scene's functions.
 ``[options]`` takes what ``crane_sym.scenes.options.options_for`` declares for
 the scene (``duration``, ``points``, the switches, the paper's
@@ -27,7 +27,7 @@ run last. An unknown key in any table is an error naming the closest known one.
 Values are converted to SI by :func:`crane_sym.units.convert`; they are parsed,
 never evaluated, and checked against the sign the symbol table admits. This is
 stage 1 of the one scene pipeline (read and validate → ``specialize`` →
-generate → ``scene_run``). Scenes shipped with the package live in
+generate → ``scenes.run``). Scenes shipped with the package live in
 ``derivations/<id>/scenes/`` of each paper.
 """
 from __future__ import annotations
@@ -88,7 +88,7 @@ class Scene:
     load : object
         The load as its ``SceneLoad.read`` validated it, or None.
     settings : dict
-        Every option the scene takes (``scene_options``), read by its
+        Every option the scene takes (``scenes.options``), read by its
         declaration: given or default, bounds checked, quantities in SI.
         What a report reads.
     """
@@ -108,7 +108,13 @@ class Scene:
 
 
 def scenes_directory(derivation: str) -> Path:
-    """The folder of the scenes shipped with a derivation's package."""
+    """The folder of the scenes shipped with a derivation's package.
+
+    Parameters
+    ----------
+    derivation : str
+        A derivation id.
+    """
     return Path(registry.module_path(derivation)).parent / "scenes"
 
 
@@ -130,7 +136,13 @@ def list_scenes() -> list[str]:
 
 
 def scene_path(name: str) -> Path:
-    """The file of the shipped scene ``name``."""
+    """The file of the shipped scene ``name``.
+
+    Parameters
+    ----------
+    name : str
+        A shipped scene's name.
+    """
     shipped = _shipped()
     if not _SAFE_NAME.fullmatch(name) or name not in shipped:
         raise SceneError(f"unknown scene {name!r}; known: {', '.join(sorted(shipped))}")
@@ -149,7 +161,13 @@ def _locate(path_or_name: str | Path) -> Path:
 
 
 def read_toml(path: Path) -> dict[str, Any]:
-    """The scene file's tables; SceneError if it is not valid UTF-8 TOML."""
+    """The scene file's tables; SceneError if it is not valid UTF-8 TOML.
+
+    Parameters
+    ----------
+    path : Path
+        The scene file.
+    """
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:

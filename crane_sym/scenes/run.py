@@ -1,7 +1,7 @@
 """Stage 4 of the scene pipeline: run a scene and plot it.
 
 Every scene takes the same path (``crane-sym run``): read and validate the
-TOML (``scenes.load_scene``) → specialize (``specialize``) → generate its
+TOML (``scenes.reading.load_scene``) → specialize (``specialize``) → generate its
 module, written beside the plot as ``scene_<name>.py``, the file
 ``crane-sym generate --scene`` writes → import that file and hand it to the
 derivation's ``scene_report(scene, module)`` → plot the report's panels.
@@ -30,7 +30,13 @@ __all__ = ["import_module_file", "plot_report", "run_scene", "time_function"]
 
 def import_module_file(path: Path) -> ModuleType:
     """Import the module the printer wrote at ``path`` (our own output, never
-    user text)."""
+    user text).
+
+    Parameters
+    ----------
+    path : Path
+        The module's file.
+    """
     spec = importlib.util.spec_from_file_location(f"_crane_sym_scene_{path.stem}", path)
     module = importlib.util.module_from_spec(spec)
     spec.loader.exec_module(module)
@@ -40,7 +46,17 @@ def import_module_file(path: Path) -> ModuleType:
 def time_function(scene: Scene, module: ModuleType, name: str) -> Callable:
     """``name`` as a function of time alone: from the scene's own module when
     the scene names it among its outputs, else from the paper's general
-    module ``crane_sym.generated.<id>`` with the scene's parameters filled in."""
+    module ``crane_sym.generated.<id>`` with the scene's parameters filled in.
+
+    Parameters
+    ----------
+    scene : Scene
+        The scene.
+    module : module
+        Its specialized module.
+    name : str
+        An output of the paper.
+    """
     if name in scene.outputs:
         return getattr(module, name)
     general = getattr(importlib.import_module(f"crane_sym.generated.{scene.derivation}"),

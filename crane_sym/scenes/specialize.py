@@ -36,7 +36,15 @@ def scene_values(d: Derivation | SymbolTable, scene: Scene) -> dict[sp.Symbol, s
 
 
 def switched_off(d: Derivation, scene: Scene) -> dict[sp.Symbol, sp.Expr]:
-    """The parameters the scene's switched-off switches fix, with their values."""
+    """The parameters the scene's switched-off switches fix, with their values.
+
+    Parameters
+    ----------
+    d : Derivation
+        The scene's built derivation.
+    scene : Scene
+        The validated scene.
+    """
     return {s: v for name in scene.switched_off for s, v in d.switches[name].off}
 
 
@@ -51,7 +59,15 @@ def specialize_load(scene: Scene) -> SpecializedLoad:
 
 def specialize(d: Derivation, scene: Scene) -> list[Output]:
     """The scene's outputs with its values, switches and load folded in; time,
-    the scene's inputs and state stay arguments."""
+    the scene's inputs and state stay arguments.
+
+    Parameters
+    ----------
+    d : Derivation
+        The scene's built derivation.
+    scene : Scene
+        The validated scene.
+    """
     if scene.load_table:
         return specialize_load(scene).outputs
     values = {**scene_values(d, scene), **switched_off(d, scene)}
@@ -91,7 +107,13 @@ def tabulated_outputs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput
 
 
 def module_name(scene: Scene) -> str:
-    """File name of the specialized module."""
+    """File name of the specialized module.
+
+    Parameters
+    ----------
+    scene : Scene
+        The scene.
+    """
     return f"scene_{scene.name}.py"
 
 
@@ -108,7 +130,13 @@ def regenerate_command(scene: Scene) -> str:
 
 
 def render_scene_module(scene: Scene) -> str:
-    """Source of the module specialized to ``scene`` (pure; deterministic)."""
+    """Source of the module specialized to ``scene`` (pure; deterministic).
+
+    Parameters
+    ----------
+    scene : Scene
+        The validated scene.
+    """
     command = regenerate_command(scene)
     constants = {"SCENE_NAME": scene.name, "SCENE_TITLE": scene.title}
     if scene.load_table:
@@ -133,12 +161,24 @@ def render_scene_module(scene: Scene) -> str:
 
 
 def operation_count(outputs: list[Output]) -> int:
-    """SymPy operation count of the outputs' expressions (a size measure)."""
+    """SymPy operation count of the outputs' expressions (a size measure).
+
+    Parameters
+    ----------
+    outputs : list of Output
+        The outputs.
+    """
     return sum(sp.count_ops(o.expr) for o in outputs)
 
 
 def scene_files(path_or_name: str | Path) -> dict[str, str]:
-    """File name -> source of the module of one scene (``generate --scene``)."""
+    """File name -> source of the module of one scene (``generate --scene``).
+
+    Parameters
+    ----------
+    path_or_name : str or Path
+        A shipped scene's name or a TOML file.
+    """
     scene = load_scene(path_or_name)
     return {module_name(scene): render_scene_module(scene)}
 

@@ -75,7 +75,15 @@ class Certified:
 
 def prepare(plan: SweepPlan, rel_tol: float) -> CertifyTask:
     """The task for the limited output (else the first); SweepError naming
-    ``--certify`` for an output with no interval enclosure."""
+    ``--certify`` for an output with no interval enclosure.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    rel_tol : float
+        Width of the certified enclosure, relative to its value.
+    """
     if not 1e-12 <= rel_tol <= 0.1:
         raise SweepError(f"--certify-tol {rel_tol!r}: expected a relative width in [1e-12, 0.1]")
     name = plan.limit.output if plan.limit else plan.outputs[0].name
@@ -174,7 +182,17 @@ def certify(task: CertifyTask, client=None, workers: int = 2) -> Certified:
 
 def certify_result(task: CertifyTask, result: SweepResult,
                    scheduler: str | None = None) -> dict[str, Any]:
-    """Certify, and say whether the sweep's grid worst lies inside (user's units)."""
+    """Certify, and say whether the sweep's grid worst lies inside (user's units).
+
+    Parameters
+    ----------
+    task : CertifyTask
+        From :func:`prepare`.
+    result : SweepResult
+        The sweep, its grid worst.
+    scheduler : str, optional
+        As for :func:`crane_sym.sweep.grid.run_sweep`.
+    """
     client = None
     if scheduler and scheduler not in ("synchronous", "threads", "processes"):
         client = connect(scheduler)

@@ -25,7 +25,7 @@ Zarr store; the difference is the blocks' transfer between processes).
 Processes for the simulated responses: one SciPy integration per design runs
 Python code that holds the GIL, so threads never pass one core (measured: 0.98
 CPU seconds per wall second with two threads). On this shared machine the
-measurement did not favour them (004, 24 designs: threads 11.2 s, processes
+measurement did not favour them (Martyntsiv et al.'s drum, 24 designs: threads 11.2 s, processes
 14.1 s, synchronous 11.1 s at load ≈ 3 on 2 cores): starting two worker
 processes costs ~3 s and the second core was busy; they are kept for large
 simulated sweeps on a machine with free cores, the case they serve. With ``scheduler=ADDRESS`` a
@@ -117,7 +117,17 @@ def _combine(parts: list[tuple], worst_is_max: bool) -> tuple:
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
                workers: int | None = None) -> tuple[tuple[int, ...], ...]:
     """Chunks of the grid: by bytes for closed forms; for simulated outputs
-    small enough to give every worker several blocks (one design costs ms)."""
+    small enough to give every worker several blocks (one design costs ms).
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    chunk_bytes : int, optional
+        Size of a block of a closed form.
+    workers : int, optional
+        Workers to share the blocks (default: the cores).
+    """
     from dask.array.core import normalize_chunks
     if any(o.kind == "simulated" for o in plan.outputs):
         workers = workers or os.cpu_count() or 1
@@ -126,7 +136,15 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
 
 
 def grid_arrays(plan: SweepPlan, chunks) -> dict[str, Any]:
-    """The lazy grid of every output: output name -> dask array of ``plan.shape``."""
+    """The lazy grid of every output: output name -> dask array of ``plan.shape``.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    chunks : tuple of tuple of int
+        From :func:`chunks_for`.
+    """
     import dask.array as da
     from dask.array import PerformanceWarning
     names = tuple(a.name for a in plan.axes)
@@ -174,7 +192,17 @@ def check_grid(plan: SweepPlan, out: Path | None, chunk_bytes: int = CHUNK_BYTES
     """SweepError naming the option if the grid cannot be planned or held:
     an axis whose values do not fit in memory (``--vary``), a dataset larger
     than the free disk of ``out`` (``--out``), more blocks than
-    :data:`MAX_BLOCKS` (``--chunk-mib``). Nothing is computed or written."""
+    :data:`MAX_BLOCKS` (``--chunk-mib``). Nothing is computed or written.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    out : Path or None
+        The output folder (None: nothing written).
+    chunk_bytes : int, optional
+        Size of a block.
+    """
     import psutil
     free = psutil.virtual_memory().available
     for a in plan.axes:                        # values, SI, coordinate, Dask copy
@@ -287,6 +315,19 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     On a failure or signal, the tasks that write are stopped (local pools) or
     cancelled and waited for (a live scheduler) before the partial dataset is
     removed; a lost scheduler is a SweepError naming ``--scheduler``.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    out : Path, Stage or None
+        Where the dataset goes.
+    scheduler : str, optional
+        Which scheduler evaluates the blocks.
+    chunk_bytes : int, optional
+        Size of a block.
+    quiet : bool, optional
+        No progress bar.
     """
     if out is not None and not isinstance(out, Stage):
         check_grid(plan, Path(out), chunk_bytes)

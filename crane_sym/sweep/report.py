@@ -40,7 +40,13 @@ def _quantity(value: float | str, unit: str, digits: int = 6) -> str:
 
 
 def summary(result: SweepResult) -> dict[str, Any]:
-    """The sweep's summary as JSON-ready data (values in the user's units)."""
+    """The sweep's summary as JSON-ready data (values in the user's units).
+
+    Parameters
+    ----------
+    result : SweepResult
+        The sweep.
+    """
     plan = result.plan
     axes = {a.name: a.values() for a in plan.axes}
     outputs = {}
@@ -84,7 +90,13 @@ def summary(result: SweepResult) -> dict[str, Any]:
 
 
 def text_lines(data: dict[str, Any]) -> list[str]:
-    """The summary as a few lines of text."""
+    """The summary as a few lines of text.
+
+    Parameters
+    ----------
+    data : dict
+        From :func:`summary`.
+    """
     lines = [f"sweep of scene {data['scene']}: {data['points']} designs in {data['chunks']} "
              f"blocks, {data['seconds']:.3g} s ({data['scheduler']})"]
     for name, entry in data["outputs"].items():
@@ -226,7 +238,15 @@ def figure(result: SweepResult):
 def plot(result: SweepResult, stage: Stage) -> Path:
     """:func:`figure` as ``<scene>_sweep.png`` in ``stage``, its ``sweep_id``
     in the PNG's metadata; renamed into place with the dataset when the stage
-    is committed. Returns the final path."""
+    is committed. Returns the final path.
+
+    Parameters
+    ----------
+    result : SweepResult
+        The sweep.
+    stage : Stage
+        The stage of the sweep's files.
+    """
     name = f"{result.plan.scene}_sweep.png"
     figure(result).savefig(stage.path(name, ".png"), dpi=110,
                            metadata={"sweep_id": result.sweep_id})

@@ -150,7 +150,17 @@ def parse_chunk_mib(value: float, free_bytes: int | None = None,
     """``--chunk-mib`` as bytes: a finite size from :data:`MIN_CHUNK_MIB` up to
     what fits in the free memory (``free_bytes``, the machine's available
     memory by default) once per worker (``workers``, the cores by default:
-    each holds a block at a time), else SweepError naming the option."""
+    each holds a block at a time), else SweepError naming the option.
+
+    Parameters
+    ----------
+    value : float
+        The option's value [MiB].
+    free_bytes : int, optional
+        Free memory.
+    workers : int, optional
+        Workers holding a block each.
+    """
     import os
     if free_bytes is None:
         import psutil
@@ -245,6 +255,19 @@ def _display_units(specs: tuple[OutputSpec, ...], scene_units: dict[str, str], s
 def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
          limit: str | None = None) -> SweepPlan:
     """Check the sweep's arguments against the scene and its derivation.
+
+    Parameters
+    ----------
+    scene : Scene
+        The validated scene (the fixed values).
+    vary : list of str
+        ``--vary`` texts, one axis each.
+    outputs : list of str
+        ``--output`` names.
+    at : list of str, optional
+        ``--at`` texts.
+    limit : str, optional
+        The ``--limit`` text.
 
     Raises
     ------

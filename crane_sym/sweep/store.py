@@ -63,7 +63,15 @@ def sweep_stage(out: Path, option: str = "--out") -> Iterator[Stage]:
     renamed into place when the block ends, under :func:`folder_lock` with
     signals deferred; on a failure or signal they are removed, and ``out`` too
     if this made it and it is empty. An operating-system error becomes an
-    :class:`OutputError` naming ``option``."""
+    :class:`OutputError` naming ``option``.
+
+    Parameters
+    ----------
+    out : Path
+        The output folder.
+    option : str, optional
+        The command-line option an error names.
+    """
     out = Path(out)
     made = not out.exists()
     stage = Stage(output_files.out_folder(out, option))

@@ -36,7 +36,7 @@ def windowed(expr: sp.Expr) -> sp.Expr:
     """Every ``Piecewise`` in time, ``(e0, t < b1), (e1, t < b2), ..., (en, True)``,
     written as ``Σ e_k·[H(t − b_k) − H(t − b_{k+1})]`` with H(0) = 0.
 
-    ``codegen.hoist`` cannot yet take a Piecewise apart; windows keep each
+    ``codegen.module.hoist`` cannot yet take a Piecewise apart; windows keep each
     superposed part on its own breakpoints, so no order of τ_0 and t_п is
     assumed.
     """
