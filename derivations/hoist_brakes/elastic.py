@@ -16,7 +16,7 @@ is the flank torque over the rated static torque M_st (the paper's M_G,rel).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Any, Mapping
+from typing import Mapping
 
 import numpy as np
 
@@ -212,14 +212,6 @@ def table1_hoist(payload: float, g: float = 9.81, backlash_deg: float | None = N
     if stiffness is not None:
         q["c"] = stiffness
     return hoist_from(q, payload)
-
-
-def torque_run(q: Mapping[str, float], options: Mapping[str, Any]) -> HybridRun:
-    """The emergency stop while lowering the payload ``q["m_p"]`` from ω1, motor
-    torque lost at t = 0, brakes after t_SB and t_BB, up to the scene's
-    ``duration``; its output is M_G/M_st."""
-    return hoist_from(q, q["m_p"]).emergency_stop(q["omega1"], options["duration"], 0.0,
-                                                  q["t_SB"], q["t_BB"])
 
 
 #: Table 1's motor speed [rad/s] and brake delays [s].
