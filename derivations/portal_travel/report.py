@@ -3,7 +3,8 @@
 Four kinds of scene, told apart by the outputs they name: Fig. 10 (the shift
 limits against the tooth number), a gear pair checked like Form 1, the support
 loads with Table 3's exceedance probabilities, and the start-up with backlash
-(Fig. 12, Table 1; phases in closed form by ``startup.py``). Numbers come from the
+(Fig. 12, Table 1; phases in closed form by ``startup.py``, run through
+``hybrid.STARTUP``). Numbers come from the
 scene's generated module, never from SymPy. Imports happen only when run.
 """
 from __future__ import annotations
@@ -151,15 +152,18 @@ def startup_report(scene, module):
 
     from crane_sym.generated import portal_travel as gen
 
-    from .startup import F_MEAN, ThreeMassTravel
+    from .hybrid import STARTUP
+    from .startup import F_MEAN
 
     q, o = scene.parameters, scene.settings   # omega_0 > omega_n, end > sum(holds): on load
-    gaps, holds, end, points = o["backlash"], o["holds"], o["end"][0], o["points"]
+    gaps, holds, end = o["backlash"], o["holds"], o["end"][0]
     m_d, b = float(module.startup_motor_mass()), float(module.startup_link_damping())
     v0, ratio = float(module.startup_no_load_speed()), float(module.startup_slope_ratio())
     beta = float(module.startup_first_slope())
-    slopes = tuple(beta * ratio ** k for k in range(len(holds) + 1))
-    times = np.linspace(0.0, end, points)
+    times = scene.times(end)
+    # the drive at the rim from the scene's module, for hybrid.STARTUP
+    rim = {"m_d": m_d, "m_k": q["m_k"], "c_l": q["c_l"], "b": b, "v0": v0, "beta_1": beta,
+           "q": ratio, "W_f": q["W_f"], "W_w": q["W_w"]}
     # the gap's closed-form speed from the paper's general module (a scene module
     # specialized with t_s as an input takes SymPy minutes in codegen)
     gap_args = {k: q[k] for k in ("lambda_p", "P_m", "J_r", "v_n", "omega_0", "omega_n")}
@@ -174,12 +178,9 @@ def startup_report(scene, module):
     loads, speeds = [], []          # one y scale for each kind, across the cases
     for i, phi in enumerate(gaps):
         s = float(module.startup_backlash_at_rim(phi))
-        model = ThreeMassTravel(m_d, q["m_k"], q["c_l"], b, s, s, v0, slopes, tuple(holds),
-                                q["W_f"], q["W_w"])
-        run = model.run(end)
-        when, peak = model.peak(run)
-        acc = model.step_accelerations(run)
-        x = run.state(times)
+        run = STARTUP.solve({**rim, "s": s}, {"holds": holds, "end": end})
+        when, peak = run.peak("load")
+        acc = run.system.step_accelerations(run.result)
         closing = next((t for t, event, _ in run.events if event.startswith("drive")), None)
         if closing is not None:      # the flank closes: the gap's closed-form speed
             values[f"v_close_{i}"] = float(gen.startup_gap_motor_speed(closing, **gap_args))
@@ -195,12 +196,13 @@ def startup_report(scene, module):
         title = f"backlash {phi:.3g} rad of the fast shaft"
         panels += [
             Panel(f"{tag}: loads, {title}", "load [kN]",
-                  [("$F_1 + F_2$", times, model.load(run, times) / 1e3),
-                   ("$F_1$ (one side)", times, model.link_load(run, times, 0) / 1e3),
+                  [("$F_1 + F_2$", times, run.values("load", times) / 1e3),
+                   ("$F_1$ (one side)", times, run.values("left_link_load", times) / 1e3),
                    ("$W_w + W_f$", times, np.full_like(times, (q["W_w"] + q["W_f"]) / 1e3))],
                   group=tag),
             Panel(f"{tag}: speeds", "speed at the rim [m/s]",
-                  [("motors $v_1$", times, x[:, 1]), ("crane $v_к$", times, x[:, 5]),
+                  [("motors $v_1$", times, run.values("motor_speed", times)),
+                   ("crane $v_к$", times, run.values("crane_speed", times)),
                    ("no-load $v_0$", times, np.full_like(times, v0))], group=tag)]
         loads.append(panels[-2])
         speeds.append(panels[-1])
