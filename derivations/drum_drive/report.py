@@ -152,7 +152,7 @@ def example_report(scene, module):
 
     f_loaded, f_empty = hertz(Mn), hertz(make({**p, "m_L": empty}, load)[3][0])
     duration, method = o["duration"], o["method"]
-    times = np.linspace(0.0, duration, o["points"])
+    times = scene.times()
     implicit = {"jac": jac} if method in ("LSODA", "Radau", "BDF") else {}
     start = clock.perf_counter()
     sol = solve_ivp(rhs, (0.0, duration), np.zeros(12), method=method, t_eval=times,

@@ -85,10 +85,6 @@ def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
     return report
 
 
-def _times(scene: Scene) -> np.ndarray:
-    return np.linspace(0.0, scene.settings["duration"], scene.settings["points"])
-
-
 def fig3(scene: Scene, gen: ModuleType) -> SceneReport:
     """Fig. 3: :math:`K_{дин} = x/x_{ст} = 1 - \\cos\\Omega t` (35)-(38).
 
@@ -97,7 +93,7 @@ def fig3(scene: Scene, gen: ModuleType) -> SceneReport:
     static one) and ``K_at_period``.
     """
     omega = scene.parameters["Omega"]
-    period, times = 2 * math.pi / omega, _times(scene)
+    period, times = 2 * math.pi / omega, scene.times()
     k = gen.dynamic_coefficient_instant(times, omega)
     top = int(np.argmax(k))
     half, full = (float(gen.dynamic_coefficient_instant(x, omega)) for x in (period / 2, period))
@@ -128,7 +124,7 @@ def fig5(scene: Scene, gen: ModuleType) -> SceneReport:
     :math:`1/(\\Omega t_п)`, the amplitude (40) gives it.
     """
     omega, t_n = scene.parameters["Omega"], scene.parameters["t_n"]
-    period, times = 2 * math.pi / omega, _times(scene)
+    period, times = 2 * math.pi / omega, scene.times()
     k = gen.dynamic_coefficient_ramp(times, omega, t_n)
     static = times / t_n
     values = {"K_at_t_n": float(gen.dynamic_coefficient_ramp(t_n, omega, t_n)),
@@ -275,7 +271,7 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
     (guaranteed max of (65), t in units of t_п) and, where the paper states
     one, ``paper_ktilde_max_a{i}``; ``certified`` (1.0 when every maximum is).
     """
-    q, times = scene.parameters, _times(scene)
+    q, times = scene.parameters, scene.times()
     found, printed = maxima(scene), _printed_maxima()
     values: dict[str, float] = {}
     by_case: dict[str, list[Panel]] = {case: [] for case in CASES}

@@ -42,7 +42,7 @@ def scene_report(scene, module):
     q = scene.parameters
     rigid = {k: q[k] for k in ("m1", "m2", "P_t", "W")}
     duration = scene.settings["duration"]
-    times = np.linspace(0.0, duration, scene.settings["points"])
+    times = scene.times()
     force, vel1, vel2 = (time_function(scene, module, name)(times)
                          for name in ("elastic_force", "velocity_m1", "velocity_m2"))
 
