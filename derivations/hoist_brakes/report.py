@@ -9,8 +9,10 @@ from SymPy.
 """
 from __future__ import annotations
 
+from crane_sym.scenes.kinds import SceneKind, report_for
 
-def scene_report(scene, module):
+
+def hoist_report(scene, module):
     """Numbers and figures of a scene (see ``crane_sym.scenes.reading``) for this model.
 
     Parameters
@@ -120,3 +122,13 @@ def scene_report(scene, module):
         f"{fq(100 * sb[-1], '%')}",
     ]
     return SceneReport(lines=lines, values=values, panels=[fig5] + fig8 + [fig9] + figs)
+
+
+#: The kinds of scene of paper 001: one, the Table 1 hoist and its figures.
+REPORTS = (SceneKind("emergency stop of a hoist (Figs 5, 8, 9, 11, 12)", hoist_report),)
+
+
+def scene_report(scene, module):
+    """Numbers and figures of a scene of paper 001: the report of its kind
+    (``REPORTS``; one kind, :func:`hoist_report`)."""
+    return report_for(REPORTS, scene, module)

@@ -1,13 +1,18 @@
 """What ``crane-sym run`` prints and plots for a scene of paper 003.
 
-Four kinds of scene, told apart by the outputs they name: Fig. 10 (the shift
-limits against the tooth number), a gear pair checked like Form 1, the support
-loads with Table 3's exceedance probabilities, and the start-up with backlash
-(Fig. 12, Table 1; phases in closed form by ``startup.py``, run through
-``hybrid.STARTUP``). Numbers come from the
-scene's generated module, never from SymPy. Imports happen only when run.
+Four kinds of scene (``REPORTS``), told apart by the outputs they name: Fig. 10
+(the shift limits against the tooth number), a gear pair checked like Form 1,
+the support loads with Table 3's exceedance probabilities, and the start-up
+with backlash (Fig. 12, Table 1; phases in closed form by ``startup.py``, run
+through ``hybrid.STARTUP``). Numbers come from the scene's generated module,
+never from SymPy; the reports import NumPy and the generated modules only
+when run.
 """
 from __future__ import annotations
+
+from crane_sym.scenes.kinds import SceneKind, report_for
+
+from .options import FIG10_SCENES, PAIR_SCENES, STARTUP_SCENES
 
 
 def fig10_report(scene, module):
@@ -215,12 +220,17 @@ def startup_report(scene, module):
     return SceneReport(lines=lines, values=values, panels=panels)
 
 
+#: The kinds of scene of paper 003, by the outputs that mark them (``options.py``).
+REPORTS = (
+    SceneKind("start-up with backlash (Fig. 12, Table 1)", startup_report,
+              outputs=STARTUP_SCENES),
+    SceneKind("shift limits (Fig. 10)", fig10_report, outputs=FIG10_SCENES),
+    SceneKind("gear pair (Form 1)", gear_pair_report, outputs=PAIR_SCENES),
+    SceneKind("support loads ((3)-(4), Table 3)", support_report),
+)
+
+
 def scene_report(scene, module):
-    """Numbers and panels of a scene of paper 003 (see the module docstring)."""
-    if "startup_motor_mass" in scene.outputs:
-        return startup_report(scene, module)
-    if "pointed_tip_shift" in scene.outputs:
-        return fig10_report(scene, module)
-    if "contact_ratio" in scene.outputs:
-        return gear_pair_report(scene, module)
-    return support_report(scene, module)
+    """Numbers and panels of a scene of paper 003: the report of its kind
+    (``REPORTS``, see the module docstring)."""
+    return report_for(REPORTS, scene, module)

@@ -6,8 +6,10 @@ never from SymPy. Imports happen only when a scene is run.
 """
 from __future__ import annotations
 
+from crane_sym.scenes.kinds import SceneKind, report_for
 
-def scene_report(scene, module):
+
+def braking_report(scene, module):
     """Numbers and curves of a scene (see ``crane_sym.scenes.reading``) for this model.
 
     Uses the generated NumPy modules, not SymPy.
@@ -124,3 +126,13 @@ def scene_report(scene, module):
         ], invalid=invalid),
     ]
     return SceneReport(lines=lines, values=values, panels=panels)
+
+
+#: The kinds of scene of paper 000: one, a crane braking its travel.
+REPORTS = (SceneKind("braking the travel of a crane", braking_report),)
+
+
+def scene_report(scene, module):
+    """Numbers and curves of a scene of paper 000: the report of its kind
+    (``REPORTS``; one kind, :func:`braking_report`)."""
+    return report_for(REPORTS, scene, module)
