@@ -42,7 +42,7 @@ from .hard_cases import hard_cases
 from .hybrid import HYBRID_MODELS
 from .model import AUTHORS, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .options import SCENE_CHECKS, SCENE_OPTIONS
-from .outputs import outputs
+from .outputs import outputs, tabulated
 from .published import PUBLISHED
 from .published_loads import PUBLISHED_LOADS
 from .report import scene_report
@@ -67,4 +67,5 @@ def build() -> Derivation:
     steps_startup.table1_model(d)
     d.published.extend(PUBLISHED + PUBLISHED_LOADS)
     d.outputs.extend(outputs(d))
+    d.tabulated.extend(tabulated())
     return d

@@ -4,12 +4,13 @@ drive with backlash in both drives (Fig. 11, Fig. 12, Table 1).
 
 The system itself (modes, guards, switching) is ``startup.ThreeMassTravel``;
 this module says how a scene's values build its run and which outputs it
-has. The values are the drive at the wheel rim (what the scene's generated
-module computes from the scene's parameters, ``outputs.startup_outputs``), so
-the report runs the model on the module's numbers: ``m_d``, ``b``, ``v0``,
+has. The values are the drive at the wheel rim: ``m_d``, ``b``, ``v0``,
 ``beta_1``, ``q`` and the backlash ``s`` at the rim, with the scene's ``m_k``,
-``c_l``, ``W_f``, ``W_w``. The scene report reaches it only through
-``HYBRID_MODELS``.
+``c_l``, ``W_f``, ``W_w``. A start-up scene's module tabulates its curves, one
+run per backlash of the scene (:func:`scene_runs`, the rim quantities from
+``startup.reduced``); the report takes its numbers from the same model run in
+double on the rim quantities of the scene's module (``outputs.startup_outputs``).
+Scenes, and through them the bench, reach it only through ``HYBRID_MODELS``.
 """
 from __future__ import annotations
 
@@ -22,9 +23,9 @@ import numpy as np
 from crane_sym.mechanics.hybrid_models import HybridModel, HybridOutput
 from crane_sym.mechanics.phase_table import Affine, HybridRun
 
-from .startup import ThreeMassTravel, drive
+from .startup import ThreeMassTravel, drive, reduced
 
-__all__ = ["HYBRID_MODELS", "STARTUP"]
+__all__ = ["HYBRID_MODELS", "STARTUP", "rim_values", "scene_runs"]
 
 
 def _start_up(values: Mapping[str, float], settings: Mapping[str, Any]) -> HybridRun:
@@ -70,3 +71,21 @@ STARTUP = HybridModel(
 
 #: The paper's piecewise-linear models, by name.
 HYBRID_MODELS = {STARTUP.name: STARTUP}
+
+
+def rim_values(parameters: Mapping[str, float], phi_b: float) -> dict[str, float]:
+    """STARTUP's values from a scene's parameters (Table 1's chosen names,
+    ``startup.CHOSEN``) and the backlash ``phi_b`` of the fast shaft [rad]: the
+    rim quantities of ``startup.reduced`` with ``m_k``, ``c_l``, ``W_f``, ``W_w``."""
+    return {**reduced(parameters, phi_b),
+            **{k: parameters[k] for k in ("m_k", "c_l", "W_f", "W_w")}}
+
+
+def scene_runs(output: str, parameters: Mapping[str, float],
+               settings: Mapping[str, Any]) -> tuple[HybridRun, ...]:
+    """One run of STARTUP with the output ``output`` per backlash of a start-up
+    scene's setting ``backlash``, start steps held for ``holds``, up to ``end``:
+    what the scene's module tabulates (``outputs.tabulated``)."""
+    timing = {"holds": tuple(settings["holds"]), "end": settings["end"][0]}
+    return tuple(STARTUP.run(rim_values(parameters, phi), timing, output)
+                 for phi in settings["backlash"])

@@ -27,6 +27,9 @@ from .model import SYMBOLS
 #: ``report.REPORTS``).
 FIG10_SCENES, PAIR_SCENES = ("pointed_tip_shift",), ("contact_ratio",)
 SUPPORT_SCENES, STARTUP_SCENES = ("max_support_load",), ("startup_motor_mass",)
+#: The tabulated curves a start-up scene's report plots (``outputs.tabulated``).
+STARTUP_CURVES = ("startup_load", "startup_link_load", "startup_motor_speed",
+                  "startup_crane_speed")
 #: The report draws R_max for reaches from this share of the largest one.
 REACH_FROM = 0.3
 _Z, _REACH, _GAP = (SYMBOLS[n].serves for n in ("z", "L_max", "phi_b"))
@@ -117,6 +120,10 @@ def _startup(scene) -> str | None:
     if not o["end"][0] > sum(o["holds"]):
         return (f"[options] end = {o['end'][0]:g} s must exceed the sum of the holds, "
                 f"{sum(o['holds']):g} s")
+    curves = [n for n in STARTUP_CURVES if n not in scene.outputs]
+    if curves:
+        return (f"the start-up's curves come from the scene's module: add {curves} to "
+                "[scene] outputs")
     return None
 
 
@@ -125,5 +132,6 @@ SCENE_CHECKS = (
     SceneCheck("z_min < z_max", _tooth_range, outputs=FIG10_SCENES),
     SceneCheck("a centre distance the mesh can have, tips outside the base circle, no "
                "undercut when forbidden", _gear_pair, outputs=PAIR_SCENES),
-    SceneCheck("omega_0 > omega_n; end > the sum of the holds", _startup, outputs=STARTUP_SCENES),
+    SceneCheck("omega_0 > omega_n; end > the sum of the holds; the curves tabulated",
+               _startup, outputs=STARTUP_SCENES),
 )

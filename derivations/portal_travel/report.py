@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from crane_sym.scenes.kinds import SceneKind, report_for
 
-from .options import FIG10_SCENES, PAIR_SCENES, STARTUP_SCENES
+from .options import FIG10_SCENES, PAIR_SCENES, STARTUP_SCENES, SUPPORT_SCENES
 
 
 def fig10_report(scene, module):
@@ -150,7 +150,10 @@ def support_report(scene, module):
 
 def startup_report(scene, module):
     """Fig. 12 and Table 1: the start-up for each backlash of the setting ``backlash``,
-    start steps held for the setting ``holds``; loads and speeds up to ``end``."""
+    start steps held for the setting ``holds``; loads and speeds up to ``end``
+    from the tables of the scene's module (``startup_load_<k>``, ...), F_max,
+    its time, the step accelerations and the closing of the flank from
+    ``hybrid.STARTUP`` run on the module's rim quantities."""
     import numpy as np
 
     from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
@@ -166,7 +169,12 @@ def startup_report(scene, module):
     v0, ratio = float(module.startup_no_load_speed()), float(module.startup_slope_ratio())
     beta = float(module.startup_first_slope())
     times = scene.times(end)
-    # the drive at the rim from the scene's module, for hybrid.STARTUP
+    # the curves from the scene's module (tabulated per backlash); the numbers
+    # from hybrid.STARTUP run here on the drive at the rim of the scene's module
+
+    def curve(name: str, case: int) -> np.ndarray:
+        return getattr(module, f"{name}_{case}")(times)
+
     rim = {"m_d": m_d, "m_k": q["m_k"], "c_l": q["c_l"], "b": b, "v0": v0, "beta_1": beta,
            "q": ratio, "W_f": q["W_f"], "W_w": q["W_w"]}
     # the gap's closed-form speed from the paper's general module (a scene module
@@ -201,13 +209,13 @@ def startup_report(scene, module):
         title = f"backlash {phi:.3g} rad of the fast shaft"
         panels += [
             Panel(f"{tag}: loads, {title}", "load [kN]",
-                  [("$F_1 + F_2$", times, run.values("load", times) / 1e3),
-                   ("$F_1$ (one side)", times, run.values("left_link_load", times) / 1e3),
+                  [("$F_1 + F_2$", times, curve("startup_load", i) / 1e3),
+                   ("$F_1$ (one side)", times, curve("startup_link_load", i) / 1e3),
                    ("$W_w + W_f$", times, np.full_like(times, (q["W_w"] + q["W_f"]) / 1e3))],
                   group=tag),
             Panel(f"{tag}: speeds", "speed at the rim [m/s]",
-                  [("motors $v_1$", times, run.values("motor_speed", times)),
-                   ("crane $v_к$", times, run.values("crane_speed", times)),
+                  [("motors $v_1$", times, curve("startup_motor_speed", i)),
+                   ("crane $v_к$", times, curve("startup_crane_speed", i)),
                    ("no-load $v_0$", times, np.full_like(times, v0))], group=tag)]
         loads.append(panels[-2])
         speeds.append(panels[-1])
@@ -220,13 +228,14 @@ def startup_report(scene, module):
     return SceneReport(lines=lines, values=values, panels=panels)
 
 
-#: The kinds of scene of paper 003, by the outputs that mark them (``options.py``).
+#: The kinds of scene of paper 003, by the outputs that mark them (``options.py``;
+#: its SCENE_CHECKS refuse a scene of none).
 REPORTS = (
     SceneKind("start-up with backlash (Fig. 12, Table 1)", startup_report,
               outputs=STARTUP_SCENES),
     SceneKind("shift limits (Fig. 10)", fig10_report, outputs=FIG10_SCENES),
     SceneKind("gear pair (Form 1)", gear_pair_report, outputs=PAIR_SCENES),
-    SceneKind("support loads ((3)-(4), Table 3)", support_report),
+    SceneKind("support loads ((3)-(4), Table 3)", support_report, outputs=SUPPORT_SCENES),
 )
 
 
