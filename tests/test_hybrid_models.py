@@ -157,3 +157,48 @@ def test_kind_rules():
     assert kind_of((marked, loaded, rest), with_load) is loaded
     with pytest.raises(ValueError, match="none of the kinds"):
         kind_of((marked, rest), SimpleNamespace(name="s", outputs=(), load_table="other"))
+
+
+def test_portal_scene_tabulates_one_run_per_backlash(tmp_path):
+    """003's start-up scene carries each curve per backlash of its settings
+    (<name>_<k>), the tables of hybrid.STARTUP's runs; they agree with the
+    double run on the scene module's own rim quantities to ~1e-10 of the peak."""
+    from crane_sym.derivations.portal_travel.hybrid import STARTUP, scene_runs
+    from crane_sym.derivations.portal_travel.options import STARTUP_CURVES
+    from crane_sym.scenes.run import import_module_file
+    from crane_sym.scenes.specialize import module_name, render_scene_module, tabulated_runs
+    scene = load_scene("fig12_startup_backlash")
+    assert set(STARTUP_CURVES) <= set(scene.outputs)
+    runs = tabulated_runs(registry.get("portal_travel"), scene)
+    gaps = scene.settings["backlash"]
+    assert [out.name for out, _ in runs] == [f"{name}_{k}" for name in STARTUP_CURVES
+                                             for k in range(len(gaps))]
+    assert len(scene_runs("load", scene.parameters, scene.settings)) == len(gaps)
+    path = tmp_path / module_name(scene)
+    path.write_text(render_scene_module(scene), encoding="utf-8")
+    module = import_module_file(path)
+    q, end = scene.parameters, scene.settings["end"][0]
+    rim = {"m_d": float(module.startup_motor_mass()), "m_k": q["m_k"], "c_l": q["c_l"],
+           "b": float(module.startup_link_damping()),
+           "v0": float(module.startup_no_load_speed()),
+           "beta_1": float(module.startup_first_slope()),
+           "q": float(module.startup_slope_ratio()), "W_f": q["W_f"], "W_w": q["W_w"]}
+    times = scene.times(end)
+    for k, phi in enumerate(gaps):
+        s = float(module.startup_backlash_at_rim(phi))
+        solved = STARTUP.solve({**rim, "s": s}, {"holds": scene.settings["holds"], "end": end})
+        for output, name in zip(STARTUP.outputs, STARTUP_CURVES):
+            ref = solved.values(output, times)
+            got = getattr(module, f"{name}_{k}")(times)
+            assert np.max(np.abs(got - ref)) < 1e-10 * np.max(np.abs(ref)), (name, k)
+
+
+def test_startup_scene_without_its_curves_is_refused(tmp_path):
+    from crane_sym.scenes.reading import SceneError, scene_path
+    text = scene_path("fig12_startup_backlash").read_text(encoding="utf-8")
+    short = text.replace('"startup_load", ', "")
+    assert short != text
+    path = tmp_path / "short.toml"
+    path.write_text(short, encoding="utf-8")
+    with pytest.raises(SceneError, match="startup_load"):
+        load_scene(path)
