@@ -12,6 +12,9 @@ State x = (θ_m, ω_m, θ_d, ω_d); twist u = θ_d − θ_m. Contact: u ≥ 0 th
 holding flank (the drum drives the motor, torque c·u), −s < u < 0 the gap (no
 torque), u ≤ −s the other flank (torque c·(u + s)). The relative gearbox torque
 is the flank torque over the rated static torque M_st (the paper's M_G,rel).
+
+Fig. 9's steps build the hoist here (:func:`fig9_peak`); scenes, sweeps and
+the bench reach it through ``hybrid.py`` (``EMERGENCY_STOP``).
 """
 from __future__ import annotations
 
