@@ -87,11 +87,14 @@ class TabulatedOutput:
 
     A piecewise-linear run (backlash, brakes that stick) has phases whose
     number and ends depend on the data, so it has no one expression in the
-    parameters. A scene fixes the data: ``run(values, options)`` (SI values by
-    name, the scene's options) returns the ``crane_sym.mechanics.phase_table.HybridRun``,
+    parameters. A scene fixes the data: ``run(values, settings)`` (SI values by
+    name, the scene's settings) returns the ``crane_sym.mechanics.phase_table.HybridRun``,
     whose table (the phases in closed form) the scene's module carries as
-    arrays. ``args`` are the parameters it needs; the generated function takes
-    time only.
+    arrays; or a tuple of runs, one per case the scene's settings list (003's
+    backlash values), and the module carries ``<name>_<k>`` for case k. A
+    paper's ``run`` is its hybrid model's (``hybrid.py``,
+    ``HybridModel.runner``). ``args`` are the parameters it needs; the
+    generated function takes time only.
     """
 
     name: str

@@ -2,9 +2,9 @@
 
 Source: crane_sym.derivations.portal_travel (paper 003_5e8a923a75d2f7ba.txt:
 Travel mechanisms of rail-mounted portal cranes: gear geometry, start-up with backlash and support loads).
-Specialized to scene 'fig12_startup_backlash' (Paper 003, Fig. 12 / Table 1: start-up of the travel drive with backlash): outputs startup_motor_mass, startup_rated_force, startup_no_load_speed, startup_backlash_at_rim, startup_first_slope, startup_slope_ratio, startup_link_damping, startup_rigid_breakaway; folded in: J_r = 0.225 kg*m^2, n_m = 2.0 1, omega_n = 97.91297103688188 rad/s, omega_0 = 104.71975511965977 rad/s, v_n = 0.5333333333333333 m/s, P_m = 13000.0 W, lambda_p = 2.0 1, c_l = 5000000.0 N/m, zeta = 0.05 1, m_k = 250000.0 kg, W_f = 30000.0 N, W_w = 30000.0 N.
+Specialized to scene 'fig12_startup_backlash' (Paper 003, Fig. 12 / Table 1: start-up of the travel drive with backlash): outputs startup_motor_mass, startup_rated_force, startup_no_load_speed, startup_backlash_at_rim, startup_first_slope, startup_slope_ratio, startup_link_damping, startup_rigid_breakaway, startup_load, startup_link_load, startup_motor_speed, startup_crane_speed; folded in: J_r = 0.225 kg*m^2, n_m = 2.0 1, omega_n = 97.91297103688188 rad/s, omega_0 = 104.71975511965977 rad/s, v_n = 0.5333333333333333 m/s, P_m = 13000.0 W, lambda_p = 2.0 1, c_l = 5000000.0 N/m, zeta = 0.05 1, m_k = 250000.0 kg, W_f = 30000.0 N, W_w = 30000.0 N.
 Inputs left as arguments: phi_b.
-Equations: start-up, rated force, start-up, slope ratio, start-up, link damping, start-up, no-load speed, start-up, rigid break-away, start-up, backlash at the rim, start-up, first characteristic, start-up, motor mass at the rim.
+Equations: Fig. 12, start-up, rated force, start-up, slope ratio, start-up, link damping, start-up, no-load speed, start-up, rigid break-away, start-up, backlash at the rim, start-up, first characteristic, start-up, motor mass at the rim.
 Printed by SymPy 1.14.0 with crane_sym 0.1.0; regenerate with `crane-sym generate --scene fig12_startup_backlash --out <folder>`.
 
 Functions and argument order:
@@ -16,11 +16,23 @@ Functions and argument order:
     startup_slope_ratio() -> [1]    eq start-up, slope ratio
     startup_link_damping() -> [N*s/m]    eq start-up, link damping
     startup_rigid_breakaway() -> [m/s^2]    eq start-up, rigid break-away
+    startup_load_0(t) -> [N]    eq Fig. 12
+    startup_load_1(t) -> [N]    eq Fig. 12
+    startup_load_2(t) -> [N]    eq Fig. 12
+    startup_link_load_0(t) -> [N]    eq Fig. 12
+    startup_link_load_1(t) -> [N]    eq Fig. 12
+    startup_link_load_2(t) -> [N]    eq Fig. 12
+    startup_motor_speed_0(t) -> [m/s]    eq Fig. 12
+    startup_motor_speed_1(t) -> [m/s]    eq Fig. 12
+    startup_motor_speed_2(t) -> [m/s]    eq Fig. 12
+    startup_crane_speed_0(t) -> [m/s]    eq Fig. 12
+    startup_crane_speed_1(t) -> [m/s]    eq Fig. 12
+    startup_crane_speed_2(t) -> [m/s]    eq Fig. 12
 """
 
 import numpy as np
 
-__all__ = ['startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway']
+__all__ = ['startup_motor_mass', 'startup_rated_force', 'startup_no_load_speed', 'startup_backlash_at_rim', 'startup_first_slope', 'startup_slope_ratio', 'startup_link_damping', 'startup_rigid_breakaway', 'startup_load_0', 'startup_load_1', 'startup_load_2', 'startup_link_load_0', 'startup_link_load_1', 'startup_link_load_2', 'startup_motor_speed_0', 'startup_motor_speed_1', 'startup_motor_speed_2', 'startup_crane_speed_0', 'startup_crane_speed_1', 'startup_crane_speed_2']
 
 SCENE_NAME = 'fig12_startup_backlash'
 SCENE_TITLE = 'Paper 003, Fig. 12 / Table 1: start-up of the travel drive with backlash'
@@ -94,6 +106,41 @@ def _into(out, shape, result):
     out = _out(out, shape)
     np.copyto(out, result)
     return out
+
+
+def _phase_sum(t, edges, first, powers, sigmas, omegas, cos_amps, sin_amps, consts):
+    """A piecewise closed form tabulated per phase, at times ``t``.
+
+    Phase i holds on [edges[i], edges[i + 1]) with τ = t − edges[i] and its
+    terms j = first[i] … first[i + 1] − 1:
+    consts[i] + Σ_j τ^k_j e^{σ_j τ} (a_j cos ω_j τ + b_j sin ω_j τ).
+    Each phase is evaluated on its own points only (one partition of t).
+    """
+    flat = t.ravel()
+    which = np.searchsorted(edges, flat, side="right") - 1
+    np.clip(which, 0, consts.size - 1, out=which)
+    order = np.argsort(which, kind="stable")
+    cuts = np.searchsorted(which[order], np.arange(consts.size + 1))
+    result = np.empty(flat.shape)
+    for i in range(consts.size):
+        points = order[cuts[i]:cuts[i + 1]]
+        if not points.size:
+            continue
+        tau = flat[points] - edges[i]
+        acc = np.full(tau.shape, consts[i])
+        for j in range(first[i], first[i + 1]):
+            if omegas[j]:
+                angle = omegas[j] * tau
+                term = cos_amps[j] * np.cos(angle) + sin_amps[j] * np.sin(angle)
+            else:
+                term = np.full(tau.shape, cos_amps[j])
+            if sigmas[j]:
+                term *= np.exp(sigmas[j] * tau)
+            if powers[j]:
+                term *= tau ** powers[j]
+            acc += term
+        result[points] = acc
+    return result.reshape(t.shape)
 
 
 def startup_motor_mass(*, out=None):
@@ -247,3 +294,628 @@ def startup_rigid_breakaway(*, out=None):
     """
     shape = _broadcast()
     return _into(out, shape, 428174307811787961016312352740501104533438464000/889123641937180962904536525710016352701607640677)
+
+
+_TABLE_STARTUP_LOAD_0 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.04406711170105, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 1, 3, 5, 7, 9], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.542810601667, -6.021485671952, -1.262954044262, -10.72334838299, -2.836419353872,
+              -36.97859625199, -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([16.93687928793, 17.90756986958, 0.0, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0,
+              6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-195000.0, -122063.2145903, 122063.2145903, -201059.0619353, 265546.4364422,
+              22226.64420559, 5233.263103537, 1391.38752209, -5700.964300792]),
+    # sin_amps: sine amplitudes
+    np.array([-54425.14736461, 82420.28184104, 0.0, -69444.97704176, 0.0, 0.0, 177519.1524603,
+              0.0, 34882.44205153]),
+    # consts: constant of each phase
+    np.array([195000.0, 60000.0, 60000.0, 60000.0, 60000.0]),
+)
+
+
+def startup_load_0(t, *, out=None):
+    """Force F1 + F2 of both links on the crane during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 0 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 5 phases, each in closed form; they end at
+    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
+    end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_LOAD_0))
+
+
+_TABLE_STARTUP_LOAD_1 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.0844912363767, 0.0844912364767, 0.09568110932053, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 0, 1, 2, 4, 6, 8, 10], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.542810601667, -6.542810601667, -6.021485671952, -1.262954044262, -10.72334838299,
+              -2.836419353872, -36.97859625199, -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([16.93687928793, 16.93687928793, 17.90756986958, 0.0, 14.09770770106, 0.0, 0.0,
+              5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-87853.52769035, -175707.0550185, -116220.4202539, 116220.4202539, -224780.8878054,
+              270957.3675154, 22392.53688292, 5628.563583048, 1390.328263955, -5739.040162767]),
+    # sin_amps: sine amplitudes
+    np.array([72473.28252715, 144946.5652752, 172668.3390622, 0.0, -85715.28498071, 0.0, 0.0,
+              178928.8828795, 0.0, 34862.90021577]),
+    # consts: constant of each phase
+    np.array([0.0, 97500.0, 195000.0, 60000.0, 60000.0, 60000.0, 60000.0]),
+)
+
+
+def startup_load_1(t, *, out=None):
+    """Force F1 + F2 of both links on the crane during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 1 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_LOAD_1))
+
+
+_TABLE_STARTUP_LOAD_2 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.1276884291522, 0.1276884292522, 0.1359313988648, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 0, 1, 2, 4, 6, 8, 10], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.542810601667, -6.542810601667, -6.021485671952, -1.262954044262, -10.72334838299,
+              -2.836419353872, -36.97859625199, -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([16.93687928793, 16.93687928793, 17.90756986958, 0.0, 14.09770770106, 0.0, 0.0,
+              5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-85517.25560077, -171034.5107602, -113679.0086051, 113679.0086051, -240320.0165795,
+              278172.4426528, 22613.29953095, 6160.006581035, 1388.914462582, -5789.8326989]),
+    # sin_amps: sine amplitudes
+    np.array([96616.12730111, 193232.254788, 211923.0946982, 0.0, -124310.0352419, 0.0, 0.0,
+              180807.074721, 0.0, 34836.92893804]),
+    # consts: constant of each phase
+    np.array([0.0, 97500.0, 195000.0, 60000.0, 60000.0, 60000.0, 60000.0]),
+)
+
+
+def startup_load_2(t, *, out=None):
+    """Force F1 + F2 of both links on the crane during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 2 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_LOAD_2))
+
+
+_TABLE_STARTUP_LINK_LOAD_0 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.04406711170105, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 1, 3, 5, 7, 9], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.542810601667, -6.021485671952, -1.262954044262, -10.72334838299, -2.836419353872,
+              -36.97859625199, -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([16.93687928793, 17.90756986958, 0.0, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0,
+              6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-97500.0, -61031.60729515, 61031.60729515, -100529.5309677, 132773.2182211,
+              11113.3221028, 2616.631551769, 695.693761045, -2850.482150396]),
+    # sin_amps: sine amplitudes
+    np.array([-27212.5736823, 41210.14092052, 0.0, -34722.48852088, 0.0, 0.0, 88759.57623017, 0.0,
+              17441.22102577]),
+    # consts: constant of each phase
+    np.array([97500.0, 30000.0, 30000.0, 30000.0, 30000.0]),
+)
+
+
+def startup_link_load_0(t, *, out=None):
+    """Force F1 of one link (one side) during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 0 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 5 phases, each in closed form; they end at
+    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
+    end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_LINK_LOAD_0))
+
+
+_TABLE_STARTUP_LINK_LOAD_1 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.0844912363767, 0.0844912364767, 0.09568110932053, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 0, 1, 2, 5, 8, 10, 12], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.542810601667, -6.542810601667, -6.542810601667, -6.021485671952, -1.262954044262,
+              -12.03140596751, -10.72334838299, -2.836419353872, -36.97859625199, -4.486873609035,
+              -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([16.93687928793, 16.93687928793, 16.93687928793, 17.90756986958, 0.0, 13.59821756805,
+              14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-87853.52769035, -87853.52751012, -2.383871847109e-06, -58110.21012697,
+              58110.21012697, 8.614905125117e-07, -112390.4439027, 135478.6837577, 11196.26844146,
+              2814.281791524, 695.1641319773, -2869.520081384]),
+    # sin_amps: sine amplitudes
+    np.array([72473.28252715, 72473.28262853, -8.107008064316e-06, 86334.1695311, 0.0,
+              -5.273847294668e-07, -42857.64249035, 0.0, 0.0, 89464.44143975, 0.0, 17431.45010788]),
+    # consts: constant of each phase
+    np.array([0.0, 97500.0, 97500.0, 30000.0, 30000.0, 30000.0, 30000.0]),
+)
+
+
+def startup_link_load_1(t, *, out=None):
+    """Force F1 of one link (one side) during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 1 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_LINK_LOAD_1))
+
+
+_TABLE_STARTUP_LINK_LOAD_2 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.1276884291522, 0.1276884292522, 0.1359313988648, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 0, 1, 2, 5, 8, 10, 12], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.542810601667, -6.542810601667, -6.542810601667, -6.021485671952, -1.262954044262,
+              -12.03140596751, -10.72334838299, -2.836419353872, -36.97859625199, -4.486873609035,
+              -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([16.93687928793, 16.93687928793, 16.93687928793, 17.90756986958, 0.0, 13.59821756805,
+              14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-85517.25560077, -85517.25538118, -2.502908313217e-06, -56839.50430255,
+              56839.50430255, 1.901403326385e-06, -120160.0082897, 139086.2213264, 11306.64976548,
+              3080.003290518, 694.4572312911, -2894.91634945]),
+    # sin_amps: sine amplitudes
+    np.array([96616.12730111, 96616.12738274, -1.040431911234e-05, 105961.5473491, 0.0,
+              8.185091449878e-07, -62155.01762094, 0.0, 0.0, 90403.53736049, 0.0, 17418.46446902]),
+    # consts: constant of each phase
+    np.array([0.0, 97500.0, 97500.0, 30000.0, 30000.0, 30000.0, 30000.0]),
+)
+
+
+def startup_link_load_2(t, *, out=None):
+    """Force F1 of one link (one side) during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 2 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [N], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_LINK_LOAD_2))
+
+
+_TABLE_STARTUP_MOTOR_SPEED_0 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.04406711170105, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 1, 3, 5, 7, 9], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.542810601667, -6.021485671952, -1.262954044262, -10.72334838299, -2.836419353872,
+              -36.97859625199, -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([16.93687928793, 17.90756986958, 0.0, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0,
+              6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-9.214337082542e-43, 0.2003773020809, -0.4021199080758, 0.1330373605647,
+              -0.4509966274976, -0.1056156761672, 0.01505354071083, -0.02211546824409,
+              0.003177529231606]),
+    # sin_amps: sine amplitudes
+    np.array([0.3795558660533, 0.1659822723428, 0.0, 0.3614164743081, 0.0, 0.0, -0.146424626445,
+              0.0, -0.01335932480694]),
+    # consts: constant of each phase
+    np.array([-3.712762634894e-42, 0.3948992184286, 0.4814997917942, 0.525369884435,
+              0.5475935828877]),
+)
+
+
+def startup_motor_speed_0(t, *, out=None):
+    """Speed v1 of one side's motors at the wheel rim during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 0 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 5 phases, each in closed form; they end at
+    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
+    end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_MOTOR_SPEED_0))
+
+
+_TABLE_STARTUP_MOTOR_SPEED_1 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.0844912363767, 0.0844912364767, 0.09568110932053, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 1, 2, 3, 6, 9, 11, 13], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-11.26994983829, -6.542810601667, -6.542810601667, -6.542810601667, -6.021485671952,
+              -1.262954044262, -12.03140596751, -10.72334838299, -2.836419353872, -36.97859625199,
+              -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([0.0, 16.93687928793, 16.93687928793, 16.93687928793, 17.90756986958, 0.0,
+              13.59821756805, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-0.5704099821747, 0.3502964709259, 0.3502964711103, -2.687590338647e-11,
+              0.3504722805798, -0.3828716527408, -3.640517076191e-12, 0.1374115912425,
+              -0.4601864012272, -0.1064039583354, 0.01488244237908, -0.02209863182053,
+              0.003191741855466]),
+    # sin_amps: sine amplitudes
+    np.array([0.0, 0.2442343924372, 0.2442343916842, 1.678128250946e-11, 0.1112352947507, 0.0,
+              -1.44212379823e-12, 0.4133129123221, 0.0, 0.0, -0.147625991602, 0.0,
+              -0.01335069504317]),
+    # consts: constant of each phase
+    np.array([0.5704099821747, -4.709919151398e-42, -4.70991914991e-42, 0.3948992184286,
+              0.4814997917942, 0.525369884435, 0.5475935828877]),
+)
+
+
+def startup_motor_speed_1(t, *, out=None):
+    """Speed v1 of one side's motors at the wheel rim during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 1 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_MOTOR_SPEED_1))
+
+
+_TABLE_STARTUP_MOTOR_SPEED_2 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.1276884291522, 0.1276884292522, 0.1359313988648, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 1, 2, 3, 6, 9, 11, 13], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-11.26994983829, -6.542810601667, -6.542810601667, -6.542810601667, -6.021485671952,
+              -1.262954044262, -12.03140596751, -10.72334838299, -2.836419353872, -36.97859625199,
+              -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([0.0, 16.93687928793, 16.93687928793, 16.93687928793, 17.90756986958, 0.0,
+              13.59821756805, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-0.5704099821747, 0.4351345176058, 0.4351345176793, -3.505275996387e-11,
+              0.4157583585807, -0.3744993333484, -1.890423993655e-12, 0.1011154553402,
+              -0.4724402826867, -0.107452969429, 0.01465055815356, -0.02207616009439,
+              0.003210703945853]),
+    # sin_amps: sine amplitudes
+    np.array([0.0, 0.2114609834871, 0.2114609826118, 1.952686508472e-11, 0.08742226992377, 0.0,
+              -7.799083280955e-12, 0.479319512763, 0.0, 0.0, -0.1492270985519, 0.0,
+              -0.01333922075183]),
+    # consts: constant of each phase
+    np.array([0.5704099821747, -3.694750246668e-42, -3.69475024482e-42, 0.3948992184286,
+              0.4814997917942, 0.525369884435, 0.5475935828877]),
+)
+
+
+def startup_motor_speed_2(t, *, out=None):
+    """Speed v1 of one side's motors at the wheel rim during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 2 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_MOTOR_SPEED_2))
+
+
+_TABLE_STARTUP_CRANE_SPEED_0 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.04406711170105, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 0, 2, 4, 6, 8], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.021485671952, -1.262954044262, -10.72334838299, -2.836419353872, -36.97859625199,
+              -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([17.90756986958, 0.0, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-0.008303316084088, -0.3865959023445, 0.03997049393671, -0.374481207907,
+              -0.002404271276728, -0.08018084420159, -6.577277635924e-05, -0.01949894877428]),
+    # sin_amps: sine amplitudes
+    np.array([-0.03005718593372, 0.0, -0.02664395688878, 0.0, 0.0, -0.06476220100986, 0.0,
+              -0.01037061948387]),
+    # consts: constant of each phase
+    np.array([0.0, 0.3948992184286, 0.4814997917942, 0.525369884435, 0.5475935828877]),
+)
+
+
+def startup_crane_speed_0(t, *, out=None):
+    """Speed v_k of the crane during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 0 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 5 phases, each in closed form; they end at
+    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
+    end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_CRANE_SPEED_0))
+
+
+_TABLE_STARTUP_CRANE_SPEED_1 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.0844912363767, 0.0844912364767, 0.09568110932053, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 0, 0, 0, 2, 4, 6, 8], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.021485671952, -1.262954044262, -10.72334838299, -2.836419353872, -36.97859625199,
+              -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([17.90756986958, 0.0, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-0.02680848454345, -0.3680907338852, 0.04613812688262, -0.3821118582419,
+              -0.002422216000881, -0.08095122864693, -6.57227037897e-05, -0.01947974694527]),
+    # sin_amps: sine amplitudes
+    np.array([-0.0349745158691, 0.0, -0.02868326904595, 0.0, 0.0, -0.06512066003936, 0.0,
+              -0.01038923192162]),
+    # consts: constant of each phase
+    np.array([0.0, 0.0, 0.0, 0.3948992184286, 0.4814997917942, 0.525369884435, 0.5475935828877]),
+)
+
+
+def startup_crane_speed_1(t, *, out=None):
+    """Speed v_k of the crane during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 1 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_CRANE_SPEED_1))
+
+
+_TABLE_STARTUP_CRANE_SPEED_2 = (
+    # edges: phase starts and the end of the run [s]
+    np.array([0.0, 0.1276884291522, 0.1276884292522, 0.1359313988648, 0.4, 1.2, 2.0, 4.0]),
+    # first: first term of each phase
+    np.array([0, 0, 0, 0, 2, 4, 6, 8], dtype=np.intp),
+    # powers: power k of tau
+    np.array([0, 0, 0, 0, 0, 0, 0, 0], dtype=np.intp),
+    # sigmas: decay sigma [1/s]
+    np.array([-6.021485671952, -1.262954044262, -10.72334838299, -2.836419353872, -36.97859625199,
+              -4.486873609035, -84.6178372943, -2.055030044295]),
+    # omegas: angular frequency omega [rad/s]
+    np.array([17.90756986958, 0.0, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
+    # cos_amps: cosine amplitudes
+    np.array([-0.03485758707533, -0.3600416313533, 0.05519963068751, -0.3922867643292,
+              -0.002446096047222, -0.08197942285313, -6.565587148022e-05, -0.01945418955483]),
+    # sin_amps: sine amplitudes
+    np.array([-0.03711338279808, 0.0, -0.02619966335488, 0.0, 0.0, -0.06559613042654, 0.0,
+              -0.01041408008421]),
+    # consts: constant of each phase
+    np.array([0.0, 0.0, 0.0, 0.3948992184286, 0.4814997917942, 0.525369884435, 0.5475935828877]),
+)
+
+
+def startup_crane_speed_2(t, *, out=None):
+    """Speed v_k of the crane during the start-up from rest on the stepped rheostat start (start steps held for the setting holds), backlash in both drives. Case 2 (from 0) of those the scene's settings list. Eq Fig. 12.
+
+    Solved for this scene phase by phase in mpmath
+    (crane_sym.mechanics.exact_phases).
+    The run has 7 phases, each in closed form; they end at
+    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
+    step, 1.2 s next step, 2 s next step, 4 s end.
+
+    Parameters
+    ----------
+    t : array_like
+        time [s], 0 <= t <= 4.0
+    out : ndarray, optional
+        float64 array of t's shape; the result is written into it and returned.
+
+    Returns
+    -------
+    ndarray
+        [m/s], t's shape.
+    """
+    t = _checked('t', t, 'nonnegative', 'time, s')
+    if t.size and t.max() > 4.0:
+        raise ValueError(f"t must be <= 4.0 s (the end of the run this scene tabulates), got {t.max()!r}")
+    return _into(out, t.shape, _phase_sum(t, *_TABLE_STARTUP_CRANE_SPEED_2))

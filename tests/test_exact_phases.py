@@ -10,7 +10,8 @@ import pytest
 from crane_sym.mechanics import closed_forms
 from crane_sym.mechanics import exact_phases
 from crane_sym.mechanics import piecewise_linear
-from crane_sym.derivations.hoist_brakes.elastic import table1_hoist, torque_run
+from crane_sym.derivations.hoist_brakes.elastic import table1_hoist
+from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
 from crane_sym.derivations.portal_travel.startup import BACKLASH, CHOSEN, drive, reduced
 from crane_sym.mechanics.exact_phases import exact_form, exact_table, illinois, simulate_exact
 from crane_sym.mechanics.phase_table import HybridRun
@@ -20,7 +21,7 @@ from crane_sym.codegen.tabulated import render_tabulated
 
 def _hoist_run() -> HybridRun:
     scene = load_scene("hoist_table1")
-    return torque_run(scene.parameters, scene.options)
+    return EMERGENCY_STOP.run(scene.parameters, scene.options)
 
 
 def _portal_run(backlash: str) -> HybridRun:

@@ -174,13 +174,14 @@ def _scene_module(tmp_path):
 def test_scene_module_carries_the_derivation_table(tmp_path):
     """The printed arrays are the run's table rounded to 13 digits, and the
     function is the phases' closed forms to ~1e-12 of the peak."""
-    from crane_sym.derivations.hoist_brakes.elastic import hoist_from, torque_run
+    from crane_sym.derivations.hoist_brakes.elastic import hoist_from
+    from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
     from crane_sym.mechanics.exact_phases import exact_table
     from crane_sym.scenes.reading import load_scene
     from crane_sym.codegen.tabulated import rounded
     module = _scene_module(tmp_path)
     scene = load_scene("hoist_table1")
-    table = exact_table(torque_run(scene.parameters, scene.options))
+    table = exact_table(EMERGENCY_STOP.run(scene.parameters, scene.options))
     for printed, ours in zip(module._TABLE_ELASTIC_GEARBOX_TORQUE, rounded(table).arrays()):
         assert np.array_equal(printed, ours)
     q = scene.parameters
@@ -199,11 +200,11 @@ def test_scene_module_carries_the_derivation_table(tmp_path):
 def test_scene_module_against_solve_ivp(tmp_path):
     """The generated function against DOP853 with events at rtol 1e-12, the
     whole run of the scene (1 s, the rated payload lowered)."""
-    from crane_sym.derivations.hoist_brakes.elastic import torque_run
+    from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
     from crane_sym.scenes.reading import load_scene
     module = _scene_module(tmp_path)
     scene = load_scene("hoist_table1")
-    run = torque_run(scene.parameters, scene.options)
+    run = EMERGENCY_STOP.run(scene.parameters, scene.options)
     times = np.linspace(0.0, 1.0, 10_001)
     ref = integrate_hybrid(run, 1e-12, 1e-12, "DOP853", max_step=1e-4).output(run, times)
     got = module.elastic_gearbox_torque(times)
@@ -228,12 +229,12 @@ def test_table_is_the_run_on_hard_cases(payload, stiffness, backlash_deg):
 def test_table_with_backlash_to_zero_is_the_no_backlash_closed_form():
     """delta -> 0: the tabulated response agrees with the generated
     no-backlash closed form while that one holds (drum sliding, before t_BB)."""
-    from crane_sym.derivations.hoist_brakes.elastic import torque_run
+    from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
     from crane_sym.derivations.hoist_brakes.model import TABLE1
     from crane_sym.generated import hoist_brakes as gen
     q = {k: float(v) for k, v in TABLE1.items()} | {"g": 9.81, "m_p": 0.0,
                                                      "omega1": 50 * np.pi}
-    table = torque_run(q | {"delta": 1e-12}, {"duration": 0.25}).table()
+    table = EMERGENCY_STOP.run(q | {"delta": 1e-12}, {"duration": 0.25}).table()
     rest = next((t for t, e in zip(table.edges[1:], table.events) if "rests" in e), 0.25)
     times = np.linspace(0.0, rest, 2001)
     closed = gen.elastic_gearbox_torque_no_backlash(

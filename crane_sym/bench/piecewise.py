@@ -11,8 +11,10 @@ that shares neither's arithmetic: each phase's exp(Mt) by ``mpmath.expm`` at
 """
 from __future__ import annotations
 
+import tempfile
 import time
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Hashable, Sequence
 
 import mpmath
@@ -26,7 +28,7 @@ from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, by_phase
 from crane_sym.scenes.reading import list_scenes, load_scene
 from crane_sym.scenes.run import import_module_file
-from crane_sym.scenes.specialize import module_name, render_scene_module
+from crane_sym.scenes.specialize import module_name, render_scene_module, tabulated_runs
 
 __all__ = ["IntegratedRun", "PiecewiseRow", "as_markdown", "bench_run", "integrate_hybrid",
            "mp_reference", "RTOLS", "scene_sections", "summary"]
@@ -253,9 +255,10 @@ def as_markdown(rows: Sequence[PiecewiseRow], points: int) -> str:
 def scene_sections(derivation_id: str, points: int = 2000,
                    methods: Sequence[str] = ("DOP853", "LSODA", "Radau"),
                    rtols: Sequence[float] = RTOLS) -> list[str]:
-    """One Markdown section per tabulated output of every shipped scene of the
-    derivation: the closed form (the library's and the scene module's) against
-    the integrators, in one run.
+    """One Markdown section per tabulated run of every shipped scene of the
+    derivation (the first output of each: the others are the same run, read
+    through other weights): the closed form (the library's and the scene
+    module's) against the integrators, in one run.
 
     Parameters
     ----------
@@ -268,21 +271,21 @@ def scene_sections(derivation_id: str, points: int = 2000,
     rtols : sequence of float, optional
         Integrator tolerances.
     """
-    import tempfile
-    from pathlib import Path
-
     d = registry.get(derivation_id)
     sections = []
     for scene in map(load_scene, list_scenes()):
-        wanted = [o for o in d.tabulated if scene.derivation == d.id and o.name in scene.outputs]
+        wanted, systems = [], []
+        for out, run in tabulated_runs(d, scene) if scene.derivation == d.id else []:
+            if run.system not in systems:
+                wanted.append((out, run))
+                systems.append(run.system)
         if not wanted:
             continue
         with tempfile.TemporaryDirectory() as folder:
             path = Path(folder) / module_name(scene)
             path.write_text(render_scene_module(scene), encoding="utf-8")
             module = import_module_file(path)
-        for out in wanted:
-            run = out.run(scene.parameters, scene.options)
+        for out, run in wanted:
             rows, table = bench_run(run, points, methods=methods, rtols=rtols,
                                     module_function=getattr(module, out.name))
             sections += [f"## {out.name}, scene {scene.name}", "",

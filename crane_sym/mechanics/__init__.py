@@ -3,8 +3,9 @@
 Lagrange's equations with Rayleigh dissipation, elimination to a relative
 coordinate, linear ODEs, load laws, Duhamel's integral, the Euler–Poisson
 extremals, guaranteed extrema and crossings, closed forms of one phase and
-piecewise-linear runs (in double and in mpmath), interval enclosures, involute
-gear geometry, sampled loads.
+piecewise-linear runs (in double and in mpmath), a paper's hybrid model
+behind one interface (``hybrid_models``), interval enclosures, involute gear
+geometry, sampled loads.
 
 May import: the top-level vocabulary (``symbols``, ``units``, ``dimensions``,
 ``latex``, ``derivation``, ``outcomes``, ...) and ``kernels``.

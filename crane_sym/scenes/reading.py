@@ -38,6 +38,8 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Sequence
 
+import numpy as np
+
 from crane_sym import registry, units
 from crane_sym.derivation import SceneLoad
 from crane_sym.scenes.panels import Panel, SceneReport, Span, format_quantity
@@ -105,6 +107,25 @@ class Scene:
     load_table: str = ""
     load: Any = None
     settings: dict[str, Any] = field(default_factory=dict)
+
+    def times(self, end: float | None = None) -> np.ndarray:
+        """The scene's time grid: ``settings["points"]`` samples on [0, end],
+        ``end`` the setting ``duration`` unless given (a paper whose scenes
+        name their span otherwise, e.g. 003's ``end``); the last sample is
+        ``end`` exactly.
+
+        Parameters
+        ----------
+        end : float, optional
+            End of the span [s]; default ``settings["duration"]``.
+
+        Returns
+        -------
+        ndarray
+            float64, shape ``(points,)``.
+        """
+        span = self.settings["duration"] if end is None else end
+        return np.linspace(0.0, span, self.settings["points"])
 
 
 def scenes_directory(derivation: str) -> Path:

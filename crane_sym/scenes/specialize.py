@@ -20,13 +20,14 @@ from crane_sym import registry
 from crane_sym.codegen.module import render_module
 from crane_sym.derivation import Derivation, Output, SpecializedLoad, TabulatedOutput
 from crane_sym.mechanics.exact_phases import exact_table
-from crane_sym.mechanics.phase_table import PhaseTable
+from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.scenes.reading import Scene, SceneError, list_scenes, load_scene, scene_path
 from crane_sym.symbols import STATE, TIME, SymbolTable
 
 __all__ = ["module_name", "operation_count", "regenerate_command", "render_scene_module",
            "scene_files", "scene_values", "shipped_scene_modules", "specialize",
-           "specialize_load", "switched_off", "tabulated_names", "tabulated_outputs"]
+           "specialize_load", "switched_off", "tabulated_names", "tabulated_outputs",
+           "tabulated_runs"]
 
 
 def scene_values(d: Derivation | SymbolTable, scene: Scene) -> dict[sp.Symbol, sp.Rational]:
@@ -100,10 +101,28 @@ def tabulated_names(d: Derivation) -> set[str]:
     return {o.name for o in d.tabulated}
 
 
+def tabulated_runs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, HybridRun]]:
+    """The scene's tabulated responses with their runs on the scene's data:
+    one each, or one per case of a response whose run gives several (named
+    ``<name>_<k>`` for case k)."""
+    found = []
+    for out in d.tabulated:
+        if out.name in scene.outputs:
+            runs = out.run(scene.parameters, scene.settings)
+            if isinstance(runs, HybridRun):
+                found.append((out, runs))
+            else:
+                found += [(replace(out, name=f"{out.name}_{k}",
+                                   summary=f"{out.summary} Case {k} (from 0) of those "
+                                           "the scene's settings list."), run)
+                          for k, run in enumerate(runs)]
+    return found
+
+
 def tabulated_outputs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, PhaseTable]]:
-    """The scene's tabulated responses, each solved with the scene's data."""
-    return [(o, exact_table(o.run(scene.parameters, scene.options)))
-            for o in d.tabulated if o.name in scene.outputs]
+    """The scene's tabulated responses, each solved with the scene's data
+    (:func:`tabulated_runs`) in mpmath."""
+    return [(out, exact_table(run)) for out, run in tabulated_runs(d, scene)]
 
 
 def module_name(scene: Scene) -> str:

@@ -4,16 +4,18 @@ A scene that asks for ``pulsating_force`` is the example of the paper
 (Fig. 3): simulated with the consistent model through the generated state
 derivative, Jacobian and system matrices of (12), under the load of the
 scene's own module. A scene that asks for ``state_derivative`` is simulated
-with its own module alone (``report_state``).
+with its own module alone (``report_state``). ``REPORTS`` holds the two kinds.
 """
 from __future__ import annotations
 
 import sympy as sp
 
 from crane_sym.derivation import Derivation
+from crane_sym.scenes.kinds import SceneKind, report_for
 
 from .model import COORDS, STATE
 from .options import SIM_OPTIONS
+from .report_state import state_report
 
 
 def argument_orders(generated) -> dict[str, list[str]]:
@@ -90,16 +92,6 @@ def rhs_functions(generated):
     return make
 
 
-def scene_report(scene, module):
-    """Numbers and curves of a scene: the example of the paper (Fig. 3) when
-    the scene asks for ``pulsating_force``, else the simulation of the scene's
-    own state derivative (``report_state.state_report``)."""
-    if "pulsating_force" not in scene.outputs:
-        from .report_state import state_report
-        return state_report(scene, module)
-    return example_report(scene, module)
-
-
 def example_report(scene, module):
     """Simulate the example of the paper (Fig. 3) with the consistent model.
 
@@ -152,7 +144,7 @@ def example_report(scene, module):
 
     f_loaded, f_empty = hertz(Mn), hertz(make({**p, "m_L": empty}, load)[3][0])
     duration, method = o["duration"], o["method"]
-    times = np.linspace(0.0, duration, o["points"])
+    times = scene.times()
     implicit = {"jac": jac} if method in ("LSODA", "Radau", "BDF") else {}
     start = clock.perf_counter()
     sol = solve_ivp(rhs, (0.0, duration), np.zeros(12), method=method, t_eval=times,
@@ -236,3 +228,18 @@ def example_report(scene, module):
               invalid=invalid),
     ]
     return SceneReport(lines=lines, values=v, panels=panels)
+
+
+#: The kinds of scene of paper 004: the paper's example (Fig. 3), marked by
+#: ``pulsating_force``, else a simulation of the scene's own state derivative.
+REPORTS = (SceneKind("the example of the paper (Fig. 3)", example_report,
+                     outputs=("pulsating_force",)),
+           SceneKind("the scene's own state derivative", state_report))
+
+
+def scene_report(scene, module):
+    """Numbers and curves of a scene of paper 004: the report of its kind
+    (``REPORTS``): the example of the paper (Fig. 3) when the scene asks for
+    ``pulsating_force``, else the simulation of the scene's own state
+    derivative (``report_state.state_report``)."""
+    return report_for(REPORTS, scene, module)

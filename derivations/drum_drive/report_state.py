@@ -35,8 +35,7 @@ def state_report(scene, module) -> SceneReport:
     def rhs(_t, x):
         return np.asarray(module.state_derivative(load, *x), dtype=float).ravel()
 
-    duration, points = scene.settings["duration"], scene.settings["points"]
-    times = np.linspace(0.0, duration, points)
+    duration, times = scene.settings["duration"], scene.times()
     sol = solve_ivp(rhs, (0.0, duration), np.zeros(n), method="DOP853", t_eval=times,
                     rtol=1e-11, atol=1e-14)
     if not sol.success:

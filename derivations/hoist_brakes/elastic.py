@@ -12,11 +12,14 @@ State x = (θ_m, ω_m, θ_d, ω_d); twist u = θ_d − θ_m. Contact: u ≥ 0 th
 holding flank (the drum drives the motor, torque c·u), −s < u < 0 the gap (no
 torque), u ≤ −s the other flank (torque c·(u + s)). The relative gearbox torque
 is the flank torque over the rated static torque M_st (the paper's M_G,rel).
+
+Fig. 9's steps build the hoist here (:func:`fig9_peak`); scenes, sweeps and
+the bench reach it through ``hybrid.py`` (``EMERGENCY_STOP``).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Any, Mapping
+from typing import Mapping
 
 import numpy as np
 
@@ -212,14 +215,6 @@ def table1_hoist(payload: float, g: float = 9.81, backlash_deg: float | None = N
     if stiffness is not None:
         q["c"] = stiffness
     return hoist_from(q, payload)
-
-
-def torque_run(q: Mapping[str, float], options: Mapping[str, Any]) -> HybridRun:
-    """The emergency stop while lowering the payload ``q["m_p"]`` from ω1, motor
-    torque lost at t = 0, brakes after t_SB and t_BB, up to the scene's
-    ``duration``; its output is M_G/M_st."""
-    return hoist_from(q, q["m_p"]).emergency_stop(q["omega1"], options["duration"], 0.0,
-                                                  q["t_SB"], q["t_BB"])
 
 
 #: Table 1's motor speed [rad/s] and brake delays [s].

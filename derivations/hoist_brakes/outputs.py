@@ -9,7 +9,7 @@ import sympy as sp
 from crane_sym.derivation import Derivation, Output, TabulatedOutput
 
 from . import model as _model
-from .elastic import torque_run
+from .hybrid import EMERGENCY_STOP
 
 from .model import (BF_SB, LF, MF, J, J1, J2, M_BB, M_L, M_M, M_SB, M_st, d_omega, d_t, g,
                     i_g, i_t, m_h, m_p, m_r, omega1, phi5, r, t, t_BB, t_SB, c, delta)
@@ -109,7 +109,8 @@ def outputs(d: Derivation) -> list[Output]:
 
 def tabulated() -> list[TabulatedOutput]:
     """The elasto-kinetic response of Fig. 9 with backlash: its phases depend on
-    the data, so a scene's module carries it as a table (``crane_sym.mechanics.phase_table``)."""
+    the data, so a scene's module carries it as a table (``crane_sym.mechanics.phase_table``),
+    the run of ``hybrid.EMERGENCY_STOP``."""
     return [TabulatedOutput(
         "elastic_gearbox_torque",
         (J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, delta, M_SB, M_BB, t_SB, t_BB, omega1),
@@ -117,4 +118,4 @@ def tabulated() -> list[TabulatedOutput]:
         "Relative gearbox torque M_G/M_st of the elastic drive with the coupling backlash, "
         "emergency stop while lowering the payload m_p: motor torque lost at t = 0, safety "
         "brakes after t_SB, service brakes after t_BB, brakes that stick at zero speed.",
-        "1", torque_run)]
+        "1", EMERGENCY_STOP.runner("relative_torque"))]

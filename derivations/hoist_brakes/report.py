@@ -3,12 +3,16 @@ Figs 5, 8, 9, 11 and 12 for the scene's hoist.
 
 Curves of the rigid drive come from the scene's own generated module, the
 factor sweeps from the general module ``crane_sym.generated.hoist_brakes``,
-Fig. 9 from the piecewise closed forms of ``elastic.py``; never from SymPy.
+Fig. 9 from the piecewise closed forms of ``hybrid.EMERGENCY_STOP`` (the
+scene's payload tabulated in its module, the hook alone solved here); never
+from SymPy.
 """
 from __future__ import annotations
 
+from crane_sym.scenes.kinds import SceneKind, report_for
 
-def scene_report(scene, module):
+
+def hoist_report(scene, module):
     """Numbers and figures of a scene (see ``crane_sym.scenes.reading``) for this model.
 
     Parameters
@@ -33,10 +37,10 @@ def scene_report(scene, module):
     from crane_sym.scenes.run import time_function
     from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
-    from .elastic import hoist_from
+    from .hybrid import EMERGENCY_STOP
 
     q = scene.parameters               # a payload above the rated one is refused on load
-    times = np.linspace(0.0, scene.settings["duration"], scene.settings["points"])
+    times = scene.times()
     hoist = {k: q[k] for k in ("J1", "J2", "m_h", "r", "i_g", "i_t", "g", "omega1",
                                "M_SB", "M_BB", "t_SB", "t_BB")}
     kmh = 60.0  # m/s -> m/min
@@ -75,11 +79,10 @@ def scene_report(scene, module):
                  r"$M_G/M_{st}$ (sign as in Fig. 9)", group="Fig. 9")
     peaks = {}
     for payload, name in ((0.0, "hook only"), (q["m_p"], f"payload {q['m_p'] / 1e3:g} t")):
-        model = hoist_from(q, payload)
-        run = model.run(q["omega1"], times[-1], 0.0, q["t_SB"], q["t_BB"])
+        run = EMERGENCY_STOP.solve({**q, "m_p": payload}, scene.settings)
         torque = (module.elastic_gearbox_torque(times) if payload == q["m_p"]
-                  else model.relative_torque(run, times))
-        peaks[name] = model.peak(run)
+                  else run.values("relative_torque", times))
+        peaks[name] = run.peak("relative_torque")
         low = float(np.min(torque))
         fig9.curves.append((f"lowering, {name}: peak {low:.1f}"
                             + (" (the text: 8.9 in magnitude)" if payload == 0.0 else ""),
@@ -119,3 +122,13 @@ def scene_report(scene, module):
         f"{fq(100 * sb[-1], '%')}",
     ]
     return SceneReport(lines=lines, values=values, panels=[fig5] + fig8 + [fig9] + figs)
+
+
+#: The kinds of scene of paper 001: one, the Table 1 hoist and its figures.
+REPORTS = (SceneKind("emergency stop of a hoist (Figs 5, 8, 9, 11, 12)", hoist_report),)
+
+
+def scene_report(scene, module):
+    """Numbers and figures of a scene of paper 001: the report of its kind
+    (``REPORTS``; one kind, :func:`hoist_report`)."""
+    return report_for(REPORTS, scene, module)

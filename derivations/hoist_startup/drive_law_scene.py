@@ -141,8 +141,7 @@ def drive_law_report(scene, gen: ModuleType) -> SceneReport:
     lifted, the rope taut), and the guaranteed maximum of K over that part
     only (interval arithmetic, not sampling)."""
     r = response(scene)
-    duration, points = scene.options["duration"], scene.options["points"]
-    t = np.linspace(0.0, duration, points)
+    duration, t = scene.settings["duration"], scene.times()
     k = gen.dynamic_coefficient(t)
     span = model_span(r, duration)
     omega = math.sqrt(float(r.C * (r.m1 + r.m2) / (r.m1 * r.m2)))

@@ -1,6 +1,8 @@
 """Scenes of paper 002: Figs 3 and 5, the drive laws a_i of (30), guaranteed maxima.
 
-``scene_report(scene)`` evaluates the generated module
+``scene_report(scene)`` answers a scene by its kind (``REPORTS``): one with
+its own ``[drive_law]`` through its own module (``drive_law_scene``), else a
+figure of the paper. ``figure_report`` evaluates the generated module
 ``crane_sym.generated.hoist_startup`` (by function name, never SymPy) for the
 curves, and the symbolic Duhamel response of ``drive_law`` for the
 maxima, which ``extrema.maximum_on_interval`` finds with a guarantee
@@ -36,9 +38,11 @@ import numpy as np
 import sympy as sp
 
 from . import drive_law
+from .drive_law_scene import DRIVE_LAW, drive_law_report
 from .validity import model_span
 from crane_sym.mechanics.extrema import maximum_on_interval
 from crane_sym.mechanics.loads import DEFAULT_TIME, exact_number
+from crane_sym.scenes.kinds import SceneKind, report_for
 from crane_sym.scenes.panels import WARNING
 from crane_sym.scenes.reading import Panel, Scene, SceneError, SceneReport
 from crane_sym.scenes.reading import format_quantity as fq
@@ -53,12 +57,10 @@ def _generated() -> ModuleType:
     return importlib.import_module(GENERATED)
 
 
-def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
-    """Numbers and curves of a paper-002 scene (see ``crane_sym.scenes.reading``).
-
-    A scene with its own ``[drive_law]`` is evaluated through its own module
-    (``drive_law_scene.drive_law_report``); the figure scenes read the
-    general module ``crane_sym.generated.hoist_startup``.
+def figure_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
+    """Numbers and curves of a figure scene of paper 002 (see ``crane_sym.scenes.reading``):
+    the figure of its setting ``figure``, from the general module
+    ``crane_sym.generated.hoist_startup``.
 
     Parameters
     ----------
@@ -68,6 +70,8 @@ def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
         ``duration``, ``points``. What ``options.SCENE_CHECKS`` checked on
         load holds: the figure's parameters are given, Omega and tau_0 agree
         with (2) and (29).
+    module : module, optional
+        The scene's generated module (not read: the figures need the general one).
 
     Returns
     -------
@@ -75,18 +79,11 @@ def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
         Always the values ``Omega`` [rad/s] and ``T`` [s]; the others are
         listed by :func:`fig3`, :func:`fig5`, :func:`drive_laws`.
     """
-    if scene.load_table == "drive_law":
-        from .drive_law_scene import drive_law_report
-        return drive_law_report(scene, module)
     # the figure, its parameters, Omega and tau_0 were checked on load (options.py)
     report = FIGURES[scene.settings["figure"]](scene, _generated())
     omega = scene.parameters["Omega"]
     report.values.update(Omega=omega, T=2 * math.pi / omega)
     return report
-
-
-def _times(scene: Scene) -> np.ndarray:
-    return np.linspace(0.0, scene.settings["duration"], scene.settings["points"])
 
 
 def fig3(scene: Scene, gen: ModuleType) -> SceneReport:
@@ -97,7 +94,7 @@ def fig3(scene: Scene, gen: ModuleType) -> SceneReport:
     static one) and ``K_at_period``.
     """
     omega = scene.parameters["Omega"]
-    period, times = 2 * math.pi / omega, _times(scene)
+    period, times = 2 * math.pi / omega, scene.times()
     k = gen.dynamic_coefficient_instant(times, omega)
     top = int(np.argmax(k))
     half, full = (float(gen.dynamic_coefficient_instant(x, omega)) for x in (period / 2, period))
@@ -128,7 +125,7 @@ def fig5(scene: Scene, gen: ModuleType) -> SceneReport:
     :math:`1/(\\Omega t_п)`, the amplitude (40) gives it.
     """
     omega, t_n = scene.parameters["Omega"], scene.parameters["t_n"]
-    period, times = 2 * math.pi / omega, _times(scene)
+    period, times = 2 * math.pi / omega, scene.times()
     k = gen.dynamic_coefficient_ramp(times, omega, t_n)
     static = times / t_n
     values = {"K_at_t_n": float(gen.dynamic_coefficient_ramp(t_n, omega, t_n)),
@@ -275,7 +272,7 @@ def drive_laws(scene: Scene, gen: ModuleType) -> SceneReport:
     (guaranteed max of (65), t in units of t_п) and, where the paper states
     one, ``paper_ktilde_max_a{i}``; ``certified`` (1.0 when every maximum is).
     """
-    q, times = scene.parameters, _times(scene)
+    q, times = scene.parameters, scene.times()
     found, printed = maxima(scene), _printed_maxima()
     values: dict[str, float] = {}
     by_case: dict[str, list[Panel]] = {case: [] for case in CASES}
@@ -364,3 +361,26 @@ def _table1_panel(gen: ModuleType, times: np.ndarray, q: dict) -> Panel:
 
 FIGURES: dict[str, Callable[[Scene, ModuleType], SceneReport]] = {
     "fig3": fig3, "fig5": fig5, "drive_laws": drive_laws}
+
+#: The kinds of scene of paper 002: a drive law given as data (its own module,
+#: ``drive_law_scene.drive_law_report``), else a figure of the paper.
+REPORTS = (SceneKind("a drive law of one's own ([drive_law])", drive_law_report,
+                     load=DRIVE_LAW.table),
+           SceneKind("a figure of the paper (setting figure)", figure_report))
+
+
+def scene_report(scene: Scene, module: ModuleType | None = None) -> SceneReport:
+    """Numbers and curves of a paper-002 scene: the report of its kind (``REPORTS``).
+
+    Parameters
+    ----------
+    scene : crane_sym.scenes.reading.Scene
+        The loaded scene.
+    module : module, optional
+        The scene's generated module (a drive-law scene's report reads it).
+
+    Returns
+    -------
+    crane_sym.scenes.reading.SceneReport
+    """
+    return report_for(REPORTS, scene, module)

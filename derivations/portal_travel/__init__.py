@@ -21,11 +21,14 @@ Files:
 - ``model.py``: symbols, symbol table, LaTeX names, model text.
 - ``steps.py``: the gear geometry and Form 1's numbers; ``steps_loads.py``:
   (3)–(4) and Table 1's arithmetic; ``steps_startup.py``: the start-up model.
-- ``startup.py``: the three-mass drive with backlash as a hybrid system.
+- ``startup.py``: the three-mass drive with backlash as a hybrid system, and
+  the model's Table 1.
+- ``hybrid.py``: ``HYBRID_MODELS``, that start-up as scenes reach it.
 - ``published.py``: Form 1 as printed; ``published_loads.py``: Fig. 10's z = 10
   value, (3)–(4), Table 1.
 - ``tables.py``: Tables 1–3 as data.
 - ``outputs.py``: generated functions; ``hard_cases.py``: hard cases.
+- ``options.py``: ``SCENE_OPTIONS``, ``SCENE_CHECKS``.
 - ``report.py``: ``scene_report`` (Fig. 10, a gear pair, support loads, start-up).
 
 The package does nothing on import; ``build()`` returns the ``Derivation``.
@@ -36,15 +39,16 @@ from crane_sym.derivation import Derivation
 
 from . import steps, steps_loads, steps_startup
 from .hard_cases import hard_cases
+from .hybrid import HYBRID_MODELS
 from .model import AUTHORS, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .options import SCENE_CHECKS, SCENE_OPTIONS
-from .outputs import outputs
+from .outputs import outputs, tabulated
 from .published import PUBLISHED
 from .published_loads import PUBLISHED_LOADS
 from .report import scene_report
 
-__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
-           "SCENE_OPTIONS", "TITLE", "build", "hard_cases", "scene_report"]
+__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODELS", "LATEX_NAMES", "PAPER",
+           "SCENE_CHECKS", "SCENE_OPTIONS", "TITLE", "build", "hard_cases", "scene_report"]
 
 
 def build() -> Derivation:
@@ -63,4 +67,5 @@ def build() -> Derivation:
     steps_startup.table1_model(d)
     d.published.extend(PUBLISHED + PUBLISHED_LOADS)
     d.outputs.extend(outputs(d))
+    d.tabulated.extend(tabulated())
     return d

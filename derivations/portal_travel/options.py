@@ -23,8 +23,13 @@ from crane_sym.scenes.options import SceneCheck, SceneOption
 
 from .model import SYMBOLS
 
-_FIG10, _PAIR = ("pointed_tip_shift",), ("contact_ratio",)
-_SUPPORT, _STARTUP = ("max_support_load",), ("startup_motor_mass",)
+#: The outputs that mark each kind of scene (its options here, its report in
+#: ``report.REPORTS``).
+FIG10_SCENES, PAIR_SCENES = ("pointed_tip_shift",), ("contact_ratio",)
+SUPPORT_SCENES, STARTUP_SCENES = ("max_support_load",), ("startup_motor_mass",)
+#: The tabulated curves a start-up scene's report plots (``outputs.tabulated``).
+STARTUP_CURVES = ("startup_load", "startup_link_load", "startup_motor_speed",
+                  "startup_crane_speed")
 #: The report draws R_max for reaches from this share of the largest one.
 REACH_FROM = 0.3
 _Z, _REACH, _GAP = (SYMBOLS[n].serves for n in ("z", "L_max", "phi_b"))
@@ -32,26 +37,26 @@ GENERATED = "crane_sym.generated.portal_travel"
 
 SCENE_OPTIONS = (
     SceneOption("z_min", "int", "smallest tooth number of Fig. 10", 8, low=3, high=10_000,
-                outputs=_FIG10),
+                outputs=FIG10_SCENES),
     SceneOption("z_max", "int", "largest tooth number of Fig. 10", 100, low=4,
-                high=100_000, outputs=_FIG10),
+                high=100_000, outputs=FIG10_SCENES),
     SceneOption("pinion_share", "number", "share x1/x_Σ of the sum of shifts put on the "
-                "pinion", 1.0, low=0.0, high=1.0, outputs=_PAIR),
+                "pinion", 1.0, low=0.0, high=1.0, outputs=PAIR_SCENES),
     SceneOption("forbid_undercut", "bool", "refuse a pair whose teeth are undercut", False,
-                outputs=_PAIR),
+                outputs=PAIR_SCENES),
     SceneOption("largest_reach_m", "number", "largest reach of the crane", 30.0, unit="m",
-                low=_REACH[0] / REACH_FROM, high=_REACH[1], outputs=_SUPPORT),
+                low=_REACH[0] / REACH_FROM, high=_REACH[1], outputs=SUPPORT_SCENES),
     SceneOption("backlash", "quantities", "backlash of one drive on its fast shaft, one "
                 "run each", ["0 rad", "0.5 rev", "1 rev"], unit="rad", dimension=S.One,
-                low=_GAP[0], high=_GAP[1], length=(1, 6), outputs=_STARTUP),
+                low=_GAP[0], high=_GAP[1], length=(1, 6), outputs=STARTUP_SCENES),
     SceneOption("holds", "quantities", "hold time of each start step",
                 ["0.4 s", "0.8 s", "0.8 s"], unit="s", dimension=time, low=0.0, above=True,
-                high=60.0, length=(1, 6), outputs=_STARTUP),
+                high=60.0, length=(1, 6), outputs=STARTUP_SCENES),
     SceneOption("end", "quantities", "end of the plotted start-up", ["4 s"], unit="s",
                 dimension=time, low=0.0, above=True, high=600.0, length=(1, 1),
-                outputs=_STARTUP),
+                outputs=STARTUP_SCENES),
     SceneOption("points", "int", "time samples on [0, end]", 2001, low=2, high=100_000,
-                outputs=_STARTUP),
+                outputs=STARTUP_SCENES),
 )
 
 
@@ -63,7 +68,7 @@ def _missing(scene, names: tuple[str, ...], what: str) -> str | None:
 
 
 def _one_kind(scene) -> str | None:
-    kinds = (*_STARTUP, *_FIG10, *_PAIR, *_SUPPORT)
+    kinds = (*STARTUP_SCENES, *FIG10_SCENES, *PAIR_SCENES, *SUPPORT_SCENES)
     if not any(o in scene.outputs for o in kinds):
         return f"a run needs one of the outputs {', '.join(kinds)} (the report's kinds)"
     return None
@@ -115,13 +120,18 @@ def _startup(scene) -> str | None:
     if not o["end"][0] > sum(o["holds"]):
         return (f"[options] end = {o['end'][0]:g} s must exceed the sum of the holds, "
                 f"{sum(o['holds']):g} s")
+    curves = [n for n in STARTUP_CURVES if n not in scene.outputs]
+    if curves:
+        return (f"the start-up's curves come from the scene's module: add {curves} to "
+                "[scene] outputs")
     return None
 
 
 SCENE_CHECKS = (
     SceneCheck("the scene is of one of the report's kinds", _one_kind),
-    SceneCheck("z_min < z_max", _tooth_range, outputs=_FIG10),
+    SceneCheck("z_min < z_max", _tooth_range, outputs=FIG10_SCENES),
     SceneCheck("a centre distance the mesh can have, tips outside the base circle, no "
-               "undercut when forbidden", _gear_pair, outputs=_PAIR),
-    SceneCheck("omega_0 > omega_n; end > the sum of the holds", _startup, outputs=_STARTUP),
+               "undercut when forbidden", _gear_pair, outputs=PAIR_SCENES),
+    SceneCheck("omega_0 > omega_n; end > the sum of the holds; the curves tabulated",
+               _startup, outputs=STARTUP_SCENES),
 )

@@ -1,6 +1,7 @@
 """What the toolkit generates code from for paper 003: a gear designer's
-functions (Form 1, Fig. 10), the largest support load (3)–(4), and the closed-form
-pieces of the start-up model (the drive at the rim, the stepped start).
+functions (Form 1, Fig. 10), the largest support load (3)–(4), the closed-form
+pieces of the start-up model (the drive at the rim, the stepped start), and
+the start-up's curves, which a scene tabulates (``tabulated``).
 
 Arc cosines whose argument can leave [−1, 1] are ``acos_checked`` (an
 impossible mesh or tip raises an error naming the parameter), the involute
@@ -10,11 +11,14 @@ function evaluating to the derived one in mpmath.
 """
 from __future__ import annotations
 
+from functools import partial
+
 import sympy as sp
 
-from crane_sym.derivation import Derivation, Output
+from crane_sym.derivation import Derivation, Output, TabulatedOutput
 from crane_sym.mechanics.involute import acos_checked, involute, tip_half_angle, tip_shift
 
+from .hybrid import scene_runs
 from .model import (G_g, G_pch, G_vs, J_r, L_max, M_v, P_m, P_nom, W_f, W_w, a_w, alpha,
                     alpha_a1, alpha_a2, alpha_tw, c_arm, c_l, d_a1, d_a2, dy, dy1, dy2, ha,
                     lam, m, m_d, m_k, n_m, omega_0, omega_n, phi_b, psi, sigma, v_0, v_n, x,
@@ -129,3 +133,24 @@ def startup_outputs(rhs) -> list[Output]:
                ("start-up, rigid break-away",), "Acceleration of the rigid drive at "
                "break-away on the first characteristic.", "m/s^2"),
     ]
+
+
+#: The start-up's curves a scene tabulates: hybrid.STARTUP's output, name, unit, summary.
+_CURVES = (("load", "startup_load", "N", "Force F1 + F2 of both links on the crane"),
+           ("left_link_load", "startup_link_load", "N", "Force F1 of one link (one side)"),
+           ("motor_speed", "startup_motor_speed", "m/s",
+            "Speed v1 of one side's motors at the wheel rim"),
+           ("crane_speed", "startup_crane_speed", "m/s", "Speed v_k of the crane"))
+
+
+def tabulated() -> list[TabulatedOutput]:
+    """The start-up with backlash of Fig. 12: its phases depend on the data, so a
+    start-up scene's module carries each curve as a table, one per backlash of
+    the scene's setting ``backlash`` (``<name>_<k>``), the runs of
+    ``hybrid.STARTUP`` (``hybrid.scene_runs``)."""
+    drive = (P_m, omega_n, omega_0, J_r, n_m, v_n, lam, c_l, zeta, m_k, W_f, W_w)
+    return [TabulatedOutput(name, drive, ("Fig. 12",),
+                            f"{summary} during the start-up from rest on the stepped "
+                            "rheostat start (start steps held for the setting holds), "
+                            "backlash in both drives.", unit, partial(scene_runs, output))
+            for output, name, unit, summary in _CURVES]

@@ -1,12 +1,18 @@
 """What ``crane-sym run`` prints and plots for a scene of paper 003.
 
-Four kinds of scene, told apart by the outputs they name: Fig. 10 (the shift
-limits against the tooth number), a gear pair checked like Form 1, the support
-loads with Table 3's exceedance probabilities, and the start-up with backlash
-(Fig. 12, Table 1; phases in closed form by ``startup.py``). Numbers come from the
-scene's generated module, never from SymPy. Imports happen only when run.
+Four kinds of scene (``REPORTS``), told apart by the outputs they name: Fig. 10
+(the shift limits against the tooth number), a gear pair checked like Form 1,
+the support loads with Table 3's exceedance probabilities, and the start-up
+with backlash (Fig. 12, Table 1; phases in closed form by ``startup.py``, run
+through ``hybrid.STARTUP``). Numbers come from the scene's generated module,
+never from SymPy; the reports import NumPy and the generated modules only
+when run.
 """
 from __future__ import annotations
+
+from crane_sym.scenes.kinds import SceneKind, report_for
+
+from .options import FIG10_SCENES, PAIR_SCENES, STARTUP_SCENES, SUPPORT_SCENES
 
 
 def fig10_report(scene, module):
@@ -144,22 +150,33 @@ def support_report(scene, module):
 
 def startup_report(scene, module):
     """Fig. 12 and Table 1: the start-up for each backlash of the setting ``backlash``,
-    start steps held for the setting ``holds``; loads and speeds up to ``end``."""
+    start steps held for the setting ``holds``; loads and speeds up to ``end``
+    from the tables of the scene's module (``startup_load_<k>``, ...), F_max,
+    its time, the step accelerations and the closing of the flank from
+    ``hybrid.STARTUP`` run on the module's rim quantities."""
     import numpy as np
 
     from crane_sym.scenes.reading import Panel, SceneReport, format_quantity as fq
 
     from crane_sym.generated import portal_travel as gen
 
-    from .startup import F_MEAN, ThreeMassTravel
+    from .hybrid import STARTUP
+    from .startup import F_MEAN
 
     q, o = scene.parameters, scene.settings   # omega_0 > omega_n, end > sum(holds): on load
-    gaps, holds, end, points = o["backlash"], o["holds"], o["end"][0], o["points"]
+    gaps, holds, end = o["backlash"], o["holds"], o["end"][0]
     m_d, b = float(module.startup_motor_mass()), float(module.startup_link_damping())
     v0, ratio = float(module.startup_no_load_speed()), float(module.startup_slope_ratio())
     beta = float(module.startup_first_slope())
-    slopes = tuple(beta * ratio ** k for k in range(len(holds) + 1))
-    times = np.linspace(0.0, end, points)
+    times = scene.times(end)
+    # the curves from the scene's module (tabulated per backlash); the numbers
+    # from hybrid.STARTUP run here on the drive at the rim of the scene's module
+
+    def curve(name: str, case: int) -> np.ndarray:
+        return getattr(module, f"{name}_{case}")(times)
+
+    rim = {"m_d": m_d, "m_k": q["m_k"], "c_l": q["c_l"], "b": b, "v0": v0, "beta_1": beta,
+           "q": ratio, "W_f": q["W_f"], "W_w": q["W_w"]}
     # the gap's closed-form speed from the paper's general module (a scene module
     # specialized with t_s as an input takes SymPy minutes in codegen)
     gap_args = {k: q[k] for k in ("lambda_p", "P_m", "J_r", "v_n", "omega_0", "omega_n")}
@@ -174,12 +191,9 @@ def startup_report(scene, module):
     loads, speeds = [], []          # one y scale for each kind, across the cases
     for i, phi in enumerate(gaps):
         s = float(module.startup_backlash_at_rim(phi))
-        model = ThreeMassTravel(m_d, q["m_k"], q["c_l"], b, s, s, v0, slopes, tuple(holds),
-                                q["W_f"], q["W_w"])
-        run = model.run(end)
-        when, peak = model.peak(run)
-        acc = model.step_accelerations(run)
-        x = run.state(times)
+        run = STARTUP.solve({**rim, "s": s}, {"holds": holds, "end": end})
+        when, peak = run.peak("load")
+        acc = run.system.step_accelerations(run.result)
         closing = next((t for t, event, _ in run.events if event.startswith("drive")), None)
         if closing is not None:      # the flank closes: the gap's closed-form speed
             values[f"v_close_{i}"] = float(gen.startup_gap_motor_speed(closing, **gap_args))
@@ -195,12 +209,13 @@ def startup_report(scene, module):
         title = f"backlash {phi:.3g} rad of the fast shaft"
         panels += [
             Panel(f"{tag}: loads, {title}", "load [kN]",
-                  [("$F_1 + F_2$", times, model.load(run, times) / 1e3),
-                   ("$F_1$ (one side)", times, model.link_load(run, times, 0) / 1e3),
+                  [("$F_1 + F_2$", times, curve("startup_load", i) / 1e3),
+                   ("$F_1$ (one side)", times, curve("startup_link_load", i) / 1e3),
                    ("$W_w + W_f$", times, np.full_like(times, (q["W_w"] + q["W_f"]) / 1e3))],
                   group=tag),
             Panel(f"{tag}: speeds", "speed at the rim [m/s]",
-                  [("motors $v_1$", times, x[:, 1]), ("crane $v_к$", times, x[:, 5]),
+                  [("motors $v_1$", times, curve("startup_motor_speed", i)),
+                   ("crane $v_к$", times, curve("startup_crane_speed", i)),
                    ("no-load $v_0$", times, np.full_like(times, v0))], group=tag)]
         loads.append(panels[-2])
         speeds.append(panels[-1])
@@ -213,12 +228,18 @@ def startup_report(scene, module):
     return SceneReport(lines=lines, values=values, panels=panels)
 
 
+#: The kinds of scene of paper 003, by the outputs that mark them (``options.py``;
+#: its SCENE_CHECKS refuse a scene of none).
+REPORTS = (
+    SceneKind("start-up with backlash (Fig. 12, Table 1)", startup_report,
+              outputs=STARTUP_SCENES),
+    SceneKind("shift limits (Fig. 10)", fig10_report, outputs=FIG10_SCENES),
+    SceneKind("gear pair (Form 1)", gear_pair_report, outputs=PAIR_SCENES),
+    SceneKind("support loads ((3)-(4), Table 3)", support_report, outputs=SUPPORT_SCENES),
+)
+
+
 def scene_report(scene, module):
-    """Numbers and panels of a scene of paper 003 (see the module docstring)."""
-    if "startup_motor_mass" in scene.outputs:
-        return startup_report(scene, module)
-    if "pointed_tip_shift" in scene.outputs:
-        return fig10_report(scene, module)
-    if "contact_ratio" in scene.outputs:
-        return gear_pair_report(scene, module)
-    return support_report(scene, module)
+    """Numbers and panels of a scene of paper 003: the report of its kind
+    (``REPORTS``, see the module docstring)."""
+    return report_for(REPORTS, scene, module)

@@ -17,6 +17,9 @@ the no-load speed v0 (rheostat steps switched at the hold times, then the natura
 characteristic). The crane stands while the link forces minus the wind stay
 within the friction (first stage); it moves forward (second stage) or back against
 W_w ± W_f, and sticks again when its speed returns to zero inside that band.
+
+The model's Table 1 builds the drive here (:func:`table1_results`); scenes
+and the bench reach it through ``hybrid.py`` (``STARTUP``).
 """
 from __future__ import annotations
 

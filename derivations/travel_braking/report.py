@@ -6,8 +6,10 @@ never from SymPy. Imports happen only when a scene is run.
 """
 from __future__ import annotations
 
+from crane_sym.scenes.kinds import SceneKind, report_for
 
-def scene_report(scene, module):
+
+def braking_report(scene, module):
     """Numbers and curves of a scene (see ``crane_sym.scenes.reading``) for this model.
 
     Uses the generated NumPy modules, not SymPy.
@@ -42,7 +44,7 @@ def scene_report(scene, module):
     q = scene.parameters
     rigid = {k: q[k] for k in ("m1", "m2", "P_t", "W")}
     duration = scene.settings["duration"]
-    times = np.linspace(0.0, duration, scene.settings["points"])
+    times = scene.times()
     force, vel1, vel2 = (time_function(scene, module, name)(times)
                          for name in ("elastic_force", "velocity_m1", "velocity_m2"))
 
@@ -124,3 +126,13 @@ def scene_report(scene, module):
         ], invalid=invalid),
     ]
     return SceneReport(lines=lines, values=values, panels=panels)
+
+
+#: The kinds of scene of paper 000: one, a crane braking its travel.
+REPORTS = (SceneKind("braking the travel of a crane", braking_report),)
+
+
+def scene_report(scene, module):
+    """Numbers and curves of a scene of paper 000: the report of its kind
+    (``REPORTS``; one kind, :func:`braking_report`)."""
+    return report_for(REPORTS, scene, module)
