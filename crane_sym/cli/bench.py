@@ -193,8 +193,8 @@ def _bench_sampled(out_dir: Path, show: bool) -> None:
     """Sampled-load Duhamel responses against the closed forms, and their memory."""
     # imported on use: see the module docstring
     from crane_sym.bench import memory as bench_memory
-    from crane_sym.bench.sampled import accuracy_markdown, as_markdown, sampled_accuracy, \
-        sampled_comparison
+    from crane_sym.bench.sampled import as_markdown, sampled_comparison
+    from crane_sym.bench.sampled_accuracy import accuracy_markdown, sampled_accuracy
     start = time.perf_counter()
     speed, accuracy = as_markdown(sampled_comparison()), accuracy_markdown(sampled_accuracy())
     text = "\n".join([

@@ -270,7 +270,7 @@ def sampled_response(t: ArrayLike, S: ArrayLike, Omega: float, x0: float = 0.0,
         For strings or non-numeric arrays.
 
     Exact for a load linear between samples, up to rounding that grows like
-    the square root of N: against mpmath (``bench.sampled.sampled_accuracy``:
+    the square root of N: against mpmath (``bench.sampled_accuracy.sampled_accuracy``:
     step, ramp, ramp-hold, trapezoid, N = 1e5, :math:`\\Omega h` from 1e-6
     to 1) the errors of x and x' stay below 2e-14 of their peaks. A load
     curved between samples is replaced by its chords (an error

@@ -36,15 +36,17 @@ import re
 import tomllib
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any, Sequence
+from typing import Any
 
 import numpy as np
 
-from crane_sym import registry, units
+from crane_sym import registry
 from crane_sym.derivation import SceneLoad
+from crane_sym.scenes.fields import (SceneError, known_keys, read_inputs, read_outputs,
+                                     read_parameters, required_table, switches_off)
 from crane_sym.scenes.panels import Panel, SceneReport, Span, format_quantity
-from crane_sym.scenes.options import OptionError, did_you_mean, failed_check, options_for, read_options
-from crane_sym.symbols import STATE, TIME, PhysicalSymbol
+from crane_sym.scenes.options import OptionError, failed_check, options_for, read_options
+from crane_sym.symbols import STATE, TIME
 
 # Panel, SceneReport, Span and format_quantity live in ``panels``; they are
 # named here too, where every report has always imported them from.
@@ -55,10 +57,6 @@ _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_.-]{0,99}")
 _SCENE_KEYS = ("name", "derivation", "title", "outputs")
 _OPTIONAL_SCENE_KEYS = ("inputs",)
 _TABLES = ("scene", "parameters", "options")
-
-
-class SceneError(ValueError):
-    """A scene file that cannot be read or does not fit its derivation."""
 
 
 @dataclass(frozen=True)
@@ -224,8 +222,8 @@ def load_scene(path_or_name: str | Path) -> Scene:
     path = _locate(path_or_name)
     data = read_toml(path)
     where = f"scene file {path.name!r}"
-    head = _table(data, "scene", where)
-    _known_keys(head, [*_SCENE_KEYS, *_OPTIONAL_SCENE_KEYS], "[scene] key", where)
+    head = required_table(data, "scene", where)
+    known_keys(head, [*_SCENE_KEYS, *_OPTIONAL_SCENE_KEYS], "[scene] key", where)
     missing = [k for k in ("name", "derivation", "title") if k not in head]
     if missing:
         raise SceneError(f"{where}: [scene] lacks {missing}")
@@ -241,14 +239,14 @@ def load_scene(path_or_name: str | Path) -> Scene:
     except KeyError as exc:
         raise SceneError(f"{where}: {exc.args[0]}") from None
     loads = registry.scene_loads(derivation_id)
-    _known_keys(data, [*_TABLES, *sorted(loads)], "table", where)
+    known_keys(data, [*_TABLES, *sorted(loads)], "table", where)
     given = [key for key in loads if key in data]
     if len(given) > 1:
         raise SceneError(f"{where}: give one scene load, not {given}")
     # A derivation without time (gear geometry, statics) has no duration to give.
     timed = bool(given) or bool(registry.get(derivation_id).symbols.with_role(TIME))
-    raw_options = _table(data, "options", where)
-    raw = _table(data, "parameters", where)
+    raw_options = required_table(data, "options", where)
+    raw = required_table(data, "parameters", where)
     if given:
         scene = _load_scene_with_load(path, head, derivation_id, loads[given[0]], data,
                                       raw, where)
@@ -264,21 +262,21 @@ def _load_plain_scene(path: Path, head: dict[str, Any], derivation_id: str,
         raise SceneError(f"{where}: [scene] lacks ['outputs']")
     derivation = registry.get(derivation_id)
     known = [*derivation.outputs, *derivation.tabulated]
-    outputs = _outputs(head["outputs"], [o.name for o in known], derivation_id, where)
+    outputs = read_outputs(head["outputs"], [o.name for o in known], derivation_id, where)
     # Required: what the scene's outputs take, less what a switch fixes or the
     # scene keeps as an input; allowed: what any output takes.
     required = {a for o in known if o.name in outputs for a in o.args}
     allowed = {a for o in known for a in o.args}
     entries = [e for e in derivation.symbols
                if e.expr in allowed and e.role not in (TIME, STATE)]
-    switched_off = _switched_off(derivation, raw_options, where)
+    switched_off = switches_off(derivation, raw_options, where)
     fixed = {str(s) for name in switched_off for s, _ in derivation.switches[name].off}
-    inputs = _inputs(head.get("inputs", []), {str(a) for a in required}, where)
+    inputs = read_inputs(head.get("inputs", []), {str(a) for a in required}, where)
     for key in sorted((fixed | set(inputs)) & set(raw)):
         why = "is an input of the scene" if key in inputs else "is fixed by a switch"
         raise SceneError(f"{where}: parameter {key!r} {why}; remove it from [parameters]")
     needed = [e for e in entries if e.expr in required and e.name not in fixed | set(inputs)]
-    parameters = _parameters(raw, entries, needed, derivation_id, where)
+    parameters = read_parameters(raw, entries, needed, derivation_id, where)
     return Scene(head["name"], derivation_id, head["title"], tuple(outputs), parameters,
                  {}, path, inputs, switched_off)
 
@@ -290,10 +288,10 @@ def _load_scene_with_load(path: Path, head: dict[str, Any], derivation_id: str,
     load's own parameters, its outputs, its table read by ``load.read``."""
     if "inputs" in head:
         raise SceneError(f"{where}: a scene with [{load.table}] keeps no inputs")
-    outputs = _outputs(head.get("outputs", list(load.outputs)), list(load.outputs),
+    outputs = read_outputs(head.get("outputs", list(load.outputs)), list(load.outputs),
                        f"{derivation_id}, [{load.table}]", where)
     entries = list(load.parameters)
-    parameters = _parameters(raw, entries, entries, derivation_id, where)
+    parameters = read_parameters(raw, entries, entries, derivation_id, where)
     table = data[load.table]
     if not isinstance(table, dict):
         raise SceneError(f"{where}: [{load.table}] must be a table")
@@ -323,91 +321,3 @@ def _with_options(scene: Scene, raw: dict[str, Any], timed: bool, where: str) ->
     if failure:
         raise SceneError(f"{where}: {failure}")
     return scene
-
-
-def _outputs(raw: Any, known: list[str], owner: str, where: str) -> list[str]:
-    """``[scene] outputs``: a non-empty list of known names, none twice."""
-    if not isinstance(raw, list) or not raw or not all(isinstance(o, str) for o in raw):
-        raise SceneError(f"{where}: outputs must be a non-empty list of names")
-    for out in raw:
-        if out not in known:
-            raise SceneError(f"{where}: unknown output {out!r} of {owner!r}; "
-                             f"known: {', '.join(known)}")
-    if len(set(raw)) != len(raw):
-        raise SceneError(f"{where}: an output is listed twice in {raw}")
-    return list(raw)
-
-
-def _parameters(raw: dict[str, Any], entries: list[PhysicalSymbol],
-                needed: list[PhysicalSymbol], owner: str, where: str) -> dict[str, float]:
-    """``[parameters]`` in SI: every name known, every needed one given, each of
-    the right dimension, of the sign its symbol admits and within the range
-    its generated functions serve (``PhysicalSymbol.serves``)."""
-    names = [e.name for e in entries]
-    for key in raw:
-        if key not in names:
-            raise SceneError(f"{where}: unknown parameter {key!r}; {did_you_mean(key, names)}"
-                             f"{owner!r} takes {', '.join(names)}")
-    parameters: dict[str, float] = {}
-    for entry in entries:
-        if entry.name not in raw:
-            if entry in needed:
-                raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}, "
-                                 f"{entry.unit}) is missing")
-            continue
-        try:
-            value = units.convert(entry.name, raw[entry.name], entry.dimension)
-        except units.UnitError as exc:
-            raise SceneError(f"{where}: {exc}") from None
-        bound = {"positive": (value > 0, "> 0"), "nonnegative": (value >= 0, ">= 0")}
-        ok, text = bound.get(entry.sign, (True, ""))
-        if not ok:
-            raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}) "
-                             f"must be {text}, got {raw[entry.name]!r}")
-        low, high = entry.serves
-        if not low <= value <= high:
-            raise SceneError(f"{where}: parameter {entry.name!r} ({entry.description}) must "
-                             f"be within [{low:g}, {high:g}] {entry.unit} (the range its "
-                             f"generated functions serve), got {raw[entry.name]!r}")
-        parameters[entry.name] = value
-    return parameters
-
-
-def _switched_off(derivation, options: dict[str, Any], where: str) -> tuple[str, ...]:
-    """Names of the derivation's switches the options turn off (true/false only)."""
-    off = []
-    for name, switch in derivation.switches.items():
-        if name in options:
-            if not isinstance(options[name], bool):
-                raise SceneError(f"{where}: [options] {name} ({switch.description}) must be "
-                                 f"true or false, got {options[name]!r}")
-            if not options[name]:
-                off.append(name)
-    return tuple(off)
-
-
-def _inputs(raw: Any, takes: set[str], where: str) -> tuple[str, ...]:
-    """``[scene] inputs``: parameters of the outputs left as arguments."""
-    if not isinstance(raw, list) or not all(isinstance(x, str) for x in raw):
-        raise SceneError(f"{where}: inputs must be a list of parameter names")
-    for name in raw:
-        if name not in takes:
-            raise SceneError(f"{where}: input {name!r} is not a parameter of the scene's "
-                             f"outputs ({', '.join(sorted(takes))})")
-    return tuple(raw)
-
-
-def _table(data: dict[str, Any], key: str, where: str) -> dict[str, Any]:
-    value = data.get(key)
-    if not isinstance(value, dict):
-        raise SceneError(f"{where}: missing table [{key}]")
-    return value
-
-
-def _known_keys(table: dict[str, Any], known: Sequence[str], what: str, where: str) -> None:
-    """SceneError for the first key of ``table`` that is not ``known``, with
-    the known names close to it."""
-    for key in table:
-        if key not in known:
-            raise SceneError(f"{where}: unknown {what} {key!r}; {did_you_mean(key, known)}"
-                             f"expected {', '.join(known)}")

@@ -104,7 +104,15 @@ def tabulated_names(d: Derivation) -> set[str]:
 def tabulated_runs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, HybridRun]]:
     """The scene's tabulated responses with their runs on the scene's data:
     one each, or one per case of a response whose run gives several (named
-    ``<name>_<k>`` for case k)."""
+    ``<name>_<k>`` for case k).
+
+    Parameters
+    ----------
+    d : Derivation
+        The scene's derivation (its ``tabulated`` responses).
+    scene : Scene
+        The scene: which outputs it names, its parameters and settings.
+    """
     found = []
     for out in d.tabulated:
         if out.name in scene.outputs:

@@ -35,7 +35,6 @@ simulated sweeps on a machine with free cores, the case they serve. With ``sched
 from __future__ import annotations
 
 import functools
-import hashlib
 import importlib
 import math
 import os
@@ -48,10 +47,11 @@ from typing import Any
 
 import numpy as np
 
-from crane_sym import __version__, registry
+from crane_sym import registry
 from crane_sym.output_files import Stage
 from crane_sym.sweep.compute import compute_local, compute_remote, connect, scheduler_lost
-from crane_sym.sweep.plan import SweepError, SweepPlan, shown_unit
+from crane_sym.sweep.dataset import dataset, sweep_id
+from crane_sym.sweep.plan import SweepError, SweepPlan
 from crane_sym.sweep.store import deferred_signals, remove_settled, sweep_stage
 
 __all__ = ["CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid", "chunks_for",
@@ -227,54 +227,6 @@ def check_grid(plan: SweepPlan, out: Path | None, chunk_bytes: int = CHUNK_BYTES
                          "Dask can plan; give larger blocks or fewer designs")
 
 
-def _dataset(plan: SweepPlan, arrays: dict[str, Any]):
-    """The labelled dataset: one variable per output (SI), one coordinate per
-    axis in the user's units, units and provenance as attributes: per output
-    the unit the summary and the PNG show it in (``display_units``), the axes
-    it does not depend on, the window it is maximised over; the window's
-    start, stop, points and unit; the fixed values, the window's variable
-    not among them."""
-    import xarray as xr
-
-    dims = tuple(a.name for a in plan.axes)
-    coords = {a.name: (a.name, a.values(), {"units": a.unit, "to_SI": a.to_si,
-                                            "spacing": "log" if a.log else "linear"})
-              for a in plan.axes}
-    variables = {}
-    for o in plan.outputs:
-        unit, factor = plan.unit_of(o.name)
-        attrs = {"units": shown_unit(o.unit), "long_name": o.summary, "kind": o.kind,
-                 "display_units": unit, "display_to_SI": factor}
-        if plan.independent_of(o.name):
-            attrs["independent_of"] = ", ".join(plan.independent_of(o.name))
-        if plan.windowed(o.name):
-            attrs["cell_methods"] = f"{plan.window.name}: maximum"
-            attrs["window"] = plan.window.text()
-        variables[o.name] = (dims, arrays[o.name], attrs)
-    window = plan.window
-    attrs = {"scene": plan.scene, "derivation": plan.derivation,
-             "fixed_SI": ", ".join(f"{k}={v!r}" for k, v in sorted(plan.fixed.items())
-                                   if k not in dims and (window is None or k != window.name)),
-             "generated_by": f"crane_sym {__version__} (crane-sym sweep)",
-             "sweep_id": sweep_id(plan)}
-    if plan.limit is not None:
-        attrs["limit"] = plan.limit.text()
-    if window is not None:
-        attrs.update({"window": f"{window.text()}, {window.n} samples: each output that "
-                                f"depends on {window.name} is its maximum over them",
-                      "window_variable": window.name, "window_start": window.start,
-                      "window_stop": window.stop, "window_points": window.n,
-                      "window_units": window.unit, "window_to_SI": window.to_si})
-    return xr.Dataset(variables, coords=coords, attrs=attrs)
-
-
-def sweep_id(plan: SweepPlan) -> str:
-    """A name for the sweep that ``plan`` describes (a hash of it): the same in
-    the dataset's attributes, the PNG's metadata and the summary, so a
-    dataset and a PNG can be checked to belong together."""
-    return hashlib.sha256(repr(plan).encode("utf-8")).hexdigest()[:16]
-
-
 def strided(n: int) -> slice:
     """Every k-th of ``n`` values, at most :data:`MAX_PLOT` of them."""
     return slice(None, None, max(1, -(-n // MAX_PLOT)))
@@ -351,7 +303,7 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
             tasks.append(_view(plan, arrays))
             # metadata written here, now; the blocks by the tasks; consolidated
             # below, here again: a worker never writes metadata
-            tasks.append(_dataset(plan, arrays).to_zarr(tmp, mode="w-", compute=False,
+            tasks.append(dataset(plan, arrays).to_zarr(tmp, mode="w-", compute=False,
                                                         zarr_format=2, consolidated=False))
         local = scheduler if client is None else None
         if client is None and local is None:
