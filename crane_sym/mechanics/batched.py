@@ -187,8 +187,7 @@ def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,
              const: np.ndarray) -> Signals:
     """g = w·x + k of each design over the phase, as a :class:`Signals`."""
     amps = np.einsum("kti,ki->kt", vectors[:, :, : form.n], weights)
-    return Signals(amps, np.asarray(const, float), form.powers, form.sine, form.sigmas,
-                   form.omegas)
+    return Signals.of(form, amps, np.asarray(const, float))
 
 
 def _phase(system: BatchedSystem, mode: int, idx: np.ndarray, form: BatchForm, s: _State,
@@ -211,12 +210,17 @@ def _phase(system: BatchedSystem, mode: int, idx: np.ndarray, form: BatchForm, s
         G = len(guards)
         amps = np.concatenate([np.einsum("kti,ki->kt", vec[:, :, : form.n], g.weights)
                                for g in guards])
-        sig = Signals(amps, np.concatenate([np.broadcast_to(g.constant, (k,)) for g in guards]),
-                      form.powers, form.sine, np.tile(form.sigmas, (G, 1)),
-                      np.tile(form.omegas, (G, 1)))
+        sig = Signals.of(form, amps,
+                         np.concatenate([np.broadcast_to(g.constant, (k,)) for g in guards]),
+                         np.tile(rows_k, G))
         direction = np.repeat([g.direction for g in guards], k).astype(float)
-        hits = first_crossings(sig, np.zeros(G * k), np.tile(horizon, G), direction,
-                               h_min).reshape(G, k)
+        span = np.tile(horizon, G)
+        # a constant g (a guard of a side the mode does not move) cannot cross
+        search = np.flatnonzero(~sig.constant() & (span > 0))
+        hits = np.full(G * k, np.nan)
+        hits[search] = first_crossings(sig.take(search), np.zeros(search.size), span[search],
+                                       direction[search], h_min)
+        hits = hits.reshape(G, k)
         for j in range(G):                            # earliest; the first guard on a tie
             better = hits[j] < end
             end = np.where(better, hits[j], end)
@@ -230,8 +234,7 @@ def _phase(system: BatchedSystem, mode: int, idx: np.ndarray, form: BatchForm, s
     cand_t = [np.zeros(k), end]
     moving = np.flatnonzero(np.any(w != 0, axis=1) & (end > 1e-12))
     if moving.size:
-        sub = Signals(rate.amps[moving], rate.const[moving], rate.powers, rate.sine,
-                      rate.sigmas[moving], rate.omegas[moving])
+        sub = rate.take(moving)
         which, when = all_crossings(sub, np.zeros(moving.size), end[moving], h_min)
         cand_rows.append(moving[which])
         cand_t.append(when)

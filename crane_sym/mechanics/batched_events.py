@@ -34,18 +34,23 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     m = start.shape[0]
     rows = np.arange(m)
     span = t_end - start
-    g0 = sig.value(rows, start)
+    g0, d0 = sig.both(rows, start)
     reach = start + np.minimum(h_min, span)
-    near = sig.derivative_bound(rows, start, reach) * h_min
-    on_surface = np.abs(g0) <= np.maximum(near, 1e-12 * sig.size(rows))
-    lo, hi = _brackets(sig, start, t_end, direction, on_surface, g0, h_min)
+    near = sig.bounds(rows, start, reach)[0] * h_min
+    band = np.maximum(near, 1e-12 * sig.size(rows))
+    on_surface = np.abs(g0) <= band
+    # a start on the surface with a side: the search watches g + side·band until g
+    # leaves the band, so rounding noise about 0 is not taken for a crossing
+    level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
+    lo, hi = _brackets(sig, start, t_end, direction, on_surface, g0, d0, h_min, level=level,
+                       band=band)
     out = np.full(m, np.nan)
     found = ~np.isnan(lo)
     same = found & (lo == hi)
     out[same] = hi[same]
     open_ = np.flatnonzero(found & (lo < hi))
     if open_.size:
-        out[open_] = refine(sig, open_, lo[open_], hi[open_], xtol)
+        out[open_] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_])
     return out
 
 
@@ -56,9 +61,9 @@ def all_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, h_min: flo
     stationary points of a phase's output, all of them in one pass)."""
     m = start.shape[0]
     rows = np.arange(m)
-    g0 = sig.value(rows, start)
+    g0, d0 = sig.both(rows, start)
     found: list = []
-    _brackets(sig, start, t_end, np.zeros(m), np.zeros(m, dtype=bool), g0, h_min, found)
+    _brackets(sig, start, t_end, np.zeros(m), np.zeros(m, dtype=bool), g0, d0, h_min, found)
     if not found:
         return np.zeros(0, dtype=np.intp), np.zeros(0)
     which, lo, hi = (np.concatenate(parts) for parts in zip(*found))
@@ -70,21 +75,26 @@ def all_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, h_min: flo
 
 
 def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
-              on_surface: np.ndarray, g0: np.ndarray, h_min: float,
-              collect: list | None = None) -> tuple[np.ndarray, np.ndarray]:
+              on_surface: np.ndarray, g0: np.ndarray, d0: np.ndarray, h_min: float,
+              collect: list | None = None, level: np.ndarray | None = None,
+              band: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """(lo, hi) of the first step over which each g leaves its side, (hi, hi)
     where it is on the other side or 0 at hi already, NaN where it does not.
     With ``collect`` (a list) every bracket is appended to it as (rows, lo,
-    hi) arrays and the search goes on from hi on the other side."""
+    hi) arrays and the search goes on from hi on the other side. Where
+    ``level`` is nonzero the row watches g + level (``level[i]`` turns 0 once g
+    is past ``band[i]`` on its side); lo and hi bracket the value watched."""
     m = start.shape[0]
     lo, hi = np.full(m, np.nan), np.full(m, np.nan)
-    t, gt = start.copy(), g0.copy()
+    level = np.zeros(m) if level is None else level.copy()
+    t, gt, dt = start.copy(), g0 + level, d0.copy()
     window = sig.window(np.arange(m), np.maximum(t_end - start, h_min))
     side = np.where(on_surface & (direction != 0), -direction, np.sign(gt))
     zero = np.flatnonzero(side == 0)                 # on the surface, either way
     if zero.size:
         t[zero] = start[zero] + np.minimum(h_min, t_end[zero] - start[zero])
-        gt[zero] = sig.value(zero, t[zero])
+        gt[zero], dt[zero] = sig.both(zero, t[zero])
+        gt[zero] += level[zero]
         side[zero] = np.sign(gt[zero])
     w_end = t.copy()                                 # a window to open on the first round
     L, M2 = np.zeros(m), np.zeros(m)
@@ -93,11 +103,10 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         renew = act[t[act] >= w_end[act]]            # the window passed: bounds of the next
         if renew.size:
             w_end[renew] = np.minimum(t[renew] + window[renew], t_end[renew])
-            L[renew] = sig.derivative_bound(renew, t[renew], w_end[renew])
-            M2[renew] = sig.second_derivative_bound(renew, t[renew], w_end[renew])
+            L[renew], M2[renew] = sig.bounds(renew, t[renew], w_end[renew])
         ta, ga, sa, La, Ma = t[act], gt[act], side[act], L[act], M2[act]
         ag = np.abs(ga)
-        d1 = np.abs(sig.slope(act, ta))
+        d1 = np.abs(dt[act])
         with np.errstate(divide="ignore", invalid="ignore"):
             newton = 2 * ag / (d1 + np.sqrt(d1 * d1 + 2 * Ma * ag))
             step = np.maximum(ag / La, newton)
@@ -105,13 +114,21 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         step = np.where(np.sign(ga) != sa, 0.0, step)
         step = np.where(np.isnan(step), 0.0, step)
         nxt = np.minimum(ta + np.maximum(step, h_min), w_end[act])
-        gn = sig.value(act, nxt)
+        gn, dn = sig.both(act, nxt)
+        la = level[act]
+        gn = gn + la
+        banded = np.flatnonzero(la != 0)
+        if banded.size:                              # out of the band on its side: plain g
+            rows_b = act[banded]
+            out = side[rows_b] * (gn[banded] - la[banded]) > band[rows_b]
+            gn[banded[out]] -= la[banded[out]]
+            level[rows_b[out]] = 0.0
         crossed = (gn == 0.0) | (np.sign(gn) != sa)
         at_hi = crossed & ((gn == 0.0) | (np.sign(ga) != sa))
         done = act[crossed]
         lo[done] = np.where(at_hi[crossed], nxt[crossed], ta[crossed])
         hi[done] = nxt[crossed]
-        t[act], gt[act] = nxt, gn
+        t[act], gt[act], dt[act] = nxt, gn, dn
         if collect is None:
             act = act[~crossed & (nxt < t_end[act])]
             continue
@@ -124,12 +141,14 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
 
 
 def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
-           xtol: float = 1e-14, max_rounds: int = 200) -> np.ndarray:
-    """The root of each g in its bracket [lo, hi] (g(lo), g(hi) of opposite
-    signs, or 0 at an end), to ``xtol`` plus 4 ulp of the root."""
+           xtol: float = 1e-14, level: np.ndarray | float = 0.0,
+           max_rounds: int = 200) -> np.ndarray:
+    """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
+    signs at the ends, or 0 at one), to ``xtol`` plus 4 ulp of the root."""
     rtol = 4 * np.finfo(float).eps
     a, b = lo.copy(), hi.copy()
-    fa, fb = sig.value(rows, a), sig.value(rows, b)
+    level = np.broadcast_to(np.asarray(level, dtype=float), a.shape)
+    fa, fb = sig.value(rows, a) + level, sig.value(rows, b) + level
     root = np.where(fa == 0.0, a, np.where(fb == 0.0, b, np.nan))
     live = np.flatnonzero(np.isnan(root))
     last = np.zeros(a.shape[0], dtype=int)           # which end moved last: −1 a, +1 b
@@ -143,7 +162,7 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
         halve = (b[live] - a[live]) > 0.5 * width[live]     # the last step shrank too little
         x = np.where(halve | ~((secant > al) & (secant < bl)), mid, secant)
         width[live] = b[live] - a[live]
-        fx = sig.value(rows[live], x)
+        fx = sig.value(rows[live], x) + level[live]
         hit = fx == 0.0
         left = np.sign(fx) == np.sign(fal)                  # the root is in [x, b]
         # Illinois: the end that stays twice in a row has its value halved

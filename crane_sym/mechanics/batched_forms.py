@@ -47,6 +47,9 @@ class BatchForm:
         σ and ω of each design's terms.
     coefficients : ndarray, shape (k, T, n + 1, n + 1)
         The real matrices C_j of each design.
+    real, pairs : int
+        The terms are ``real`` exponentials, then ``pairs`` (cos, sin) pairs,
+        then the powers 0, 1, … of the generalized kernel.
     """
 
     n: int
@@ -55,6 +58,8 @@ class BatchForm:
     sigmas: np.ndarray
     omegas: np.ndarray
     coefficients: np.ndarray
+    real: int = 0
+    pairs: int = 0
 
     def vectors(self, x0: np.ndarray) -> np.ndarray:
         """C_j (x0, 1) of each design, shape (k, T, n + 1)."""
@@ -159,73 +164,133 @@ def _form(M, lam, vr, w, dots, key, q: int, p: int) -> BatchForm:
         sigmas.append(np.zeros(k)), omegas.append(np.zeros(k)), coefs.append(term)
     return BatchForm(n, np.array(powers, dtype=float), np.array(sine, dtype=bool),
                      np.stack(sigmas, axis=1), np.stack(omegas, axis=1),
-                     np.stack(coefs, axis=1))
+                     np.stack(coefs, axis=1), q, p)
 
 
 @dataclass
 class Signals:
-    """m scalar signals g_i(t) = Σ_j a_ij β_ij(t) + k_i on their phase's own clock.
+    """m scalar signals g_i(t) = Σ_j a_ij β_ij(t) + k_i on their phase's own clock,
+    in three blocks of terms, each evaluated with as few transcendentals as it needs:
 
-    ``amps``, ``sigmas``, ``omegas`` have shape (m, T), ``const`` (m,);
-    ``powers`` and ``sine`` (T,) are shared. Every method takes ``rows`` (the
-    signals it is asked about) and arrays of that length.
+    - ``real``: a e^{σt} (a nonzero real eigenvalue), amplitudes and σ (m, R);
+    - ``pairs``: e^{σt}(a cos ωt + b sin ωt), amplitudes a, b and σ, ω (m, P);
+    - ``poly``: Σ_j c_j t^j (the generalized kernel), c (m, D), the constant in c_0.
+
+    Every method takes ``rows`` (the signals asked about) and arrays of that length.
     """
 
-    amps: np.ndarray
-    const: np.ndarray
-    powers: np.ndarray
-    sine: np.ndarray
-    sigmas: np.ndarray
-    omegas: np.ndarray
+    real_amps: np.ndarray
+    real_sigmas: np.ndarray
+    cos_amps: np.ndarray
+    sin_amps: np.ndarray
+    pair_sigmas: np.ndarray
+    pair_omegas: np.ndarray
+    poly: np.ndarray
+
+    @classmethod
+    def of(cls, form: BatchForm, amps: np.ndarray, const: np.ndarray,
+           owner: np.ndarray | None = None) -> "Signals":
+        """Signals from a form's term amplitudes (m, T) and constants (m,);
+        row i belongs to design ``owner[i]`` of the form (default: row i)."""
+        q, p = form.real, form.pairs
+        sig = form.sigmas if owner is None else form.sigmas[owner]
+        om = form.omegas if owner is None else form.omegas[owner]
+        poly = amps[:, q + 2 * p:].copy()
+        poly[:, 0] += const
+        return cls(amps[:, :q], sig[:, :q], amps[:, q:q + 2 * p:2], amps[:, q + 1:q + 2 * p:2],
+                   sig[:, q:q + 2 * p:2], om[:, q:q + 2 * p:2], poly)
+
+    def take(self, rows: np.ndarray) -> "Signals":
+        """The signals ``rows`` only."""
+        return Signals(*(a[rows] for a in (self.real_amps, self.real_sigmas, self.cos_amps,
+                                           self.sin_amps, self.pair_sigmas, self.pair_omegas,
+                                           self.poly)))
 
     def value(self, rows: np.ndarray, t: np.ndarray) -> np.ndarray:
         """g at ``t``."""
-        beta = basis(t, self.powers, self.sigmas[rows], self.omegas[rows], self.sine)
-        return np.einsum("mt,mt->m", beta, self.amps[rows]) + self.const[rows]
+        return self.both(rows, t, slope=False)[0]
 
-    def slope(self, rows: np.ndarray, t: np.ndarray) -> np.ndarray:
-        """g' at ``t``."""
-        s, w, a = self.sigmas[rows], self.omegas[rows], self.amps[rows]
+    def both(self, rows: np.ndarray, t: np.ndarray,
+             slope: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
+        """g and (with ``slope``) g' at ``t``, from one evaluation of each term."""
+        poly = self.poly[rows]
+        D = poly.shape[1]
+        g = poly[:, D - 1].copy()
+        for j in range(D - 2, -1, -1):                 # Horner
+            g = g * t + poly[:, j]
+        d = None
+        if slope:
+            d = np.zeros_like(t)
+            for j in range(D - 1, 0, -1):
+                d = d * t + j * poly[:, j]
         tt = t[:, None]
-        c, sw = np.cos(w * tt), np.sin(w * tt)
-        wave = np.where(self.sine, sw, c)
-        dwave = np.where(self.sine, w * c, -w * sw)
-        p = self.powers
-        tp = tt ** p
-        dtp = np.where(p > 0, p * tt ** np.maximum(p - 1, 0), 0.0)
-        return np.einsum("mt,mt->m", a * np.exp(s * tt), (dtp + s * tp) * wave + tp * dwave)
+        if self.cos_amps.shape[1]:
+            a, b = self.cos_amps[rows], self.sin_amps[rows]
+            s, w = self.pair_sigmas[rows], self.pair_omegas[rows]
+            wt = w * tt
+            c, sn = np.cos(wt), np.sin(wt)
+            wave = a * c + b * sn
+            grow = np.exp(s * tt) if s.any() else None
+            if grow is not None:
+                wave *= grow
+            g += wave.sum(axis=1)
+            if slope:
+                turn = w * (b * c - a * sn)
+                if grow is not None:
+                    turn *= grow
+                d += (s * wave + turn).sum(axis=1)
+        if self.real_amps.shape[1]:
+            s = self.real_sigmas[rows]
+            term = self.real_amps[rows] * np.exp(s * tt)
+            g += term.sum(axis=1)
+            if slope:
+                d += (s * term).sum(axis=1)
+        return g, d
 
     def size(self, rows: np.ndarray) -> np.ndarray:
-        """Σ |a_j| + |k|: the scale of a signal."""
-        return np.abs(self.amps[rows]).sum(axis=1) + np.abs(self.const[rows])
+        """Σ |a_j| + |k|: the scale of a signal (the constant in c_0)."""
+        return (np.abs(self.real_amps[rows]).sum(axis=1) + np.abs(self.cos_amps[rows]).sum(axis=1)
+                + np.abs(self.sin_amps[rows]).sum(axis=1) + np.abs(self.poly[rows]).sum(axis=1))
 
-    def derivative_bound(self, rows: np.ndarray, t0: np.ndarray, t1: np.ndarray) -> np.ndarray:
-        """An upper bound of |g'| on [t0, t1] (0 ≤ t0 ≤ t1)."""
-        p, s, w = self.powers, self.sigmas[rows], self.omegas[rows]
+    def bounds(self, rows: np.ndarray, t0: np.ndarray,
+               t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Upper bounds of |g'| and |g''| on [t0, t1] (0 ≤ t0 ≤ t1), term by term
+        as :meth:`crane_sym.mechanics.closed_forms.ClosedForm.derivative_bound`."""
+        poly = np.abs(self.poly[rows])
+        D = poly.shape[1]
+        L, M2 = np.zeros_like(t0), np.zeros_like(t0)
+        for j in range(1, D):
+            L += poly[:, j] * j * t1 ** (j - 1)
+            if j > 1:
+                M2 += poly[:, j] * j * (j - 1) * t1 ** (j - 2)
         a0, a1 = t0[:, None], t1[:, None]
-        grow = np.exp(np.maximum(s * a0, s * a1))
-        poly = np.where(p > 0, p * a1 ** np.maximum(p - 1, 0), 0.0)
-        bound = grow * (poly + (np.abs(s) + w) * a1 ** p)
-        return np.einsum("mt,mt->m", np.abs(self.amps[rows]), bound)
+        if self.cos_amps.shape[1]:
+            s = self.pair_sigmas[rows]
+            rate = np.abs(s) + self.pair_omegas[rows]
+            amp = np.abs(self.cos_amps[rows]) + np.abs(self.sin_amps[rows])
+            if s.any():
+                amp = amp * np.exp(np.maximum(s * a0, s * a1))
+            L += (amp * rate).sum(axis=1)
+            M2 += (amp * rate * rate).sum(axis=1)
+        if self.real_amps.shape[1]:
+            s = self.real_sigmas[rows]
+            amp = np.abs(self.real_amps[rows]) * np.exp(np.maximum(s * a0, s * a1))
+            L += (amp * np.abs(s)).sum(axis=1)
+            M2 += (amp * s * s).sum(axis=1)
+        return L, M2
 
-    def second_derivative_bound(self, rows: np.ndarray, t0: np.ndarray,
-                                t1: np.ndarray) -> np.ndarray:
-        """An upper bound of |g''| on [t0, t1] (0 ≤ t0 ≤ t1)."""
-        p, s, w = self.powers, self.sigmas[rows], self.omegas[rows]
-        a0, a1 = t0[:, None], t1[:, None]
-        grow = np.exp(np.maximum(s * a0, s * a1))
-        rate = np.abs(s) + w
-        p2 = np.where(p > 1, p * (p - 1) * a1 ** np.maximum(p - 2, 0), 0.0)
-        p1 = np.where(p > 0, 2 * p * rate * a1 ** np.maximum(p - 1, 0), 0.0)
-        bound = grow * (p2 + p1 + rate ** 2 * a1 ** p)
-        return np.einsum("mt,mt->m", np.abs(self.amps[rows]), bound)
+    def constant(self) -> np.ndarray:
+        """True where a signal has no term but its constant."""
+        return ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
+                 | np.any(self.sin_amps != 0, axis=1) | np.any(self.poly[:, 1:] != 0, axis=1))
 
     def window(self, rows: np.ndarray, scale: np.ndarray) -> np.ndarray:
         """A window over which the bounds stay tight: a quarter of the shortest
         period, no longer than the e-folding time of a growing term, nor ``scale``."""
         out = scale.copy()
-        wmax = self.omegas[rows].max(axis=1, initial=0.0)
-        smax = self.sigmas[rows].max(axis=1, initial=0.0)
+        wmax = self.pair_omegas[rows].max(axis=1, initial=0.0)
+        smax = np.maximum(self.pair_sigmas[rows].max(axis=1, initial=0.0),
+                          self.real_sigmas[rows].max(axis=1, initial=0.0))
         with np.errstate(divide="ignore"):
             out = np.where(wmax > 0, np.minimum(out, 0.5 * np.pi / wmax), out)
             out = np.where(smax > 0, np.minimum(out, 1.0 / smax), out)
