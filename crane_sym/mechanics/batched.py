@@ -31,14 +31,16 @@ array of designs in one mode.
 """
 from __future__ import annotations
 
+import time
 from dataclasses import dataclass, field
-from typing import Protocol, Sequence
+from typing import Hashable, Protocol, Sequence
 
 import numpy as np
 
 from crane_sym.mechanics.batched_events import all_crossings, first_crossings
-from crane_sym.mechanics.batched_forms import BatchForm, Signals, batch_forms
+from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm, Signals, batch_forms
 from crane_sym.mechanics.phase_table import HybridRun, largest
+from crane_sym.mechanics.piecewise_linear import simulate
 
 __all__ = ["BatchedGuard", "BatchedLargest", "BatchedSystem", "largest_batched"]
 
@@ -81,6 +83,9 @@ class BatchedSystem(Protocol):
     def run(self, i: int) -> HybridRun:
         """Design ``i`` for the per-design route (its output the same)."""
 
+    def mode(self, code: int) -> Hashable:
+        """The per-design model's mode of a mode code."""
+
 
 @dataclass
 class BatchedLargest:
@@ -94,15 +99,22 @@ class BatchedLargest:
     fallback: np.ndarray
     capped: np.ndarray
     rounds: int = 0
+    #: Where the time went: closed forms, event search, the output's extrema,
+    #: switching and bookkeeping, the per-design route [s].
     seconds: dict[str, float] = field(default_factory=dict)
+    #: Designs the batched route took part of the way, the per-design route
+    #: the rest (the last ``tail`` still running).
+    finished_alone: np.ndarray = None
 
     @property
     def summary(self) -> dict[str, int]:
-        """Designs in all, by the batched route, by the per-design route, capped."""
+        """Designs in all, by the batched route (some finished alone), by the
+        per-design route from the start (fallback), capped."""
         n = self.value.size
         fell, cap = int(self.fallback.sum()), int(self.capped.sum())
-        return {"designs": n, "batched": n - fell - cap, "fallback": fell, "capped": cap,
-                "rounds": self.rounds}
+        alone = 0 if self.finished_alone is None else int(self.finished_alone.sum())
+        return {"designs": n, "batched": n - fell - cap, "finished_alone": alone,
+                "fallback": fell, "capped": cap, "rounds": self.rounds}
 
 
 @dataclass
@@ -122,12 +134,14 @@ class _State:
     done: np.ndarray
     fell: np.ndarray
     capped: np.ndarray
+    tail: np.ndarray = None
 
 
 def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
                     t_end: np.ndarray | float, schedule_names: Sequence[str] = (),
                     schedule_times: np.ndarray | None = None, *, h_min: float = 1e-10,
-                    max_events: int = 10_000) -> BatchedLargest:
+                    max_events: int = 10_000, cond_limit: float = COND_LIMIT,
+                    tail: int = 8) -> BatchedLargest:
     """The largest |output| over each design's run from t = 0 to ``t_end``.
 
     Parameters
@@ -143,6 +157,16 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
     schedule_names, schedule_times : (S,) names and (N, S) instants
         Events known in advance, per design (those outside [0, t_end) ignored,
         ties taken in the names' order, as :func:`simulate` sorts them).
+    h_min, max_events : as for :func:`simulate`; a design past ``max_events``
+        phases is marked capped.
+    cond_limit : float
+        Largest eigenvalue condition number the batched closed forms accept
+        (:func:`crane_sym.mechanics.batched_forms.batch_forms`); a design above
+        it, in any mode it reaches, takes the per-design route.
+    tail : int
+        When this many designs or fewer are still running, each goes on from
+        its current mode and state by the per-design route (a round of a few
+        designs costs NumPy's per-call overhead, more than plain floats).
     """
     x0 = np.atleast_2d(np.asarray(x0, dtype=float))
     N = x0.shape[0]
@@ -159,28 +183,115 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
                                   axis=1),
                np.zeros(N, dtype=np.intp), np.zeros(N, dtype=np.intp), np.full(N, np.nan),
                np.zeros(N), np.zeros(N, dtype=bool), np.zeros(N, dtype=bool),
-               np.zeros(N, dtype=bool))
+               np.zeros(N, dtype=bool), np.zeros(N, dtype=bool))
     best_key = np.full(N, -np.inf)
+    forms: dict[int, _ModeForms] = {}
+    clock = dict.fromkeys(("forms", "events", "extrema", "switching", "tail", "fallback"),
+                          0.0)
     rounds = 0
     while True:
         act = np.flatnonzero(~(s.done | s.fell | s.capped))
-        if not act.size:
+        if act.size <= tail:
+            tick = time.perf_counter()
+            for i in act:
+                _finish(system, int(i), s, best_key, names, max_events)
+            clock["tail"] += time.perf_counter() - tick
             break
         rounds += 1
+        tick = time.perf_counter()
+        groups = []
         for mode in np.unique(s.mode[act]):
             idx = act[s.mode[act] == mode]
             A, b = system.matrices(int(mode), idx)
-            parts, refused = batch_forms(A, b)
-            s.fell[idx[refused]] = True
-            for where, form in parts:
-                _phase(system, int(mode), idx[where], form, s, best_key, names, h_min)
+            cache = forms.setdefault(int(mode), _ModeForms(N, cond_limit))
+            for where, form in cache.forms(idx, A, b):
+                if form is None:
+                    s.fell[idx[where]] = True
+                else:
+                    groups.append(_Group(int(mode), idx[where], form, A[where], b[where]))
+        clock["forms"] += time.perf_counter() - tick
+        if groups:
+            _round(system, groups, s, best_key, names, h_min, clock)
         over = ~(s.done | s.fell) & (s.count >= max_events)
         s.capped |= over
+    tick = time.perf_counter()
     for i in np.flatnonzero(s.fell):                 # the per-design route
         run = system.run(int(i))
         s.best_t[i], s.best[i] = largest(run.solve(), run.system, run.output, magnitude=True)
+    clock["fallback"] = time.perf_counter() - tick
     s.best[s.capped] = np.nan
-    return BatchedLargest(s.best, s.best_t, s.count, s.fell, s.capped, rounds)
+    return BatchedLargest(s.best, s.best_t, s.count, s.fell, s.capped, rounds, clock,
+                          s.tail)
+
+
+def _finish(system: BatchedSystem, i: int, s: _State, best_key: np.ndarray, names: list[str],
+            max_events: int) -> None:
+    """Design ``i`` from its current mode and state to its end by the
+    per-design route (:func:`simulate`), its largest joined to the batched part's."""
+    run = system.run(i)
+    t = s.t[i]
+    pending = [(float(s.times[i, j]) - t, names[s.names[i, j]])
+               for j in range(s.ptr[i], s.times.shape[1]) if np.isfinite(s.times[i, j])]
+    try:
+        result = simulate(run.system, system.mode(int(s.mode[i])), s.x[i], s.t_end[i] - t,
+                          pending, max_events=max(max_events - int(s.count[i]), 1),
+                          exact=False)
+    except RuntimeError:                              # past max_events
+        s.capped[i] = True
+        return
+    when, value = largest(result, run.system, run.output, magnitude=True)
+    if abs(value) > best_key[i]:
+        s.best[i], s.best_t[i], best_key[i] = value, t + when, abs(value)
+    s.count[i] += len(result.segments)
+    s.tail[i] = True
+    s.done[i] = True
+
+
+class _ModeForms:
+    """The closed forms of one mode, per design, computed on a design's first
+    phase in the mode and kept: a mode's (A, b) depend on the design only."""
+
+    def __init__(self, size: int, cond_limit: float = COND_LIMIT) -> None:
+        self.cond_limit = cond_limit
+        self.signature = np.full(size, -2)          # −2 not yet, −1 refused, else a part
+        self.parts: list[tuple[int, int, np.ndarray, np.ndarray, np.ndarray, np.ndarray,
+                               np.ndarray]] = []
+        self.size = size
+
+    def forms(self, idx: np.ndarray, A: np.ndarray,
+              b: np.ndarray) -> list[tuple[np.ndarray, BatchForm | None]]:
+        """(positions in ``idx``, their form, or None where refused)."""
+        new = np.flatnonzero(self.signature[idx] == -2)
+        if new.size:
+            parts, refused = batch_forms(A[new], b[new], self.cond_limit)
+            self.signature[idx[new[refused]]] = -1
+            for where, f in parts:
+                key = next((i for i, p in enumerate(self.parts)
+                            if p[0] == f.real and p[1] == f.pairs
+                            and p[2].shape == f.powers.shape), None)
+                if key is None:
+                    T = f.powers.size
+                    self.parts.append((f.real, f.pairs, f.powers, f.sine,
+                                       np.zeros((self.size, T)), np.zeros((self.size, T)),
+                                       np.zeros((self.size,) + f.coefficients.shape[1:])))
+                    key = len(self.parts) - 1
+                rows = idx[new[where]]
+                _, _, _, _, sig, om, coef = self.parts[key]
+                sig[rows], om[rows], coef[rows] = f.sigmas, f.omegas, f.coefficients
+                self.signature[rows] = key
+        out: list = []
+        which = self.signature[idx]
+        for key in np.unique(which):
+            where = np.flatnonzero(which == key)
+            if key < 0:
+                out.append((where, None))
+                continue
+            q, p, powers, sine, sig, om, coef = self.parts[key]
+            rows = idx[where]
+            n = coef.shape[-1] - 1
+            out.append((where, BatchForm(n, powers, sine, sig[rows], om[rows], coef[rows],
+                                         q, p)))
+        return out
 
 
 def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,
@@ -190,52 +301,92 @@ def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,
     return Signals.of(form, amps, np.asarray(const, float))
 
 
-def _phase(system: BatchedSystem, mode: int, idx: np.ndarray, form: BatchForm, s: _State,
-           best_key: np.ndarray, names: list[str], h_min: float) -> None:
-    """One phase of the designs ``idx`` (all in ``mode``): its end and event,
-    the output's largest over it, the switch."""
-    k = idx.size
-    vec = form.vectors(s.x[idx])
-    rows_k = np.arange(k)
-    pending = s.ptr[idx] < s.times.shape[1]
-    slot = np.minimum(s.ptr[idx], max(s.times.shape[1] - 1, 0))
-    nxt = s.times[idx, slot] if s.times.shape[1] else np.full(k, np.inf)
-    nxt = np.where(pending, nxt, np.inf)
-    scheduled = np.isfinite(nxt)
-    horizon = np.where(scheduled, nxt, s.t_end[idx]) - s.t[idx]
-    event = np.where(scheduled, s.names[idx, slot] if s.times.shape[1] else END, END)
-    end = horizon.copy()
-    guards = system.guards(mode, idx)
-    if guards and np.any(horizon > 0):
-        G = len(guards)
-        amps = np.concatenate([np.einsum("kti,ki->kt", vec[:, :, : form.n], g.weights)
-                               for g in guards])
-        sig = Signals.of(form, amps,
-                         np.concatenate([np.broadcast_to(g.constant, (k,)) for g in guards]),
-                         np.tile(rows_k, G))
-        direction = np.repeat([g.direction for g in guards], k).astype(float)
-        span = np.tile(horizon, G)
-        # a constant g (a guard of a side the mode does not move) cannot cross
-        search = np.flatnonzero(~sig.constant() & (span > 0))
-        hits = np.full(G * k, np.nan)
-        hits[search] = first_crossings(sig.take(search), np.zeros(search.size), span[search],
-                                       direction[search], h_min)
-        hits = hits.reshape(G, k)
-        for j in range(G):                            # earliest; the first guard on a tie
-            better = hits[j] < end
-            end = np.where(better, hits[j], end)
-            event = np.where(better, len(names) + j, event)
-    # the output over [0, end]: its ends and stationary points
-    w, c = system.output(mode, idx)
-    out = _signals(form, vec, w, c)
-    A, b = system.matrices(mode, idx)
-    rate = _signals(form, vec, np.einsum("ki,kij->kj", w, A), np.einsum("ki,ki->k", w, b))
-    cand_rows = [rows_k, rows_k]
-    cand_t = [np.zeros(k), end]
-    moving = np.flatnonzero(np.any(w != 0, axis=1) & (end > 1e-12))
+@dataclass
+class _Group:
+    """Designs of one mode and one spectral structure in a round."""
+
+    mode: int
+    idx: np.ndarray
+    form: BatchForm
+    A: np.ndarray
+    b: np.ndarray
+    vectors: np.ndarray = None
+    end: np.ndarray = None
+    event: np.ndarray = None
+    guards: list = None
+
+
+def _round(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.ndarray,
+           names: list[str], h_min: float, clock: dict[str, float]) -> None:
+    """One phase of every design in ``groups``: the guards of all of them
+    searched together, then the output's extrema, then the switches."""
+    tick = time.perf_counter()
+    S = s.times.shape[1]
+    sigs, spans, dirs, owner = [], [], [], []
+    for gi, grp in enumerate(groups):
+        idx, form = grp.idx, grp.form
+        k = idx.size
+        grp.vectors = form.vectors(s.x[idx])
+        slot = np.minimum(s.ptr[idx], max(S - 1, 0))
+        nxt = np.where(s.ptr[idx] < S, s.times[idx, slot], np.inf) if S else np.full(k, np.inf)
+        scheduled = np.isfinite(nxt)
+        horizon = np.where(scheduled, nxt, s.t_end[idx]) - s.t[idx]
+        grp.event = np.where(scheduled, s.names[idx, slot] if S else END, END)
+        grp.end = horizon
+        grp.guards = system.guards(grp.mode, idx)
+        for j, g in enumerate(grp.guards):
+            amps = np.einsum("kti,ki->kt", grp.vectors[:, :, : form.n], g.weights)
+            sig = Signals.of(form, amps, np.broadcast_to(np.asarray(g.constant, float), (k,)))
+            # a constant g (a guard of a side the mode does not move) cannot cross
+            keep = np.flatnonzero(~sig.constant() & (horizon > 0))
+            if keep.size:
+                sigs.append(sig.take(keep))
+                spans.append(horizon[keep])
+                dirs.append(np.full(keep.size, float(g.direction)))
+                owner.append(np.stack([np.full(keep.size, gi), np.full(keep.size, j), keep]))
+    if sigs:
+        hits = first_crossings(Signals.concat(sigs), np.zeros(sum(a.size for a in spans)),
+                               np.concatenate(spans), np.concatenate(dirs), h_min)
+        gi_, j_, r_ = np.concatenate(owner, axis=1)
+        base = np.cumsum([0] + [grp.idx.size for grp in groups])
+        pos = base[gi_] + r_
+        end, event = np.concatenate([g.end for g in groups]), np.concatenate(
+            [g.event for g in groups])
+        for j in range(int(j_.max()) + 1):            # earliest; the first guard on a tie
+            sel = np.flatnonzero((j_ == j) & (hits < end[pos]))
+            end[pos[sel]] = hits[sel]
+            event[pos[sel]] = len(names) + j
+        for gi, grp in enumerate(groups):
+            grp.end, grp.event = end[base[gi]:base[gi + 1]], event[base[gi]:base[gi + 1]]
+    clock["events"] += time.perf_counter() - tick
+    tick = time.perf_counter()
+    _extrema(system, groups, s, best_key, h_min)
+    clock["extrema"] += time.perf_counter() - tick
+    tick = time.perf_counter()
+    for grp in groups:
+        _advance(system, grp, s, names)
+    clock["switching"] += time.perf_counter() - tick
+
+
+def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.ndarray,
+             h_min: float) -> None:
+    """The output's largest |value| over each design's phase: its ends and its
+    stationary points (zeros of its rate, all found in one search)."""
+    outs, rates, ends, base = [], [], [], [0]
+    for grp in groups:
+        w, c = system.output(grp.mode, grp.idx)
+        outs.append(_signals(grp.form, grp.vectors, w, c))
+        rates.append(_signals(grp.form, grp.vectors, np.einsum("ki,kij->kj", w, grp.A),
+                              np.einsum("ki,ki->k", w, grp.b)))
+        ends.append(grp.end)
+        base.append(base[-1] + grp.idx.size)
+    out, rate, end = Signals.concat(outs), Signals.concat(rates), np.concatenate(ends)
+    idx = np.concatenate([grp.idx for grp in groups])
+    m = end.size
+    cand_rows, cand_t = [np.arange(m), np.arange(m)], [np.zeros(m), end]
+    moving = np.flatnonzero(~rate.constant() & ~out.constant() & (end > 1e-12))
     if moving.size:
-        sub = rate.take(moving)
-        which, when = all_crossings(sub, np.zeros(moving.size), end[moving], h_min)
+        which, when = all_crossings(rate.take(moving), np.zeros(moving.size), end[moving], h_min)
         cand_rows.append(moving[which])
         cand_t.append(when)
     rows, when = np.concatenate(cand_rows), np.concatenate(cand_t)
@@ -248,18 +399,21 @@ def _phase(system: BatchedSystem, mode: int, idx: np.ndarray, form: BatchForm, s
     up = key > best_key[gi]
     s.best[gi[up]], s.best_t[gi[up]] = v[up], s.t[gi[up]] + when[first][up]
     best_key[gi[up]] = key[up]
-    # the state at the end, the clock, the switch
-    x_end = form.state(end, vec)
-    s.t[idx] += end
+
+
+def _advance(system: BatchedSystem, grp: _Group, s: _State, names: list[str]) -> None:
+    """The state at the phase's end, the clock, the schedule, the switch."""
+    idx, event = grp.idx, grp.event
+    x_end = grp.form.state(grp.end, grp.vectors)
+    s.t[idx] += grp.end
     s.count[idx] += 1
     fin = event == END
     s.done[idx[fin]] = True
-    sched = (event >= 0) & (event < len(names))
-    s.ptr[idx[sched]] += 1
+    s.x[idx[fin]] = x_end[fin]
+    s.ptr[idx[(event >= 0) & (event < len(names))]] += 1
     for e in np.unique(event[~fin]):
         sel = np.flatnonzero(event == e)
-        name = names[e] if e < len(names) else guards[e - len(names)].name
-        new_mode, new_x = system.switch(mode, name, idx[sel], s.t[idx[sel]], x_end[sel])
+        name = names[e] if e < len(names) else grp.guards[e - len(names)].name
+        new_mode, new_x = system.switch(grp.mode, name, idx[sel], s.t[idx[sel]], x_end[sel])
         s.mode[idx[sel]] = new_mode
         s.x[idx[sel]] = new_x
-    s.x[idx[fin]] = x_end[fin]

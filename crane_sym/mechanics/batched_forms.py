@@ -150,9 +150,12 @@ def _form(M, lam, vr, w, dots, key, q: int, p: int) -> BatchForm:
         powers.append(0), sine.append(False)
         sigmas.append(lam[:, v].real), omegas.append(np.zeros(k)), coefs.append(C[:, v].real)
     for v in range(q, q + p):                            # a pair: 2 Re C cos, −2 Im C sin
+        # an undamped pair's σ is rounding (~1e-15 ω): 0, so no e^{σt} is evaluated
+        sigma = np.where(np.abs(lam[:, v].real) <= 1e-12 * np.abs(lam[:, v]), 0.0,
+                         lam[:, v].real)
         for is_sine, part in ((False, 2 * C[:, v].real), (True, -2 * C[:, v].imag)):
             powers.append(0), sine.append(is_sine)
-            sigmas.append(lam[:, v].real), omegas.append(np.abs(lam[:, v].imag))
+            sigmas.append(sigma), omegas.append(np.abs(lam[:, v].imag))
             coefs.append(part)
     Q = np.eye(size) - projector
     N = M @ Q
@@ -199,6 +202,21 @@ class Signals:
         poly[:, 0] += const
         return cls(amps[:, :q], sig[:, :q], amps[:, q:q + 2 * p:2], amps[:, q + 1:q + 2 * p:2],
                    sig[:, q:q + 2 * p:2], om[:, q:q + 2 * p:2], poly)
+
+    @classmethod
+    def concat(cls, parts: list["Signals"]) -> "Signals":
+        """The rows of ``parts`` in one, each block padded with zero terms to the
+        widest (a zero term adds an exact 0): one search for every mode."""
+        blocks = []
+        for b in range(7):
+            arrays = [getattr(p, cls._FIELDS[b]) for p in parts]
+            width = max(a.shape[1] for a in arrays)
+            blocks.append(np.concatenate([np.pad(a, ((0, 0), (0, width - a.shape[1])))
+                                          for a in arrays]))
+        return cls(*blocks)
+
+    _FIELDS = ("real_amps", "real_sigmas", "cos_amps", "sin_amps", "pair_sigmas",
+               "pair_omegas", "poly")
 
     def take(self, rows: np.ndarray) -> "Signals":
         """The signals ``rows`` only."""

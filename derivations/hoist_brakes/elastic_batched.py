@@ -195,6 +195,10 @@ class HoistFamily:
                                float(self.t_SB[i]), float(self.t_BB[i]))
         return replace(run, exact=False)
 
+    def mode(self, code: int) -> tuple:
+        """The mode of :class:`elastic.TwoMassHoist` of a mode code."""
+        return MODES[code]
+
     def peaks(self, **options) -> BatchedLargest:
         """The largest |M_G/M_st| of every design's emergency stop."""
         N = self.J1.size
