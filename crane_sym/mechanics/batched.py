@@ -217,7 +217,13 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
     tick = time.perf_counter()
     for i in np.flatnonzero(s.fell):                 # the per-design route
         run = system.run(int(i))
-        s.best_t[i], s.best[i] = largest(run.solve(), run.system, run.output, magnitude=True)
+        try:
+            result = simulate(run.system, run.mode, run.x0, run.t_end, run.schedule,
+                              max_events=max_events, exact=run.exact)
+        except RuntimeError:                          # past max_events
+            s.fell[i], s.capped[i] = False, True
+            continue
+        s.best_t[i], s.best[i] = largest(result, run.system, run.output, magnitude=True)
     clock["fallback"] = time.perf_counter() - tick
     s.best[s.capped] = np.nan
     return BatchedLargest(s.best, s.best_t, s.count, s.fell, s.capped, rounds, clock,
