@@ -184,3 +184,31 @@ def test_vectorised_search_finds_first_crossing_like_the_per_design_one(seed):
                 times.append(t)
                 t += 1e-9
             np.testing.assert_allclose(found[:len(times)], times, atol=1e-9)
+
+
+def test_the_sweep_output_is_the_per_design_loop_to_1e_9():
+    from crane_sym.derivations.hoist_brakes.sweep_outputs import SWEEP_OUTPUTS, peak_per_design
+    base = _base()
+    c, delta = np.meshgrid([1e4, 3e4, 1e5], np.radians([0.5, 1.5, 3.0]), indexing="ij")
+    values = {**{k: v for k, v in base.items() if k in
+                 SWEEP_OUTPUTS["peak_elastic_gearbox_torque"].parameters}, "c": c, "delta": delta}
+    options = {"duration": 1.0}
+    batched = SWEEP_OUTPUTS["peak_elastic_gearbox_torque"].evaluate(values, options)
+    assert SWEEP_OUTPUTS["peak_elastic_gearbox_torque"].batched
+    np.testing.assert_allclose(batched, peak_per_design(values, options), rtol=1e-9)
+
+
+def test_bench_row_states_n_rates_and_the_difference():
+    from dataclasses import replace
+
+    from crane_sym.bench.batched import bench_batched, markdown_rows
+    from crane_sym.bench.cases import batched_cases
+    paper, case = next((p, c) for p, c in batched_cases()
+                       if c.output == "peak_elastic_gearbox_torque")
+    row = bench_batched(paper, replace(case, n=4, sample=3, breakdown=None))
+    assert row["designs"] == 16 and row["sample"] == 3
+    assert row["max_rel_difference"] <= 1e-9
+    assert row["batched_designs_per_second"] > 0 and row["speedup"] > 0
+    text = "\n".join(markdown_rows([row]))
+    assert "| 001 |" in text or f"| {paper} |" in text
+    assert "max rel. difference" in text

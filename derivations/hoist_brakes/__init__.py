@@ -17,11 +17,13 @@ Files:
 - ``steps.py``: kinematics, reduced inertia, static torque, (1)–(7).
 - ``steps_numbers.py``: the printed numbers from Table 1, one step per reading.
 - ``elastic.py``: the elasto-kinetic emergency stop of Fig. 9 (piecewise linear).
+- ``elastic_batched.py``: the same model for an array of designs (the batched solver).
 - ``published.py``: the printed formulas and numbers (``PUBLISHED``).
 - ``outputs.py``: the Outputs for code generation (and the tabulated Fig. 9 response).
 - ``hard_cases.py``: the seeded hard cases for ``crane-sym accuracy``.
 - ``report.py``: ``scene_report`` for ``crane-sym run``.
 - ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, the Fig. 9 peak for design sweeps.
+- ``bench_cases.py``: ``BATCHED_BENCH_CASES``, the Fig. 9 peak's batched bench.
 
 The package does nothing on import; ``build()`` returns the ``Derivation``.
 """
@@ -32,6 +34,7 @@ import sympy as sp
 from crane_sym.derivation import Derivation
 
 from . import elastic, steps, steps_numbers
+from .bench_cases import BATCHED_BENCH_CASES
 from .hard_cases import hard_cases
 from .model import (AUTHORS, BF_SB, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, LF, MF, MODEL, PAPER, SYMBOLS,
                     TITLE, phi5)
@@ -41,7 +44,7 @@ from .published import PUBLISHED
 from .report import scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
 
-__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
+__all__ = ["BATCHED_BENCH_CASES", "ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
            "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE", "build", "hard_cases", "scene_report"]
 
 

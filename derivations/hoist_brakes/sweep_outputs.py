@@ -66,5 +66,5 @@ SWEEP_OUTPUTS = {
         "peak_elastic_gearbox_torque", "1",
         "Largest |M_G/M_st| of the emergency stop while lowering, elastic drive with the "
         "coupling backlash (Fig. 9), phases in closed form", _PARAMETERS, (),
-        _peak_elastic_gearbox_torque),
+        _peak_elastic_gearbox_torque, batched=True),
 }
