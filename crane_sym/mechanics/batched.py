@@ -390,7 +390,10 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
     idx = np.concatenate([grp.idx for grp in groups])
     m = end.size
     cand_rows, cand_t = [np.arange(m), np.arange(m)], [np.zeros(m), end]
-    moving = np.flatnonzero(~rate.constant() & ~out.constant() & (end > 1e-12))
+    # a phase whose output cannot pass the design's best so far needs no extrema
+    reach = np.abs(out.poly[:, 0]) + out.spread(end)
+    moving = np.flatnonzero(~rate.constant() & ~out.constant() & (end > 1e-12)
+                            & (reach > best_key[idx]))
     if moving.size:
         which, when = all_crossings(rate.take(moving), np.zeros(moving.size), end[moving], h_min)
         cand_rows.append(moving[which])

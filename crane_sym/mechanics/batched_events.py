@@ -32,6 +32,19 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     surface lies, as for :func:`crane_sym.mechanics.piecewise_linear.first_crossing`.
     """
     m = start.shape[0]
+    out = np.full(m, np.nan)
+    # a signal whose constant outweighs everything else it holds over the search
+    # (and by more than the surface band) keeps its sign: no search
+    if np.all(start == 0):
+        every = np.arange(m)
+        band = np.maximum(sig.bounds(every, start, np.minimum(h_min, t_end))[0] * h_min,
+                          1e-12 * sig.size(every))
+        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - sig.spread(t_end) <= 2 * band)
+        if live.size < m:
+            if live.size:
+                out[live] = first_crossings(sig.take(live), start[live], t_end[live],
+                                            direction[live], h_min, xtol)
+            return out
     rows = np.arange(m)
     span = t_end - start
     g0, d0 = sig.both(rows, start)
@@ -44,7 +57,6 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
     lo, hi = _brackets(sig, start, t_end, direction, on_surface, g0, d0, h_min, level=level,
                        band=band)
-    out = np.full(m, np.nan)
     found = ~np.isnan(lo)
     same = found & (lo == hi)
     out[same] = hi[same]

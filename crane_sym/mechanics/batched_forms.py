@@ -297,6 +297,28 @@ class Signals:
             M2 += (amp * s * s).sum(axis=1)
         return L, M2
 
+    def spread(self, horizon: np.ndarray) -> np.ndarray:
+        """A bound of |g(t) − g_c| on [0, horizon], g_c the constant term:
+        Σ_{j≥1} |c_j| H^j, and for each pair √(a² + b²)·max(1, e^{σH}), each
+        exponential |a|·max(1, e^{σH}). Where |g_c| exceeds it, g keeps the
+        sign of g_c over the whole phase."""
+        H = horizon
+        D = self.poly.shape[1]
+        out = np.zeros_like(H)
+        for j in range(D - 1, 0, -1):               # Horner on |c_j|
+            out = (out + np.abs(self.poly[:, j])) * H
+        tt = H[:, None]
+        if self.cos_amps.shape[1]:
+            amp = np.hypot(self.cos_amps, self.sin_amps)
+            s = self.pair_sigmas
+            if s.any():
+                amp = amp * np.maximum(1.0, np.exp(s * tt))
+            out += amp.sum(axis=1)
+        if self.real_amps.shape[1]:
+            out += (np.abs(self.real_amps)
+                    * np.maximum(1.0, np.exp(self.real_sigmas * tt))).sum(axis=1)
+        return out
+
     def constant(self) -> np.ndarray:
         """True where a signal has no term but its constant."""
         return ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
