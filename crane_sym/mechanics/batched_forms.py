@@ -207,12 +207,18 @@ class Signals:
     def concat(cls, parts: list["Signals"]) -> "Signals":
         """The rows of ``parts`` in one, each block padded with zero terms to the
         widest (a zero term adds an exact 0): one search for every mode."""
+        if len(parts) == 1:
+            return parts[0]
+        rows = sum(p.poly.shape[0] for p in parts)
         blocks = []
-        for b in range(7):
-            arrays = [getattr(p, cls._FIELDS[b]) for p in parts]
-            width = max(a.shape[1] for a in arrays)
-            blocks.append(np.concatenate([np.pad(a, ((0, 0), (0, width - a.shape[1])))
-                                          for a in arrays]))
+        for name in cls._FIELDS:
+            arrays = [getattr(p, name) for p in parts]
+            out = np.zeros((rows, max(a.shape[1] for a in arrays)))
+            at = 0
+            for a in arrays:
+                out[at:at + a.shape[0], : a.shape[1]] = a
+                at += a.shape[0]
+            blocks.append(out)
         return cls(*blocks)
 
     _FIELDS = ("real_amps", "real_sigmas", "cos_amps", "sin_amps", "pair_sigmas",
