@@ -212,3 +212,17 @@ def test_bench_row_states_n_rates_and_the_difference():
     text = "\n".join(markdown_rows([row]))
     assert "| 001 |" in text or f"| {paper} |" in text
     assert "max rel. difference" in text
+
+
+def test_a_batched_output_gets_one_block_per_worker_at_most_batch_designs():
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep.grid import BATCH_DESIGNS, chunks_for
+    from crane_sym.sweep.spec import plan
+    scene = load_scene("hoist_table1")
+    small = plan(scene, ["c=1e4:1e5:40:log", "delta=0.5:3:40"], ["peak_elastic_gearbox_torque"])
+    chunks = chunks_for(small, workers=2)
+    blocks = [a * b for a in chunks[0] for b in chunks[1]]
+    assert max(blocks) >= 1600 // 4 and len(blocks) <= 6
+    big = plan(scene, ["c=1e4:1e5:300:log", "delta=0.5:3:300"], ["peak_elastic_gearbox_torque"])
+    chunks = chunks_for(big, workers=2)
+    assert max(a * b for a in chunks[0] for b in chunks[1]) <= BATCH_DESIGNS
