@@ -90,7 +90,7 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
              "relative difference of the peak on the sample. Wall times; the speed-up "
              "in CPU seconds of this process beside it (the machine is shared).", "",
              "| paper | output | N | batched [s] | batched [designs/s] | per design [ms] "
-             "(sample) | loop [designs/s] | N by the loop (extrapolated) [s] | speed-up | "
+             "(sample) | loop [designs/s] | N by the loop (extrapolated) [s] | speed-up (CPU) | "
              "max rel. difference |", "| --- | --- | --- | --- | --- | --- | --- | --- | --- "
              "| --- |"]
     for r in rows:
