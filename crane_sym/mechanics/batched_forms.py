@@ -257,29 +257,31 @@ class Signals:
             grow = np.exp(s * tt) if s.any() else None
             if grow is not None:
                 wave *= grow
-            g += wave.sum(axis=1)
+            g += _rowsum(wave)
             if slope:
                 turn = w * (b * c - a * sn)
                 if grow is not None:
                     turn *= grow
-                d += (s * wave + turn).sum(axis=1)
+                d += _rowsum(s * wave + turn)
         if self.real_amps.shape[1]:
             s = self.real_sigmas[rows]
             term = self.real_amps[rows] * np.exp(s * tt)
-            g += term.sum(axis=1)
+            g += _rowsum(term)
             if slope:
-                d += (s * term).sum(axis=1)
+                d += _rowsum(s * term)
         return g, d
 
     def size(self, rows: np.ndarray) -> np.ndarray:
         """Σ |a_j| + |k|: the scale of a signal (the constant in c_0)."""
-        return (np.abs(self.real_amps[rows]).sum(axis=1) + np.abs(self.cos_amps[rows]).sum(axis=1)
+        return (np.abs(self.real_amps[rows]).sum(axis=1)
+                + np.abs(self.cos_amps[rows]).sum(axis=1)
                 + np.abs(self.sin_amps[rows]).sum(axis=1) + np.abs(self.poly[rows]).sum(axis=1))
 
     def bounds(self, rows: np.ndarray, t0: np.ndarray,
                t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Upper bounds of |g'| and |g''| on [t0, t1] (0 ≤ t0 ≤ t1), term by term
-        as :meth:`crane_sym.mechanics.closed_forms.ClosedForm.derivative_bound`."""
+        as :meth:`crane_sym.mechanics.closed_forms.ClosedForm.derivative_bound`,
+        a pair a cos + b sin = R cos(ωt − φ) with its amplitude R = √(a² + b²)."""
         poly = np.abs(self.poly[rows])
         D = poly.shape[1]
         L, M2 = np.zeros_like(t0), np.zeros_like(t0)
@@ -291,16 +293,16 @@ class Signals:
         if self.cos_amps.shape[1]:
             s = self.pair_sigmas[rows]
             rate = np.abs(s) + self.pair_omegas[rows]
-            amp = np.abs(self.cos_amps[rows]) + np.abs(self.sin_amps[rows])
+            amp = np.hypot(self.cos_amps[rows], self.sin_amps[rows])
             if s.any():
                 amp = amp * np.exp(np.maximum(s * a0, s * a1))
-            L += (amp * rate).sum(axis=1)
-            M2 += (amp * rate * rate).sum(axis=1)
+            L += _rowsum(amp * rate)
+            M2 += _rowsum(amp * rate * rate)
         if self.real_amps.shape[1]:
             s = self.real_sigmas[rows]
             amp = np.abs(self.real_amps[rows]) * np.exp(np.maximum(s * a0, s * a1))
-            L += (amp * np.abs(s)).sum(axis=1)
-            M2 += (amp * s * s).sum(axis=1)
+            L += _rowsum(amp * np.abs(s))
+            M2 += _rowsum(amp * s * s)
         return L, M2
 
     def spread(self, horizon: np.ndarray) -> np.ndarray:
@@ -319,7 +321,7 @@ class Signals:
             s = self.pair_sigmas
             if s.any():
                 amp = amp * np.maximum(1.0, np.exp(s * tt))
-            out += amp.sum(axis=1)
+            out += _rowsum(amp)
         if self.real_amps.shape[1]:
             out += (np.abs(self.real_amps)
                     * np.maximum(1.0, np.exp(self.real_sigmas * tt))).sum(axis=1)
@@ -341,3 +343,8 @@ class Signals:
             out = np.where(wmax > 0, np.minimum(out, 0.5 * np.pi / wmax), out)
             out = np.where(smax > 0, np.minimum(out, 1.0 / smax), out)
         return out
+
+
+def _rowsum(a: np.ndarray) -> np.ndarray:
+    """Σ over a row's terms; a single term as it is (a reduction costs more)."""
+    return a[:, 0] if a.shape[1] == 1 else a.sum(axis=1)

@@ -54,8 +54,8 @@ from crane_sym.sweep.plan import SweepError, SweepPlan, shown_unit
 from crane_sym.sweep.compute import compute_local, compute_remote, connect, scheduler_lost
 from crane_sym.sweep.store import deferred_signals, remove_settled, sweep_stage
 
-__all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid", "chunks_for",
-           "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
+__all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid",
+           "chunks_for", "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
            "scheduler_lost", "strided", "sweep_id"]
 
 #: Bytes of float64 output per block of the grid (closed forms).
