@@ -226,3 +226,32 @@ def test_a_batched_output_gets_one_block_per_worker_at_most_batch_designs():
     big = plan(scene, ["c=1e4:1e5:300:log", "delta=0.5:3:300"], ["peak_elastic_gearbox_torque"])
     chunks = chunks_for(big, workers=2)
     assert max(a * b for a in chunks[0] for b in chunks[1]) <= BATCH_DESIGNS
+
+
+def test_any_hybrid_run_goes_through_the_batched_solver():
+    """Per-design runs of 001 seen as one family (each design's own Python
+    rules, stacked) give the vectorised family's numbers."""
+    from crane_sym.mechanics.batched_runs import largest_of_runs
+    family = hard_grid()
+    sub = list(range(8)) + [11, 14]
+    runs = [family.run(i) for i in sub]
+    result = largest_of_runs(runs, tail=0)
+    assert result.summary["batched"] == len(sub)
+    for k, i in enumerate(sub):
+        assert abs(result.value[k]) == pytest.approx(abs(_per_design(family, i)), rel=1e-9)
+
+
+def test_003_start_up_repeated_eigenvalues_fall_back_and_are_counted():
+    """Paper 003's travel drive has two equal sides: every mode has repeated
+    eigenvalues, which the batched closed forms refuse; the designs run by the
+    per-design route, the same peaks (the largest signed F1 + F2), counted."""
+    from crane_sym.derivations.portal_travel.startup import CHOSEN, drive, reduced
+    from crane_sym.mechanics.batched_runs import largest_of_runs
+    from crane_sym.mechanics.phase_table import HybridRun
+    models = [drive(reduced({**CHOSEN, "c_l": c}, phi), {**CHOSEN, "c_l": c})
+              for c, phi in ((3e6, 0.0), (5e6, np.pi), (8e6, 2 * np.pi))]
+    runs = [HybridRun(m, m.start_mode(), np.zeros(6), 4.0, m.schedule(), m.total)
+            for m in models]
+    result = largest_of_runs(runs, magnitude=False, tail=0)
+    assert result.summary["fallback"] == 3
+    assert list(result.value) == [m.peak(m.run(4.0))[1] for m in models]

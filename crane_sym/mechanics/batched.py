@@ -135,13 +135,14 @@ class _State:
     fell: np.ndarray
     capped: np.ndarray
     tail: np.ndarray = None
+    magnitude: bool = True
 
 
 def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
                     t_end: np.ndarray | float, schedule_names: Sequence[str] = (),
                     schedule_times: np.ndarray | None = None, *, h_min: float = 1e-10,
                     max_events: int = 10_000, cond_limit: float = COND_LIMIT,
-                    tail: int = 8) -> BatchedLargest:
+                    tail: int = 8, magnitude: bool = True) -> BatchedLargest:
     """The largest |output| over each design's run from t = 0 to ``t_end``.
 
     Parameters
@@ -167,6 +168,9 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
         When this many designs or fewer are still running, each goes on from
         its current mode and state by the per-design route (a round of a few
         designs costs NumPy's per-call overhead, more than plain floats).
+    magnitude : bool
+        The largest |output| (True), or the largest output (False), as
+        :func:`crane_sym.mechanics.phase_table.largest` takes it.
     """
     x0 = np.atleast_2d(np.asarray(x0, dtype=float))
     N = x0.shape[0]
@@ -183,7 +187,7 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
                                   axis=1),
                np.zeros(N, dtype=np.intp), np.zeros(N, dtype=np.intp), np.full(N, np.nan),
                np.zeros(N), np.zeros(N, dtype=bool), np.zeros(N, dtype=bool),
-               np.zeros(N, dtype=bool), np.zeros(N, dtype=bool))
+               np.zeros(N, dtype=bool), np.zeros(N, dtype=bool), magnitude)
     best_key = np.full(N, -np.inf)
     forms: dict[int, _ModeForms] = {}
     clock = dict.fromkeys(("forms", "events", "extrema", "switching", "tail", "fallback"),
@@ -223,7 +227,7 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
         except RuntimeError:                          # past max_events
             s.fell[i], s.capped[i] = False, True
             continue
-        s.best_t[i], s.best[i] = largest(result, run.system, run.output, magnitude=True)
+        s.best_t[i], s.best[i] = largest(result, run.system, run.output, magnitude=magnitude)
     clock["fallback"] = time.perf_counter() - tick
     s.best[s.capped] = np.nan
     return BatchedLargest(s.best, s.best_t, s.count, s.fell, s.capped, rounds, clock,
@@ -245,9 +249,10 @@ def _finish(system: BatchedSystem, i: int, s: _State, best_key: np.ndarray, name
     except RuntimeError:                              # past max_events
         s.capped[i] = True
         return
-    when, value = largest(result, run.system, run.output, magnitude=True)
-    if abs(value) > best_key[i]:
-        s.best[i], s.best_t[i], best_key[i] = value, t + when, abs(value)
+    when, value = largest(result, run.system, run.output, magnitude=s.magnitude)
+    key = abs(value) if s.magnitude else value
+    if key > best_key[i]:
+        s.best[i], s.best_t[i], best_key[i] = value, t + when, key
     s.count[i] += len(result.segments)
     s.tail[i] = True
     s.done[i] = True
@@ -391,7 +396,7 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
     m = end.size
     cand_rows, cand_t = [np.arange(m), np.arange(m)], [np.zeros(m), end]
     # a phase whose output cannot pass the design's best so far needs no extrema
-    reach = np.abs(out.poly[:, 0]) + out.spread(end)
+    reach = (np.abs(out.poly[:, 0]) if s.magnitude else out.poly[:, 0]) + out.spread(end)
     moving = np.flatnonzero(~rate.constant() & ~out.constant() & (end > 1e-12)
                             & (reach > best_key[idx]))
     if moving.size:
@@ -400,7 +405,7 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
         cand_t.append(when)
     rows, when = np.concatenate(cand_rows), np.concatenate(cand_t)
     vals = out.value(rows, when)
-    keys = np.abs(vals)
+    keys = np.abs(vals) if s.magnitude else vals
     order = np.lexsort((-keys, rows))                 # per design, its largest first
     first = order[np.r_[True, rows[order][1:] != rows[order][:-1]]]
     r, v, key = rows[first], vals[first], keys[first]
