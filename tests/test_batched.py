@@ -10,7 +10,8 @@ import pytest
 from crane_sym.derivations.hoist_brakes.elastic_batched import HoistFamily, family_from
 from crane_sym.derivations.hoist_brakes.model import G, TABLE1
 from crane_sym.mechanics.batched_events import all_crossings, first_crossings
-from crane_sym.mechanics.batched_forms import Signals, batch_forms
+from crane_sym.mechanics.batched_forms import batch_forms
+from crane_sym.mechanics.batched_signals import Signals
 from crane_sym.mechanics.closed_forms import closed_form
 from crane_sym.mechanics.phase_table import largest
 from crane_sym.mechanics.piecewise_linear import first_crossing

@@ -38,7 +38,8 @@ from typing import Hashable, Protocol, Sequence
 import numpy as np
 
 from crane_sym.mechanics.batched_events import all_crossings, first_crossings
-from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm, Signals, batch_forms
+from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm, FormCache
+from crane_sym.mechanics.batched_signals import Signals
 from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import simulate
 
@@ -189,7 +190,7 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
                np.zeros(N), np.zeros(N, dtype=bool), np.zeros(N, dtype=bool),
                np.zeros(N, dtype=bool), np.zeros(N, dtype=bool), magnitude)
     best_key = np.full(N, -np.inf)
-    forms: dict[int, _ModeForms] = {}
+    forms: dict[int, FormCache] = {}
     clock = dict.fromkeys(("forms", "events", "extrema", "switching", "tail", "fallback"),
                           0.0)
     rounds = 0
@@ -207,7 +208,7 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
         for mode in np.unique(s.mode[act]):
             idx = act[s.mode[act] == mode]
             A, b = system.matrices(int(mode), idx)
-            cache = forms.setdefault(int(mode), _ModeForms(N, cond_limit))
+            cache = forms.setdefault(int(mode), FormCache(N, cond_limit))
             for where, form in cache.forms(idx, A, b):
                 if form is None:
                     s.fell[idx[where]] = True
@@ -256,53 +257,6 @@ def _finish(system: BatchedSystem, i: int, s: _State, best_key: np.ndarray, name
     s.count[i] += len(result.segments)
     s.tail[i] = True
     s.done[i] = True
-
-
-class _ModeForms:
-    """The closed forms of one mode, per design, computed on a design's first
-    phase in the mode and kept: a mode's (A, b) depend on the design only."""
-
-    def __init__(self, size: int, cond_limit: float = COND_LIMIT) -> None:
-        self.cond_limit = cond_limit
-        self.signature = np.full(size, -2)          # −2 not yet, −1 refused, else a part
-        self.parts: list[tuple[int, int, np.ndarray, np.ndarray, np.ndarray, np.ndarray,
-                               np.ndarray]] = []
-        self.size = size
-
-    def forms(self, idx: np.ndarray, A: np.ndarray,
-              b: np.ndarray) -> list[tuple[np.ndarray, BatchForm | None]]:
-        """(positions in ``idx``, their form, or None where refused)."""
-        new = np.flatnonzero(self.signature[idx] == -2)
-        if new.size:
-            parts, refused = batch_forms(A[new], b[new], self.cond_limit)
-            self.signature[idx[new[refused]]] = -1
-            for where, f in parts:
-                key = next((i for i, p in enumerate(self.parts)
-                            if p[0] == f.real and p[1] == f.pairs
-                            and p[2].shape == f.powers.shape), None)
-                if key is None:
-                    T = f.powers.size
-                    self.parts.append((f.real, f.pairs, f.powers, f.sine,
-                                       np.zeros((self.size, T)), np.zeros((self.size, T)),
-                                       np.zeros((self.size,) + f.coefficients.shape[1:])))
-                    key = len(self.parts) - 1
-                rows = idx[new[where]]
-                _, _, _, _, sig, om, coef = self.parts[key]
-                sig[rows], om[rows], coef[rows] = f.sigmas, f.omegas, f.coefficients
-                self.signature[rows] = key
-        out: list = []
-        which = self.signature[idx]
-        for key in np.unique(which):
-            where = np.flatnonzero(which == key)
-            if key < 0:
-                out.append((where, None))
-                continue
-            q, p, powers, sine, sig, om, coef = self.parts[key]
-            rows = idx[where]
-            n = coef.shape[-1] - 1
-            out.append((where, BatchForm(n, powers, sine, sig[rows], om[rows], coef[rows],
-                                         q, p)))
-        return out
 
 
 def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,

@@ -2,7 +2,7 @@
 bracketed refinement, both on arrays.
 
 :func:`first_crossings` is :func:`crane_sym.mechanics.piecewise_linear.sign_change`
-for m signals together (:class:`crane_sym.mechanics.batched_forms.Signals`),
+for m signals together (:class:`crane_sym.mechanics.batched_signals.Signals`),
 with the same guarantee: from t, g cannot reach 0 before t + |g(t)|/L (L
 bounds |g'| over the current window) nor before the root of
 |g(t)| − |g'(t)| h − M₂h²/2, so each row steps by the larger of the two
@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crane_sym.mechanics.batched_forms import Signals
+from crane_sym.mechanics.batched_signals import Signals
 
 __all__ = ["all_crossings", "first_crossings", "refine"]
 
