@@ -11,11 +11,13 @@ nilpotent series Σ_j (N t)^j / j! · Q with Q = I − Σ C_λ and N = M Q, as t
 per-design route does. A pair λ = σ ± iω folds into t^0 e^{σt} cos ωt and
 sin ωt terms.
 
-A design is refused (``ok`` False, for the per-design route) where this is
-not safe: an eigenvalue condition number 1/|ŵᵀv̂| above ``cond_limit``, two
-nonzero eigenvalues closer than 10⁻⁶ of the spectrum's scale (a repeated
-eigenvalue, which the per-design route clusters), a complex pair closer to
-the real axis than 10⁻⁵ of the scale, or a left eigenvector it cannot match.
+Equal nonzero eigenvalues (within 10⁻⁶ of the spectrum's scale: two equal
+drives) form a cluster with one projector C = R (Lᵀ R)⁻¹ Lᵀ from its right
+and left eigenvectors, as the per-design route clusters them. A design is
+refused (for the per-design route) where this is not safe: a cluster's
+condition number ‖(L̂ᵀ R̂)⁻¹‖ above ``cond_limit`` (for a simple eigenvalue
+1/|ŵᵀv̂|; a defective eigenvalue makes it huge), a complex pair closer to the
+real axis than 10⁻⁵ of the scale, or spectra of M and Mᵀ that do not match.
 
 :class:`FormCache` keeps each design's forms per mode: a mode's (A, b)
 depend on the design only, so a design returning to a mode reuses them.
@@ -89,72 +91,101 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     """The closed forms of x' = A x + b for a stack of designs.
 
     Returns ``(parts, refused)``: each part is (positions in the stack, its
-    :class:`BatchForm`), designs of one spectral structure (as many nonzero
-    real eigenvalues and complex pairs); ``refused`` holds the positions the
-    batched route does not take (see the module docstring).
+    :class:`BatchForm`), designs of one spectral structure (the same clusters
+    of nonzero real eigenvalues and of complex pairs); ``refused`` holds the
+    positions the batched route does not take (see the module docstring).
     """
     k, n = b.shape
-    M = np.zeros((k, n + 1, n + 1))
+    size = n + 1
+    M = np.zeros((k, size, size))
     M[:, :n, :n] = A
     M[:, :n, n] = b
     lam, vr = np.linalg.eig(M)
     mu, vl = np.linalg.eig(np.swapaxes(M, 1, 2))
     scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
-    live = np.abs(lam) > 1e-6 * scale
-    # left eigenvector of each λ: the eigenvector of Mᵀ with the nearest eigenvalue
-    match = np.argmin(np.abs(lam[:, :, None] - mu[:, None, :]), axis=2)
-    gap = np.abs(lam - np.take_along_axis(mu, match, axis=1))
-    w = np.take_along_axis(vl, match[:, None, :], axis=2)               # (k, n+1, n+1)
-    dots = np.einsum("kij,kij->kj", w, vr)
-    norms = np.linalg.norm(w, axis=1) * np.linalg.norm(vr, axis=1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        cond = np.where(live, norms / np.abs(dots), 1.0)
-    bad = np.any(live & ~(cond <= cond_limit), axis=1)
-    bad |= np.any(live & (gap > 1e-9 * scale), axis=1)
-    close = np.abs(lam[:, :, None] - lam[:, None, :]) < 1e-6 * scale[:, :, None]
-    pair = live[:, :, None] & live[:, None, :] & ~np.eye(n + 1, dtype=bool)
-    bad |= np.any(close & pair, axis=(1, 2))
+    tol = 1e-6 * scale
+    # both spectra in one order: real nonzero, upper half plane, lower, kernel
+    lam, vr, cat = _ordered(lam, vr, tol)
+    mu, vl, cat_mu = _ordered(mu, vl, tol)
+    live = cat < 3
+    bad = np.any(cat != cat_mu, axis=1) | np.any(live & (np.abs(lam - mu) >= tol), axis=1)
     im = np.abs(lam.imag)
     bad |= np.any(live & (im > 0) & (im < 1e-5 * scale), axis=1)
-    bad |= ~np.all(np.isfinite(lam), axis=1)
-    # order: real nonzero, then upper half plane, then lower half plane, then kernel
-    key = np.where(~live, 3, np.where(lam.imag == 0, 0, np.where(lam.imag > 0, 1, 2)))
-    real_count = np.sum(key == 0, axis=1)
-    pair_count = np.sum(key == 1, axis=1)
-    parts = []
+    bad |= ~np.all(np.isfinite(lam), axis=1) | ~np.all(np.isfinite(mu), axis=1)
+    # clusters: equal nonzero eigenvalues (two equal drives), each one projector
+    step = np.abs(np.diff(lam, axis=1)) >= tol
+    starts = np.concatenate([np.ones((k, 1), bool), step | (np.diff(cat, axis=1) != 0)], axis=1)
+    pattern = np.where(live, cat * 2 + starts, 7)
+    parts, refused = [], list(np.flatnonzero(bad))
     ok = np.flatnonzero(~bad)
-    signature = real_count[ok] * (n + 2) + pair_count[ok]
-    for sig in np.unique(signature):
-        where = ok[signature == sig]
-        q, p = int(real_count[where[0]]), int(pair_count[where[0]])
-        parts.append((where, _form(M[where], lam[where], vr[where], w[where], dots[where],
-                                   key[where], q, p)))
-    return parts, np.flatnonzero(bad)
+    if ok.size:
+        kinds, which = np.unique(pattern[ok], axis=0, return_inverse=True)
+        for g, kind in enumerate(kinds):
+            where = ok[which.ravel() == g]
+            form, fine = _form(M[where], lam[where], vr[where], vl[where], kind, cond_limit)
+            refused.extend(where[~fine])
+            if form is not None:
+                parts.append((where[fine], form))
+    return parts, np.array(sorted(refused), dtype=np.intp)
 
 
-def _form(M, lam, vr, w, dots, key, q: int, p: int) -> BatchForm:
-    """The :class:`BatchForm` of designs with q real nonzero eigenvalues and p pairs."""
+def _ordered(values, vectors, tol):
+    """Eigenvalues and their vectors sorted by (category, real, imaginary part);
+    category 0 real nonzero, 1 upper half plane, 2 lower, 3 the kernel."""
+    live = np.abs(values) > tol
+    cat = np.where(~live, 3, np.where(values.imag == 0, 0, np.where(values.imag > 0, 1, 2)))
+    order = np.lexsort((values.imag, values.real, cat), axis=-1)
+    return (np.take_along_axis(values, order, axis=1),
+            np.take_along_axis(vectors, order[:, None, :], axis=2),
+            np.take_along_axis(cat, order, axis=1))
+
+
+def _form(M, lam, vr, vl, kind, cond_limit: float) -> tuple[BatchForm | None, np.ndarray]:
+    """The :class:`BatchForm` of designs of one cluster pattern ``kind`` (per
+    position: 2·category + starts-a-cluster, 7 for the kernel), and which
+    designs it holds (a cluster whose left and right vectors are nearly
+    dependent, a defective eigenvalue, is refused)."""
     k, size, _ = M.shape
     n = size - 1
-    order = np.argsort(key, axis=1, kind="stable")
-    lam = np.take_along_axis(lam, order, axis=1)
-    vr = np.take_along_axis(vr, order[:, None, :], axis=2)
-    w = np.take_along_axis(w, order[:, None, :], axis=2)
-    dots = np.take_along_axis(dots, order, axis=1)
-    live = q + 2 * p
-    C = np.einsum("kiv,kjv->kvij", vr[:, :, :live], w[:, :, :live]) / dots[:, :live, None, None]
-    projector = C.sum(axis=1).real
+    live = int(np.sum(kind < 7))
+    heads = [j for j in range(live) if kind[j] % 2 == 1]
+    clusters = [(j, (heads[h + 1] if h + 1 < len(heads) else live) - j, int(kind[j] // 2))
+                for h, j in enumerate(heads)]
+    fine = np.ones(k, dtype=bool)
+    projector = np.zeros((k, size, size))
+    real, pairs = [], []
+    for j, m, cat in clusters:
+        if cat == 2:
+            continue                                  # the conjugates of the upper half
+        R, L = vr[:, :, j:j + m], vl[:, :, j:j + m]
+        gram = np.einsum("kim,kin->kmn", L, R)
+        with np.errstate(all="ignore"):
+            inv = np.linalg.inv(gram) if np.all(np.isfinite(gram)) else gram * np.nan
+            cond = np.linalg.norm(inv, ord=2, axis=(1, 2)) if m > 1 else np.abs(inv[:, 0, 0])
+        fine &= cond <= cond_limit
+        C = np.einsum("kim,kmn,kjn->kij", R, np.nan_to_num(inv), L)
+        value = lam[:, j:j + m].mean(axis=1)
+        if cat == 0:
+            real.append((value.real, C.real))
+            projector += C.real
+        else:
+            pairs.append((value, C))
+            projector += 2 * C.real
+    if not fine.any():
+        return None, fine
+    if not fine.all():                                # the rest without the refused
+        form, _ = _form(M[fine], lam[fine], vr[fine], vl[fine], kind, cond_limit)
+        return form, fine
     powers, sine, sigmas, omegas, coefs = [], [], [], [], []
-    for v in range(q):                                   # real: e^{σt}
+    for sigma, C in real:                                 # real: e^{σt}
         powers.append(0), sine.append(False)
-        sigmas.append(lam[:, v].real), omegas.append(np.zeros(k)), coefs.append(C[:, v].real)
-    for v in range(q, q + p):                            # a pair: 2 Re C cos, −2 Im C sin
+        sigmas.append(sigma), omegas.append(np.zeros(k)), coefs.append(C)
+    for value, C in pairs:                                # a pair: 2 Re C cos, −2 Im C sin
         # an undamped pair's σ is rounding (~1e-15 ω): 0, so no e^{σt} is evaluated
-        sigma = np.where(np.abs(lam[:, v].real) <= 1e-12 * np.abs(lam[:, v]), 0.0,
-                         lam[:, v].real)
-        for is_sine, part in ((False, 2 * C[:, v].real), (True, -2 * C[:, v].imag)):
+        sigma = np.where(np.abs(value.real) <= 1e-12 * np.abs(value), 0.0, value.real)
+        for is_sine, part in ((False, 2 * C.real), (True, -2 * C.imag)):
             powers.append(0), sine.append(is_sine)
-            sigmas.append(sigma), omegas.append(np.abs(lam[:, v].imag))
+            sigmas.append(sigma), omegas.append(np.abs(value.imag))
             coefs.append(part)
     Q = np.eye(size) - projector
     N = M @ Q
@@ -166,7 +197,7 @@ def _form(M, lam, vr, w, dots, key, q: int, p: int) -> BatchForm:
         sigmas.append(np.zeros(k)), omegas.append(np.zeros(k)), coefs.append(term)
     return BatchForm(n, np.array(powers, dtype=float), np.array(sine, dtype=bool),
                      np.stack(sigmas, axis=1), np.stack(omegas, axis=1),
-                     np.stack(coefs, axis=1), q, p)
+                     np.stack(coefs, axis=1), len(real), len(pairs)), fine
 
 
 class FormCache:
