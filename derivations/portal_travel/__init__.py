@@ -22,6 +22,8 @@ Files:
 - ``steps.py``: the gear geometry and Form 1's numbers; ``steps_loads.py``:
   (3)–(4) and Table 1's arithmetic; ``steps_startup.py``: the start-up model.
 - ``startup.py``: the three-mass drive with backlash as a hybrid system.
+- ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, the start-up's peak link force for design
+  sweeps (batched).
 - ``published.py``: Form 1 as printed; ``published_loads.py``: Fig. 10's z = 10
   value, (3)–(4), Table 1.
 - ``tables.py``: Tables 1–3 as data.
@@ -42,9 +44,10 @@ from .outputs import outputs
 from .published import PUBLISHED
 from .published_loads import PUBLISHED_LOADS
 from .report import scene_report
+from .sweep_outputs import SWEEP_OUTPUTS
 
 __all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
-           "SCENE_OPTIONS", "TITLE", "build", "hard_cases", "scene_report"]
+           "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE", "build", "hard_cases", "scene_report"]
 
 
 def build() -> Derivation:
