@@ -208,7 +208,9 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
         for mode in np.unique(s.mode[act]):
             idx = act[s.mode[act] == mode]
             A, b = system.matrices(int(mode), idx)
-            cache = forms.setdefault(int(mode), FormCache(N, cond_limit))
+            if int(mode) not in forms:
+                forms[int(mode)] = FormCache(N, cond_limit)
+            cache = forms[int(mode)]
             for where, form in cache.forms(idx, A, b):
                 if form is None:
                     s.fell[idx[where]] = True

@@ -46,8 +46,9 @@ class BatchForm:
         p of each term, and True where it carries sin(ωt); shared by the designs.
     sigmas, omegas : ndarray, shape (k, T)
         σ and ω of each design's terms.
-    coefficients : ndarray, shape (k, T, n + 1, n + 1)
-        The real matrices C_j of each design.
+    coefficients : ndarray, shape (k, T, n + 1, n + 1) or (k, T, n, n + 1)
+        The real matrices C_j of each design (their last row, that of the
+        constant 1, may be left out: only the state's rows are used).
     real, pairs : int
         The terms are ``real`` exponentials, then ``pairs`` (cos, sin) pairs,
         then the powers 0, 1, … of the generalized kernel.
@@ -63,9 +64,9 @@ class BatchForm:
     pairs: int = 0
 
     def vectors(self, x0: np.ndarray) -> np.ndarray:
-        """C_j (x0, 1) of each design, shape (k, T, n + 1)."""
+        """C_j (x0, 1) of each design, shape (k, T, rows of C_j)."""
         z0 = np.concatenate([x0, np.ones((x0.shape[0], 1))], axis=1)
-        return np.einsum("ktij,kj->kti", self.coefficients, z0)
+        return (self.coefficients @ z0[:, None, :, None])[..., 0]
 
     def state(self, t: np.ndarray, vectors: np.ndarray) -> np.ndarray:
         """x(t) of each design (t shape (k,)), from :meth:`vectors`."""
@@ -224,13 +225,14 @@ class FormCache:
                             and p[2].shape == f.powers.shape), None)
                 if key is None:
                     T = f.powers.size
+                    n = f.n           # the rows of the state only (the last is 0 … 0 1)
                     self.parts.append((f.real, f.pairs, f.powers, f.sine,
                                        np.zeros((self.size, T)), np.zeros((self.size, T)),
-                                       np.zeros((self.size,) + f.coefficients.shape[1:])))
+                                       np.zeros((self.size, T, n, n + 1))))
                     key = len(self.parts) - 1
                 rows = idx[new[where]]
                 _, _, _, _, sig, om, coef = self.parts[key]
-                sig[rows], om[rows], coef[rows] = f.sigmas, f.omegas, f.coefficients
+                sig[rows], om[rows], coef[rows] = f.sigmas, f.omegas, f.coefficients[:, :, :f.n]
                 self.signature[rows] = key
         out: list = []
         which = self.signature[idx]
@@ -241,7 +243,7 @@ class FormCache:
                 continue
             q, p, powers, sine, sig, om, coef = self.parts[key]
             rows = idx[where]
-            n = coef.shape[-1] - 1
+            n = coef.shape[-2]
             out.append((where, BatchForm(n, powers, sine, sig[rows], om[rows], coef[rows],
                                          q, p)))
         return out
