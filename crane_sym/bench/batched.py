@@ -28,7 +28,8 @@ __all__ = ["bench_batched", "markdown_rows"]
 
 
 def _grid(case: BatchedBenchCase, n: int):
-    chosen = plan(load_scene(case.scene), [a.format(n=n) for a in case.axes], [case.output])
+    chosen = plan(load_scene(case.scene), [a.format(n=n) for a in case.axes], [case.output],
+                  list(case.at))
     spec = chosen.output(case.output)
     names = tuple(a.name for a in chosen.axes)
     axes = [a.si() for a in chosen.axes]

@@ -104,6 +104,8 @@ class BatchedBenchCase:
     breakdown : callable, optional
         ``breakdown(plan, axes) -> {part: seconds}``: where the batched time
         goes, from a second run.
+    at : tuple of str
+        ``--at`` texts for arguments the scene does not give.
     """
 
     output: str
@@ -113,6 +115,7 @@ class BatchedBenchCase:
     n: int = 100
     sample: int = 24
     breakdown: Callable | None = None
+    at: tuple[str, ...] = ()
 
 
 def batched_cases() -> list[tuple[str, BatchedBenchCase]]:

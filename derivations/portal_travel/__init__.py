@@ -24,6 +24,7 @@ Files:
 - ``startup.py``: the three-mass drive with backlash as a hybrid system.
 - ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, the start-up's peak link force for design
   sweeps (batched).
+- ``bench_cases.py``: ``BATCHED_BENCH_CASES``, that peak's batched bench.
 - ``published.py``: Form 1 as printed; ``published_loads.py``: Fig. 10's z = 10
   value, (3)–(4), Table 1.
 - ``tables.py``: Tables 1–3 as data.
@@ -37,6 +38,7 @@ from __future__ import annotations
 from crane_sym.derivation import Derivation
 
 from . import steps, steps_loads, steps_startup
+from .bench_cases import BATCHED_BENCH_CASES
 from .hard_cases import hard_cases
 from .model import AUTHORS, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .options import SCENE_CHECKS, SCENE_OPTIONS
@@ -46,7 +48,7 @@ from .published_loads import PUBLISHED_LOADS
 from .report import scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
 
-__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
+__all__ = ["BATCHED_BENCH_CASES", "ID", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "PAPER", "SCENE_CHECKS",
            "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE", "build", "hard_cases", "scene_report"]
 
 
