@@ -7,19 +7,23 @@ design sweep of a hybrid model ran it once per design in a Python loop.
 its own mode, state, clock and schedule. A round takes every design still
 running through one phase: the designs are grouped by mode, each group's
 closed forms come from batched eigen-decompositions
-(:func:`crane_sym.mechanics.batched_forms.batch_forms`), the guards of all
-its designs are searched together by the certified no-skip step and refined
-by bracketing on arrays (:mod:`crane_sym.mechanics.batched_events`), the
-output's stationary points of the phase are found the same way, and the
-model's vectorised rule switches the designs that fired each event. Designs
-that reach their end leave the work.
+(:func:`crane_sym.mechanics.batched_forms.batch_forms`, kept per design and
+mode), the guards of every design of every mode are searched together by the
+certified no-skip step and refined by bracketing on arrays
+(:mod:`crane_sym.mechanics.batched_events`), the output's stationary points
+of the phase are found the same way (skipped where a bound of the output
+over the phase cannot pass the design's best so far), and the model's
+vectorised rule switches the designs that fired each event. Designs that
+reach their end leave the work; the last ``tail`` designs still running go on
+from where they are by the per-design route (:func:`simulate`), where plain
+floats beat NumPy's per-call overhead.
 
 What the per-design solver does, this does: the phase ends at the earliest
 guard crossing strictly before the next scheduled instant (the first guard
 on a tie), the scheduled event otherwise; the largest |output| is taken over
 each phase's ends and stationary points (:func:`crane_sym.mechanics.phase_table.largest`).
-A design whose eigen-decomposition the batched route refuses (ill-conditioned,
-a repeated eigenvalue) is run by the per-design route instead
+A design whose eigen-decomposition the batched route refuses (ill-conditioned:
+a defective eigenvalue, a pair nearly real) is run by the per-design route instead
 (:meth:`BatchedSystem.run`, :func:`simulate`), and counted
 (:attr:`BatchedLargest.fallback`). A design with more than ``max_events``
 phases is stopped there and marked (:attr:`BatchedLargest.capped`, value NaN),
