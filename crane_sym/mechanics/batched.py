@@ -316,11 +316,12 @@ def _round(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.
                 dirs.append(np.full(keep.size, float(g.direction)))
                 owner.append(np.stack([np.full(keep.size, gi), np.full(keep.size, j), keep]))
     if sigs:
-        hits = first_crossings(Signals.concat(sigs), np.zeros(sum(a.size for a in spans)),
-                               np.concatenate(spans), np.concatenate(dirs), h_min)
         gi_, j_, r_ = np.concatenate(owner, axis=1)
         base = np.cumsum([0] + [grp.idx.size for grp in groups])
         pos = base[gi_] + r_
+        # one design's guards race: only the earliest of them matters
+        hits = first_crossings(Signals.concat(sigs), np.zeros(sum(a.size for a in spans)),
+                               np.concatenate(spans), np.concatenate(dirs), h_min, owner=pos)
         end, event = np.concatenate([g.end for g in groups]), np.concatenate(
             [g.event for g in groups])
         for j in range(int(j_.max()) + 1):            # earliest; the first guard on a tie

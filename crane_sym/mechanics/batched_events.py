@@ -25,11 +25,16 @@ __all__ = ["all_crossings", "first_crossings", "refine"]
 
 
 def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
-                    h_min: float = 1e-10, xtol: float = 1e-14) -> np.ndarray:
+                    h_min: float = 1e-10, xtol: float = 1e-14,
+                    owner: np.ndarray | None = None) -> np.ndarray:
     """The first t in (start, t_end] where each g changes sign, NaN where none.
 
     ``direction`` (+1, −1 or 0 per row) says on which side a start on the
     surface lies, as for :func:`crane_sym.mechanics.piecewise_linear.first_crossing`.
+    ``owner`` (one integer per row: the rows of one design's guards) asks for
+    the earliest crossing of each owner only: a row stops searching, NaN, once
+    it is past a bracket another row of its owner has found (its crossing,
+    if any, comes later).
     """
     m = start.shape[0]
     out = np.full(m, np.nan)
@@ -43,7 +48,8 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
         if live.size < m:
             if live.size:
                 out[live] = first_crossings(sig.take(live), start[live], t_end[live],
-                                            direction[live], h_min, xtol)
+                                            direction[live], h_min, xtol,
+                                            None if owner is None else owner[live])
             return out
     rows = np.arange(m)
     span = t_end - start
@@ -56,7 +62,7 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     # leaves the band, so rounding noise about 0 is not taken for a crossing
     level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
     lo, hi = _brackets(sig, start, t_end, direction, on_surface, g0, d0, h_min, level=level,
-                       band=band)
+                       band=band, owner=owner)
     found = ~np.isnan(lo)
     same = found & (lo == hi)
     out[same] = hi[same]
@@ -89,13 +95,15 @@ def all_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, h_min: flo
 def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
               on_surface: np.ndarray, g0: np.ndarray, d0: np.ndarray, h_min: float,
               collect: list | None = None, level: np.ndarray | None = None,
-              band: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+              band: np.ndarray | None = None,
+              owner: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
     """(lo, hi) of the first step over which each g leaves its side, (hi, hi)
     where it is on the other side or 0 at hi already, NaN where it does not.
     With ``collect`` (a list) every bracket is appended to it as (rows, lo,
     hi) arrays and the search goes on from hi on the other side. Where
     ``level`` is nonzero the row watches g + level (``level[i]`` turns 0 once g
-    is past ``band[i]`` on its side); lo and hi bracket the value watched."""
+    is past ``band[i]`` on its side); lo and hi bracket the value watched.
+    With ``owner``, a row past the earliest ``hi`` of its owner stops."""
     m = start.shape[0]
     lo, hi = np.full(m, np.nan), np.full(m, np.nan)
     level = np.zeros(m) if level is None else level.copy()
@@ -111,6 +119,9 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     w_end = t.copy()                                 # a window to open on the first round
     L, M2 = np.zeros(m), np.zeros(m)
     act = np.flatnonzero(t < t_end)
+    if owner is not None:
+        _, owner = np.unique(owner, return_inverse=True)
+        cap = np.full(int(owner.max()) + 1 if m else 0, np.inf)
     while act.size:
         renew = act[t[act] >= w_end[act]]            # the window passed: bounds of the next
         if renew.size:
@@ -148,7 +159,11 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         hi[done] = nxt[crossed]
         t[act], gt[act], dt[act] = nxt, gn, dn
         if collect is None:
-            act = act[~crossed & (nxt < t_end[act])]
+            keep = ~crossed & (nxt < t_end[act])
+            if owner is not None:                    # past the owner's earliest bracket
+                np.minimum.at(cap, owner[done], hi[done])
+                keep &= nxt <= cap[owner[act]]
+            act = act[keep]
             continue
         collect.append((done, lo[done], hi[done]))
         side[done] = -side[done]
