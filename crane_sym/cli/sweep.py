@@ -93,7 +93,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run_bench(out_dir: Path, as_json: bool) -> None:
     """Design sweeps against per-design integration, efficiency, 10⁸ designs,
-    LocalCluster (issue 16, item 5)."""
+    LocalCluster (issue 16, item 5); hybrid outputs batched against their
+    per-design loop (issue 28)."""
     from crane_sym.bench.sweeps import bench_sweep, markdown
     results = bench_sweep()
     text = markdown(results)
