@@ -211,6 +211,10 @@ class SweepOutput:
         ``parameters + options`` to an SI array (all of one shape, or scalars),
         ``options`` is the scene's ``[options]`` (duration in s, points); one
         simulation per design, the result of the broadcast shape.
+    batched : bool
+        True where ``evaluate`` solves all the designs of a block together
+        (a batched hybrid solver), so a sweep gives it blocks as large as its
+        workers allow instead of many small ones.
     """
 
     name: str
@@ -219,6 +223,7 @@ class SweepOutput:
     parameters: tuple[str, ...]
     options: tuple[str, ...]
     evaluate: Callable[[Mapping[str, Any], Mapping[str, Any]], Any]
+    batched: bool = False
 
 
 @dataclass

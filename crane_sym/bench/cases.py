@@ -5,8 +5,10 @@ of its swept against per-design integration declares :class:`SweepBenchCase`
 values in ``SWEEP_BENCH_CASES``; one with a response a sampled load can
 reproduce declares :class:`SampledBenchCase` values in ``SAMPLED_BENCH_CASES``
 (both in the paper's ``bench_cases.py``, re-exported by its package, as
-``hard_cases``). :func:`sweep_cases` and :func:`sampled_cases` collect them
-through the registry.
+``hard_cases``). A paper with a hybrid sweep output solved a block at a time
+declares :class:`BatchedBenchCase` values in ``BATCHED_BENCH_CASES``.
+:func:`sweep_cases`, :func:`sampled_cases` and :func:`batched_cases` collect
+them through the registry.
 """
 from __future__ import annotations
 
@@ -15,7 +17,8 @@ from typing import Callable, Mapping, Sequence
 
 from crane_sym import registry
 
-__all__ = ["SampledBenchCase", "SweepBenchCase", "sampled_cases", "sweep_cases"]
+__all__ = ["BatchedBenchCase", "SampledBenchCase", "SweepBenchCase", "batched_cases",
+           "sampled_cases", "sweep_cases"]
 
 
 @dataclass(frozen=True)
@@ -78,6 +81,47 @@ class SampledBenchCase:
     closed_form: Callable
     scale: float
     exact: Callable[[], tuple] | None = None
+
+
+@dataclass(frozen=True)
+class BatchedBenchCase:
+    """A simulated sweep output solved a block at a time (``SweepOutput.batched``)
+    against the per-design loop it replaces.
+
+    Attributes
+    ----------
+    output, scene : str
+        The sweep output and the shipped scene that gives every other value.
+    axes : tuple of str
+        ``--vary`` texts with ``{n}`` for the values an axis takes.
+    per_design : callable
+        ``per_design(values, options) -> ndarray``: the output one design at a
+        time (``values`` as a sweep output's ``evaluate`` takes them).
+    n : int
+        Values per axis (N = n ** len(axes) designs).
+    sample : int
+        Designs the per-design loop runs (seeded picks from the grid).
+    breakdown : callable, optional
+        ``breakdown(plan, axes) -> {part: seconds}``: where the batched time
+        goes, from a second run.
+    at : tuple of str
+        ``--at`` texts for arguments the scene does not give.
+    """
+
+    output: str
+    scene: str
+    axes: tuple[str, ...]
+    per_design: Callable
+    n: int = 100
+    sample: int = 24
+    breakdown: Callable | None = None
+    at: tuple[str, ...] = ()
+
+
+def batched_cases() -> list[tuple[str, BatchedBenchCase]]:
+    """(paper id, case) of every paper that declares ``BATCHED_BENCH_CASES``."""
+    return [(i, c) for i in registry.ids()
+            for c in getattr(registry.module(i), "BATCHED_BENCH_CASES", ())]
 
 
 def sweep_cases() -> list[tuple[str, SweepBenchCase]]:

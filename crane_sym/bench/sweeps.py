@@ -16,7 +16,10 @@ Four measurements in one run, on the cases the papers declare
     command line in a subprocess: its wall time and peak resident memory;
 (d) a ``distributed.LocalCluster`` (2 worker processes, 1 thread each)
     against the local scheduler on the same plan, and whether the two
-    datasets agree bit for bit.
+    datasets agree bit for bit;
+(e) each hybrid output solved a block at a time against its per-design loop
+    (:mod:`crane_sym.bench.batched`): N designs, designs per second, the
+    largest relative difference.
 """
 from __future__ import annotations
 
@@ -33,6 +36,7 @@ from typing import Any
 import numpy as np
 
 from crane_sym import registry
+from crane_sym.bench import batched
 from crane_sym.bench.cases import SweepBenchCase, sweep_cases
 from crane_sym.bench.odes import first_order, parameters
 from crane_sym.bench.rows import least_time
@@ -233,6 +237,7 @@ def bench_sweep() -> dict[str, Any]:
                 "parallel_efficiency": _efficiency(),
                 "large": _big(Path(tmp) / "big"),
                 "cluster": _cluster(Path(tmp)),
+                "batched": batched.run_all(),
                 "cores": os.cpu_count(), "load_average": os.getloadavg()[0]}
 
 
@@ -281,4 +286,5 @@ def markdown(r: dict[str, Any]) -> str:
               f"{c['designs']:.3g} designs × {c['outputs']} outputs, {c['blocks']} blocks "
               f"each: local {c['local_s']:.2f} s, cluster {c['cluster_s']:.2f} s (start "
               f"{c['cluster_start_s']:.1f} s); bit for bit identical: {c['bit_for_bit']}.", ""]
+    lines += batched.markdown_rows(r.get("batched", []))
     return "\n".join(lines)

@@ -100,7 +100,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def run_bench(out_dir: Path, as_json: bool) -> None:
     """Design sweeps against per-design integration, efficiency, 10⁸ designs,
-    a LocalCluster against the local scheduler."""
+    a LocalCluster against the local scheduler; hybrid outputs batched against
+    their per-design loop."""
     from crane_sym.bench.sweeps import bench_sweep, markdown
     results = bench_sweep()
     text = markdown(results)

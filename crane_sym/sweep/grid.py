@@ -54,12 +54,15 @@ from crane_sym.sweep.dataset import dataset, sweep_id
 from crane_sym.sweep.plan import SweepError, SweepPlan
 from crane_sym.sweep.store import deferred_signals, remove_settled, sweep_stage
 
-__all__ = ["CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid", "chunks_for",
-           "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
+__all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid",
+           "chunks_for", "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
            "scheduler_lost", "strided", "sweep_id"]
 
 #: Bytes of float64 output per block of the grid (closed forms).
 CHUNK_BYTES = 8 * 2**20
+#: The most designs in a block of an output solved a block at a time
+#: (``SweepOutput.batched``): its memory grows with the designs of a block.
+BATCH_DESIGNS = 10_000
 #: The most blocks (all outputs together) a sweep plans: Dask keeps a few
 #: tasks per block in memory and spends ~0.1 ms a task.
 MAX_BLOCKS = 100_000
@@ -74,7 +77,27 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
                    options: dict[str, float], *blocks: np.ndarray) -> np.ndarray:
     """One block of the grid: ``output`` at the outer product of the axis
     blocks (SI), every other argument from ``fixed``. Looks the function up by
-    name, so a worker process needs nothing but the installed package."""
+    name, so a worker process needs nothing but the installed package.
+
+    Parameters
+    ----------
+    derivation : str
+        The registered derivation id.
+    output : str
+        The output's name.
+    kind : str
+        ``"closed"`` (a generated function) or ``"simulated"`` (a sweep output).
+    args : tuple of str
+        The output's arguments, in order.
+    axis_names : tuple of str
+        The swept arguments, one per block.
+    fixed : dict
+        Every other argument's value (SI).
+    options : dict
+        The scene's settings a simulated output reads (``duration``, ...).
+    *blocks : ndarray
+        One block of values per axis (SI).
+    """
     n = len(blocks)
     shape = tuple(len(b) for b in blocks)
     grid = {name: np.asarray(b, dtype=float).reshape([-1 if k == i else 1 for k in range(n)])
@@ -117,7 +140,10 @@ def _combine(parts: list[tuple], worst_is_max: bool) -> tuple:
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
                workers: int | None = None) -> tuple[tuple[int, ...], ...]:
     """Chunks of the grid: by bytes for closed forms; for simulated outputs
-    small enough to give every worker several blocks (one design costs ms).
+    small enough to give every worker several blocks (one design costs ms);
+    for outputs that solve a block's designs together (``SweepOutput.batched``)
+    one block per worker, at most :data:`BATCH_DESIGNS` designs (a batched
+    solver pays its per-round overhead once per block).
 
     Parameters
     ----------
@@ -129,9 +155,15 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
         Workers to share the blocks (default: the cores).
     """
     from dask.array.core import normalize_chunks
-    if any(o.kind == "simulated" for o in plan.outputs):
+    simulated = [o for o in plan.outputs if o.kind == "simulated"]
+    if simulated:
         workers = workers or os.cpu_count() or 1
-        chunk_bytes = max(8, min(chunk_bytes, 8 * math.ceil(plan.points / (4 * workers))))
+        specs = registry.sweep_outputs(plan.derivation)
+        if all(getattr(specs.get(o.name), "batched", False) for o in simulated):
+            designs = min(BATCH_DESIGNS, math.ceil(plan.points / workers))
+        else:
+            designs = math.ceil(plan.points / (4 * workers))
+        chunk_bytes = max(8, min(chunk_bytes, 8 * designs))
     return normalize_chunks("auto", plan.shape, limit=chunk_bytes, dtype=np.float64)
 
 

@@ -18,6 +18,7 @@ Files:
 - ``steps_numbers.py``: the printed numbers from Table 1, one step per reading.
 - ``elastic.py``: the elasto-kinetic emergency stop of Fig. 9 (piecewise linear):
   the two-mass hoist as a hybrid system, and Fig. 9's peak as steps.
+- ``elastic_batched.py``: the same model for an array of designs (the batched solver).
 - ``hybrid.py``: ``HYBRID_MODELS``, that run as scenes, sweeps and the bench reach it.
 - ``published.py``: the printed formulas and numbers (``PUBLISHED``).
 - ``outputs.py``: the Outputs for code generation (and the tabulated Fig. 9 response).
@@ -25,6 +26,7 @@ Files:
 - ``options.py``: ``SCENE_OPTIONS``, ``SCENE_CHECKS``.
 - ``report.py``: ``scene_report`` for ``crane-sym run``.
 - ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, the Fig. 9 peak for design sweeps.
+- ``bench_cases.py``: ``BATCHED_BENCH_CASES``, the Fig. 9 peak's batched bench.
 
 The package does nothing on import; ``build()`` returns the ``Derivation``.
 """
@@ -35,6 +37,7 @@ import sympy as sp
 from crane_sym.derivation import Derivation
 
 from . import elastic, steps, steps_numbers
+from .bench_cases import BATCHED_BENCH_CASES
 from .hard_cases import hard_cases
 from .hybrid import HYBRID_MODELS
 from .model import (AUTHORS, BF_SB, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, LF, MF, MODEL, PAPER, SYMBOLS,
@@ -45,9 +48,9 @@ from .published import PUBLISHED
 from .report import scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
 
-__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODELS", "LATEX_NAMES", "PAPER",
-           "SCENE_CHECKS", "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE", "build", "hard_cases",
-           "scene_report"]
+__all__ = ["BATCHED_BENCH_CASES", "ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODELS",
+           "LATEX_NAMES", "PAPER", "SCENE_CHECKS", "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE",
+           "build", "hard_cases", "scene_report"]
 
 
 def build() -> Derivation:

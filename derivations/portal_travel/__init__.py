@@ -24,6 +24,9 @@ Files:
 - ``startup.py``: the three-mass drive with backlash as a hybrid system, and
   the model's Table 1.
 - ``hybrid.py``: ``HYBRID_MODELS``, that start-up as scenes reach it.
+- ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, the start-up's peak link force for design
+  sweeps (batched).
+- ``bench_cases.py``: ``BATCHED_BENCH_CASES``, that peak's batched bench.
 - ``published.py``: Form 1 as printed; ``published_loads.py``: Fig. 10's z = 10
   value, (3)–(4), Table 1.
 - ``tables.py``: Tables 1–3 as data.
@@ -38,6 +41,7 @@ from __future__ import annotations
 from crane_sym.derivation import Derivation
 
 from . import steps, steps_loads, steps_startup
+from .bench_cases import BATCHED_BENCH_CASES
 from .hard_cases import hard_cases
 from .hybrid import HYBRID_MODELS
 from .model import AUTHORS, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
@@ -46,9 +50,11 @@ from .outputs import outputs, tabulated
 from .published import PUBLISHED
 from .published_loads import PUBLISHED_LOADS
 from .report import scene_report
+from .sweep_outputs import SWEEP_OUTPUTS
 
-__all__ = ["ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODELS", "LATEX_NAMES", "PAPER",
-           "SCENE_CHECKS", "SCENE_OPTIONS", "TITLE", "build", "hard_cases", "scene_report"]
+__all__ = ["BATCHED_BENCH_CASES", "ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODELS",
+           "LATEX_NAMES", "PAPER", "SCENE_CHECKS", "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE",
+           "build", "hard_cases", "scene_report"]
 
 
 def build() -> Derivation:

@@ -1,0 +1,218 @@
+"""Events of many signals at once: the certified no-skip search and a
+bracketed refinement, both on arrays.
+
+:func:`first_crossings` is :func:`crane_sym.mechanics.piecewise_linear.sign_change`
+for m signals together (:class:`crane_sym.mechanics.batched_signals.Signals`),
+with the same guarantee: from t, g cannot reach 0 before t + |g(t)|/L (L
+bounds |g'| over the current window) nor before the root of
+|g(t)| − |g'(t)| h − M₂h²/2, so each row steps by the larger of the two
+certified distances, by ``h_min`` where both are smaller, checking the sign
+at each step. Every row keeps its own clock, window and bounds; a row leaves
+the loop once it has bracketed a sign change or reached its end, so the loop
+runs as many rounds as the slowest row needs and each round costs as much as
+the rows still searching. :func:`refine` narrows every bracket together by
+the Illinois variant of regula falsi, with a bisection whenever a step
+shrinks the bracket by less than half, to ``xtol`` (as ``brentq`` does for
+one design).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from crane_sym.mechanics.batched_signals import Signals
+
+__all__ = ["all_crossings", "first_crossings", "refine"]
+
+
+def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
+                    h_min: float = 1e-10, xtol: float = 1e-14,
+                    owner: np.ndarray | None = None) -> np.ndarray:
+    """The first t in (start, t_end] where each g changes sign, NaN where none.
+
+    ``direction`` (+1, −1 or 0 per row) says on which side a start on the
+    surface lies, as for :func:`crane_sym.mechanics.piecewise_linear.first_crossing`.
+    ``owner`` (one integer per row: the rows of one design's guards) asks for
+    the earliest crossing of each owner only: a row stops searching, NaN, once
+    it is past a bracket another row of its owner has found (its crossing,
+    if any, comes later).
+    """
+    m = start.shape[0]
+    out = np.full(m, np.nan)
+    # a signal whose constant outweighs everything else it holds over the search
+    # (and by more than the surface band) keeps its sign: no search
+    if np.all(start == 0):
+        every = np.arange(m)
+        band = np.maximum(sig.bounds(every, start, np.minimum(h_min, t_end))[0] * h_min,
+                          1e-12 * sig.size(every))
+        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - sig.spread(t_end) <= 2 * band)
+        if live.size < m:
+            if live.size:
+                out[live] = first_crossings(sig.take(live), start[live], t_end[live],
+                                            direction[live], h_min, xtol,
+                                            None if owner is None else owner[live])
+            return out
+    rows = np.arange(m)
+    span = t_end - start
+    g0, d0 = sig.both(rows, start)
+    reach = start + np.minimum(h_min, span)
+    near = sig.bounds(rows, start, reach)[0] * h_min
+    band = np.maximum(near, 1e-12 * sig.size(rows))
+    on_surface = np.abs(g0) <= band
+    # a start on the surface with a side: the search watches g + side·band until g
+    # leaves the band, so rounding noise about 0 is not taken for a crossing
+    level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
+    lo, hi = _brackets(sig, start, t_end, direction, on_surface, g0, d0, h_min, level=level,
+                       band=band, owner=owner)
+    found = ~np.isnan(lo)
+    same = found & (lo == hi)
+    out[same] = hi[same]
+    open_ = np.flatnonzero(found & (lo < hi))
+    if open_.size:
+        out[open_] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_])
+    return out
+
+
+def all_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, h_min: float = 1e-10,
+                  xtol: float = 1e-14) -> tuple[np.ndarray, np.ndarray]:
+    """Every sign change of each g in (start, t_end], as (row, time) arrays:
+    the certified search goes on past each bracket on the other side (the
+    stationary points of a phase's output, all of them in one pass)."""
+    m = start.shape[0]
+    rows = np.arange(m)
+    g0, d0 = sig.both(rows, start)
+    found: list = []
+    _brackets(sig, start, t_end, np.zeros(m), np.zeros(m, dtype=bool), g0, d0, h_min, found)
+    if not found:
+        return np.zeros(0, dtype=np.intp), np.zeros(0)
+    which, lo, hi = (np.concatenate(parts) for parts in zip(*found))
+    out = hi.copy()
+    open_ = np.flatnonzero(lo < hi)
+    if open_.size:
+        out[open_] = refine(sig, which[open_], lo[open_], hi[open_], xtol)
+    return which, out
+
+
+def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
+              on_surface: np.ndarray, g0: np.ndarray, d0: np.ndarray, h_min: float,
+              collect: list | None = None, level: np.ndarray | None = None,
+              band: np.ndarray | None = None,
+              owner: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """(lo, hi) of the first step over which each g leaves its side, (hi, hi)
+    where it is on the other side or 0 at hi already, NaN where it does not.
+    With ``collect`` (a list) every bracket is appended to it as (rows, lo,
+    hi) arrays and the search goes on from hi on the other side. Where
+    ``level`` is nonzero the row watches g + level (``level[i]`` turns 0 once g
+    is past ``band[i]`` on its side); lo and hi bracket the value watched.
+    With ``owner``, a row past the earliest ``hi`` of its owner stops."""
+    m = start.shape[0]
+    lo, hi = np.full(m, np.nan), np.full(m, np.nan)
+    level = np.zeros(m) if level is None else level.copy()
+    t, gt, dt = start.copy(), g0 + level, d0.copy()
+    window = sig.window(np.arange(m), np.maximum(t_end - start, h_min))
+    side = np.where(on_surface & (direction != 0), -direction, np.sign(gt))
+    zero = np.flatnonzero(side == 0)                 # on the surface, either way
+    if zero.size:
+        t[zero] = start[zero] + np.minimum(h_min, t_end[zero] - start[zero])
+        gt[zero], dt[zero] = sig.both(zero, t[zero])
+        gt[zero] += level[zero]
+        side[zero] = np.sign(gt[zero])
+    w_end = t.copy()                                 # a window to open on the first round
+    L, M2 = np.zeros(m), np.zeros(m)
+    act = np.flatnonzero(t < t_end)
+    if owner is not None:
+        _, owner = np.unique(owner, return_inverse=True)
+        cap = np.full(int(owner.max()) + 1 if m else 0, np.inf)
+    while act.size:
+        renew = act[t[act] >= w_end[act]]            # the window passed: bounds of the next
+        if renew.size:
+            w_end[renew] = np.minimum(t[renew] + window[renew], t_end[renew])
+            L[renew], M2[renew] = sig.bounds(renew, t[renew], w_end[renew])
+            # where the bounds over the whole rest are nearly those of the window
+            # (an undamped oscillation, a rigid motion), the rest is the window
+            Lr, Mr = sig.bounds(renew, t[renew], t_end[renew])
+            whole = (Lr <= 2 * L[renew]) & (Mr <= 4 * M2[renew])
+            pick = renew[whole]
+            w_end[pick], L[pick], M2[pick] = t_end[pick], Lr[whole], Mr[whole]
+        ta, ga, sa, La, Ma = t[act], gt[act], side[act], L[act], M2[act]
+        ag = np.abs(ga)
+        d1 = np.abs(dt[act])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            newton = 2 * ag / (d1 + np.sqrt(d1 * d1 + 2 * Ma * ag))
+            step = np.maximum(ag / La, newton)
+        step = np.where(La <= 0, w_end[act] - ta, step)     # g constant on the window
+        step = np.where(np.sign(ga) != sa, 0.0, step)
+        step = np.where(np.isnan(step), 0.0, step)
+        nxt = np.minimum(ta + np.maximum(step, h_min), w_end[act])
+        gn, dn = sig.both(act, nxt)
+        la = level[act]
+        gn = gn + la
+        banded = np.flatnonzero(la != 0)
+        if banded.size:                              # out of the band on its side: plain g
+            rows_b = act[banded]
+            out = side[rows_b] * (gn[banded] - la[banded]) > band[rows_b]
+            gn[banded[out]] -= la[banded[out]]
+            level[rows_b[out]] = 0.0
+        crossed = (gn == 0.0) | (np.sign(gn) != sa)
+        at_hi = crossed & ((gn == 0.0) | (np.sign(ga) != sa))
+        done = act[crossed]
+        lo[done] = np.where(at_hi[crossed], nxt[crossed], ta[crossed])
+        hi[done] = nxt[crossed]
+        t[act], gt[act], dt[act] = nxt, gn, dn
+        if collect is None:
+            keep = ~crossed & (nxt < t_end[act])
+            if owner is not None:                    # past the owner's earliest bracket
+                np.minimum.at(cap, owner[done], hi[done])
+                keep &= nxt <= cap[owner[act]]
+            act = act[keep]
+            continue
+        collect.append((done, lo[done], hi[done]))
+        side[done] = -side[done]
+        flat = done[side[done] == 0]                     # began on the surface: g decides
+        side[flat] = np.sign(gt[flat])
+        act = act[nxt < t_end[act]]
+    return lo, hi
+
+
+def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
+           xtol: float = 1e-14, level: np.ndarray | float = 0.0,
+           max_rounds: int = 200) -> np.ndarray:
+    """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
+    signs at the ends, or 0 at one), to ``xtol`` plus 4 ulp of the root."""
+    rtol = 4 * np.finfo(float).eps
+    a, b = lo.copy(), hi.copy()
+    level = np.broadcast_to(np.asarray(level, dtype=float), a.shape)
+    fa, fb = sig.value(rows, a) + level, sig.value(rows, b) + level
+    root = np.where(fa == 0.0, a, np.where(fb == 0.0, b, np.nan))
+    live = np.flatnonzero(np.isnan(root))
+    last = np.zeros(a.shape[0], dtype=int)           # which end moved last: −1 a, +1 b
+    width = b - a
+    for _ in range(max_rounds):
+        if not live.size:
+            break
+        al, bl, fal, fbl = a[live], b[live], fa[live], fb[live]
+        secant = bl - fbl * (bl - al) / (fbl - fal)
+        mid = 0.5 * (al + bl)
+        halve = (b[live] - a[live]) > 0.5 * width[live]     # the last step shrank too little
+        x = np.where(halve | ~((secant > al) & (secant < bl)), mid, secant)
+        width[live] = b[live] - a[live]
+        fx = sig.value(rows[live], x) + level[live]
+        hit = fx == 0.0
+        left = np.sign(fx) == np.sign(fal)                  # the root is in [x, b]
+        # Illinois: the end that stays twice in a row has its value halved
+        keep_b = left & ~hit
+        keep_a = ~left & ~hit
+        fb_new = np.where(keep_b & (last[live] == -1), 0.5 * fbl, fbl)
+        fa_new = np.where(keep_a & (last[live] == 1), 0.5 * fal, fal)
+        a[live] = np.where(keep_b, x, al)
+        fa[live] = np.where(keep_b, fx, fa_new)
+        b[live] = np.where(keep_a, x, bl)
+        fb[live] = np.where(keep_a, fx, fb_new)
+        last[live] = np.where(keep_b, -1, 1)
+        root[live[hit]] = x[hit]
+        tol = xtol + rtol * np.abs(x)
+        close = ~hit & (b[live] - a[live] <= 2 * tol)
+        root[live[close]] = 0.5 * (a[live[close]] + b[live[close]])
+        live = live[~hit & ~close]
+    if live.size:
+        root[live] = 0.5 * (a[live] + b[live])
+    return root

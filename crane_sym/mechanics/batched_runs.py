@@ -1,0 +1,123 @@
+"""Any piecewise-linear model through the batched solver: an array of
+per-design runs (:class:`crane_sym.mechanics.phase_table.HybridRun`) seen as
+one :class:`crane_sym.mechanics.batched.BatchedSystem`.
+
+A model written for one design (a paper's, or one assembled from components)
+describes each mode by Python code per design. :class:`RunFamily` asks each
+design's system for its matrices, guards and output, stacks them for the
+designs in a mode, and calls each design's switching rule on the designs
+that fired an event; the closed forms, the event search and the extrema are
+the batched solver's. The Python calls cost per design and phase what a
+model written for arrays (such as 001's ``elastic_batched.HoistFamily``)
+saves; the closed forms and the search, where the time of a run goes, are
+shared. The designs' guards in a mode must agree in number, names and
+directions (they do for designs of one model).
+"""
+from __future__ import annotations
+
+from typing import Hashable, Sequence
+
+import numpy as np
+
+from crane_sym.mechanics.batched import BatchedGuard, BatchedLargest, largest_batched
+from crane_sym.mechanics.phase_table import HybridRun
+
+__all__ = ["RunFamily", "largest_of_runs"]
+
+
+class RunFamily:
+    """The runs as one family: mode codes are given to modes as they appear."""
+
+    def __init__(self, runs: Sequence[HybridRun]) -> None:
+        self.runs = list(runs)
+        self.n = len(np.asarray(self.runs[0].x0))
+        self._modes: list[Hashable] = []
+        self._codes: dict[Hashable, int] = {}
+
+    def code(self, mode: Hashable) -> int:
+        """The code of ``mode`` (a new one on its first appearance)."""
+        if mode not in self._codes:
+            self._codes[mode] = len(self._modes)
+            self._modes.append(mode)
+        return self._codes[mode]
+
+    def mode(self, code: int) -> Hashable:
+        """The mode of a code."""
+        return self._modes[code]
+
+    def matrices(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Each design's (A, b) in the mode, stacked."""
+        pairs = [self.runs[i].system.matrices(self._modes[mode]) for i in index]
+        return (np.array([np.asarray(A, float) for A, _ in pairs]),
+                np.array([np.asarray(b, float) for _, b in pairs]))
+
+    def guards(self, mode: int, index: np.ndarray) -> list[BatchedGuard]:
+        """Each design's guards in the mode, stacked guard by guard."""
+        lists = [self.runs[i].system.guards(self._modes[mode]) for i in index]
+        first = lists[0]
+        if any([(g.name, g.direction) for g in gs] != [(g.name, g.direction) for g in first]
+               for gs in lists):
+            raise ValueError(f"designs differ in the guards of mode {self._modes[mode]!r}")
+        return [BatchedGuard(g.name, np.array([gs[j].weights for gs in lists], dtype=float),
+                             np.array([gs[j].constant for gs in lists], dtype=float),
+                             g.direction) for j, g in enumerate(first)]
+
+    def switch(self, mode: int, event: str, index: np.ndarray, t: np.ndarray,
+               x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Each design's own rule, on the designs that fired ``event``."""
+        codes, out = np.empty(index.size, dtype=np.int64), np.empty_like(x)
+        for k, i in enumerate(index):
+            new, out[k] = self.runs[i].system.switch(self._modes[mode], event, float(t[k]),
+                                                     x[k].copy())
+            codes[k] = self.code(new)
+        return codes, out
+
+    def output(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Each run's output in the mode, stacked (as :func:`largest` takes it:
+        the run's ``scale`` is its table's, not applied here)."""
+        pairs = [self.runs[i].output(self._modes[mode]) for i in index]
+        return (np.array([np.asarray(w, float) for w, _ in pairs]),
+                np.array([float(k) for _, k in pairs]))
+
+    def run(self, i: int) -> HybridRun:
+        """Design ``i`` itself."""
+        return self.runs[i]
+
+
+def largest_of_runs(runs: Sequence[HybridRun], **options) -> BatchedLargest:
+    """The largest |output| (or, with ``magnitude=False``, output) of each
+    run, the runs solved together
+    (:func:`crane_sym.mechanics.batched.largest_batched`). Scheduled events
+    a run lacks are taken as never happening.
+
+    Parameters
+    ----------
+    runs : sequence of HybridRun
+        One run a design: system, initial mode and state, end, schedule.
+    **options
+        Passed on to :func:`crane_sym.mechanics.batched.largest_batched`
+        (``magnitude`` and the solver's tolerances).
+    """
+    family = RunFamily(runs)
+    columns = sorted({key for r in runs for _, key in _numbered(r.schedule)})
+    times = np.full((len(runs), len(columns)), np.inf)
+    for i, r in enumerate(runs):
+        for t, key in _numbered(r.schedule):
+            times[i, columns.index(key)] = t
+    modes = np.array([family.code(r.mode) for r in runs])
+    x0 = np.array([np.asarray(r.x0, float) for r in runs])
+    t_end = np.array([r.t_end for r in runs], dtype=float)
+    return largest_batched(family, modes, x0, t_end, [name for name, _ in columns], times,
+                           **options)
+
+
+def _numbered(schedule) -> list[tuple[float, tuple[str, int]]]:
+    """(time, (name, occurrence)) of each scheduled event: a name scheduled
+    several times (the steps of a start panel) keeps each instant."""
+    seen: dict[str, int] = {}
+    out = []
+    for t, name in schedule:
+        k = seen.get(name, 0)
+        seen[name] = k + 1
+        out.append((float(t), (name, k)))
+    return out

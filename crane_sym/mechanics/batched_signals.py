@@ -1,0 +1,198 @@
+"""Scalar signals of many phases at once: g(t) = Σ_j a_j β_j(t) + k per row.
+
+An event function or an output w·x + k along a phase of
+:mod:`crane_sym.mechanics.batched_forms` is such a signal: its terms in
+three blocks (exponentials, oscillator pairs, the polynomial of the
+generalized kernel), each evaluated with as few transcendentals as it needs,
+and the bounds of |g'| and |g''| that the certified event search steps by
+(:mod:`crane_sym.mechanics.batched_events`), as
+:class:`crane_sym.mechanics.closed_forms.ClosedForm` gives them for one design.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from crane_sym.mechanics.batched_forms import BatchForm
+
+__all__ = ["Signals"]
+
+
+@dataclass
+class Signals:
+    """m scalar signals g_i(t) = Σ_j a_ij β_ij(t) + k_i on their phase's own clock,
+    in three blocks of terms, each evaluated with as few transcendentals as it needs:
+
+    - ``real``: a e^{σt} (a nonzero real eigenvalue), amplitudes and σ (m, R);
+    - ``pairs``: e^{σt}(a cos ωt + b sin ωt), amplitudes a, b and σ, ω (m, P);
+    - ``poly``: Σ_j c_j t^j (the generalized kernel), c (m, D), the constant in c_0.
+
+    Every method takes ``rows`` (the signals asked about) and arrays of that length.
+    """
+
+    real_amps: np.ndarray
+    real_sigmas: np.ndarray
+    cos_amps: np.ndarray
+    sin_amps: np.ndarray
+    pair_sigmas: np.ndarray
+    pair_omegas: np.ndarray
+    poly: np.ndarray
+
+    @classmethod
+    def of(cls, form: BatchForm, amps: np.ndarray, const: np.ndarray,
+           owner: np.ndarray | None = None) -> "Signals":
+        """Signals from a form's term amplitudes (m, T) and constants (m,);
+        row i belongs to design ``owner[i]`` of the form (default: row i)."""
+        q, p = form.real, form.pairs
+        sig = form.sigmas if owner is None else form.sigmas[owner]
+        om = form.omegas if owner is None else form.omegas[owner]
+        poly = amps[:, q + 2 * p:].copy()
+        poly[:, 0] += const
+        return cls(amps[:, :q], sig[:, :q], amps[:, q:q + 2 * p:2], amps[:, q + 1:q + 2 * p:2],
+                   sig[:, q:q + 2 * p:2], om[:, q:q + 2 * p:2], poly)
+
+    @classmethod
+    def concat(cls, parts: list["Signals"]) -> "Signals":
+        """The rows of ``parts`` in one, each block padded with zero terms to the
+        widest (a zero term adds an exact 0): one search for every mode."""
+        if len(parts) == 1:
+            return parts[0]
+        rows = sum(p.poly.shape[0] for p in parts)
+        blocks = []
+        for name in cls._FIELDS:
+            arrays = [getattr(p, name) for p in parts]
+            out = np.zeros((rows, max(a.shape[1] for a in arrays)))
+            at = 0
+            for a in arrays:
+                out[at:at + a.shape[0], : a.shape[1]] = a
+                at += a.shape[0]
+            blocks.append(out)
+        return cls(*blocks)
+
+    _FIELDS = ("real_amps", "real_sigmas", "cos_amps", "sin_amps", "pair_sigmas",
+               "pair_omegas", "poly")
+
+    def take(self, rows: np.ndarray) -> "Signals":
+        """The signals ``rows`` only."""
+        return Signals(*(a[rows] for a in (self.real_amps, self.real_sigmas, self.cos_amps,
+                                           self.sin_amps, self.pair_sigmas, self.pair_omegas,
+                                           self.poly)))
+
+    def value(self, rows: np.ndarray, t: np.ndarray) -> np.ndarray:
+        """g at ``t``."""
+        return self.both(rows, t, slope=False)[0]
+
+    def both(self, rows: np.ndarray, t: np.ndarray,
+             slope: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
+        """g and (with ``slope``) g' at ``t``, from one evaluation of each term."""
+        poly = self.poly[rows]
+        D = poly.shape[1]
+        g = poly[:, D - 1].copy()
+        for j in range(D - 2, -1, -1):                 # Horner
+            g = g * t + poly[:, j]
+        d = None
+        if slope:
+            d = np.zeros_like(t)
+            for j in range(D - 1, 0, -1):
+                d = d * t + j * poly[:, j]
+        tt = t[:, None]
+        if self.cos_amps.shape[1]:
+            a, b = self.cos_amps[rows], self.sin_amps[rows]
+            s, w = self.pair_sigmas[rows], self.pair_omegas[rows]
+            wt = w * tt
+            c, sn = np.cos(wt), np.sin(wt)
+            wave = a * c + b * sn
+            grow = np.exp(s * tt) if s.any() else None
+            if grow is not None:
+                wave *= grow
+            g += _rowsum(wave)
+            if slope:
+                turn = w * (b * c - a * sn)
+                if grow is not None:
+                    turn *= grow
+                d += _rowsum(s * wave + turn)
+        if self.real_amps.shape[1]:
+            s = self.real_sigmas[rows]
+            term = self.real_amps[rows] * np.exp(s * tt)
+            g += _rowsum(term)
+            if slope:
+                d += _rowsum(s * term)
+        return g, d
+
+    def size(self, rows: np.ndarray) -> np.ndarray:
+        """Σ |a_j| + |k|: the scale of a signal (the constant in c_0)."""
+        return (np.abs(self.real_amps[rows]).sum(axis=1)
+                + np.abs(self.cos_amps[rows]).sum(axis=1)
+                + np.abs(self.sin_amps[rows]).sum(axis=1) + np.abs(self.poly[rows]).sum(axis=1))
+
+    def bounds(self, rows: np.ndarray, t0: np.ndarray,
+               t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Upper bounds of |g'| and |g''| on [t0, t1] (0 ≤ t0 ≤ t1), term by term
+        as :meth:`crane_sym.mechanics.closed_forms.ClosedForm.derivative_bound`,
+        a pair a cos + b sin = R cos(ωt − φ) with its amplitude R = √(a² + b²)."""
+        poly = np.abs(self.poly[rows])
+        D = poly.shape[1]
+        L, M2 = np.zeros_like(t0), np.zeros_like(t0)
+        for j in range(1, D):
+            L += poly[:, j] * j * t1 ** (j - 1)
+            if j > 1:
+                M2 += poly[:, j] * j * (j - 1) * t1 ** (j - 2)
+        a0, a1 = t0[:, None], t1[:, None]
+        if self.cos_amps.shape[1]:
+            s = self.pair_sigmas[rows]
+            rate = np.abs(s) + self.pair_omegas[rows]
+            amp = np.hypot(self.cos_amps[rows], self.sin_amps[rows])
+            if s.any():
+                amp = amp * np.exp(np.maximum(s * a0, s * a1))
+            L += _rowsum(amp * rate)
+            M2 += _rowsum(amp * rate * rate)
+        if self.real_amps.shape[1]:
+            s = self.real_sigmas[rows]
+            amp = np.abs(self.real_amps[rows]) * np.exp(np.maximum(s * a0, s * a1))
+            L += _rowsum(amp * np.abs(s))
+            M2 += _rowsum(amp * s * s)
+        return L, M2
+
+    def spread(self, horizon: np.ndarray) -> np.ndarray:
+        """A bound of |g(t) − g_c| on [0, horizon], g_c the constant term:
+        Σ_{j≥1} |c_j| H^j, and for each pair √(a² + b²)·max(1, e^{σH}), each
+        exponential |a|·max(1, e^{σH}). Where |g_c| exceeds it, g keeps the
+        sign of g_c over the whole phase."""
+        H = horizon
+        D = self.poly.shape[1]
+        out = np.zeros_like(H)
+        for j in range(D - 1, 0, -1):               # Horner on |c_j|
+            out = (out + np.abs(self.poly[:, j])) * H
+        tt = H[:, None]
+        if self.cos_amps.shape[1]:
+            amp = np.hypot(self.cos_amps, self.sin_amps)
+            s = self.pair_sigmas
+            if s.any():
+                amp = amp * np.maximum(1.0, np.exp(s * tt))
+            out += _rowsum(amp)
+        if self.real_amps.shape[1]:
+            out += (np.abs(self.real_amps)
+                    * np.maximum(1.0, np.exp(self.real_sigmas * tt))).sum(axis=1)
+        return out
+
+    def constant(self) -> np.ndarray:
+        """True where a signal has no term but its constant."""
+        return ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
+                 | np.any(self.sin_amps != 0, axis=1) | np.any(self.poly[:, 1:] != 0, axis=1))
+
+    def window(self, rows: np.ndarray, scale: np.ndarray) -> np.ndarray:
+        """A window over which the bounds stay tight: a quarter of the shortest
+        period, no longer than the e-folding time of a growing term, nor ``scale``."""
+        out = scale.copy()
+        wmax = self.pair_omegas[rows].max(axis=1, initial=0.0)
+        smax = np.maximum(self.pair_sigmas[rows].max(axis=1, initial=0.0),
+                          self.real_sigmas[rows].max(axis=1, initial=0.0))
+        with np.errstate(divide="ignore"):
+            out = np.where(wmax > 0, np.minimum(out, 0.5 * np.pi / wmax), out)
+            out = np.where(smax > 0, np.minimum(out, 1.0 / smax), out)
+        return out
+
+def _rowsum(a: np.ndarray) -> np.ndarray:
+    """Σ over a row's terms; a single term as it is (a reduction costs more)."""
+    return a[:, 0] if a.shape[1] == 1 else a.sum(axis=1)

@@ -1,0 +1,24 @@
+"""Bench cases of paper 003 (``crane_sym.bench.cases``).
+
+- Batched: the start-up's largest F1 + F2 (``peak_startup_link_force``) over
+  the link stiffness C_пр and its damping ratio ζ of scene
+  ``fig12_startup_backlash``, backlash half a turn of the fast shaft (π rad),
+  30 × 30 designs solved as one block by the batched solver (each design's
+  own rules, ``crane_sym.mechanics.batched_runs``), against the per-design
+  loop on a sample.
+"""
+from __future__ import annotations
+
+from crane_sym.bench.cases import BatchedBenchCase
+
+
+def _per_design(values, options):
+    from .sweep_outputs import peak_per_design
+    return peak_per_design(values, options)
+
+
+BATCHED_BENCH_CASES = (
+    BatchedBenchCase("peak_startup_link_force", "fig12_startup_backlash",
+                     ("c_l=2:8:{n}", "zeta=0.02:0.1:{n}"), _per_design, n=30, sample=24,
+                     at=("phi_b=3.141592653589793",)),
+)

@@ -1,0 +1,66 @@
+"""Responses of paper 003 that a design sweep maps over its grid.
+
+The start-up of the travel drive with backlash in both links (Fig. 12, Table
+1) has phases whose number and ends depend on the design: each design is the
+three-mass hybrid system of ``startup.py`` on Table 1's hold times, and a
+block of the grid is solved at once by the batched solver
+(``crane_sym.mechanics.batched_runs``: each design's own rules, the closed
+forms, events and extrema batched; the two equal sides' repeated eigenvalues
+clustered). It agrees with ``ThreeMassTravel.peak`` of each design to 1e-9
+(``tests/test_batched.py``). The backlash φ_b is no scene parameter (the
+scene's report runs each value of its options): give it with ``--at`` or
+``--vary``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from crane_sym.derivation import SweepOutput
+
+_PARAMETERS = ("P_m", "omega_n", "omega_0", "J_r", "n_m", "v_n", "lambda_p", "c_l", "zeta",
+               "m_k", "W_f", "W_w", "phi_b")
+#: The start-up's end [s]: Table 1's plotted 4 s, past the last step (1.6 s).
+END = 4.0
+
+
+def _designs(values):
+    """(shape, one HybridRun per design) of the start-up."""
+    from crane_sym.mechanics.phase_table import HybridRun
+
+    from .startup import drive, reduced
+    names = list(values)
+    arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
+    runs = []
+    for index in np.ndindex(arrays[0].shape):
+        p = {n: float(a[index]) for n, a in zip(names, arrays)}
+        model = drive(reduced(p, p["phi_b"]), p)
+        runs.append(HybridRun(model, model.start_mode(), np.zeros(6), END, model.schedule(),
+                              model.total))
+    return arrays[0].shape, runs
+
+
+def _peak_startup_link_force(values, options) -> np.ndarray:
+    """The largest F1 + F2 of the start-up from rest over Table 1's hold times,
+    the block's designs solved together."""
+    from crane_sym.mechanics.batched_runs import largest_of_runs
+    shape, runs = _designs(values)
+    result = largest_of_runs(runs, magnitude=False)
+    if result.capped.any():
+        raise RuntimeError("peak_startup_link_force: more than 10000 events in the start-up "
+                           f"of design {int(np.flatnonzero(result.capped)[0])} of a block")
+    return result.value.reshape(shape)
+
+
+def peak_per_design(values, options) -> np.ndarray:
+    """:func:`_peak_startup_link_force` one design at a time (the reference)."""
+    shape, runs = _designs(values)
+    return np.array([r.system.peak(r.solve())[1] for r in runs]).reshape(shape)
+
+
+SWEEP_OUTPUTS = {
+    "peak_startup_link_force": SweepOutput(
+        "peak_startup_link_force", "N",
+        "Largest F1 + F2 of the two links in the start-up with backlash (Fig. 12, Table 1's "
+        "hold times, over 4 s), phases in closed form", _PARAMETERS, (),
+        _peak_startup_link_force, batched=True),
+}

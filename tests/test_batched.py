@@ -1,0 +1,305 @@
+"""The batched hybrid solver (issue 28, item 1): every design of a seeded grid
+of paper 001's emergency stop, hard cases included, against the per-design
+solver to 1e-9 of the peak; the vectorised event search against
+``first_crossing``; refused designs counted and run per design; a cap stated."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from crane_sym.derivations.hoist_brakes.elastic_batched import HoistFamily, family_from
+from crane_sym.derivations.hoist_brakes.model import G, TABLE1
+from crane_sym.mechanics.batched_events import all_crossings, first_crossings
+from crane_sym.mechanics.batched_forms import batch_forms
+from crane_sym.mechanics.batched_signals import Signals
+from crane_sym.mechanics.closed_forms import closed_form
+from crane_sym.mechanics.phase_table import largest
+from crane_sym.mechanics.piecewise_linear import first_crossing
+
+RPM = 2 * np.pi / 60
+
+
+def _base() -> dict[str, float]:
+    q = {k: float(v) for k, v in TABLE1.items()}
+    q.update(g=float(G), m_p=52e3, omega1=1500 * RPM, delta=np.radians(q["backlash_deg"]))
+    return q
+
+
+def hard_grid(seed: int = 28) -> HoistFamily:
+    """Table 1's hoist: a seeded box of ordinary designs and the hard ones:
+    backlash down to 0, stiffness over six decades, brakes that hold at once,
+    contacts that chatter, a damped mesh."""
+    rng = np.random.default_rng(seed)
+    base, rows = _base(), []
+
+    def add(zeta: float = 0.0, **kw) -> None:
+        rows.append({**base, "zeta": zeta, **kw})
+    for _ in range(10):                                           # the ordinary box
+        add(c=10 ** rng.uniform(4, 5), delta=np.radians(rng.uniform(0.5, 3)),
+            m_p=rng.uniform(0, 52e3), omega1=rng.uniform(500, 1500) * RPM)
+    for deg in (0.0, 1e-9, 1e-6, 1e-3):                          # backlash -> 0
+        add(delta=np.radians(deg))
+    for c in (1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8):                # seven decades
+        add(c=c)
+    add(omega1=0.0, t_SB=0.0, t_BB=0.0)                           # held from the start
+    add(M_SB=1e9, t_SB=0.0)                                       # a brake that holds at once
+    add(M_SB=1e9, M_BB=1e9)                                       # both, after their delays
+    add(delta=np.radians(0.01), c=1e6)                            # a contact that chatters
+    add(delta=np.radians(0.05), c=3e5, m_p=0.0)
+    add(zeta=0.02)                                                # a damped mesh
+    add(zeta=0.3, delta=np.radians(0.5))
+    q = {k: np.array([r[k] for r in rows]) for k in rows[0]}
+    zeta = q.pop("zeta")
+    plain = family_from(q, 1.0)
+    reduced = plain.J1 * plain.J_d / (plain.J1 + plain.J_d)
+    return family_from(q, 1.0, b=2 * zeta * np.sqrt(plain.c * reduced))
+
+
+def _per_design(family: HoistFamily, i: int) -> float:
+    run = family.run(i)
+    return largest(run.solve(), run.system, run.output, magnitude=True)[1]
+
+
+@pytest.fixture(scope="module")
+def grid():
+    family = hard_grid()
+    return family, family.peaks()
+
+
+def test_every_design_of_the_hard_grid_agrees_with_the_per_design_solver(grid):
+    family, result = grid
+    assert result.summary["capped"] == 0
+    assert result.summary["batched"] + result.summary["fallback"] == family.J1.size
+    for i in range(family.J1.size):
+        expected = _per_design(family, i)
+        assert abs(result.value[i]) == pytest.approx(abs(expected), rel=1e-9, abs=1e-12), i
+
+
+def test_the_hard_cases_are_hard(grid):
+    """The grid holds what it claims: a run held from the start, runs of
+    hundreds of phases (a chattering contact), and stiffness spanning the
+    phase counts."""
+    family, result = grid
+    held = np.flatnonzero(family.omega0 == 0)
+    assert result.phases[held].min() <= 5
+    assert result.phases.max() > 200
+    assert np.all(result.time >= 0) and np.all(result.time <= family.t_end)
+
+
+def test_a_refused_design_runs_per_design_and_is_counted():
+    """cond_limit below 1 refuses every eigen-decomposition: all designs take
+    the per-design route, the same numbers."""
+    base = _base()
+    q = {k: np.full(3, v) for k, v in base.items()}
+    q["c"] = np.array([2e4, 4e4, 8e4])
+    family = family_from(q, 1.0)
+    forced = family.peaks(cond_limit=0.5, tail=0)
+    assert forced.summary["fallback"] == 3 and forced.summary["batched"] == 0
+    for i in range(3):
+        assert forced.value[i] == _per_design(family, i)
+
+
+def test_a_defective_eigenvalue_is_refused():
+    """A critically damped oscillator has a double real eigenvalue without two
+    eigenvectors: the batched closed forms refuse it; the undamped one they take."""
+    c, J = 4e4, 20.0
+    A = np.zeros((2, 2, 2))
+    A[:, 0, 1] = 1.0
+    A[:, 1, 0] = -c / J
+    A[1, 1, 1] = -2 * np.sqrt(c / J)                  # ζ = 1
+    parts, refused = batch_forms(A, np.zeros((2, 2)))
+    assert list(refused) == [1] and [list(w) for w, _ in parts] == [[0]]
+
+
+def test_a_design_past_the_event_cap_is_marked_not_truncated():
+    base = _base()
+    q = {k: np.full(2, v) for k, v in base.items()}
+    q["delta"] = np.radians([3.0, 0.01])
+    q["c"] = np.array([4e4, 1e6])
+    result = family_from(q, 1.0).peaks(max_events=60, tail=0)
+    assert list(result.capped) == [False, True]
+    assert np.isnan(result.value[1]) and np.isfinite(result.value[0])
+    assert result.summary["capped"] == 1
+
+
+def test_the_tail_route_continues_where_the_batched_route_stopped():
+    family = hard_grid()
+    sub = np.arange(10)
+    part = HoistFamily(*(getattr(family, f)[sub] for f in (
+        "J1", "J_d", "c", "s", "M_L", "M_st", "M_SB", "M_BB", "M_M", "b", "omega0", "t_end",
+        "t_M", "t_SB", "t_BB")))
+    batched, alone = part.peaks(tail=0), part.peaks(tail=10 ** 6)
+    assert alone.summary["finished_alone"] == 10
+    np.testing.assert_allclose(np.abs(batched.value), np.abs(alone.value), rtol=1e-9)
+
+
+def _random_systems(rng, k: int):
+    """k random two-mass-like systems x' = A x + b (a pair and a rigid mode)."""
+    A = np.zeros((k, 4, 4))
+    A[:, 0, 1] = A[:, 2, 3] = 1.0
+    c = 10 ** rng.uniform(2, 6, k)
+    J1, J2 = rng.uniform(1, 50, k), rng.uniform(1, 500, k)
+    damp = rng.uniform(0, 0.2, k) * np.sqrt(c * J1)
+    A[:, 1, 0], A[:, 1, 2] = -c / J1, c / J1
+    A[:, 3, 0], A[:, 3, 2] = c / J2, -c / J2
+    A[:, 1, 1], A[:, 1, 3] = -damp / J1, damp / J1
+    b = rng.normal(0, 100, (k, 4)) * np.array([0, 1, 0, 1])
+    return A, b
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_vectorised_search_finds_first_crossing_like_the_per_design_one(seed):
+    rng = np.random.default_rng(seed)
+    k = 40
+    A, b = _random_systems(rng, k)
+    x0 = rng.normal(0, 1, (k, 4))
+    w = rng.normal(0, 1, (k, 4))
+    const = rng.normal(0, 0.5, k)
+    direction = rng.integers(-1, 2, k).astype(float)
+    parts, refused = batch_forms(A, b)
+    assert refused.size == 0
+    for where, form in parts:
+        amps = np.einsum("kti,ki->kt", form.vectors(x0[where])[:, :, :4], w[where])
+        sig = Signals.of(form, amps, const[where])
+        hits = first_crossings(sig, np.zeros(where.size), np.full(where.size, 0.5),
+                               direction[where])
+        for j, i in enumerate(where):
+            ref = first_crossing(closed_form(A[i], b[i], False), x0[i], w[i], const[i], 0.5,
+                                 direction=int(direction[i]))
+            if ref is None:
+                assert np.isnan(hits[j])
+            else:
+                assert hits[j] == pytest.approx(ref, abs=1e-12)
+        # every crossing, found in one pass, are the successive first crossings
+        which, when = all_crossings(sig, np.zeros(where.size), np.full(where.size, 0.5))
+        for j in range(min(where.size, 5)):
+            found = np.sort(when[which == j])
+            i = where[j]
+            form1, t, times = closed_form(A[i], b[i], False), 0.0, []
+            while True:
+                x = form1.state(t, x0[i])
+                hit = first_crossing(form1, x, w[i], const[i], 0.5 - t)
+                if hit is None or 0.5 - t - hit < 1e-12:
+                    break
+                t += hit
+                times.append(t)
+                t += 1e-9
+            np.testing.assert_allclose(found[:len(times)], times, atol=1e-9)
+
+
+def test_the_sweep_output_is_the_per_design_loop_to_1e_9():
+    from crane_sym.derivations.hoist_brakes.sweep_outputs import SWEEP_OUTPUTS, peak_per_design
+    base = _base()
+    c, delta = np.meshgrid([1e4, 3e4, 1e5], np.radians([0.5, 1.5, 3.0]), indexing="ij")
+    values = {**{k: v for k, v in base.items() if k in
+                 SWEEP_OUTPUTS["peak_elastic_gearbox_torque"].parameters}, "c": c, "delta": delta}
+    options = {"duration": 1.0}
+    batched = SWEEP_OUTPUTS["peak_elastic_gearbox_torque"].evaluate(values, options)
+    assert SWEEP_OUTPUTS["peak_elastic_gearbox_torque"].batched
+    np.testing.assert_allclose(batched, peak_per_design(values, options), rtol=1e-9)
+
+
+def test_bench_row_states_n_rates_and_the_difference():
+    from dataclasses import replace
+
+    from crane_sym.bench.batched import bench_batched, markdown_rows
+    from crane_sym.bench.cases import batched_cases
+    paper, case = next((p, c) for p, c in batched_cases()
+                       if c.output == "peak_elastic_gearbox_torque")
+    row = bench_batched(paper, replace(case, n=4, sample=3, breakdown=None))
+    assert row["designs"] == 16 and row["sample"] == 3
+    assert row["max_rel_difference"] <= 1e-9
+    assert row["batched_designs_per_second"] > 0 and row["speedup"] > 0
+    text = "\n".join(markdown_rows([row]))
+    assert "| 001 |" in text or f"| {paper} |" in text
+    assert "max rel. difference" in text
+
+
+def test_a_batched_output_gets_one_block_per_worker_at_most_batch_designs():
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep.grid import BATCH_DESIGNS, chunks_for
+    from crane_sym.sweep.spec import plan
+    scene = load_scene("hoist_table1")
+    small = plan(scene, ["c=1e4:1e5:40:log", "delta=0.5:3:40"], ["peak_elastic_gearbox_torque"])
+    chunks = chunks_for(small, workers=2)
+    blocks = [a * b for a in chunks[0] for b in chunks[1]]
+    assert max(blocks) >= 1600 // 4 and len(blocks) <= 6
+    big = plan(scene, ["c=1e4:1e5:300:log", "delta=0.5:3:300"], ["peak_elastic_gearbox_torque"])
+    chunks = chunks_for(big, workers=2)
+    assert max(a * b for a in chunks[0] for b in chunks[1]) <= BATCH_DESIGNS
+
+
+def test_any_hybrid_run_goes_through_the_batched_solver():
+    """Per-design runs of 001 seen as one family (each design's own Python
+    rules, stacked) give the vectorised family's numbers."""
+    from crane_sym.mechanics.batched_runs import largest_of_runs
+    family = hard_grid()
+    sub = list(range(8)) + [11, 14]
+    runs = [family.run(i) for i in sub]
+    result = largest_of_runs(runs, tail=0)
+    assert result.summary["batched"] == len(sub)
+    for k, i in enumerate(sub):
+        assert abs(result.value[k]) == pytest.approx(abs(_per_design(family, i)), rel=1e-9)
+
+
+def test_003_start_up_with_repeated_eigenvalues_is_batched():
+    """Paper 003's travel drive has two equal sides: its modes have repeated
+    eigenvalues, clustered with one projector each (as the per-design route
+    does); the largest signed F1 + F2 of each start-up agrees to 1e-9."""
+    from crane_sym.derivations.portal_travel.startup import CHOSEN, drive, reduced
+    from crane_sym.mechanics.batched_runs import largest_of_runs
+    from crane_sym.mechanics.phase_table import HybridRun
+    rng = np.random.default_rng(3)
+    models = []
+    for k in range(8):
+        p = {**CHOSEN, "c_l": 10 ** rng.uniform(6, 7.3), "zeta": rng.uniform(0.0, 0.1)}
+        models.append(drive(reduced(p, (0.0, np.pi, 2 * np.pi, 1.0)[k % 4]), p))
+    runs = [HybridRun(m, m.start_mode(), np.zeros(6), 4.0, m.schedule(), m.total)
+            for m in models]
+    result = largest_of_runs(runs, magnitude=False, tail=0)
+    assert result.summary["batched"] == 8 and result.summary["fallback"] == 0
+    expected = [m.peak(m.run(4.0))[1] for m in models]
+    np.testing.assert_allclose(result.value, expected, rtol=1e-9)
+
+
+def test_003_start_up_peak_is_sweepable_and_is_the_per_design_peak(tmp_path):
+    xr = pytest.importorskip("xarray")
+    from crane_sym.derivations.portal_travel.sweep_outputs import peak_per_design
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep.grid import run_sweep
+    from crane_sym.sweep.spec import plan
+    chosen = plan(load_scene("fig12_startup_backlash"), ["c_l=2:8:2", "zeta=0.02:0.1:2"],
+                  ["peak_startup_link_force"], ["phi_b=3.14159"])
+    result = run_sweep(chosen, tmp_path / "sweep", scheduler="synchronous")
+    swept = xr.open_zarr(result.dataset)["peak_startup_link_force"].values
+    c, zeta = np.meshgrid(*[a.si() for a in chosen.axes], indexing="ij")
+    values = {a: chosen.fixed[a] for a in chosen.output("peak_startup_link_force").args
+              if a in chosen.fixed}
+    expected = peak_per_design({**values, "c_l": c, "zeta": zeta}, {})
+    np.testing.assert_allclose(swept, expected, rtol=1e-9)
+    assert swept.max() > swept.min() > 0
+
+
+def test_a_batched_sweep_on_a_local_cluster_is_bit_for_bit_the_local_one(tmp_path,
+                                                                           monkeypatch):
+    """The same blocks give the same bits wherever they run (a batched
+    design's numbers depend on its block's designs only through which of them
+    finish by the per-design route; blocks follow the workers, two here and
+    on the cluster)."""
+    distributed = pytest.importorskip("distributed")
+    xr = pytest.importorskip("xarray")
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep import grid
+    from crane_sym.sweep.grid import run_sweep
+    monkeypatch.setattr(grid.os, "cpu_count", lambda: 2)
+    from crane_sym.sweep.spec import plan
+    chosen = plan(load_scene("hoist_table1"), ["c=1e4:1e5:12:log", "delta=0.5:3:10"],
+                  ["peak_elastic_gearbox_torque"])
+    local = run_sweep(chosen, tmp_path / "local")
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster:
+        remote = run_sweep(chosen, tmp_path / "cluster", scheduler=cluster.scheduler_address)
+    assert local.blocks == remote.blocks > 1
+    a, b = (xr.open_zarr(r.dataset).load()["peak_elastic_gearbox_torque"].values
+            for r in (local, remote))
+    assert np.array_equal(a.view(np.uint64), b.view(np.uint64)) and local.worst == remote.worst
