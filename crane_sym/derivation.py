@@ -90,7 +90,7 @@ class TabulatedOutput:
     parameters. A scene fixes the data: ``run(values, settings)`` (SI values by
     name, the scene's settings) returns the ``crane_sym.mechanics.phase_table.HybridRun``,
     whose table (the phases in closed form) the scene's module carries as
-    arrays; or a tuple of runs, one per case the scene's settings list (003's
+    arrays; or a tuple of runs, one per case the scene's settings list (e.g.
     backlash values), and the module carries ``<name>_<k>`` for case k. A
     paper's ``run`` is its hybrid model's (``hybrid.py``,
     ``HybridModel.runner``). ``args`` are the parameters it needs; the

@@ -68,7 +68,7 @@ class Cause:
     Parameters
     ----------
     id : str
-        Short, stable id, e.g. ``"002-table2-plus-one"``.
+        Short, stable id: the paper's number, then a slug (``"<paper>-table2-plus-one"``).
     sentence : str
         One sentence a reviewer can check.
     """

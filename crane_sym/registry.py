@@ -23,6 +23,24 @@ ALIASES: dict[str, str] = {"000": "travel_braking", "001": "hoist_brakes",
                            "002": "hoist_startup", "003": "portal_travel",
                            "004": "drum_drive"}
 
+#: One example (or two) per subcommand, shown at the end of its --help; they
+#: name registered papers and shipped scenes, so they live with the papers' list.
+EXAMPLES = {
+    "list": "crane-sym list\n  crane-sym list --scenes\n  crane-sym list --format json",
+    "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
+             "--format json --quiet > verdicts.json",
+    "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md\n"
+                   "  crane-sym walkthrough 002 --format ipynb -o hoist_startup.ipynb\n"
+                   "  crane-sym walkthrough 001 --format html -o hoist_brakes.html",
+    "generate": "crane-sym generate\n  crane-sym generate --check\n"
+                "  crane-sym generate --scene hoist_user_drive_law --out out/",
+    "accuracy": "crane-sym accuracy 002",
+    "bench": "crane-sym bench 000 002 004 --out bench/",
+    "run": "crane-sym run overhead_crane_50t --out out/",
+    "sweep": "crane-sym sweep overhead_crane_50t --vary m1=1:100:200:log --vary P_t=5:50:200 "
+             "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
+             "--out sweep/ --format json",
+}
 
 def ids() -> list[str]:
     """Registered derivation ids, in paper order."""

@@ -16,7 +16,8 @@ from crane_sym import progress, registry
 from crane_sym.scenes import generate
 from crane_sym.codegen import files as module_files
 from crane_sym.bench import accuracy as reference
-from crane_sym.cli.main import EXAMPLES, main, parser
+from crane_sym.cli.main import main, parser
+from crane_sym.registry import EXAMPLES
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -27,26 +27,9 @@ Derive, audit and generate code for the dynamics of crane mechanisms.
 For each published paper crane-sym rebuilds the derivation with SymPy, checks
 every printed formula against it, writes fast NumPy modules, and runs scenes
 (one concrete question with its data, in TOML). Papers are named by id
-(travel_braking) or by the number of their source file (000): `crane-sym list`
-names them, `crane-sym list --scenes` the scenes shipped with them."""
+or by the number of their source file: `crane-sym list` names them,
+`crane-sym list --scenes` the scenes shipped with them."""
 
-#: One example (or two) per subcommand, shown at the end of its --help.
-EXAMPLES = {
-    "list": "crane-sym list\n  crane-sym list --scenes\n  crane-sym list --format json",
-    "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
-             "--format json --quiet > verdicts.json",
-    "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md\n"
-                   "  crane-sym walkthrough 002 --format ipynb -o hoist_startup.ipynb\n"
-                   "  crane-sym walkthrough 001 --format html -o hoist_brakes.html",
-    "generate": "crane-sym generate\n  crane-sym generate --check\n"
-                "  crane-sym generate --scene hoist_user_drive_law --out out/",
-    "accuracy": "crane-sym accuracy 002",
-    "bench": "crane-sym bench 000 002 004 --out bench/",
-    "run": "crane-sym run overhead_crane_50t --out out/",
-    "sweep": "crane-sym sweep overhead_crane_50t --vary m1=1:100:200:log --vary P_t=5:50:200 "
-             "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
-             "--out sweep/ --format json",
-}
 _PAPERS = "Papers by id or number: `crane-sym list` names them."
 _SCENES = ("A scene by name (`crane-sym list --scenes` names the shipped ones)\n"
            "or by the path of a TOML file.")
@@ -247,8 +230,8 @@ def _subcommand(sub, name: str, text: str, func, quiet: bool = False):
     """A subcommand with ``text`` as help and description, its example as the
     epilog, and (for the long commands) ``--quiet``."""
     p = sub.add_parser(name, help=text, description=text[0].upper() + text[1:] + ".",
-                       epilog=("examples:" if "\n" in EXAMPLES[name] else "example:")
-                       + "\n  " + EXAMPLES[name]
+                       epilog=("examples:" if "\n" in registry.EXAMPLES[name] else "example:")
+                       + "\n  " + registry.EXAMPLES[name]
                        + (f"\n\n{NAMES[name]}" if name in NAMES else ""),
                        formatter_class=argparse.RawDescriptionHelpFormatter)
     if quiet:
@@ -262,7 +245,8 @@ def parser() -> argparse.ArgumentParser:
     """The argument parser (exposed for documentation and tests)."""
     top = argparse.ArgumentParser(
         prog="crane-sym", description=DESCRIPTION,
-        epilog="example:\n  crane-sym audit 000\n\nRun `crane-sym COMMAND --help` for "
+        epilog="example:\n  " + registry.EXAMPLES["audit"].split("\n")[0]
+               + "\n\nRun `crane-sym COMMAND --help` for "
                "the options and an example of each command.",
         formatter_class=argparse.RawDescriptionHelpFormatter)
     top.add_argument("--version", action="version", version=f"crane-sym {version()}")

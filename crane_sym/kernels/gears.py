@@ -1,6 +1,6 @@
 """NumPy kernels of involute gear geometry that generated modules carry.
 
-Ordinary functions, tested against mpmath (``tests/test_portal_travel.py``);
+Ordinary functions, tested against mpmath in the test suite;
 the code generator copies the source of the ones a module calls
 (``DEPENDS`` lists what each calls), so generated modules need NumPy alone.
 Every kernel is self-contained: no module-level constants.

@@ -8,7 +8,7 @@ design's system for its matrices, guards and output, stacks them for the
 designs in a mode, and calls each design's switching rule on the designs
 that fired an event; the closed forms, the event search and the extrema are
 the batched solver's. The Python calls cost per design and phase what a
-model written for arrays (such as 001's ``elastic_batched.HoistFamily``)
+model written for arrays (a paper's own family of designs)
 saves; the closed forms and the search, where the time of a run goes, are
 shared. The designs' guards in a mode must agree in number, names and
 directions (they do for designs of one model).

@@ -4,15 +4,18 @@ A scene is a TOML file naming a derivation, the outputs of interest, the
 parameter values with units, and options such as the simulated duration::
 
     [scene]
-    name = "overhead_crane_50t"
-    derivation = "travel_braking"
-    title = "50 t overhead crane: braking the bridge travel"
-    outputs = ["elastic_force", "velocity_m1"]
+    name = "my_crane"                # the scene's name (files are named after it)
+    derivation = "..."               # an id that `crane-sym list` shows
+    title = "My crane: braking the bridge travel"
+    outputs = ["...", "..."]         # outputs of that derivation
     [parameters]
-    m1 = "4.4 t"
+    m1 = "4.4 t"                     # every parameter the outputs take, with units
     [options]
     duration = "1.5 s"
     points = 1501
+
+(`crane-sym list --scenes` names the scenes shipped with the papers; each is
+a complete example.)
 
 Optional: ``[scene] inputs`` lists parameters left as arguments of the
 scene's functions, ``[options] <switch> = false`` turns off a part of the
@@ -109,7 +112,7 @@ class Scene:
     def times(self, end: float | None = None) -> np.ndarray:
         """The scene's time grid: ``settings["points"]`` samples on [0, end],
         ``end`` the setting ``duration`` unless given (a paper whose scenes
-        name their span otherwise, e.g. 003's ``end``); the last sample is
+        name their span otherwise, e.g. a start-up's ``end``); the last sample is
         ``end`` exactly.
 
         Parameters
