@@ -1,0 +1,231 @@
+"""A drive train from components: assembled, derived, started in its steady
+motion and run phase by phase.
+
+.. code-block:: text
+
+    motor J1 --[ c, d, backlash s ]-- shaft --gear i-- drum J2 --drum r, n-- hook m
+      motor torque, switched off        (no inertia)       brake             gravity
+      service brake                                                          payload
+
+>>> from crane_sym.components import (Brake, Drum, ElasticLink, Gear, Gravity,
+...     Inertia, Mass, Model, Motor)
+>>> model = Model([Inertia("motor", "20 kg*m^2"), Inertia("shaft", 0),
+...     Inertia("drum", "500 kg*m^2"), Mass("hook", "62 t"),
+...     Gear("gearbox", "shaft", "drum", 26.2), Drum("rope", "drum", "hook", "0.5 m", 4),
+...     ElasticLink("coupling", "motor", "shaft", "4e4 N*m/rad", backlash="78.6 deg"),
+...     Gravity("weight", "hook"), Motor("drive", "motor", "steady", off_at="0 s"),
+...     Brake("safety", "drum", "130 kN*m", delay="0.1 s"),
+...     Brake("service", "motor", "5.8 kN*m", delay="0.4 s")])
+>>> run = model.run("1 s", start_body="motor", start_speed="1500 rpm")
+>>> round(run.peaks[0].value)            # the coupling's torque at its largest, N·m
+-16819
+
+:meth:`Model.run` finds the steady state at the start (every group moving at
+the speed the given body's speed implies, every elastic link at the twist
+that balances the constant loads, a ``steady`` motor's torque solved with
+them) and hands the :class:`~crane_sym.components.hybrid.ComponentSystem` to
+:func:`crane_sym.mechanics.piecewise_linear.simulate`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Sequence
+
+import numpy as np
+
+from crane_sym.components.equations import Equations, derive
+from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
+from crane_sym.components.parts import (DIMENSIONS, Brake, Component, ComponentError, Given, Motor,
+                                        ROTATING, value)
+from crane_sym.components.topology import Assembly, assemble
+from crane_sym.mechanics.phase_table import HybridRun, largest
+from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
+
+__all__ = ["ComponentRun", "LinkPeak", "Model"]
+
+
+@dataclass(frozen=True)
+class LinkPeak:
+    """The largest load of an elastic link over a run (signed), when it
+    occurs, its load at the start and the dynamic factor (peak over
+    ``reference``: the link's given reference load, else its load at the start)."""
+
+    link: str
+    time: float
+    value: float
+    unit: str
+    static: float
+    reference: float | None
+
+    @property
+    def factor(self) -> float | None:
+        return None if not self.reference else self.value / self.reference
+
+
+@dataclass(frozen=True, eq=False)
+class ComponentRun:
+    """One run: the system, its start, its phases in closed form, the peaks."""
+
+    model: "Model"
+    system: ComponentSystem
+    mode: Mode
+    x0: np.ndarray
+    t_end: float
+    schedule: tuple[tuple[float, str], ...]
+    result: PiecewiseResult
+
+    @property
+    def events(self) -> list[tuple[float, str]]:
+        """(time, event) of every event in order (the run's end left out)."""
+        return [(t, e) for t, e, _ in self.result.events if e != "end"]
+
+    @cached_property
+    def peaks(self) -> list[LinkPeak]:
+        """The peak of every elastic link, in the order the links were given."""
+        out = []
+        for i, link in enumerate(self.system.assembly.links):
+            affine = self.system.link_load(i)
+            when, peak = largest(self.result, self.system, affine, magnitude=True)
+            w, k = affine(self.mode)
+            static = float(np.asarray(w) @ self.x0 + k)
+            motion = self.system.assembly.bodies[link.part.first].motion
+            reference = link.reference if link.reference is not None else (static or None)
+            out.append(LinkPeak(link.part.name, when, peak,
+                                "N*m" if motion == ROTATING else "N", static, reference))
+        return out
+
+    def hybrid_run(self, link: str) -> HybridRun:
+        """The run with the load of ``link`` as its output (what a scene's module
+        tabulates, :mod:`crane_sym.mechanics.phase_table`)."""
+        names = [l.part.name for l in self.system.assembly.links]
+        if link not in names:
+            raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
+        return HybridRun(self.system, self.mode, self.x0, self.t_end, self.schedule,
+                         self.system.link_load(names.index(link)))
+
+
+class Model:
+    """Components assembled (:func:`~crane_sym.components.topology.assemble`)
+    and derived (:func:`~crane_sym.components.equations.derive`)."""
+
+    def __init__(self, components: Sequence[Component], name: str = "model",
+                 title: str = "") -> None:
+        self.components = tuple(components)
+        self.name, self.title = name, title
+        self.assembly: Assembly = assemble(self.components)
+        self.equations: Equations = derive(self.assembly)
+
+    @property
+    def steady_motor(self):
+        """The symbol of the torque of the ``steady`` motor, or None."""
+        for load, symbol in zip([l for l in self.assembly.loads if isinstance(l.part, Motor)],
+                                self.equations.motor_loads):
+            if load.load is None:
+                return symbol
+        return None
+
+    def start(self, body: str | None = None, speed: Given = 0.0
+              ) -> tuple[Mode, np.ndarray, dict]:
+        """The steady state at t = 0: (mode, state, solved values).
+
+        Every group moves at the speed ``body``'s ``speed`` implies (no link
+        twisting), every link rests at the twist that balances the constant
+        loads with all motors on, on the flank its load pushes it to; a
+        ``steady`` motor's torque is solved with the twists.
+        """
+        a = self.assembly
+        body = body or next(iter(a.bodies))
+        if body not in a.bodies:
+            raise ComponentError(f"start: unknown body {body!r}; bodies: {', '.join(a.bodies)}")
+        v = value(f"start of {body!r}", "speed", speed,
+                  DIMENSIONS["speed"][a.bodies[body].motion]).si
+        n = len(a.groups)
+        rates = [None] * n
+        g0, k0, _ = a.place[body]
+        rates[g0] = v / k0
+        changed = True
+        while changed:
+            changed = False
+            for link in a.links:
+                (ga, ka, _), (gb, kb, _) = (a.place[e] for e in link.part.ends)
+                if rates[ga] is not None and rates[gb] is None:
+                    rates[gb], changed = rates[ga] * ka / kb, True
+                elif rates[gb] is not None and rates[ga] is None:
+                    rates[ga], changed = rates[gb] * kb / ka, True
+        steady = self.steady_motor
+        probe = ComponentSystem(self.equations, {steady: 0.0} if steady is not None else {})
+        unit = ComponentSystem(self.equations, {steady: 1.0}) if steady is not None else None
+        driven = tuple(True for _ in probe.motors)
+        contacts = tuple(1 for _ in probe.backlash)
+        for _ in range(2 * len(contacts) + 2):
+            positions, torque = self._balance(probe, unit, contacts, driven)
+            x = np.zeros(probe.size)
+            x[0:2 * n:2], x[1:2 * n:2] = positions, rates
+            turned = []
+            for link, c in zip(probe.backlash, contacts):
+                u = float(probe.twist(link) @ x)
+                lo, hi = link.part.flanks
+                turned.append(c if (u >= hi if c > 0 else u <= lo) else -c)
+            if tuple(turned) == contacts:
+                break
+            contacts = tuple(turned)
+        else:
+            raise ComponentError("no steady state at the start: the links with backlash "
+                                 "cannot all rest on a flank")
+        extra = {steady: torque} if steady is not None else {}
+        mode = Mode(contacts, tuple(FREE for _ in range(n)),
+                    tuple(False for _ in probe.brakes), driven,
+                    tuple(False for _ in probe.brakes))
+        return mode, x, extra
+
+    def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
+                 contacts: tuple, driven: tuple) -> tuple[np.ndarray, float]:
+        """Positions (the first group's at 0) and the steady motor's torque that
+        make K q = f; ComponentError if no motor torque balances the loads."""
+        _, _, K, f, _ = probe._linear(contacts, driven)
+        columns = [K[:, 1:]]
+        if unit is not None:
+            columns.append(-(unit._linear(contacts, driven)[3] - f)[:, None])
+        matrix = np.hstack(columns)
+        if matrix.shape[1]:
+            z = np.linalg.lstsq(matrix, f, rcond=None)[0]
+        else:
+            z = np.zeros(0)
+        residual = np.abs(matrix @ z - f).max() if len(f) else 0.0
+        scale = np.abs(f).max() + (np.abs(matrix).max() * np.abs(z).max() if z.size else 0.0)
+        if residual > 1e-9 * max(scale, 1e-300) and residual > 1e-12:
+            raise ComponentError("the drive is not in a steady state at the start: its "
+                                 "constant loads do not balance; give one motor the torque "
+                                 "'steady'")
+        positions = np.concatenate([[0.0], z[:K.shape[1] - 1]])
+        torque = float(z[-1]) if unit is not None else 0.0
+        return positions, torque
+
+    def schedule(self) -> tuple[tuple[float, str], ...]:
+        """The events known in advance: brakes engaging and their ramps ending,
+        motors switched off."""
+        out = []
+        for load in self.assembly.loads:
+            part = load.part
+            if isinstance(part, Brake):
+                out.append((part.delay, f"{part.name} engages"))
+                if part.build_up == "ramp":
+                    out.append((part.delay + part.time, f"{part.name} ramp done"))
+            elif isinstance(part, Motor) and part.off_at is not None:
+                out.append((part.off_at, f"{part.name} off"))
+        return tuple(sorted(out))
+
+    def run(self, duration: Given, start_body: str | None = None,
+            start_speed: Given = 0.0, exact: bool | None = None) -> ComponentRun:
+        """The run from the steady state of :meth:`start` over ``duration``,
+        phases in closed form (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+        from sympy.physics.units import time
+        t_end = value("run", "duration", duration, time).si
+        if not t_end > 0:
+            raise ComponentError(f"run: duration must be > 0, got {duration!r}")
+        mode, x0, extra = self.start(start_body, start_speed)
+        system = ComponentSystem(self.equations, extra)
+        schedule = self.schedule()
+        result = simulate(system, mode, x0, t_end, schedule, exact=exact)
+        return ComponentRun(self, system, mode, x0, t_end, schedule, result)
