@@ -39,7 +39,7 @@ from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
 from crane_sym.components.parts import (DIMENSIONS, Brake, Component, ComponentError, Given, Motor,
                                         ROTATING, value)
 from crane_sym.components.topology import Assembly, assemble
-from crane_sym.mechanics.phase_table import HybridRun, largest
+from crane_sym.mechanics.phase_table import HybridRun, stationary_times
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
 
 __all__ = ["ComponentRun", "LinkPeak", "Model"]
@@ -86,7 +86,7 @@ class ComponentRun:
         out = []
         for i, link in enumerate(self.system.assembly.links):
             affine = self.system.link_load(i)
-            when, peak = largest(self.result, self.system, affine, magnitude=True)
+            when, peak = _largest(self.result, self.system, affine)
             w, k = affine(self.mode)
             static = float(np.asarray(w) @ self.x0 + k)
             motion = self.system.assembly.bodies[link.part.first].motion
@@ -103,6 +103,31 @@ class ComponentRun:
             raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
         return HybridRun(self.system, self.mode, self.x0, self.t_end, self.schedule,
                          self.system.link_load(names.index(link)))
+
+
+def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[float, float]:
+    """(time, value) of the largest |w·x + k| over the run: each phase's ends,
+    and its stationary points where its rate is not flat (a load held constant
+    has a rate of rounding noise, whose every sign change would be an extremum;
+    :func:`crane_sym.mechanics.phase_table.largest` on the rest)."""
+    best, key = (0.0, float("nan")), -np.inf
+    for seg in result.segments:
+        w, k = affine(seg.mode)
+        w = np.asarray(w, float)
+        candidates = [seg.t0, seg.t1]
+        if w.any():
+            A, b = system.matrices(seg.mode)
+            out, _ = seg.form.scalar_terms(w, k, seg.x0)
+            rate, rk = seg.form.scalar_terms(w @ A, float(w @ b), seg.x0)
+            pace = 1.0 + float(np.max(np.abs(seg.form.omegas) + np.abs(seg.form.sigmas),
+                                      initial=0.0))
+            if np.abs(rate).sum() + abs(rk) > 1e-12 * pace * (np.abs(out).sum() + abs(k)):
+                candidates += stationary_times(seg, system, w)
+        found = seg.state(np.array(candidates)) @ w + k
+        i = int(np.argmax(np.abs(found)))
+        if abs(found[i]) > key:
+            best, key = (float(candidates[i]), float(found[i])), abs(found[i])
+    return best
 
 
 class Model:

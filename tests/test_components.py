@@ -1,0 +1,156 @@
+"""Component models: paper 001's Fig. 9 hoist rebuilt from parts agrees with
+the hand-written hybrid model; brakes that ramp or rise exponentially stop a
+body when their closed forms say; brakes hold within their capacity; the
+steady start balances the loads; the equations are Lagrange's of the parts."""
+from __future__ import annotations
+
+import importlib
+
+import numpy as np
+import pytest
+import sympy as sp
+from scipy.optimize import brentq
+
+from crane_sym.components import (Brake, ComponentError, Drum, ElasticLink, Gear, Gravity,
+                                  Inertia, Mass, Model, Motor, Resistance)
+
+
+def hand_written():
+    """The hand-written two-mass hoist of paper 001 (``elastic.py``, or
+    ``hybrid.py`` once it moves there), imported by name."""
+    for name in ("derivations.hoist_brakes.hybrid", "derivations.hoist_brakes.elastic"):
+        try:
+            module = importlib.import_module(name)
+        except ImportError:
+            continue
+        if hasattr(module, "table1_hoist"):
+            return module
+    pytest.skip("no hand-written hoist of paper 001 to compare with")
+
+
+def fig9_parts(payload: float) -> list:
+    """Table 1's hoist as components, lowering ``payload`` kg (+ = lowering)::
+
+        motor J1 --[c, backlash δ·i_g]-- shaft --gear i_g-- drum J2 --drum r, i_t-- hook
+    """
+    return [Inertia("motor", "20 kg*m^2"), Inertia("shaft", 0),
+            Inertia("drum", "500 kg*m^2"), Mass("hook", 10e3 + payload),
+            Gear("gearbox", "shaft", "drum", "26.2"), Drum("rope", "drum", "hook", "0.5 m", 4),
+            ElasticLink("coupling", "motor", "shaft", "4e4 N*m/rad",
+                        backlash=np.radians(3.0) * 26.2),
+            Gravity("weight", "hook", "9.81 m/s^2"),
+            Motor("drive", "motor", "steady", off_at="0 s"),
+            Brake("safety", "drum", "130 kN*m", delay="0.1 s"),
+            Brake("service", "motor", "5.8 kN*m", delay="0.4 s")]
+
+
+@pytest.mark.parametrize("payload", [0.0, 52e3])
+def test_fig9_peak_agrees_with_the_hand_written_model(payload):
+    elastic = hand_written()
+    hoist = elastic.table1_hoist(payload)
+    when, relative = hoist.peak(hoist.run(elastic.OMEGA1, 1.0))
+    run = Model(fig9_parts(payload)).run("1 s", "motor", elastic.OMEGA1)
+    peak = run.peaks[0]
+    assert peak.value == pytest.approx(relative * hoist.M_st, rel=1e-9)
+    assert peak.unit == "N*m"
+    # the start is the hand-written model's: steady lowering, twist M_L/c
+    assert np.allclose(run.x0, [0.0, elastic.OMEGA1, hoist.M_L / hoist.c, elastic.OMEGA1],
+                       rtol=1e-12, atol=0)
+    assert peak.static == pytest.approx(hoist.M_L, rel=1e-12)
+    # every contact change of the hand-written run, at the same instant
+    theirs = [t for t, e, _ in hoist.run(elastic.OMEGA1, 1.0).events
+              if e in ("open", "close hold", "close other")]
+    ours = [t for t, e in run.events if e.startswith("coupling")]
+    assert np.allclose(ours, theirs, rtol=0, atol=1e-9)
+
+
+def test_fig9_equations_are_the_two_mass_model():
+    """The merged drum side carries J2/i² + m (r/(i n))², and the equations are
+    M q̈ + K q = f with the hand-written model's matrices."""
+    model = Model(fig9_parts(52e3))
+    eq = model.equations
+    M, D, K, f = eq.linear
+    sym = {s.name: s for s in eq.values}
+    i, r, n = sym["i_gearbox"], sym["r_rope"], sym["n_rope"]
+    J_d = sym["J_drum"] / i**2 + sym["m_hook"] * (r / (i * n))**2 + sym["J_shaft"]
+    assert sp.simplify(M - sp.diag(sym["J_motor"], J_d)) == sp.zeros(2)
+    c = sym["c_coupling"]
+    chi = eq.contact[0]
+    assert sp.simplify(K - chi * c * sp.Matrix([[1, -1], [-1, 1]])) == sp.zeros(2)
+    assert len(eq.latex()) == 2
+
+
+def test_ramp_brake_stops_a_flywheel_when_the_closed_form_says():
+    J, omega0, M, delay, ramp = 12.0, 30.0, 400.0, 0.05, 0.8
+    model = Model([Inertia("wheel", J), Brake("b", "wheel", M, delay, "ramp", ramp)])
+    run = model.run(3.0, "wheel", omega0)
+    stop = dict((e, t) for t, e in run.events)["wheel rests"]
+    # ω = ω0 − M τ²/(2 J T) during the ramp, ω0 − M (T/2 + τ − T)/J after it
+    within = delay + np.sqrt(2 * ramp * J * omega0 / M)
+    expected = within if within <= delay + ramp else delay + ramp / 2 + J * omega0 / M
+    assert stop == pytest.approx(expected, rel=1e-9)
+    assert run.result.segments[-1].mode.motion == ("0",)       # held at rest
+
+
+def test_exponential_brake_stops_a_flywheel_when_the_closed_form_says():
+    J, omega0, M, delay, T = 5.0, 20.0, 300.0, 0.1, 0.2
+    model = Model([Inertia("wheel", J), Brake("b", "wheel", M, delay, "exponential", T)])
+    run = model.run(3.0, "wheel", omega0)
+    stop = dict((e, t) for t, e in run.events)["wheel rests"]
+    speed = lambda tau: omega0 - M / J * (tau - T * (1 - np.exp(-tau / T)))  # noqa: E731
+    assert stop == pytest.approx(delay + brentq(speed, 1e-9, 10.0, xtol=1e-15), rel=1e-9)
+
+
+@pytest.mark.parametrize("capacity, holds", [(2.0, True), (0.5, False)])
+def test_a_brake_holds_the_load_within_its_capacity(capacity, holds):
+    """A lowering hook braked at the drum: held at rest when the brake's torque
+    exceeds the load's, sliding (and speeding up) when it does not."""
+    m, g, r = 2000.0, 9.81, 0.4
+    load = m * g * r
+    model = Model([Inertia("drum", 50.0), Mass("hook", m), Drum("rope", "drum", "hook", r),
+                   Gravity("weight", "hook", g), Motor("drive", "drum", "steady", off_at=0.0),
+                   Brake("brake", "drum", capacity * load, delay=0.0)])
+    run = model.run(2.0, "hook", "0.5 m/s")
+    assert run.system.extra[model.steady_motor] == pytest.approx(-load, rel=1e-12)
+    events = [e for _, e in run.events]
+    assert ("drum rests" in events) is holds
+    end = run.result.segments[-1]
+    if holds:
+        J = 50.0 + m * r**2
+        stop = 0.5 / r / ((capacity * load - load) / J)
+        assert dict((e, t) for t, e in run.events)["drum rests"] == pytest.approx(stop, rel=1e-9)
+        assert end.mode.motion == ("0",)
+    else:
+        assert end.state(end.t1)[1] > 0.5 / r
+
+
+def test_steady_start_balances_a_resistance():
+    model = Model([Mass("trolley", "4 t"), Resistance("rolling", "trolley", "-1.2 kN"),
+                   Motor("drive", "trolley", "steady")])
+    mode, x0, extra = model.start("trolley", "1 m/s")
+    assert extra[model.steady_motor] == pytest.approx(1200.0)
+    assert x0[1] == 1.0
+    run = model.run("1 s", "trolley", "1 m/s")
+    assert run.result.segments[-1].state(1.0)[1] == pytest.approx(1.0, rel=1e-12)
+
+
+def test_unbalanced_start_without_a_steady_motor_is_refused():
+    with pytest.raises(ComponentError, match="steady"):
+        Model([Mass("trolley", "4 t"), Resistance("rolling", "trolley", "-1.2 kN")]).start(
+            "trolley", "1 m/s")
+
+
+def test_a_damped_link_rings_down_to_its_new_static_load():
+    """Two masses and a damped spring, b pulled by a constant force and a held
+    by a steady motor until it lets go: the load is the pull until then, and
+    settles to the pull's share m_a/(m_a + m_b) after; a phase of constant load
+    is no trap for the search of extrema."""
+    model = Model([Mass("a", 100.0), Mass("b", 300.0),
+                   ElasticLink("spring", "a", "b", "1e5 N/m", "2000 N*s/m", reference="1 kN"),
+                   Resistance("pull", "b", "1 kN"), Motor("hold", "a", "steady", off_at=0.5)])
+    run = model.run("3 s", "a", 0.0)
+    peak = run.peaks[0]
+    assert peak.value == pytest.approx(1000.0, rel=1e-12) and peak.factor == pytest.approx(1)
+    w, k = run.system.link_load(0)(run.result.segments[-1].mode)
+    end = run.result.segments[-1]
+    assert float(w @ end.state(3.0) + k) == pytest.approx(250.0, rel=1e-6)
