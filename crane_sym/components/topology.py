@@ -212,10 +212,11 @@ def _groups(bodies: dict[str, Body], rigid: list) -> tuple[tuple[Group, ...],
                 if other in place:
                     have = place[other][1]
                     if abs(have - kappa) > LOOP_TOLERANCE * max(abs(have), abs(kappa)):
+                        loop = ", ".join(p.name for p in rigid if p.name in used)
                         raise ComponentError(
-                            f"{part.label} closes a loop of rigid links with ratios that "
-                            f"disagree: it moves {bodies[other].label} {kappa:.12g} per unit "
-                            f"of {bodies[start].label}, the rest of the loop {have:.12g}")
+                            f"{part.label} closes a loop of rigid links ({loop}) with ratios "
+                            f"that disagree: it moves {bodies[other].label} {kappa:.12g} per "
+                            f"unit of {bodies[start].label}, the rest of the loop {have:.12g}")
                     continue
                 place[other] = (index, kappa, kappa_sym)
                 members.append(other)
