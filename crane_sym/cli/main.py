@@ -192,7 +192,12 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    """Run one scene: print its numbers, write its module and plots."""
+    """Run one scene: print its numbers, write its module and plots (a
+    component file: its peak loads and events, a JSON and a plot)."""
+    from crane_sym.components.reading import is_component_file
+    if is_component_file(args.scene):
+        from crane_sym.cli.components import cmd_run_components
+        return cmd_run_components(args)
     from crane_sym.scenes.run import run_scene
     from crane_sym.scenes.reading import load_scene
     with progress.reporting(_progress(args)) as say:
@@ -287,7 +292,8 @@ def parser() -> argparse.ArgumentParser:
                    "decade 1e-6 ... 1e-13)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
                     cmd_run, True)
-    p.add_argument("scene", help="scene name or path to a scene TOML file")
+    p.add_argument("scene", help="scene name or path to a scene TOML file, or a component "
+                   "model TOML file (a [model] table; README, \"Your own drive train\")")
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
     p = _subcommand(sub, "sweep", "a design sweep: outputs over a grid of designs, on Dask",

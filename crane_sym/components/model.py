@@ -109,7 +109,8 @@ def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[
     """(time, value) of the largest |w·x + k| over the run: each phase's ends,
     and its stationary points where its rate is not flat (a load held constant
     has a rate of rounding noise, whose every sign change would be an extremum;
-    :func:`crane_sym.mechanics.phase_table.largest` on the rest)."""
+    :func:`crane_sym.mechanics.phase_table.largest` on the rest). Of peaks equal
+    to 1e-12 (an undamped gap rings at one amplitude), the first is taken."""
     best, key = (0.0, float("nan")), -np.inf
     for seg in result.segments:
         w, k = affine(seg.mode)
@@ -125,7 +126,7 @@ def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[
                 candidates += stationary_times(seg, system, w)
         found = seg.state(np.array(candidates)) @ w + k
         i = int(np.argmax(np.abs(found)))
-        if abs(found[i]) > key:
+        if abs(found[i]) > key * (1 + 1e-12):     # of equal peaks, the first
             best, key = (float(candidates[i]), float(found[i])), abs(found[i])
     return best
 

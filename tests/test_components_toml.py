@@ -1,0 +1,117 @@
+"""Component files: the shipped Fig. 9 example against paper 001's hand-written
+model, `crane-sym run FILE` writing only into --out, and bad files refused in
+one line naming the table, the key and the closest known one."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from crane_sym.cli.main import main
+from crane_sym.components import ComponentError
+from crane_sym.components.reading import is_component_file, read_component_file
+
+from test_components import hand_written
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml"
+
+
+def test_fig9_example_agrees_with_the_hand_written_model():
+    elastic = hand_written()
+    hoist = elastic.table1_hoist(52e3)
+    when, relative = hoist.peak(hoist.run(elastic.OMEGA1, 1.0))
+    read = read_component_file(EXAMPLE)
+    run = read.model.run(read.duration, read.body, read.speed)
+    peak = run.peaks[0]
+    assert peak.value == pytest.approx(relative * hoist.M_st, rel=1e-9)
+    # the payload is the rated one: the load at the start is M_st, the factor M_G/M_st
+    assert peak.factor == pytest.approx(relative, rel=1e-9)
+    assert peak.time == pytest.approx(when, abs=1e-9)
+
+
+def test_run_writes_the_numbers_and_the_plot_into_out_only(tmp_path, capsys):
+    out = tmp_path / "out"
+    assert main(["run", str(EXAMPLE), "--out", str(out), "--quiet"]) == 0
+    printed = capsys.readouterr().out
+    assert "peak load of gearbox_mesh: -1.682e+04 N*m at t = 0.1597 s" in printed
+    assert "dynamic factor -5.796" in printed
+    assert "event at t = 0.100000 s: safety_brakes engages" in printed
+    assert sorted(p.name for p in tmp_path.rglob("*")) == \
+        ["hoist_fig9.json", "hoist_fig9_loads.png", "out"]
+    data = json.loads((out / "hoist_fig9.json").read_text())
+    assert data["peaks"][0]["unit"] == "N*m"
+    assert [e["event"] for e in data["events"]][:2] == ["drive off", "safety_brakes engages"]
+
+
+def test_a_scene_is_not_a_component_file():
+    scene = (Path(__file__).resolve().parents[1] / "derivations" / "hoist_brakes" / "scenes"
+             / "hoist_table1.toml")
+    assert not is_component_file(scene) and is_component_file(EXAMPLE)
+
+
+GOOD = """
+[model]
+name = "flywheel"
+[[inertia]]
+name = "wheel"
+inertia = "12 kg*m^2"
+[[brake]]
+name = "b"
+body = "wheel"
+torque = "400 N*m"
+delay = "0.05 s"
+[run]
+duration = "2 s"
+speed = "30 rad/s"
+"""
+
+BAD = {
+    "an unknown table": (GOOD + "[[inertias]]\nname = 'x'\n", ["table 'inertias'",
+                                                               "did you mean 'inertia'"]),
+    "an unknown key": (GOOD.replace('delay = "0.05 s"', 'dealy = "0.05 s"'),
+                       ["[[brake]] 'b'", "unknown key 'dealy'", "did you mean 'delay'"]),
+    "a bare number with a dimension": (GOOD.replace('"400 N*m"', "400"),
+                                       ["[[brake]] 'b'", "torque needs a value with its unit"]),
+    "a wrong unit": (GOOD.replace('"12 kg*m^2"', '"12 kg"'), ["inertia 'wheel'", "'12 kg'"]),
+    "a missing key": (GOOD.replace('body = "wheel"\n', ""), ["[[brake]] 'b'", "lacks 'body'"]),
+    "a table where an array is due": (GOOD.replace("[[brake]]", "[brake]"),
+                                      ["[[brake]] must be an array of tables"]),
+    "no duration": (GOOD.replace('duration = "2 s"\n', ""), ["[run] lacks 'duration'"]),
+    "a topology error": (GOOD.replace('body = "wheel"', 'body = "whel"'),
+                         ["component model 'flywheel'", "brake 'b' names unknown body 'whel'"]),
+    "text that is code": (GOOD.replace('"400 N*m"', '"__import__(\'os\').system(\'x\')"'),
+                          ["brake 'b': torque", "must start with a number"]),
+    "not TOML": ("[model\n", ["not valid TOML"]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD))
+def test_a_bad_component_file_is_one_line_naming_what(case, tmp_path):
+    text, phrases = BAD[case]
+    path = tmp_path / "model.toml"
+    path.write_text(text)
+    with pytest.raises(ComponentError) as info:
+        read_component_file(path)
+    message = str(info.value)
+    assert "\n" not in message
+    for phrase in phrases:
+        assert phrase in message, (case, message)
+
+
+def test_a_good_small_file_runs(tmp_path):
+    path = tmp_path / "model.toml"
+    path.write_text(GOOD)
+    read = read_component_file(path)
+    run = read.model.run(read.duration, read.body, read.speed)
+    assert dict((e, t) for t, e in run.events)["wheel rests"] == \
+        pytest.approx(0.05 + 12 * 30 / 400, rel=1e-12)
+
+
+def test_cli_error_is_one_line(tmp_path, capsys):
+    path = tmp_path / "model.toml"
+    path.write_text(GOOD.replace('delay = "0.05 s"', 'dealy = "0.05 s"'))
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("crane-sym: error:") and "\n" not in err
+    assert not (tmp_path / "out").exists()
