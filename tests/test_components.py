@@ -154,3 +154,48 @@ def test_a_damped_link_rings_down_to_its_new_static_load():
     w, k = run.system.link_load(0)(run.result.segments[-1].mode)
     end = run.result.segments[-1]
     assert float(w @ end.state(3.0) + k) == pytest.approx(250.0, rel=1e-6)
+
+
+def test_fig9_equations_match_the_hand_written_model_symbolically():
+    """The component model's Lagrange equations, renamed to Table 1's symbols,
+    are the hand-written model's in each kind of mode (``elastic.py``: J1 θ̈_m =
+    T − M_M + brake, J_d θ̈_d = −T + M_L − brake, T = c (θ_d − θ_m + off)); a
+    hand-written model that forgets the hook's inertia is caught."""
+    from crane_sym.components.compare import compare_equations
+    model = Model(fig9_parts(52e3))
+    eq = model.equations
+    s = {x.name: x for x in eq.values} | {x.name: x for x in
+                                          (*eq.contact, *eq.flank, *eq.switches, *eq.friction,
+                                           *eq.motor_loads)}
+    t = eq.t
+    J1, J2, m_h, m_p, r, i_g, i_t, g, c, gap, M_SB, M_L_ = sp.symbols(
+        "J1 J2 m_h m_p r i_g i_t g c s M_SB M_L", positive=True)
+    th_m, th_d = sp.Function("theta_m")(t), sp.Function("theta_d")(t)
+    names = {s["J_motor"]: J1, s["J_shaft"]: 0, s["J_drum"]: J2, s["m_hook"]: m_h + m_p,
+             s["i_gearbox"]: i_g, s["r_rope"]: r, s["n_rope"]: i_t, s["g_weight"]: g,
+             s["c_coupling"]: c, s["d_coupling"]: 0,
+             eq.coordinates[0]: th_m, eq.coordinates[1]: th_d}
+    J_d = J2 / i_g**2 + (m_h + m_p) * (r / (i_g * i_t))**2
+    M_L = (m_h + m_p) * g * r / (i_g * i_t)
+
+    def hand(off, motor, drum_brake, J_drum=J_d):
+        T = c * (th_d - th_m + off)
+        return [sp.Eq(J1 * th_m.diff(t, 2), T + motor),
+                sp.Eq(J_drum * th_d.diff(t, 2), -T + M_L + drum_brake)]
+
+    modes = {   # holding flank, motor holding; other flank, motor off, safety brake sliding
+        "holding": ({s["chi_coupling"]: 1, s["delta_coupling"]: 0, s["on_drive"]: 1,
+                     s["M_drive"]: -M_L_, s["B_safety"]: 0, s["B_service"]: 0},
+                    hand(0, -M_L_, 0)),
+        "other flank": ({s["chi_coupling"]: 1, s["delta_coupling"]: -gap, s["on_drive"]: 0,
+                         s["B_safety"]: -M_SB, s["B_service"]: 0},
+                        hand(gap, 0, -M_SB / i_g)),
+    }
+    for name, (mode, reference) in modes.items():
+        records = compare_equations(eq, reference, mode, names)
+        assert [r.outcome.status for r in records] == ["pass", "pass"], name
+        assert "hand-written" in records[1].latex()
+    mode, _ = modes["holding"]
+    wrong = compare_equations(eq, hand(0, -M_L_, 0, J_drum=J2 / i_g**2), mode, names)
+    assert [r.outcome.status for r in wrong] == ["pass", "fail"]
+    assert "m_{h}" in wrong[1].outcome.detail
