@@ -38,7 +38,7 @@ def test_run_writes_the_numbers_and_the_plot_into_out_only(tmp_path, capsys):
     assert "dynamic factor -5.796" in printed
     assert "event at t = 0.100000 s: safety_brakes engages" in printed
     assert sorted(p.name for p in tmp_path.rglob("*")) == \
-        ["hoist_fig9.json", "hoist_fig9_loads.png", "out"]
+        ["hoist_fig9.json", "hoist_fig9_loads.png", "model_hoist_fig9.py", "out"]
     data = json.loads((out / "hoist_fig9.json").read_text())
     assert data["peaks"][0]["unit"] == "N*m"
     assert [e["event"] for e in data["events"]][:2] == ["drive off", "safety_brakes engages"]
@@ -115,3 +115,38 @@ def test_cli_error_is_one_line(tmp_path, capsys):
     err = capsys.readouterr().err.strip()
     assert err.startswith("crane-sym: error:") and "\n" not in err
     assert not (tmp_path / "out").exists()
+
+
+def _load_module(path):
+    import importlib.util
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_generated_module_agrees_with_the_run_and_keeps_text_as_data(tmp_path):
+    """The module (tables from the mpmath replay) against the double run, to
+    1e-9 of the peak; a title that could close a docstring stays a literal."""
+    import numpy as np
+
+    from crane_sym.components.generate import render_component_module
+    from crane_sym.mechanics.phase_table import values
+    title = 'x""" + __import__("os").system("echo hi") + """ \\N{BULLET}'
+    path = tmp_path / "model.toml"
+    path.write_text(EXAMPLE.read_text().replace(
+        'title = "Table 1 hoist: emergency stop while lowering 52 t (Fig. 9)"',
+        f"title = {json.dumps(title)}"))
+    read = read_component_file(path)
+    assert read.model.title == title
+    run = read.model.run(read.duration, read.body, read.speed)
+    target = tmp_path / "model_hoist_fig9.py"
+    target.write_text(render_component_module(run))
+    module = _load_module(target)
+    assert module.MODEL_TITLE == title
+    times = np.linspace(0.0, 1.0, 4001)
+    expected = values(run.result, times, run.system.link_load(0))
+    peak = abs(run.peaks[0].value)
+    assert np.max(np.abs(module.load_gearbox_mesh(times) - expected)) <= 1e-9 * peak
+    with pytest.raises(ValueError, match="t must be <="):
+        module.load_gearbox_mesh(1.5)

@@ -198,7 +198,7 @@ class ComponentSystem:
     def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
         """The next mode and state after a guard or a scheduled event."""
         kind, i = self.events[event]
-        x = np.array(x, dtype=float)
+        x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
         if kind in ("open", "close+", "close-"):
             contacts = list(mode.contacts)
             contacts[i] = {"open": 0, "close+": 1, "close-": -1}[kind]

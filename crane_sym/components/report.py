@@ -1,7 +1,8 @@
 """What ``crane-sym run FILE`` does with a component file: the run from its
 steady start, phase by phase in closed form, the peak load and dynamic factor
-of every elastic link, the event times; a JSON of those numbers and a plot of
-the links' loads, written only into the folder the user names.
+of every elastic link, the event times; a JSON of those numbers, the
+generated module of the links' loads and a plot of them, written only into the
+folder the user names.
 """
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from pathlib import Path
 import numpy as np
 
 from crane_sym import output_files
+from crane_sym.components.generate import module_name, render_component_module
 from crane_sym.components.model import ComponentRun
 from crane_sym.components.reading import ComponentFile, read_component_file
 from crane_sym.mechanics.phase_table import values
@@ -67,16 +69,19 @@ def _figure(run: ComponentRun, title: str):
 
 
 def run_component_file(path: str | Path, out: str | Path) -> ComponentReport:
-    """Read ``path``, run it, write ``<name>.json`` and ``<name>_loads*.png``
-    into ``out`` (nothing else, nowhere else)."""
+    """Read ``path``, run it, write ``<name>.json``, the module
+    ``model_<name>.py`` (the links' loads as tables of closed forms) and
+    ``<name>_loads*.png`` into ``out`` (nothing else, nowhere else)."""
     output_files.check_folder(out)
     read: ComponentFile = read_component_file(path)
     model = read.model
     run = model.run(read.duration, read.body, read.speed)
     lines = report_lines(run)
     figs = _figure(run, model.title or model.name)
+    source = render_component_module(run)
     with output_files.staged(out) as stage:
-        files = [stage.text(f"{model.name}.json", _json(run, model.name))]
+        files = [stage.text(f"{model.name}.json", _json(run, model.name)),
+                 stage.text(module_name(run), source)]
         names = ([f"{model.name}_loads.png"] if len(figs) == 1 else
                  [f"{model.name}_loads_{k}.png" for k in range(1, len(figs) + 1)])
         for fig, name in zip(figs, names):
