@@ -199,3 +199,34 @@ def test_fig9_equations_match_the_hand_written_model_symbolically():
     wrong = compare_equations(eq, hand(0, -M_L_, 0, J_drum=J2 / i_g**2), mode, names)
     assert [r.outcome.status for r in wrong] == ["pass", "fail"]
     assert "m_{h}" in wrong[1].outcome.detail
+
+
+def test_paper_003_start_up_agrees_with_the_hand_written_three_mass_drive():
+    """Paper 003's travel drive, two links with backlash and a stepped start,
+    as components from rest: the load F1 + F2 the hand-written model gives, to
+    1e-9 of its peak, everywhere on the run."""
+    try:
+        startup = importlib.import_module("derivations.portal_travel.startup")
+    except ImportError:
+        pytest.skip("no hand-written travel drive of paper 003")
+    from crane_sym.components.parts import Characteristic
+    from crane_sym.mechanics.phase_table import values
+    p = dict(startup.CHOSEN)
+    d = startup.drive(startup.reduced(p, np.pi), p, startup.HOLDS)
+    theirs_run = d.run(4.0)
+    parts = [Mass("crane", d.m_k), Mass("left", d.m_d), Mass("right", d.m_d),
+             ElasticLink("link_left", "crane", "left", d.c, d.b, d.s1, contact="negative"),
+             ElasticLink("link_right", "crane", "right", d.c, d.b, d.s2, contact="negative"),
+             Characteristic("motors_left", "left", d.v0, list(d.slopes), list(d.holds)),
+             Characteristic("motors_right", "right", d.v0, list(d.slopes), list(d.holds)),
+             Brake("friction", "crane", d.W_f), Resistance("wind", "crane", -d.W_w)]
+    run = Model(parts).run(4.0, rest=True)
+    times = np.linspace(0.0, 4.0, 8001)
+    ours = sum(values(run.result, times, run.system.link_load(i)) for i in range(2))
+    theirs = d.load(theirs_run, times)
+    peak = abs(d.peak(theirs_run)[1])
+    assert np.max(np.abs(ours - theirs)) <= 1e-9 * peak
+    assert sum(p.value for p in run.peaks) == pytest.approx(d.peak(theirs_run)[1], rel=1e-9)
+    breakaway = [t for t, e, _ in theirs_run.events if e == "away +"]
+    assert dict((e, t) for t, e in run.events)["crane slips +"] == \
+        pytest.approx(breakaway[0], abs=1e-9)

@@ -14,8 +14,9 @@ body b of group g at κ_b·q_g. From the components:
 
 with u_k = κ_second q − κ_first q the twist of elastic link k, χ_k its
 contact (1 on a flank, 0 in its gap) and δ_k the flank it rests on (0, or the
-gap's other end), F a motor's torque times its switch ``on``, a weight m g, a
-resistance, or a brake's signed friction B. Lagrange's equations with Rayleigh
+gap's other end), F a motor's torque times its switch ``on``, a
+characteristic's β (v0 − v), a weight m g, a resistance, or a brake's signed
+friction B. Lagrange's equations with Rayleigh
 dissipation (:func:`crane_sym.mechanics.lagrange.lagrange_equations`) give
 M q̈ + D q̇ + K q = f, linear in the state: χ, δ, ``on`` and B are what a mode
 of the hybrid system fixes (:mod:`crane_sym.components.hybrid`).
@@ -29,7 +30,7 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
-from crane_sym.components.parts import Brake, Gear, Gravity, Motor, Resistance
+from crane_sym.components.parts import Brake, Characteristic, Gear, Gravity, Motor, Resistance
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 
@@ -61,6 +62,7 @@ class Equations:
     contact, flank : χ_k and δ_k of the links with backlash (the others have χ = 1, δ = 0)
     switches : the ``on`` symbol of each motor
     friction : the signed friction B of each brake
+    slopes : the slope β of each characteristic (its step is the mode's)
     values : every parameter symbol's SI value (a steady motor's torque once solved: not here)
     """
 
@@ -79,6 +81,7 @@ class Equations:
     friction: tuple[sp.Symbol, ...]
     motor_loads: tuple[sp.Symbol, ...]
     values: dict[sp.Symbol, float]
+    slopes: tuple[sp.Symbol, ...] = ()
 
     @property
     def t(self) -> sp.Symbol:
@@ -105,15 +108,16 @@ class Equations:
         return M, D, K, sp.expand(f)
 
     def numeric(self, extra: dict[sp.Symbol, float] | None = None) -> Callable:
-        """(χ, δ, on, B) -> (M, D, K, f) as arrays, the parameters' values put in
+        """(χ, δ, on, B, β) -> (M, D, K, f) as arrays, the parameters' values put in
         (and ``extra``: a steady motor's solved torque)."""
         values = {**self.values, **(extra or {})}
         M, D, K, f = (m.xreplace(values) for m in self.linear)
-        args = [list(self.contact), list(self.flank), list(self.switches), list(self.friction)]
+        args = [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
+                list(self.slopes)]
         fn = sp.lambdify(args, (M, D, K, f), "numpy")
 
-        def evaluate(chi, delta, on, friction):
-            out = fn(list(chi), list(delta), list(on), list(friction))
+        def evaluate(chi, delta, on, friction, slopes=()):
+            out = fn(list(chi), list(delta), list(on), list(friction), list(slopes))
             return tuple(np.array(m, dtype=float) for m in out[:3]) + \
                 (np.array(out[3], dtype=float).reshape(-1),)
         return evaluate
@@ -163,7 +167,7 @@ def derive(assembly: Assembly) -> Equations:
         twists.append(u)
         loads.append(chi * (c * (u - delta) + d * u.diff(t)))
     forces = {q: sp.Integer(0) for q in coords}
-    switches, friction, motors = [], [], []
+    switches, friction, motors, slopes = [], [], [], []
     for load in assembly.loads:
         part = load.part
         kappa, q = where[part.body]
@@ -184,9 +188,14 @@ def derive(assembly: Assembly) -> Equations:
         elif isinstance(part, Brake):
             F = _r(f"B_{part.name}")
             friction.append(F)
+        elif isinstance(part, Characteristic):
+            beta, v0 = _p(f"beta_{part.name}"), _r(f"v0_{part.name}")
+            values[v0] = load.values[0]
+            slopes.append(beta)
+            F = beta * (v0 - kappa * q.diff(t))
         forces[q] += kappa * F
     eqs = lagrange_equations(T, V, coords, t, forces, D)
     return Equations(assembly, tuple(coords), T, V, D, forces, eqs, tuple(twists),
                      tuple(loads), tuple(contact), tuple(flank), tuple(switches),
-                     tuple(friction), tuple(motors), values)
+                     tuple(friction), tuple(motors), values, tuple(slopes))
 

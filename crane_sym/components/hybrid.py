@@ -15,7 +15,7 @@ linear:
   is held when its speed reaches zero while the rest of its load N stays
   within the brakes' capacity Σ |κ| M β, and slides again when N reaches it;
 - each brake engaged or not (at its delay), each ramp under way or done,
-  each motor on or off (at its instant).
+  each motor on or off (at its instant), each characteristic on its step.
 
 Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
 solves each phase in closed form and finds the events on those closed forms.
@@ -27,7 +27,7 @@ from functools import lru_cache
 import numpy as np
 
 from crane_sym.components.equations import Equations
-from crane_sym.components.parts import Brake, ComponentError, Motor
+from crane_sym.components.parts import Brake, Characteristic, ComponentError, Motor
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["ComponentSystem", "Mode"]
@@ -45,6 +45,7 @@ class Mode:
     engaged: tuple[bool, ...]
     driven: tuple[bool, ...]
     ramping: tuple[bool, ...]
+    steps: tuple[int, ...] = ()
 
 
 class ComponentSystem:
@@ -62,6 +63,7 @@ class ComponentSystem:
         self.backlash = [l for l in a.links if l.backlash > 0]
         self.brakes = [l for l in a.loads if isinstance(l.part, Brake)]
         self.motors = [l for l in a.loads if isinstance(l.part, Motor)]
+        self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
         built = [i for i, b in enumerate(self.brakes) if b.part.build_up != "step"]
         self.beta = {i: 2 * self.n + j for j, i in enumerate(built)}
         self.size = 2 * self.n + len(built)
@@ -81,6 +83,8 @@ class ComponentSystem:
             self.events[f"{b.part.name} ramp done"] = ("ramped", k)
         for m, motor in enumerate(self.motors):
             self.events[f"{motor.part.name} off"] = ("off", m)
+        for m, law in enumerate(self.characteristics):
+            self.events[f"{law.part.name} next step"] = ("step", m)
         self._linear = lru_cache(maxsize=None)(self._linear_uncached)
 
     # --- positions in the state -------------------------------------------------
@@ -108,24 +112,28 @@ class ComponentSystem:
             delta.append(hi if c > 0 else lo if c < 0 else 0.0)
         return chi, delta
 
-    def _linear_uncached(self, contacts: tuple[int, ...], driven: tuple[bool, ...]):
-        """(M, D, K, f without friction, ∂f/∂B per brake) of the contacts and motors."""
+    def _linear_uncached(self, contacts: tuple[int, ...], driven: tuple[bool, ...],
+                         steps: tuple[int, ...] = ()):
+        """(M, D, K, f without friction, ∂f/∂B per brake) of the contacts, the
+        motors and the characteristics' steps."""
         chi, delta = self._flanks(contacts)
         on = [1.0 if d else 0.0 for d in driven]
+        slopes = [law.values[1 + min(k, len(law.values) - 2)]
+                  for law, k in zip(self.characteristics, steps or [0] * len(self.characteristics))]
         zero = [0.0] * len(self.brakes)
-        M, D, K, f = self._numeric(chi, delta, on, zero)
+        M, D, K, f = self._numeric(chi, delta, on, zero, slopes)
         E = np.zeros((self.n, len(self.brakes)))
         for k in range(len(self.brakes)):
             unit = list(zero)
             unit[k] = 1.0
-            E[:, k] = self._numeric(chi, delta, on, unit)[3] - f
+            E[:, k] = self._numeric(chi, delta, on, unit, slopes)[3] - f
         if np.count_nonzero(M - np.diag(np.diag(M))):
             raise ComponentError("the mass matrix is not diagonal")     # rigid groups make it so
         return np.diag(M).copy(), D, K, f, E
 
     def net_load(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """The generalized load on group g but its brakes' friction, as w·x + k."""
-        M, D, K, f, _ = self._linear(mode.contacts, mode.driven)
+        M, D, K, f, _ = self._linear(mode.contacts, mode.driven, mode.steps)
         w = np.zeros(self.size)
         w[0:2 * self.n:2] = -K[g]
         w[1:2 * self.n:2] = -D[g]
@@ -145,7 +153,7 @@ class ComponentSystem:
 
     def matrices(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(A, b) of a mode."""
-        M, D, K, f, E = self._linear(mode.contacts, mode.driven)
+        M, D, K, f, E = self._linear(mode.contacts, mode.driven, mode.steps)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
         for g in range(self.n):
             if mode.motion[g] == HELD:
@@ -191,8 +199,10 @@ class ComponentSystem:
                                  -1 if state == FORWARD else 1))
             elif state == HELD:
                 (wn, kn), (wc, kc) = self.net_load(mode, g), self.capacity(mode, g)
-                out.append(Guard(f"{name} slips +", tuple(wn - wc), kn - kc, 1))
-                out.append(Guard(f"{name} slips -", tuple(wn + wc), kn + kc, -1))
+                if (wn - wc).any():        # a constant load cannot come to slide
+                    out.append(Guard(f"{name} slips +", tuple(wn - wc), kn - kc, 1))
+                if (wn + wc).any():
+                    out.append(Guard(f"{name} slips -", tuple(wn + wc), kn + kc, -1))
         return out
 
     def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
@@ -203,6 +213,10 @@ class ComponentSystem:
             contacts = list(mode.contacts)
             contacts[i] = {"open": 0, "close+": 1, "close-": -1}[kind]
             return replace(mode, contacts=tuple(contacts)), x
+        if kind == "step":
+            steps = list(mode.steps)
+            steps[i] += 1
+            return replace(mode, steps=tuple(steps)), x
         if kind == "off":
             driven = list(mode.driven)
             driven[i] = False

@@ -36,8 +36,8 @@ import numpy as np
 
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
-from crane_sym.components.parts import (DIMENSIONS, Brake, Component, ComponentError, Given, Motor,
-                                        ROTATING, value)
+from crane_sym.components.parts import (DIMENSIONS, Brake, Characteristic, Component,
+                                        ComponentError, Given, Motor, ROTATING, value)
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, stationary_times
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
@@ -151,16 +151,20 @@ class Model:
                 return symbol
         return None
 
-    def start(self, body: str | None = None, speed: Given = 0.0
+    def start(self, body: str | None = None, speed: Given = 0.0, rest: bool = False
               ) -> tuple[Mode, np.ndarray, dict]:
-        """The steady state at t = 0: (mode, state, solved values).
+        """The state at t = 0: (mode, state, solved values).
 
-        Every group moves at the speed ``body``'s ``speed`` implies (no link
-        twisting), every link rests at the twist that balances the constant
-        loads with all motors on, on the flank its load pushes it to; a
-        ``steady`` motor's torque is solved with the twists.
+        Steady (the default): every group moves at the speed ``body``'s
+        ``speed`` implies (no link twisting), every link rests at the twist that
+        balances the loads with all motors on, on the flank its load pushes it
+        to; a ``steady`` motor's torque is solved with the twists. ``rest``:
+        everything at rest at zero twist, every gap open (a link with backlash
+        at the end of its gap where its twist is zero), whatever the loads.
         """
         a = self.assembly
+        if rest:
+            return self._rest_start()
         body = body or next(iter(a.bodies))
         if body not in a.bodies:
             raise ComponentError(f"start: unknown body {body!r}; bodies: {', '.join(a.bodies)}")
@@ -185,7 +189,8 @@ class Model:
         driven = tuple(True for _ in probe.motors)
         contacts = tuple(1 for _ in probe.backlash)
         for _ in range(2 * len(contacts) + 2):
-            positions, torque = self._balance(probe, unit, contacts, driven)
+            positions, torque = self._balance(probe, unit, contacts, driven,
+                                              np.asarray(rates, dtype=float))
             x = np.zeros(probe.size)
             x[0:2 * n:2], x[1:2 * n:2] = positions, rates
             turned = []
@@ -202,17 +207,28 @@ class Model:
         extra = {steady: torque} if steady is not None else {}
         mode = Mode(contacts, tuple(FREE for _ in range(n)),
                     tuple(False for _ in probe.brakes), driven,
-                    tuple(False for _ in probe.brakes))
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
         return mode, x, extra
 
+    def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
+        if self.steady_motor is not None:
+            raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
+                                 "hold; give its torque")
+        probe = ComponentSystem(self.equations)
+        mode = Mode(tuple(0 for _ in probe.backlash), tuple(FREE for _ in self.assembly.groups),
+                    tuple(False for _ in probe.brakes), tuple(True for _ in probe.motors),
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
+        return mode, np.zeros(probe.size), {}
+
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
-                 contacts: tuple, driven: tuple) -> tuple[np.ndarray, float]:
+                 contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
         """Positions (the first group's at 0) and the steady motor's torque that
-        make K q = f; ComponentError if no motor torque balances the loads."""
-        _, _, K, f, _ = probe._linear(contacts, driven)
+        make K q = f − D q̇; ComponentError if no motor torque balances the loads."""
+        _, D, K, f0, _ = probe._linear(contacts, driven)
+        f = f0 - D @ rates
         columns = [K[:, 1:]]
         if unit is not None:
-            columns.append(-(unit._linear(contacts, driven)[3] - f)[:, None])
+            columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
         matrix = np.hstack(columns)
         if matrix.shape[1]:
             z = np.linalg.lstsq(matrix, f, rcond=None)[0]
@@ -240,17 +256,21 @@ class Model:
                     out.append((part.delay + part.time, f"{part.name} ramp done"))
             elif isinstance(part, Motor) and part.off_at is not None:
                 out.append((part.off_at, f"{part.name} off"))
+            elif isinstance(part, Characteristic):
+                out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
         return tuple(sorted(out))
 
     def run(self, duration: Given, start_body: str | None = None,
-            start_speed: Given = 0.0, exact: bool | None = None) -> ComponentRun:
-        """The run from the steady state of :meth:`start` over ``duration``,
-        phases in closed form (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+            start_speed: Given = 0.0, exact: bool | None = None,
+            rest: bool = False) -> ComponentRun:
+        """The run from the state of :meth:`start` (steady, or at ``rest``) over
+        ``duration``, phases in closed form
+        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
         from sympy.physics.units import time
         t_end = value("run", "duration", duration, time).si
         if not t_end > 0:
             raise ComponentError(f"run: duration must be > 0, got {duration!r}")
-        mode, x0, extra = self.start(start_body, start_speed)
+        mode, x0, extra = self.start(start_body, start_speed, rest)
         system = ComponentSystem(self.equations, extra)
         schedule = self.schedule()
         result = simulate(system, mode, x0, t_end, schedule, exact=exact)

@@ -28,7 +28,7 @@ from sympy.physics.units import Dimension, force, length, mass, time
 
 from crane_sym import units
 
-__all__ = ["BUILD_UPS", "Body", "Brake", "Component", "ComponentError", "Drum", "ElasticLink",
+__all__ = ["BUILD_UPS", "Body", "Brake", "Characteristic", "Component", "ComponentError", "Drum", "ElasticLink",
            "Gear", "Gravity", "Inertia", "Mass", "Motor", "Resistance", "ROTATING", "STEADY",
            "TRANSLATING", "Value", "value"]
 
@@ -378,6 +378,39 @@ class Resistance(Component):
             object.__setattr__(self, key, v)
 
 
+@dataclass(frozen=True)
+class Characteristic(Component):
+    """A motor whose torque (force) falls linearly with the body's speed,
+    β_k (v0 − v): lines through the no-load speed ``speed``, the slope of a
+    stepped start (a rheostat) moving to the next of ``slopes`` at each of the
+    ``holds`` in turn (one fewer hold than slopes; the last slope stays)."""
+
+    name: str
+    body: str
+    speed: Value
+    slopes: tuple[Value, ...]
+    holds: tuple[float, ...]
+    kind = "characteristic"
+
+    def __init__(self, name: str, body: str, speed: Given, slopes, holds=()) -> None:
+        name = _name("characteristic", name)
+        owner = f"characteristic {name!r}"
+        if not isinstance(slopes, (list, tuple)) or not slopes:
+            raise ComponentError(f"{owner}: slopes must be a non-empty list")
+        if not isinstance(holds, (list, tuple)) or len(holds) != len(slopes) - 1:
+            raise ComponentError(f"{owner}: give one hold time fewer than slopes "
+                                 f"({len(slopes) - 1}), got {holds!r}")
+        k = tuple(value(owner, "slope", x) for x in slopes)
+        for x in k:
+            _at_least(owner, "slope", x, 0.0, True)
+        h = tuple(value(owner, "hold", x, time) for x in holds)
+        for x in h:
+            _at_least(owner, "hold", x, 0.0, True)
+        for key, v in (("name", name), ("body", body), ("speed", value(owner, "speed", speed)),
+                       ("slopes", k), ("holds", tuple(x.si for x in h))):
+            object.__setattr__(self, key, v)
+
+
 #: The rigid links and the things that act on one body, by attribute.
 RIGID = (Gear, Drum)
-ACTING = (Brake, Motor, Gravity, Resistance)
+ACTING = (Brake, Motor, Characteristic, Gravity, Resistance)

@@ -24,7 +24,8 @@ from typing import Sequence
 import sympy as sp
 
 from crane_sym.components.parts import (ACTING, DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body,
-                                        Component, ComponentError, Drum, ElasticLink, Gear,
+                                        Characteristic, Component, ComponentError, Drum,
+                                        ElasticLink, Gear,
                                         Gravity, Motor)
 
 __all__ = ["Assembly", "Group", "Link", "Load", "assemble"]
@@ -73,6 +74,7 @@ class Load:
 
     part: Component
     load: float | None
+    values: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -259,6 +261,11 @@ def _load(part: Component, bodies: dict[str, Body]) -> Load:
         return Load(part, body.inertia * part.g * (1.0 if part.direction == "+" else -1.0))
     if isinstance(part, Motor) and part.load is None:
         return Load(part, None)
+    if isinstance(part, Characteristic):
+        where = f"{part.label} on {body.label}"
+        speed = part.speed.check(where, "speed", DIMENSIONS["speed"][body.motion])
+        return Load(part, None, (speed, *(k.check(where, "slope", DIMENSIONS["damping"][body.motion])
+                                          for k in part.slopes)))
     word = "torque" if body.motion == ROTATING else "force"
     return Load(part, part.load.check(f"{part.label} on {body.label}", word,
                                       DIMENSIONS["load"][body.motion]))
