@@ -150,3 +150,28 @@ def test_generated_module_agrees_with_the_run_and_keeps_text_as_data(tmp_path):
     assert np.max(np.abs(module.load_gearbox_mesh(times) - expected)) <= 1e-9 * peak
     with pytest.raises(ValueError, match="t must be <="):
         module.load_gearbox_mesh(1.5)
+
+
+def test_portal_startup_example_agrees_with_paper_003s_hand_written_drive():
+    import importlib
+
+    import numpy as np
+    try:
+        startup = importlib.import_module("derivations.portal_travel.startup")
+    except ImportError:
+        pytest.skip("no hand-written travel drive of paper 003")
+    p = dict(startup.CHOSEN)
+    d = startup.drive(startup.reduced(p, np.pi), p, startup.HOLDS)
+    when, peak = d.peak(d.run(4.0))
+    read = read_component_file(EXAMPLE.with_name("portal_startup.toml"))
+    assert read.rest
+    run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
+    assert sum(p.value for p in run.peaks) == pytest.approx(peak, rel=1e-9)
+    assert run.peaks[0].time == pytest.approx(when, abs=1e-9)
+
+
+def test_a_start_at_rest_takes_no_speed(tmp_path):
+    path = tmp_path / "model.toml"
+    path.write_text(GOOD.replace('speed = "30 rad/s"', 'start = "rest"\nspeed = "1 rad/s"'))
+    with pytest.raises(ComponentError, match="a start at rest takes no body or speed"):
+        read_component_file(path)

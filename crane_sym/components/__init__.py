@@ -5,7 +5,7 @@ refer bodies to one another (merged into rigid groups, one coordinate each);
 elastic links with stiffness, viscous damping and an optional backlash gap;
 brakes (delay, step, ramp or exponential build-up, holding at rest within
 their capacity); motors (a constant or steady torque, switched off at an
-instant); gravity on masses; constant resistances. From them: topology checks
+instant; or a characteristic β (v0 − v) stepped at hold times); gravity on masses; constant resistances. From them: topology checks
 with one-line errors naming the component, T, Π, Φ and Q, Lagrange's
 equations in the components' symbols, the piecewise-linear system of its
 modes, a run solved phase by phase in closed form, and the component TOML.
@@ -14,9 +14,9 @@ May import: the top-level vocabulary (``units``, ``symbols``, ...),
 ``mechanics``, ``kernels``, ``codegen`` and ``scenes`` (its helpers for
 reading tables); papers never.
 """
-from crane_sym.components.parts import (Brake, ComponentError, Drum, ElasticLink, Gear, Gravity,
-                                        Inertia, Mass, Motor, Resistance, STEADY)
+from crane_sym.components.parts import (Brake, Characteristic, ComponentError, Drum, ElasticLink,
+                                        Gear, Gravity, Inertia, Mass, Motor, Resistance, STEADY)
 from crane_sym.components.model import ComponentRun, LinkPeak, Model
 
-__all__ = ["Brake", "ComponentError", "ComponentRun", "Drum", "ElasticLink", "Gear", "Gravity",
+__all__ = ["Brake", "Characteristic", "ComponentError", "ComponentRun", "Drum", "ElasticLink", "Gear", "Gravity",
            "Inertia", "LinkPeak", "Mass", "Model", "Motor", "Resistance", "STEADY"]

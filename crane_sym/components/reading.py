@@ -59,8 +59,16 @@
     body = "trolley"
     force = "-1.2 kN"           # `torque` on a rotating body
 
+    [[characteristic]]          # a motor's β (v0 − v), stepped at the hold times
+    name = "motors"
+    body = "left"
+    speed = "0.57 m/s"          # no-load speed v0
+    slopes = ["1.7e5 N*s/m", "3.4e5 N*s/m"]
+    holds = ["0.4 s"]           # one fewer than slopes
+
     [run]
     duration = "1 s"
+    start = "steady"            # or "rest": at rest, zero twist, every gap open
     body = "motor"              # the body whose speed is given (default: the first)
     speed = "1500 rpm"          # every part moves steadily at the start
 
@@ -78,8 +86,8 @@ from pathlib import Path
 from typing import Any
 
 from crane_sym.components.model import Model
-from crane_sym.components.parts import (Brake, ComponentError, Drum, ElasticLink, Gear, Gravity,
-                                        Inertia, Mass, Motor, Resistance)
+from crane_sym.components.parts import (Brake, Characteristic, ComponentError, Drum, ElasticLink,
+                                        Gear, Gravity, Inertia, Mass, Motor, Resistance)
 from crane_sym.scenes.options import did_you_mean
 
 __all__ = ["ComponentFile", "is_component_file", "read_component_file"]
@@ -94,6 +102,7 @@ TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
                                                     "reference")),
     "brake": (("name", "body"), ("torque", "force", "delay", "build_up", "time")),
     "motor": (("name", "body"), ("torque", "force", "off_at")),
+    "characteristic": (("name", "body", "speed", "slopes"), ("holds",)),
     "gravity": (("name", "body"), ("g", "direction")),
     "resistance": (("name", "body"), ("torque", "force")),
 }
@@ -101,7 +110,9 @@ TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
 NUMBERS = ("ratio", "reeving")
 #: Keys that are names or choices, not quantities.
 WORDS = ("name", "input", "output", "drum", "load", "body", "contact", "build_up", "direction")
-MODEL_KEYS, RUN_KEYS = ("name", "title"), ("duration", "body", "speed")
+MODEL_KEYS, RUN_KEYS = ("name", "title"), ("duration", "start", "body", "speed")
+#: Keys that are lists of quantities.
+LISTS = ("slopes", "holds")
 _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
 
 
@@ -114,6 +125,7 @@ class ComponentFile:
     body: str | None
     speed: Any
     path: Path
+    rest: bool = False
 
 
 def is_component_file(path: str | Path) -> bool:
@@ -139,6 +151,11 @@ def _given(entry: dict, key: str, where: str) -> Any:
     """A value of an entry: text (a word or a quantity), a bare number only
     where it is dimensionless."""
     v = entry[key]
+    if key in LISTS:
+        if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
+            raise ComponentError(f"{where}: {key} must be a list of values with their units "
+                                 f"as text, e.g. [\"0.4 s\", \"0.8 s\"], got {v!r}")
+        return v
     if key in WORDS:
         if not isinstance(v, str):
             raise ComponentError(f"{where}: {key} must be text, got {v!r}")
@@ -184,6 +201,8 @@ def _build(kind: str, entry: dict, where: str):
                      g.get("build_up", "step"), g.get("time", 0.0))
     if kind == "motor":
         return Motor(g["name"], g["body"], g[_load_key(entry, where)], g.get("off_at"))
+    if kind == "characteristic":
+        return Characteristic(g["name"], g["body"], g["speed"], g["slopes"], g.get("holds", []))
     if kind == "gravity":
         return Gravity(g["name"], g["body"], g.get("g", "9.81 m/s^2"), g.get("direction", "+"))
     return Resistance(g["name"], g["body"], g[_load_key(entry, where)])
@@ -231,6 +250,12 @@ def read_component_file(path: str | Path) -> ComponentFile:
         raise ComponentError(f"{where_file}: [run] lacks 'duration', e.g. duration = \"1 s\"")
     settings = {k: _given(run, k, f"{where_file}: [run]") if k == "body" else run[k]
                 for k in run}
+    start = run.get("start", "steady")
+    if start not in ("steady", "rest"):
+        raise ComponentError(f"{where_file}: [run] start must be 'steady' or 'rest', "
+                             f"got {start!r}")
+    if start == "rest" and ("speed" in run or "body" in run):
+        raise ComponentError(f"{where_file}: [run] a start at rest takes no body or speed")
     for key in ("duration", "speed"):
         if key in settings and not isinstance(settings[key], str):
             raise ComponentError(f"{where_file}: [run] {key} needs a value with its unit as "
@@ -240,4 +265,4 @@ def read_component_file(path: str | Path) -> ComponentFile:
     except ComponentError as exc:
         raise ComponentError(f"{where_file}: {exc}") from None
     return ComponentFile(model, settings["duration"], settings.get("body"),
-                         settings.get("speed", 0.0), p)
+                         settings.get("speed", 0.0), p, start == "rest")

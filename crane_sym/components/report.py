@@ -75,7 +75,7 @@ def run_component_file(path: str | Path, out: str | Path) -> ComponentReport:
     output_files.check_folder(out)
     read: ComponentFile = read_component_file(path)
     model = read.model
-    run = model.run(read.duration, read.body, read.speed)
+    run = model.run(read.duration, read.body, read.speed, rest=read.rest)
     lines = report_lines(run)
     figs = _figure(run, model.title or model.name)
     source = render_component_module(run)
