@@ -18,7 +18,9 @@ from crane_sym.components import (Brake, ComponentError, Drum, ElasticLink, Gear
 def hand_written():
     """The hand-written two-mass hoist of paper 001 (``elastic.py``, or
     ``hybrid.py`` once it moves there), imported by name."""
-    for name in ("derivations.hoist_brakes.hybrid", "derivations.hoist_brakes.elastic"):
+    for name in ("crane_sym.derivations.hoist_brakes.hybrid",
+                 "crane_sym.derivations.hoist_brakes.elastic",
+                 "derivations.hoist_brakes.hybrid", "derivations.hoist_brakes.elastic"):
         try:
             module = importlib.import_module(name)
         except ImportError:
@@ -206,7 +208,7 @@ def test_paper_003_start_up_agrees_with_the_hand_written_three_mass_drive():
     as components from rest: the load F1 + F2 the hand-written model gives, to
     1e-9 of its peak, everywhere on the run."""
     try:
-        startup = importlib.import_module("derivations.portal_travel.startup")
+        startup = importlib.import_module("crane_sym.derivations.portal_travel.startup")
     except ImportError:
         pytest.skip("no hand-written travel drive of paper 003")
     from crane_sym.components.parts import Characteristic
@@ -230,3 +232,28 @@ def test_paper_003_start_up_agrees_with_the_hand_written_three_mass_drive():
     breakaway = [t for t, e, _ in theirs_run.events if e == "away +"]
     assert dict((e, t) for t, e in run.events)["crane slips +"] == \
         pytest.approx(breakaway[0], abs=1e-9)
+
+
+def test_paper_000_two_mass_braking_gives_eq_14_symbolically():
+    """Paper 000's bridge braked through an elastic link, as components: the
+    closed form of the link force, derived in the parts' symbols from the
+    relaxed start, is the paper's eq (14) (with p of eq (6))."""
+    from crane_sym import registry
+    from crane_sym.components.closed import link_response
+    model = Model([Mass("one", "4 t"), Mass("two", "20 t"),
+                   ElasticLink("link", "one", "two", "1e6 N/m"),
+                   Resistance("braking", "one", "-10 kN"),
+                   Resistance("resistance", "two", "-2 kN")])
+    response = link_response(model)
+    d = registry.get("travel_braking")
+    paper = importlib.import_module("crane_sym.derivations.travel_braking.model")
+    s = {x.name: x for x in model.equations.values}
+    names = {s["m_one"]: paper.m1, s["m_two"]: paper.m2, s["c_link"]: paper.c,
+             s["R_braking"]: -paper.P_t, s["R_resistance"]: -paper.W,
+             model.equations.t: paper.t}
+    eq14 = d.step("(14)").statement.rhs.subs(paper.p, d.step("(6)").statement.rhs)
+    assert sp.simplify(response.force.subs(names) - eq14) == 0
+    with pytest.raises(ComponentError, match="constant loads"):
+        link_response(Model(fig9_parts(0.0)[:6] + [
+            ElasticLink("coupling", "motor", "shaft", "4e4 N*m/rad"),
+            Brake("safety", "drum", "130 kN*m")]))

@@ -157,7 +157,7 @@ def test_portal_startup_example_agrees_with_paper_003s_hand_written_drive():
 
     import numpy as np
     try:
-        startup = importlib.import_module("derivations.portal_travel.startup")
+        startup = importlib.import_module("crane_sym.derivations.portal_travel.startup")
     except ImportError:
         pytest.skip("no hand-written travel drive of paper 003")
     p = dict(startup.CHOSEN)
