@@ -211,7 +211,7 @@ def test_paper_003_start_up_agrees_with_the_hand_written_three_mass_drive():
         startup = importlib.import_module("crane_sym.derivations.portal_travel.startup")
     except ImportError:
         pytest.skip("no hand-written travel drive of paper 003")
-    from crane_sym.components.parts import Characteristic
+    from crane_sym.components import Characteristic
     from crane_sym.mechanics.phase_table import values
     p = dict(startup.CHOSEN)
     d = startup.drive(startup.reduced(p, np.pi), p, startup.HOLDS)

@@ -14,8 +14,9 @@ May import: the top-level vocabulary (``units``, ``symbols``, ...),
 ``mechanics``, ``kernels``, ``codegen`` and ``scenes`` (its helpers for
 reading tables); papers never.
 """
-from crane_sym.components.parts import (Brake, Characteristic, ComponentError, Drum, ElasticLink,
-                                        Gear, Gravity, Inertia, Mass, Motor, Resistance, STEADY)
+from crane_sym.components.loads import (STEADY, Brake, Characteristic, Gravity, Motor,
+                                        Resistance)
+from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
 from crane_sym.components.model import ComponentRun, LinkPeak, Model
 
 __all__ = ["Brake", "Characteristic", "ComponentError", "ComponentRun", "Drum", "ElasticLink", "Gear", "Gravity",

@@ -19,7 +19,8 @@ from dataclasses import dataclass
 import sympy as sp
 
 from crane_sym.components.model import Model
-from crane_sym.components.parts import Brake, Characteristic, ComponentError, Motor
+from crane_sym.components.loads import Brake, Characteristic, Motor
+from crane_sym.components.parts import ComponentError
 from crane_sym.mechanics.elimination import RelativeEquation, relative_coordinate
 from crane_sym.mechanics.odes import solve_constant_coefficient
 

@@ -30,7 +30,8 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
-from crane_sym.components.parts import Brake, Characteristic, Gear, Gravity, Motor, Resistance
+from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
+from crane_sym.components.parts import Gear
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 

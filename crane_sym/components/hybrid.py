@@ -27,7 +27,8 @@ from functools import lru_cache
 import numpy as np
 
 from crane_sym.components.equations import Equations
-from crane_sym.components.parts import Brake, Characteristic, ComponentError, Motor
+from crane_sym.components.loads import Brake, Characteristic, Motor
+from crane_sym.components.parts import ComponentError
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["ComponentSystem", "Mode"]

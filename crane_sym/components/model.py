@@ -36,8 +36,9 @@ import numpy as np
 
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
-from crane_sym.components.parts import (DIMENSIONS, Brake, Characteristic, Component,
-                                        ComponentError, Given, Motor, ROTATING, value)
+from crane_sym.components.loads import Brake, Characteristic, Motor
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
+                                        value)
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, stationary_times
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate

@@ -86,8 +86,8 @@ from pathlib import Path
 from typing import Any
 
 from crane_sym.components.model import Model
-from crane_sym.components.parts import (Brake, Characteristic, ComponentError, Drum, ElasticLink,
-                                        Gear, Gravity, Inertia, Mass, Motor, Resistance)
+from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
+from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
 from crane_sym.scenes.options import did_you_mean
 
 __all__ = ["ComponentFile", "is_component_file", "read_component_file"]

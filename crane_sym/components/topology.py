@@ -23,10 +23,9 @@ from typing import Sequence
 
 import sympy as sp
 
-from crane_sym.components.parts import (ACTING, DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body,
-                                        Characteristic, Component, ComponentError, Drum,
-                                        ElasticLink, Gear,
-                                        Gravity, Motor)
+from crane_sym.components.loads import ACTING, Characteristic, Gravity, Motor
+from crane_sym.components.parts import (DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body, Component,
+                                        ComponentError, Drum, ElasticLink, Gear)
 
 __all__ = ["Assembly", "Group", "Link", "Load", "assemble"]
 
