@@ -175,3 +175,12 @@ def test_a_start_at_rest_takes_no_speed(tmp_path):
     path.write_text(GOOD.replace('speed = "30 rad/s"', 'start = "rest"\nspeed = "1 rad/s"'))
     with pytest.raises(ComponentError, match="a start at rest takes no body or speed"):
         read_component_file(path)
+
+
+def test_model_show_prints_groups_equations_and_modes(capsys):
+    assert main(["model", "show", str(EXAMPLE)]) == 0
+    text = capsys.readouterr().out
+    assert "theta_shaft: shaft = 1, drum = 1/i_gearbox, hook = r_rope/(i_gearbox*n_rope)" in text
+    assert "equations of motion (Lagrange, with Rayleigh dissipation):" in text
+    assert "elastic link 'gearbox_mesh': upper flank, gap, lower flank" in text
+    assert "group shaft: free, sliding +/-, held" in text

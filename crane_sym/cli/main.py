@@ -35,7 +35,9 @@ EXAMPLES = {
                 "  crane-sym generate --scene hoist_user_drive_law --out out/",
     "accuracy": "crane-sym accuracy 002",
     "bench": "crane-sym bench 000 002 004 --out bench/",
-    "run": "crane-sym run overhead_crane_50t --out out/",
+    "run": "crane-sym run overhead_crane_50t --out out/\n"
+           "  crane-sym run examples/drive_trains/hoist_fig9.toml --out out/",
+    "model": "crane-sym model show examples/drive_trains/hoist_fig9.toml",
     "sweep": "crane-sym sweep overhead_crane_50t --vary m1=1:100:200:log --vary P_t=5:50:200 "
              "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
              "--out sweep/ --format json",
@@ -212,6 +214,12 @@ def cmd_run(args: argparse.Namespace) -> int:
     return 0
 
 
+def _cmd_model(args: argparse.Namespace) -> int:
+    """Show a component model (``crane_sym.cli.components``)."""
+    from crane_sym.cli.components import cmd_model
+    return cmd_model(args)
+
+
 def _subcommand(sub, name: str, text: str, func, quiet: bool = False):
     """A subcommand with ``text`` as help and description, its example as the
     epilog, and (for the long commands) ``--quiet``."""
@@ -296,6 +304,10 @@ def parser() -> argparse.ArgumentParser:
                    "model TOML file (a [model] table; README, \"Your own drive train\")")
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
+    p = _subcommand(sub, "model", "a component model: its parts, rigid groups, equations "
+                    "of motion and modes", _cmd_model)
+    p.add_argument("action", choices=("show",))
+    p.add_argument("file", help="component model TOML file (a [model] table)")
     p = _subcommand(sub, "sweep", "a design sweep: outputs over a grid of designs, on Dask",
                     cli_sweep.cmd_sweep, True)
     cli_sweep.add_arguments(p)
