@@ -36,7 +36,9 @@ EXAMPLES = {
                 "  crane-sym generate --scene hoist_user_drive_law --out out/",
     "accuracy": "crane-sym accuracy 002",
     "bench": "crane-sym bench 000 002 004 --out bench/",
-    "run": "crane-sym run overhead_crane_50t --out out/",
+    "run": "crane-sym run overhead_crane_50t --out out/\n"
+           "  crane-sym run examples/drive_trains/hoist_fig9.toml --out out/",
+    "model": "crane-sym model show examples/drive_trains/hoist_fig9.toml",
     "sweep": "crane-sym sweep overhead_crane_50t --vary m1=1:100:200:log --vary P_t=5:50:200 "
              "\\\n      --output peak_elastic_force --limit \"peak_elastic_force<=40 kN\" "
              "--out sweep/ --format json",

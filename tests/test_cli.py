@@ -161,7 +161,10 @@ def test_every_name_in_an_example_can_be_listed(capsys):
             args = vars(parser().parse_args(shlex.split(command.split(">")[0])[1:]))
             named += [(w, papers) for w in args.get("ids", [])]
             named += [(args[k], papers) for k in ("id",) if k in args]
-            named += [(args[k], scenes) for k in ("scene",) if args.get(k)]
+            named += [(args[k], scenes) for k in ("scene",) if args.get(k)
+                      and not args[k].endswith(".toml")]
+            files = [args[k] for k in ("scene", "file") if str(args.get(k, "")).endswith(".toml")]
+            assert all((Path(__file__).parents[1] / f).is_file() for f in files), files
         assert [w for w, known in named if w not in known] == [], name
         if named:
             assert "crane-sym list" in _help([name], capsys).split("example", 1)[1], name

@@ -35,7 +35,11 @@ _SCENES = ("A scene by name (`crane-sym list --scenes` names the shipped ones)\n
            "or by the path of a TOML file.")
 #: Where the names an example uses come from, shown after it.
 NAMES = {"audit": _PAPERS, "walkthrough": _PAPERS, "accuracy": _PAPERS, "bench": _PAPERS,
-         "generate": _SCENES, "run": _SCENES, "sweep": _SCENES}
+         "generate": _SCENES, "sweep": _SCENES,
+         "run": _SCENES + "\nA drive train of your own: its component TOML file "
+                          "(examples/drive_trains/ has three).",
+         "model": "A drive train of your own: its component TOML file "
+                  "(examples/drive_trains/ has three)."}
 
 
 def _ids(names: Sequence[str]) -> list[str]:
@@ -210,8 +214,13 @@ def cmd_accuracy(args: argparse.Namespace) -> int:
 
 
 def cmd_run(args: argparse.Namespace) -> int:
-    """Run one scene: print its numbers, write its module and plots."""
+    """Run one scene: print its numbers, write its module and plots (a
+    component file: its peak loads and events, a JSON and a plot)."""
     # imported on use: see the module docstring
+    from crane_sym.components.reading import is_component_file
+    if is_component_file(args.scene):
+        from crane_sym.cli.components import cmd_run_components
+        return cmd_run_components(args)
     from crane_sym.scenes.run import run_scene
     from crane_sym.scenes.reading import load_scene
     with progress.reporting(_progress(args)) as say:
@@ -224,6 +233,12 @@ def cmd_run(args: argparse.Namespace) -> int:
     print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
           + ", ".join(str(f) for f in figures))
     return 0
+
+
+def _cmd_model(args: argparse.Namespace) -> int:
+    """Show a component model (``crane_sym.cli.components``)."""
+    from crane_sym.cli.components import cmd_model
+    return cmd_model(args)
 
 
 def _subcommand(sub, name: str, text: str, func, quiet: bool = False):
@@ -310,9 +325,14 @@ def parser() -> argparse.ArgumentParser:
                    "decade 1e-6 ... 1e-13)")
     p = _subcommand(sub, "run", "run a scene: print its results, write its module and plots",
                     cmd_run, True)
-    p.add_argument("scene", help="scene name or path to a scene TOML file")
+    p.add_argument("scene", help="scene name or path to a scene TOML file, or a component "
+                   "model TOML file (a [model] table; README, \"Your own drive train\")")
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
+    p = _subcommand(sub, "model", "a component model: its parts, rigid groups, equations "
+                    "of motion and modes", _cmd_model)
+    p.add_argument("action", choices=("show",))
+    p.add_argument("file", help="component model TOML file (a [model] table)")
     p = _subcommand(sub, "sweep", "a design sweep: outputs over a grid of designs, on Dask",
                     cli_sweep.cmd_sweep, True)
     cli_sweep.add_arguments(p)

@@ -271,7 +271,13 @@ def docstring_text(text: str) -> str:
     """``text`` made safe inside a module's triple-quoted docstring: no
     backslash (no escape, no ``\\N{...}``), no double quote (nothing can close
     the docstring), no control character but the newline. Text a user gave is
-    also kept whole, as a literal (:func:`render_module`'s ``constants``)."""
+    also kept whole, as a literal (:func:`render_module`'s ``constants``).
+
+    Parameters
+    ----------
+    text : str
+        Any text, a user's included.
+    """
     text = text.replace("\\", "/").replace('"', "'")
     return "".join(c if c == "\n" or c.isprintable() else " " for c in text)
 

@@ -48,7 +48,17 @@ def _array(values: np.ndarray, integer: bool = False) -> str:
 
 
 def render_tabulated(out: TabulatedOutput, table: PhaseTable, note: str) -> str:
-    """Source of the table constant and of the validated function ``out.name(t)``."""
+    """Source of the table constant and of the validated function ``out.name(t)``.
+
+    Parameters
+    ----------
+    out : TabulatedOutput
+        The response: its name, summary and weights.
+    table : PhaseTable
+        The run's phases in closed form (exact numbers).
+    note : str
+        A line for the function's docstring (how the table was solved).
+    """
     const = f"_TABLE_{out.name.upper()}"
     end = float(_number(table.edges[-1]))
     lines = [f"{const} = ("]

@@ -135,7 +135,17 @@ def values(result: PiecewiseResult, times: np.ndarray, affine: Affine) -> np.nda
 
 def stationary_times(segment: Segment, system: HybridSystem, weights: np.ndarray) -> list[float]:
     """Times inside the phase where d/dt(w·x) = w·(A x + b) changes sign, found
-    like any event on the closed form (:func:`first_crossing`: none skipped)."""
+    like any event on the closed form (:func:`first_crossing`: none skipped).
+
+    Parameters
+    ----------
+    segment : Segment
+        One phase of the run.
+    system : HybridSystem
+        The system (its matrices in the phase's mode).
+    weights : ndarray
+        The output's weights w on the state.
+    """
     A, b = system.matrices(segment.mode)
     rate_w, rate_k = np.asarray(weights, float) @ A, float(np.asarray(weights, float) @ b)
     found, t, x = [], segment.t0, segment.x0

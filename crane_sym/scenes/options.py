@@ -66,7 +66,15 @@ class OptionError(ValueError):
 
 
 def did_you_mean(key: str, known: Sequence[str]) -> str:
-    """``"did you mean 'points'? "`` for a key close to a known one, else ``""``."""
+    """``"did you mean 'points'? "`` for a key close to a known one, else ``""``.
+
+    Parameters
+    ----------
+    key : str
+        The unknown key.
+    known : sequence of str
+        The keys that are known there.
+    """
     close = difflib.get_close_matches(key, list(known), n=3, cutoff=0.6)
     return f"did you mean {' or '.join(map(repr, close))}? " if close else ""
 

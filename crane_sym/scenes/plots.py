@@ -89,7 +89,15 @@ def figures(panels: Sequence[Panel], title: str) -> list:
     ``title``, the panels' group if they have one, and the panel's own title
     when the figure holds a single panel (several panels keep theirs as
     captions); the group is said once, not again when that title starts with
-    it ("Fig. 5: …" under "Fig. 5")."""
+    it ("Fig. 5: …" under "Fig. 5").
+
+    Parameters
+    ----------
+    panels : sequence of Panel
+        The report's panels.
+    title : str
+        The figure title (text, not mathtext).
+    """
     from matplotlib.figure import Figure
 
     pages = layout(panels)

@@ -1,0 +1,62 @@
+"""``crane-sym run FILE`` for a component file (a drive train of the user's own)."""
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from crane_sym import progress
+
+__all__ = ["cmd_run_components"]
+
+
+def cmd_run_components(args: argparse.Namespace) -> int:
+    """Run a component file: print the peak loads and the events, write the
+    JSON and the plot into --out."""
+    from crane_sym.components.report import run_component_file
+    quiet = getattr(args, "quiet", False)
+    with progress.reporting(progress.Progress(progress.wanted(quiet))) as say:
+        with say.task(f"deriving and running {args.scene}"):
+            report = run_component_file(args.scene, Path(args.out))
+    model = report.run.model
+    print(f"model {model.name}: {model.title}" if model.title else f"model {model.name}")
+    for line in report.lines:
+        print(f"  {line}")
+    print("written: " + ", ".join(str(f) for f in report.files))
+    return 0
+
+
+def model_text(path: str) -> str:
+    """What ``crane-sym model show FILE`` prints: the components, the rigid
+    groups with their referred inertia, the energies, the equations of motion
+    in LaTeX, what the modes switch."""
+    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.hybrid import ComponentSystem
+    import sympy as sp
+    model = read_component_file(path).model
+    a, eq = model.assembly, model.equations
+    lines = [f"model {model.name}" + (f": {model.title}" if model.title else ""), "",
+             "components:"]
+    lines += [f"  {p.label}" for p in model.components]
+    lines += ["", "rigid groups (one coordinate each; body = kappa * coordinate):"]
+    for g, q in zip(a.groups, eq.coordinates):
+        members = ", ".join(f"{b.name} = {sp.sstr(k)}" for (b, _), k in zip(g.members, g.factors))
+        lines.append(f"  {q.func}: {members}; inertia referred {g.inertia:.6g}")
+    lines += ["", f"T = {sp.latex(eq.T)}", f"Pi = {sp.latex(eq.V)}",
+              f"Phi = {sp.latex(eq.dissipation)}", "",
+              "equations of motion (Lagrange, with Rayleigh dissipation):"]
+    lines += [f"  {text}" for text in eq.latex()]
+    system = ComponentSystem(eq)
+    lines += ["", "modes:"]
+    lines += [f"  {l.part.label}: upper flank, gap, lower flank" for l in system.backlash]
+    lines += [f"  {b.part.label} on {b.part.body}: off, engaged" for b in system.brakes]
+    lines += [f"  {m.part.label}: on, off" for m in system.motors if m.part.off_at is not None]
+    lines += [f"  {c.part.label}: {len(c.part.slopes)} steps" for c in system.characteristics]
+    braked = sorted({a.groups[g].name for g in system.brake_group})
+    lines += [f"  group {name}: free, sliding +/-, held" for name in braked]
+    return "\n".join(lines)
+
+
+def cmd_model(args: argparse.Namespace) -> int:
+    """``crane-sym model show FILE``."""
+    print(model_text(args.file))
+    return 0

@@ -1,0 +1,275 @@
+"""The piecewise-linear system of a component model: its modes, their
+x' = A x + b, the events between them, and a run solved phase by phase.
+
+The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…): each rigid group's coordinate
+and speed, then the build-up 0 ≤ β ≤ 1 of each brake whose torque ramps or
+rises exponentially (a step brake has β = 1 once engaged). A :class:`Mode`
+fixes what makes the equations of :mod:`crane_sym.components.equations`
+linear:
+
+- each link with backlash: on its upper flank (+1), in its gap (0) or on its
+  lower flank (−1); it opens where its twist returns to the flank, it closes
+  where the twist reaches the other end of the gap;
+- each group: ``free`` (no brake engaged), sliding ``+`` or ``-`` against its
+  brakes (friction −sign(q̇)·Σ |κ| M β), or held ``0`` (q̇ = 0): a sliding group
+  is held when its speed reaches zero while the rest of its load N stays
+  within the brakes' capacity Σ |κ| M β, and slides again when N reaches it;
+- each brake engaged or not (at its delay), each ramp under way or done,
+  each motor on or off (at its instant), each characteristic on its step.
+
+Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
+solves each phase in closed form and finds the events on those closed forms.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from functools import lru_cache
+import numpy as np
+
+from crane_sym.components.equations import Equations
+from crane_sym.components.loads import Brake, Characteristic, Motor
+from crane_sym.components.parts import ComponentError
+from crane_sym.mechanics.piecewise_linear import Guard
+
+__all__ = ["ComponentSystem", "Mode"]
+
+FREE, FORWARD, BACKWARD, HELD = "free", "+", "-", "0"
+
+
+@dataclass(frozen=True)
+class Mode:
+    """Contacts of the backlash links, motion of each group, brakes engaged,
+    motors on, ramps under way (see the module docstring)."""
+
+    contacts: tuple[int, ...]
+    motion: tuple[str, ...]
+    engaged: tuple[bool, ...]
+    driven: tuple[bool, ...]
+    ramping: tuple[bool, ...]
+    steps: tuple[int, ...] = ()
+
+
+class ComponentSystem:
+    """A :class:`crane_sym.mechanics.piecewise_linear.HybridSystem` built from
+    the equations of a component model; ``extra`` gives values solved later
+    (a steady motor's torque)."""
+
+    def __init__(self, equations: Equations, extra: dict | None = None) -> None:
+        self.equations = equations
+        a = equations.assembly
+        self.assembly = a
+        self.extra = dict(extra or {})
+        self._numeric = equations.numeric(self.extra)
+        self.n = len(a.groups)
+        self.backlash = [l for l in a.links if l.backlash > 0]
+        self.brakes = [l for l in a.loads if isinstance(l.part, Brake)]
+        self.motors = [l for l in a.loads if isinstance(l.part, Motor)]
+        self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
+        built = [i for i, b in enumerate(self.brakes) if b.part.build_up != "step"]
+        self.beta = {i: 2 * self.n + j for j, i in enumerate(built)}
+        self.size = 2 * self.n + len(built)
+        self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
+        self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
+        self.events: dict[str, tuple[str, int]] = {}
+        for j, l in enumerate(self.backlash):
+            for suffix, kind in ((" opens", "open"), (" closes +", "close+"),
+                                 (" closes -", "close-")):
+                self.events[l.part.name + suffix] = (kind, j)
+        for g, group in enumerate(a.groups):
+            for suffix, kind in ((" rests", "rest"), (" slips +", "slip+"),
+                                 (" slips -", "slip-")):
+                self.events[group.name + suffix] = (kind, g)
+        for k, b in enumerate(self.brakes):
+            self.events[f"{b.part.name} engages"] = ("engage", k)
+            self.events[f"{b.part.name} ramp done"] = ("ramped", k)
+        for m, motor in enumerate(self.motors):
+            self.events[f"{motor.part.name} off"] = ("off", m)
+        for m, law in enumerate(self.characteristics):
+            self.events[f"{law.part.name} next step"] = ("step", m)
+        self._linear = lru_cache(maxsize=None)(self._linear_uncached)
+
+    # --- positions in the state -------------------------------------------------
+    def q(self, g: int) -> int:
+        return 2 * g
+
+    def v(self, g: int) -> int:
+        return 2 * g + 1
+
+    def twist(self, link) -> np.ndarray:
+        """Weights of a link's twist u = κ_b q_b − κ_a q_a (and, shifted by one,
+        of its rate)."""
+        w = np.zeros(self.size)
+        (ga, ka, _), (gb, kb, _) = (self.assembly.place[e] for e in link.part.ends)
+        w[self.q(ga)] -= ka
+        w[self.q(gb)] += kb
+        return w
+
+    # --- the linear pieces --------------------------------------------------------
+    def _flanks(self, contacts: tuple[int, ...]) -> tuple[list[float], list[float]]:
+        chi, delta = [], []
+        for l, c in zip(self.backlash, contacts):
+            lo, hi = l.part.flanks                          # SI, rad or m
+            chi.append(0.0 if c == 0 else 1.0)
+            delta.append(hi if c > 0 else lo if c < 0 else 0.0)
+        return chi, delta
+
+    def _linear_uncached(self, contacts: tuple[int, ...], driven: tuple[bool, ...],
+                         steps: tuple[int, ...] = ()):
+        """(M, D, K, f without friction, ∂f/∂B per brake) of the contacts, the
+        motors and the characteristics' steps."""
+        chi, delta = self._flanks(contacts)
+        on = [1.0 if d else 0.0 for d in driven]
+        slopes = [law.values[1 + min(k, len(law.values) - 2)]
+                  for law, k in zip(self.characteristics, steps or [0] * len(self.characteristics))]
+        zero = [0.0] * len(self.brakes)
+        M, D, K, f = self._numeric(chi, delta, on, zero, slopes)
+        E = np.zeros((self.n, len(self.brakes)))
+        for k in range(len(self.brakes)):
+            unit = list(zero)
+            unit[k] = 1.0
+            E[:, k] = self._numeric(chi, delta, on, unit, slopes)[3] - f
+        if np.count_nonzero(M - np.diag(np.diag(M))):
+            raise ComponentError("the mass matrix is not diagonal")     # rigid groups make it so
+        return np.diag(M).copy(), D, K, f, E
+
+    def net_load(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
+        """The generalized load on group g but its brakes' friction, as w·x + k."""
+        M, D, K, f, _ = self._linear(mode.contacts, mode.driven, mode.steps)
+        w = np.zeros(self.size)
+        w[0:2 * self.n:2] = -K[g]
+        w[1:2 * self.n:2] = -D[g]
+        return w, float(f[g])
+
+    def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
+        """What the engaged brakes of group g can hold, Σ |κ| M β, as w·x + k."""
+        w, k = np.zeros(self.size), 0.0
+        for i, brake in enumerate(self.brakes):
+            if self.brake_group[i] == g and mode.engaged[i]:
+                size = abs(self.brake_kappa[i]) * brake.load
+                if i in self.beta:
+                    w[self.beta[i]] += size
+                else:
+                    k += size
+        return w, k
+
+    def matrices(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
+        """(A, b) of a mode."""
+        M, D, K, f, E = self._linear(mode.contacts, mode.driven, mode.steps)
+        A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
+        for g in range(self.n):
+            if mode.motion[g] == HELD:
+                continue
+            A[self.q(g), self.v(g)] = 1.0
+            row = self.v(g)
+            A[row, 0:2 * self.n:2] = -K[g] / M[g]
+            A[row, 1:2 * self.n:2] = -D[g] / M[g]
+            b[row] = f[g] / M[g]
+            if mode.motion[g] in (FORWARD, BACKWARD):
+                sign = 1.0 if mode.motion[g] == FORWARD else -1.0
+                w, k = self.capacity(mode, g)
+                A[row] -= sign * w / M[g]
+                b[row] -= sign * k / M[g]
+        for i, col in self.beta.items():
+            part = self.brakes[i].part
+            if not mode.engaged[i]:
+                continue
+            if part.build_up == "ramp" and mode.ramping[i]:
+                b[col] = 1.0 / part.time
+            elif part.build_up == "exponential":
+                A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
+        return A, b
+
+    def guards(self, mode: Mode) -> list[Guard]:
+        """Contacts that change, sliding groups that come to rest, held groups
+        that slide again."""
+        out = []
+        for l, c in zip(self.backlash, mode.contacts):
+            u = tuple(self.twist(l))
+            lo, hi = l.part.flanks
+            name = l.part.name
+            if c > 0:
+                out.append(Guard(f"{name} opens", u, -hi, -1))
+            elif c < 0:
+                out.append(Guard(f"{name} opens", u, -lo, 1))
+            else:
+                out += [Guard(f"{name} closes +", u, -hi, 1), Guard(f"{name} closes -", u, -lo, -1)]
+        for g, state in enumerate(mode.motion):
+            name = self.assembly.groups[g].name
+            if state in (FORWARD, BACKWARD):
+                out.append(Guard(f"{name} rests", tuple(np.eye(self.size)[self.v(g)]), 0.0,
+                                 -1 if state == FORWARD else 1))
+            elif state == HELD:
+                (wn, kn), (wc, kc) = self.net_load(mode, g), self.capacity(mode, g)
+                if (wn - wc).any():        # a constant load cannot come to slide
+                    out.append(Guard(f"{name} slips +", tuple(wn - wc), kn - kc, 1))
+                if (wn + wc).any():
+                    out.append(Guard(f"{name} slips -", tuple(wn + wc), kn + kc, -1))
+        return out
+
+    def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
+        """The next mode and state after a guard or a scheduled event."""
+        kind, i = self.events[event]
+        x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
+        if kind in ("open", "close+", "close-"):
+            contacts = list(mode.contacts)
+            contacts[i] = {"open": 0, "close+": 1, "close-": -1}[kind]
+            return replace(mode, contacts=tuple(contacts)), x
+        if kind == "step":
+            steps = list(mode.steps)
+            steps[i] += 1
+            return replace(mode, steps=tuple(steps)), x
+        if kind == "off":
+            driven = list(mode.driven)
+            driven[i] = False
+            return replace(mode, driven=tuple(driven)), x
+        if kind == "ramped":
+            ramping = list(mode.ramping)
+            ramping[i] = False
+            x[self.beta[i]] = 1.0
+            return replace(mode, ramping=tuple(ramping)), x
+        motion = list(mode.motion)
+        if kind == "engage":
+            engaged, ramping = list(mode.engaged), list(mode.ramping)
+            engaged[i] = True
+            ramping[i] = self.brakes[i].part.build_up == "ramp"
+            mode = replace(mode, engaged=tuple(engaged), ramping=tuple(ramping))
+            g = self.brake_group[i]
+            if motion[g] != FREE:
+                return mode, x
+            speed = x[self.v(g)]
+            if speed:
+                motion[g] = FORWARD if speed > 0 else BACKWARD
+                return replace(mode, motion=tuple(motion)), x
+            kind = "rest"
+        g = i
+        x[self.v(g)] = 0.0
+        if kind == "slip+":
+            motion[g] = FORWARD
+        elif kind == "slip-":
+            motion[g] = BACKWARD
+        else:                                    # at rest: held while the load is within
+            held = replace(mode, motion=tuple(motion[:g] + [HELD] + motion[g + 1:]))
+            (wn, kn), (wc, kc) = self.net_load(held, g), self.capacity(held, g)
+            net, cap = float(wn @ x + kn), float(wc @ x + kc)
+            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
+        return replace(mode, motion=tuple(motion)), x
+
+    # --- outputs ------------------------------------------------------------------
+    def link_load(self, index: int):
+        """The load of elastic link ``index`` per mode, as (w, k): the output of
+        a run that :func:`crane_sym.mechanics.phase_table.largest` and
+        ``tabulate`` take."""
+        link = self.assembly.links[index]
+        u = self.twist(link)
+        rate = np.roll(u, 1)                     # q̇ sits right after q
+        rate[2 * self.n:] = 0.0
+        position = [j for j, l in enumerate(self.backlash) if l is link]
+
+        def affine(mode: Mode) -> tuple[np.ndarray, float]:
+            delta = 0.0
+            if position:
+                if mode.contacts[position[0]] == 0:
+                    return np.zeros(self.size), 0.0
+                delta = self._flanks(mode.contacts)[1][position[0]]
+            return link.stiffness * u + link.damping * rate, -link.stiffness * delta
+        return affine

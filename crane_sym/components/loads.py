@@ -1,0 +1,162 @@
+"""What acts on one body of a drive train: brakes, motors (constant, steady or
+a speed characteristic), gravity and constant resistances.
+
+Values are text with a unit or numbers in SI (:func:`crane_sym.components.parts.value`);
+a torque on a rotating body is a force on a translating one, checked when the
+model is assembled.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from sympy.physics.units import length, time
+
+from crane_sym.components.parts import (Component, ComponentError, Given, Value, _at_least,
+                                        _name, value)
+
+__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "Gravity", "Motor", "Resistance",
+           "STEADY"]
+
+#: A motor torque that holds the drive in its steady motion at the start.
+STEADY = "steady"
+#: How a brake's torque builds up after its delay.
+BUILD_UPS = ("step", "ramp", "exponential")
+
+
+@dataclass(frozen=True)
+class Brake(Component):
+    """A brake on ``body``: after ``delay`` its torque (a force on a translating
+    body) builds up to ``load`` as a step, a linear ``ramp`` over ``time``, or
+    an ``exponential`` 1 − e^(−τ/time); it opposes the motion while the body
+    slides and holds the body once it comes to rest while the rest of the load
+    stays within what it can hold."""
+
+    name: str
+    body: str
+    load: Value
+    delay: float = 0.0
+    build_up: str = "step"
+    time: float = 0.0
+    kind = "brake"
+
+    def __init__(self, name: str, body: str, load: Given, delay: Given = 0.0,
+                 build_up: str = "step", time_: Given = 0.0) -> None:
+        name = _name("brake", name)
+        owner = f"brake {name!r}"
+        m = value(owner, "torque", load)
+        _at_least(owner, "torque", m, 0.0, True)
+        dt = value(owner, "delay", delay, time)
+        _at_least(owner, "delay", dt, 0.0, False)
+        if build_up not in BUILD_UPS:
+            raise ComponentError(f"{owner}: build_up must be one of {', '.join(BUILD_UPS)}, "
+                                 f"got {build_up!r}")
+        tt = value(owner, "time", time_, time)
+        if build_up == "step":
+            _at_least(owner, "time", tt, 0.0, False)
+        else:
+            _at_least(owner, f"time of its {build_up}", tt, 0.0, True)
+        for key, v in (("name", name), ("body", body), ("load", m), ("delay", dt.si),
+                       ("build_up", build_up), ("time", tt.si)):
+            object.__setattr__(self, key, v)
+
+
+@dataclass(frozen=True)
+class Motor(Component):
+    """A constant torque (a force on a translating body) along the body's
+    coordinate, or :data:`STEADY`: the torque that holds the drive in its steady
+    motion at the start; switched off at ``off_at`` (None: never)."""
+
+    name: str
+    body: str
+    load: Value | None
+    off_at: float | None = None
+    kind = "motor"
+
+    def __init__(self, name: str, body: str, load: Given, off_at: Given | None = None) -> None:
+        name = _name("motor", name)
+        owner = f"motor {name!r}"
+        m = None if load == STEADY else value(owner, "torque", load)
+        off = None
+        if off_at is not None:
+            off = value(owner, "off_at", off_at, time)
+            _at_least(owner, "off_at", off, 0.0, False)
+        for key, v in (("name", name), ("body", body), ("load", m),
+                       ("off_at", None if off is None else off.si)):
+            object.__setattr__(self, key, v)
+
+
+@dataclass(frozen=True)
+class Gravity(Component):
+    """The weight of a translating body: its mass times ``g``, along its
+    coordinate (``direction`` "+") or against it ("-")."""
+
+    name: str
+    body: str
+    g: float = 9.81
+    direction: str = "+"
+    kind = "gravity"
+
+    def __init__(self, name: str, body: str, g: Given = "9.81 m/s^2",
+                 direction: str = "+") -> None:
+        name = _name("gravity", name)
+        owner = f"gravity {name!r}"
+        v = value(owner, "g", g, length / time**2)
+        _at_least(owner, "g", v, 0.0, False)
+        if direction not in ("+", "-"):
+            raise ComponentError(f"{owner}: direction must be '+' or '-', got {direction!r}")
+        for key, val in (("name", name), ("body", body), ("g", v.si), ("direction", direction)):
+            object.__setattr__(self, key, val)
+
+
+@dataclass(frozen=True)
+class Resistance(Component):
+    """A constant torque or force on a body along its coordinate (negative:
+    against it), e.g. a travel resistance during a run of known direction."""
+
+    name: str
+    body: str
+    load: Value
+    kind = "resistance"
+
+    def __init__(self, name: str, body: str, load: Given) -> None:
+        name = _name("resistance", name)
+        for key, v in (("name", name), ("body", body),
+                       ("load", value(f"resistance {name!r}", "torque", load))):
+            object.__setattr__(self, key, v)
+
+
+@dataclass(frozen=True)
+class Characteristic(Component):
+    """A motor whose torque (force) falls linearly with the body's speed,
+    β_k (v0 − v): lines through the no-load speed ``speed``, the slope of a
+    stepped start (a rheostat) moving to the next of ``slopes`` at each of the
+    ``holds`` in turn (one fewer hold than slopes; the last slope stays)."""
+
+    name: str
+    body: str
+    speed: Value
+    slopes: tuple[Value, ...]
+    holds: tuple[float, ...]
+    kind = "characteristic"
+
+    def __init__(self, name: str, body: str, speed: Given, slopes, holds=()) -> None:
+        name = _name("characteristic", name)
+        owner = f"characteristic {name!r}"
+        if not isinstance(slopes, (list, tuple)) or not slopes:
+            raise ComponentError(f"{owner}: slopes must be a non-empty list")
+        if not isinstance(holds, (list, tuple)) or len(holds) != len(slopes) - 1:
+            raise ComponentError(f"{owner}: give one hold time fewer than slopes "
+                                 f"({len(slopes) - 1}), got {holds!r}")
+        k = tuple(value(owner, "slope", x) for x in slopes)
+        for x in k:
+            _at_least(owner, "slope", x, 0.0, True)
+        h = tuple(value(owner, "hold", x, time) for x in holds)
+        for x in h:
+            _at_least(owner, "hold", x, 0.0, True)
+        for key, v in (("name", name), ("body", body), ("speed", value(owner, "speed", speed)),
+                       ("slopes", k), ("holds", tuple(x.si for x in h))):
+            object.__setattr__(self, key, v)
+
+
+#: The things that act on one body.
+ACTING = (Brake, Motor, Characteristic, Gravity, Resistance)

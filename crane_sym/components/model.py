@@ -1,0 +1,278 @@
+"""A drive train from components: assembled, derived, started in its steady
+motion and run phase by phase.
+
+.. code-block:: text
+
+    motor J1 --[ c, d, backlash s ]-- shaft --gear i-- drum J2 --drum r, n-- hook m
+      motor torque, switched off        (no inertia)       brake             gravity
+      service brake                                                          payload
+
+>>> from crane_sym.components import (Brake, Drum, ElasticLink, Gear, Gravity,
+...     Inertia, Mass, Model, Motor)
+>>> model = Model([Inertia("motor", "20 kg*m^2"), Inertia("shaft", 0),
+...     Inertia("drum", "500 kg*m^2"), Mass("hook", "62 t"),
+...     Gear("gearbox", "shaft", "drum", 26.2), Drum("rope", "drum", "hook", "0.5 m", 4),
+...     ElasticLink("coupling", "motor", "shaft", "4e4 N*m/rad", backlash="78.6 deg"),
+...     Gravity("weight", "hook"), Motor("drive", "motor", "steady", off_at="0 s"),
+...     Brake("safety", "drum", "130 kN*m", delay="0.1 s"),
+...     Brake("service", "motor", "5.8 kN*m", delay="0.4 s")])
+>>> run = model.run("1 s", start_body="motor", start_speed="1500 rpm")
+>>> round(run.peaks[0].value)            # the coupling's torque at its largest, N·m
+-16819
+
+:meth:`Model.run` finds the steady state at the start (every group moving at
+the speed the given body's speed implies, every elastic link at the twist
+that balances the constant loads, a ``steady`` motor's torque solved with
+them) and hands the :class:`~crane_sym.components.hybrid.ComponentSystem` to
+:func:`crane_sym.mechanics.piecewise_linear.simulate`.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Sequence
+
+import numpy as np
+
+from crane_sym.components.equations import Equations, derive
+from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
+from crane_sym.components.loads import Brake, Characteristic, Motor
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
+                                        value)
+from crane_sym.components.topology import Assembly, assemble
+from crane_sym.mechanics.phase_table import HybridRun, stationary_times
+from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
+
+__all__ = ["ComponentRun", "LinkPeak", "Model"]
+
+
+@dataclass(frozen=True)
+class LinkPeak:
+    """The largest load of an elastic link over a run (signed), when it
+    occurs, its load at the start and the dynamic factor (peak over
+    ``reference``: the link's given reference load, else its load at the start)."""
+
+    link: str
+    time: float
+    value: float
+    unit: str
+    static: float
+    reference: float | None
+
+    @property
+    def factor(self) -> float | None:
+        return None if not self.reference else self.value / self.reference
+
+
+@dataclass(frozen=True, eq=False)
+class ComponentRun:
+    """One run: the system, its start, its phases in closed form, the peaks."""
+
+    model: "Model"
+    system: ComponentSystem
+    mode: Mode
+    x0: np.ndarray
+    t_end: float
+    schedule: tuple[tuple[float, str], ...]
+    result: PiecewiseResult
+
+    @property
+    def events(self) -> list[tuple[float, str]]:
+        """(time, event) of every event in order (the run's end left out)."""
+        return [(t, e) for t, e, _ in self.result.events if e != "end"]
+
+    @cached_property
+    def peaks(self) -> list[LinkPeak]:
+        """The peak of every elastic link, in the order the links were given."""
+        out = []
+        for i, link in enumerate(self.system.assembly.links):
+            affine = self.system.link_load(i)
+            when, peak = _largest(self.result, self.system, affine)
+            w, k = affine(self.mode)
+            static = float(np.asarray(w) @ self.x0 + k)
+            motion = self.system.assembly.bodies[link.part.first].motion
+            reference = link.reference if link.reference is not None else (static or None)
+            out.append(LinkPeak(link.part.name, when, peak,
+                                "N*m" if motion == ROTATING else "N", static, reference))
+        return out
+
+    def hybrid_run(self, link: str) -> HybridRun:
+        """The run with the load of ``link`` as its output (what a scene's module
+        tabulates, :mod:`crane_sym.mechanics.phase_table`)."""
+        names = [l.part.name for l in self.system.assembly.links]
+        if link not in names:
+            raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
+        return HybridRun(self.system, self.mode, self.x0, self.t_end, self.schedule,
+                         self.system.link_load(names.index(link)))
+
+
+def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[float, float]:
+    """(time, value) of the largest |w·x + k| over the run: each phase's ends,
+    and its stationary points where its rate is not flat (a load held constant
+    has a rate of rounding noise, whose every sign change would be an extremum;
+    :func:`crane_sym.mechanics.phase_table.largest` on the rest). Of peaks equal
+    to 1e-12 (an undamped gap rings at one amplitude), the first is taken."""
+    best, key = (0.0, float("nan")), -np.inf
+    for seg in result.segments:
+        w, k = affine(seg.mode)
+        w = np.asarray(w, float)
+        candidates = [seg.t0, seg.t1]
+        if w.any():
+            A, b = system.matrices(seg.mode)
+            out, _ = seg.form.scalar_terms(w, k, seg.x0)
+            rate, rk = seg.form.scalar_terms(w @ A, float(w @ b), seg.x0)
+            pace = 1.0 + float(np.max(np.abs(seg.form.omegas) + np.abs(seg.form.sigmas),
+                                      initial=0.0))
+            if np.abs(rate).sum() + abs(rk) > 1e-12 * pace * (np.abs(out).sum() + abs(k)):
+                candidates += stationary_times(seg, system, w)
+        found = seg.state(np.array(candidates)) @ w + k
+        i = int(np.argmax(np.abs(found)))
+        if abs(found[i]) > key * (1 + 1e-12):     # of equal peaks, the first
+            best, key = (float(candidates[i]), float(found[i])), abs(found[i])
+    return best
+
+
+class Model:
+    """Components assembled (:func:`~crane_sym.components.topology.assemble`)
+    and derived (:func:`~crane_sym.components.equations.derive`)."""
+
+    def __init__(self, components: Sequence[Component], name: str = "model",
+                 title: str = "") -> None:
+        self.components = tuple(components)
+        self.name, self.title = name, title
+        self.assembly: Assembly = assemble(self.components)
+        self.equations: Equations = derive(self.assembly)
+
+    @property
+    def steady_motor(self):
+        """The symbol of the torque of the ``steady`` motor, or None."""
+        for load, symbol in zip([l for l in self.assembly.loads if isinstance(l.part, Motor)],
+                                self.equations.motor_loads):
+            if load.load is None:
+                return symbol
+        return None
+
+    def start(self, body: str | None = None, speed: Given = 0.0, rest: bool = False
+              ) -> tuple[Mode, np.ndarray, dict]:
+        """The state at t = 0: (mode, state, solved values).
+
+        Steady (the default): every group moves at the speed ``body``'s
+        ``speed`` implies (no link twisting), every link rests at the twist that
+        balances the loads with all motors on, on the flank its load pushes it
+        to; a ``steady`` motor's torque is solved with the twists. ``rest``:
+        everything at rest at zero twist, every gap open (a link with backlash
+        at the end of its gap where its twist is zero), whatever the loads.
+        """
+        a = self.assembly
+        if rest:
+            return self._rest_start()
+        body = body or next(iter(a.bodies))
+        if body not in a.bodies:
+            raise ComponentError(f"start: unknown body {body!r}; bodies: {', '.join(a.bodies)}")
+        v = value(f"start of {body!r}", "speed", speed,
+                  DIMENSIONS["speed"][a.bodies[body].motion]).si
+        n = len(a.groups)
+        rates = [None] * n
+        g0, k0, _ = a.place[body]
+        rates[g0] = v / k0
+        changed = True
+        while changed:
+            changed = False
+            for link in a.links:
+                (ga, ka, _), (gb, kb, _) = (a.place[e] for e in link.part.ends)
+                if rates[ga] is not None and rates[gb] is None:
+                    rates[gb], changed = rates[ga] * ka / kb, True
+                elif rates[gb] is not None and rates[ga] is None:
+                    rates[ga], changed = rates[gb] * kb / ka, True
+        steady = self.steady_motor
+        probe = ComponentSystem(self.equations, {steady: 0.0} if steady is not None else {})
+        unit = ComponentSystem(self.equations, {steady: 1.0}) if steady is not None else None
+        driven = tuple(True for _ in probe.motors)
+        contacts = tuple(1 for _ in probe.backlash)
+        for _ in range(2 * len(contacts) + 2):
+            positions, torque = self._balance(probe, unit, contacts, driven,
+                                              np.asarray(rates, dtype=float))
+            x = np.zeros(probe.size)
+            x[0:2 * n:2], x[1:2 * n:2] = positions, rates
+            turned = []
+            for link, c in zip(probe.backlash, contacts):
+                u = float(probe.twist(link) @ x)
+                lo, hi = link.part.flanks
+                turned.append(c if (u >= hi if c > 0 else u <= lo) else -c)
+            if tuple(turned) == contacts:
+                break
+            contacts = tuple(turned)
+        else:
+            raise ComponentError("no steady state at the start: the links with backlash "
+                                 "cannot all rest on a flank")
+        extra = {steady: torque} if steady is not None else {}
+        mode = Mode(contacts, tuple(FREE for _ in range(n)),
+                    tuple(False for _ in probe.brakes), driven,
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
+        return mode, x, extra
+
+    def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
+        if self.steady_motor is not None:
+            raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
+                                 "hold; give its torque")
+        probe = ComponentSystem(self.equations)
+        mode = Mode(tuple(0 for _ in probe.backlash), tuple(FREE for _ in self.assembly.groups),
+                    tuple(False for _ in probe.brakes), tuple(True for _ in probe.motors),
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
+        return mode, np.zeros(probe.size), {}
+
+    def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
+                 contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
+        """Positions (the first group's at 0) and the steady motor's torque that
+        make K q = f − D q̇; ComponentError if no motor torque balances the loads."""
+        _, D, K, f0, _ = probe._linear(contacts, driven)
+        f = f0 - D @ rates
+        columns = [K[:, 1:]]
+        if unit is not None:
+            columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
+        matrix = np.hstack(columns)
+        if matrix.shape[1]:
+            z = np.linalg.lstsq(matrix, f, rcond=None)[0]
+        else:
+            z = np.zeros(0)
+        residual = np.abs(matrix @ z - f).max() if len(f) else 0.0
+        scale = np.abs(f).max() + (np.abs(matrix).max() * np.abs(z).max() if z.size else 0.0)
+        if residual > 1e-9 * max(scale, 1e-300) and residual > 1e-12:
+            raise ComponentError("the drive is not in a steady state at the start: its "
+                                 "constant loads do not balance; give one motor the torque "
+                                 "'steady'")
+        positions = np.concatenate([[0.0], z[:K.shape[1] - 1]])
+        torque = float(z[-1]) if unit is not None else 0.0
+        return positions, torque
+
+    def schedule(self) -> tuple[tuple[float, str], ...]:
+        """The events known in advance: brakes engaging and their ramps ending,
+        motors switched off."""
+        out = []
+        for load in self.assembly.loads:
+            part = load.part
+            if isinstance(part, Brake):
+                out.append((part.delay, f"{part.name} engages"))
+                if part.build_up == "ramp":
+                    out.append((part.delay + part.time, f"{part.name} ramp done"))
+            elif isinstance(part, Motor) and part.off_at is not None:
+                out.append((part.off_at, f"{part.name} off"))
+            elif isinstance(part, Characteristic):
+                out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
+        return tuple(sorted(out))
+
+    def run(self, duration: Given, start_body: str | None = None,
+            start_speed: Given = 0.0, exact: bool | None = None,
+            rest: bool = False) -> ComponentRun:
+        """The run from the state of :meth:`start` (steady, or at ``rest``) over
+        ``duration``, phases in closed form
+        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+        from sympy.physics.units import time
+        t_end = value("run", "duration", duration, time).si
+        if not t_end > 0:
+            raise ComponentError(f"run: duration must be > 0, got {duration!r}")
+        mode, x0, extra = self.start(start_body, start_speed, rest)
+        system = ComponentSystem(self.equations, extra)
+        schedule = self.schedule()
+        result = simulate(system, mode, x0, t_end, schedule, exact=exact)
+        return ComponentRun(self, system, mode, x0, t_end, schedule, result)

@@ -1,0 +1,276 @@
+"""The components of a drive train, as data: bodies, rigid and elastic links
+(what acts on one body, brakes, motors and loads, is in
+:mod:`crane_sym.components.loads`).
+
+Every value is given either as text with its unit (``"20 kg*m^2"``, read by
+:func:`crane_sym.units.parse_quantity`, never evaluated) or as a number in SI.
+A value whose dimension depends on the body it acts on (the stiffness of a
+link between rotating shafts is a torque per radian, between translating
+bodies a force per metre) is kept as a :class:`Value` and checked when the
+model is assembled (:mod:`crane_sym.components.topology`), where the body's
+kind is known.
+
+Sign conventions: every body has one coordinate (an angle of a rotating body,
+a displacement of a translating one) and its own positive direction. A gear
+turns its ``output`` ``1/ratio`` as far as its ``input``; a drum moves its
+``load`` ``radius/reeving`` metres per radian of the ``drum``. An elastic link
+twists by u = (coordinate of its second body) − (of its first) and pushes the
+second body back with F = c·(u − u_flank) + d·u̇ on a flank, 0 in its gap.
+"""
+from __future__ import annotations
+
+import math
+import numbers
+import re
+from dataclasses import dataclass
+from typing import Union
+
+from sympy.physics.units import Dimension, force, length, mass, time
+
+from crane_sym import units
+
+__all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "ElasticLink", "Gear",
+           "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "Value", "value"]
+
+ROTATING, TRANSLATING = "rotating", "translating"
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,39}")
+_ONE = Dimension(1)
+
+#: Dimension of each kind of value, by the kind of body it acts on.
+DIMENSIONS = {
+    "inertia": {ROTATING: mass * length**2},
+    "mass": {TRANSLATING: mass},
+    "stiffness": {ROTATING: force * length, TRANSLATING: force / length},
+    "damping": {ROTATING: force * length * time, TRANSLATING: force * time / length},
+    "backlash": {ROTATING: _ONE, TRANSLATING: length},
+    "load": {ROTATING: force * length, TRANSLATING: force},
+    "speed": {ROTATING: 1 / time, TRANSLATING: length / time},
+}
+
+
+class ComponentError(ValueError):
+    """A component or a model that cannot be built; one line naming the component."""
+
+
+@dataclass(frozen=True)
+class Value:
+    """A value in SI with the dimension it was written in (None: a bare number,
+    taken as SI) and the text it came from."""
+
+    si: float
+    dimension: Dimension | None
+    text: str
+
+    def check(self, owner: str, what: str, expected: Dimension) -> float:
+        """The SI value, or ComponentError if it was written in another dimension."""
+        if self.dimension is not None and not units.same_dimension(self.dimension, expected):
+            raise ComponentError(f"{owner}: {what} {self.text!r} is "
+                                 f"{units.format_dimension(self.dimension)}, expected "
+                                 f"{units.describe_dimension(expected)}")
+        return self.si
+
+
+Given = Union[str, float, int, Value]
+
+
+def value(owner: str, what: str, given: Given, expected: Dimension | None = None) -> Value:
+    """``given`` (text with a unit, or a number in SI) as a :class:`Value`; with
+    ``expected``, its dimension checked at once."""
+    if isinstance(given, Value):
+        result = given
+    elif isinstance(given, bool):
+        raise ComponentError(f"{owner}: {what} expects a quantity, got {given!r}")
+    elif isinstance(given, numbers.Real):
+        if not math.isfinite(float(given)):
+            raise ComponentError(f"{owner}: {what} must be finite, got {given!r}")
+        result = Value(float(given), None, repr(given))
+    elif isinstance(given, str):
+        try:
+            q = units.parse_quantity(given)
+        except units.UnitError as exc:
+            raise ComponentError(f"{owner}: {what}: {exc}") from None
+        result = Value(q.value, q.dimension, given)
+    else:
+        raise ComponentError(f"{owner}: {what} expects text like '20 kg*m^2' or a number, "
+                             f"got {type(given).__name__}")
+    if expected is not None:
+        result.check(owner, what, expected)
+    return result
+
+
+def _name(kind: str, name: object) -> str:
+    if not isinstance(name, str) or not _NAME.fullmatch(name):
+        raise ComponentError(f"{kind} name must be a letter then letters, digits or '_' "
+                             f"(at most 40), got {name!r}")
+    return name
+
+
+def _at_least(owner: str, what: str, v: Value, low: float, strict: bool) -> None:
+    if (v.si <= low) if strict else (v.si < low):
+        raise ComponentError(f"{owner}: {what} must be {'>' if strict else '>='} {low:g}, "
+                             f"got {v.text!r}")
+
+
+class Component:
+    """Base of every component: a ``name`` unique in its model."""
+
+    kind = "component"
+    name: str
+
+    @property
+    def label(self) -> str:
+        """How messages name it: ``gear 'gearbox'``."""
+        return f"{self.kind} {self.name!r}"
+
+
+@dataclass(frozen=True)
+class Body(Component):
+    """A rigid body with one coordinate: rotating (``inertia`` in kg·m²) or
+    translating (``inertia`` holds its mass in kg). Zero is allowed for a shaft
+    end joined rigidly to bodies that have inertia."""
+
+    name: str
+    inertia: float
+    motion: str
+
+    @property
+    def kind(self) -> str:            # type: ignore[override]
+        return "inertia" if self.motion == ROTATING else "mass"
+
+
+def Inertia(name: str, inertia: Given) -> Body:
+    """A rotating body of moment of inertia ``inertia`` (kg·m²)."""
+    name = _name("inertia", name)
+    v = value(f"inertia {name!r}", "inertia", inertia, DIMENSIONS["inertia"][ROTATING])
+    _at_least(f"inertia {name!r}", "inertia", v, 0.0, False)
+    return Body(name, v.si, ROTATING)
+
+
+def Mass(name: str, mass_: Given) -> Body:
+    """A translating body of mass ``mass_`` (kg)."""
+    name = _name("mass", name)
+    v = value(f"mass {name!r}", "mass", mass_, DIMENSIONS["mass"][TRANSLATING])
+    _at_least(f"mass {name!r}", "mass", v, 0.0, False)
+    return Body(name, v.si, TRANSLATING)
+
+
+@dataclass(frozen=True)
+class Gear(Component):
+    """An ideal gear: ``input`` turns ``ratio`` times as far as ``output``
+    (both rotating)."""
+
+    name: str
+    input: str
+    output: str
+    ratio: float
+    kind = "gear"
+
+    def __init__(self, name: str, input: str, output: str, ratio: Given) -> None:
+        name = _name("gear", name)
+        v = value(f"gear {name!r}", "ratio", ratio, _ONE)
+        if v.si == 0:
+            raise ComponentError(f"gear {name!r}: ratio must not be 0")
+        object.__setattr__(self, "name", name)
+        object.__setattr__(self, "input", input)
+        object.__setattr__(self, "output", output)
+        object.__setattr__(self, "ratio", v.si)
+
+    @property
+    def ends(self) -> tuple[str, str]:
+        return self.input, self.output
+
+    @property
+    def factor(self) -> float:
+        """Coordinate of the second end per unit of the first."""
+        return 1.0 / self.ratio
+
+
+@dataclass(frozen=True)
+class Drum(Component):
+    """A rope drum: the translating ``load`` moves ``radius/reeving`` per radian
+    of the rotating ``drum`` (``reeving``: rope falls of the tackle, e.g. 8/2 = 4)."""
+
+    name: str
+    drum: str
+    load: str
+    radius: float
+    reeving: float
+    kind = "drum"
+
+    def __init__(self, name: str, drum: str, load: str, radius: Given,
+                 reeving: Given = 1) -> None:
+        name = _name("drum", name)
+        r = value(f"drum {name!r}", "radius", radius, length)
+        n = value(f"drum {name!r}", "reeving", reeving, _ONE)
+        _at_least(f"drum {name!r}", "radius", r, 0.0, True)
+        _at_least(f"drum {name!r}", "reeving", n, 0.0, True)
+        for key, v in (("name", name), ("drum", drum), ("load", load), ("radius", r.si),
+                       ("reeving", n.si)):
+            object.__setattr__(self, key, v)
+
+    @property
+    def ends(self) -> tuple[str, str]:
+        return self.drum, self.load
+
+    @property
+    def factor(self) -> float:
+        return self.radius / self.reeving
+
+
+@dataclass(frozen=True)
+class ElasticLink(Component):
+    """A spring and a viscous damper between two bodies of one kind, with an
+    optional backlash gap.
+
+    The twist is u = x_second − x_first. Without backlash the link pushes with
+    F = c·u + d·u̇. With backlash s, ``contact = "positive"`` puts the gap at
+    −s < u < 0 (the link rests on its positive flank at u = 0: F = c·u + d·u̇
+    for u ≥ 0, c·(u + s) + d·u̇ for u ≤ −s), ``"negative"`` at 0 < u < s. In the
+    gap F = 0. ``reference``, a load, divides the peak into the dynamic factor
+    (default: the link's load at the start).
+    """
+
+    name: str
+    first: str
+    second: str
+    stiffness: Value
+    damping: Value
+    backlash: Value
+    contact: str = "positive"
+    reference: Value | None = None
+    kind = "elastic link"
+
+    def __init__(self, name: str, first: str, second: str, stiffness: Given,
+                 damping: Given = 0.0, backlash: Given = 0.0, contact: str = "positive",
+                 reference: Given | None = None) -> None:
+        name = _name("elastic link", name)
+        owner = f"elastic link {name!r}"
+        c, d = value(owner, "stiffness", stiffness), value(owner, "damping", damping)
+        s = value(owner, "backlash", backlash)
+        _at_least(owner, "stiffness", c, 0.0, True)
+        _at_least(owner, "damping", d, 0.0, False)
+        _at_least(owner, "backlash", s, 0.0, False)
+        if contact not in ("positive", "negative"):
+            raise ComponentError(f"{owner}: contact must be 'positive' or 'negative', "
+                                 f"got {contact!r}")
+        ref = None if reference is None else value(owner, "reference", reference)
+        if ref is not None and ref.si == 0:
+            raise ComponentError(f"{owner}: reference must not be 0")
+        for key, v in (("name", name), ("first", first), ("second", second),
+                       ("stiffness", c), ("damping", d), ("backlash", s),
+                       ("contact", contact), ("reference", ref)):
+            object.__setattr__(self, key, v)
+
+    @property
+    def ends(self) -> tuple[str, str]:
+        return self.first, self.second
+
+    @property
+    def flanks(self) -> tuple[float, float]:
+        """(lower, upper) ends of the gap in the twist u."""
+        s = self.backlash.si
+        return (-s, 0.0) if self.contact == "positive" else (0.0, s)
+
+
+#: The rigid links.
+RIGID = (Gear, Drum)

@@ -1,0 +1,280 @@
+"""The component file: a drive train in TOML, values with units.
+
+::
+
+    [model]
+    name = "hoist_fig9"
+    title = "Table 1 hoist, emergency stop while lowering"
+
+    [[inertia]]                 # a rotating body
+    name = "motor"
+    inertia = "20 kg*m^2"
+
+    [[mass]]                    # a translating body
+    name = "hook"
+    mass = "62 t"
+
+    [[gear]]                    # input turns `ratio` times as far as output
+    name = "gearbox"
+    input = "shaft"
+    output = "drum"
+    ratio = 26.2
+
+    [[drum]]                    # the load moves radius/reeving per radian of the drum
+    name = "rope"
+    drum = "drum"
+    load = "hook"
+    radius = "0.5 m"
+    reeving = 4
+
+    [[elastic]]                 # F = c (u - flank) + d u', u = x(second) - x(first)
+    name = "coupling"
+    between = ["motor", "shaft"]
+    stiffness = "4e4 N*m/rad"
+    damping = "0 N*m*s/rad"     # optional
+    backlash = "78.6 deg"       # optional; contact = "positive" (gap below 0) or "negative"
+    reference = "2.9 kN*m"      # optional: the load the dynamic factor divides by
+
+    [[brake]]
+    name = "safety"
+    body = "drum"
+    torque = "130 kN*m"         # `force` on a translating body
+    delay = "0.1 s"
+    build_up = "step"           # or "ramp", "exponential", with time = "0.2 s"
+
+    [[motor]]
+    name = "drive"
+    body = "motor"
+    torque = "steady"           # or a value; `force` on a translating body
+    off_at = "0 s"              # optional
+
+    [[gravity]]
+    name = "weight"
+    body = "hook"
+    g = "9.81 m/s^2"            # optional
+    direction = "+"             # the body's coordinate points down
+
+    [[resistance]]
+    name = "rolling"
+    body = "trolley"
+    force = "-1.2 kN"           # `torque` on a rotating body
+
+    [[characteristic]]          # a motor's β (v0 − v), stepped at the hold times
+    name = "motors"
+    body = "left"
+    speed = "0.57 m/s"          # no-load speed v0
+    slopes = ["1.7e5 N*s/m", "3.4e5 N*s/m"]
+    holds = ["0.4 s"]           # one fewer than slopes
+
+    [run]
+    duration = "1 s"
+    start = "steady"            # or "rest": at rest, zero twist, every gap open
+    body = "motor"              # the body whose speed is given (default: the first)
+    speed = "1500 rpm"          # every part moves steadily at the start
+
+Every value with a dimension is text with its unit, read by
+:mod:`crane_sym.units` (parsed, never evaluated); ratios and reevings may be
+bare numbers. An unknown table or key is an error naming the closest known
+one, as in scenes; every error is one line.
+"""
+from __future__ import annotations
+
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from crane_sym.components.model import Model
+from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
+from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
+from crane_sym.scenes.options import did_you_mean
+
+__all__ = ["ComponentFile", "is_component_file", "read_component_file"]
+
+#: Each table of components: its keys (required first, then optional) and its builder.
+TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "inertia": (("name", "inertia"), ()),
+    "mass": (("name", "mass"), ()),
+    "gear": (("name", "input", "output", "ratio"), ()),
+    "drum": (("name", "drum", "load", "radius"), ("reeving",)),
+    "elastic": (("name", "between", "stiffness"), ("damping", "backlash", "contact",
+                                                    "reference")),
+    "brake": (("name", "body"), ("torque", "force", "delay", "build_up", "time")),
+    "motor": (("name", "body"), ("torque", "force", "off_at")),
+    "characteristic": (("name", "body", "speed", "slopes"), ("holds",)),
+    "gravity": (("name", "body"), ("g", "direction")),
+    "resistance": (("name", "body"), ("torque", "force")),
+}
+#: Keys that may be bare numbers (dimensionless).
+NUMBERS = ("ratio", "reeving")
+#: Keys that are names or choices, not quantities.
+WORDS = ("name", "input", "output", "drum", "load", "body", "contact", "build_up", "direction")
+MODEL_KEYS, RUN_KEYS = ("name", "title"), ("duration", "start", "body", "speed")
+#: Keys that are lists of quantities.
+LISTS = ("slopes", "holds")
+_SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
+
+
+@dataclass(frozen=True)
+class ComponentFile:
+    """A read component file: the model, its run's settings, where it came from."""
+
+    model: Model
+    duration: str
+    body: str | None
+    speed: Any
+    path: Path
+    rest: bool = False
+
+
+def is_component_file(path: str | Path) -> bool:
+    """True for an existing TOML file with a ``[model]`` table and no ``[scene]``.
+
+    Parameters
+    ----------
+    path : str or Path
+        A file name given on the command line.
+    """
+    p = Path(path)
+    if p.suffix != ".toml" or not p.is_file():
+        return False
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError, OSError):
+        return False
+    return "model" in data and "scene" not in data
+
+
+def _keys(table: dict, known: tuple[str, ...], where: str, what: str = "key") -> None:
+    for key in table:
+        if key not in known:
+            raise ComponentError(f"{where}: unknown {what} {key!r}; "
+                                 f"{did_you_mean(key, known)}expected {', '.join(known)}")
+
+
+def _given(entry: dict, key: str, where: str) -> Any:
+    """A value of an entry: text (a word or a quantity), a bare number only
+    where it is dimensionless."""
+    v = entry[key]
+    if key in LISTS:
+        if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
+            raise ComponentError(f"{where}: {key} must be a list of values with their units "
+                                 f"as text, e.g. [\"0.4 s\", \"0.8 s\"], got {v!r}")
+        return v
+    if key in WORDS:
+        if not isinstance(v, str):
+            raise ComponentError(f"{where}: {key} must be text, got {v!r}")
+        return v
+    if key in NUMBERS and isinstance(v, (int, float)) and not isinstance(v, bool):
+        return v
+    if not isinstance(v, str):
+        raise ComponentError(f"{where}: {key} needs a value with its unit as text, e.g. "
+                             f"{key} = \"0.1 s\", got {v!r}")
+    return v
+
+
+def _load_key(entry: dict, where: str, optional: bool = False) -> str | None:
+    given = [k for k in ("torque", "force") if k in entry]
+    if len(given) > 1:
+        raise ComponentError(f"{where}: give torque or force, not both")
+    if not given and not optional:
+        raise ComponentError(f"{where}: lacks 'torque' (on a rotating body) or 'force' "
+                             "(on a translating one)")
+    return given[0] if given else None
+
+
+def _build(kind: str, entry: dict, where: str):
+    g = {k: _given(entry, k, where) for k in entry if k != "between"}
+    if kind == "inertia":
+        return Inertia(g["name"], g["inertia"])
+    if kind == "mass":
+        return Mass(g["name"], g["mass"])
+    if kind == "gear":
+        return Gear(g["name"], g["input"], g["output"], g["ratio"])
+    if kind == "drum":
+        return Drum(g["name"], g["drum"], g["load"], g["radius"], g.get("reeving", 1))
+    if kind == "elastic":
+        ends = entry["between"]
+        if not (isinstance(ends, list) and len(ends) == 2 and all(isinstance(e, str)
+                                                                  for e in ends)):
+            raise ComponentError(f"{where}: between must be two body names, got {ends!r}")
+        return ElasticLink(g["name"], ends[0], ends[1], g["stiffness"], g.get("damping", 0.0),
+                           g.get("backlash", 0.0), g.get("contact", "positive"),
+                           g.get("reference"))
+    if kind == "brake":
+        return Brake(g["name"], g["body"], g[_load_key(entry, where)], g.get("delay", 0.0),
+                     g.get("build_up", "step"), g.get("time", 0.0))
+    if kind == "motor":
+        return Motor(g["name"], g["body"], g[_load_key(entry, where)], g.get("off_at"))
+    if kind == "characteristic":
+        return Characteristic(g["name"], g["body"], g["speed"], g["slopes"], g.get("holds", []))
+    if kind == "gravity":
+        return Gravity(g["name"], g["body"], g.get("g", "9.81 m/s^2"), g.get("direction", "+"))
+    return Resistance(g["name"], g["body"], g[_load_key(entry, where)])
+
+
+def read_component_file(path: str | Path) -> ComponentFile:
+    """Read, check and derive the model of a component file (see the module
+    docstring); ComponentError, one line, for anything it cannot take.
+
+    Parameters
+    ----------
+    path : str or Path
+        The component TOML file.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise ComponentError(f"no component file {str(p)!r}")
+    try:
+        data = tomllib.loads(p.read_text(encoding="utf-8"))
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
+        raise ComponentError(f"{p.name}: not valid TOML: {str(exc).splitlines()[0]}") from None
+    tables = ("model", "run", *TABLES)
+    _keys(data, tables, f"component file {p.name!r}", "table")
+    head = data.get("model")
+    if not isinstance(head, dict):
+        raise ComponentError(f"component file {p.name!r}: missing table [model]")
+    _keys(head, MODEL_KEYS, f"component file {p.name!r}: [model]")
+    name = head.get("name", p.stem)
+    if not isinstance(name, str) or not _SAFE_NAME.fullmatch(name):
+        raise ComponentError(f"component file {p.name!r}: [model] name must be letters, "
+                             f"digits, '_' or '-', got {name!r}")
+    where_file = f"component model {name!r}"
+    parts = []
+    for kind, (required, optional) in TABLES.items():
+        entries = data.get(kind, [])
+        if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
+            raise ComponentError(f"{where_file}: [[{kind}]] must be an array of tables "
+                                 f"(write [[{kind}]], not [{kind}])")
+        for number, entry in enumerate(entries, 1):
+            where = f"{where_file}: [[{kind}]] {entry.get('name', f'number {number}')!r}"
+            _keys(entry, required + optional, where)
+            missing = [k for k in required if k not in entry]
+            if missing:
+                raise ComponentError(f"{where}: lacks {', '.join(map(repr, missing))}")
+            parts.append(_build(kind, entry, where))
+    run = data.get("run", {})
+    if not isinstance(run, dict):
+        raise ComponentError(f"{where_file}: [run] must be a table")
+    _keys(run, RUN_KEYS, f"{where_file}: [run]")
+    if "duration" not in run:
+        raise ComponentError(f"{where_file}: [run] lacks 'duration', e.g. duration = \"1 s\"")
+    settings = {k: _given(run, k, f"{where_file}: [run]") if k == "body" else run[k]
+                for k in run}
+    start = run.get("start", "steady")
+    if start not in ("steady", "rest"):
+        raise ComponentError(f"{where_file}: [run] start must be 'steady' or 'rest', "
+                             f"got {start!r}")
+    if start == "rest" and ("speed" in run or "body" in run):
+        raise ComponentError(f"{where_file}: [run] a start at rest takes no body or speed")
+    for key in ("duration", "speed"):
+        if key in settings and not isinstance(settings[key], str):
+            raise ComponentError(f"{where_file}: [run] {key} needs a value with its unit as "
+                                 f"text, got {settings[key]!r}")
+    try:
+        model = Model(parts, name, str(head.get("title", "")))
+    except ComponentError as exc:
+        raise ComponentError(f"{where_file}: {exc}") from None
+    return ComponentFile(model, settings["duration"], settings.get("body"),
+                         settings.get("speed", 0.0), p, start == "rest")

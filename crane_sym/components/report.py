@@ -1,0 +1,99 @@
+"""What ``crane-sym run FILE`` does with a component file: the run from its
+steady start, phase by phase in closed form, the peak load and dynamic factor
+of every elastic link, the event times; a JSON of those numbers, the
+generated module of the links' loads and a plot of them, written only into the
+folder the user names.
+"""
+from __future__ import annotations
+
+import io
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from crane_sym import output_files
+from crane_sym.components.generate import module_name, render_component_module
+from crane_sym.components.model import ComponentRun
+from crane_sym.components.reading import ComponentFile, read_component_file
+from crane_sym.mechanics.phase_table import values
+from crane_sym.scenes.panels import Panel, format_quantity
+
+__all__ = ["ComponentReport", "report_lines", "run_component_file"]
+
+#: Points of the plotted curves.
+POINTS = 2001
+
+
+@dataclass(frozen=True)
+class ComponentReport:
+    """The run, the lines printed, the files written."""
+
+    run: ComponentRun
+    lines: list[str]
+    files: list[Path]
+
+
+def report_lines(run: ComponentRun) -> list[str]:
+    """Peak loads (with time and dynamic factor) and events, one per line."""
+    lines = []
+    for p in run.peaks:
+        factor = "" if p.factor is None else f", dynamic factor {format_quantity(p.factor)}"
+        lines.append(f"peak load of {p.link}: {format_quantity(p.value, p.unit)} at "
+                     f"t = {format_quantity(p.time, 's')} (at the start "
+                     f"{format_quantity(p.static, p.unit)}{factor})")
+    for t, event in run.events:
+        lines.append(f"event at t = {format_quantity(t, 's', 6)}: {event}")
+    return lines
+
+
+def _json(run: ComponentRun, name: str) -> str:
+    return json.dumps({
+        "model": name,
+        "peaks": [{"link": p.link, "time_s": p.time, "value": p.value, "unit": p.unit,
+                   "static": p.static, "reference": p.reference, "dynamic_factor": p.factor}
+                  for p in run.peaks],
+        "events": [{"time_s": float(t), "event": e} for t, e in run.events],
+    }, indent=2)
+
+
+def _figure(run: ComponentRun, title: str):
+    from crane_sym.scenes.plots import figures
+    times = np.linspace(0.0, run.t_end, POINTS)
+    panels = [Panel(f"load of the elastic link {p.link}", f"[{p.unit}]",
+                    [(p.link, times, values(run.result, times, run.system.link_load(i)))],
+                    group="elastic links")
+              for i, p in enumerate(run.peaks)]
+    return figures(panels, title) if panels else []
+
+
+def run_component_file(path: str | Path, out: str | Path) -> ComponentReport:
+    """Read ``path``, run it, write ``<name>.json``, the module
+    ``model_<name>.py`` (the links' loads as tables of closed forms) and
+    ``<name>_loads*.png`` into ``out`` (nothing else, nowhere else).
+
+    Parameters
+    ----------
+    path : str or Path
+        The component TOML file.
+    out : str or Path
+        The output folder (made if missing; nothing is written elsewhere).
+    """
+    output_files.check_folder(out)
+    read: ComponentFile = read_component_file(path)
+    model = read.model
+    run = model.run(read.duration, read.body, read.speed, rest=read.rest)
+    lines = report_lines(run)
+    figs = _figure(run, model.title or model.name)
+    source = render_component_module(run)
+    with output_files.staged(out) as stage:
+        files = [stage.text(f"{model.name}.json", _json(run, model.name)),
+                 stage.text(module_name(run), source)]
+        names = ([f"{model.name}_loads.png"] if len(figs) == 1 else
+                 [f"{model.name}_loads_{k}.png" for k in range(1, len(figs) + 1)])
+        for fig, name in zip(figs, names):
+            buffer = io.BytesIO()
+            fig.savefig(buffer, format="png", dpi=120, metadata={"Software": None})
+            files.append(stage.bytes(name, buffer.getvalue()))
+    return ComponentReport(run, lines, files)

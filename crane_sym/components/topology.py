@@ -1,0 +1,271 @@
+"""From a list of components to independent coordinates: bodies joined by
+gears and drums merged into rigid groups, each with one coordinate.
+
+Within a group every body's coordinate is a fixed multiple κ of the group's
+coordinate, the coordinate of its first body in the order the components were
+given (κ = 1 there). Elastic links join groups; brakes, motors and loads act
+on a body and reach its group through κ.
+
+What cannot be a drive train is refused here, in one line naming the
+component: two components of one name, a link or a load on an unknown body,
+a link between bodies of the wrong kinds, a value of the wrong dimension, a
+body connected to nothing, parts of the drive not connected to each other, a
+loop of gears and drums whose ratios disagree, an elastic link inside a rigid
+group (it could never twist), and a body without inertia whose rigid group has
+none (between two rigid links, or two elastic ones, it has no equation of
+motion).
+"""
+from __future__ import annotations
+
+import difflib
+from dataclasses import dataclass
+from typing import Sequence
+
+import sympy as sp
+
+from crane_sym.components.loads import ACTING, Characteristic, Gravity, Motor
+from crane_sym.components.parts import (DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body, Component,
+                                        ComponentError, Drum, ElasticLink, Gear)
+
+__all__ = ["Assembly", "Group", "Link", "Load", "assemble"]
+
+#: Relative tolerance of a loop of rigid ratios.
+LOOP_TOLERANCE = 1e-12
+
+
+@dataclass(frozen=True)
+class Group:
+    """Bodies joined rigidly: ``members`` are (body, κ), the first with κ = 1;
+    ``inertia`` is Σ J κ², the group's inertia referred to its coordinate."""
+
+    members: tuple[tuple[Body, float], ...]
+    links: tuple[str, ...]
+    factors: tuple[sp.Expr, ...] = ()
+
+    @property
+    def name(self) -> str:
+        return self.members[0][0].name
+
+    @property
+    def motion(self) -> str:
+        return self.members[0][0].motion
+
+    @property
+    def inertia(self) -> float:
+        return sum(b.inertia * k * k for b, k in self.members)
+
+
+@dataclass(frozen=True)
+class Link:
+    """An elastic link with its values in SI, checked against its bodies' kind."""
+
+    part: ElasticLink
+    stiffness: float
+    damping: float
+    backlash: float
+    reference: float | None
+
+
+@dataclass(frozen=True)
+class Load:
+    """A brake, motor, gravity or resistance with its torque or force in SI
+    (None: a steady motor, solved at the start)."""
+
+    part: Component
+    load: float | None
+    values: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True)
+class Assembly:
+    """The checked model: bodies in order, rigid groups, where each body sits
+    (group index, κ), the elastic links and the loads."""
+
+    bodies: dict[str, Body]
+    groups: tuple[Group, ...]
+    place: dict[str, tuple[int, float, sp.Expr]]
+    links: tuple[Link, ...]
+    loads: tuple[Load, ...]
+    rigid: tuple[Gear | Drum, ...] = ()
+
+    def loads_of(self, kind: type) -> list[Load]:
+        return [l for l in self.loads if isinstance(l.part, kind)]
+
+
+def _unknown(owner: str, name: object, known: Sequence[str]) -> ComponentError:
+    close = difflib.get_close_matches(str(name), list(known), n=2, cutoff=0.6)
+    hint = f"; did you mean {' or '.join(map(repr, close))}?" if close else \
+        f"; bodies: {', '.join(known)}"
+    return ComponentError(f"{owner} names unknown body {name!r}{hint}")
+
+
+def assemble(components: Sequence[Component]) -> Assembly:
+    """Check the components and merge the rigid groups (see the module docstring).
+
+    Raises
+    ------
+    ComponentError
+        One line naming the component at fault.
+    """
+    seen: dict[str, Component] = {}
+    for part in components:
+        if not isinstance(part, Component):
+            raise ComponentError(f"not a component: {part!r}")
+        if part.name in seen:
+            raise ComponentError(f"{part.label}: the name is taken by {seen[part.name].label}")
+        seen[part.name] = part
+    bodies = {p.name: p for p in components if isinstance(p, Body)}
+    if not bodies:
+        raise ComponentError("the model has no body (inertia or mass)")
+    rigid = [p for p in components if isinstance(p, RIGID)]
+    elastic = [p for p in components if isinstance(p, ElasticLink)]
+    for part in [*rigid, *elastic, *(p for p in components if isinstance(p, ACTING))]:
+        for end in (part.ends if isinstance(part, (*RIGID, ElasticLink)) else (part.body,)):
+            if end not in bodies:
+                raise _unknown(part.label, end, list(bodies))
+    _kinds(bodies, rigid, elastic)
+    _connected(bodies, rigid, elastic)
+    groups, place = _groups(bodies, rigid)
+    links = tuple(_link(p, bodies, place) for p in elastic)
+    loads = tuple(_load(p, bodies) for p in components if isinstance(p, ACTING))
+    steady = [l.part.label for l in loads if isinstance(l.part, Motor) and l.load is None]
+    if len(steady) > 1:
+        raise ComponentError(f"{steady[1]}: only one motor may be 'steady' ({steady[0]} is)")
+    return Assembly(bodies, groups, place, links, loads, tuple(rigid))
+
+
+def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
+    for part in rigid:
+        a, b = (bodies[e] for e in part.ends)
+        want = (ROTATING, ROTATING) if isinstance(part, Gear) else (ROTATING, TRANSLATING)
+        if (a.motion, b.motion) != want:
+            what = ("joins two rotating bodies" if isinstance(part, Gear) else
+                    "turns with a rotating drum and moves a translating load")
+            raise ComponentError(f"{part.label} {what}; {a.label} is {a.motion}, "
+                                 f"{b.label} is {b.motion}")
+    for part in elastic:
+        a, b = (bodies[e] for e in part.ends)
+        if a.motion != b.motion:
+            raise ComponentError(f"{part.label} joins {a.label} ({a.motion}) and {b.label} "
+                                 f"({b.motion}); a link joins bodies of one kind (through a "
+                                 "drum between them)")
+        if a.name == b.name:
+            raise ComponentError(f"{part.label} joins {a.label} to itself")
+
+
+def _connected(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
+    """Every body in a link, and all of them one connected drive."""
+    edges = [p.ends for p in [*rigid, *elastic]]
+    touched = {e for pair in edges for e in pair}
+    if len(bodies) > 1:
+        for name, body in bodies.items():
+            if name not in touched:
+                raise ComponentError(f"{body.label} is connected to nothing (no gear, drum "
+                                     "or elastic link names it)")
+    first = next(iter(bodies))
+    reached, todo = {first}, [first]
+    while todo:
+        here = todo.pop()
+        for a, b in edges:
+            for x, y in ((a, b), (b, a)):
+                if x == here and y not in reached:
+                    reached.add(y)
+                    todo.append(y)
+    for name, body in bodies.items():
+        if name not in reached:
+            raise ComponentError(f"{body.label} is not connected to {bodies[first].label}: "
+                                 "no chain of gears, drums and elastic links joins them")
+
+
+def rigid_factor(part: Gear | Drum) -> sp.Expr:
+    """κ of a rigid link's second end per unit of its first, in its symbols:
+    1/i for a gear, r/n for a drum."""
+    if isinstance(part, Gear):
+        return 1 / sp.Symbol(f"i_{part.name}", positive=True)
+    return sp.Symbol(f"r_{part.name}", positive=True) / sp.Symbol(f"n_{part.name}",
+                                                                   positive=True)
+
+
+def _groups(bodies: dict[str, Body], rigid: list) -> tuple[tuple[Group, ...],
+                                                            dict[str, tuple[int, float, sp.Expr]]]:
+    """Rigid groups by a walk over gears and drums, κ multiplied along the way
+    (as a number and in the links' symbols); a link that closes a loop must
+    agree with the product around it."""
+    place: dict[str, tuple[int, float, sp.Expr]] = {}
+    groups: list[Group] = []
+    for start in bodies:
+        if start in place:
+            continue
+        index = len(groups)
+        place[start] = (index, 1.0, sp.Integer(1))
+        members, used, todo = [start], [], [start]
+        while todo:
+            here = todo.pop(0)
+            for part in rigid:
+                a, b = part.ends
+                if here not in (a, b) or part.name in used:
+                    continue
+                used.append(part.name)
+                factor, exact = part.factor, rigid_factor(part)
+                other, factor, exact = ((b, factor, exact) if here == a else
+                                        (a, 1.0 / factor, 1 / exact))
+                kappa, kappa_sym = place[here][1] * factor, place[here][2] * exact
+                if other in place:
+                    have = place[other][1]
+                    if abs(have - kappa) > LOOP_TOLERANCE * max(abs(have), abs(kappa)):
+                        loop = ", ".join(p.name for p in rigid if p.name in used)
+                        raise ComponentError(
+                            f"{part.label} closes a loop of rigid links ({loop}) with ratios "
+                            f"that disagree: it moves {bodies[other].label} {kappa:.12g} per "
+                            f"unit of {bodies[start].label}, the rest of the loop {have:.12g}")
+                    continue
+                place[other] = (index, kappa, kappa_sym)
+                members.append(other)
+                todo.append(other)
+        group = Group(tuple((bodies[m], place[m][1]) for m in members), tuple(used),
+                      tuple(place[m][2] for m in members))
+        if group.inertia <= 0:
+            around = {m: [p.label for p in rigid if m in p.ends] for m in members}
+            named = max(members, key=lambda m: len(around[m]))
+            where = (f"between the rigid links {' and '.join(around[named])}"
+                     if len(around[named]) > 1 else
+                     f"at the rigid link {around[named][0]}" if around[named] else
+                     "between elastic links")
+            raise ComponentError(f"{bodies[named].label} has no inertia {where}, and no body "
+                                 "joined rigidly to it has any: it has no equation of motion")
+        groups.append(group)
+    return tuple(groups), place
+
+
+def _link(part: ElasticLink, bodies: dict[str, Body],
+          place: dict[str, tuple[int, float]]) -> Link:
+    a, b = part.ends
+    if place[a][0] == place[b][0]:
+        raise ComponentError(f"{part.label} joins {bodies[a].label} and {bodies[b].label}, "
+                             "which gears and drums already join rigidly: it could never twist")
+    motion = bodies[a].motion
+    check = lambda what, v: v.check(part.label, what, DIMENSIONS[what][motion])  # noqa: E731
+    reference = (None if part.reference is None else
+                 part.reference.check(part.label, "reference", DIMENSIONS["load"][motion]))
+    return Link(part, check("stiffness", part.stiffness), check("damping", part.damping),
+                check("backlash", part.backlash), reference)
+
+
+def _load(part: Component, bodies: dict[str, Body]) -> Load:
+    body = bodies[part.body]
+    if isinstance(part, Gravity):
+        if body.motion != TRANSLATING:
+            raise ComponentError(f"{part.label} acts on {body.label}, which rotates; gravity "
+                                 "acts on a mass")
+        return Load(part, body.inertia * part.g * (1.0 if part.direction == "+" else -1.0))
+    if isinstance(part, Motor) and part.load is None:
+        return Load(part, None)
+    if isinstance(part, Characteristic):
+        where = f"{part.label} on {body.label}"
+        speed = part.speed.check(where, "speed", DIMENSIONS["speed"][body.motion])
+        return Load(part, None, (speed, *(k.check(where, "slope", DIMENSIONS["damping"][body.motion])
+                                          for k in part.slopes)))
+    word = "torque" if body.motion == ROTATING else "force"
+    return Load(part, part.load.check(f"{part.label} on {body.label}", word,
+                                      DIMENSIONS["load"][body.motion]))
+
