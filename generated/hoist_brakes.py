@@ -590,42 +590,42 @@ def elastic_gearbox_torque_no_backlash(t, J1, J2, m_h, m_p, m_r, r, i_g, i_t, g,
     t_SB = _checked('t_SB', t_SB, 'nonnegative', 'delay of the safety brakes, s', (0.0, 1e6))
     shape = _broadcast(t=t, J1=J1, J2=J2, m_h=m_h, m_p=m_p, m_r=m_r, r=r, i_g=i_g, i_t=i_t, g=g, c=c,
                        M_SB=M_SB, t_SB=t_SB)
-    x0 = i_t**2
-    x1 = 1/(x0)
-    x2 = r**2
-    x3 = m_h*x2
-    x4 = x1*x3
-    x5 = m_p*x2
-    x6 = x1*x5
-    x7 = i_g**2
-    x8 = 1/(x7)
-    x9 = J1 + J2*x8 + x4*x8 + x6*x8
-    x10 = c/J1
-    x11 = J1/x9
-    x12 = 2*x11
-    x13 = m_h + m_p
-    x14 = 1/(m_h + m_r)
-    x15 = J2*x0 + x3 + x5
-    x16 = g*r/i_t
-    k0 = (1/2)*i_g*np.sqrt(x10*x9/(J2 + x4 + x6))
-    k1 = x12 - 2
-    k2 = x13*x14
+    x0 = r**2/i_t**2
+    x1 = m_h*x0
+    x2 = m_p*x0
+    x3 = J2 + x1 + x2
+    x4 = i_g**(-2.0)
+    x5 = J1 + J2*x4 + x1*x4 + x2*x4
+    x6 = i_g*np.sqrt(c*x5/(J1*x3))
+    x7 = 1/(x5)
+    x8 = J1*x7
+    x9 = 2*x8
+    x10 = m_h + m_p
+    x11 = 1/(m_h + m_r)
+    x12 = 1/(i_t)
+    x13 = g*r*x10*x12
+    x14 = np.sqrt(c)*i_g*t_SB*np.sqrt(x5)/(np.sqrt(J1)*np.sqrt(x3))
+    k0 = (1/2)*x6
+    k1 = x9 - 2
+    k2 = x10*x11
     k3 = -t_SB
-    k4 = (1/2)*np.sqrt(x10*(J1*x0*x7 + x15)/x15)
-    k5 = -M_SB*x12
-    k6 = -2*x13*x16*(1 - x11)
-    k7 = m_h*x16 + m_p*x16
-    k8 = i_t*x14/(g*r)
+    k4 = 2*J1*g*r*x10*x12*x7 - M_SB*x9 - 2*x13
+    k6 = np.sin(x14)
+    k7 = 2*np.sin((1/2)*x14)**2
+    k8 = -x13*(1 - x8)
+    k10 = i_t*x11/(g*r)
     if out is None and not shape:      # one point: its own branch only
-        return (k2*(k1*np.sin(k0*t)**2 + 1) if np.less(t, t_SB) else k8*(k5*np.sin(k4*(k3 + t))**2 + k6*np.sin(k0*t)**2 + k7))
+        return (k2*(k1*np.sin(k0*t)**2 + 1) if np.less(t, t_SB) else k10*(k4*np.sin(k0*(k3 + t))**2 + k8*(k6*np.sin(x6*(k3 + t)) + k7*np.cos(x6*(k3 + t))) + x13))
     out = _out(out, shape)
     cells = _cells(shape, [[np.less(t, t_SB)]])
     for part in _blocks(cells[0]):
         k0_, k1_, k2_, t_ = _at(part, shape, k0, k1, k2, t)
         _put(out, part, k2_*(k1_*np.sin(k0_*t_)**2 + 1))
     for part in _blocks(cells[1]):
-        k0_, k3_, k4_, k5_, k6_, k7_, k8_, t_ = _at(part, shape, k0, k3, k4, k5, k6, k7, k8, t)
-        _put(out, part, k8_*(k5_*np.sin(k4_*(k3_ + t_))**2 + k6_*np.sin(k0_*t_)**2 + k7_))
+        k0_, k10_, k3_, k4_, k6_, k7_, k8_, t_, x13_, x6_ = _at(part, shape, k0, k10, k3, k4, k6, k7, k8, t, x13, x6)
+        v0 = k3_ + t_
+        v1 = v0*x6_
+        _put(out, part, k10_*(k4_*np.sin(k0_*v0)**2 + k8_*(k6_*np.sin(v1) + k7_*np.cos(v1)) + x13_))
     return out
 
 
