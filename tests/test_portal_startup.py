@@ -15,7 +15,7 @@ import sympy as sp
 from crane_sym import registry
 from crane_sym.bench.piecewise import integrate_hybrid
 from crane_sym.derivations.portal_travel import published_loads as pl
-from crane_sym.derivations.portal_travel.startup import (CHOSEN, FORWARD, LINEAR, STAND,
+from crane_sym.derivations.portal_travel.startup import (CHOSEN, FORWARD, LINEAR,
                                                          drive, reduced, table1_results)
 from crane_sym.mechanics.phase_table import HybridRun
 from crane_sym.scenes.run import run_scene
