@@ -104,7 +104,7 @@ def test_an_unreadable_print_gives_one_message_whatever_the_hash_seed():
     import subprocess
     import sys
     code = ("import sympy as sp\n"
-            "from crane_sym.print_names import map_symbols, Unreadable\n"
+            "from crane_sym.audit.print_names import map_symbols, Unreadable\n"
             "t = sp.Symbol('t')\n"
             "e = sp.Function('f')(t) + sp.Function('g')(t) + sp.Symbol('a') * sp.Symbol('b')\n"
             "try:\n    map_symbols(e, {}, {'t': t})\n"

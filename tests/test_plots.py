@@ -127,7 +127,7 @@ def test_cyrillic_inside_mathtext_renders():
 
 
 def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
-    from crane_sym.bench.report import plot
+    from crane_sym.bench import report
     from crane_sym.bench.rows import GENERATED, INTEGRATOR, BenchRow
     rows = [BenchRow("demo", f"f{k}", method, 1e-3 * (1 + j), 100, err, 1.0, err, kind=kind)
             for k in range(6)
@@ -136,9 +136,9 @@ def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
                                                      ("RK45 rtol=1e-9 [x]", 1e-9, INTEGRATOR)])]
     made = []
     save = plots.save
-    monkeypatch.setattr(plots, "save", lambda fig, path, dpi=120: made.append(fig)
-                        or save(fig, path, dpi))
-    paths = plot(rows, tmp_path / "bench_demo.png", "demo")
+    monkeypatch.setattr(report, "save", lambda fig, path, dpi=120: made.append(fig)
+                        or save(fig, path, dpi))          # the name the bench report calls
+    paths = report.plot(rows, tmp_path / "bench_demo.png", "demo")
     assert paths == [tmp_path / f"bench_demo_{k}.png" for k in (1, 2, 3)]
     assert all(p.read_bytes()[:4] == b"\x89PNG" for p in paths)
     assert [sum(ax.get_visible() for ax in f.get_axes()) for f in made] == [2, 2, 2]
@@ -149,7 +149,7 @@ def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
         box = legend.get_window_extent(renderer)
         assert not any(box.overlaps(ax.get_window_extent(renderer))
                        for ax in fig.get_axes() if ax.get_visible())
-    assert plot(rows[:6], tmp_path / "bench_two.png", "two") == [tmp_path / "bench_two.png"]
+    assert report.plot(rows[:6], tmp_path / "bench_two.png", "two") == [tmp_path / "bench_two.png"]
     alone = [r for r in rows if r.kind == GENERATED]      # nothing to compare with
-    assert plot(alone, tmp_path / "bench_none.png", "none") == []
+    assert report.plot(alone, tmp_path / "bench_none.png", "none") == []
     assert not (tmp_path / "bench_none.png").exists()
