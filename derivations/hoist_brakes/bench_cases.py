@@ -13,15 +13,12 @@ import numpy as np
 
 from crane_sym.bench.cases import BatchedBenchCase
 
-
-def _per_design(values, options):
-    from .sweep_outputs import peak_per_design
-    return peak_per_design(values, options)
+from .elastic_batched import family_from
+from .sweep_outputs import peak_per_design
 
 
 def _breakdown(plan, axes) -> dict[str, float]:
     """Where the batched solver's time goes on the grid (a second run)."""
-    from .elastic_batched import family_from
     names = [a.name for a in plan.axes]
     grid = np.meshgrid(*axes, indexing="ij")
     q = {**plan.fixed, **dict(zip(names, grid))}
@@ -34,6 +31,6 @@ def _breakdown(plan, axes) -> dict[str, float]:
 
 BATCHED_BENCH_CASES = (
     BatchedBenchCase("peak_elastic_gearbox_torque", "hoist_table1",
-                     ("c=1e4:1e5:{n}:log", "delta=0.5:3:{n}"), _per_design, n=100, sample=24,
+                     ("c=1e4:1e5:{n}:log", "delta=0.5:3:{n}"), peak_per_design, n=100, sample=24,
                      breakdown=_breakdown),
 )

@@ -15,14 +15,12 @@ it agrees with the per-design run (``elastic.py``,
 """
 from __future__ import annotations
 
-from dataclasses import replace
-
 import numpy as np
 
 from crane_sym.derivation import SweepOutput
 
-from .elastic import hoist_from
 from .elastic_batched import family_from
+from .hybrid import EMERGENCY_STOP
 
 _PARAMETERS = ("J1", "J2", "m_h", "m_p", "m_r", "r", "i_g", "i_t", "g", "c", "delta",
                "M_SB", "M_BB", "t_SB", "t_BB", "omega1")
@@ -47,17 +45,8 @@ def _peak_elastic_gearbox_torque(values, options) -> np.ndarray:
 
 def peak_per_design(values, options) -> np.ndarray:
     """:func:`_peak_elastic_gearbox_torque` one design at a time (the
-    per-design solver in a loop): the bench's reference."""
-    names = list(values)
-    arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
-    out = np.empty(arrays[0].shape)
-    for index in np.ndindex(out.shape):
-        q = {n: float(a[index]) for n, a in zip(names, arrays)}
-        hoist = hoist_from(q, q["m_p"])
-        run = replace(hoist.emergency_stop(q["omega1"], options["duration"], 0.0, q["t_SB"],
-                                           q["t_BB"]), exact=False)
-        out[index] = abs(hoist.peak(run.solve())[1])
-    return out
+    per-design solver in a loop, ``hybrid.EMERGENCY_STOP``): the bench's reference."""
+    return EMERGENCY_STOP.peak_sweep("relative_torque")(values, options)
 
 
 SWEEP_OUTPUTS = {

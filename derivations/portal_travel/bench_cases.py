@@ -11,14 +11,11 @@ from __future__ import annotations
 
 from crane_sym.bench.cases import BatchedBenchCase
 
-
-def _per_design(values, options):
-    from .sweep_outputs import peak_per_design
-    return peak_per_design(values, options)
+from .sweep_outputs import peak_per_design
 
 
 BATCHED_BENCH_CASES = (
     BatchedBenchCase("peak_startup_link_force", "fig12_startup_backlash",
-                     ("c_l=2:8:{n}", "zeta=0.02:0.1:{n}"), _per_design, n=30, sample=24,
+                     ("c_l=2:8:{n}", "zeta=0.02:0.1:{n}"), peak_per_design, n=30, sample=24,
                      at=("phi_b=3.141592653589793",)),
 )
