@@ -116,6 +116,16 @@ def test_drive_laws_are_split_by_lifting_case():
     assert titles == ["Scene: pick-up", "Scene: weight", "Scene\np8"]
 
 
+def test_a_panel_title_the_figure_title_already_says_is_not_repeated():
+    """Fig. 10's scene title holds its panel's title: one line, not two."""
+    curve = [("a", np.arange(3.0), np.arange(3.0))]
+    said = plots.figures([Panel("Fig. 10: shift limits", "x", curve)],
+                         "Paper 003, Fig. 10: shift limits against z")[0]
+    assert said.get_suptitle() == "Paper 003, Fig. 10: shift limits against z"
+    new = plots.figures([Panel("Fig. 10: shift limits", "x", curve)], "Paper 003, a gear")[0]
+    assert new.get_suptitle() == "Paper 003, a gear\nFig. 10: shift limits"
+
+
 def test_cyrillic_inside_mathtext_renders():
     fig = plots.figures([Panel(r"$K_\mathrm{дин}$", r"$x_\mathrm{ст}$",
                                [(r"$K_\mathrm{дин}(t)$", [0, 1], [0, 1]),

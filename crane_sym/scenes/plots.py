@@ -127,7 +127,7 @@ def figures(panels: Sequence[Panel], title: str) -> list:
         named = re.match(r"(Fig\. \d+[a-z]?): ", single)
         if named and named.group(1) in heading:
             single = single[named.end():]
-        if single:
+        if single and single.lower() not in heading.lower():  # said once
             heading += "\n" + single
         fig.suptitle(heading)
         out.append(fig)
