@@ -113,18 +113,27 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
                 entry(symbol)
         else:
             inner = derived_quantity(model, target, run)
-            symbol = sp.Symbol(f"quantity_{len(inserted)}", real=True)
-            inserted[symbol] = inner.expr
-            entries[symbol] = PhysicalSymbol(symbol, inner.dimension, inner.unit,
-                                             f"{target}: {KINDS[target.partition('.')[2]][1]}",
-                                             DEFINED, "real")
+            what = f"{target}: {KINDS[target.partition('.')[2]][1]}"
+            if inner.numeric:        # a number of the run: a parameter at its magnitude
+                symbol = sp.Symbol(f"quantity_{len(names)}", positive=True)
+                size = abs(float(inner.expr))
+                entries[symbol] = PhysicalSymbol(symbol, inner.dimension, inner.unit, what,
+                                                 PARAMETER, "positive", (size, size))
+                if inner.expr < 0:
+                    inserted[symbol] = -symbol
+            else:                    # a symbolic quantity: its expression put in
+                symbol = sp.Symbol(f"quantity_{len(names)}", real=True)
+                inserted[symbol] = inner.expr
+                entries[symbol] = PhysicalSymbol(symbol, inner.dimension, inner.unit, what,
+                                                 DEFINED, "real")
         if symbol in names:
             raise ComponentError(f"{where}: symbols: {printed!r} and {names[symbol]!r} name "
                                  f"one {target}")
         names[symbol] = printed
-    for symbol in sorted(quantity.expr.free_symbols - {t}, key=str):
+    used = set().union(quantity.expr.free_symbols, *(e.free_symbols for e in inserted.values()))
+    for symbol in sorted(used - {t}, key=str):
         entry(symbol)
-    if quantity.expr.has(t) and t not in entries:
+    if t in used and t not in entries:
         end = value("run", "duration", read.duration, time).si
         entries[t] = PhysicalSymbol(t, time, "s", "time", TIME_ROLE, "nonnegative",
                                     (end / 100, end))
@@ -144,10 +153,11 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
     tolerance = max(f.tolerance, NUMERIC_TOLERANCE) if exact else f.tolerance
     try:
         relation, shown = _read(f, d, lhs, inserted, zero)
-    except Unreadable as why:
+    except Unreadable as why:       # a name as the parser's token shows it: as text
+        reason = re.sub(r"Token\('\w+', ('[^']*')\)", r"\1", str(why))
         return d, PublishedFormula(f.name, f.latex, None, where_printed, compare_to=f.quantity,
-                                   not_checkable=f"the print cannot be read by machine: {why}",
-                                   cause=cause)
+                                   not_checkable=f"the print cannot be read by machine: "
+                                                 f"{reason}", cause=cause)
     d.latex_names[lhs] = shown
     return d, PublishedFormula(f.name, f.latex, relation, where_printed,
                                compare_to=f.quantity, tolerance=tolerance, cause=cause)
@@ -163,7 +173,9 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
     found = candidates(tex)
     if len(found) != 1:
         raise Unreadable(f"it holds {len(found)} relations; a [[formula]] gives one")
-    parsed = parse(found[0])
+    left, equals, right = found[0].partition("=")
+    call = re.fullmatch(r"\s*(.+?)\s*\(\s*[A-Za-z]\s*\)\s*", left)  # F(t) = ...: F
+    parsed = parse(call.group(1) + " =" + right if equals and call else found[0])
     if isinstance(parsed.rhs, sp.core.relational.Relational):
         raise Unreadable("an inequality, not a formula for the quantity")
     rhs = map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero)
