@@ -20,8 +20,10 @@ from pathlib import Path
 
 from crane_sym.components.hybrid import BACKWARD, FORWARD, HELD, ComponentSystem, Mode
 from crane_sym.components.model import ComponentRun
-from crane_sym.components.quantities import derived_quantity, parameters
+from crane_sym.components.parts import ComponentError
+from crane_sym.components.quantities import derived_quantity, parameters, static_loads
 from crane_sym.components.reading import TABLES, ComponentFile, read_component_file
+from crane_sym.docs.numbers import math_errors
 from crane_sym.docs.walkthrough import _cell, _display, _math_cell
 from crane_sym.latex import latex
 from crane_sym.markdown import markdown_table
@@ -242,7 +244,26 @@ def _results(run: ComponentRun) -> list[str]:
             "peak over reference (EN 13001-2's φ5 for drive forces); a negative factor is a "
             "peak that acts against the load at the start.",
             markdown_table(["link", "peak", "at", "at the start", "reference",
-                            "dynamic factor"], rows)]
+                            "dynamic factor"], rows)] + _static(run)
+
+
+def _static(run: ComponentRun) -> list[str]:
+    """The load of each link at the start in the symbols (each rigid group in
+    equilibrium), when the loads do not depend on the speed."""
+    try:
+        loads = static_loads(run.model)
+    except ComponentError as why:
+        return [f"(No static load in the symbols: {why}.)"]
+    values = {**run.model.equations.values, **run.system.extra}
+    out = ["In the steady motion at the start every rigid group is in equilibrium, "
+           "$\\sum_k F_k \\, \\partial u_k / \\partial q = Q$ (motors on, brakes off); "
+           "solved for the link loads:"]
+    units = {p.link: p.unit for p in run.peaks}
+    for name, expr in loads.items():
+        number = float(expr.xreplace(values))
+        out.append(f"**{name}** ({units[name]}):")
+        out.append(_display(f"F_{{st}} = {latex(expr)} \\approx {_number(number)}"))
+    return out
 
 
 def _formulas(read: ComponentFile, records) -> list[str]:
@@ -253,11 +274,13 @@ def _formulas(read: ComponentFile, records) -> list[str]:
         names = ", ".join(f"`{printed}` = {target}" for printed, target in f.symbols)
         out.append(f"**{_cell(f.name)}**, for `{f.quantity}`"
                    + (f" (with {names})" if names else "") + ":")
-        out.append(_display(f.latex.replace("%", "\\%")) if r.machine_read.status != "unreadable"
-                   else "```text\n" + f.latex + "\n```")
+        shown = f.latex.replace("%", "\\%")
+        out.append("```text\n" + f.latex + "\n```" if r.machine_read.status == "unreadable"
+                   or math_errors(shown) else _display(shown))
         how = "no check could decide" if r.method == "none" else f"decided by {r.method}"
         detail = r.detail[:1].upper() + r.detail[1:]
-        out.append(f"Verdict: **{r.verdict}** ({how}). {detail}")
+        out.append(f"Verdict: **{r.verdict}** ({how}). {detail}"
+                   + ("" if detail.endswith(".") else "."))
     return out
 
 
