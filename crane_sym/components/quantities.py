@@ -147,7 +147,14 @@ def _load_dimension(model: Model, link) -> tuple[Dimension, str]:
 
 def static_loads(model: Model) -> dict[str, sp.Expr]:
     """Each link's load in the steady motion at the start, symbolic: every rigid
-    group in equilibrium, Σ_k F_k ∂u_k/∂q_g = Q_g (motors on, brakes off)."""
+    group in equilibrium, Σ_k F_k ∂u_k/∂q_g = Q_g (motors on, brakes off).
+
+    Parameters
+    ----------
+    model : Model
+        The assembled and derived model; ComponentError when its loads depend
+        on the speed, do not balance in the symbols, or its links form a loop.
+    """
     a, eq = model.assembly, model.equations
     if a.loads_of(Characteristic):
         raise ComponentError(f"a static load needs loads that do not depend on the speed; "
