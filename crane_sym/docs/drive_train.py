@@ -204,7 +204,27 @@ def _modes(run: ComponentRun) -> list[str]:
         A, b = system.matrices(seg.mode)
         out.append(f"**Mode {len(seen)}:** {_cell(describe_mode(system, seg.mode))}.")
         out.append(_display(f"A = {_matrix(A)}, \\quad b = {_matrix(b[:, None])}"))
+        out.append(_frequencies(A))
     return out
+
+
+def _frequencies(A) -> str:
+    """The eigenvalues of A in words: the damped angular frequencies and decay
+    rates of the mode's oscillations (a mode without any: its rigid motion)."""
+    import numpy as np
+    roots = np.linalg.eigvals(A)
+    scale = float(np.max(np.abs(roots), initial=0.0))     # a rigid motion's double zero
+    waves = sorted({(round(float(-r.real), 9), round(float(r.imag), 9))   # splits by
+                    for r in roots if r.imag > 1e-6 * scale}, key=lambda w: w[1])  # rounding
+    if not waves:
+        return "No oscillation in this mode (A has real eigenvalues only)."
+    said = ", ".join(f"ω = {_plain(w)} rad/s" + (f" decaying at {_plain(n)} 1/s" if n else "")
+                     for n, w in waves)
+    return f"Its oscillations (eigenvalues −n ± iω of A): {said}."
+
+
+def _plain(x: float) -> str:
+    return f"{x:.{MATRIX_DIGITS}g}"
 
 
 def _phases(read: ComponentFile, run: ComponentRun) -> list[str]:
@@ -267,6 +287,8 @@ def _static(run: ComponentRun) -> list[str]:
 
 
 def _formulas(read: ComponentFile, records) -> list[str]:
+    if isinstance(records[0], str):
+        return [f"The file's formulas could not be audited: {_cell(records[0])}."]
     out = ["The formulas the file lists, read by machine and checked against the model "
            "above as the papers' prints are (`crane-sym audit FILE`): symbolic identity "
            "first, then mpmath at seeded physical points, then dimensions."]
@@ -320,7 +342,10 @@ def _read_and_run(path: str | Path) -> tuple[ComponentFile, ComponentRun, list]:
     records = []
     if read.formulas:
         from crane_sym.components.file_audit import audit_file
-        records = audit_file(read)
+        try:
+            records = audit_file(read)
+        except ComponentError as why:       # a quantity this model cannot derive
+            records = [str(why)]
     return read, run, records
 
 
