@@ -124,8 +124,10 @@ class Equations:
         return evaluate
 
     def latex(self) -> list[str]:
-        """The equations of motion in LaTeX, one per coordinate."""
-        return [sp.latex(e) for e in self.lagrange.equations]
+        """The equations of motion in LaTeX, one per coordinate, as a mechanics
+        text writes them (q̇, q̈; :func:`crane_sym.latex.latex`)."""
+        from crane_sym.latex import latex
+        return [latex(e) for e in self.lagrange.equations]
 
 
 def derive(assembly: Assembly) -> Equations:
