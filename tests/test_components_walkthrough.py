@@ -34,11 +34,14 @@ def test_the_equations_are_the_models(handout):
     eq = read.model.equations
     for line in eq.latex():
         assert f"$$\n{line}\n$$" in text
-    assert f"T = {latex(eq.T)}" in text
-    assert f"\\Pi = {latex(eq.V)}" in text
-    assert f"\\Phi = {latex(eq.dissipation)}" in text
+    names = eq.latex_names
+    assert f"T = {latex(eq.T, symbol_names=names)}" in text
+    assert f"\\Pi = {latex(eq.V, symbol_names=names)}" in text
+    assert f"\\Phi = {latex(eq.dissipation, symbol_names=names)}" in text
     for q in eq.coordinates:
-        assert f"Q_{{{latex(q)}}} = {latex(eq.forces[q])}" in text
+        assert (f"Q_{{{latex(q, symbol_names=names)}}} = "
+                f"{latex(eq.forces[q], symbol_names=names)}") in text
+    assert "c_{\\mathrm{gearbox\\_mesh}}" in text
 
 
 def test_the_phases_are_the_runs(handout):

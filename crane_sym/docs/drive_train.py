@@ -38,6 +38,18 @@ TIME_DIGITS = 9
 _WHERE = {"gear": ("input", "output"), "drum": ("drum", "load")}
 
 
+def _table(header: list[str], rows: list[list[str]]) -> str:
+    """A Markdown table whose text cells keep their ``*`` (``N*m*s/rad`` as
+    written, not emphasis); math cells (``$…$``) as they are."""
+    return markdown_table(header, [[c if c.startswith("$") else c.replace("*", "\\*")
+                                    for c in map(str, row)] for row in rows])
+
+
+def _tex(expr, model) -> str:
+    """LaTeX of a model's expression with its handout names (``Equations.latex_names``)."""
+    return latex(expr, symbol_names=model.equations.latex_names)
+
+
 def _connects(kind: str, entry: dict) -> str:
     if kind == "elastic":
         return " – ".join(entry.get("between", []))
@@ -60,23 +72,23 @@ def _components(read: ComponentFile) -> str:
                                             "drum", "load"))
             rows.append([_cell(entry.get("name", "")), kind, _cell(_connects(kind, entry)),
                          _cell(values or "—")])
-    return markdown_table(["component", "kind", "joins / acts on", "values as written"], rows)
+    return _table(["component", "kind", "joins / acts on", "values as written"], rows)
 
 
 def _symbols(read: ComponentFile, run: ComponentRun) -> list[str]:
     solved = run.system.extra
-    rows = [[_math_cell(latex(p.symbol)), _cell(p.description), _cell(p.path),
+    rows = [[_math_cell(_tex(p.symbol, read.model)), _cell(p.description), _cell(p.path),
              f"{p.value:.6g}" if p.value == p.value else
              f"{float(solved[p.symbol]):.6g} (solved at the start)", p.unit]
             for p in parameters(read.model).values()]
     eq = read.model.equations
-    rows += [[_math_cell(latex(q)), f"coordinate of the rigid group of {g.name}", "—", "—",
+    rows += [[_math_cell(_tex(q, read.model)), f"coordinate of the rigid group of {g.name}", "—", "—",
               "rad" if g.motion == "rotating" else "m"]
              for g, q in zip(read.model.assembly.groups, eq.coordinates)]
     return ["Every symbol is named after its component. A value 0 (a shaft end without "
             "inertia, an undamped link) is kept in the equations below and drops out of the "
             "numbers.",
-            markdown_table(["symbol", "meaning", "name in the file", "value (SI)", "unit"],
+            _table(["symbol", "meaning", "name in the file", "value (SI)", "unit"],
                            rows)]
 
 
@@ -90,12 +102,12 @@ def _groups(read: ComponentFile) -> list[str]:
            "referred to its coordinate is $\\partial^2 T / \\partial \\dot q^2$."]
     rows = []
     for g, q in zip(a.groups, eq.coordinates):
-        members = ", ".join(f"{b.name}: $\\kappa = {latex(k)}$" for (b, _), k in
+        members = ", ".join(f"{b.name}: $\\kappa = {_tex(k, model)}$" for (b, _), k in
                             zip(g.members, g.factors))
         reduced = derived_quantity(model, f"{g.name}.reduced_inertia")
-        rows.append([_math_cell(latex(q)), _cell(members), _math_cell(latex(reduced.expr)),
+        rows.append([_math_cell(_tex(q, model)), _cell(members), _math_cell(_tex(reduced.expr, model)),
                      format_quantity(g.inertia, reduced.unit, 6)])
-    out.append(markdown_table(["coordinate", "bodies", "reduced inertia", "value"], rows))
+    out.append(_table(["coordinate", "bodies", "reduced inertia", "value"], rows))
     return out
 
 
@@ -108,11 +120,12 @@ def _energies(read: ComponentFile) -> list[str]:
            "backlash carries its contact $\\chi$ (1 on a flank, 0 in its gap) and the "
            "flank $\\delta$ it rests on; a motor's torque is multiplied by its switch "
            "$\\mathrm{on}$; a brake's friction $B$ is what the mode makes it.",
-           "**Kinetic energy**", _display(f"T = {latex(eq.T)}"),
-           "**Potential energy**", _display(f"\\Pi = {latex(eq.V)}"),
-           "**Dissipation**", _display(f"\\Phi = {latex(eq.dissipation)}"),
+           "**Kinetic energy**", _display(f"T = {_tex(eq.T, read.model)}"),
+           "**Potential energy**", _display(f"\\Pi = {_tex(eq.V, read.model)}"),
+           "**Dissipation**", _display(f"\\Phi = {_tex(eq.dissipation, read.model)}"),
            "**Generalised forces**"]
-    out += [_display(f"Q_{{{latex(q)}}} = {latex(eq.forces[q])}") for q in eq.coordinates]
+    out += [_display(f"Q_{{{_tex(q, read.model)}}} = {_tex(eq.forces[q], read.model)}")
+            for q in eq.coordinates]
     return out
 
 
@@ -171,9 +184,9 @@ def _state(system: ComponentSystem) -> str:
     eq = system.equations
     names = []
     for q in eq.coordinates:
-        names += [latex(q.func(eq.t)).replace("{\\left(t \\right)}", ""),
-                  latex(q.diff(eq.t)).replace("{\\left(t \\right)}", "")]
-    names += [f"\\beta_{{{system.brakes[i].part.name.replace('_', '-')}}}"
+        names += [latex(q, symbol_names=eq.latex_names),
+                  latex(q.diff(eq.t), symbol_names=eq.latex_names)]
+    names += ["\\beta_{\\mathrm{" + system.brakes[i].part.name.replace("_", "\\_") + "}}"
               for i in sorted(system.beta)]
     return ", ".join(names)
 
@@ -249,7 +262,7 @@ def _phases(read: ComponentFile, run: ComponentRun) -> list[str]:
             "$x' = A x + b$; a phase ends at the first event (a gap closing or opening, a "
             "group coming to rest or slipping, a brake engaging, a motor switched off), "
             f"found on that closed form.{note}",
-            markdown_table(["phase", "from", "to", "mode", "ended by"], rows)]
+            _table(["phase", "from", "to", "mode", "ended by"], rows)]
 
 
 def _results(run: ComponentRun) -> list[str]:
@@ -263,7 +276,7 @@ def _results(run: ComponentRun) -> list[str]:
             "(the link's `reference`, else its load at the start) and the dynamic factor, "
             "peak over reference (EN 13001-2's φ5 for drive forces); a negative factor is a "
             "peak that acts against the load at the start.",
-            markdown_table(["link", "peak", "at", "at the start", "reference",
+            _table(["link", "peak", "at", "at the start", "reference",
                             "dynamic factor"], rows)] + _static(run)
 
 
@@ -282,7 +295,7 @@ def _static(run: ComponentRun) -> list[str]:
     for name, expr in loads.items():
         number = float(expr.xreplace(values))
         out.append(f"**{name}** ({units[name]}):")
-        out.append(_display(f"F_{{st}} = {latex(expr)} \\approx {_number(number)}"))
+        out.append(_display(f"F_{{st}} = {_tex(expr, run.model)} \\approx {_number(number)}"))
     return out
 
 
