@@ -28,10 +28,12 @@ ALIASES: dict[str, str] = {"000": "travel_braking", "001": "hoist_brakes",
 EXAMPLES = {
     "list": "crane-sym list\n  crane-sym list --scenes\n  crane-sym list --format json",
     "audit": "crane-sym audit 000 --format table\n  crane-sym audit travel_braking "
-             "--format json --quiet > verdicts.json",
+             "--format json --quiet > verdicts.json\n"
+             "  crane-sym audit examples/drive_trains/hoist_rope_stretch.toml",
     "walkthrough": "crane-sym walkthrough 000 -o walkthrough.md\n"
                    "  crane-sym walkthrough 002 --format ipynb -o hoist_startup.ipynb\n"
-                   "  crane-sym walkthrough 001 --format html -o hoist_brakes.html",
+                   "  crane-sym walkthrough 001 --format html -o hoist_brakes.html\n"
+                   "  crane-sym walkthrough examples/drive_trains/hoist_fig9.toml -o fig9.md",
     "generate": "crane-sym generate\n  crane-sym generate --check\n"
                 "  crane-sym generate --scene hoist_user_drive_law --out out/",
     "accuracy": "crane-sym accuracy 002",

@@ -159,11 +159,14 @@ def test_every_name_in_an_example_can_be_listed(capsys):
         named = []
         for command in example.replace("\\\n", " ").split("\n"):
             args = vars(parser().parse_args(shlex.split(command.split(">")[0])[1:]))
-            named += [(w, papers) for w in args.get("ids", [])]
-            named += [(args[k], papers) for k in ("id",) if k in args]
+            named += [(w, papers) for w in args.get("ids", []) if not w.endswith(".toml")]
+            named += [(args[k], papers) for k in ("id",) if k in args
+                      and not args[k].endswith(".toml")]
             named += [(args[k], scenes) for k in ("scene",) if args.get(k)
                       and not args[k].endswith(".toml")]
-            files = [args[k] for k in ("scene", "file") if str(args.get(k, "")).endswith(".toml")]
+            files = [args[k] for k in ("scene", "file", "id")
+                     if str(args.get(k, "")).endswith(".toml")]
+            files += [w for w in args.get("ids", []) if w.endswith(".toml")]
             assert all((Path(__file__).parents[1] / f).is_file() for f in files), files
         assert [w for w, known in named if w not in known] == [], name
         if named:

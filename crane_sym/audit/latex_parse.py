@@ -141,7 +141,13 @@ _INTEGRAL = re.compile(r"\\int(?P<body>.*?)\bd\s*(?P<var>\\[A-Za-z]+|[A-Za-z])(?
 def bound_variables(tex: str) -> str:
     """The variable of each ``\\int ... d\\theta`` renamed ``w`` inside that integral,
     before names are replaced (a bound variable is no symbol of the derivation,
-    and the parser reads only a letter after the ``d``)."""
+    and the parser reads only a letter after the ``d``).
+
+    Parameters
+    ----------
+    tex : str
+        The print's LaTeX.
+    """
     def rename(m: re.Match) -> str:
         var = re.escape(m.group("var"))
         body = re.sub(var + r"(?![A-Za-z])", BOUND, m.group("body"))
@@ -190,7 +196,15 @@ class Parsed:
 def parse(candidate: str, functions: frozenset = frozenset()) -> Parsed:
     """One candidate relation parsed by SymPy's lark parser (no ``eval``), an
     ambiguity resolved with ``functions`` the names that are functions; raises
-    :class:`Unreadable` with the parser's reason."""
+    :class:`Unreadable` with the parser's reason.
+
+    Parameters
+    ----------
+    candidate : str
+        One relation (or expression) of a print, after the layout pass.
+    functions : frozenset of str, optional
+        The names to read as functions.
+    """
     sides = [s.strip() for s in _top_level_split(candidate, "=")]
     if len(sides) > 2 or not all(sides):
         raise Unreadable(f"not one relation: {candidate!r}")
@@ -215,5 +229,11 @@ def parse_side(side: str, functions: frozenset) -> sp.Basic:
 
 
 def candidates(tex: str) -> list[str]:
-    """The relations of a print after the layout pass (names already replaced)."""
+    """The relations of a print after the layout pass (names already replaced).
+
+    Parameters
+    ----------
+    tex : str
+        The print's LaTeX, its names already replaced by tokens.
+    """
     return split(layout(tex))

@@ -73,7 +73,15 @@ def vocabulary(d: Derivation, typewriter: bool = False) -> dict[str, sp.Basic]:
     """Every way the derivation's symbols may be printed -> the symbol: the LaTeX
     the derivation prints and ``latex_names``, ẋ and ẍ of each coordinate, the
     symbol's own name, π; with ``typewriter`` (a Mathcad form) the ``\\mathtt``
-    names bare, ahead of the others."""
+    names bare, ahead of the others.
+
+    Parameters
+    ----------
+    d : Derivation
+        The derivation whose symbols (and ``latex_names``) are the names.
+    typewriter : bool, optional
+        Whether the print is a Mathcad form.
+    """
     names: dict[str, sp.Basic] = {}
 
     def add(tex: str, expr: sp.Basic, first: bool = False) -> None:
@@ -121,7 +129,17 @@ def _replace(tex: str, pattern: re.Pattern, token: str) -> str:
 def names_pass(tex: str, vocab: dict[str, sp.Basic],
                tokens: dict[str, sp.Basic]) -> str:
     """The print with every name the parser cannot read replaced by a token (added
-    to ``tokens``); names the parser reads (``m_1``) are left for the mapping."""
+    to ``tokens``); names the parser reads (``m_1``) are left for the mapping.
+
+    Parameters
+    ----------
+    tex : str
+        The print's LaTeX.
+    vocab : dict of str to Basic
+        The names (:func:`vocabulary`).
+    tokens : dict of str to Basic
+        The tokens given so far, added to.
+    """
     complex_names = [k for k in vocab if not _NATIVE.match(k.replace(" ", ""))]
     for key in sorted(complex_names, key=lambda k: -len(k.split())):
         pattern = _compiled(key)
@@ -135,7 +153,17 @@ def names_pass(tex: str, vocab: dict[str, sp.Basic],
 def calls_pass(tex: str, vocab: dict[str, sp.Basic], tokens: dict[str, sp.Basic]) -> str:
     """Each call ``F(arg)`` of a function of the derivation (by its name, or by the
     token the names pass gave it) replaced by a token for ``F(arg)``, ``arg`` read
-    on its own: the parser takes ``S(θ)`` inside an integral for ``S·θ``."""
+    on its own: the parser takes ``S(θ)`` inside an integral for ``S·θ``.
+
+    Parameters
+    ----------
+    tex : str
+        The print's LaTeX after :func:`names_pass`.
+    vocab : dict of str to Basic
+        The names (:func:`vocabulary`).
+    tokens : dict of str to Basic
+        The tokens given so far, added to.
+    """
     functions = {k.replace(" ", ""): v for k, v in vocab.items() if isinstance(v, AppliedUndef)
                  and _NATIVE.match(k.replace(" ", ""))}
     functions |= {k: v for k, v in tokens.items() if isinstance(v, (AppliedUndef,
@@ -183,7 +211,17 @@ def _plain(name) -> str:
 def map_symbols(expr: sp.Basic, vocab: dict[str, sp.Basic],
                 tokens: dict[str, sp.Basic]) -> sp.Basic:
     """The parsed expression in the derivation's symbols; raises Unreadable on a
-    name the derivation does not have."""
+    name the derivation does not have.
+
+    Parameters
+    ----------
+    expr : Basic
+        What the parser returned.
+    vocab : dict of str to Basic
+        The names (:func:`vocabulary`).
+    tokens : dict of str to Basic
+        The tokens of the names and calls passes.
+    """
     native = {k.replace(" ", ""): v for k, v in vocab.items()}
 
     def symbol_for(name: str) -> sp.Basic:

@@ -267,7 +267,15 @@ def _band(d: Derivation, f: PublishedFormula, literal: Attempt,
 
 
 def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
-    """The verdict on one published formula of derivation ``d``."""
+    """The verdict on one published formula of derivation ``d``.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built derivation, whose step ``f.target`` the formula is checked against.
+    f : PublishedFormula
+        The formula, one of ``d.published`` (or built for ``d`` alone).
+    """
     sensitivity = d.step(f.target).sensitivity if f.kind == CHOSEN else None
 
     def record(verdict: str, method: str, detail: str,

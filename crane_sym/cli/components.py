@@ -60,3 +60,52 @@ def cmd_model(args: argparse.Namespace) -> int:
     """``crane-sym model show FILE``."""
     print(model_text(args.file))
     return 0
+
+
+def is_file_argument(name: str) -> bool:
+    """A command-line name that means a component file: a TOML path (an existing
+    component file, or any ``.toml``, so that a missing one is named as a file)."""
+    from crane_sym.components.reading import is_component_file
+    return name.endswith(".toml") or is_component_file(name)
+
+
+def cmd_audit_components(args: argparse.Namespace) -> int:
+    """``crane-sym audit FILE ...``: verdicts on the [[formula]] tables of
+    component files, in the papers' formats."""
+    from crane_sym.audit.formats import FORMATS
+    from crane_sym.components.file_audit import audit_file
+    from crane_sym.components.reading import read_component_file
+    papers = [n for n in args.ids if not is_file_argument(n)]
+    if papers:
+        raise ValueError(f"audit: give paper ids or component files, not both "
+                         f"({papers[0]!r} is no component file)")
+    records = []
+    quiet = getattr(args, "quiet", False)
+    with progress.reporting(progress.Progress(progress.wanted(quiet))) as say:
+        for name in args.ids:
+            with say.task(f"auditing the formulas of {name}"):
+                records += audit_file(read_component_file(name))
+    print(FORMATS[args.format](records))
+    return 0
+
+
+def cmd_walkthrough_components(args: argparse.Namespace) -> int:
+    """``crane-sym walkthrough FILE``: the derivation of a component model as
+    Markdown or a printable HTML page (nothing written on an error)."""
+    from crane_sym import output_files
+    from crane_sym.docs.drive_train import drive_train_page, drive_train_walkthrough
+    if args.format == "ipynb":
+        raise ValueError("walkthrough: a component file's walkthrough is Markdown or "
+                         "html, not ipynb")
+    make = drive_train_page if args.format == "html" else drive_train_walkthrough
+    target = output_files.out_file(args.output, "-o") if args.output else None
+    quiet = getattr(args, "quiet", False)
+    with progress.reporting(progress.Progress(progress.wanted(quiet))) as say:
+        with say.task(f"walkthrough of {args.id}"):
+            text = make(args.id)
+    if target:
+        output_files.write_text(target[0], target[1], text, "-o")
+        print(f"wrote {args.output}")
+    else:
+        print(text)
+    return 0

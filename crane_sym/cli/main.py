@@ -34,7 +34,10 @@ _PAPERS = "Papers by id or number: `crane-sym list` names them."
 _SCENES = ("A scene by name (`crane-sym list --scenes` names the shipped ones)\n"
            "or by the path of a TOML file.")
 #: Where the names an example uses come from, shown after it.
-NAMES = {"audit": _PAPERS, "walkthrough": _PAPERS, "accuracy": _PAPERS, "bench": _PAPERS,
+_FILES = ("\nA drive train of your own: its component TOML file (README, \"Your own "
+          "drive train\").")
+NAMES = {"audit": _PAPERS + _FILES, "walkthrough": _PAPERS + _FILES, "accuracy": _PAPERS,
+         "bench": _PAPERS,
          "generate": _SCENES, "sweep": _SCENES,
          "run": _SCENES + "\nA drive train of your own: its component TOML file "
                           "(examples/drive_trains/ has three).",
@@ -95,7 +98,11 @@ def _list_scenes(form: str) -> int:
 
 
 def cmd_audit(args: argparse.Namespace) -> int:
-    """Verdicts on the printed formulas of the chosen papers."""
+    """Verdicts on the printed formulas of the chosen papers (or on the
+    [[formula]] tables of component files)."""
+    from crane_sym.cli.components import cmd_audit_components, is_file_argument
+    if any(is_file_argument(n) for n in args.ids):
+        return cmd_audit_components(args)
     # imported on use: see the module docstring
     from crane_sym.audit.verdicts import audit
     from crane_sym.audit.formats import FORMATS
@@ -121,7 +128,10 @@ def cmd_audit(args: argparse.Namespace) -> int:
 
 def cmd_walkthrough(args: argparse.Namespace) -> int:
     """The derivation step by step, as Markdown, a Jupyter notebook or a printable
-    HTML page."""
+    HTML page (a component file: the derivation of its model)."""
+    from crane_sym.cli.components import cmd_walkthrough_components, is_file_argument
+    if is_file_argument(args.id):
+        return cmd_walkthrough_components(args)
     # imported on use: see the module docstring
     from crane_sym.docs.page import handout_page
     from crane_sym.docs.notebook import notebook
@@ -274,12 +284,13 @@ def parser() -> argparse.ArgumentParser:
                    help="the shipped scenes instead: name, paper id, title")
     p.add_argument("--format", choices=("table", "json"), default="table")
     p = _subcommand(sub, "audit", "verdict on every published formula", cmd_audit, True)
-    p.add_argument("ids", nargs="*", help=ids_help)
+    p.add_argument("ids", nargs="*", help=ids_help + "; or component TOML files: their "
+                   "[[formula]] tables")
     p.add_argument("--format", choices=("table", "json", "markdown"), default="table")
     p.add_argument("--profile", action="store_true", help="time per derivation on stderr")
     p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown, a notebook "
                     "or a printable page", cmd_walkthrough, True)
-    p.add_argument("id")
+    p.add_argument("id", help="derivation id or paper number, or a component TOML file")
     p.add_argument("--format", choices=("markdown", "ipynb", "html"), default="markdown",
                    help="ipynb: a Jupyter notebook with a code cell per step; html: one "
                    "self-contained page (math as MathML, the first scene's figures, "

@@ -8,11 +8,14 @@ their capacity); motors (a constant or steady torque, switched off at an
 instant; or a characteristic β (v0 − v) stepped at hold times); gravity on masses; constant resistances. From them: topology checks
 with one-line errors naming the component, T, Π, Φ and Q, Lagrange's
 equations in the components' symbols, the piecewise-linear system of its
-modes, a run solved phase by phase in closed form, and the component TOML.
+modes, a run solved phase by phase in closed form, and the component TOML;
+quantities a reviewer checks (reduced inertia, static load, frequency, closed
+form, peak) and verdicts on the formulas a file lists (``file_audit``).
 
 May import: the top-level vocabulary (``units``, ``symbols``, ...),
-``mechanics``, ``kernels``, ``codegen`` and ``scenes`` (its helpers for
-reading tables); papers never.
+``audit`` (the papers' checks, for a file's formulas), ``mechanics``,
+``kernels``, ``codegen`` and ``scenes`` (its helpers for reading tables);
+papers never.
 """
 from crane_sym.components.loads import (STEADY, Brake, Characteristic, Gravity, Motor,
                                         Resistance)

@@ -38,6 +38,9 @@ from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 __all__ = ["Equations", "derive"]
 
 T_SYMBOL = sp.Symbol("t", real=True)
+#: The LaTeX of a symbol's letter, where it is no Latin letter.
+_HEADS = {"chi": "\\chi", "delta": "\\delta", "beta": "\\beta", "theta": "\\theta",
+          "on": "\\mathrm{on}"}
 
 
 def _p(name: str) -> sp.Symbol:
@@ -123,9 +126,27 @@ class Equations:
                 (np.array(out[3], dtype=float).reshape(-1),)
         return evaluate
 
+    @cached_property
+    def latex_names(self) -> dict[sp.Basic, str]:
+        """How a handout writes each symbol: its letter, the component's name
+        upright as its subscript (``c_{\\mathrm{gearbox\\_mesh}}``)."""
+        names: dict[sp.Basic, str] = {}
+        symbols = [*self.values, *self.contact, *self.flank, *self.switches,
+                   *self.friction, *self.motor_loads, *self.slopes]
+        for s in [*symbols, *self.coordinates]:
+            text = s.name if isinstance(s, sp.Symbol) else type(s).__name__
+            head, _, rest = text.partition("_")
+            upright = "\\mathrm{" + rest.replace("_", r"\_") + "}"
+            names[s] = (text if not rest else f"v_{{0,{upright}}}" if head == "v0" else
+                        f"{_HEADS.get(head, head)}_{{{upright}}}")
+        return names
+
     def latex(self) -> list[str]:
-        """The equations of motion in LaTeX, one per coordinate."""
-        return [sp.latex(e) for e in self.lagrange.equations]
+        """The equations of motion in LaTeX, one per coordinate, as a mechanics
+        text writes them (q̇, q̈; :func:`crane_sym.latex.latex`, with
+        :attr:`latex_names`)."""
+        from crane_sym.latex import latex
+        return [latex(e, symbol_names=self.latex_names) for e in self.lagrange.equations]
 
 
 def derive(assembly: Assembly) -> Equations:

@@ -66,6 +66,13 @@
     slopes = ["1.7e5 N*s/m", "3.4e5 N*s/m"]
     holds = ["0.4 s"]           # one fewer than slopes
 
+    [[formula]]                 # a formula of your source, for `crane-sym audit FILE`
+    name = "(12)"               # (crane_sym.components.formulas)
+    latex = "M_{st} = \\frac{m g r}{n i}"
+    symbols = { m = "hook.mass", g = "weight.g", r = "rope.radius", n = "rope.reeving",
+                i = "gearbox.ratio" }
+    quantity = "coupling.static"
+
     [run]
     duration = "1 s"
     start = "steady"            # or "rest": at rest, zero twist, every gap open
@@ -81,10 +88,11 @@ from __future__ import annotations
 
 import re
 import tomllib
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from crane_sym.components.formulas import read_formulas
 from crane_sym.components.model import Model
 from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
@@ -118,7 +126,9 @@ _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
 
 @dataclass(frozen=True)
 class ComponentFile:
-    """A read component file: the model, its run's settings, where it came from."""
+    """A read component file: the model, its run's settings, where it came from,
+    its [[formula]] tables (:class:`~crane_sym.components.formulas.FileFormula`)
+    and its component tables as written (kind -> list of tables)."""
 
     model: Model
     duration: str
@@ -126,6 +136,8 @@ class ComponentFile:
     speed: Any
     path: Path
     rest: bool = False
+    formulas: tuple = ()
+    tables: dict = field(default_factory=dict)
 
 
 def is_component_file(path: str | Path) -> bool:
@@ -230,7 +242,7 @@ def read_component_file(path: str | Path) -> ComponentFile:
         data = tomllib.loads(p.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
         raise ComponentError(f"{p.name}: not valid TOML: {str(exc).splitlines()[0]}") from None
-    tables = ("model", "run", *TABLES)
+    tables = ("model", "run", "formula", *TABLES)
     _keys(data, tables, f"component file {p.name!r}", "table")
     head = data.get("model")
     if not isinstance(head, dict):
@@ -276,5 +288,7 @@ def read_component_file(path: str | Path) -> ComponentFile:
         model = Model(parts, name, str(head.get("title", "")))
     except ComponentError as exc:
         raise ComponentError(f"{where_file}: {exc}") from None
+    formulas = read_formulas(data.get("formula", []), model, where_file)
     return ComponentFile(model, settings["duration"], settings.get("body"),
-                         settings.get("speed", 0.0), p, start == "rest")
+                         settings.get("speed", 0.0), p, start == "rest", formulas,
+                         {k: data.get(k, []) for k in TABLES})

@@ -20,7 +20,7 @@ from crane_sym.components.reading import ComponentFile, read_component_file
 from crane_sym.mechanics.phase_table import values
 from crane_sym.scenes.panels import Panel, format_quantity
 
-__all__ = ["ComponentReport", "report_lines", "run_component_file"]
+__all__ = ["ComponentReport", "load_figures", "report_lines", "run_component_file"]
 
 #: Points of the plotted curves.
 POINTS = 2001
@@ -58,7 +58,17 @@ def _json(run: ComponentRun, name: str) -> str:
     }, indent=2)
 
 
-def _figure(run: ComponentRun, title: str):
+def load_figures(run: ComponentRun, title: str) -> list:
+    """The figures (Matplotlib) of the loads of the run's elastic links, at most
+    four panels each.
+
+    Parameters
+    ----------
+    run : ComponentRun
+        The run.
+    title : str
+        The figures' title.
+    """
     from crane_sym.scenes.plots import figures
     times = np.linspace(0.0, run.t_end, POINTS)
     panels = [Panel(f"load of the elastic link {p.link}", f"[{p.unit}]",
@@ -85,7 +95,7 @@ def run_component_file(path: str | Path, out: str | Path) -> ComponentReport:
     model = read.model
     run = model.run(read.duration, read.body, read.speed, rest=read.rest)
     lines = report_lines(run)
-    figs = _figure(run, model.title or model.name)
+    figs = load_figures(run, model.title or model.name)
     source = render_component_module(run)
     with output_files.staged(out) as stage:
         files = [stage.text(f"{model.name}.json", _json(run, model.name)),

@@ -1,0 +1,147 @@
+"""The ``[[formula]]`` tables of a component file: formulas printed in the
+user's source, to be audited against the model derived from the components.
+
+::
+
+    [[formula]]
+    name = "(12)"                            # the source's label
+    latex = "M_{st} = \\\\frac{m g r}{n i}"     # the print, LaTeX (read by machine)
+    symbols = { m = "hook.mass", g = "weight.g", r = "rope.radius",
+                n = "rope.reeving", i = "gearbox.ratio" }
+    quantity = "gearbox_mesh.static"         # what the formula gives
+    tolerance = 0.0                          # optional: relative, for a rounded print
+    cause = "..."                            # optional: the user's diagnosis of a finding
+
+``symbols`` maps each name the print uses to a parameter of the model
+(``<component>.<key>``, :func:`crane_sym.components.quantities.parameters`),
+to ``"time"``, or to a derived quantity (its expression is put in);
+``quantity`` names what the formula's left side is
+(:mod:`crane_sym.components.quantities`). The names are checked when the
+file is read: an unknown key, parameter or quantity is one line naming it.
+The LaTeX itself is read only when the file is audited
+(:mod:`crane_sym.components.file_audit`), never evaluated.
+"""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from crane_sym.components.model import Model
+from crane_sym.components.parts import ComponentError
+from crane_sym.components.quantities import KINDS, parameters
+from crane_sym.scenes.options import did_you_mean
+
+__all__ = ["FORMULA_KEYS", "FileFormula", "TIME", "read_formulas"]
+
+#: Keys of a [[formula]] table: required, then optional.
+FORMULA_KEYS = (("name", "latex", "quantity"), ("symbols", "tolerance", "cause"))
+#: The word a symbol maps to for time.
+TIME = "time"
+_PRINTED_NAME = re.compile(r"\S{1,40}")
+
+
+@dataclass(frozen=True)
+class FileFormula:
+    """One [[formula]] of a component file, its names checked."""
+
+    name: str
+    latex: str
+    quantity: str
+    symbols: tuple[tuple[str, str], ...]
+    tolerance: float = 0.0
+    cause: str = ""
+
+
+def _quantity_names(model: Model) -> dict[str, str]:
+    """Every quantity the model's components have a name for -> its kind."""
+    a = model.assembly
+    out = {}
+    for what, (owner, _) in KINDS.items():
+        names = list(a.bodies) if owner == "body" else [l.part.name for l in a.links]
+        out |= {f"{n}.{what}": what for n in names}
+    return out
+
+
+def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
+    if not isinstance(path, str):
+        raise ComponentError(f"{where}: {key} must be text like \"coupling.static\", "
+                             f"got {path!r}")
+    known = _quantity_names(model)
+    if path not in known:
+        raise ComponentError(f"{where}: unknown quantity {path!r}; "
+                             f"{did_you_mean(path, list(known))}a quantity is "
+                             f"<body>.reduced_inertia or <link>."
+                             f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'link')}}}")
+    return path
+
+
+def _check_symbols(table: object, model: Model, where: str) -> tuple[tuple[str, str], ...]:
+    if not isinstance(table, dict):
+        raise ComponentError(f"{where}: symbols must be a table like {{ c = "
+                             f"\"coupling.stiffness\" }}, got {table!r}")
+    known = parameters(model)
+    out = []
+    for printed, target in table.items():
+        if not _PRINTED_NAME.fullmatch(printed):
+            raise ComponentError(f"{where}: symbols: {printed!r} is not a printed name")
+        if not isinstance(target, str):
+            raise ComponentError(f"{where}: symbols: {printed!r} must map to a parameter "
+                                 f"name as text, got {target!r}")
+        if target != TIME and target not in known:
+            name, _, what = target.partition(".")
+            if what in KINDS:
+                _check_quantity(target, model, f"{where}: symbols: {printed!r}", "it")
+            else:
+                raise ComponentError(
+                    f"{where}: symbols: {printed!r} maps to unknown parameter {target!r}; "
+                    f"{did_you_mean(target, list(known))}parameters: {', '.join(known)}, "
+                    f"or \"{TIME}\", or a quantity")
+        out.append((printed, target))
+    return tuple(out)
+
+
+def read_formulas(entries: Any, model: Model, where: str) -> tuple[FileFormula, ...]:
+    """The [[formula]] tables of a file, their keys and names checked against
+    ``model``; ComponentError, one line naming the formula and what is wrong.
+
+    Parameters
+    ----------
+    entries : Any
+        ``data.get("formula", [])`` of the parsed TOML.
+    model : Model
+        The file's model, whose parameters and quantities the names must be.
+    where : str
+        How errors name the file's model.
+    """
+    if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
+        raise ComponentError(f"{where}: [[formula]] must be an array of tables "
+                             "(write [[formula]], not [formula])")
+    required, optional = FORMULA_KEYS
+    out, seen = [], set()
+    for number, entry in enumerate(entries, 1):
+        here = f"{where}: [[formula]] {entry.get('name', f'number {number}')!r}"
+        for key in entry:
+            if key not in required + optional:
+                raise ComponentError(f"{here}: unknown key {key!r}; "
+                                     f"{did_you_mean(key, required + optional)}expected "
+                                     f"{', '.join(required + optional)}")
+        missing = [k for k in required if k not in entry]
+        if missing:
+            raise ComponentError(f"{here}: lacks {', '.join(map(repr, missing))}")
+        for key in ("name", "latex", "cause"):
+            if key in entry and not (isinstance(entry[key], str) and entry[key].strip()):
+                raise ComponentError(f"{here}: {key} must be non-empty text")
+        if entry["name"] in seen:
+            raise ComponentError(f"{here}: the name is given twice")
+        seen.add(entry["name"])
+        tolerance = entry.get("tolerance", 0.0)
+        if isinstance(tolerance, bool) or not isinstance(tolerance, (int, float)) \
+                or not 0 <= tolerance < 1:
+            raise ComponentError(f"{here}: tolerance must be a number in [0, 1), "
+                                 f"got {tolerance!r}")
+        out.append(FileFormula(entry["name"], entry["latex"],
+                               _check_quantity(entry["quantity"], model, here, "quantity"),
+                               _check_symbols(entry.get("symbols", {}), model, here),
+                               float(tolerance), entry.get("cause", "")))
+    return tuple(out)

@@ -1,0 +1,262 @@
+"""What a reviewer checks of a component model: its parameters by name, and a
+few quantities derived from its equations of motion, symbolic in the parts'
+symbols.
+
+A parameter is named ``<component>.<key>`` as the component file writes it
+(``gearbox_mesh.stiffness``, ``hook.mass``, ``tackle.radius``); a quantity
+``<component>.<what>``:
+
+========================== ===========================================================
+``<body>.reduced_inertia`` the inertia of the body's rigid group referred to the body:
+                           ∂²T/∂q̇² of the group over κ_body² (kg·m² or kg)
+``<link>.static``          the link's load in the steady motion at the start (all motors
+                           on, brakes off, gaps on their flank): each rigid group's
+                           equilibrium Σ_k F_k ∂u_k/∂q = Q, solved for the link loads
+                           (and a ``steady`` motor's torque)
+``<link>.frequency``       the natural angular frequency of a model of two rigid groups
+                           joined by this link: Ω² = tr(M⁻¹K), undamped, gap closed
+``<link>.response``        the link's load F(t) in closed form after a start at rest
+                           with zero twist (:func:`crane_sym.components.closed.link_response`;
+                           a model that never switches)
+``<link>.peak``            the largest load of the link over the file's run, a number
+``<link>.factor``          its dynamic factor (peak over the reference or static load)
+========================== ===========================================================
+
+A parameter whose value is zero (a shaft without inertia, an undamped link)
+is put to zero in every symbolic quantity, as the derivation drops it.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import sympy as sp
+from sympy.physics.units import Dimension, length, time
+
+from crane_sym.components.loads import Characteristic, Gravity, Motor, Resistance
+from crane_sym.components.model import Model
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, ComponentError, Drum,
+                                        Gear)
+
+__all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
+           "static_loads"]
+
+_ONE = Dimension(1)
+#: SI unit of each kind of value, by the kind of body it acts on.
+UNITS = {"inertia": {ROTATING: "kg*m^2", TRANSLATING: "kg"},
+         "mass": {TRANSLATING: "kg"},
+         "stiffness": {ROTATING: "N*m/rad", TRANSLATING: "N/m"},
+         "damping": {ROTATING: "N*m*s/rad", TRANSLATING: "N*s/m"},
+         "load": {ROTATING: "N*m", TRANSLATING: "N"},
+         "speed": {ROTATING: "rad/s", TRANSLATING: "m/s"}}
+#: What a quantity of each name is, and the kind of component it belongs to.
+KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
+         "static": ("link", "its load in the steady motion at the start"),
+         "frequency": ("link", "the natural angular frequency of the model's elastic mode"),
+         "response": ("link", "its load F(t) in closed form after a start at rest"),
+         "peak": ("link", "its largest load over the file's run"),
+         "factor": ("link", "its dynamic factor: peak over reference or static load")}
+#: Quantities that are numbers of the file's run, not symbolic.
+NUMERIC = ("peak", "factor")
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """One parameter of the model: its symbol, value (SI), dimension and what it is."""
+
+    path: str
+    symbol: sp.Symbol
+    value: float
+    dimension: Dimension
+    unit: str
+    description: str
+
+
+def parameters(model: Model) -> dict[str, Parameter]:
+    """Every parameter of ``model`` that its equations hold, by ``<component>.<key>``.
+
+    Parameters
+    ----------
+    model : Model
+        The assembled and derived model.
+    """
+    a, eq = model.assembly, model.equations
+    symbols = {s.name: s for s in eq.values} | {s.name: s for s in eq.motor_loads}
+    out: dict[str, Parameter] = {}
+
+    def add(path: str, name: str, dimension: Dimension, unit: str, what: str) -> None:
+        s = symbols.get(name)
+        if s is not None:
+            out[path] = Parameter(path, s, float(eq.values.get(s, float("nan"))), dimension,
+                                  unit, what)
+    for body in a.bodies.values():
+        key = "inertia" if body.motion == ROTATING else "mass"
+        add(f"{body.name}.{key}", f"{'J' if key == 'inertia' else 'm'}_{body.name}",
+            DIMENSIONS[key][body.motion], UNITS[key][body.motion],
+            f"{'moment of inertia' if key == 'inertia' else 'mass'} of {body.name}")
+    for part in a.rigid:
+        if isinstance(part, Gear):
+            add(f"{part.name}.ratio", f"i_{part.name}", _ONE, "1", f"ratio of the gear {part.name}")
+        elif isinstance(part, Drum):
+            add(f"{part.name}.radius", f"r_{part.name}", length, "m", f"radius of the drum {part.name}")
+            add(f"{part.name}.reeving", f"n_{part.name}", _ONE, "1", f"reeving (rope falls) of the drum {part.name}")
+    for link in a.links:
+        motion = a.bodies[link.part.first].motion
+        for key, letter in (("stiffness", "c"), ("damping", "d")):
+            add(f"{link.part.name}.{key}", f"{letter}_{link.part.name}",
+                DIMENSIONS[key][motion], UNITS[key][motion], f"{key} of the elastic link {link.part.name}")
+    for load in a.loads:
+        part, motion = load.part, a.bodies[load.part.body].motion
+        word = "torque" if motion == ROTATING else "force"
+        if isinstance(part, Gravity):
+            add(f"{part.name}.g", f"g_{part.name}", length / time**2, "m/s^2",
+                f"acceleration of the gravity {part.name} on {part.body}")
+        elif isinstance(part, Resistance):
+            add(f"{part.name}.{word}", f"R_{part.name}", DIMENSIONS["load"][motion],
+                UNITS["load"][motion], f"{word} of the resistance {part.name} on {part.body}")
+        elif isinstance(part, Motor):
+            add(f"{part.name}.{word}", f"M_{part.name}", DIMENSIONS["load"][motion],
+                UNITS["load"][motion], f"{word} of the motor {part.name} on {part.body}"
+                + (" (steady: solved at the start)" if load.load is None else ""))
+        elif isinstance(part, Characteristic):
+            add(f"{part.name}.speed", f"v0_{part.name}", DIMENSIONS["speed"][motion],
+                UNITS["speed"][motion], f"no-load speed of the characteristic {part.name}")
+    return out
+
+
+@dataclass(frozen=True)
+class Quantity:
+    """A derived quantity: its expression (symbolic, or the run's number), its
+    dimension and how it was derived."""
+
+    path: str
+    expr: sp.Expr
+    dimension: Dimension
+    unit: str
+    how: str
+    numeric: bool = False
+
+
+def _zeros(model: Model) -> dict[sp.Symbol, int]:
+    return {s: 0 for s, v in model.equations.values.items() if v == 0}
+
+
+def _load_dimension(model: Model, link) -> tuple[Dimension, str]:
+    motion = model.assembly.bodies[link.part.first].motion
+    return DIMENSIONS["load"][motion], UNITS["load"][motion]
+
+
+def static_loads(model: Model) -> dict[str, sp.Expr]:
+    """Each link's load in the steady motion at the start, symbolic: every rigid
+    group in equilibrium, Σ_k F_k ∂u_k/∂q_g = Q_g (motors on, brakes off).
+
+    Parameters
+    ----------
+    model : Model
+        The assembled and derived model; ComponentError when its loads depend
+        on the speed, do not balance in the symbols, or its links form a loop.
+    """
+    a, eq = model.assembly, model.equations
+    if a.loads_of(Characteristic):
+        raise ComponentError(f"a static load needs loads that do not depend on the speed; "
+                             f"{a.loads_of(Characteristic)[0].part.label} does")
+    F = [sp.Symbol(f"F_{l.part.name}", real=True) for l in a.links]
+    steady = model.steady_motor
+    unknowns = F + ([steady] if steady is not None else [])
+    fixed = {on: 1 for on in eq.switches} | {B: 0 for B in eq.friction}
+    rows = [sum((Fk * sp.diff(u, q) for Fk, u in zip(F, eq.twists)), sp.Integer(0))
+            - eq.forces[q].xreplace(fixed) for q in eq.coordinates]
+    solved = sp.linsolve(rows, unknowns)
+    if not solved:
+        raise ComponentError("a static load: the constant loads do not balance in the "
+                             "symbols; give one motor the torque 'steady'")
+    (values,) = solved
+    free = set().union(*(v.free_symbols for v in values)) & set(unknowns)
+    if free:
+        raise ComponentError("a static load: the elastic links form a loop, so their "
+                             "static loads are not fixed by equilibrium alone")
+    zero = _zeros(model)
+    return {l.part.name: sp.simplify(v.xreplace(zero)) for l, v in zip(a.links, values)}
+
+
+def _link(model: Model, name: str):
+    for link in model.assembly.links:
+        if link.part.name == name:
+            return link
+    raise ComponentError(f"no elastic link {name!r}")
+
+
+def derived_quantity(model: Model, path: str, run=None) -> Quantity:
+    """The quantity named ``path`` (see the module docstring); ``run`` (a
+    :class:`~crane_sym.components.model.ComponentRun`) for the numbers of the
+    run. ComponentError, one line, for a name the model has not or a quantity
+    it cannot derive.
+
+    Parameters
+    ----------
+    model : Model
+        The assembled and derived model.
+    path : str
+        ``<component>.<quantity>``.
+    run : ComponentRun, optional
+        The file's run (needed for ``peak`` and ``factor``).
+    """
+    name, _, what = path.partition(".")
+    if what not in KINDS:
+        raise ComponentError(f"unknown quantity {path!r}; a quantity is <component>."
+                             f"{{{', '.join(KINDS)}}}")
+    a, eq = model.assembly, model.equations
+    zero = _zeros(model)
+    if KINDS[what][0] == "body":
+        if name not in a.bodies:
+            raise ComponentError(f"quantity {path!r}: no body {name!r}; bodies: "
+                                 f"{', '.join(a.bodies)}")
+        g, _, kappa = a.place[name]
+        M = eq.linear[0]
+        inertia = sp.simplify((M[g, g] / kappa**2).xreplace(zero))
+        body = a.bodies[name]
+        key = "inertia" if body.motion == ROTATING else "mass"
+        return Quantity(path, inertia, DIMENSIONS[key][body.motion], UNITS[key][body.motion],
+                        f"∂²T/∂q̇² of the rigid group of {body.label}, referred to it "
+                        "(divided by its κ²)")
+    link = _link(model, name) if name in [l.part.name for l in a.links] else None
+    if link is None:
+        raise ComponentError(f"quantity {path!r}: no elastic link {name!r}; links: "
+                             f"{', '.join(l.part.name for l in a.links) or 'none'}")
+    load = _load_dimension(model, link)
+    if what == "static":
+        return Quantity(path, static_loads(model)[name], *load,
+                        "each rigid group in equilibrium, Σ F_k ∂u_k/∂q = Q, motors on, "
+                        "brakes off, solved for the link loads")
+    if what == "frequency":
+        if len(a.groups) != 2:
+            raise ComponentError(f"quantity {path!r}: a natural frequency of a link needs "
+                                 f"a model of two rigid groups; this one has {len(a.groups)}")
+        M, _, K, _ = eq.linear
+        closed = {c: 1 for c in eq.contact} | {d: 0 for d in eq.flank}
+        square = sp.simplify((M.inv() * K).trace().xreplace(closed).xreplace(zero))
+        return Quantity(path, sp.sqrt(square), 1 / time, "rad/s",
+                        "Ω² = tr(M⁻¹K) of Lagrange's equations, the gap closed (one "
+                        "rigid-body mode at 0)")
+    if what == "response":
+        from crane_sym.components.closed import link_response
+        try:
+            force_t = link_response(model).force
+        except ComponentError as exc:
+            raise ComponentError(f"quantity {path!r}: {exc}") from None
+        return Quantity(path, sp.simplify(force_t.xreplace(zero)), *load,
+                        "the link's relative equation (Komarov's elimination) solved from "
+                        "rest at zero twist, F = c u + d u̇")
+    if run is None:
+        raise ComponentError(f"quantity {path!r} needs the file's run")
+    peak = next(p for p in run.peaks if p.link == name)
+    if what == "peak":
+        return Quantity(path, sp.Float(peak.value, 17), *load,
+                        f"the largest load of the link over the run, at t = {peak.time:.6g} s",
+                        numeric=True)
+    if peak.factor is None:
+        raise ComponentError(f"quantity {path!r}: the link has no reference load (its "
+                             "load at the start is 0); give it reference = ...")
+    return Quantity(path, sp.Float(peak.factor, 17), _ONE, "1",
+                    f"the peak {peak.value:.6g} {peak.unit} over {peak.reference:.6g} "
+                    f"{peak.unit}", numeric=True)
+

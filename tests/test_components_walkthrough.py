@@ -1,0 +1,125 @@
+"""`crane-sym walkthrough FILE`: the derivation of a component model as a
+handout. Its equations are the model's (the LaTeX of every Lagrange equation,
+T, Π, Φ, each generalised force), its phase table is the run's (event times
+to 9 digits), its peaks the run's; every formula typesets; -o in a missing
+folder and a bad file are one line, exit 2, nothing written."""
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from crane_sym.cli.main import main
+from crane_sym.components.reading import read_component_file
+from crane_sym.docs.drive_train import drive_train_walkthrough
+from crane_sym.docs.numbers import math_errors
+from crane_sym.docs.page import math_pieces
+from crane_sym.latex import latex
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"
+FILES = [EXAMPLES / "hoist_fig9.toml", EXAMPLES / "hoist_rope_stretch.toml"]
+
+
+@pytest.fixture(scope="module", params=FILES, ids=lambda p: p.stem)
+def handout(request):
+    path = request.param
+    read = read_component_file(path)
+    run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
+    return read, run, drive_train_walkthrough(path)
+
+
+def test_the_equations_are_the_models(handout):
+    read, _, text = handout
+    eq = read.model.equations
+    for line in eq.latex():
+        assert f"$$\n{line}\n$$" in text
+    names = eq.latex_names
+    assert f"T = {latex(eq.T, symbol_names=names)}" in text
+    assert f"\\Pi = {latex(eq.V, symbol_names=names)}" in text
+    assert f"\\Phi = {latex(eq.dissipation, symbol_names=names)}" in text
+    for q in eq.coordinates:
+        assert (f"Q_{{{latex(q, symbol_names=names)}}} = "
+                f"{latex(eq.forces[q], symbol_names=names)}") in text
+    assert "c_{\\mathrm{gearbox\\_mesh}}" in text
+
+
+def test_the_phases_are_the_runs(handout):
+    _, run, text = handout
+    table = text.split("## The run")[1].split("## Results")[0]
+    rows = re.findall(r"^\| (\d+) \| ([\d.e+-]+) s \| ([\d.e+-]+) s \| (\d+) \| (.+?) \|$",
+                      table, flags=re.M)
+    assert len(rows) == len(run.result.segments)
+    for (k, t0, t1, _, event), seg in zip(rows, run.result.segments):
+        assert float(t0) == pytest.approx(seg.t0, rel=1e-8, abs=1e-12)
+        assert float(t1) == pytest.approx(seg.t1, rel=1e-8, abs=1e-12)
+        assert event == (seg.event if seg.event != "end" else "end of the run")
+    modes = {seg.mode for seg in run.result.segments}
+    assert len(re.findall(r"^\*\*Mode \d+:\*\*", text, flags=re.M)) == len(modes)
+
+
+def test_the_peaks_are_the_runs(handout):
+    _, run, text = handout
+    results = text.split("## Results")[1]
+    for p in run.peaks:
+        row = next(line for line in results.splitlines() if line.startswith(f"| {p.link} |"))
+        peak, at = re.findall(r"([-\d.e+]+) (?:N\*m|N|s)", row)[:2]
+        assert float(peak) == pytest.approx(p.value, rel=1e-5)
+        assert float(at) == pytest.approx(p.time, rel=1e-5)
+        assert f"{p.factor:.4g}"[:4] in row
+
+
+def test_every_formula_typesets(handout):
+    _, _, text = handout
+    pieces = math_pieces(text)
+    assert len(pieces) > 40
+    assert [(tex[:60], errs) for tex, _ in pieces if (errs := math_errors(tex))] == []
+
+
+def test_the_files_formulas_with_their_verdicts(handout):
+    read, _, text = handout
+    if not read.formulas:
+        assert "## The file's formulas" not in text
+        return
+    part = text.split("## The file's formulas")[1]
+    assert "Verdict: **confirmed** (decided by symbolic)" in part
+    assert "Verdict: **discrepancy** (decided by numeric)" in part
+    assert "Verdict: **not_checkable** (no check could decide)" in part
+
+
+def test_cli_writes_markdown_and_html(tmp_path, capsys):
+    md, page = tmp_path / "fig9.md", tmp_path / "fig9.html"
+    assert main(["walkthrough", str(FILES[0]), "-o", str(md), "--quiet"]) == 0
+    assert md.read_text(encoding="utf-8").startswith("# Table 1 hoist")
+    assert main(["walkthrough", str(FILES[0]), "--format", "html", "-o", str(page),
+                 "--quiet"]) == 0
+    html = page.read_text(encoding="utf-8")
+    assert html.count("<math") > 40 and 'src="data:image/png;base64,' in html
+    assert "$$" not in html
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["fig9.html", "fig9.md"]
+
+
+@pytest.mark.parametrize("args, message", [
+    (["-o", "{tmp}/missing/x.md"], "the folder"),
+    (["--format", "ipynb", "-o", "{tmp}/x.ipynb"], "Markdown or html"),
+])
+def test_cli_errors_are_one_line_and_write_nothing(args, message, tmp_path, capsys):
+    args = [a.replace("{tmp}", str(tmp_path)) for a in args]
+    assert main(["walkthrough", str(FILES[0]), *args, "--quiet"]) == 2
+    out = capsys.readouterr()
+    assert out.out == "" and len(out.err.strip().splitlines()) == 1 and message in out.err
+    assert list(tmp_path.rglob("*")) == []
+
+
+def test_a_bad_file_is_one_line_and_writes_nothing(tmp_path, capsys):
+    bad = tmp_path / "bad.toml"
+    bad.write_text(FILES[0].read_text(encoding="utf-8").replace('name = "gearbox_mesh"\n',
+                                                                 'name = "gearbox_mesh"\nstiff = 1\n'),
+                   encoding="utf-8")
+    out = tmp_path / "out.md"
+    assert main(["walkthrough", str(bad), "-o", str(out), "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert len(err.strip().splitlines()) == 1 and "unknown key 'stiff'" in err
+    assert main(["walkthrough", str(tmp_path / "none.toml"), "-o", str(out), "--quiet"]) == 2
+    assert "no component file" in capsys.readouterr().err
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
