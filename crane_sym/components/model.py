@@ -36,6 +36,7 @@ import numpy as np
 
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
+from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
                                         value)
@@ -159,7 +160,9 @@ class Model:
         Steady (the default): every group moves at the speed ``body``'s
         ``speed`` implies (no link twisting), every link rests at the twist that
         balances the loads with all motors on, on the flank its load pushes it
-        to; a ``steady`` motor's torque is solved with the twists. ``rest``:
+        to; a ``steady`` motor's torque is solved with the twists; every motor
+        law at its value just before t = 0 (0; an acceleration law's a = 0: its
+        motor then holds the drive against the other loads). ``rest``:
         everything at rest at zero twist, every gap open (a link with backlash
         at the end of its gap where its twist is zero), whatever the loads.
         """
@@ -208,7 +211,8 @@ class Model:
         extra = {steady: torque} if steady is not None else {}
         mode = Mode(contacts, tuple(FREE for _ in range(n)),
                     tuple(False for _ in probe.brakes), driven,
-                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
+                    tuple(0 for _ in probe.laws))
         return mode, x, extra
 
     def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
@@ -218,14 +222,15 @@ class Model:
         probe = ComponentSystem(self.equations)
         mode = Mode(tuple(0 for _ in probe.backlash), tuple(FREE for _ in self.assembly.groups),
                     tuple(False for _ in probe.brakes), tuple(True for _ in probe.motors),
-                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
+                    tuple(0 for _ in probe.laws))
         return mode, np.zeros(probe.size), {}
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
         """Positions (the first group's at 0) and the steady motor's torque that
         make K q = f − D q̇; ComponentError if no motor torque balances the loads."""
-        _, D, K, f0, _ = probe._linear(contacts, driven)
+        _, D, K, f0 = probe._linear(contacts, driven)[:4]
         f = f0 - D @ rates
         columns = [K[:, 1:]]
         if unit is not None:
@@ -247,7 +252,7 @@ class Model:
 
     def schedule(self) -> tuple[tuple[float, str], ...]:
         """The events known in advance: brakes engaging and their ramps ending,
-        motors switched off."""
+        motors switched off, characteristics' steps and motor laws' pieces."""
         out = []
         for load in self.assembly.loads:
             part = load.part
@@ -259,6 +264,8 @@ class Model:
                 out.append((part.off_at, f"{part.name} off"))
             elif isinstance(part, Characteristic):
                 out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
+        out += LawClock([l.part for l in self.assembly.loads if isinstance(l.part, MotorLaw)],
+                        0).schedule()
         return tuple(sorted(out))
 
     def run(self, duration: Given, start_body: str | None = None,

@@ -23,6 +23,8 @@ from typing import Sequence
 
 import sympy as sp
 
+from crane_sym import units
+from crane_sym.components.laws import MotorLaw
 from crane_sym.components.loads import ACTING, Characteristic, Gravity, Motor
 from crane_sym.components.parts import (DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body, Component,
                                         ComponentError, Drum, ElasticLink, Gear)
@@ -131,6 +133,11 @@ def assemble(components: Sequence[Component]) -> Assembly:
     steady = [l.part.label for l in loads if isinstance(l.part, Motor) and l.load is None]
     if len(steady) > 1:
         raise ComponentError(f"{steady[1]}: only one motor may be 'steady' ({steady[0]} is)")
+    balancing = steady + [l.part.label for l in loads
+                          if isinstance(l.part, MotorLaw) and l.part.law == "acceleration"]
+    if len(balancing) > 1:
+        raise ComponentError(f"{balancing[1]}: only one motor may balance the others "
+                             f"({balancing[0]} does: a 'steady' torque or an acceleration law)")
     return Assembly(bodies, groups, place, links, loads, tuple(rigid))
 
 
@@ -259,6 +266,14 @@ def _load(part: Component, bodies: dict[str, Body]) -> Load:
                                  "acts on a mass")
         return Load(part, body.inertia * part.g * (1.0 if part.direction == "+" else -1.0))
     if isinstance(part, Motor) and part.load is None:
+        return Load(part, None)
+    if isinstance(part, MotorLaw):
+        what = ("load" if part.law == "torque" else part.law)
+        expected = DIMENSIONS[what][body.motion]
+        if not units.same_dimension(part.dimension, expected):
+            raise ComponentError(f"{part.label} on {body.label}: its unit {part.unit!r} is "
+                                 f"{units.format_dimension(part.dimension)}, expected "
+                                 f"{units.describe_dimension(expected)}")
         return Load(part, None)
     if isinstance(part, Characteristic):
         where = f"{part.label} on {body.label}"
