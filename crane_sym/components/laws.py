@@ -84,9 +84,6 @@ class MotorLaw(Component):
             b, rows = read_law_table(table, "unit", dimension, unit, LIMITS)
         except (ValueError, TypeError) as exc:
             raise ComponentError(f"{owner}: {exc}") from None
-        if b[0] < 0:
-            raise ComponentError(f"{owner}: breakpoints[0] = {float(b[0]):g} s is before the "
-                                 "start of the run")
         for key, v in (("name", name), ("body", body), ("law", law), ("breakpoints", b),
                        ("coefficients", rows), ("dimension", dimension), ("unit", unit)):
             object.__setattr__(self, key, v)

@@ -59,6 +59,15 @@
     body = "trolley"
     force = "-1.2 kN"           # `torque` on a rotating body
 
+    [[motor_law]]               # a law in time, piecewise polynomial (paper 002)
+    name = "hoist"
+    body = "drive"
+    law = "acceleration"        # a(t) of the rigid drive; or "torque" (a force on a mass)
+    unit = "m/s^2"              # of the values; c_kj in unit / time_unit^j
+    time_unit = "s"             # optional
+    breakpoints = [0.0, 0.25, 1.0, 1.25]
+    coefficients = [[0.0, 2.0], [0.5], [0.5, -2.0]]   # numbers only, never text
+
     [[characteristic]]          # a motor's β (v0 − v), stepped at the hold times
     name = "motors"
     body = "left"
@@ -85,6 +94,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from crane_sym.components.laws import MotorLaw
 from crane_sym.components.model import Model
 from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
@@ -103,13 +113,18 @@ TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "brake": (("name", "body"), ("torque", "force", "delay", "build_up", "time")),
     "motor": (("name", "body"), ("torque", "force", "off_at")),
     "characteristic": (("name", "body", "speed", "slopes"), ("holds",)),
+    "motor_law": (("name", "body", "law", "unit", "breakpoints", "coefficients"),
+                  ("time_unit",)),
     "gravity": (("name", "body"), ("g", "direction")),
     "resistance": (("name", "body"), ("torque", "force")),
 }
 #: Keys that may be bare numbers (dimensionless).
 NUMBERS = ("ratio", "reeving")
 #: Keys that are names or choices, not quantities.
-WORDS = ("name", "input", "output", "drum", "load", "body", "contact", "build_up", "direction")
+WORDS = ("name", "input", "output", "drum", "load", "body", "contact", "build_up", "direction",
+         "law", "unit", "time_unit")
+#: Keys whose numbers the law reader checks (numbers only, never text).
+LAW_NUMBERS = ("breakpoints", "coefficients")
 MODEL_KEYS, RUN_KEYS = ("name", "title"), ("duration", "start", "body", "speed")
 #: Keys that are lists of quantities.
 LISTS = ("slopes", "holds")
@@ -157,6 +172,8 @@ def _given(entry: dict, key: str, where: str) -> Any:
     """A value of an entry: text (a word or a quantity), a bare number only
     where it is dimensionless."""
     v = entry[key]
+    if key in LAW_NUMBERS:
+        return v
     if key in LISTS:
         if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
             raise ComponentError(f"{where}: {key} must be a list of values with their units "
@@ -209,6 +226,9 @@ def _build(kind: str, entry: dict, where: str):
         return Motor(g["name"], g["body"], g[_load_key(entry, where)], g.get("off_at"))
     if kind == "characteristic":
         return Characteristic(g["name"], g["body"], g["speed"], g["slopes"], g.get("holds", []))
+    if kind == "motor_law":
+        return MotorLaw(g["name"], g["body"], g["breakpoints"], g["coefficients"], g["unit"],
+                        g["law"], g.get("time_unit", "s"))
     if kind == "gravity":
         return Gravity(g["name"], g["body"], g.get("g", "9.81 m/s^2"), g.get("direction", "+"))
     return Resistance(g["name"], g["body"], g[_load_key(entry, where)])
