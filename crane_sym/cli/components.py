@@ -37,6 +37,7 @@ def model_text(path: str) -> str:
     lines = [f"model {model.name}" + (f": {model.title}" if model.title else ""), "",
              "components:"]
     lines += [f"  {p.label}" for p in model.components]
+    lines += [f"  {d.line()}" for d in model.dropped]
     lines += ["", "rigid groups (one coordinate each; body = kappa * coordinate):"]
     for g, q in zip(a.groups, eq.coordinates):
         members = ", ".join(f"{b.name} = {sp.sstr(k)}" for (b, _), k in zip(g.members, g.factors))

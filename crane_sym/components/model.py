@@ -40,6 +40,7 @@ from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
                                         value)
+from crane_sym.components.pruning import Dropped, Scope, needed
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, stationary_times
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
@@ -138,11 +139,32 @@ class Model:
     and derived (:func:`~crane_sym.components.equations.derive`)."""
 
     def __init__(self, components: Sequence[Component], name: str = "model",
-                 title: str = "") -> None:
+                 title: str = "", scope: Scope | None = None) -> None:
         self.components = tuple(components)
         self.name, self.title = name, title
+        self.scope = scope
         self.assembly: Assembly = assemble(self.components)
         self.equations: Equations = derive(self.assembly)
+
+    @classmethod
+    def for_run(cls, components: Sequence[Component], duration: Given, rest: bool = False,
+                name: str = "model", title: str = "") -> "Model":
+        """The model of only what a run of ``duration`` (from rest when
+        ``rest``) needs: the components that cannot act over it dropped before
+        the derivation (:func:`~crane_sym.components.pruning.needed`), named in
+        ``scope.dropped``; a longer run, or a steady start where one at rest was
+        assumed, is refused."""
+        from sympy.physics.units import time
+        t_end = value("run", "duration", duration, time).si
+        if not t_end > 0:
+            raise ComponentError(f"run: duration must be > 0, got {duration!r}")
+        kept, scope = needed(components, t_end, rest)
+        return cls(kept, name, title, scope)
+
+    @property
+    def dropped(self) -> tuple[Dropped, ...]:
+        """The components left out for the run the model was built for."""
+        return () if self.scope is None else self.scope.dropped
 
     @property
     def steady_motor(self):
@@ -278,6 +300,13 @@ class Model:
         t_end = value("run", "duration", duration, time).si
         if not t_end > 0:
             raise ComponentError(f"run: duration must be > 0, got {duration!r}")
+        scope = self.scope
+        if scope is not None and scope.dropped and (t_end > scope.duration or
+                                                    (scope.rest and not rest)):
+            raise ComponentError(
+                f"run: the model was built for a run of {scope.duration:g} s"
+                f"{' from rest' if scope.rest else ''} without {scope.dropped[0].part.label}"
+                f" ({scope.dropped[0].reason}); build it for this run (Model.for_run)")
         mode, x0, extra = self.start(start_body, start_speed, rest)
         system = ComponentSystem(self.equations, extra)
         schedule = self.schedule()

@@ -84,7 +84,9 @@
 Every value with a dimension is text with its unit, read by
 :mod:`crane_sym.units` (parsed, never evaluated); ratios and reevings may be
 bare numbers. An unknown table or key is an error naming the closest known
-one, as in scenes; every error is one line.
+one, as in scenes; every error is one line. The model is built for the file's
+run: components that cannot act over it are dropped before the derivation
+(:mod:`crane_sym.components.pruning`), and the model names them.
 """
 from __future__ import annotations
 
@@ -293,7 +295,8 @@ def read_component_file(path: str | Path) -> ComponentFile:
             raise ComponentError(f"{where_file}: [run] {key} needs a value with its unit as "
                                  f"text, got {settings[key]!r}")
     try:
-        model = Model(parts, name, str(head.get("title", "")))
+        model = Model.for_run(parts, settings["duration"], start == "rest", name,
+                              str(head.get("title", "")))
     except ComponentError as exc:
         raise ComponentError(f"{where_file}: {exc}") from None
     return ComponentFile(model, settings["duration"], settings.get("body"),
