@@ -77,3 +77,44 @@ def test_bad_laws_are_refused_in_one_line(build, message):
     with pytest.raises(ComponentError, match=message) as err:
         build()
     assert "\n" not in str(err.value)
+
+
+def test_acceleration_law_drives_the_referred_momentum_of_a_geared_hoist():
+    """Table 1's hoist (coupling, gear, drum, hook) under an acceleration law on
+    the motor: Σ ρ_g M_g q̇_g, the momentum referred to the motor (ρ: the rigid
+    ratio of each group to it), grows by J_red ∫ a dt exactly, whatever the
+    coupling does (ρᵀK = ρᵀD = 0: the links' forces cancel in it)."""
+    from crane_sym.components import Drum, Gear
+    rows = [[0.0, 40.0], [20.0], [20.0, -40.0]]          # rad/s^2 of the motor
+    law = MotorLaw("start", "motor", [0.0, 0.5, 1.5, 2.0], rows, "1/s^2", law="acceleration")
+    model = Model([Inertia("motor", "20 kg*m^2"), Inertia("shaft", 0),
+                   Inertia("drum", "500 kg*m^2"), Mass("hook", "62 t"),
+                   Gear("gearbox", "shaft", "drum", 26.2), Drum("rope", "drum", "hook", "0.5 m", 4),
+                   ElasticLink("coupling", "motor", "shaft", "4e4 N*m/rad", "30 N*m*s/rad"),
+                   Gravity("weight", "hook", direction="-"), law])
+    run = model.run("2.5 s", "motor", 0.0)
+    groups = model.assembly.groups
+    J_red = sum(g.inertia for g in groups)                # both groups turn with the motor
+    times = np.linspace(0.0, 2.5, 251)
+    state = run.result.state(times)
+    momentum = sum(g.inertia * state[:, 2 * k + 1] for k, g in enumerate(groups))
+    speed = np.array([sum(c * ((min(t, e) - b) ** (j + 1)) / (j + 1)
+                          for b, e, row in zip([0.0, 0.5, 1.5], [0.5, 1.5, 2.0], rows)
+                          if t > b for j, c in enumerate(row)) for t in times])
+    assert np.max(np.abs(momentum - J_red * speed)) <= 1e-11 * J_red * speed.max()
+    # not a rigid drive: the motor itself strays from the law while the coupling rings
+    assert np.max(np.abs(state[:, 1] - speed)) > 1e-6 * speed.max()
+
+
+def test_a_motor_law_in_a_file_refuses_text_for_numbers(tmp_path):
+    from crane_sym.components.reading import read_component_file
+    file = tmp_path / "law.toml"
+    file.write_text('[model]\nname = "law"\n[[mass]]\nname = "a"\nmass = "1 kg"\n'
+                    '[[mass]]\nname = "b"\nmass = "1 kg"\n'
+                    '[[elastic]]\nname = "k"\nbetween = ["a", "b"]\nstiffness = "1 N/m"\n'
+                    '[[motor_law]]\nname = "m"\nbody = "a"\nlaw = "torque"\nunit = "N"\n'
+                    'breakpoints = [0.0, 1.0]\ncoefficients = [["1 + 1"]]\n'
+                    '[run]\nduration = "1 s"\nstart = "rest"\n')
+    with pytest.raises(ComponentError, match=r"\[\[motor_law\]\] 'm': motor law 'm': ") as err:
+        read_component_file(file)
+    assert "\n" not in str(err.value)
