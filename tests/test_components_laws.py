@@ -115,6 +115,7 @@ def test_a_motor_law_in_a_file_refuses_text_for_numbers(tmp_path):
                     '[[motor_law]]\nname = "m"\nbody = "a"\nlaw = "torque"\nunit = "N"\n'
                     'breakpoints = [0.0, 1.0]\ncoefficients = [["1 + 1"]]\n'
                     '[run]\nduration = "1 s"\nstart = "rest"\n')
-    with pytest.raises(ComponentError, match=r"\[\[motor_law\]\] 'm': motor law 'm': ") as err:
+    with pytest.raises(ComponentError, match=r"motor law 'm': coefficients\[0\]\[0\] must be a "
+                                             r"number .* text is never evaluated") as err:
         read_component_file(file)
     assert "\n" not in str(err.value)
