@@ -18,6 +18,7 @@ from crane_sym import registry
 from crane_sym.components import Model, MotorLaw
 from crane_sym.components.compare import compare_equations
 from crane_sym.components.reading import read_component_file
+from crane_sym.mechanics.exact_phases import exact_table
 
 from test_components_laws import (BREAKS, EXAMPLES, G, M1, M2, ROWS, generated, hoist,
                                   rope_force)
@@ -50,12 +51,15 @@ def test_equations_are_paper_002s_lagrange_equations_with_the_drive_force_of_31(
 def test_from_weight_rope_force_equals_the_scenes_generated_function():
     """The example file (the scene hoist_user_drive_law as components): the rope
     force of the run, phase by phase, against the scene's generated rope_force
-    (24), to 1e-9 of its largest value; the dynamic factor against (27)."""
+    (24), to 1e-9 of its largest value (and of the run's mpmath tables, which
+    its module prints); the dynamic factor against (27)."""
     read = read_component_file(EXAMPLES / "hoist_drive_law.toml")
     run = read.model.run(read.duration, read.body, read.speed)
     times = np.linspace(0.0, 2.5, 2501)
     theirs = generated("scene_hoist_user_drive_law").rope_force(times)
     assert np.max(np.abs(rope_force(run, times) - theirs)) <= 1e-9 * np.max(np.abs(theirs))
+    exact = exact_table(run.hybrid_run("rope"))(times)     # the module `crane-sym run` writes
+    assert np.max(np.abs(exact - theirs)) <= 1e-9 * np.max(np.abs(theirs))
     k = generated("scene_hoist_user_drive_law").dynamic_coefficient(times)
     assert run.peaks[0].factor == pytest.approx(np.max(k), rel=1e-6)     # sampled maximum
     assert [e for _, e in run.events] == ["hoist next piece"] * 3
@@ -150,7 +154,6 @@ def test_drum_drive_run_solves_004s_equations():
     the tight branch's force of the run's generated tables (phases replayed in
     mpmath) to 1e-9 of their peaks, of the run in double precision to 2e-9."""
     from scipy.integrate import solve_ivp
-    from crane_sym.mechanics.exact_phases import exact_table
     paper, reference = drum_drive_reference()
     p = paper
     coords = (p.phi1, p.phi2, p.phi3, p.z)

@@ -45,7 +45,8 @@ def test_pruned_model_gives_the_full_models_link_loads(file, size, tmp_path):
     pruned = read.model
     assert [d.part.name for d in pruned.dropped] == ["service_brakes"]
     assert "service_brakes" not in {p.name for p in pruned.components}
-    full = Model(read_order(pruned))
+    assert {p.name for p in read.parts} == {p.name for p in read_order(pruned)}
+    full = Model(read.parts)
     a = pruned.run(read.duration, read.body, read.speed)
     b = full.run(read.duration, read.body, read.speed)
     assert b.system.size - a.system.size == size

@@ -135,7 +135,9 @@ _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
 
 @dataclass(frozen=True)
 class ComponentFile:
-    """A read component file: the model, its run's settings, where it came from."""
+    """A read component file: the model (of what its run needs), its run's
+    settings, where it came from, and every component as written (``parts``: a
+    sweep that changes a value builds its model again from these)."""
 
     model: Model
     duration: str
@@ -143,6 +145,7 @@ class ComponentFile:
     speed: Any
     path: Path
     rest: bool = False
+    parts: tuple = ()
 
 
 def is_component_file(path: str | Path) -> bool:
@@ -300,4 +303,4 @@ def read_component_file(path: str | Path) -> ComponentFile:
     except ComponentError as exc:
         raise ComponentError(f"{where_file}: {exc}") from None
     return ComponentFile(model, settings["duration"], settings.get("body"),
-                         settings.get("speed", 0.0), p, start == "rest")
+                         settings.get("speed", 0.0), p, start == "rest", tuple(parts))
