@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from crane_sym.components import (ComponentError, ElasticLink, Gravity, Inertia, Mass, Model,
+from crane_sym.components import (Brake, ComponentError, ElasticLink, Gravity, Inertia, Mass, Model,
                                   Motor, MotorLaw)
 from crane_sym.mechanics.phase_table import values
 
@@ -61,8 +61,8 @@ def test_torque_law_of_degree_five_against_solve_ivp():
 
 
 @pytest.mark.parametrize("build, message", [
-    (lambda: MotorLaw("m", "drive", [0, 1], [[1, 2]], "m/s^2", law="speed"),
-     "motor law 'm': law must be one of torque, acceleration"),
+    (lambda: MotorLaw("m", "drive", [0, 1], [[1, 2]], "m/s^3", law="jerk"),
+     "motor law 'm': law must be one of torque, acceleration, speed, got 'jerk'"),
     (lambda: MotorLaw("m", "drive", [0, 1], [["2"]], "N"), "motor law 'm': "),
     (lambda: MotorLaw("m", "drive", [0, 1, 2], [[1]], "N"), "needs 2 rows"),
     (lambda: MotorLaw("m", "drive", [0, 1], [[1]], "furlongs"), "motor law 'm': unknown unit 'furlongs'"),
@@ -119,3 +119,36 @@ def test_a_motor_law_in_a_file_refuses_text_for_numbers(tmp_path):
                                              r"number .* text is never evaluated") as err:
         read_component_file(file)
     assert "\n" not in str(err.value)
+
+
+def test_speed_law_moves_its_body_exactly_and_the_rest_follows():
+    """An ideal speed control: the motor follows v(t) (a cubic start to 100 rad/s,
+    then held), the load on its elastic shaft follows by its own equation; the
+    shaft's torque against DOP853 at rtol 1e-12, the motor's speed the law's."""
+    from scipy.integrate import solve_ivp
+    rows = [[0.0, 0.0, 300.0, -200.0], [100.0]]               # v = 300 t^2 - 200 t^3
+    law = MotorLaw("control", "motor", [0.0, 1.0, 3.0], rows, "rad/s", law="speed")
+    model = Model([Inertia("motor", 2.0), Inertia("load", 5.0),
+                   ElasticLink("shaft", "motor", "load", "2e4 N*m/rad", "30 N*m*s/rad"), law,
+                   Motor("resisting", "load", "-50 N*m")])
+    run = model.run(2.0, rest=True)
+    times = np.linspace(0.0, 2.0, 401)
+    state = run.result.state(times)
+    assert np.max(np.abs(state[:, 1] - [law.value_at(t) for t in times])) <= 1e-10 * 100
+
+    def motor_angle(t):
+        return 100.0 * t ** 3 - 50.0 * t ** 4 if t < 1 else 50.0 + 100.0 * (t - 1)
+
+    def rhs(t, y):
+        torque = 2e4 * (y[0] - motor_angle(t)) + 30 * (y[1] - law.value_at(t))
+        return [y[1], (-50.0 - torque) / 5.0]
+    sol = solve_ivp(rhs, (0.0, 2.0), [0.0, 0.0], method="DOP853", rtol=1e-12, atol=1e-14,
+                    t_eval=times, max_step=1e-3)
+    theirs = (2e4 * (sol.y[0] - [motor_angle(t) for t in times])
+              + 30 * (sol.y[1] - [law.value_at(t) for t in times]))
+    assert np.max(np.abs(rope_force(run, times) - theirs)) <= 1e-7 * np.max(np.abs(theirs))
+    with pytest.raises(ComponentError, match="its speed at t = 0 is 0, the steady start's 10"):
+        model.run(2.0, "motor", "10 rad/s")
+    with pytest.raises(ComponentError, match="brake 'b' acts on a body whose speed motor law "
+                                             "'control' sets"):
+        Model([*model.components, Brake("b", "motor", "1 kN*m")])

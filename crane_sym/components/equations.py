@@ -67,7 +67,8 @@ class Equations:
     friction : the signed friction B of each brake
     slopes : the slope β of each characteristic (its step is the mode's)
     signals : the value of each motor law at time t (L_name for a torque law, a_name
-        for an acceleration law): what the laws' clock states give
+        for an acceleration law): what the laws' clock states give; T_name, the
+        torque a speed law takes, which its group's prescribed motion replaces
     values : every parameter symbol's SI value (a steady motor's torque once solved: not here)
     """
 
@@ -203,7 +204,8 @@ def derive(assembly: Assembly) -> Equations:
             slopes.append(beta)
             F = beta * (v0 - kappa * q.diff(t))
         elif isinstance(part, MotorLaw):
-            signals.append(_r(f"{'L' if part.law == 'torque' else 'a'}_{part.name}"))
+            letter = {"torque": "L", "acceleration": "a", "speed": "T"}[part.law]
+            signals.append(_r(f"{letter}_{part.name}"))
             if part.law == "acceleration":
                 balancing = (part, signals[-1])
                 continue

@@ -74,6 +74,8 @@ class ComponentSystem:
         self.laws = [l for l in a.loads if isinstance(l.part, MotorLaw)]
         self.clock = LawClock([l.part for l in self.laws], 2 * self.n + len(built))
         self.size = 2 * self.n + len(built) + self.clock.size
+        self.moved = {k: a.place[l.part.body][:2] for k, l in enumerate(self.laws)
+                      if l.part.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
         self.events: dict[str, tuple[str, int]] = {}
@@ -191,6 +193,9 @@ class ComponentSystem:
                 w, k = self.capacity(mode, g)
                 A[row] -= sign * w / M[g]
                 b[row] -= sign * k / M[g]
+        for k, (g, kappa) in self.moved.items():          # the speed law's motion
+            w, c = self.clock.derivative(mode.pieces, k, self.size)
+            A[self.v(g)], b[self.v(g)] = w / kappa, c / kappa
         for i, col in self.beta.items():
             part = self.brakes[i].part
             if not mode.engaged[i]:
@@ -244,6 +249,9 @@ class ComponentSystem:
             pieces = list(mode.pieces)
             pieces[i] += 1
             self.clock.reset(x, i)
+            if i in self.moved:
+                g, kappa = self.moved[i]
+                x[self.v(g)] = self.clock.rows(pieces)[i][0] / kappa
             return replace(mode, pieces=tuple(pieces)), x
         if kind == "off":
             driven = list(mode.driven)

@@ -21,7 +21,11 @@ It is either
   with pick-up its (28) as printed, the drive pulling the full weight from
   t = 0 while the ground still carries part of it (the ground's reaction a
   torque law on the load; a drive that anticipates it gets the same law, as a
-  torque law, on its own body).
+  torque law, on its own body);
+- ``"speed"``: the body's speed v(t), followed exactly (an ideal speed
+  control: the motor gives whatever torque that takes), its group's equation
+  of motion replaced by :math:`\\dot v = p'(t)`, its speed set to the next
+  piece's value at each breakpoint.
 
 Polynomial forcing stays exact in the phase-by-phase closed forms: a law of
 degree K adds the states :math:`w_j = \\tau^j`, j = 1…K, of the time
@@ -47,7 +51,7 @@ from crane_sym.scenes.law_tables import LawLimits, piecewise_law, read_law_table
 __all__ = ["KINDS", "LIMITS", "LawClock", "MotorLaw"]
 
 #: What a law gives.
-KINDS = ("torque", "acceleration")
+KINDS = ("torque", "acceleration", "speed")
 #: The largest law a component takes: its pieces and degree set the size of the
 #: state (one state per degree) and the number of scheduled events.
 LIMITS = LawLimits(pieces=50, degree=6, end=1e4, shortest=1e-6, value=1e12, unit="SI")
@@ -136,6 +140,14 @@ class LawClock:
             for j, coef in enumerate(row[1:], 1):
                 W[k, self.offsets[k] + j - 1] = coef
         return W, c
+
+    def derivative(self, steps: Sequence[int], k: int, size: int) -> tuple[np.ndarray, float]:
+        """(w, c): the rate of law k on its current piece, dp/dτ = w·x + c
+        (:math:`c_{k1} + \\sum_{j \\ge 2} j c_{kj} w_{j-1}`)."""
+        row, w = self.rows(steps)[k], np.zeros(size)
+        for j in range(2, len(row)):
+            w[self.offsets[k] + j - 2] = j * row[j]
+        return w, (row[1] if len(row) > 1 else 0.0)
 
     def fill(self, A: np.ndarray, b: np.ndarray, steps: Sequence[int]) -> None:
         """The clocks' rows of x' = A x + b: w_1' = 1, w_j' = j w_{j-1}, while

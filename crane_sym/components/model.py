@@ -231,6 +231,13 @@ class Model:
             raise ComponentError("no steady state at the start: the links with backlash "
                                  "cannot all rest on a flank")
         extra = {steady: torque} if steady is not None else {}
+        for k, (g, kappa) in probe.moved.items():
+            law = probe.laws[k].part
+            if abs(law.value_at(0.0) - rates[g] * kappa) > 1e-9 * max(abs(law.value_at(0.0)),
+                                                                      abs(rates[g] * kappa)):
+                raise ComponentError(f"{law.label}: its speed at t = 0 is "
+                                     f"{law.value_at(0.0):.6g}, the steady start's "
+                                     f"{rates[g] * kappa:.6g}")
         mode = Mode(contacts, tuple(FREE for _ in range(n)),
                     tuple(False for _ in probe.brakes), driven,
                     tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
@@ -246,18 +253,24 @@ class Model:
                     tuple(False for _ in probe.brakes), tuple(True for _ in probe.motors),
                     tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
                     tuple(0 for _ in probe.laws))
-        return mode, np.zeros(probe.size), {}
+        x = np.zeros(probe.size)
+        for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
+            x[probe.v(g)] = probe.laws[k].part.value_at(0.0) / kappa
+        return mode, x, {}
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
         """Positions (the first group's at 0) and the steady motor's torque that
-        make K q = f − D q̇; ComponentError if no motor torque balances the loads."""
+        make K q = f − D q̇ (but on a group a speed law moves: its motor gives what
+        the balance takes); ComponentError if no motor torque balances the loads."""
         _, D, K, f0 = probe._linear(contacts, driven)[:4]
         f = f0 - D @ rates
         columns = [K[:, 1:]]
         if unit is not None:
             columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
         matrix = np.hstack(columns)
+        free = [g for g in range(len(f)) if g not in {g for g, _ in probe.moved.values()}]
+        matrix, f = matrix[free], f[free]
         if matrix.shape[1]:
             z = np.linalg.lstsq(matrix, f, rcond=None)[0]
         else:

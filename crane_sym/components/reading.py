@@ -62,7 +62,8 @@
     [[motor_law]]               # a law in time, piecewise polynomial (paper 002)
     name = "hoist"
     body = "drive"
-    law = "acceleration"        # a(t) of the rigid drive; or "torque" (a force on a mass)
+    law = "acceleration"        # a(t) of the rigid drive; "torque" (a force on a mass);
+                                # or "speed": the body follows v(t) exactly
     unit = "m/s^2"              # of the values; c_kj in unit / time_unit^j
     time_unit = "s"             # optional
     breakpoints = [0.0, 0.25, 1.0, 1.25]
