@@ -149,6 +149,9 @@ def test_speed_law_moves_its_body_exactly_and_the_rest_follows():
     assert np.max(np.abs(rope_force(run, times) - theirs)) <= 1e-7 * np.max(np.abs(theirs))
     with pytest.raises(ComponentError, match="its speed at t = 0 is 0, the steady start's 10"):
         model.run(2.0, "motor", "10 rad/s")
+    from crane_sym.components.closed import link_response
+    with pytest.raises(ComponentError, match="constant loads; motor law 'control' switches"):
+        link_response(model)
     with pytest.raises(ComponentError, match="brake 'b' acts on a body whose speed motor law "
                                              "'control' sets"):
         Model([*model.components, Brake("b", "motor", "1 kN*m")])
