@@ -1,12 +1,12 @@
 """The piecewise-linear system of a component model: its modes, their
 x' = A x + b, the events between them, and a run solved phase by phase.
 
-The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…, w…): each rigid group's coordinate
-and speed, then the build-up 0 ≤ β ≤ 1 of each brake whose torque ramps or
-rises exponentially (a step brake has β = 1 once engaged), then the clock
-states w_j = τ^j of each motor law (:class:`crane_sym.components.laws.LawClock`). A :class:`Mode`
-fixes what makes the equations of :mod:`crane_sym.components.equations`
-linear:
+The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…, w…): each rigid group's
+coordinate and speed, then the build-up 0 ≤ β ≤ 1 of each brake whose torque
+ramps or rises exponentially (a step brake has β = 1 once engaged), then the
+clock states w_j = τ^j of each motor law
+(:class:`crane_sym.components.laws.LawClock`). A :class:`Mode` fixes what
+makes the equations of :mod:`crane_sym.components.equations` linear:
 
 - each link with backlash: on its upper flank (+1), in its gap (0) or on its
   lower flank (−1); it opens where its twist returns to the flank, it closes
