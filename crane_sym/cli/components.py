@@ -37,6 +37,7 @@ def model_text(path: str) -> str:
     lines = [f"model {model.name}" + (f": {model.title}" if model.title else ""), "",
              "components:"]
     lines += [f"  {p.label}" for p in model.components]
+    lines += [f"  {d.line()}" for d in model.dropped]
     lines += ["", "rigid groups (one coordinate each; body = kappa * coordinate):"]
     for g, q in zip(a.groups, eq.coordinates):
         members = ", ".join(f"{b.name} = {sp.sstr(k)}" for (b, _), k in zip(g.members, g.factors))
@@ -51,6 +52,8 @@ def model_text(path: str) -> str:
     lines += [f"  {b.part.label} on {b.part.body}: off, engaged" for b in system.brakes]
     lines += [f"  {m.part.label}: on, off" for m in system.motors if m.part.off_at is not None]
     lines += [f"  {c.part.label}: {len(c.part.slopes)} steps" for c in system.characteristics]
+    lines += [f"  {l.part.label}: {len(l.part.pieces())} pieces ({l.part.law} law)"
+              for l in system.laws]
     braked = sorted({a.groups[g].name for g in system.brake_group})
     lines += [f"  group {name}: free, sliding +/-, held" for name in braked]
     return "\n".join(lines)

@@ -5,7 +5,9 @@ refer bodies to one another (merged into rigid groups, one coordinate each);
 elastic links with stiffness, viscous damping and an optional backlash gap;
 brakes (delay, step, ramp or exponential build-up, holding at rest within
 their capacity); motors (a constant or steady torque, switched off at an
-instant; or a characteristic β (v0 − v) stepped at hold times); gravity on masses; constant resistances. From them: topology checks
+instant; or a characteristic β (v0 − v) stepped at hold times; or a
+piecewise polynomial law in time, paper 002's drive laws); gravity on masses;
+constant resistances. From them: topology checks
 with one-line errors naming the component, T, Π, Φ and Q, Lagrange's
 equations in the components' symbols, the piecewise-linear system of its
 modes, a run solved phase by phase in closed form, and the component TOML;
@@ -19,8 +21,9 @@ papers never.
 """
 from crane_sym.components.loads import (STEADY, Brake, Characteristic, Gravity, Motor,
                                         Resistance)
+from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
 from crane_sym.components.model import ComponentRun, LinkPeak, Model
 
 __all__ = ["Brake", "Characteristic", "ComponentError", "ComponentRun", "Drum", "ElasticLink", "Gear", "Gravity",
-           "Inertia", "LinkPeak", "Mass", "Model", "Motor", "Resistance", "STEADY"]
+           "Inertia", "LinkPeak", "Mass", "Model", "Motor", "MotorLaw", "Resistance", "STEADY"]

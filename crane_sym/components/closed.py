@@ -1,6 +1,7 @@
 """The closed-form response of a component model that never switches, in its
 symbols: two rigid groups joined by one elastic link without backlash, loaded
-by constant forces (no brake, no motor switched, no characteristic).
+by constant forces (no brake, no motor switched, no characteristic, no law in
+time: a run's phases give those in closed form, numerically).
 
 As the papers do by hand (Komarov's elimination): each equation of motion
 solved for its acceleration, their difference written in the link's twist
@@ -19,6 +20,7 @@ from dataclasses import dataclass
 import sympy as sp
 
 from crane_sym.components.model import Model
+from crane_sym.components.laws import MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import ComponentError
 from crane_sym.mechanics.elimination import RelativeEquation, relative_coordinate
@@ -44,7 +46,7 @@ def link_response(model: Model, u0: sp.Expr = sp.Integer(0)) -> LinkResponse:
         raise ComponentError("a closed form in the symbols needs two rigid groups joined "
                              "by one elastic link without backlash")
     switching = [l.part.label for l in a.loads
-                 if isinstance(l.part, (Brake, Characteristic, Motor))]
+                 if isinstance(l.part, (Brake, Characteristic, Motor, MotorLaw))]
     if switching:
         raise ComponentError(f"a closed form in the symbols needs constant loads; "
                              f"{switching[0]} switches or depends on the speed")

@@ -15,8 +15,9 @@ body b of group g at κ_b·q_g. From the components:
 with u_k = κ_second q − κ_first q the twist of elastic link k, χ_k its
 contact (1 on a flank, 0 in its gap) and δ_k the flank it rests on (0, or the
 gap's other end), F a motor's torque times its switch ``on``, a
-characteristic's β (v0 − v), a weight m g, a resistance, or a brake's signed
-friction B. Lagrange's equations with Rayleigh
+characteristic's β (v0 − v), a weight m g, a resistance, a brake's signed
+friction B, or a law's value L(t) (:mod:`crane_sym.components.laws`; an
+acceleration law's J_red a(t) − Σ ρ F of the weights, resistances and motors). Lagrange's equations with Rayleigh
 dissipation (:func:`crane_sym.mechanics.lagrange.lagrange_equations`) give
 M q̈ + D q̇ + K q = f, linear in the state: χ, δ, ``on`` and B are what a mode
 of the hybrid system fixes (:mod:`crane_sym.components.hybrid`).
@@ -30,6 +31,7 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
+from crane_sym.components.laws import MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.parts import Gear
 from crane_sym.components.topology import Assembly
@@ -67,6 +69,9 @@ class Equations:
     switches : the ``on`` symbol of each motor
     friction : the signed friction B of each brake
     slopes : the slope β of each characteristic (its step is the mode's)
+    signals : the value of each motor law at time t (L_name for a torque law, a_name
+        for an acceleration law): what the laws' clock states give; T_name, the
+        torque a speed law takes, which its group's prescribed motion replaces
     values : every parameter symbol's SI value (a steady motor's torque once solved: not here)
     """
 
@@ -86,6 +91,7 @@ class Equations:
     motor_loads: tuple[sp.Symbol, ...]
     values: dict[sp.Symbol, float]
     slopes: tuple[sp.Symbol, ...] = ()
+    signals: tuple[sp.Symbol, ...] = ()
 
     @property
     def t(self) -> sp.Symbol:
@@ -112,16 +118,17 @@ class Equations:
         return M, D, K, sp.expand(f)
 
     def numeric(self, extra: dict[sp.Symbol, float] | None = None) -> Callable:
-        """(χ, δ, on, B, β) -> (M, D, K, f) as arrays, the parameters' values put in
+        """(χ, δ, on, B, β, L) -> (M, D, K, f) as arrays, the parameters' values put in
         (and ``extra``: a steady motor's solved torque)."""
         values = {**self.values, **(extra or {})}
         M, D, K, f = (m.xreplace(values) for m in self.linear)
         args = [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
-                list(self.slopes)]
+                list(self.slopes), list(self.signals)]
         fn = sp.lambdify(args, (M, D, K, f), "numpy")
 
-        def evaluate(chi, delta, on, friction, slopes=()):
-            out = fn(list(chi), list(delta), list(on), list(friction), list(slopes))
+        def evaluate(chi, delta, on, friction, slopes=(), signals=()):
+            signals = list(signals) or [0.0] * len(self.signals)
+            out = fn(list(chi), list(delta), list(on), list(friction), list(slopes), signals)
             return tuple(np.array(m, dtype=float) for m in out[:3]) + \
                 (np.array(out[3], dtype=float).reshape(-1),)
         return evaluate
@@ -189,7 +196,9 @@ def derive(assembly: Assembly) -> Equations:
         twists.append(u)
         loads.append(chi * (c * (u - delta) + d * u.diff(t)))
     forces = {q: sp.Integer(0) for q in coords}
-    switches, friction, motors, slopes = [], [], [], []
+    switches, friction, motors, slopes, signals = [], [], [], [], []
+    acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
+    balancing = None
     for load in assembly.loads:
         part = load.part
         kappa, q = where[part.body]
@@ -215,9 +224,51 @@ def derive(assembly: Assembly) -> Equations:
             values[v0] = load.values[0]
             slopes.append(beta)
             F = beta * (v0 - kappa * q.diff(t))
+        elif isinstance(part, MotorLaw):
+            letter = {"torque": "L", "acceleration": "a", "speed": "T"}[part.law]
+            signals.append(_r(f"{letter}_{part.name}"))
+            if part.law == "acceleration":
+                balancing = (part, signals[-1])
+                continue
+            F = signals[-1]
+        if not isinstance(part, (Brake, Characteristic, MotorLaw)):
+            acting.append((part.body, F))
         forces[q] += kappa * F
+    if balancing is not None:
+        part, a_law = balancing
+        kappa, q = where[part.body]
+        forces[q] += kappa * _rigid_drive(assembly, where, part.body, a_law, acting)
     eqs = lagrange_equations(T, V, coords, t, forces, D)
     return Equations(assembly, tuple(coords), T, V, D, forces, eqs, tuple(twists),
                      tuple(loads), tuple(contact), tuple(flank), tuple(switches),
-                     tuple(friction), tuple(motors), values, tuple(slopes))
+                     tuple(friction), tuple(motors), values, tuple(slopes), tuple(signals))
+
+
+def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,
+                 a_law: sp.Symbol, acting: list[tuple[str, sp.Expr]]) -> sp.Expr:
+    """P = J_red a − Σ ρ_b F_b: the force on ``body`` that drives the drive, were it
+    rigid, at the acceleration ``a_law`` of ``body`` against the loads ``acting``
+    (the weights, resistances and motors: the loads constant in time).
+
+    Rigid, every elastic link keeps its twist: κ_b q̇_b = κ_a q̇_a, so group g
+    moves ρ_g per unit of the body's coordinate y (ρ = 1/κ on its own group),
+    body b moves κ_b ρ_g; virtual work refers its inertia and load to y."""
+    place = assembly.place
+    rho = {place[body][0]: 1 / where[body][0]}
+    todo = [place[body][0]]
+    while todo:
+        here = todo.pop(0)
+        for link in assembly.links:
+            a, b = link.part.ends
+            for near, far in ((a, b), (b, a)):
+                if place[near][0] == here and place[far][0] not in rho:
+                    rho[place[far][0]] = rho[here] * where[near][0] / where[far][0]
+                    todo.append(place[far][0])
+    J = sp.Integer(0)
+    for g, group in enumerate(assembly.groups):
+        for (member, _), kappa in zip(group.members, group.factors):
+            inertia = _p(f"{'J' if member.motion == 'rotating' else 'm'}_{member.name}")
+            J += inertia * (kappa * rho[g]) ** 2
+    held = sum((where[b][0] * rho[place[b][0]] * F for b, F in acting), sp.Integer(0))
+    return sp.expand(J * a_law - held)
 

@@ -1,11 +1,12 @@
 """The piecewise-linear system of a component model: its modes, their
 x' = A x + b, the events between them, and a run solved phase by phase.
 
-The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…): each rigid group's coordinate
-and speed, then the build-up 0 ≤ β ≤ 1 of each brake whose torque ramps or
-rises exponentially (a step brake has β = 1 once engaged). A :class:`Mode`
-fixes what makes the equations of :mod:`crane_sym.components.equations`
-linear:
+The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…, w…): each rigid group's
+coordinate and speed, then the build-up 0 ≤ β ≤ 1 of each brake whose torque
+ramps or rises exponentially (a step brake has β = 1 once engaged), then the
+clock states w_j = τ^j of each motor law
+(:class:`crane_sym.components.laws.LawClock`). A :class:`Mode` fixes what
+makes the equations of :mod:`crane_sym.components.equations` linear:
 
 - each link with backlash: on its upper flank (+1), in its gap (0) or on its
   lower flank (−1); it opens where its twist returns to the flank, it closes
@@ -15,7 +16,8 @@ linear:
   is held when its speed reaches zero while the rest of its load N stays
   within the brakes' capacity Σ |κ| M β, and slides again when N reaches it;
 - each brake engaged or not (at its delay), each ramp under way or done,
-  each motor on or off (at its instant), each characteristic on its step.
+  each motor on or off (at its instant), each characteristic on its step,
+  each motor law on its piece (at its breakpoints).
 
 Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
 solves each phase in closed form and finds the events on those closed forms.
@@ -27,6 +29,7 @@ from functools import lru_cache
 import numpy as np
 
 from crane_sym.components.equations import Equations
+from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import ComponentError
 from crane_sym.mechanics.piecewise_linear import Guard
@@ -47,6 +50,7 @@ class Mode:
     driven: tuple[bool, ...]
     ramping: tuple[bool, ...]
     steps: tuple[int, ...] = ()
+    pieces: tuple[int, ...] = ()
 
 
 class ComponentSystem:
@@ -67,7 +71,11 @@ class ComponentSystem:
         self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
         built = [i for i, b in enumerate(self.brakes) if b.part.build_up != "step"]
         self.beta = {i: 2 * self.n + j for j, i in enumerate(built)}
-        self.size = 2 * self.n + len(built)
+        self.laws = [l for l in a.loads if isinstance(l.part, MotorLaw)]
+        self.clock = LawClock([l.part for l in self.laws], 2 * self.n + len(built))
+        self.size = 2 * self.n + len(built) + self.clock.size
+        self.moved = {k: a.place[l.part.body][:2] for k, l in enumerate(self.laws)
+                      if l.part.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
         self.events: dict[str, tuple[str, int]] = {}
@@ -86,6 +94,8 @@ class ComponentSystem:
             self.events[f"{motor.part.name} off"] = ("off", m)
         for m, law in enumerate(self.characteristics):
             self.events[f"{law.part.name} next step"] = ("step", m)
+        for m, law in enumerate(self.laws):
+            self.events[f"{law.part.name} next piece"] = ("piece", m)
         self._linear = lru_cache(maxsize=None)(self._linear_uncached)
 
     # --- positions in the state -------------------------------------------------
@@ -115,8 +125,8 @@ class ComponentSystem:
 
     def _linear_uncached(self, contacts: tuple[int, ...], driven: tuple[bool, ...],
                          steps: tuple[int, ...] = ()):
-        """(M, D, K, f without friction, ∂f/∂B per brake) of the contacts, the
-        motors and the characteristics' steps."""
+        """(M, D, K, f without friction and laws, ∂f/∂B per brake, ∂f/∂L per law) of
+        the contacts, the motors and the characteristics' steps."""
         chi, delta = self._flanks(contacts)
         on = [1.0 if d else 0.0 for d in driven]
         slopes = [law.values[1 + min(k, len(law.values) - 2)]
@@ -128,17 +138,28 @@ class ComponentSystem:
             unit = list(zero)
             unit[k] = 1.0
             E[:, k] = self._numeric(chi, delta, on, unit, slopes)[3] - f
+        G = np.zeros((self.n, len(self.laws)))
+        for k in range(len(self.laws)):
+            unit = np.eye(len(self.laws))[k]
+            G[:, k] = self._numeric(chi, delta, on, zero, slopes, unit)[3] - f
         if np.count_nonzero(M - np.diag(np.diag(M))):
             raise ComponentError("the mass matrix is not diagonal")     # rigid groups make it so
-        return np.diag(M).copy(), D, K, f, E
+        return np.diag(M).copy(), D, K, f, E, G
+
+    def law_forcing(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
+        """(F, c): the laws' generalized forces on the groups as F x + c."""
+        G = self._linear(mode.contacts, mode.driven, mode.steps)[5]
+        W, c = self.clock.signals(mode.pieces, self.size)
+        return G @ W, G @ c
 
     def net_load(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """The generalized load on group g but its brakes' friction, as w·x + k."""
-        M, D, K, f, _ = self._linear(mode.contacts, mode.driven, mode.steps)
-        w = np.zeros(self.size)
-        w[0:2 * self.n:2] = -K[g]
-        w[1:2 * self.n:2] = -D[g]
-        return w, float(f[g])
+        M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
+        F, c = self.law_forcing(mode)
+        w = F[g].copy()
+        w[0:2 * self.n:2] -= K[g]
+        w[1:2 * self.n:2] -= D[g]
+        return w, float(f[g] + c[g])
 
     def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """What the engaged brakes of group g can hold, Σ |κ| M β, as w·x + k."""
@@ -154,21 +175,27 @@ class ComponentSystem:
 
     def matrices(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(A, b) of a mode."""
-        M, D, K, f, E = self._linear(mode.contacts, mode.driven, mode.steps)
+        M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
+        F, c = self.law_forcing(mode)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
+        self.clock.fill(A, b, mode.pieces)
         for g in range(self.n):
             if mode.motion[g] == HELD:
                 continue
             A[self.q(g), self.v(g)] = 1.0
             row = self.v(g)
-            A[row, 0:2 * self.n:2] = -K[g] / M[g]
-            A[row, 1:2 * self.n:2] = -D[g] / M[g]
-            b[row] = f[g] / M[g]
+            A[row] = F[g] / M[g]
+            A[row, 0:2 * self.n:2] -= K[g] / M[g]
+            A[row, 1:2 * self.n:2] -= D[g] / M[g]
+            b[row] = (f[g] + c[g]) / M[g]
             if mode.motion[g] in (FORWARD, BACKWARD):
                 sign = 1.0 if mode.motion[g] == FORWARD else -1.0
                 w, k = self.capacity(mode, g)
                 A[row] -= sign * w / M[g]
                 b[row] -= sign * k / M[g]
+        for k, (g, kappa) in self.moved.items():          # the speed law's motion
+            w, c = self.clock.derivative(mode.pieces, k, self.size)
+            A[self.v(g)], b[self.v(g)] = w / kappa, c / kappa
         for i, col in self.beta.items():
             part = self.brakes[i].part
             if not mode.engaged[i]:
@@ -218,6 +245,14 @@ class ComponentSystem:
             steps = list(mode.steps)
             steps[i] += 1
             return replace(mode, steps=tuple(steps)), x
+        if kind == "piece":
+            pieces = list(mode.pieces)
+            pieces[i] += 1
+            self.clock.reset(x, i)
+            if i in self.moved:
+                g, kappa = self.moved[i]
+                x[self.v(g)] = self.clock.rows(pieces)[i][0] / kappa
+            return replace(mode, pieces=tuple(pieces)), x
         if kind == "off":
             driven = list(mode.driven)
             driven[i] = False

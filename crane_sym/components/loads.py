@@ -1,5 +1,6 @@
 """What acts on one body of a drive train: brakes, motors (constant, steady or
-a speed characteristic), gravity and constant resistances.
+a speed characteristic), gravity and constant resistances (a law in time:
+:mod:`crane_sym.components.laws`).
 
 Values are text with a unit or numbers in SI (:func:`crane_sym.components.parts.value`);
 a torque on a rotating body is a force on a translating one, checked when the
@@ -11,6 +12,7 @@ from dataclasses import dataclass
 
 from sympy.physics.units import length, time
 
+from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import (Component, ComponentError, Given, Value, _at_least,
                                         _name, value)
 
@@ -159,4 +161,4 @@ class Characteristic(Component):
 
 
 #: The things that act on one body.
-ACTING = (Brake, Motor, Characteristic, Gravity, Resistance)
+ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw)

@@ -36,9 +36,11 @@ import numpy as np
 
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
+from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
                                         value)
+from crane_sym.components.pruning import Dropped, Scope, needed
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, stationary_times
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
@@ -137,11 +139,32 @@ class Model:
     and derived (:func:`~crane_sym.components.equations.derive`)."""
 
     def __init__(self, components: Sequence[Component], name: str = "model",
-                 title: str = "") -> None:
+                 title: str = "", scope: Scope | None = None) -> None:
         self.components = tuple(components)
         self.name, self.title = name, title
+        self.scope = scope
         self.assembly: Assembly = assemble(self.components)
         self.equations: Equations = derive(self.assembly)
+
+    @classmethod
+    def for_run(cls, components: Sequence[Component], duration: Given, rest: bool = False,
+                name: str = "model", title: str = "") -> "Model":
+        """The model of only what a run of ``duration`` (from rest when
+        ``rest``) needs: the components that cannot act over it dropped before
+        the derivation (:func:`~crane_sym.components.pruning.needed`), named in
+        ``scope.dropped``; a longer run, or a steady start where one at rest was
+        assumed, is refused."""
+        from sympy.physics.units import time
+        t_end = value("run", "duration", duration, time).si
+        if not t_end > 0:
+            raise ComponentError(f"run: duration must be > 0, got {duration!r}")
+        kept, scope = needed(components, t_end, rest)
+        return cls(kept, name, title, scope)
+
+    @property
+    def dropped(self) -> tuple[Dropped, ...]:
+        """The components left out for the run the model was built for."""
+        return () if self.scope is None else self.scope.dropped
 
     @property
     def steady_motor(self):
@@ -159,7 +182,9 @@ class Model:
         Steady (the default): every group moves at the speed ``body``'s
         ``speed`` implies (no link twisting), every link rests at the twist that
         balances the loads with all motors on, on the flank its load pushes it
-        to; a ``steady`` motor's torque is solved with the twists. ``rest``:
+        to; a ``steady`` motor's torque is solved with the twists; every motor
+        law at its value just before t = 0 (0; an acceleration law's a = 0: its
+        motor then holds the drive against the other loads). ``rest``:
         everything at rest at zero twist, every gap open (a link with backlash
         at the end of its gap where its twist is zero), whatever the loads.
         """
@@ -206,9 +231,17 @@ class Model:
             raise ComponentError("no steady state at the start: the links with backlash "
                                  "cannot all rest on a flank")
         extra = {steady: torque} if steady is not None else {}
+        for k, (g, kappa) in probe.moved.items():
+            law = probe.laws[k].part
+            if abs(law.value_at(0.0) - rates[g] * kappa) > 1e-9 * max(abs(law.value_at(0.0)),
+                                                                      abs(rates[g] * kappa)):
+                raise ComponentError(f"{law.label}: its speed at t = 0 is "
+                                     f"{law.value_at(0.0):.6g}, the steady start's "
+                                     f"{rates[g] * kappa:.6g}")
         mode = Mode(contacts, tuple(FREE for _ in range(n)),
                     tuple(False for _ in probe.brakes), driven,
-                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
+                    tuple(0 for _ in probe.laws))
         return mode, x, extra
 
     def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
@@ -218,19 +251,26 @@ class Model:
         probe = ComponentSystem(self.equations)
         mode = Mode(tuple(0 for _ in probe.backlash), tuple(FREE for _ in self.assembly.groups),
                     tuple(False for _ in probe.brakes), tuple(True for _ in probe.motors),
-                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
-        return mode, np.zeros(probe.size), {}
+                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
+                    tuple(0 for _ in probe.laws))
+        x = np.zeros(probe.size)
+        for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
+            x[probe.v(g)] = probe.laws[k].part.value_at(0.0) / kappa
+        return mode, x, {}
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
         """Positions (the first group's at 0) and the steady motor's torque that
-        make K q = f − D q̇; ComponentError if no motor torque balances the loads."""
-        _, D, K, f0, _ = probe._linear(contacts, driven)
+        make K q = f − D q̇ (but on a group a speed law moves: its motor gives what
+        the balance takes); ComponentError if no motor torque balances the loads."""
+        _, D, K, f0 = probe._linear(contacts, driven)[:4]
         f = f0 - D @ rates
         columns = [K[:, 1:]]
         if unit is not None:
             columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
         matrix = np.hstack(columns)
+        free = [g for g in range(len(f)) if g not in {g for g, _ in probe.moved.values()}]
+        matrix, f = matrix[free], f[free]
         if matrix.shape[1]:
             z = np.linalg.lstsq(matrix, f, rcond=None)[0]
         else:
@@ -247,7 +287,7 @@ class Model:
 
     def schedule(self) -> tuple[tuple[float, str], ...]:
         """The events known in advance: brakes engaging and their ramps ending,
-        motors switched off."""
+        motors switched off, characteristics' steps and motor laws' pieces."""
         out = []
         for load in self.assembly.loads:
             part = load.part
@@ -259,6 +299,8 @@ class Model:
                 out.append((part.off_at, f"{part.name} off"))
             elif isinstance(part, Characteristic):
                 out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
+        out += LawClock([l.part for l in self.assembly.loads if isinstance(l.part, MotorLaw)],
+                        0).schedule()
         return tuple(sorted(out))
 
     def run(self, duration: Given, start_body: str | None = None,
@@ -271,6 +313,13 @@ class Model:
         t_end = value("run", "duration", duration, time).si
         if not t_end > 0:
             raise ComponentError(f"run: duration must be > 0, got {duration!r}")
+        scope = self.scope
+        if scope is not None and scope.dropped and (t_end > scope.duration or
+                                                    (scope.rest and not rest)):
+            raise ComponentError(
+                f"run: the model was built for a run of {scope.duration:g} s"
+                f"{' from rest' if scope.rest else ''} without {scope.dropped[0].part.label}"
+                f" ({scope.dropped[0].reason}); build it for this run (Model.for_run)")
         mode, x0, extra = self.start(start_body, start_speed, rest)
         system = ComponentSystem(self.equations, extra)
         schedule = self.schedule()

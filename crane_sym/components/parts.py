@@ -45,6 +45,7 @@ DIMENSIONS = {
     "backlash": {ROTATING: _ONE, TRANSLATING: length},
     "load": {ROTATING: force * length, TRANSLATING: force},
     "speed": {ROTATING: 1 / time, TRANSLATING: length / time},
+    "acceleration": {ROTATING: 1 / time**2, TRANSLATING: length / time**2},
 }
 
 

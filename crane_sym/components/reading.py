@@ -59,6 +59,16 @@
     body = "trolley"
     force = "-1.2 kN"           # `torque` on a rotating body
 
+    [[motor_law]]               # a law in time, piecewise polynomial (paper 002)
+    name = "hoist"
+    body = "drive"
+    law = "acceleration"        # a(t) of the rigid drive; "torque" (a force on a mass);
+                                # or "speed": the body follows v(t) exactly
+    unit = "m/s^2"              # of the values; c_kj in unit / time_unit^j
+    time_unit = "s"             # optional
+    breakpoints = [0.0, 0.25, 1.0, 1.25]
+    coefficients = [[0.0, 2.0], [0.5], [0.5, -2.0]]   # numbers only, never text
+
     [[characteristic]]          # a motor's β (v0 − v), stepped at the hold times
     name = "motors"
     body = "left"
@@ -82,7 +92,9 @@
 Every value with a dimension is text with its unit, read by
 :mod:`crane_sym.units` (parsed, never evaluated); ratios and reevings may be
 bare numbers. An unknown table or key is an error naming the closest known
-one, as in scenes; every error is one line.
+one, as in scenes; every error is one line. The model is built for the file's
+run: components that cannot act over it are dropped before the derivation
+(:mod:`crane_sym.components.pruning`), and the model names them.
 """
 from __future__ import annotations
 
@@ -93,6 +105,7 @@ from pathlib import Path
 from typing import Any
 
 from crane_sym.components.formulas import read_formulas
+from crane_sym.components.laws import MotorLaw
 from crane_sym.components.model import Model
 from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
@@ -111,13 +124,18 @@ TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "brake": (("name", "body"), ("torque", "force", "delay", "build_up", "time")),
     "motor": (("name", "body"), ("torque", "force", "off_at")),
     "characteristic": (("name", "body", "speed", "slopes"), ("holds",)),
+    "motor_law": (("name", "body", "law", "unit", "breakpoints", "coefficients"),
+                  ("time_unit",)),
     "gravity": (("name", "body"), ("g", "direction")),
     "resistance": (("name", "body"), ("torque", "force")),
 }
 #: Keys that may be bare numbers (dimensionless).
 NUMBERS = ("ratio", "reeving")
 #: Keys that are names or choices, not quantities.
-WORDS = ("name", "input", "output", "drum", "load", "body", "contact", "build_up", "direction")
+WORDS = ("name", "input", "output", "drum", "load", "body", "contact", "build_up", "direction",
+         "law", "unit", "time_unit")
+#: Keys whose numbers the law reader checks (numbers only, never text).
+LAW_NUMBERS = ("breakpoints", "coefficients")
 MODEL_KEYS, RUN_KEYS = ("name", "title"), ("duration", "start", "body", "speed")
 #: Keys that are lists of quantities.
 LISTS = ("slopes", "holds")
@@ -126,9 +144,11 @@ _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
 
 @dataclass(frozen=True)
 class ComponentFile:
-    """A read component file: the model, its run's settings, where it came from,
-    its [[formula]] tables (:class:`~crane_sym.components.formulas.FileFormula`)
-    and its component tables as written (kind -> list of tables)."""
+    """A read component file: the model (of what its run needs), its run's
+    settings, where it came from, its [[formula]] tables
+    (:class:`~crane_sym.components.formulas.FileFormula`), its component tables
+    as written (kind -> list of tables) and every component as built (``parts``:
+    a sweep that changes a value builds its model again from these)."""
 
     model: Model
     duration: str
@@ -138,6 +158,7 @@ class ComponentFile:
     rest: bool = False
     formulas: tuple = ()
     tables: dict = field(default_factory=dict)
+    parts: tuple = ()
 
 
 def is_component_file(path: str | Path) -> bool:
@@ -169,6 +190,8 @@ def _given(entry: dict, key: str, where: str) -> Any:
     """A value of an entry: text (a word or a quantity), a bare number only
     where it is dimensionless."""
     v = entry[key]
+    if key in LAW_NUMBERS:
+        return v
     if key in LISTS:
         if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
             raise ComponentError(f"{where}: {key} must be a list of values with their units "
@@ -221,6 +244,9 @@ def _build(kind: str, entry: dict, where: str):
         return Motor(g["name"], g["body"], g[_load_key(entry, where)], g.get("off_at"))
     if kind == "characteristic":
         return Characteristic(g["name"], g["body"], g["speed"], g["slopes"], g.get("holds", []))
+    if kind == "motor_law":
+        return MotorLaw(g["name"], g["body"], g["breakpoints"], g["coefficients"], g["unit"],
+                        g["law"], g.get("time_unit", "s"))
     if kind == "gravity":
         return Gravity(g["name"], g["body"], g.get("g", "9.81 m/s^2"), g.get("direction", "+"))
     return Resistance(g["name"], g["body"], g[_load_key(entry, where)])
@@ -285,10 +311,11 @@ def read_component_file(path: str | Path) -> ComponentFile:
             raise ComponentError(f"{where_file}: [run] {key} needs a value with its unit as "
                                  f"text, got {settings[key]!r}")
     try:
-        model = Model(parts, name, str(head.get("title", "")))
+        model = Model.for_run(parts, settings["duration"], start == "rest", name,
+                              str(head.get("title", "")))
     except ComponentError as exc:
         raise ComponentError(f"{where_file}: {exc}") from None
     formulas = read_formulas(data.get("formula", []), model, where_file)
     return ComponentFile(model, settings["duration"], settings.get("body"),
                          settings.get("speed", 0.0), p, start == "rest", formulas,
-                         {k: data.get(k, []) for k in TABLES})
+                         {k: data.get(k, []) for k in TABLES}, tuple(parts))

@@ -36,8 +36,9 @@ class ComponentReport:
 
 
 def report_lines(run: ComponentRun) -> list[str]:
-    """Peak loads (with time and dynamic factor) and events, one per line."""
-    lines = []
+    """The components dropped as not needed, peak loads (with time and dynamic
+    factor) and events, one per line."""
+    lines = [d.line() for d in run.model.dropped]
     for p in run.peaks:
         factor = "" if p.factor is None else f", dynamic factor {format_quantity(p.factor)}"
         lines.append(f"peak load of {p.link}: {format_quantity(p.value, p.unit)} at "
@@ -51,6 +52,7 @@ def report_lines(run: ComponentRun) -> list[str]:
 def _json(run: ComponentRun, name: str) -> str:
     return json.dumps({
         "model": name,
+        "dropped": [{"component": d.part.label, "reason": d.reason} for d in run.model.dropped],
         "peaks": [{"link": p.link, "time_s": p.time, "value": p.value, "unit": p.unit,
                    "static": p.static, "reference": p.reference, "dynamic_factor": p.factor}
                   for p in run.peaks],

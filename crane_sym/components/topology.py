@@ -23,7 +23,9 @@ from typing import Sequence
 
 import sympy as sp
 
-from crane_sym.components.loads import ACTING, Characteristic, Gravity, Motor
+from crane_sym import units
+from crane_sym.components.laws import MotorLaw
+from crane_sym.components.loads import ACTING, Brake, Characteristic, Gravity, Motor
 from crane_sym.components.parts import (DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body, Component,
                                         ComponentError, Drum, ElasticLink, Gear)
 
@@ -131,7 +133,31 @@ def assemble(components: Sequence[Component]) -> Assembly:
     steady = [l.part.label for l in loads if isinstance(l.part, Motor) and l.load is None]
     if len(steady) > 1:
         raise ComponentError(f"{steady[1]}: only one motor may be 'steady' ({steady[0]} is)")
+    _speed_laws(loads, groups, place)
+    balancing = steady + [l.part.label for l in loads
+                          if isinstance(l.part, MotorLaw) and l.part.law == "acceleration"]
+    if len(balancing) > 1:
+        raise ComponentError(f"{balancing[1]}: only one motor may balance the others "
+                             f"({balancing[0]} does: a 'steady' torque or an acceleration law)")
     return Assembly(bodies, groups, place, links, loads, tuple(rigid))
+
+
+def _speed_laws(loads: tuple[Load, ...], groups: tuple[Group, ...],
+                place: dict[str, tuple[int, float, sp.Expr]]) -> None:
+    """A group that a speed law moves takes no brake and no second speed law."""
+    moved: dict[int, Component] = {}
+    for load in loads:
+        if isinstance(load.part, MotorLaw) and load.part.law == "speed":
+            g = place[load.part.body][0]
+            if g in moved:
+                raise ComponentError(f"{load.part.label}: {moved[g].label} sets the speed of "
+                                     f"{groups[g].members[0][0].label} already")
+            moved[g] = load.part
+    for load in loads:
+        g = place[load.part.body][0]
+        if isinstance(load.part, Brake) and g in moved:
+            raise ComponentError(f"{load.part.label} acts on a body whose speed "
+                                 f"{moved[g].label} sets: it could never slide")
 
 
 def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
@@ -259,6 +285,14 @@ def _load(part: Component, bodies: dict[str, Body]) -> Load:
                                  "acts on a mass")
         return Load(part, body.inertia * part.g * (1.0 if part.direction == "+" else -1.0))
     if isinstance(part, Motor) and part.load is None:
+        return Load(part, None)
+    if isinstance(part, MotorLaw):
+        what = ("load" if part.law == "torque" else part.law)
+        expected = DIMENSIONS[what][body.motion]
+        if not units.same_dimension(part.dimension, expected):
+            raise ComponentError(f"{part.label} on {body.label}: its unit {part.unit!r} is "
+                                 f"{units.format_dimension(part.dimension)}, expected "
+                                 f"{units.describe_dimension(expected)}")
         return Load(part, None)
     if isinstance(part, Characteristic):
         where = f"{part.label} on {body.label}"
