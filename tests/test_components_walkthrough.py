@@ -123,3 +123,16 @@ def test_a_bad_file_is_one_line_and_writes_nothing(tmp_path, capsys):
     assert main(["walkthrough", str(tmp_path / "none.toml"), "-o", str(out), "--quiet"]) == 2
     assert "no component file" in capsys.readouterr().err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
+
+
+def test_a_law_in_time_is_named_and_its_clock_is_in_the_state():
+    """002's acceleration law (degree 1): its symbol is in the table of symbols
+    with its unit, its one clock state w_1 = τ closes the state vector, and
+    every symbol of the equations is one the table names."""
+    text = drive_train_walkthrough(EXAMPLES / "hoist_drive_law.toml")
+    symbols = text.split("## Symbols")[1].split("## Rigid groups")[0]
+    assert r"| $a_{\mathrm{hoist}}$ |" in symbols and "| m/s^2 |" in symbols
+    state = re.search(r"The state is \$x = \((.*?)\)\$", text).group(1)
+    assert state.endswith(r"\dot{x}_{\mathrm{load}}, w_{\mathrm{hoist},1}")
+    equations = text.split("## Lagrange's equations")[1].split("## Modes")[0]
+    assert "a_{hoist}" not in text and r"a_{\mathrm{hoist}}" in equations

@@ -139,7 +139,7 @@ class Equations:
         upright as its subscript (``c_{\\mathrm{gearbox\\_mesh}}``)."""
         names: dict[sp.Basic, str] = {}
         symbols = [*self.values, *self.contact, *self.flank, *self.switches,
-                   *self.friction, *self.motor_loads, *self.slopes]
+                   *self.friction, *self.motor_loads, *self.slopes, *self.signals]
         for s in [*symbols, *self.coordinates]:
             text = s.name if isinstance(s, sp.Symbol) else type(s).__name__
             head, _, rest = text.partition("_")

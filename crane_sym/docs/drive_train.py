@@ -85,6 +85,11 @@ def _symbols(read: ComponentFile, run: ComponentRun) -> list[str]:
     rows += [[_math_cell(_tex(q, read.model)), f"coordinate of the rigid group of {g.name}", "—", "—",
               "rad" if g.motion == "rotating" else "m"]
              for g, q in zip(read.model.assembly.groups, eq.coordinates)]
+    for law, signal in zip(run.system.clock.laws, eq.signals):
+        assert signal.name.endswith("_" + law.name), (signal, law.name)
+        rows.append([_math_cell(_tex(signal, read.model)),
+                     _cell(f"{law.law} of the law {law.name} at time t (its pieces: the "
+                           "components above)"), law.name, "law in t", _cell(law.unit)])
     return ["Every symbol is named after its component. A value 0 (a shaft end without "
             "inertia, an undamped link) is kept in the equations below and drops out of the "
             "numbers.",
@@ -188,6 +193,9 @@ def _state(system: ComponentSystem) -> str:
                   latex(q.diff(eq.t), symbol_names=eq.latex_names)]
     names += ["\\beta_{\\mathrm{" + system.brakes[i].part.name.replace("_", "\\_") + "}}"
               for i in sorted(system.beta)]
+    for law in system.clock.laws:        # w_j = τ^j of the law's current piece
+        upright = "\\mathrm{" + law.name.replace("_", "\\_") + "}"
+        names += [f"w_{{{upright},{j}}}" for j in range(1, law.degree + 1)]
     return ", ".join(names)
 
 
@@ -207,7 +215,10 @@ def _modes(run: ComponentRun) -> list[str]:
                "what they hold; a sliding group feels their friction against its motion.")
     out.append(f"The state is $x = ({_state(system)})$ (each group's coordinate and speed, "
                "then the build-up $0 \\le \\beta \\le 1$ of each brake that does not act at "
-               f"once). Each mode the run passes through, with $x' = A x + b$ in SI units "
+               "once, then for each law in time of degree $K$ the clock states "
+               "$w_j = \\tau^j$, $j = 1 \\ldots K$, of the time $\\tau$ since its piece began: "
+               "$w_j' = j\\,w_{j-1}$, restarted at every breakpoint, so the law stays "
+               f"linear in the state). Each mode the run passes through, with $x' = A x + b$ in SI units "
                f"({MATRIX_DIGITS} significant digits):")
     seen = []
     for seg in run.result.segments:
