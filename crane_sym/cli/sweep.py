@@ -30,8 +30,14 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     from crane_sym.sweep.store import sweep_stage
     chunk_bytes = parse_chunk_mib(args.chunk_mib)
     out = output_files.check_folder(args.out, "--out")
-    scene = load_scene(args.scene)
-    chosen = plan(scene, args.vary, args.output, args.at or [], args.limit)
+    from crane_sym.components.reading import is_component_file
+    if is_component_file(args.scene):                 # a drive train of the user's own
+        from crane_sym.sweep.component_plan import plan_file
+        chosen = plan_file(args.scene, args.vary or [], args.output or [], args.at or [],
+                           args.limit)
+    else:
+        chosen = plan(load_scene(args.scene), args.vary, args.output, args.at or [],
+                      args.limit)
     check_grid(chosen, out, chunk_bytes)
     certify = None
     if args.certify:

@@ -86,7 +86,9 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
     output : str
         The output's name.
     kind : str
-        ``"closed"`` (a generated function) or ``"simulated"`` (a sweep output).
+        ``"closed"`` (a generated function), ``"simulated"`` (a sweep output)
+        or ``"component"`` (an elastic link of a component file, ``options``
+        naming the file: :mod:`crane_sym.components.designs`).
     args : tuple of str
         The output's arguments, in order.
     axis_names : tuple of str
@@ -102,6 +104,10 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
     shape = tuple(len(b) for b in blocks)
     grid = {name: np.asarray(b, dtype=float).reshape([-1 if k == i else 1 for k in range(n)])
             for i, (name, b) in enumerate(zip(axis_names, blocks))}
+    if kind == "component":                    # a component file's link, batched
+        from crane_sym.components.designs import evaluate_block as component_block
+        result = component_block(options["component_file"], options["digest"], output, grid)
+        return np.ascontiguousarray(np.broadcast_to(np.asarray(result, dtype=float), shape))
     values = {a: grid[a] if a in grid else fixed[a] for a in args}
     window = options.get("window")
     if kind == "closed":
@@ -155,11 +161,13 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
         Workers to share the blocks (default: the cores).
     """
     from dask.array.core import normalize_chunks
-    simulated = [o for o in plan.outputs if o.kind == "simulated"]
+    simulated = [o for o in plan.outputs if o.kind != "closed"]
     if simulated:
         workers = workers or os.cpu_count() or 1
-        specs = registry.sweep_outputs(plan.derivation)
-        if all(getattr(specs.get(o.name), "batched", False) for o in simulated):
+        specs = ({} if all(o.kind == "component" for o in simulated)
+                 else registry.sweep_outputs(plan.derivation))
+        if all(o.kind == "component" or getattr(specs.get(o.name), "batched", False)
+               for o in simulated):
             designs = min(BATCH_DESIGNS, math.ceil(plan.points / workers))
         else:
             designs = math.ceil(plan.points / (4 * workers))
@@ -339,7 +347,7 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
                                                         zarr_format=2, consolidated=False))
         local = scheduler if client is None else None
         if client is None and local is None:
-            simulated = any(o.kind == "simulated" for o in plan.outputs)
+            simulated = any(o.kind != "closed" for o in plan.outputs)
             local = "processes" if simulated else "threads"
         start = time.perf_counter()
         if client is not None:
