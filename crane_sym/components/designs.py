@@ -243,10 +243,13 @@ class Designs:
         peak = np.abs(result.value)
         return (peak if kind == "peak" else peak / reference).reshape(shape)
 
-    def per_design(self, output: str, values: Mapping[str, np.ndarray]) -> np.ndarray:
+    def per_design(self, output: str, values: Mapping[str, np.ndarray],
+                   exact: bool | None = None) -> np.ndarray:
         """:meth:`largest` one design at a time: each design's model derived
         from scratch and run by ``Model.run`` (the reference of the bench and
-        the tests)."""
+        the tests); ``exact`` as ``Model.run`` takes it (None: as ``crane-sym
+        run`` solves it, SymPy's exact Jordan forms for up to two bodies;
+        False: numeric eigenvectors, the cheaper per-design route)."""
         index, kind, _ = self.outputs()[output]
         names = list(values)
         arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
@@ -254,7 +257,8 @@ class Designs:
         f = self.file
         for at in np.ndindex(out.shape):
             parts = self.parts({n: float(a[at]) for n, a in zip(names, arrays)})
-            run = Model(parts, self.model.name).run(f.duration, f.body, f.speed, rest=f.rest)
+            run = Model(parts, self.model.name).run(f.duration, f.body, f.speed, exact=exact,
+                                                    rest=f.rest)
             peak = run.peaks[index]
             out[at] = abs(peak.value) if kind == "peak" else (
                 abs(peak.factor) if peak.factor is not None else math.nan)
