@@ -74,7 +74,9 @@ def _distributed_quiet() -> Iterator[None]:
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The options of ``crane-sym sweep``."""
-    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values)")
+    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values), "
+                   "or a component model TOML file (axes COMPONENT.FIELD, outputs LINK.peak "
+                   "and LINK.factor)")
     p.add_argument("--vary", action="append", metavar="NAME=START:STOP:N[:log] [UNIT]",
                    help="a grid axis over a parameter of the scene, in the unit the scene "
                    "gives it unless UNIT is named (repeat for more axes)")
@@ -92,8 +94,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
                    "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler, threads for "
-                   "closed forms, processes for simulated responses; 'threads', 'processes' "
-                   "or 'synchronous' force one)")
+                   "closed forms, processes for simulated responses, synchronous for a "
+                   "component file's; 'threads', 'processes' or 'synchronous' force one)")
     p.add_argument("--chunk-mib", type=float, default=8.0,
                    help="output bytes per block of the grid, in MiB (default 8; at least "
                    "0.1, at most the free memory for one block per core)")

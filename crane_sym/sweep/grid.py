@@ -28,7 +28,13 @@ CPU seconds per wall second with two threads). On this shared machine the
 measurement did not favour them (Martyntsiv et al.'s drum, 24 designs: threads 11.2 s, processes
 14.1 s, synchronous 11.1 s at load ≈ 3 on 2 cores): starting two worker
 processes costs ~3 s and the second core was busy; they are kept for large
-simulated sweeps on a machine with free cores, the case they serve. With ``scheduler=ADDRESS`` a
+simulated sweeps on a machine with free cores, the case they serve. A
+component file's outputs run synchronously: a sweep that writes asks for each
+block three times, which :mod:`crane_sym.components.designs` answers from the
+block it solved last in the process, and two threads or processes would solve
+a block twice or three times over (400 designs of ``hoist_fig9.toml`` with the
+dataset written, load ≈ 7.5 on 2 cores: synchronous 3.8 s and 5.1 s, threads
+6.3 s and 6.6 s). With ``scheduler=ADDRESS`` a
 ``dask.distributed`` scheduler runs the same graph (its workers must see
 ``out``: a shared file system, or one machine).
 """
@@ -302,7 +308,7 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     blocks.
 
     ``scheduler``: None for Dask's local scheduler (threads for closed forms,
-    processes for simulated responses), ``"synchronous"``, ``"threads"``,
+    processes for simulated responses, synchronous for a component file's), ``"synchronous"``, ``"threads"``,
     ``"processes"``, or the address of a ``dask.distributed`` scheduler.
     On a failure or signal, the tasks that write are stopped (local pools) or
     cancelled and waited for (a live scheduler) before the partial dataset is
@@ -347,8 +353,9 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
                                                         zarr_format=2, consolidated=False))
         local = scheduler if client is None else None
         if client is None and local is None:
-            simulated = any(o.kind != "closed" for o in plan.outputs)
-            local = "processes" if simulated else "threads"
+            kinds = {o.kind for o in plan.outputs}
+            local = ("threads" if kinds == {"closed"} else
+                     "synchronous" if kinds == {"component"} else "processes")
         start = time.perf_counter()
         if client is not None:
             results = compute_remote(client, tasks, quiet, scheduler)
