@@ -127,3 +127,19 @@ def test_a_backlash_swept_from_zero_takes_the_derivation_of_its_own_structure():
     reference = found.per_design("gearbox_mesh.peak", gaps, exact=False)
     assert np.max(np.abs(swept - reference)) <= 1e-9 * np.max(reference)
     assert swept[0] < swept[1] < swept[2]          # a wider gap, a harder impact
+
+
+def test_the_factor_is_paper_001s_swept_peak_of_its_hand_written_model():
+    """The file's gearbox_mesh.factor over the stiffness is 001's sweep output
+    peak_elastic_gearbox_torque (|M_G/M_st| of its own batched family, the
+    scene hoist_table1's values) to 1e-9."""
+    from crane_sym import registry
+    from crane_sym.scenes.reading import load_scene
+    scene = load_scene("hoist_table1")
+    spec = registry.sweep_outputs("hoist_brakes")["peak_elastic_gearbox_torque"]
+    stiffness = np.array([1e4, 4e4, 1e5])
+    values = {**{n: scene.parameters[n] for n in spec.parameters}, "c": stiffness}
+    paper = spec.evaluate(values, {"duration": scene.options["duration"]})
+    ours = designs(FIG9).largest("gearbox_mesh.factor", {"gearbox_mesh.stiffness": stiffness})
+    assert np.allclose(ours, paper, rtol=1e-9, atol=0)
+    assert paper[-1] == pytest.approx(8.5667312106, rel=1e-9)

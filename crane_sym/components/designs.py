@@ -279,12 +279,13 @@ def designs(path: str | Path, digest: str | None = None) -> Designs:
     digest : str, optional
         The SHA-256 of its bytes when the sweep was planned.
     """
-    key = (str(Path(path).resolve()), digest or "")
+    resolved = Path(path).resolve()
+    current = hashlib.sha256(resolved.read_bytes()).hexdigest()
+    if digest is not None and current != digest:
+        raise ComponentError(f"{str(path)!r} changed while the sweep ran")
+    key = (str(resolved), current)              # an edited file is read anew
     if key not in _CACHE:
-        found = Designs(path)
-        if digest is not None and found.digest != digest:
-            raise ComponentError(f"{str(path)!r} changed while the sweep ran")
-        _CACHE[key] = found
+        _CACHE[key] = Designs(resolved)
     return _CACHE[key]
 
 
