@@ -78,11 +78,12 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "or a component model TOML file (axes COMPONENT.FIELD, outputs LINK.peak "
                    "and LINK.factor)")
     p.add_argument("--vary", action="append", metavar="NAME=START:STOP:N[:log] [UNIT]",
-                   help="a grid axis over a parameter of the scene, in the unit the scene "
-                   "gives it unless UNIT is named (repeat for more axes)")
+                   help="a grid axis over a parameter of the scene (of a component file: "
+                   "COMPONENT.FIELD), in the unit the file gives it unless UNIT is named "
+                   "(repeat for more axes)")
     p.add_argument("--output", action="append", metavar="NAME",
                    help="an output to sweep: a generated function or a simulated response "
-                   "of the paper (repeatable)")
+                   "of the paper; of a component file LINK.peak or LINK.factor (repeatable)")
     p.add_argument("--at", action="append", metavar="NAME=VALUE [UNIT]",
                    help="a value for an argument the scene does not give (t=0.12, "
                    "t=120 ms), or a window t=START:STOP:N over which each output taking t "
