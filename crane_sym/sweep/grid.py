@@ -29,14 +29,10 @@ measurement did not favour them (Martyntsiv et al.'s drum, 24 designs: threads 1
 14.1 s, synchronous 11.1 s at load ≈ 3 on 2 cores): starting two worker
 processes costs ~3 s and the second core was busy; they are kept for large
 simulated sweeps on a machine with free cores, the case they serve. A
-component file's outputs run synchronously: a sweep that writes asks for each
-block three times, which :mod:`crane_sym.components.designs` answers from the
-block it solved last in the process, and two threads or processes would solve
-a block twice or three times over (400 designs of ``hoist_fig9.toml`` with the
-dataset written, load ≈ 7.5 on 2 cores: synchronous 3.8 s and 5.1 s, threads
-6.3 s and 6.6 s). With ``scheduler=ADDRESS`` a
-``dask.distributed`` scheduler runs the same graph (its workers must see
-``out``: a shared file system, or one machine).
+component file's outputs run synchronously: a block asked for three times is
+solved once in the process (:mod:`crane_sym.components.designs`). With
+``scheduler=ADDRESS`` a ``dask.distributed`` scheduler runs the same graph
+(its workers must see ``out``: a shared file system, or one machine).
 """
 from __future__ import annotations
 
@@ -110,13 +106,12 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
     shape = tuple(len(b) for b in blocks)
     grid = {name: np.asarray(b, dtype=float).reshape([-1 if k == i else 1 for k in range(n)])
             for i, (name, b) in enumerate(zip(axis_names, blocks))}
+    values = {a: grid[a] if a in grid else fixed[a] for a in args if kind != "component"}
+    window = options.get("window")
     if kind == "component":                    # a component file's link, batched
         from crane_sym.components.designs import evaluate_block as component_block
         result = component_block(options["component_file"], options["digest"], output, grid)
-        return np.ascontiguousarray(np.broadcast_to(np.asarray(result, dtype=float), shape))
-    values = {a: grid[a] if a in grid else fixed[a] for a in args}
-    window = options.get("window")
-    if kind == "closed":
+    elif kind == "closed":
         func = getattr(importlib.import_module(f"crane_sym.generated.{derivation}"), output)
         result = func(*[values[a] for a in args])
         if window is not None and window[0] in args:   # the maximum over the window
