@@ -138,6 +138,19 @@ def sweep_outputs(name: str) -> dict[str, SweepOutput]:
     return dict(getattr(module(name), "SWEEP_OUTPUTS", {}))
 
 
+def value_units(name: str) -> dict[str, str]:
+    """The unit of each number a scene report of this derivation gives
+    (``SceneReport.values``, SI): pattern (``fnmatch``, the first that
+    matches) -> unit, from the package's ``VALUE_UNITS``; no build needed.
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
+    return dict(getattr(module(name), "VALUE_UNITS", {}))
+
+
 @lru_cache(maxsize=None)
 def get(name: str) -> Derivation:
     """The built derivation for ``name`` (built once per process)."""

@@ -22,6 +22,7 @@ torque, force*length.
 from __future__ import annotations
 
 import difflib
+import functools
 import math
 import numbers
 import re
@@ -107,6 +108,13 @@ def _parse_unit(text: str) -> tuple[float, float, Dimension]:
     """Return (numerator, denominator, dimension); kept apart for exact rounding."""
     if not isinstance(text, str):
         raise UnitError(f"unit must be text, got {type(text).__name__}")
+    return _parse_unit_text(text)
+
+
+@functools.lru_cache(maxsize=1024)
+def _parse_unit_text(text: str) -> tuple[float, float, Dimension]:
+    """:func:`_parse_unit` of a text, cached (SymPy's powers of dimensions cost
+    ~0.1 ms each; a sweep of a component file reads its units once a design)."""
     if len(text) > _MAX_TEXT:
         raise UnitError(f"text longer than {_MAX_TEXT} characters")
     text, num, den, dim = text.strip(), 1.0, 1.0, _ONE
@@ -193,8 +201,15 @@ def unit_text(text: str) -> str:
 
 
 def _deps(d: Dimension) -> dict[str, int]:
-    return {str(k.name): int(v)
-            for k, v in dimsys_SI.get_dimensional_dependencies(d).items() if v != 0}
+    return dict(_dependencies(d))
+
+
+@functools.lru_cache(maxsize=1024)
+def _dependencies(d: Dimension) -> tuple[tuple[str, int], ...]:
+    """SI base dimensions of ``d`` (cached: SymPy takes ~0.15 ms a call, and a
+    sweep of a component file checks every part's dimension once a design)."""
+    return tuple((str(k.name), int(v))
+                 for k, v in dimsys_SI.get_dimensional_dependencies(d).items() if v != 0)
 
 
 def same_dimension(a: Dimension, b: Dimension) -> bool:

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 from pathlib import Path
 
 from crane_sym import progress
@@ -17,6 +18,10 @@ def cmd_run_components(args: argparse.Namespace) -> int:
     with progress.reporting(progress.Progress(progress.wanted(quiet))) as say:
         with say.task(f"deriving and running {args.scene}"):
             report = run_component_file(args.scene, Path(args.out))
+    if getattr(args, "format", "text") == "json":
+        from crane_sym.components.report import results
+        print(json.dumps(results(report), indent=2, ensure_ascii=False))
+        return 0
     model = report.run.model
     print(f"model {model.name}: {model.title}" if model.title else f"model {model.name}")
     for line in report.lines:

@@ -233,10 +233,16 @@ def cmd_run(args: argparse.Namespace) -> int:
         return cmd_run_components(args)
     from crane_sym.scenes.run import run_scene
     from crane_sym.scenes.reading import load_scene
+    from crane_sym.scenes.specialize import module_name
     with progress.reporting(_progress(args)) as say:
         with say.task(f"reading scene {args.scene}"):
             scene = load_scene(args.scene)
         report, figures = run_scene(scene, Path(args.out))
+    if args.format == "json":
+        from crane_sym.scenes.results import scene_results
+        files = [Path(args.out) / module_name(scene), *figures]
+        print(json.dumps(scene_results(scene, report, files), indent=2, ensure_ascii=False))
+        return 0
     print(f"scene {scene.name}: {scene.title}")
     for line in report.lines:
         print(f"  {line}")
@@ -340,6 +346,9 @@ def parser() -> argparse.ArgumentParser:
                    "model TOML file (a [model] table; README, \"Your own drive train\")")
     p.add_argument("--out", default=".", help="folder for the scene module and the plots "
                    "(default: .)")
+    p.add_argument("--format", choices=("text", "json"), default="text",
+                   help="text (default) or JSON on stdout: every result with its unit, the "
+                   "warnings as a list")
     p = _subcommand(sub, "model", "a component model: its parts, rigid groups, equations "
                     "of motion and modes", _cmd_model)
     p.add_argument("action", choices=("show",))

@@ -30,8 +30,14 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     from crane_sym.sweep.store import sweep_stage
     chunk_bytes = parse_chunk_mib(args.chunk_mib)
     out = output_files.check_folder(args.out, "--out")
-    scene = load_scene(args.scene)
-    chosen = plan(scene, args.vary, args.output, args.at or [], args.limit)
+    from crane_sym.components.reading import is_component_file
+    if is_component_file(args.scene):                 # a drive train of the user's own
+        from crane_sym.sweep.component_plan import plan_file
+        chosen = plan_file(args.scene, args.vary or [], args.output or [], args.at or [],
+                           args.limit)
+    else:
+        chosen = plan(load_scene(args.scene), args.vary, args.output, args.at or [],
+                      args.limit)
     check_grid(chosen, out, chunk_bytes)
     certify = None
     if args.certify:
@@ -68,13 +74,16 @@ def _distributed_quiet() -> Iterator[None]:
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     """The options of ``crane-sym sweep``."""
-    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values)")
+    p.add_argument("scene", help="scene name or path to a scene TOML file (the fixed values), "
+                   "or a component model TOML file (axes COMPONENT.FIELD, outputs LINK.peak "
+                   "and LINK.factor)")
     p.add_argument("--vary", action="append", metavar="NAME=START:STOP:N[:log] [UNIT]",
-                   help="a grid axis over a parameter of the scene, in the unit the scene "
-                   "gives it unless UNIT is named (repeat for more axes)")
+                   help="a grid axis over a parameter of the scene (of a component file: "
+                   "COMPONENT.FIELD), in the unit the file gives it unless UNIT is named "
+                   "(repeat for more axes)")
     p.add_argument("--output", action="append", metavar="NAME",
                    help="an output to sweep: a generated function or a simulated response "
-                   "of the paper (repeatable)")
+                   "of the paper; of a component file LINK.peak or LINK.factor (repeatable)")
     p.add_argument("--at", action="append", metavar="NAME=VALUE [UNIT]",
                    help="a value for an argument the scene does not give (t=0.12, "
                    "t=120 ms), or a window t=START:STOP:N over which each output taking t "
@@ -86,8 +95,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--format", choices=("table", "json"), default="table")
     p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
                    "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler, threads for "
-                   "closed forms, processes for simulated responses; 'threads', 'processes' "
-                   "or 'synchronous' force one)")
+                   "closed forms, processes for simulated responses, synchronous for a "
+                   "component file's; 'threads', 'processes' or 'synchronous' force one)")
     p.add_argument("--chunk-mib", type=float, default=8.0,
                    help="output bytes per block of the grid, in MiB (default 8; at least "
                    "0.1, at most the free memory for one block per core)")

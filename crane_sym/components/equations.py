@@ -24,7 +24,7 @@ of the hybrid system fixes (:mod:`crane_sym.components.hybrid`).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property
 from typing import Callable
 
@@ -37,7 +37,7 @@ from crane_sym.components.parts import Gear
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 
-__all__ = ["Equations", "derive"]
+__all__ = ["Equations", "derive", "parameter_values"]
 
 T_SYMBOL = sp.Symbol("t", real=True)
 #: The LaTeX of a symbol's letter, where it is no Latin letter.
@@ -92,6 +92,9 @@ class Equations:
     values: dict[sp.Symbol, float]
     slopes: tuple[sp.Symbol, ...] = ()
     signals: tuple[sp.Symbol, ...] = ()
+    #: True for a design of a sweep (:meth:`for_design`): :meth:`numeric`
+    #: evaluates the lambdified form shared by every design of the model.
+    shared: bool = False
 
     @property
     def t(self) -> sp.Symbol:
@@ -117,14 +120,31 @@ class Equations:
         f = -rows.subs(zero)
         return M, D, K, sp.expand(f)
 
+    def _mode_arguments(self) -> list[list[sp.Symbol]]:
+        return [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
+                list(self.slopes), list(self.signals)]
+
+    @cached_property
+    def _lambdified(self) -> tuple[tuple[sp.Symbol, ...], Callable]:
+        """(parameters, (χ, δ, on, B, β, parameter values) -> (M, D, K, f)):
+        lambdified once, shared by the designs of :meth:`for_design`."""
+        parameters = tuple(sorted({*self.values, *self.motor_loads}, key=str))
+        return parameters, sp.lambdify([*self._mode_arguments(), list(parameters)],
+                                       self.linear, "numpy")
+
     def numeric(self, extra: dict[sp.Symbol, float] | None = None) -> Callable:
         """(χ, δ, on, B, β, L) -> (M, D, K, f) as arrays, the parameters' values put in
         (and ``extra``: a steady motor's solved torque)."""
         values = {**self.values, **(extra or {})}
-        M, D, K, f = (m.xreplace(values) for m in self.linear)
-        args = [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
-                list(self.slopes), list(self.signals)]
-        fn = sp.lambdify(args, (M, D, K, f), "numpy")
+        if self.shared:
+            parameters, shared = self._lambdified
+            given = [values.get(p, float("nan")) for p in parameters]
+
+            def fn(*mode):
+                return shared(*mode, given)
+        else:
+            M, D, K, f = (m.xreplace(values) for m in self.linear)
+            fn = sp.lambdify(self._mode_arguments(), (M, D, K, f), "numpy")
 
         def evaluate(chi, delta, on, friction, slopes=(), signals=()):
             signals = list(signals) or [0.0] * len(self.signals)
@@ -148,12 +168,72 @@ class Equations:
                         f"{_HEADS.get(head, head)}_{{{upright}}}")
         return names
 
+    def for_design(self, assembly: Assembly) -> "Equations":
+        """These equations for another design of the model: ``assembly`` has the
+        same parts with other values (the same parameter symbols); the symbolic
+        work and its lambdified form are shared, not redone (a design sweep
+        builds one a design). ValueError if the parameters differ.
+
+        Parameters
+        ----------
+        assembly : Assembly
+            The design's parts, assembled.
+        """
+        values = parameter_values(assembly)
+        if list(values) != list(self.values) or \
+                [l.backlash > 0 for l in assembly.links] != \
+                [l.backlash > 0 for l in self.assembly.links]:
+            raise ValueError("for_design: the design's parts differ from the model's in "
+                             "more than their values")
+        design = replace(self, assembly=assembly, values=values, shared=True)
+        design.__dict__["linear"] = self.linear              # cached_property: shared
+        design.__dict__["_lambdified"] = self._lambdified
+        return design
+
     def latex(self) -> list[str]:
         """The equations of motion in LaTeX, one per coordinate, as a mechanics
         text writes them (q̇, q̈; :func:`crane_sym.latex.latex`, with
         :attr:`latex_names`)."""
         from crane_sym.latex import latex
         return [latex(e, symbol_names=self.latex_names) for e in self.lagrange.equations]
+
+
+def parameter_values(assembly: Assembly) -> dict[sp.Symbol, float]:
+    """Every parameter symbol of :func:`derive`'s equations with its SI value in
+    ``assembly`` (a steady motor's torque, solved later, left out): the one
+    place a part's value meets its symbol, for the model and for each design
+    of a sweep (:meth:`Equations.for_design`).
+
+    Parameters
+    ----------
+    assembly : Assembly
+        The assembled parts.
+    """
+    values: dict[sp.Symbol, float] = {}
+    for g in assembly.groups:
+        for body, _ in g.members:
+            values[_p(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}")] = body.inertia
+    for part in assembly.rigid:
+        if isinstance(part, Gear):
+            values[_p(f"i_{part.name}")] = part.ratio
+        else:
+            values[_p(f"r_{part.name}")] = part.radius
+            values[_p(f"n_{part.name}")] = part.reeving
+    for link in assembly.links:
+        name = link.part.name
+        values[_p(f"c_{name}")] = link.stiffness
+        values[sp.Symbol(f"d_{name}", nonnegative=True)] = link.damping
+    for load in assembly.loads:
+        part = load.part
+        if isinstance(part, Motor) and load.load is not None:
+            values[_r(f"M_{part.name}")] = load.load
+        elif isinstance(part, Gravity):
+            values[_p(f"g_{part.name}")] = part.g
+        elif isinstance(part, Resistance):
+            values[_r(f"R_{part.name}")] = load.load
+        elif isinstance(part, Characteristic):
+            values[_r(f"v0_{part.name}")] = load.values[0]
+    return values
 
 
 def derive(assembly: Assembly) -> Equations:
@@ -163,21 +243,13 @@ def derive(assembly: Assembly) -> Equations:
     for g in assembly.groups:
         letter = "theta" if g.motion == "rotating" else "x"
         coords.append(sp.Function(f"{letter}_{g.name}", real=True)(t))
-    values: dict[sp.Symbol, float] = {}
     where: dict[str, tuple[sp.Expr, sp.Expr]] = {}      # body -> (κ symbolic, q)
     T = sp.Integer(0)
     for g, q in zip(assembly.groups, coords):
         for (body, _), kappa in zip(g.members, g.factors):
             where[body.name] = (kappa, q)
             J = _p(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}")
-            values[J] = body.inertia
             T += J * (kappa * q.diff(t)) ** 2 / 2
-    for part in assembly.rigid:
-        if isinstance(part, Gear):
-            values[_p(f"i_{part.name}")] = part.ratio
-        else:
-            values[_p(f"r_{part.name}")] = part.radius
-            values[_p(f"n_{part.name}")] = part.reeving
     V = D = sp.Integer(0)
     twists, loads, contact, flank = [], [], [], []
     for link in assembly.links:
@@ -185,7 +257,6 @@ def derive(assembly: Assembly) -> Equations:
         (ka, qa), (kb, qb) = (where[e] for e in link.part.ends)
         u = kb * qb - ka * qa
         c, d = _p(f"c_{name}"), sp.Symbol(f"d_{name}", nonnegative=True)
-        values[c], values[d] = link.stiffness, link.damping
         chi, delta = sp.Integer(1), sp.Integer(0)
         if link.backlash > 0:
             chi, delta = _r(f"chi_{name}"), _r(f"delta_{name}")
@@ -206,22 +277,17 @@ def derive(assembly: Assembly) -> Equations:
             on, M = _r(f"on_{part.name}"), _r(f"M_{part.name}")
             switches.append(on)
             motors.append(M)
-            if load.load is not None:
-                values[M] = load.load
             F = on * M
         elif isinstance(part, Gravity):
             m, g = _p(f"m_{part.body}"), _p(f"g_{part.name}")
-            values[g] = part.g
             F = m * g * (1 if part.direction == "+" else -1)
         elif isinstance(part, Resistance):
             F = _r(f"R_{part.name}")
-            values[F] = load.load
         elif isinstance(part, Brake):
             F = _r(f"B_{part.name}")
             friction.append(F)
         elif isinstance(part, Characteristic):
             beta, v0 = _p(f"beta_{part.name}"), _r(f"v0_{part.name}")
-            values[v0] = load.values[0]
             slopes.append(beta)
             F = beta * (v0 - kappa * q.diff(t))
         elif isinstance(part, MotorLaw):
@@ -239,6 +305,7 @@ def derive(assembly: Assembly) -> Equations:
         kappa, q = where[part.body]
         forces[q] += kappa * _rigid_drive(assembly, where, part.body, a_law, acting)
     eqs = lagrange_equations(T, V, coords, t, forces, D)
+    values = parameter_values(assembly)
     return Equations(assembly, tuple(coords), T, V, D, forces, eqs, tuple(twists),
                      tuple(loads), tuple(contact), tuple(flank), tuple(switches),
                      tuple(friction), tuple(motors), values, tuple(slopes), tuple(signals))

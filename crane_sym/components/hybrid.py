@@ -97,6 +97,11 @@ class ComponentSystem:
         for m, law in enumerate(self.laws):
             self.events[f"{law.part.name} next piece"] = ("piece", m)
         self._linear = lru_cache(maxsize=None)(self._linear_uncached)
+        # a mode's matrices and guards, kept: a batched sweep asks each design
+        # for them once a phase (the copies handed out may be changed)
+        self._matrices = lru_cache(maxsize=None)(self._matrices_uncached)
+        self._guards = lru_cache(maxsize=None)(self._guards_uncached)
+        self._twists: dict[str, np.ndarray] = {}
 
     # --- positions in the state -------------------------------------------------
     def q(self, g: int) -> int:
@@ -108,11 +113,13 @@ class ComponentSystem:
     def twist(self, link) -> np.ndarray:
         """Weights of a link's twist u = κ_b q_b − κ_a q_a (and, shifted by one,
         of its rate)."""
-        w = np.zeros(self.size)
-        (ga, ka, _), (gb, kb, _) = (self.assembly.place[e] for e in link.part.ends)
-        w[self.q(ga)] -= ka
-        w[self.q(gb)] += kb
-        return w
+        if link.part.name not in self._twists:
+            w = np.zeros(self.size)
+            (ga, ka, _), (gb, kb, _) = (self.assembly.place[e] for e in link.part.ends)
+            w[self.q(ga)] -= ka
+            w[self.q(gb)] += kb
+            self._twists[link.part.name] = w
+        return self._twists[link.part.name].copy()
 
     # --- the linear pieces --------------------------------------------------------
     def _flanks(self, contacts: tuple[int, ...]) -> tuple[list[float], list[float]]:
@@ -175,6 +182,10 @@ class ComponentSystem:
 
     def matrices(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(A, b) of a mode."""
+        A, b = self._matrices(mode)
+        return A.copy(), b.copy()
+
+    def _matrices_uncached(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
         F, c = self.law_forcing(mode)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
@@ -209,6 +220,9 @@ class ComponentSystem:
     def guards(self, mode: Mode) -> list[Guard]:
         """Contacts that change, sliding groups that come to rest, held groups
         that slide again."""
+        return list(self._guards(mode))
+
+    def _guards_uncached(self, mode: Mode) -> tuple[Guard, ...]:
         out = []
         for l, c in zip(self.backlash, mode.contacts):
             u = tuple(self.twist(l))
@@ -231,7 +245,7 @@ class ComponentSystem:
                     out.append(Guard(f"{name} slips +", tuple(wn - wc), kn - kc, 1))
                 if (wn + wc).any():
                     out.append(Guard(f"{name} slips -", tuple(wn + wc), kn + kc, -1))
-        return out
+        return tuple(out)
 
     def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
         """The next mode and state after a guard or a scheduled event."""

@@ -45,7 +45,7 @@ from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, stationary_times
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
 
-__all__ = ["ComponentRun", "LinkPeak", "Model"]
+__all__ = ["ComponentRun", "LinkPeak", "Model", "start_load"]
 
 
 @dataclass(frozen=True)
@@ -90,10 +90,8 @@ class ComponentRun:
         for i, link in enumerate(self.system.assembly.links):
             affine = self.system.link_load(i)
             when, peak = _largest(self.result, self.system, affine)
-            w, k = affine(self.mode)
-            static = float(np.asarray(w) @ self.x0 + k)
+            static, reference = start_load(self.system, self.mode, self.x0, i)
             motion = self.system.assembly.bodies[link.part.first].motion
-            reference = link.reference if link.reference is not None else (static or None)
             out.append(LinkPeak(link.part.name, when, peak,
                                 "N*m" if motion == ROTATING else "N", static, reference))
         return out
@@ -106,6 +104,27 @@ class ComponentRun:
             raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
         return HybridRun(self.system, self.mode, self.x0, self.t_end, self.schedule,
                          self.system.link_load(names.index(link)))
+
+
+def start_load(system: ComponentSystem, mode: Mode, x0: np.ndarray,
+               index: int) -> tuple[float, float | None]:
+    """(load at the start, reference) of elastic link ``index``: the reference
+    the dynamic factor divides by is the link's given ``reference``, else its
+    load at the start (None where that is zero).
+
+    Parameters
+    ----------
+    system : ComponentSystem
+        The run's system.
+    mode, x0 : Mode, ndarray
+        The run's first mode and state.
+    index : int
+        The link's position among the model's elastic links.
+    """
+    w, k = system.link_load(index)(mode)
+    static = float(np.asarray(w) @ x0 + k)
+    given = system.assembly.links[index].reference
+    return static, given if given is not None else (static or None)
 
 
 def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[float, float]:
@@ -284,6 +303,24 @@ class Model:
         positions = np.concatenate([[0.0], z[:K.shape[1] - 1]])
         torque = float(z[-1]) if unit is not None else 0.0
         return positions, torque
+
+    def with_parts(self, components: Sequence[Component]) -> "Model":
+        """This model with other values of its parts (a design of a sweep): the
+        parts assembled anew, the symbolic derivation shared
+        (:meth:`~crane_sym.components.equations.Equations.for_design`, which
+        raises ValueError for parts that differ in more than their values).
+
+        Parameters
+        ----------
+        components : sequence of Component
+            The parts, as :attr:`components` but for their values.
+        """
+        model = object.__new__(Model)
+        model.components = tuple(components)
+        model.name, model.title = self.name, self.title
+        model.assembly = assemble(model.components)
+        model.equations = self.equations.for_design(model.assembly)
+        return model
 
     def schedule(self) -> tuple[tuple[float, str], ...]:
         """The events known in advance: brakes engaging and their ramps ending,

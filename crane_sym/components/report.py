@@ -19,8 +19,9 @@ from crane_sym.components.model import ComponentRun
 from crane_sym.components.reading import ComponentFile, read_component_file
 from crane_sym.mechanics.phase_table import values
 from crane_sym.scenes.panels import Panel, format_quantity
+from crane_sym.scenes.results import number
 
-__all__ = ["ComponentReport", "load_figures", "report_lines", "run_component_file"]
+__all__ = ["ComponentReport", "load_figures", "report_lines", "results", "run_component_file"]
 
 #: Points of the plotted curves.
 POINTS = 2001
@@ -47,6 +48,34 @@ def report_lines(run: ComponentRun) -> list[str]:
     for t, event in run.events:
         lines.append(f"event at t = {format_quantity(t, 's', 6)}: {event}")
     return lines
+
+
+def results(report: ComponentReport) -> dict:
+    """What ``crane-sym run FILE --format json`` prints: per elastic link
+    ``<link>.peak`` (signed, as printed), ``<link>.peak_time``,
+    ``<link>.start_load`` and ``<link>.factor`` (None without a reference),
+    each as ``{"value": number, "unit": text}``; the events with their times;
+    no warnings (a component run holds throughout); the files written.
+
+    Parameters
+    ----------
+    report : ComponentReport
+        From :func:`run_component_file`.
+    """
+    model = report.run.model
+    found = {}
+    for p in report.run.peaks:
+        found.update({f"{p.link}.peak": {"value": number(p.value), "unit": p.unit},
+                      f"{p.link}.peak_time": {"value": number(p.time), "unit": "s"},
+                      f"{p.link}.start_load": {"value": number(p.static), "unit": p.unit},
+                      f"{p.link}.factor": {"value": None if p.factor is None
+                                           else number(p.factor), "unit": "1"}})
+    return {"scene": model.name, "title": model.title, "model": model.name,
+            "results": found,
+            "events": [{"time": {"value": number(t), "unit": "s"}, "event": e}
+                       for t, e in report.run.events],
+            "warnings": [], "lines": list(report.lines),
+            "files": [str(f) for f in report.files]}
 
 
 def _json(run: ComponentRun, name: str) -> str:

@@ -28,9 +28,11 @@ CPU seconds per wall second with two threads). On this shared machine the
 measurement did not favour them (Martyntsiv et al.'s drum, 24 designs: threads 11.2 s, processes
 14.1 s, synchronous 11.1 s at load ≈ 3 on 2 cores): starting two worker
 processes costs ~3 s and the second core was busy; they are kept for large
-simulated sweeps on a machine with free cores, the case they serve. With ``scheduler=ADDRESS`` a
-``dask.distributed`` scheduler runs the same graph (its workers must see
-``out``: a shared file system, or one machine).
+simulated sweeps on a machine with free cores, the case they serve. A
+component file's outputs run synchronously: a block asked for three times is
+solved once in the process (:mod:`crane_sym.components.designs`). With
+``scheduler=ADDRESS`` a ``dask.distributed`` scheduler runs the same graph
+(its workers must see ``out``: a shared file system, or one machine).
 """
 from __future__ import annotations
 
@@ -86,7 +88,9 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
     output : str
         The output's name.
     kind : str
-        ``"closed"`` (a generated function) or ``"simulated"`` (a sweep output).
+        ``"closed"`` (a generated function), ``"simulated"`` (a sweep output)
+        or ``"component"`` (an elastic link of a component file, ``options``
+        naming the file: :mod:`crane_sym.components.designs`).
     args : tuple of str
         The output's arguments, in order.
     axis_names : tuple of str
@@ -102,9 +106,12 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
     shape = tuple(len(b) for b in blocks)
     grid = {name: np.asarray(b, dtype=float).reshape([-1 if k == i else 1 for k in range(n)])
             for i, (name, b) in enumerate(zip(axis_names, blocks))}
-    values = {a: grid[a] if a in grid else fixed[a] for a in args}
+    values = {a: grid[a] if a in grid else fixed[a] for a in args if kind != "component"}
     window = options.get("window")
-    if kind == "closed":
+    if kind == "component":                    # a component file's link, batched
+        from crane_sym.components.designs import evaluate_block as component_block
+        result = component_block(options["component_file"], options["digest"], output, grid)
+    elif kind == "closed":
         func = getattr(importlib.import_module(f"crane_sym.generated.{derivation}"), output)
         result = func(*[values[a] for a in args])
         if window is not None and window[0] in args:   # the maximum over the window
@@ -155,11 +162,13 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
         Workers to share the blocks (default: the cores).
     """
     from dask.array.core import normalize_chunks
-    simulated = [o for o in plan.outputs if o.kind == "simulated"]
+    simulated = [o for o in plan.outputs if o.kind != "closed"]
     if simulated:
         workers = workers or os.cpu_count() or 1
-        specs = registry.sweep_outputs(plan.derivation)
-        if all(getattr(specs.get(o.name), "batched", False) for o in simulated):
+        specs = ({} if all(o.kind == "component" for o in simulated)
+                 else registry.sweep_outputs(plan.derivation))
+        if all(o.kind == "component" or getattr(specs.get(o.name), "batched", False)
+               for o in simulated):
             designs = min(BATCH_DESIGNS, math.ceil(plan.points / workers))
         else:
             designs = math.ceil(plan.points / (4 * workers))
@@ -294,7 +303,7 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     blocks.
 
     ``scheduler``: None for Dask's local scheduler (threads for closed forms,
-    processes for simulated responses), ``"synchronous"``, ``"threads"``,
+    processes for simulated responses, synchronous for a component file's), ``"synchronous"``, ``"threads"``,
     ``"processes"``, or the address of a ``dask.distributed`` scheduler.
     On a failure or signal, the tasks that write are stopped (local pools) or
     cancelled and waited for (a live scheduler) before the partial dataset is
@@ -339,8 +348,9 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
                                                         zarr_format=2, consolidated=False))
         local = scheduler if client is None else None
         if client is None and local is None:
-            simulated = any(o.kind == "simulated" for o in plan.outputs)
-            local = "processes" if simulated else "threads"
+            kinds = {o.kind for o in plan.outputs}
+            local = ("threads" if kinds == {"closed"} else
+                     "synchronous" if kinds == {"component"} else "processes")
         start = time.perf_counter()
         if client is not None:
             results = compute_remote(client, tasks, quiet, scheduler)

@@ -143,7 +143,10 @@ def names(plan: SweepPlan) -> dict[str, str]:
     """Name -> how the PNG writes it, for every axis, output and window
     variable: the paper's LaTeX name in mathtext (``LATEX_NAMES``, else
     SymPy's name of the symbol; an output by the symbol a step of the
-    derivation defines as its expression, else in words)."""
+    derivation defines as its expression, else in words; a component file's
+    fields and outputs by their names)."""
+    if any(o.kind == "component" for o in plan.outputs):
+        return {**{a.name: a.name for a in plan.axes}, **{o.name: o.name for o in plan.outputs}}
     d = registry.get(plan.derivation)
 
     def tex(symbol, fallback: str) -> str:

@@ -46,8 +46,10 @@ MIN_CHUNK_MIB = 0.1
 
 _NUM = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
 _NAME = r"[A-Za-z_][A-Za-z0-9_]{0,63}"
-_VARY = re.compile(rf"({_NAME})=({_NUM}):({_NUM}):(\d{{1,12}})(:log)?(?:\s+(\S.{{0,60}}))?")
-_LIMIT = re.compile(rf"\s*({_NAME})\s*(<=|>=)\s*({_NUM})\s*(\S.{{0,60}})?")
+#: A name, or ``component.field`` (the fields and outputs of a component file).
+_DOTTED = rf"{_NAME}(?:\.{_NAME})?"
+_VARY = re.compile(rf"({_DOTTED})=({_NUM}):({_NUM}):(\d{{1,12}})(:log)?(?:\s+(\S.{{0,60}}))?")
+_LIMIT = re.compile(rf"\s*({_DOTTED})\s*(<=|>=)\s*({_NUM})\s*(\S.{{0,60}})?")
 _AT = re.compile(rf"({_NAME})=({_NUM})(?::({_NUM}):(\d{{1,7}}))?(?:\s*([A-Za-zµμ].{{0,60}}))?")
 
 

@@ -46,12 +46,12 @@ from .hard_cases import hard_cases
 from .model import AUTHORS, HANDOUT_WORDS, LATEX_NAMES, MODEL, MODEL_SYMBOLS, PAPER, model_energies
 from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .outputs import BENCH_PARAMETERS, damping_switch, load_response, outputs
-from .report import scene_report
+from .report import VALUE_UNITS, scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
 
 #: What the registry, the CLI and the walkthrough read from the module.
 __all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "HANDOUT_WORDS", "LATEX_NAMES", "SCENE_CHECKS",
-           "SCENE_OPTIONS", "SWEEP_OUTPUTS", "build", "hard_cases", "scene_report"]
+           "SCENE_OPTIONS", "SWEEP_OUTPUTS", "build", "hard_cases", "scene_report", "VALUE_UNITS"]
 
 ID = "drum_drive"
 TITLE = "Dynamic model of a drive with a driving drum"

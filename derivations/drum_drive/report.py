@@ -17,6 +17,15 @@ from .model import COORDS, STATE
 from .options import SIM_OPTIONS
 from .report_state import state_report
 
+#: The unit of each number of the reports (this one's and ``report_state``'s;
+#: SI, ``"1"`` for a ratio), for ``crane-sym run --format json`` (``fnmatch``
+#: patterns, the first that matches).
+VALUE_UNITS = {"omega_*": "rad/s", "f_*": "Hz", "y_*": "m", "running_y": "m", "rest_y": "m",
+               "t_valid_end": "s", "run_time": "s", "F1_*": "N", "F2_*": "N",
+               "running_F*": "N", "v_end": "m/s", "running_speed": "m/s", "margin_min": "1",
+               "design_margin": "1", "least_mu_alpha": "1", "drum_torque": "N*m",
+               "energy_error": "1", "max_real_over_abs": "1", "integrator_gap": "1"}
+
 
 def argument_orders(generated) -> dict[str, list[str]]:
     """Function name -> argument names, read from the generated module's

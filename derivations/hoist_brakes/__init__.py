@@ -45,12 +45,12 @@ from .model import (AUTHORS, BF_SB, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, LF
 from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .outputs import outputs, physical, tabulated
 from .published import PUBLISHED
-from .report import scene_report
+from .report import VALUE_UNITS, scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
 
 __all__ = ["BATCHED_BENCH_CASES", "ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODELS",
            "LATEX_NAMES", "PAPER", "SCENE_CHECKS", "SCENE_OPTIONS", "SWEEP_OUTPUTS", "TITLE",
-           "build", "hard_cases", "scene_report"]
+           "build", "hard_cases", "scene_report", "VALUE_UNITS"]
 
 
 def build() -> Derivation:

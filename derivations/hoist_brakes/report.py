@@ -11,6 +11,12 @@ from __future__ import annotations
 
 from crane_sym.scenes.kinds import SceneKind, report_for
 
+#: The unit of each number of :func:`scene_report` (SI; ``"1"`` for a ratio such
+#: as M_G/M_st), for ``crane-sym run --format json`` (``fnmatch`` patterns, the
+#: first that matches).
+VALUE_UNITS = {"t_*": "s", "p": "rad/s", "backlash_motor": "rad", "peak_fig9*": "1",
+               "v0": "m/s"}
+
 
 def hoist_report(scene, module):
     """Numbers and figures of a scene (see ``crane_sym.scenes.reading``) for this model.

@@ -40,7 +40,7 @@ from .hard_cases import hard_cases
 from .model import AUTHORS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .drive_law_scene import DRIVE_LAW
 from .options import SCENE_CHECKS, SCENE_OPTIONS
-from .report import scene_report
+from .report import VALUE_UNITS, scene_report
 from .steps import (drive_laws, duhamel_integral, dynamic_coefficients,
                     equations_of_motion, initial_conditions)
 from .steps_load_cases import load_cases
@@ -51,7 +51,7 @@ SCENE_LOADS = {DRIVE_LAW.table: DRIVE_LAW}
 
 __all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SAMPLED_BENCH_CASES",
            "SCENE_CHECKS", "SCENE_LOADS", "SCENE_OPTIONS", "SWEEP_BENCH_CASES", "build",
-           "hard_cases", "published_formulas", "scene_report"]
+           "hard_cases", "published_formulas", "scene_report", "VALUE_UNITS"]
 
 
 def published_formulas() -> list[PublishedFormula]:

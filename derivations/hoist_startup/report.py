@@ -52,6 +52,15 @@ CASES = (drive_law.PICKUP, drive_law.FROM_WEIGHT)
 _CASE_TEXT = {drive_law.PICKUP: "with pick-up", drive_law.FROM_WEIGHT: "from weight"}
 _MAX_DEPTH = 16          # bisection depth of the interval search (see ``maxima``)
 
+#: The unit of each number of the reports (SI; ``"1"`` for a ratio: K = x/x_st,
+#: the lag in x_st, the load's acceleration in v0/t_n, the time of (65)'s maximum
+#: in t_n; ``certified`` is 1 or 0), for ``crane-sym run --format json``
+#: (``fnmatch`` patterns, the first that matches).
+VALUE_UNITS = {"t_ktilde_opt_max_*": "1", "t_*": "s", "valid_*": "s", "T": "s",
+               "Omega": "rad/s", "v0": "m/s", "K_*": "1", "load_max_*": "1",
+               "ktilde_opt_max_*": "1", "paper_ktilde_max_*": "1", "lag_*": "1",
+               "certified": "1"}
+
 
 def _generated() -> ModuleType:
     return importlib.import_module(GENERATED)

@@ -14,6 +14,15 @@ from crane_sym.scenes.kinds import SceneKind, report_for
 
 from .options import FIG10_SCENES, PAIR_SCENES, STARTUP_SCENES, SUPPORT_SCENES
 
+#: The unit of each number of the reports (SI; ``"1"`` for a profile shift
+#: coefficient, a ratio or a log10 of a probability), for ``crane-sym run
+#: --format json`` (``fnmatch`` patterns, the first that matches).
+VALUE_UNITS = {"x_*": "1", "x1": "1", "x2": "1", "alpha_tw_deg": "deg", "d_a*": "m",
+               "s_a*_over_m": "1", "s_a*": "m", "epsilon_alpha": "1", "R_max": "N",
+               "log10_P_6sigma_*": "1", "m_d": "kg", "b": "N*s/m", "v0": "m/s",
+               "beta_1": "N*s/m", "q": "1", "a0_rigid": "m/s^2", "v_close_*": "m/s",
+               "F_max_*": "N", "psi_*": "1", "t_max_*": "s", "a[0-9]_*": "m/s^2"}
+
 
 def fig10_report(scene, module):
     """Fig. 10: curves 1–4 over the tooth numbers z_min..z_max (settings,

@@ -35,10 +35,10 @@ from .hard_cases import hard_cases
 from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .outputs import ode_systems, outputs
 from .published import PUBLISHED
-from .report import scene_report
+from .report import VALUE_UNITS, scene_report
 
 __all__ = ["SAMPLED_BENCH_CASES", "SWEEP_BENCH_CASES", "ID", "AUTHORS", "LATEX_NAMES", "PAPER", "TITLE", "build", "hard_cases",
-           "scene_report"]
+           "scene_report", "VALUE_UNITS"]
 
 
 def build() -> Derivation:

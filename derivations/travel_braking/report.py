@@ -8,6 +8,12 @@ from __future__ import annotations
 
 from crane_sym.scenes.kinds import SceneKind, report_for
 
+#: The unit of each number of :func:`scene_report` (SI; ``"1"`` for a ratio),
+#: for ``crane-sym run --format json`` (``fnmatch`` patterns, the first that matches).
+VALUE_UNITS = {"p": "rad/s", "f": "Hz", "F_r": "N", "F_max": "N", "F_max_valid": "N",
+               "t_*": "s", "dynamic_factor": "1", "F_max_over_P_t": "1", "v1_min": "m/s",
+               "v2_min": "m/s"}
+
 
 def braking_report(scene, module):
     """Numbers and curves of a scene (see ``crane_sym.scenes.reading``) for this model.

@@ -1,0 +1,327 @@
+"""Designs of a component file: its model with other values of its parts, and
+the peak load and dynamic factor of each elastic link over a block of designs.
+
+A *field* is one value a component's table gives, or may give, named
+``<component>.<key>`` with the key the file writes (``gearbox_mesh.stiffness``,
+``hook.mass``, ``safety_brakes.delay``). A design sets some fields to values
+in SI; each varied component is rebuilt from its table with those values
+(through the file's own reader, so every check of the file applies), the
+model is assembled anew, and the symbolic derivation is the file's, shared
+(:meth:`crane_sym.components.model.Model.with_parts`); a design whose gaps
+differ from the file's (a backlash varied from or to zero) takes the
+derivation of its own structure, made once.
+
+The outputs, per elastic link ``L``: ``L.peak``, the largest |load| over the
+run from the file's start (N·m, or N between translating bodies), and
+``L.factor``, that peak over |reference| (the link's given ``reference``,
+else its load at the start): the magnitude of what ``crane-sym run`` prints
+as its dynamic factor. A block of designs is solved together by the batched
+solver (:func:`crane_sym.mechanics.batched_runs.largest_of_runs`: one
+:class:`~crane_sym.components.hybrid.ComponentSystem` per design, the closed
+forms, events and extrema batched); :meth:`Designs.per_design` is the same
+numbers one design at a time by ``Model.run``, each model derived from
+scratch, as ``crane-sym run`` does it.
+"""
+from __future__ import annotations
+
+import hashlib
+import math
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Mapping
+
+import numpy as np
+from sympy.physics.units import Dimension, length, time
+from sympy.physics.units.systems.si import dimsys_SI
+
+from crane_sym import units
+from crane_sym.components.hybrid import ComponentSystem
+from crane_sym.components.model import Model, start_load
+from crane_sym.components.parts import DIMENSIONS, ROTATING, ComponentError, value
+from crane_sym.components.reading import NUMBERS, TABLES, _build, read_component_file
+from crane_sym.mechanics.phase_table import HybridRun
+
+__all__ = ["OUTPUTS", "Designs", "Field", "designs", "evaluate_block"]
+
+#: The outputs of each elastic link: suffix -> what it is.
+OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
+           "factor": "dynamic factor of the elastic link {link}: its largest |load| over "
+                     "|{reference}|"}
+_ONE = Dimension(1)
+#: Each key that holds one value: the kind of value (a key of ``DIMENSIONS``,
+#: its dimension by the body's motion) or its dimension, and its sign.
+_KEYS: dict[str, tuple[str | Dimension, str]] = {
+    "inertia": ("inertia", "nonnegative"), "mass": ("mass", "nonnegative"),
+    "ratio": (_ONE, "positive"), "radius": (length, "positive"),
+    "reeving": (_ONE, "positive"), "stiffness": ("stiffness", "positive"),
+    "damping": ("damping", "nonnegative"), "backlash": ("backlash", "nonnegative"),
+    "reference": ("load", "nonzero"), "torque": ("load", "positive"),
+    "force": ("load", "positive"), "delay": (time, "nonnegative"),
+    "time": (time, "positive"), "off_at": (time, "nonnegative"),
+    "g": (length / time**2, "nonnegative"), "speed": ("speed", ""),
+}
+#: Keys whose sign another rule gives: a resistance pushes either way.
+_ANY_SIGN = {("resistance", "torque"), ("resistance", "force")}
+
+
+@dataclass(frozen=True)
+class Field:
+    """A value of one component that a sweep may vary: ``<component>.<key>``,
+    the file's text for it (None: not given, its default), its dimension, the
+    sign it must keep (``positive``, ``nonnegative``, ``nonzero`` or ``""``)."""
+
+    component: str
+    table: str
+    key: str
+    text: str | None
+    dimension: Dimension
+    sign: str
+
+    @property
+    def name(self) -> str:
+        return f"{self.component}.{self.key}"
+
+    @property
+    def unit(self) -> str:
+        """The unit the file writes it in ("1" for a bare number), else SI."""
+        if self.text is not None:
+            return units.unit_text(self.text) or "1"
+        return si_unit(self.dimension)
+
+
+def si_unit(dimension: Dimension) -> str:
+    """The SI unit of ``dimension`` as :mod:`crane_sym.units` reads it
+    (``kg*m^2*s^-2``; ``1`` for none): its factor to SI is exactly 1.
+
+    Parameters
+    ----------
+    dimension : Dimension
+        A dimension of mass, length and time.
+    """
+    deps = dimsys_SI.get_dimensional_dependencies(dimension)
+    names = {"mass": "kg", "length": "m", "time": "s"}
+    parts = [f"{names[str(k.name)]}" + ("" if p == 1 else f"^{int(p)}")
+             for k, p in deps.items() if p]
+    return "*".join(parts) or "1"
+
+
+def _text(value: float, field: Field) -> str | float:
+    """A value in SI as the file's reader takes it."""
+    if field.key in NUMBERS:
+        return float(value)
+    unit = si_unit(field.dimension)
+    return repr(float(value)) + ("" if unit == "1" else f" {unit}")
+
+
+class Designs:
+    """The designs of one component file (read and derived once)."""
+
+    def __init__(self, path: str | Path) -> None:
+        self.path = Path(path)
+        text = self.path.read_bytes()
+        self.digest = hashlib.sha256(text).hexdigest()
+        self.file = read_component_file(self.path)
+        self.model = self.file.model
+        self.data = tomllib.loads(text.decode("utf-8"))
+        self.entries: dict[str, tuple[str, dict]] = {}
+        for kind in TABLES:
+            for entry in self.data.get(kind, []):
+                self.entries[entry["name"]] = (kind, entry)
+        self.position = {p.name: i for i, p in enumerate(self.model.components)}
+        self.links = [l.part.name for l in self.model.assembly.links]
+        self._bases = {self._structure(self.model): self.model}
+        self.fields = self._fields()
+
+    def _fields(self) -> dict[str, Field]:
+        a = self.model.assembly
+        out = {}
+        for name, (kind, entry) in self.entries.items():
+            required, optional = TABLES[kind]
+            for key in (*required, *optional):
+                if key not in _KEYS or (key in ("torque", "force") and key not in entry):
+                    continue
+                raw = entry.get(key)
+                if (isinstance(raw, str) and raw == "steady") or (
+                        kind == "brake" and key == "time"
+                        and entry.get("build_up", "step") == "step"):
+                    continue                 # solved at the start; a step has no time
+                kind_of, sign = _KEYS[key]
+                if (kind, key) in _ANY_SIGN:
+                    sign = ""
+                if isinstance(kind_of, str):
+                    body = entry.get("body") or (entry.get("between") or [None])[0]
+                    motion = a.bodies[body].motion if body in a.bodies else (
+                        ROTATING if kind == "inertia" else "translating")
+                    dimension = DIMENSIONS[kind_of][motion]
+                else:
+                    dimension = kind_of
+                text = raw if isinstance(raw, str) else None if raw is None else repr(raw)
+                out[f"{name}.{key}"] = Field(name, kind, key, text, dimension, sign)
+        return out
+
+    @staticmethod
+    def _structure(model: Model) -> tuple:
+        return tuple(l.backlash > 0 for l in model.assembly.links)
+
+    def outputs(self) -> dict[str, tuple[int, str, str]]:
+        """Output name -> (link index, ``peak`` or ``factor``, SI unit)."""
+        out = {}
+        for i, link in enumerate(self.model.assembly.links):
+            motion = self.model.assembly.bodies[link.part.first].motion
+            for kind in OUTPUTS:
+                unit = ("N*m" if motion == ROTATING else "N") if kind == "peak" else "1"
+                out[f"{link.part.name}.{kind}"] = (i, kind, unit)
+        return out
+
+    def depends(self, output: str) -> tuple[str, ...]:
+        """The fields an output depends on: every field but the links'
+        ``reference`` (only a link's own factor divides by its own)."""
+        link, kind = output.rsplit(".", 1)
+        return tuple(n for n, f in self.fields.items()
+                     if f.key != "reference" or (kind == "factor" and f.component == link))
+
+    def parts(self, values: Mapping[str, float]) -> list:
+        """The components with ``values`` (field name -> SI) put in."""
+        parts = list(self.model.components)
+        changed: dict[str, dict] = {}
+        for name, v in values.items():
+            f = self.fields[name]
+            entry = changed.setdefault(f.component, dict(self.entries[f.component][1]))
+            entry[f.key] = _text(v, f)
+        for component, entry in changed.items():
+            kind = self.entries[component][0]
+            parts[self.position[component]] = _build(
+                kind, entry, f"component model {self.model.name!r}: [[{kind}]] {component!r}")
+        return parts
+
+    def design(self, values: Mapping[str, float]) -> Model:
+        """The model of one design, its derivation shared with the file's (or
+        with the first design of its structure)."""
+        parts = self.parts(values)
+        try:
+            return self.model.with_parts(parts)
+        except ValueError:
+            fresh = Model(parts, self.model.name, self.model.title)
+            base = self._bases.setdefault(self._structure(fresh), fresh)
+            return base.with_parts(parts)
+
+    def start(self, model: Model):
+        """(mode, state, system) of a design's run from the file's start."""
+        f = self.file
+        mode, x0, extra = model.start(f.body, f.speed, f.rest)
+        return mode, x0, ComponentSystem(model.equations, extra)
+
+    @property
+    def duration(self) -> float:
+        """The run's end [s]."""
+        return value("run", "duration", self.file.duration, time).si
+
+    def largest(self, output: str, values: Mapping[str, np.ndarray]) -> np.ndarray:
+        """``output`` of every design of a block (``values``: field -> SI arrays
+        of one shape, or scalars), the designs solved together."""
+        from crane_sym.mechanics.batched_runs import largest_of_runs
+        index, kind, _ = self.outputs()[output]
+        names = list(values)
+        arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names]) \
+            if names else [np.zeros(())]
+        shape = arrays[0].shape
+        runs, reference = [], np.empty(arrays[0].size)
+        t_end = self.duration
+        for k, at in enumerate(np.ndindex(shape)):
+            model = self.design({n: float(a[at]) for n, a in zip(names, arrays)})
+            mode, x0, system = self.start(model)
+            runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
+                                  system.link_load(index)))
+            ref = start_load(system, mode, x0, index)[1]
+            reference[k] = abs(ref) if ref else np.nan
+        result = largest_of_runs(runs, magnitude=True)
+        if result.capped.any():
+            k = int(np.flatnonzero(result.capped)[0])
+            raise RuntimeError(f"{output}: more than 10000 events in the run of design {k} "
+                               "of a block")
+        peak = np.abs(result.value)
+        return (peak if kind == "peak" else peak / reference).reshape(shape)
+
+    def per_design(self, output: str, values: Mapping[str, np.ndarray],
+                   exact: bool | None = None) -> np.ndarray:
+        """:meth:`largest` one design at a time: each design's model derived
+        from scratch and run by ``Model.run`` (the reference of the bench and
+        the tests); ``exact`` as ``Model.run`` takes it (None: as ``crane-sym
+        run`` solves it, SymPy's exact Jordan forms for up to two bodies;
+        False: numeric eigenvectors, the cheaper per-design route)."""
+        index, kind, _ = self.outputs()[output]
+        names = list(values)
+        arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
+        out = np.empty(arrays[0].shape)
+        f = self.file
+        for at in np.ndindex(out.shape):
+            parts = self.parts({n: float(a[at]) for n, a in zip(names, arrays)})
+            run = Model(parts, self.model.name).run(f.duration, f.body, f.speed, exact=exact,
+                                                    rest=f.rest)
+            peak = run.peaks[index]
+            out[at] = abs(peak.value) if kind == "peak" else (
+                abs(peak.factor) if peak.factor is not None else math.nan)
+        return out
+
+
+_CACHE: dict[tuple[str, str], Designs] = {}
+
+
+def designs(path: str | Path, digest: str | None = None) -> Designs:
+    """The :class:`Designs` of a file, read once per process; ComponentError
+    if the file is no longer the one with ``digest``.
+
+    Parameters
+    ----------
+    path : str or Path
+        The component file.
+    digest : str, optional
+        The SHA-256 of its bytes when the sweep was planned.
+    """
+    resolved = Path(path).resolve()
+    current = hashlib.sha256(resolved.read_bytes()).hexdigest()
+    if digest is not None and current != digest:
+        raise ComponentError(f"{str(path)!r} changed while the sweep ran")
+    key = (str(resolved), current)              # an edited file is read anew
+    if key not in _CACHE:
+        _CACHE[key] = Designs(resolved)
+    return _CACHE[key]
+
+
+#: Blocks solved lately in this process: (file, output, the block's values) -> result.
+_SOLVED: dict[tuple, np.ndarray] = {}
+#: How many of them are kept.
+SOLVED_BLOCKS = 16
+
+
+def evaluate_block(path: str, digest: str, output: str, values: Mapping[str, np.ndarray]
+                   ) -> np.ndarray:
+    """One block of a sweep of a component file: ``output`` at every design
+    of ``values`` (field name -> SI array), solved together. A sweep that
+    writes its dataset asks for each block three times (its summary, the
+    PNG's data and the Zarr store do not share the block's task); the last
+    :data:`SOLVED_BLOCKS` results are kept in the process and handed out
+    again (the same bits: the solve is a function of the file, the output and
+    the values alone).
+
+    Parameters
+    ----------
+    path : str
+        The component file.
+    digest : str
+        Its SHA-256 when planned.
+    output : str
+        ``<link>.peak`` or ``<link>.factor``.
+    values : mapping
+        Each varied field's SI values, of one shape.
+    """
+    arrays = {n: np.asarray(v, dtype=float) for n, v in values.items()}
+    key = (str(path), digest, output,
+           tuple((n, a.shape, a.tobytes()) for n, a in sorted(arrays.items())))
+    if key not in _SOLVED:
+        while len(_SOLVED) >= SOLVED_BLOCKS:
+            _SOLVED.pop(next(iter(_SOLVED)))
+        _SOLVED[key] = designs(path, digest).largest(output, arrays)
+    return _SOLVED[key].copy()
+
