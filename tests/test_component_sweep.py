@@ -14,6 +14,7 @@ from crane_sym.cli.main import main
 from crane_sym.components.designs import designs
 from crane_sym.sweep.component_plan import plan_file
 from crane_sym.sweep.grid import run_sweep
+from crane_sym.sweep.report import text_lines
 
 xr = pytest.importorskip("xarray")
 FIG9 = str(Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml")
@@ -33,6 +34,7 @@ def test_the_sweep_equals_the_per_design_component_run_on_its_grid(tmp_path, cap
         argv += ["--output", o]
     assert main(argv) == 0
     data = json.loads(capsys.readouterr().out)
+    assert text_lines(data)[0].startswith("sweep of drive train hoist_fig9: 6 designs")
     stored = xr.open_zarr(data["dataset"]).load()
     found = designs(FIG9)
     stiffness = np.geomspace(1e4, 1e5, 3)[:, None]

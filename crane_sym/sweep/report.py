@@ -97,7 +97,8 @@ def text_lines(data: dict[str, Any]) -> list[str]:
     data : dict
         From :func:`summary`.
     """
-    lines = [f"sweep of scene {data['scene']}: {data['points']} designs in {data['chunks']} "
+    what = "drive train" if str(data.get("derivation", "")).endswith(".toml") else "scene"
+    lines = [f"sweep of {what} {data['scene']}: {data['points']} designs in {data['chunks']} "
              f"blocks, {data['seconds']:.3g} s ({data['scheduler']})"]
     for name, entry in data["outputs"].items():
         w = entry["worst"]
