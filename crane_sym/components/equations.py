@@ -108,9 +108,21 @@ class Equations:
         f = -rows.subs(zero)
         return M, D, K, sp.expand(f)
 
+    @cached_property
+    def _numeric(self) -> dict:
+        return {}
+
     def numeric(self, extra: dict[sp.Symbol, float] | None = None) -> Callable:
         """(χ, δ, on, B, β) -> (M, D, K, f) as arrays, the parameters' values put in
-        (and ``extra``: a steady motor's solved torque)."""
+        (and ``extra``: a steady motor's solved torque). Kept per ``extra``: a run
+        builds three systems (two probes of the steady start), and a repeated run
+        the same three, whose lambdify was most of its time."""
+        key = tuple(sorted(((str(k), float(v)) for k, v in (extra or {}).items())))
+        if key not in self._numeric:
+            self._numeric[key] = self._numeric_uncached(extra)
+        return self._numeric[key]
+
+    def _numeric_uncached(self, extra: dict[sp.Symbol, float] | None) -> Callable:
         values = {**self.values, **(extra or {})}
         M, D, K, f = (m.xreplace(values) for m in self.linear)
         args = [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
