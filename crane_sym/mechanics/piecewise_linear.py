@@ -122,14 +122,13 @@ def sign_change(form: ClosedForm, amps: np.ndarray, g: Callable[[float], float],
     band on its side (level 0 from there), as
     :mod:`crane_sym.mechanics.batched_events` does: a guard that starts on its
     surface with zero slope (a speed from rest at zero acceleration) does not
-    fire on the rounding noise of g about 0. Where g's slope at the start
-    heads to the other side beyond its own rounding bound, g crosses at once
-    (two gaps that close at one instant): no band."""
+    fire on the rounding noise of g about 0. Where g's slope at the start is
+    beyond its own rounding bound, its sign decides at once (away from the
+    surface, or across it: two gaps that close at one instant): no band."""
     window = window or _window(form, max(t_end, h_min))
     side = -direction if (on_surface and direction) else 0
     level = side * band
-    if level and -side * slope(0.0) > 1e-12 * form.derivative_bound(amps, 0.0,
-                                                                     min(h_min, t_end)):
+    if level and abs(slope(0.0)) > 1e-12 * form.derivative_bound(amps, 0.0, min(h_min, t_end)):
         level = 0.0
     t, gt = 0.0, g(0.0) + level
     side = side or np.sign(gt)
