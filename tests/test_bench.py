@@ -273,3 +273,30 @@ def test_piecewise_bench_rows_and_errors():
     lines = summary(rows, 200)
     assert any(line.startswith("fastest integrator within 1e-06") for line in lines)
     assert lines[0].startswith("closed form:") and "phases" in lines[0]
+
+
+def test_bench_components_stage_by_stage(tmp_path, capsys):
+    """`bench --components FILE`: every stage timed (no time asserted), the
+    first run's split adding up to it, both targets of item 7 judged for a
+    run of 30 phases or more; a bad file is one line, exit 2, nothing written."""
+    from pathlib import Path
+
+    from crane_sym.bench.components import goals, time_model
+    example = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml"
+    timing = time_model(example)
+    assert timing.phases >= 30 and (timing.bodies, timing.backlash, timing.brakes) == (4, 1, 2)
+    assert all(seconds >= 0 for _, seconds in timing.stages) and timing.run > 0
+    assert sum(f for _, f in timing.split) == pytest.approx(1.0)
+    assert [g.target for g in goals([timing])] == ["derive and solve (s)",
+                                                    "run of >= 30 phases (s)"]
+    out = tmp_path / "bench"
+    assert main(["bench", "--components", str(example), "--out", str(out), "--quiet"]) == 0
+    text = (out / "bench_components.md").read_text()
+    assert "| hoist_fig9 | run of >= 30 phases (s) |" in text and "certified event search" in text
+    capsys.readouterr()
+    bad = tmp_path / "bad.toml"
+    bad.write_text("[model]\nname = 'x'\n[[inertias]]\n")
+    assert main(["bench", "--components", str(bad), "--out", str(tmp_path / "b2"),
+                 "--quiet"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert "\n" not in err and "inertias" in err and not (tmp_path / "b2").exists()

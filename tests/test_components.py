@@ -257,3 +257,17 @@ def test_paper_000_two_mass_braking_gives_eq_14_symbolically():
         link_response(Model(fig9_parts(0.0)[:6] + [
             ElasticLink("coupling", "motor", "shaft", "4e4 N*m/rad"),
             Brake("safety", "drum", "130 kN*m")]))
+
+
+def test_a_brake_engaged_at_rest_holds_its_own_group():
+    """A brake on the second group engaged at t = 0, everything at rest: that
+    group is held (the link's load, at most 2 kN, stays within its 5 kN), while
+    the first, pushed by 1 kN, swings freely on the link."""
+    model = Model([Mass("a", "1 t"), Mass("b", "2 t"), ElasticLink("l", "a", "b", "1e5 N/m"),
+                   Motor("push", "a", "1 kN"), Brake("hold", "b", "5 kN")])
+    run = model.run("1 s", rest=True)
+    times = np.linspace(0.0, 1.0, 1001)
+    x = run.result.state(times)
+    assert np.max(np.abs(x[:, 2:4])) < 1e-15
+    assert np.allclose(x[:, 0], 1e3 / 1e5 * (1 - np.cos(10 * times)), rtol=0, atol=1e-12)
+    assert run.result.segments[-1].mode.motion == ("free", "0")

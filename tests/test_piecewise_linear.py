@@ -57,6 +57,23 @@ def test_no_crossing_returns_none():
     assert first_crossing(form, np.array([0.5, 0.0]), np.array([1.0, 0.0]), 0.6, 20.0) is None
 
 
+def test_a_start_on_the_surface_with_zero_slope_does_not_fire_on_rounding_noise():
+    """A speed that leaves rest at zero acceleration (a group that slips where
+    its load just reaches the brake's capacity), a hair below 0 by rounding:
+    the guard 'rests' (falling through 0) must not fire at h_min; the speed
+    rises to V and settles there. A speed heading down at once still fires at once."""
+    w, zeta, V = 30.0, 0.5, 2.0                      # v'' = -w^2 (v - V) - 2 zeta w v'
+    A = np.array([[0.0, 1.0], [-w * w, -2 * zeta * w]])
+    form = closed_form(A, np.array([0.0, w * w * V]))
+    noise = np.array([-1e-15, 3e-16])                # v, v' at the start, rounding only
+    assert form.state(1e-10, noise)[0] < 0            # what the old search fired on
+    assert first_crossing(form, noise, np.array([1.0, 0.0]), 0.0, 2.0, direction=-1) is None
+    assert np.min(form.state(np.linspace(1e-3, 2.0, 2000), noise)[:, 0]) > 0
+    down = first_crossing(form, np.array([0.0, -1.0]), np.array([1.0, 0.0]), 0.0, 2.0,
+                          direction=-1)
+    assert down is not None and down <= 2e-10
+
+
 @pytest.mark.parametrize("payload", [0.0, 52e3])
 def test_fig9_against_solve_ivp(payload):
     """The phases in closed form against DOP853 with events (rtol 1e-12, steps

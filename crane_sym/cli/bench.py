@@ -1,6 +1,7 @@
 """`crane-sym bench`: speed against error of the generated code and the SciPy
-alternatives, the targets table, piecewise-linear runs, sampled loads and
-(with ``--sweep``) design sweeps.
+alternatives, the targets table, piecewise-linear runs, sampled loads,
+(with ``--sweep``) design sweeps and (with ``--components FILE``) component
+models from the file to the run.
 
 A subcommand imports its machinery when it runs (the imports inside the
 functions below): importing every subcommand's at start-up costs 1.31 s of
@@ -83,7 +84,11 @@ def _bench(args: argparse.Namespace) -> int:
         output_files.out_folder(out_dir)
         with say.task("design sweeps against per-design integration"):
             cli_sweep.run_bench(out_dir, args.format == "json")
-        if not args.ids:                   # `bench --sweep` alone: the sweep bench only
+        if not args.ids and not getattr(args, "components", None):
+            return 0                       # `bench --sweep` alone: the sweep bench only
+    if getattr(args, "components", None):
+        _bench_components(args.components, out_dir, args.format == "table")
+        if not args.ids:                   # `bench --components FILE` alone: only that
             return 0
     everything, goals = [], []
     rtols = args.rtols or (bench.QUICK_RTOLS if args.quick else bench.RTOLS)
@@ -183,6 +188,28 @@ def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
                       f"from this one run ({time.perf_counter() - start:.0f} s).", "",
                       *sections])
     path = out_dir / f"bench_piecewise_{i}.md"
+    path.write_text(text, encoding="utf-8")
+    if show:
+        print(text)
+        print(f"wrote {path}")
+
+
+def _bench_components(files: Sequence[str], out_dir: Path, show: bool) -> None:
+    """Component models from file to run, stage by stage, against item 7's targets."""
+    # imported on use: see the module docstring
+    from crane_sym.bench.components import as_markdown, time_model
+    from crane_sym.components.reading import read_parts
+    for f in files:                    # a bad file fails before the folder is made
+        read_parts(f)
+    start = time.perf_counter()
+    with progress.current().task(f"component models: {len(files)} files, stage by stage"):
+        timings = [time_model(f) for f in files]
+    text = "\n".join(["# Bench: component models, from the file to the run", "",
+                      f"Absolute times are this machine's ({_machine()}), from this one run "
+                      f"({time.perf_counter() - start:.0f} s); SymPy's cache and the closed "
+                      "forms' cleared before each stage.", "", as_markdown(timings)])
+    output_files.out_folder(out_dir)
+    path = out_dir / "bench_components.md"
     path.write_text(text, encoding="utf-8")
     if show:
         print(text)

@@ -40,9 +40,9 @@ NAMES = {"audit": _PAPERS + _FILES, "walkthrough": _PAPERS + _FILES, "accuracy":
          "bench": _PAPERS,
          "generate": _SCENES, "sweep": _SCENES,
          "run": _SCENES + "\nA drive train of your own: its component TOML file "
-                          "(examples/drive_trains/ has three).",
+                          "(examples/drive_trains/ has four).",
          "model": "A drive train of your own: its component TOML file "
-                  "(examples/drive_trains/ has three)."}
+                  "(examples/drive_trains/ has four)."}
 
 
 def _ids(names: Sequence[str]) -> list[str]:
@@ -337,6 +337,9 @@ def parser() -> argparse.ArgumentParser:
                    help="also bench loads sampled on a grid against the closed forms")
     p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
                    "per-design integration; alone, only that")
+    p.add_argument("--components", nargs="+", metavar="FILE",
+                   help="bench component model files: where the time goes from the file to "
+                   "the run, against item 7's targets; alone, only that")
     p.add_argument("--rtols", nargs="+", type=float,
                    help="integrator tolerances, each 1e-13 to 0.1 (default: every half "
                    "decade 1e-6 ... 1e-13)")

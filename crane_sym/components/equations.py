@@ -126,15 +126,27 @@ class Equations:
 
     @cached_property
     def _lambdified(self) -> tuple[tuple[sp.Symbol, ...], Callable]:
-        """(parameters, (χ, δ, on, B, β, parameter values) -> (M, D, K, f)):
+        """(parameters, (χ, δ, on, B, β, L, parameter values) -> (M, D, K, f)):
         lambdified once, shared by the designs of :meth:`for_design`."""
         parameters = tuple(sorted({*self.values, *self.motor_loads}, key=str))
         return parameters, sp.lambdify([*self._mode_arguments(), list(parameters)],
                                        self.linear, "numpy")
 
+    @cached_property
+    def _numeric(self) -> dict:
+        return {}
+
     def numeric(self, extra: dict[sp.Symbol, float] | None = None) -> Callable:
         """(χ, δ, on, B, β, L) -> (M, D, K, f) as arrays, the parameters' values put in
-        (and ``extra``: a steady motor's solved torque)."""
+        (and ``extra``: a steady motor's solved torque). Kept per ``extra``: a run
+        builds three systems (two probes of the steady start), and a repeated run
+        the same three, whose lambdify was most of its time."""
+        key = tuple(sorted(((str(k), float(v)) for k, v in (extra or {}).items())))
+        if key not in self._numeric:
+            self._numeric[key] = self._numeric_uncached(extra)
+        return self._numeric[key]
+
+    def _numeric_uncached(self, extra: dict[sp.Symbol, float] | None) -> Callable:
         values = {**self.values, **(extra or {})}
         if self.shared:
             parameters, shared = self._lambdified

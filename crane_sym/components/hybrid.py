@@ -276,7 +276,7 @@ class ComponentSystem:
             ramping[i] = False
             x[self.beta[i]] = 1.0
             return replace(mode, ramping=tuple(ramping)), x
-        motion = list(mode.motion)
+        motion, g = list(mode.motion), i
         if kind == "engage":
             engaged, ramping = list(mode.engaged), list(mode.ramping)
             engaged[i] = True
@@ -289,8 +289,7 @@ class ComponentSystem:
             if speed:
                 motion[g] = FORWARD if speed > 0 else BACKWARD
                 return replace(mode, motion=tuple(motion)), x
-            kind = "rest"
-        g = i
+            kind = "rest"                        # of the brake's group g, not of group i
         x[self.v(g)] = 0.0
         if kind == "slip+":
             motion[g] = FORWARD

@@ -111,7 +111,8 @@ from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Re
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
 from crane_sym.scenes.options import did_you_mean
 
-__all__ = ["ComponentFile", "is_component_file", "read_component_file"]
+__all__ = ["ComponentFile", "ComponentParts", "is_component_file", "read_component_file",
+           "read_parts"]
 
 #: Each table of components: its keys (required first, then optional) and its builder.
 TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
@@ -252,9 +253,45 @@ def _build(kind: str, entry: dict, where: str):
     return Resistance(g["name"], g["body"], g[_load_key(entry, where)])
 
 
+@dataclass(frozen=True)
+class ComponentParts:
+    """A component file read and checked, its model not yet derived."""
+
+    parts: list
+    name: str
+    title: str
+    duration: str
+    body: str | None
+    speed: Any
+    path: Path
+    rest: bool = False
+    data: dict = field(default_factory=dict)       # the file's tables, as read
+
+
 def read_component_file(path: str | Path) -> ComponentFile:
     """Read, check and derive the model of a component file (see the module
     docstring); ComponentError, one line, for anything it cannot take.
+
+    Parameters
+    ----------
+    path : str or Path
+        The component TOML file.
+    """
+    read = read_parts(path)
+    where_file = f"component model {read.name!r}"
+    try:
+        model = Model.for_run(read.parts, read.duration, read.rest, read.name, read.title)
+    except ComponentError as exc:
+        raise ComponentError(f"{where_file}: {exc}") from None
+    formulas = read_formulas(read.data.get("formula", []), model, where_file)
+    return ComponentFile(model, read.duration, read.body, read.speed, read.path, read.rest,
+                         formulas, {k: read.data.get(k, []) for k in TABLES}, tuple(read.parts))
+
+
+def read_parts(path: str | Path) -> ComponentParts:
+    """Read and check a component file into its parts and run settings, without
+    assembling or deriving the model (what ``crane-sym bench --components``
+    times apart); ComponentError, one line, for anything it cannot take.
 
     Parameters
     ----------
@@ -310,12 +347,6 @@ def read_component_file(path: str | Path) -> ComponentFile:
         if key in settings and not isinstance(settings[key], str):
             raise ComponentError(f"{where_file}: [run] {key} needs a value with its unit as "
                                  f"text, got {settings[key]!r}")
-    try:
-        model = Model.for_run(parts, settings["duration"], start == "rest", name,
-                              str(head.get("title", "")))
-    except ComponentError as exc:
-        raise ComponentError(f"{where_file}: {exc}") from None
-    formulas = read_formulas(data.get("formula", []), model, where_file)
-    return ComponentFile(model, settings["duration"], settings.get("body"),
-                         settings.get("speed", 0.0), p, start == "rest", formulas,
-                         {k: data.get(k, []) for k in TABLES}, tuple(parts))
+    return ComponentParts(parts, name, str(head.get("title", "")), settings["duration"],
+                          settings.get("body"), settings.get("speed", 0.0), p, start == "rest",
+                          data)

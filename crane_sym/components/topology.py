@@ -104,6 +104,11 @@ def _unknown(owner: str, name: object, known: Sequence[str]) -> ComponentError:
 def assemble(components: Sequence[Component]) -> Assembly:
     """Check the components and merge the rigid groups (see the module docstring).
 
+    Parameters
+    ----------
+    components : sequence of Component
+        Bodies, rigid and elastic links, and what acts on the bodies.
+
     Raises
     ------
     ComponentError

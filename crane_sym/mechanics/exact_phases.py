@@ -271,7 +271,7 @@ def crossing(form: ExactForm, z0: Sequence[mpmath.mpf], guard: Guard,
                           on_surface, h_min)
     if bracket is None:
         return None
-    lo, hi = bracket
+    lo, hi, _ = bracket                 # no band: the signs are decided, level 0
     return mpmath.mpf(hi) if lo == hi else illinois(g_mp, mpmath.mpf(lo), mpmath.mpf(hi))
 
 

@@ -62,13 +62,16 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
     amps, k = form.scalar_terms(weights, constant, x0)
     g, slope = signal(form, amps, k)
     size = float(np.sum(np.abs(amps)) + abs(k))
-    on_surface = abs(g(0.0)) <= max(form.derivative_bound(amps, 0.0, min(h_min, t_end)) * h_min,
-                                    1e-12 * size)
-    bracket = sign_change(form, amps, g, slope, t_end, direction, on_surface, h_min, window)
+    band = max(form.derivative_bound(amps, 0.0, min(h_min, t_end)) * h_min, 1e-12 * size)
+    on_surface = abs(g(0.0)) <= band
+    bracket = sign_change(form, amps, g, slope, t_end, direction, on_surface, h_min, window,
+                          band=band)
     if bracket is None:
         return None
-    lo, hi = bracket
-    return hi if lo == hi else brentq(g, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
+    lo, hi, level = bracket
+    if lo == hi:
+        return hi
+    return brentq(lambda t: g(t) + level, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
 
 
 def signal(form: ClosedForm, amps: np.ndarray,
@@ -105,21 +108,41 @@ def signal(form: ClosedForm, amps: np.ndarray,
 
 def sign_change(form: ClosedForm, amps: np.ndarray, g: Callable[[float], float],
                 slope: Callable[[float], float], t_end: float, direction: int,
-                on_surface: bool, h_min: float,
-                window: float | None = None) -> tuple[float, float] | None:
-    """The first step (lo, hi) of the certified search over which ``g`` leaves
-    its starting side, (hi, hi) where it is on the other side or 0 at hi
-    already, or None when it does not by ``t_end``. ``g`` gives the value
-    whose sign is trusted (the double, or a decided value in
-    :mod:`crane_sym.mechanics.exact_phases`); ``slope`` and the bounds of ``form`` only
-    size the steps."""
+                on_surface: bool, h_min: float, window: float | None = None,
+                band: float = 0.0) -> tuple[float, float, float] | None:
+    """The first step (lo, hi, level) of the certified search over which
+    ``g`` + level leaves its starting side, (hi, hi, level) where it is on the
+    other side or 0 at hi already, or None when it does not by ``t_end``.
+    ``g`` gives the value whose sign is trusted (the double, or a decided value
+    in :mod:`crane_sym.mechanics.exact_phases`); ``slope`` and the bounds of ``form``
+    only size the steps.
+
+    ``band`` (with ``on_surface`` and a ``direction``): g's rounding bound at
+    the start. The search then watches g − direction·band until g leaves the
+    band on its side (level 0 from there), as
+    :mod:`crane_sym.mechanics.batched_events` does: a guard that starts on its
+    surface with zero slope (a speed from rest at zero acceleration) does not
+    fire on the rounding noise of g about 0. Where g's slope at the start is
+    beyond its own rounding bound, its sign decides at once (away from the
+    surface, or across it: two gaps that close at one instant): no band."""
     window = window or _window(form, max(t_end, h_min))
-    t, gt = 0.0, g(0.0)
-    side = -direction if (on_surface and direction) else np.sign(gt)
+    side = -direction if (on_surface and direction) else 0
+    level = side * band
+    if level and abs(slope(0.0)) > 1e-12 * form.derivative_bound(amps, 0.0, min(h_min, t_end)):
+        level = 0.0
+    t, gt = 0.0, g(0.0) + level
+    side = side or np.sign(gt)
     if side == 0:                                      # on the surface, either way
         t = min(h_min, t_end)
         gt = g(t)
         side = np.sign(gt)
+
+    def watched(t: float) -> float:
+        nonlocal level
+        value = g(t)
+        if level and side * value > band:              # out of the band on its side
+            level = 0.0
+        return value + level
     while t < t_end:
         w_end = min(t + window, t_end)
         L = form.derivative_bound(amps, t, w_end)
@@ -133,11 +156,11 @@ def sign_change(form: ClosedForm, amps: np.ndarray, g: Callable[[float], float],
                 d1 = abs(slope(t))
                 step = max(abs(gt) / L, 2 * abs(gt) / (d1 + np.sqrt(d1 * d1 + 2 * M2 * abs(gt))))
             nxt = min(t + max(step, h_min), w_end)
-            gn = g(nxt)
+            gn = watched(nxt)
             if gn == 0.0 or np.sign(gn) != side:
                 if gn == 0.0 or np.sign(gt) != side:
-                    return nxt, nxt
-                return t, nxt
+                    return nxt, nxt, level
+                return t, nxt, level
             t, gt = nxt, gn
     return None
 
