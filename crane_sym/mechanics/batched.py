@@ -201,13 +201,13 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
     while True:
         act = np.flatnonzero(~(s.done | s.fell | s.capped))
         if act.size <= tail:
-            tick = time.perf_counter()
+            tick = time.process_time()
             for i in act:
                 _finish(system, int(i), s, best_key, names, max_events)
-            clock["tail"] += time.perf_counter() - tick
+            clock["tail"] += time.process_time() - tick
             break
         rounds += 1
-        tick = time.perf_counter()
+        tick = time.process_time()
         groups = []
         for mode in np.unique(s.mode[act]):
             idx = act[s.mode[act] == mode]
@@ -220,12 +220,12 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
                     s.fell[idx[where]] = True
                 else:
                     groups.append(_Group(int(mode), idx[where], form, A[where], b[where]))
-        clock["forms"] += time.perf_counter() - tick
+        clock["forms"] += time.process_time() - tick
         if groups:
             _round(system, groups, s, best_key, names, h_min, clock)
         over = ~(s.done | s.fell) & (s.count >= max_events)
         s.capped |= over
-    tick = time.perf_counter()
+    tick = time.process_time()
     for i in np.flatnonzero(s.fell):                 # the per-design route
         run = system.run(int(i))
         try:
@@ -235,7 +235,7 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
             s.fell[i], s.capped[i] = False, True
             continue
         s.best_t[i], s.best[i] = largest(result, run.system, run.output, magnitude=magnitude)
-    clock["fallback"] = time.perf_counter() - tick
+    clock["fallback"] = time.process_time() - tick
     s.best[s.capped] = np.nan
     return BatchedLargest(s.best, s.best_t, s.count, s.fell, s.capped, rounds, clock,
                           s.tail)
@@ -291,7 +291,7 @@ def _round(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.
            names: list[str], h_min: float, clock: dict[str, float]) -> None:
     """One phase of every design in ``groups``: the guards of all of them
     searched together, then the output's extrema, then the switches."""
-    tick = time.perf_counter()
+    tick = time.process_time()
     S = s.times.shape[1]
     sigs, spans, dirs, owner = [], [], [], []
     for gi, grp in enumerate(groups):
@@ -330,14 +330,14 @@ def _round(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.
             event[pos[sel]] = len(names) + j
         for gi, grp in enumerate(groups):
             grp.end, grp.event = end[base[gi]:base[gi + 1]], event[base[gi]:base[gi + 1]]
-    clock["events"] += time.perf_counter() - tick
-    tick = time.perf_counter()
+    clock["events"] += time.process_time() - tick
+    tick = time.process_time()
     _extrema(system, groups, s, best_key, h_min)
-    clock["extrema"] += time.perf_counter() - tick
-    tick = time.perf_counter()
+    clock["extrema"] += time.process_time() - tick
+    tick = time.process_time()
     for grp in groups:
         _advance(system, grp, s, names)
-    clock["switching"] += time.perf_counter() - tick
+    clock["switching"] += time.process_time() - tick
 
 
 def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.ndarray,

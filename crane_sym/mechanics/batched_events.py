@@ -61,14 +61,15 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     # a start on the surface with a side: the search watches g + side·band until g
     # leaves the band, so rounding noise about 0 is not taken for a crossing
     level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
-    lo, hi = _brackets(sig, start, t_end, direction, on_surface, g0, d0, h_min, level=level,
-                       band=band, owner=owner)
+    lo, hi, flo, fhi, level = _brackets(sig, start, t_end, direction, on_surface, g0, d0,
+                                        h_min, level=level, band=band, owner=owner)
     found = ~np.isnan(lo)
     same = found & (lo == hi)
     out[same] = hi[same]
     open_ = np.flatnonzero(found & (lo < hi))
     if open_.size:
-        out[open_] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_])
+        out[open_] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_],
+                            flo[open_], fhi[open_])
     return out
 
 
@@ -84,11 +85,12 @@ def all_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, h_min: flo
     _brackets(sig, start, t_end, np.zeros(m), np.zeros(m, dtype=bool), g0, d0, h_min, found)
     if not found:
         return np.zeros(0, dtype=np.intp), np.zeros(0)
-    which, lo, hi = (np.concatenate(parts) for parts in zip(*found))
+    which, lo, hi, flo, fhi = (np.concatenate(parts) for parts in zip(*found))
     out = hi.copy()
     open_ = np.flatnonzero(lo < hi)
     if open_.size:
-        out[open_] = refine(sig, which[open_], lo[open_], hi[open_], xtol)
+        out[open_] = refine(sig, which[open_], lo[open_], hi[open_], xtol, 0.0, flo[open_],
+                            fhi[open_])
     return which, out
 
 
@@ -96,16 +98,27 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
               on_surface: np.ndarray, g0: np.ndarray, d0: np.ndarray, h_min: float,
               collect: list | None = None, level: np.ndarray | None = None,
               band: np.ndarray | None = None,
-              owner: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+              owner: np.ndarray | None = None) -> tuple[np.ndarray, ...]:
     """(lo, hi) of the first step over which each g leaves its side, (hi, hi)
-    where it is on the other side or 0 at hi already, NaN where it does not.
+    where it is on the other side or 0 at hi already, NaN where it does not;
+    the values watched at lo and hi, and the level watched at the end.
     With ``collect`` (a list) every bracket is appended to it as (rows, lo,
-    hi) arrays and the search goes on from hi on the other side. Where
-    ``level`` is nonzero the row watches g + level (``level[i]`` turns 0 once g
-    is past ``band[i]`` on its side); lo and hi bracket the value watched.
-    With ``owner``, a row past the earliest ``hi`` of its owner stops."""
+    hi, value at lo, value at hi) arrays and the search goes on from hi on the
+    other side. Where ``level`` is nonzero the row watches g + level
+    (``level[i]`` turns 0 once g is past ``band[i]`` on its side); lo and hi
+    bracket the value watched. With ``owner``, a row past the earliest ``hi``
+    of its owner stops.
+
+    Each step is the longest of: the certified distances (|g|/L, the root of
+    |g| − |g'| h − M₂h²/2), ``h_min``, and, where g heads for 0, a step
+    over which g is monotone (h ≤ |g'|/(2M₂), so |g'| stays above |g'|/2),
+    twice the Newton distance |g/g'| long: on it g has at most one zero and
+    the sign at its end tells whether it has one, so the step is certified as
+    well, and it brackets a simple root in one step once Newton's distance
+    is accurate."""
     m = start.shape[0]
     lo, hi = np.full(m, np.nan), np.full(m, np.nan)
+    flo, fhi = np.full(m, np.nan), np.full(m, np.nan)
     level = np.zeros(m) if level is None else level.copy()
     t, gt, dt = start.copy(), g0 + level, d0.copy()
     window = sig.window(np.arange(m), np.maximum(t_end - start, h_min))
@@ -139,6 +152,9 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         with np.errstate(divide="ignore", invalid="ignore"):
             newton = 2 * ag / (d1 + np.sqrt(d1 * d1 + 2 * Ma * ag))
             step = np.maximum(ag / La, newton)
+            # g heads for 0 and stays monotone over twice Newton's distance
+            mono = np.minimum(2 * ag / d1, 0.5 * d1 / Ma)
+            step = np.where((dt[act] * ga < 0) & (mono > step), mono, step)
         step = np.where(La <= 0, w_end[act] - ta, step)     # g constant on the window
         step = np.where(np.sign(ga) != sa, 0.0, step)
         step = np.where(np.isnan(step), 0.0, step)
@@ -157,6 +173,8 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         done = act[crossed]
         lo[done] = np.where(at_hi[crossed], nxt[crossed], ta[crossed])
         hi[done] = nxt[crossed]
+        flo[done] = np.where(at_hi[crossed], gn[crossed], ga[crossed])
+        fhi[done] = gn[crossed]
         t[act], gt[act], dt[act] = nxt, gn, dn
         if collect is None:
             keep = ~crossed & (nxt < t_end[act])
@@ -165,54 +183,64 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
                 keep &= nxt <= cap[owner[act]]
             act = act[keep]
             continue
-        collect.append((done, lo[done], hi[done]))
+        collect.append((done, lo[done], hi[done], flo[done], fhi[done]))
         side[done] = -side[done]
         flat = done[side[done] == 0]                     # began on the surface: g decides
         side[flat] = np.sign(gt[flat])
         act = act[nxt < t_end[act]]
-    return lo, hi
+    return lo, hi, flo, fhi, level
 
 
 def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
            xtol: float = 1e-14, level: np.ndarray | float = 0.0,
+           f_lo: np.ndarray | None = None, f_hi: np.ndarray | None = None,
            max_rounds: int = 200) -> np.ndarray:
     """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
-    signs at the ends, or 0 at one), to ``xtol`` plus 4 ulp of the root."""
+    signs at the ends, or 0 at one; ``f_lo``, ``f_hi`` where the search knows
+    them), to ``xtol`` plus 4 ulp of the root.
+
+    Newton's method kept in the bracket: the first point is the secant of the
+    ends, each evaluation gives g and g' (one pass over the terms) and
+    narrows the bracket by its sign; a Newton point outside the bracket is
+    replaced by its middle (so the bracket at least halves), and a row is
+    done when Newton's correction is within the tolerance (the root is the
+    corrected point; convergence is quadratic there) or the bracket is."""
     rtol = 4 * np.finfo(float).eps
     a, b = lo.copy(), hi.copy()
     level = np.broadcast_to(np.asarray(level, dtype=float), a.shape)
-    fa, fb = sig.value(rows, a) + level, sig.value(rows, b) + level
+    fa = sig.value(rows, a) + level if f_lo is None else f_lo.copy()
+    fb = sig.value(rows, b) + level if f_hi is None else f_hi.copy()
     root = np.where(fa == 0.0, a, np.where(fb == 0.0, b, np.nan))
     live = np.flatnonzero(np.isnan(root))
-    last = np.zeros(a.shape[0], dtype=int)           # which end moved last: −1 a, +1 b
-    width = b - a
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = b - fb * (b - a) / (fb - fa)
+    x = np.where((x > a) & (x < b), x, 0.5 * (a + b))
     for _ in range(max_rounds):
         if not live.size:
             break
-        al, bl, fal, fbl = a[live], b[live], fa[live], fb[live]
-        secant = bl - fbl * (bl - al) / (fbl - fal)
-        mid = 0.5 * (al + bl)
-        halve = (b[live] - a[live]) > 0.5 * width[live]     # the last step shrank too little
-        x = np.where(halve | ~((secant > al) & (secant < bl)), mid, secant)
-        width[live] = b[live] - a[live]
-        fx = sig.value(rows[live], x) + level[live]
-        hit = fx == 0.0
-        left = np.sign(fx) == np.sign(fal)                  # the root is in [x, b]
-        # Illinois: the end that stays twice in a row has its value halved
-        keep_b = left & ~hit
-        keep_a = ~left & ~hit
-        fb_new = np.where(keep_b & (last[live] == -1), 0.5 * fbl, fbl)
-        fa_new = np.where(keep_a & (last[live] == 1), 0.5 * fal, fal)
-        a[live] = np.where(keep_b, x, al)
-        fa[live] = np.where(keep_b, fx, fa_new)
-        b[live] = np.where(keep_a, x, bl)
-        fb[live] = np.where(keep_a, fx, fb_new)
-        last[live] = np.where(keep_b, -1, 1)
-        root[live[hit]] = x[hit]
-        tol = xtol + rtol * np.abs(x)
-        close = ~hit & (b[live] - a[live] <= 2 * tol)
-        root[live[close]] = 0.5 * (a[live[close]] + b[live[close]])
-        live = live[~hit & ~close]
+        xl = x[live]
+        g, d = sig.both(rows[live], xl)
+        g = g + level[live]
+        hit = g == 0.0
+        left = np.sign(g) == np.sign(fa[live])              # the root is in [x, b]
+        a[live] = np.where(left, xl, a[live])
+        fa[live] = np.where(left, g, fa[live])
+        b[live] = np.where(left, b[live], xl)
+        fb[live] = np.where(left, fb[live], g)
+        al, bl = a[live], b[live]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            newton = xl - g / d
+        inside = (newton > al) & (newton < bl)
+        tol = xtol + rtol * np.abs(xl)
+        # a correction within the tolerance: converged (it may point a hair out of
+        # the bracket when g at x is rounding noise)
+        done = ~hit & (np.abs(newton - xl) <= tol)
+        close = ~hit & ~done & (bl - al <= 2 * tol)
+        root[live[hit]] = xl[hit]
+        root[live[done]] = np.clip(newton[done], al[done], bl[done])
+        root[live[close]] = 0.5 * (al[close] + bl[close])
+        x[live] = np.where(inside, newton, 0.5 * (al + bl))
+        live = live[~(hit | done | close)]
     if live.size:
         root[live] = 0.5 * (a[live] + b[live])
     return root
