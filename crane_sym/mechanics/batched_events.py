@@ -58,18 +58,79 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     near = sig.bounds(rows, start, reach)[0] * h_min
     band = np.maximum(near, 1e-12 * sig.size(rows))
     on_surface = np.abs(g0) <= band
+    # a quadratic off the surface (a free side's speed or angle): its crossing
+    # from its monotone pieces, no stepping
+    quad = sig.quadratic() & ~on_surface
+    limit = None
+    if quad.any():
+        out[quad] = _quadratic_crossings(sig, rows[quad], start[quad], t_end[quad], g0[quad],
+                                         xtol)
+        if owner is not None:                   # the others stop past their owner's
+            _, code = np.unique(owner, return_inverse=True)
+            first = np.full(int(code.max()) + 1, np.inf)
+            np.minimum.at(first, code[quad], np.where(np.isnan(out[quad]), np.inf, out[quad]))
+            limit = first[code]
+        rest = np.flatnonzero(~quad)
+        if not rest.size:
+            return out
+        sig, start, t_end, direction = sig.take(rest), start[rest], t_end[rest], direction[rest]
+        g0, d0, band, on_surface = g0[rest], d0[rest], band[rest], on_surface[rest]
+        owner = None if owner is None else owner[rest]
+        limit = None if limit is None else limit[rest]
+    else:
+        rest = rows
     # a start on the surface with a side: the search watches g + side·band until g
     # leaves the band, so rounding noise about 0 is not taken for a crossing
     level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
     lo, hi, flo, fhi, level = _brackets(sig, start, t_end, direction, on_surface, g0, d0,
-                                        h_min, level=level, band=band, owner=owner)
+                                        h_min, level=level, band=band, owner=owner,
+                                        limit=limit)
     found = ~np.isnan(lo)
     same = found & (lo == hi)
-    out[same] = hi[same]
+    out[rest[same]] = hi[same]
     open_ = np.flatnonzero(found & (lo < hi))
     if open_.size:
-        out[open_] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_],
-                            flo[open_], fhi[open_])
+        out[rest[open_]] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_],
+                                  flo[open_], fhi[open_])
+    return out
+
+
+def _quadratic_crossings(sig: Signals, rows: np.ndarray, start: np.ndarray, t_end: np.ndarray,
+                         g0: np.ndarray, xtol: float) -> np.ndarray:
+    """The first sign change in (start, t_end] of each g = c₀ + c₁t + c₂t²
+    (``g0`` = g(start) ≠ 0), NaN where none: g is monotone on [start, t_v]
+    and [t_v, t_end] (t_v = −c₁/2c₂, its vertex, where inside), so the first
+    of these pieces whose end is on the other side (or at 0) holds exactly
+    one root, which :func:`refine` narrows from the quadratic formula's."""
+    c = np.zeros((rows.size, 3))
+    c[:, : sig.poly.shape[1]] = sig.poly[rows, :3]
+    c0, c1, c2 = c.T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        tv = np.where(c2 != 0, -c1 / (2 * c2), np.inf)
+    inner = (tv > start) & (tv < t_end)
+    mid = np.where(inner, tv, start)
+    gv, ge = sig.value(rows, mid), sig.value(rows, t_end)
+    side = np.sign(g0)
+    first = inner & ((gv == 0) | (np.sign(gv) != side))
+    second = ~first & ((ge == 0) | (np.sign(ge) != side))
+    lo = np.where(first, start, mid)
+    hi = np.where(first, mid, t_end)
+    flo = np.where(first, g0, np.where(inner, gv, g0))
+    fhi = np.where(first, gv, ge)
+    out = np.full(rows.size, np.nan)
+    at_hi = (first | second) & (fhi == 0)
+    out[at_hi] = hi[at_hi]
+    open_ = np.flatnonzero((first | second) & (fhi != 0))
+    if open_.size:
+        a, b, k = c2[open_], c1[open_], c0[open_]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            disc = np.sqrt(np.maximum(b * b - 4 * a * k, 0.0))
+            q = -0.5 * (b + np.where(b >= 0, disc, -disc))
+            r1, r2 = q / a, k / q
+            linear = -k / b
+        guess = np.where(a == 0, linear, np.where((r1 >= lo[open_]) & (r1 <= hi[open_]), r1, r2))
+        out[open_] = refine(sig, rows[open_], lo[open_], hi[open_], xtol, 0.0, flo[open_],
+                            fhi[open_], guess=guess)
     return out
 
 
@@ -98,7 +159,8 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
               on_surface: np.ndarray, g0: np.ndarray, d0: np.ndarray, h_min: float,
               collect: list | None = None, level: np.ndarray | None = None,
               band: np.ndarray | None = None,
-              owner: np.ndarray | None = None) -> tuple[np.ndarray, ...]:
+              owner: np.ndarray | None = None,
+              limit: np.ndarray | None = None) -> tuple[np.ndarray, ...]:
     """(lo, hi) of the first step over which each g leaves its side, (hi, hi)
     where it is on the other side or 0 at hi already, NaN where it does not;
     the values watched at lo and hi, and the level watched at the end.
@@ -107,10 +169,12 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     other side. Where ``level`` is nonzero the row watches g + level
     (``level[i]`` turns 0 once g is past ``band[i]`` on its side); lo and hi
     bracket the value watched. With ``owner``, a row past the earliest ``hi``
-    of its owner stops.
+    of its owner, or past its ``limit`` (a crossing of its owner found
+    otherwise), stops.
 
     Each step is the longest of: the certified distances (|g|/L, the root of
-    |g| − |g'| h − M₂h²/2), ``h_min``, and, where g heads for 0, a step
+    |g| − |g'| h − M₂h²/2, or, where g moves away from 0, of
+    |g| + |g'| h − M₂h²/2), ``h_min``, and, where g heads for 0, a step
     over which g is monotone (h ≤ |g'|/(2M₂), so |g'| stays above |g'|/2),
     twice the Newton distance |g/g'| long: on it g has at most one zero and
     the sign at its end tells whether it has one, so the step is certified as
@@ -153,8 +217,13 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
             newton = 2 * ag / (d1 + np.sqrt(d1 * d1 + 2 * Ma * ag))
             step = np.maximum(ag / La, newton)
             # g heads for 0 and stays monotone over twice Newton's distance
+            heading = dt[act] * sa
             mono = np.minimum(2 * ag / d1, 0.5 * d1 / Ma)
-            step = np.where((dt[act] * ga < 0) & (mono > step), mono, step)
+            step = np.where((heading < 0) & (mono > step), mono, step)
+            # g moves away from 0 (a start on the surface): |g| + |g'|h − M₂h²/2
+            # stays above 0 up to its positive root
+            away = (d1 + np.sqrt(d1 * d1 + 2 * Ma * ag)) / Ma
+            step = np.where((heading > 0) & (away > step), away, step)
         step = np.where(La <= 0, w_end[act] - ta, step)     # g constant on the window
         step = np.where(np.sign(ga) != sa, 0.0, step)
         step = np.where(np.isnan(step), 0.0, step)
@@ -181,6 +250,8 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
             if owner is not None:                    # past the owner's earliest bracket
                 np.minimum.at(cap, owner[done], hi[done])
                 keep &= nxt <= cap[owner[act]]
+                if limit is not None:
+                    keep &= nxt <= limit[act]
             act = act[keep]
             continue
         collect.append((done, lo[done], hi[done], flo[done], fhi[done]))
@@ -194,10 +265,10 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
 def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
            xtol: float = 1e-14, level: np.ndarray | float = 0.0,
            f_lo: np.ndarray | None = None, f_hi: np.ndarray | None = None,
-           max_rounds: int = 200) -> np.ndarray:
+           max_rounds: int = 200, guess: np.ndarray | None = None) -> np.ndarray:
     """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
     signs at the ends, or 0 at one; ``f_lo``, ``f_hi`` where the search knows
-    them), to ``xtol`` plus 4 ulp of the root.
+    them; a first point ``guess`` inside), to ``xtol`` plus 4 ulp of the root.
 
     Newton's method kept in the bracket: the first point is the secant of the
     ends, each evaluation gives g and g' (one pass over the terms) and
@@ -213,7 +284,7 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
     root = np.where(fa == 0.0, a, np.where(fb == 0.0, b, np.nan))
     live = np.flatnonzero(np.isnan(root))
     with np.errstate(divide="ignore", invalid="ignore"):
-        x = b - fb * (b - a) / (fb - fa)
+        x = b - fb * (b - a) / (fb - fa) if guess is None else guess.copy()
     x = np.where((x > a) & (x < b), x, 0.5 * (a + b))
     for _ in range(max_rounds):
         if not live.size:
