@@ -305,16 +305,23 @@ def _round(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.
         grp.event = np.where(scheduled, s.names[idx, slot] if S else END, END)
         grp.end = horizon
         grp.guards = system.guards(grp.mode, idx)
-        for j, g in enumerate(grp.guards):
-            amps = np.einsum("kti,ki->kt", grp.vectors[:, :, : form.n], g.weights)
-            sig = Signals.of(form, amps, np.broadcast_to(np.asarray(g.constant, float), (k,)))
-            # a constant g (a guard of a side the mode does not move) cannot cross
-            keep = np.flatnonzero(~sig.constant() & (horizon > 0))
-            if keep.size:
-                sigs.append(sig.take(keep))
-                spans.append(horizon[keep])
-                dirs.append(np.full(keep.size, float(g.direction)))
-                owner.append(np.stack([np.full(keep.size, gi), np.full(keep.size, j), keep]))
+        G = len(grp.guards)
+        if not G:
+            continue
+        # every guard of the group in one product: row r·G + j is guard j of design r
+        W = np.stack([np.broadcast_to(g.weights, (k, form.n)) for g in grp.guards], axis=1)
+        K = np.stack([np.broadcast_to(np.asarray(g.constant, float), (k,))
+                      for g in grp.guards], axis=1)
+        amps = np.einsum("kti,kgi->kgt", grp.vectors[:, :, : form.n], W).reshape(k * G, -1)
+        sig = Signals.of(form, amps, K.ravel(), owner=np.repeat(np.arange(k), G))
+        # a constant g (a guard of a side the mode does not move) cannot cross
+        keep = np.flatnonzero(~sig.constant() & np.repeat(horizon > 0, G))
+        if keep.size:
+            r, j = np.divmod(keep, G)
+            sigs.append(sig.take(keep))
+            spans.append(horizon[r])
+            dirs.append(np.array([float(g.direction) for g in grp.guards])[j])
+            owner.append(np.stack([np.full(keep.size, gi), j, r]))
     if sigs:
         gi_, j_, r_ = np.concatenate(owner, axis=1)
         base = np.cumsum([0] + [grp.idx.size for grp in groups])

@@ -38,25 +38,33 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     """
     m = start.shape[0]
     out = np.full(m, np.nan)
-    # a signal whose constant outweighs everything else it holds over the search
-    # (and by more than the surface band) keeps its sign: no search
-    if np.all(start == 0):
-        every = np.arange(m)
-        band = np.maximum(sig.bounds(every, start, np.minimum(h_min, t_end))[0] * h_min,
-                          1e-12 * sig.size(every))
-        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - sig.spread(t_end) <= 2 * band)
-        if live.size < m:
-            if live.size:
-                out[live] = first_crossings(sig.take(live), start[live], t_end[live],
-                                            direction[live], h_min, xtol,
-                                            None if owner is None else owner[live])
-            return out
     rows = np.arange(m)
     span = t_end - start
-    g0, d0 = sig.both(rows, start)
     reach = start + np.minimum(h_min, span)
     near = sig.bounds(rows, start, reach)[0] * h_min
     band = np.maximum(near, 1e-12 * sig.size(rows))
+    # a signal whose constant outweighs everything else it holds over the search
+    # (and by more than the surface band) keeps its sign: no search
+    if np.all(start == 0):
+        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - sig.spread(t_end) <= 2 * band)
+        if live.size < m:
+            if not live.size:
+                return out
+            found = np.full(live.size, np.nan)
+            sub = _searched(sig.take(live), start[live], t_end[live], direction[live],
+                            band[live], h_min, xtol, None if owner is None else owner[live],
+                            found)
+            out[live] = sub
+            return out
+    return _searched(sig, start, t_end, direction, band, h_min, xtol, owner, out)
+
+
+def _searched(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
+              band: np.ndarray, h_min: float, xtol: float, owner: np.ndarray | None,
+              out: np.ndarray) -> np.ndarray:
+    """:func:`first_crossings` of rows that need a search, ``band`` given."""
+    rows = np.arange(start.shape[0])
+    g0, d0 = sig.both(rows, start)
     on_surface = np.abs(g0) <= band
     # a quadratic off the surface (a free side's speed or angle): its crossing
     # from its monotone pieces, no stepping
