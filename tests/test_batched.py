@@ -303,3 +303,26 @@ def test_a_batched_sweep_on_a_local_cluster_is_bit_for_bit_the_local_one(tmp_pat
     a, b = (xr.open_zarr(r.dataset).load()["peak_elastic_gearbox_torque"].values
             for r in (local, remote))
     assert np.array_equal(a.view(np.uint64), b.view(np.uint64)) and local.worst == remote.worst
+
+
+def test_with_out_each_simulated_block_is_computed_once(tmp_path, monkeypatch):
+    """Summaries, PNG data and the Zarr store read the same blocks: each block
+    of a simulated output is evaluated once (Dask's optimisation renamed its
+    tasks for each reader, three evaluations a block)."""
+    pytest.importorskip("xarray")
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep import grid
+    from crane_sym.sweep.spec import plan
+    calls = []
+    evaluate = grid.evaluate_block
+
+    def counting(*args):
+        if all(len(b) for b in args[7:]):            # not Dask's zero-size probe
+            calls.append(tuple(len(b) for b in args[7:]))
+        return evaluate(*args)
+    monkeypatch.setattr(grid, "evaluate_block", counting)
+    chosen = plan(load_scene("hoist_table1"), ["c=1e4:1e5:12:log", "delta=0.5:3:10"],
+                  ["peak_elastic_gearbox_torque"])
+    result = grid.run_sweep(chosen, tmp_path / "out", scheduler="synchronous")
+    assert result.blocks > 1 and len(calls) == result.blocks
+    assert result.dataset.exists() and result.view is not None

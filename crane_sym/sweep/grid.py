@@ -329,23 +329,32 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     try:
         workers = len(client.scheduler_info()["workers"]) if client is not None else None
         chunks = chunks_for(plan, chunk_bytes, workers)
-        arrays = grid_arrays(plan, chunks)
-        tasks, order = _summaries(plan, arrays, chunks), [o.name for o in plan.outputs]
-        if tmp is not None:
-            tasks.append(_view(plan, arrays))
-            # metadata written here, now; the blocks by the tasks; consolidated
-            # below, here again: a worker never writes metadata
-            tasks.append(dataset(plan, arrays).to_zarr(tmp, mode="w-", compute=False,
-                                                        zarr_format=2, consolidated=False))
+        lazy = grid_arrays(plan, chunks)
+        order = [o.name for o in plan.outputs]
+        simulated = any(o.kind == "simulated" for o in plan.outputs)
+
+        def tasks(kept: dict[str, Any]) -> list:
+            arrays = kept or lazy
+            found = _summaries(plan, arrays, chunks)
+            if tmp is not None:
+                found.append(_view(plan, arrays))
+                # metadata written here, now; the blocks by the tasks; consolidated
+                # below, here again: a worker never writes metadata
+                found.append(dataset(plan, arrays).to_zarr(tmp, mode="w-", compute=False,
+                                                            zarr_format=2, consolidated=False))
+            return found
+        # the summaries, the PNG and the Zarr store each read every block, and
+        # Dask's graph optimisation renames the blocks' tasks for each: a
+        # simulated block is computed once and kept (8 bytes a design)
+        once = lazy if simulated and tmp is not None else None
         local = scheduler if client is None else None
         if client is None and local is None:
-            simulated = any(o.kind == "simulated" for o in plan.outputs)
             local = "processes" if simulated else "threads"
         start = time.perf_counter()
         if client is not None:
-            results = compute_remote(client, tasks, quiet, scheduler)
+            results = compute_remote(client, tasks, quiet, scheduler, once)
         else:
-            results = compute_local(tasks, local, quiet, own_pool=tmp is not None)
+            results = compute_local(tasks, local, quiet, own_pool=tmp is not None, once=once)
         seconds = time.perf_counter() - start
         if tmp is not None:
             import zarr
