@@ -326,3 +326,36 @@ def test_with_out_each_simulated_block_is_computed_once(tmp_path, monkeypatch):
     result = grid.run_sweep(chosen, tmp_path / "out", scheduler="synchronous")
     assert result.blocks > 1 and len(calls) == result.blocks
     assert result.dataset.exists() and result.view is not None
+
+
+def test_designs_past_the_phase_cap_are_flagged_in_the_sweep_not_an_error(tmp_path,
+                                                                             monkeypatch):
+    """A grid whose stiff, nearly backlash-free corner chatters past the cap:
+    the sweep finishes, those designs are NaN and flagged in the dataset with
+    the cap as an attribute, the summary counts them, and the worst case is
+    taken over the others."""
+    xr = pytest.importorskip("xarray")
+    from dataclasses import replace
+
+    from crane_sym.derivations.hoist_brakes import sweep_outputs
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep.grid import run_sweep
+    from crane_sym.sweep.report import summary, text_lines
+    from crane_sym.sweep.spec import plan
+    monkeypatch.setattr(sweep_outputs, "MAX_PHASES", 60)
+    spec = sweep_outputs.SWEEP_OUTPUTS["peak_elastic_gearbox_torque"]
+    monkeypatch.setitem(sweep_outputs.SWEEP_OUTPUTS, spec.name, replace(spec, cap=60))
+    chosen = plan(load_scene("hoist_table1"), ["c=4e4:1e6:3:log", "delta=0.01:3:3"],
+                  ["peak_elastic_gearbox_torque"])
+    result = run_sweep(chosen, tmp_path / "out", scheduler="synchronous")
+    data = xr.open_zarr(result.dataset).load()
+    values = data["peak_elastic_gearbox_torque"].values
+    flag = data["peak_elastic_gearbox_torque_capped"].values
+    assert flag.dtype == bool and 0 < flag.sum() < flag.size
+    assert np.array_equal(flag, np.isnan(values))
+    assert data["peak_elastic_gearbox_torque"].attrs["cap_phases"] == 60
+    assert result.capped["peak_elastic_gearbox_torque"] == int(flag.sum())
+    worst, index = result.worst["peak_elastic_gearbox_torque"]
+    assert worst == np.nanmax(values) and values[index] == worst
+    lines = "\n".join(text_lines(summary(result)))
+    assert f"{int(flag.sum())} of 9 designs stopped at the cap of 60 phases" in lines

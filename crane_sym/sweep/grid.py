@@ -119,22 +119,38 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
 
 def _block_summary(block: np.ndarray, offsets: tuple[int, ...], shape: tuple[int, ...],
                    worst_is_max: bool, bound: float | None, op: str) -> tuple:
-    """(worst value, its flat index in the grid, designs within the limit)."""
-    k = int(np.argmax(block) if worst_is_max else np.argmin(block))
+    """(worst value, its flat index in the grid, designs within the limit,
+    designs without a value: NaN, a run stopped at its output's cap). The
+    worst is taken over the designs with a value (NaN, -1 if none)."""
+    missing = np.isnan(block)
+    gaps = int(np.count_nonzero(missing))
+    if gaps == block.size:
+        return float("nan"), -1, -1 if bound is None else 0, gaps
+    if gaps:
+        fill = -np.inf if worst_is_max else np.inf
+        k = int(np.argmax(np.where(missing, fill, block)) if worst_is_max
+                else np.argmin(np.where(missing, fill, block)))
+    else:
+        k = int(np.argmax(block) if worst_is_max else np.argmin(block))
     local = np.unravel_index(k, block.shape)
     flat = int(np.ravel_multi_index(tuple(o + i for o, i in zip(offsets, local)), shape))
     within = -1 if bound is None else int(np.count_nonzero(
         block <= bound if op == "<=" else block >= bound))
-    return float(block[local]), flat, within
+    return float(block[local]), flat, within, gaps
 
 
 def _combine(parts: list[tuple], worst_is_max: bool) -> tuple:
-    """The grid's worst of the blocks' worsts (first in grid order on a tie)."""
+    """The grid's worst of the blocks' worsts (first in grid order on a tie),
+    over the blocks with a value; the counts summed."""
     pick = max if worst_is_max else min
-    value = pick(p[0] for p in parts)
-    flat = min(p[1] for p in parts if p[0] == value)
-    within = sum(p[2] for p in parts) if parts[0][2] >= 0 else -1
-    return value, flat, within
+    valued = [p for p in parts if p[1] >= 0]
+    gaps = sum(p[3] for p in parts)
+    within = sum(max(p[2], 0) for p in parts) if any(p[2] >= 0 for p in parts) else -1
+    if not valued:
+        return float("nan"), 0, within, gaps
+    value = pick(p[0] for p in valued)
+    flat = min(p[1] for p in valued if p[0] == value)
+    return value, flat, within, gaps
 
 
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
@@ -213,6 +229,9 @@ class SweepResult:
     view: np.ndarray | None = None
     #: :func:`sweep_id` of the plan: in the dataset, the PNG and the summary.
     sweep_id: str = ""
+    #: Per output, the designs without a value (NaN: a run stopped at the
+    #: output's cap, ``SweepOutput.cap``), left out of the worst case.
+    capped: dict[str, int] = field(default_factory=dict)
 
     @property
     def blocks(self) -> int:
@@ -370,15 +389,16 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     finally:
         if client is not None:
             client.close(timeout=2)
-    worst, within = {}, None
-    for name, (value, flat, count) in zip(order, results):
+    worst, within, capped = {}, None, {}
+    for name, (value, flat, count, gaps) in zip(order, results):
         worst[name] = (value, tuple(int(i) for i in np.unravel_index(flat, plan.shape)))
         if count >= 0:
             within = count
+        capped[name] = gaps
     view = np.asarray(results[len(order)], dtype=float) if tmp is not None else None
     return SweepResult(plan, chunks, worst, within, seconds,
                        scheduler if client is not None else local, target, view=view,
-                       sweep_id=sweep_id(plan))
+                       sweep_id=sweep_id(plan), capped=capped)
 
 
 def _summaries(plan: SweepPlan, arrays: dict[str, Any], chunks) -> list:
