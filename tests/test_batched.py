@@ -359,3 +359,19 @@ def test_designs_past_the_phase_cap_are_flagged_in_the_sweep_not_an_error(tmp_pa
     assert worst == np.nanmax(values) and values[index] == worst
     lines = "\n".join(text_lines(summary(result)))
     assert f"{int(flag.sum())} of 9 designs stopped at the cap of 60 phases" in lines
+
+
+def test_certify_of_a_hybrid_output_is_refused_in_one_line_naming_it(tmp_path, capsys):
+    """--certify of a batched hybrid output: exit 2, one line naming the
+    output and why (no enclosure of the event times), nothing written."""
+    from crane_sym.cli.main import main
+    out = tmp_path / "out"
+    argv = ["sweep", "hoist_table1", "--vary", "c=1e4:1e5:3:log", "--vary", "delta=0.5:3:3",
+            "--output", "peak_elastic_gearbox_torque", "--certify", "--out", str(out),
+            "--quiet"]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert "--certify" in err and "peak_elastic_gearbox_torque" in err
+    assert "hybrid run" in err and "event times" in err
+    assert not out.exists()
