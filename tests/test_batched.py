@@ -375,3 +375,20 @@ def test_certify_of_a_hybrid_output_is_refused_in_one_line_naming_it(tmp_path, c
     assert "--certify" in err and "peak_elastic_gearbox_torque" in err
     assert "hybrid run" in err and "event times" in err
     assert not out.exists()
+
+
+def test_target_rows_say_met_or_not_met():
+    """Section (f) prints each target with its limit and met / not met, from
+    the measured numbers (not a fixed verdict)."""
+    from crane_sym.bench.batched_targets import markdown_rows
+    one = {"designs": 10_000, "output": "peak", "batched_seconds": 1.5,
+           "batched_cpu_seconds": 1.2, "sample": 3, "speedup": 600.0}
+    ivp = [{"accuracy": tol, "per_design_seconds": 0.07, "sample": 3, "designs": 10_000,
+            "extrapolated_seconds": 700.0, "speedup": s, "target": t, "met": s >= t,
+            "settings": ["DOP853 rtol=1e-09"], "integrator_runs": 78,
+            "runs_with_other_phase_count": 20}
+           for tol, s, t in ((1e-6, 150.0, 100.0), (1e-9, 900.0, 1000.0))]
+    text = "\n".join(markdown_rows({"one_block": one, "ivp": ivp}))
+    rows = [line for line in text.splitlines() if line.startswith("| ") and "---" not in line]
+    verdicts = [line.rstrip(" |").rsplit("| ", 1)[1] for line in rows[1:]]
+    assert verdicts == ["not met", "met", "met", "not met"]
