@@ -5,15 +5,19 @@ bracketed refinement, both on arrays.
 for m signals together (:class:`crane_sym.mechanics.batched_signals.Signals`),
 with the same guarantee: from t, g cannot reach 0 before t + |g(t)|/L (L
 bounds |g'| over the current window) nor before the root of
-|g(t)| − |g'(t)| h − M₂h²/2, so each row steps by the larger of the two
-certified distances, by ``h_min`` where both are smaller, checking the sign
-at each step. Every row keeps its own clock, window and bounds; a row leaves
-the loop once it has bracketed a sign change or reached its end, so the loop
+|g(t)| − |g'(t)| h − M₂h²/2 (of |g(t)| + |g'(t)| h − M₂h²/2 where g moves
+away from 0), so each row steps by the larger certified distance, by
+``h_min`` where it is smaller, checking the sign at each step; where g heads
+for 0 and stays monotone over twice Newton's distance, that step is
+certified too (at most one zero on it) and brackets a simple root at once.
+A quadratic signal (a free side's speed or angle) is not stepped: its root
+comes from its monotone pieces. Every row keeps its own clock, window and
+bounds; a row leaves the loop once it has bracketed a sign change or
+reached its end (or passed an earlier crossing of its design), so the loop
 runs as many rounds as the slowest row needs and each round costs as much as
 the rows still searching. :func:`refine` narrows every bracket together by
-the Illinois variant of regula falsi, with a bisection whenever a step
-shrinks the bracket by less than half, to ``xtol`` (as ``brentq`` does for
-one design).
+Newton's method kept in the bracket, from the values the search knows, to
+``xtol`` (as ``brentq`` does for one design).
 """
 from __future__ import annotations
 
