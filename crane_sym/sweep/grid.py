@@ -53,6 +53,7 @@ from crane_sym.sweep.compute import compute_local, compute_remote, connect, sche
 from crane_sym.sweep.dataset import dataset, sweep_id
 from crane_sym.sweep.plan import SweepError, SweepPlan
 from crane_sym.sweep.store import deferred_signals, remove_settled, sweep_stage
+from crane_sym.sweep.summaries import summaries
 
 __all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid",
            "chunks_for", "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
@@ -115,42 +116,6 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
         spec = registry.sweep_outputs(derivation)[output]
         result = spec.evaluate(values, options)
     return np.ascontiguousarray(np.broadcast_to(np.asarray(result, dtype=float), shape))
-
-
-def _block_summary(block: np.ndarray, offsets: tuple[int, ...], shape: tuple[int, ...],
-                   worst_is_max: bool, bound: float | None, op: str) -> tuple:
-    """(worst value, its flat index in the grid, designs within the limit,
-    designs without a value: NaN, a run stopped at its output's cap). The
-    worst is taken over the designs with a value (NaN, -1 if none)."""
-    missing = np.isnan(block)
-    gaps = int(np.count_nonzero(missing))
-    if gaps == block.size:
-        return float("nan"), -1, -1 if bound is None else 0, gaps
-    if gaps:
-        fill = -np.inf if worst_is_max else np.inf
-        k = int(np.argmax(np.where(missing, fill, block)) if worst_is_max
-                else np.argmin(np.where(missing, fill, block)))
-    else:
-        k = int(np.argmax(block) if worst_is_max else np.argmin(block))
-    local = np.unravel_index(k, block.shape)
-    flat = int(np.ravel_multi_index(tuple(o + i for o, i in zip(offsets, local)), shape))
-    within = -1 if bound is None else int(np.count_nonzero(
-        block <= bound if op == "<=" else block >= bound))
-    return float(block[local]), flat, within, gaps
-
-
-def _combine(parts: list[tuple], worst_is_max: bool) -> tuple:
-    """The grid's worst of the blocks' worsts (first in grid order on a tie),
-    over the blocks with a value; the counts summed."""
-    pick = max if worst_is_max else min
-    valued = [p for p in parts if p[1] >= 0]
-    gaps = sum(p[3] for p in parts)
-    within = sum(max(p[2], 0) for p in parts) if any(p[2] >= 0 for p in parts) else -1
-    if not valued:
-        return float("nan"), 0, within, gaps
-    value = pick(p[0] for p in valued)
-    flat = min(p[1] for p in valued if p[0] == value)
-    return value, flat, within, gaps
 
 
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
@@ -354,7 +319,7 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
 
         def tasks(kept: dict[str, Any]) -> list:
             arrays = kept or lazy
-            found = _summaries(plan, arrays, chunks)
+            found = summaries(plan, arrays, chunks)
             if tmp is not None:
                 found.append(_view(plan, arrays))
                 # metadata written here, now; the blocks by the tasks; consolidated
@@ -399,23 +364,3 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     return SweepResult(plan, chunks, worst, within, seconds,
                        scheduler if client is not None else local, target, view=view,
                        sweep_id=sweep_id(plan), capped=capped)
-
-
-def _summaries(plan: SweepPlan, arrays: dict[str, Any], chunks) -> list:
-    """Per output, the delayed (worst value, its flat index, designs within
-    the limit) of the whole grid, from the blocks' summaries."""
-    import dask
-    starts = [np.cumsum((0,) + c[:-1]) for c in chunks]
-    limit = plan.limit
-    tasks = []
-    for o in plan.outputs:
-        worst_is_max = not (limit is not None and limit.output == o.name and limit.op == ">=")
-        bound = limit.si if limit is not None and limit.output == o.name else None
-        blocks = arrays[o.name].to_delayed()
-        parts = [dask.delayed(_block_summary)(blocks[ix], tuple(int(s[i]) for s, i in
-                                                                  zip(starts, ix)),
-                                              plan.shape, worst_is_max, bound,
-                                              limit.op if bound is not None else "")
-                 for ix in np.ndindex(blocks.shape)]
-        tasks.append(dask.delayed(_combine)(parts, worst_is_max))
-    return tasks
