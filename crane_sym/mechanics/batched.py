@@ -312,7 +312,8 @@ def _round(system: BatchedSystem, groups: list[_Group], s: _State, best_key: np.
         W = np.stack([np.broadcast_to(g.weights, (k, form.n)) for g in grp.guards], axis=1)
         K = np.stack([np.broadcast_to(np.asarray(g.constant, float), (k,))
                       for g in grp.guards], axis=1)
-        amps = np.einsum("kti,kgi->kgt", grp.vectors[:, :, : form.n], W).reshape(k * G, -1)
+        amps = np.matmul(grp.vectors[:, :, : form.n], W.transpose(0, 2, 1))   # (k, T, G)
+        amps = amps.transpose(0, 2, 1).reshape(k * G, -1)
         sig = Signals.of(form, amps, K.ravel(), owner=np.repeat(np.arange(k), G))
         # a constant g (a guard of a side the mode does not move) cannot cross
         keep = np.flatnonzero(~sig.constant() & np.repeat(horizon > 0, G))
