@@ -105,7 +105,7 @@ class BatchedLargest:
     capped: np.ndarray
     rounds: int = 0
     #: Where the time went: closed forms, event search, the output's extrema,
-    #: switching and bookkeeping, the per-design route [s].
+    #: switching and bookkeeping, the per-design route [CPU s of this process].
     seconds: dict[str, float] = field(default_factory=dict)
     #: Designs the batched route took part of the way, the per-design route
     #: the rest (the last ``tail`` still running).
