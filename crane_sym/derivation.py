@@ -215,6 +215,11 @@ class SweepOutput:
         True where ``evaluate`` solves all the designs of a block together
         (a batched hybrid solver), so a sweep gives it blocks as large as its
         workers allow instead of many small ones.
+    cap : int or None
+        The most phases a design's run may take (a chattering contact):
+        ``evaluate`` gives NaN for a design stopped there, and the sweep
+        flags it in its dataset (``<name>_capped``), states the cap and
+        counts such designs in its summary; None where runs are not capped.
     """
 
     name: str
@@ -224,6 +229,7 @@ class SweepOutput:
     options: tuple[str, ...]
     evaluate: Callable[[Mapping[str, Any], Mapping[str, Any]], Any]
     batched: bool = False
+    cap: int | None = None
 
 
 @dataclass

@@ -303,3 +303,92 @@ def test_a_batched_sweep_on_a_local_cluster_is_bit_for_bit_the_local_one(tmp_pat
     a, b = (xr.open_zarr(r.dataset).load()["peak_elastic_gearbox_torque"].values
             for r in (local, remote))
     assert np.array_equal(a.view(np.uint64), b.view(np.uint64)) and local.worst == remote.worst
+
+
+def test_with_out_each_simulated_block_is_computed_once(tmp_path, monkeypatch):
+    """Summaries, PNG data and the Zarr store read the same blocks: each block
+    of a simulated output is evaluated once (Dask's optimisation renamed its
+    tasks for each reader, three evaluations a block)."""
+    pytest.importorskip("xarray")
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep import grid
+    from crane_sym.sweep.spec import plan
+    calls = []
+    evaluate = grid.evaluate_block
+
+    def counting(*args):
+        if all(len(b) for b in args[7:]):            # not Dask's zero-size probe
+            calls.append(tuple(len(b) for b in args[7:]))
+        return evaluate(*args)
+    monkeypatch.setattr(grid, "evaluate_block", counting)
+    chosen = plan(load_scene("hoist_table1"), ["c=1e4:1e5:12:log", "delta=0.5:3:10"],
+                  ["peak_elastic_gearbox_torque"])
+    result = grid.run_sweep(chosen, tmp_path / "out", scheduler="synchronous")
+    assert result.blocks > 1 and len(calls) == result.blocks
+    assert result.dataset.exists() and result.view is not None
+
+
+def test_designs_past_the_phase_cap_are_flagged_in_the_sweep_not_an_error(tmp_path,
+                                                                             monkeypatch):
+    """A grid whose stiff, nearly backlash-free corner chatters past the cap:
+    the sweep finishes, those designs are NaN and flagged in the dataset with
+    the cap as an attribute, the summary counts them, and the worst case is
+    taken over the others."""
+    xr = pytest.importorskip("xarray")
+    from dataclasses import replace
+
+    from crane_sym.derivations.hoist_brakes import sweep_outputs
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep.grid import run_sweep
+    from crane_sym.sweep.report import summary, text_lines
+    from crane_sym.sweep.spec import plan
+    monkeypatch.setattr(sweep_outputs, "MAX_PHASES", 60)
+    spec = sweep_outputs.SWEEP_OUTPUTS["peak_elastic_gearbox_torque"]
+    monkeypatch.setitem(sweep_outputs.SWEEP_OUTPUTS, spec.name, replace(spec, cap=60))
+    chosen = plan(load_scene("hoist_table1"), ["c=4e4:1e6:3:log", "delta=0.01:3:3"],
+                  ["peak_elastic_gearbox_torque"])
+    result = run_sweep(chosen, tmp_path / "out", scheduler="synchronous")
+    data = xr.open_zarr(result.dataset).load()
+    values = data["peak_elastic_gearbox_torque"].values
+    flag = data["peak_elastic_gearbox_torque_capped"].values
+    assert flag.dtype == bool and 0 < flag.sum() < flag.size
+    assert np.array_equal(flag, np.isnan(values))
+    assert data["peak_elastic_gearbox_torque"].attrs["cap_phases"] == 60
+    assert result.capped["peak_elastic_gearbox_torque"] == int(flag.sum())
+    worst, index = result.worst["peak_elastic_gearbox_torque"]
+    assert worst == np.nanmax(values) and values[index] == worst
+    lines = "\n".join(text_lines(summary(result)))
+    assert f"{int(flag.sum())} of 9 designs stopped at the cap of 60 phases" in lines
+
+
+def test_certify_of_a_hybrid_output_is_refused_in_one_line_naming_it(tmp_path, capsys):
+    """--certify of a batched hybrid output: exit 2, one line naming the
+    output and why (no enclosure of the event times), nothing written."""
+    from crane_sym.cli.main import main
+    out = tmp_path / "out"
+    argv = ["sweep", "hoist_table1", "--vary", "c=1e4:1e5:3:log", "--vary", "delta=0.5:3:3",
+            "--output", "peak_elastic_gearbox_torque", "--certify", "--out", str(out),
+            "--quiet"]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert "--certify" in err and "peak_elastic_gearbox_torque" in err
+    assert "hybrid run" in err and "event times" in err
+    assert not out.exists()
+
+
+def test_target_rows_say_met_or_not_met():
+    """Section (f) prints each target with its limit and met / not met, from
+    the measured numbers (not a fixed verdict)."""
+    from crane_sym.bench.batched_targets import markdown_rows
+    one = {"designs": 10_000, "output": "peak", "batched_seconds": 1.5,
+           "batched_cpu_seconds": 1.2, "sample": 3, "speedup": 600.0}
+    ivp = [{"accuracy": tol, "per_design_seconds": 0.07, "sample": 3, "designs": 10_000,
+            "extrapolated_seconds": 700.0, "speedup": s, "target": t, "met": s >= t,
+            "settings": ["DOP853 rtol=1e-09"], "integrator_runs": 78,
+            "runs_with_other_phase_count": 20}
+           for tol, s, t in ((1e-6, 150.0, 100.0), (1e-9, 900.0, 1000.0))]
+    text = "\n".join(markdown_rows({"one_block": one, "ivp": ivp}))
+    rows = [line for line in text.splitlines() if line.startswith("| ") and "---" not in line]
+    verdicts = [line.rstrip(" |").rsplit("| ", 1)[1] for line in rows[1:]]
+    assert verdicts == ["not met", "met", "met", "not met"]

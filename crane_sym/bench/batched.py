@@ -106,6 +106,6 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
         if "breakdown" in r:
             parts = ", ".join(f"{k} {v:.2f} s" for k, v in r["breakdown"].items())
             lines.append(f"\n{r['paper']} {r['output']}, where the batched time went "
-                         f"(a second run): {parts}.")
+                         f"(a second run, CPU seconds): {parts}.")
     lines.append("")
     return lines

@@ -106,6 +106,12 @@ class BatchedBenchCase:
         goes, from a second run.
     at : tuple of str
         ``--at`` texts for arguments the scene does not give.
+    run : callable, optional
+        ``run(values, options, i) -> HybridRun``: design ``i`` of the grid's
+        flat ``values`` as the per-design run (for the rows against
+        ``solve_ivp``, :mod:`crane_sym.bench.batched_targets`); None: no such rows.
+    targets : bool
+        The case the batched solver's targets are measured on.
     """
 
     output: str
@@ -116,6 +122,8 @@ class BatchedBenchCase:
     sample: int = 24
     breakdown: Callable | None = None
     at: tuple[str, ...] = ()
+    run: Callable | None = None
+    targets: bool = False
 
 
 def batched_cases() -> list[tuple[str, BatchedBenchCase]]:

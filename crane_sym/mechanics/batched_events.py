@@ -5,15 +5,19 @@ bracketed refinement, both on arrays.
 for m signals together (:class:`crane_sym.mechanics.batched_signals.Signals`),
 with the same guarantee: from t, g cannot reach 0 before t + |g(t)|/L (L
 bounds |g'| over the current window) nor before the root of
-|g(t)| − |g'(t)| h − M₂h²/2, so each row steps by the larger of the two
-certified distances, by ``h_min`` where both are smaller, checking the sign
-at each step. Every row keeps its own clock, window and bounds; a row leaves
-the loop once it has bracketed a sign change or reached its end, so the loop
+|g(t)| − |g'(t)| h − M₂h²/2 (of |g(t)| + |g'(t)| h − M₂h²/2 where g moves
+away from 0), so each row steps by the larger certified distance, by
+``h_min`` where it is smaller, checking the sign at each step; where g heads
+for 0 and stays monotone over twice Newton's distance, that step is
+certified too (at most one zero on it) and brackets a simple root at once.
+A quadratic signal (a free side's speed or angle) is not stepped: its root
+comes from its monotone pieces. Every row keeps its own clock, window and
+bounds; a row leaves the loop once it has bracketed a sign change or
+reached its end (or passed an earlier crossing of its design), so the loop
 runs as many rounds as the slowest row needs and each round costs as much as
 the rows still searching. :func:`refine` narrows every bracket together by
-the Illinois variant of regula falsi, with a bisection whenever a step
-shrinks the bracket by less than half, to ``xtol`` (as ``brentq`` does for
-one design).
+Newton's method kept in the bracket, from the values the search knows, to
+``xtol`` (as ``brentq`` does for one design).
 """
 from __future__ import annotations
 
@@ -38,37 +42,107 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     """
     m = start.shape[0]
     out = np.full(m, np.nan)
-    # a signal whose constant outweighs everything else it holds over the search
-    # (and by more than the surface band) keeps its sign: no search
-    if np.all(start == 0):
-        every = np.arange(m)
-        band = np.maximum(sig.bounds(every, start, np.minimum(h_min, t_end))[0] * h_min,
-                          1e-12 * sig.size(every))
-        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - sig.spread(t_end) <= 2 * band)
-        if live.size < m:
-            if live.size:
-                out[live] = first_crossings(sig.take(live), start[live], t_end[live],
-                                            direction[live], h_min, xtol,
-                                            None if owner is None else owner[live])
-            return out
     rows = np.arange(m)
     span = t_end - start
-    g0, d0 = sig.both(rows, start)
     reach = start + np.minimum(h_min, span)
     near = sig.bounds(rows, start, reach)[0] * h_min
     band = np.maximum(near, 1e-12 * sig.size(rows))
+    # a signal whose constant outweighs everything else it holds over the search
+    # (and by more than the surface band) keeps its sign: no search
+    if np.all(start == 0):
+        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - sig.spread(t_end) <= 2 * band)
+        if live.size < m:
+            if not live.size:
+                return out
+            found = np.full(live.size, np.nan)
+            sub = _searched(sig.take(live), start[live], t_end[live], direction[live],
+                            band[live], h_min, xtol, None if owner is None else owner[live],
+                            found)
+            out[live] = sub
+            return out
+    return _searched(sig, start, t_end, direction, band, h_min, xtol, owner, out)
+
+
+def _searched(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
+              band: np.ndarray, h_min: float, xtol: float, owner: np.ndarray | None,
+              out: np.ndarray) -> np.ndarray:
+    """:func:`first_crossings` of rows that need a search, ``band`` given."""
+    rows = np.arange(start.shape[0])
+    g0, d0 = sig.both(rows, start)
     on_surface = np.abs(g0) <= band
+    # a quadratic off the surface (a free side's speed or angle): its crossing
+    # from its monotone pieces, no stepping
+    quad = sig.quadratic() & ~on_surface
+    limit = None
+    if quad.any():
+        out[quad] = _quadratic_crossings(sig, rows[quad], start[quad], t_end[quad], g0[quad],
+                                         xtol)
+        if owner is not None:                   # the others stop past their owner's
+            _, code = np.unique(owner, return_inverse=True)
+            first = np.full(int(code.max()) + 1, np.inf)
+            np.minimum.at(first, code[quad], np.where(np.isnan(out[quad]), np.inf, out[quad]))
+            limit = first[code]
+        rest = np.flatnonzero(~quad)
+        if not rest.size:
+            return out
+        sig, start, t_end, direction = sig.take(rest), start[rest], t_end[rest], direction[rest]
+        g0, d0, band, on_surface = g0[rest], d0[rest], band[rest], on_surface[rest]
+        owner = None if owner is None else owner[rest]
+        limit = None if limit is None else limit[rest]
+    else:
+        rest = rows
     # a start on the surface with a side: the search watches g + side·band until g
     # leaves the band, so rounding noise about 0 is not taken for a crossing
     level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
-    lo, hi = _brackets(sig, start, t_end, direction, on_surface, g0, d0, h_min, level=level,
-                       band=band, owner=owner)
+    lo, hi, flo, fhi, level = _brackets(sig, start, t_end, direction, on_surface, g0, d0,
+                                        h_min, level=level, band=band, owner=owner,
+                                        limit=limit)
     found = ~np.isnan(lo)
     same = found & (lo == hi)
-    out[same] = hi[same]
+    out[rest[same]] = hi[same]
     open_ = np.flatnonzero(found & (lo < hi))
     if open_.size:
-        out[open_] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_])
+        out[rest[open_]] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_],
+                                  flo[open_], fhi[open_])
+    return out
+
+
+def _quadratic_crossings(sig: Signals, rows: np.ndarray, start: np.ndarray, t_end: np.ndarray,
+                         g0: np.ndarray, xtol: float) -> np.ndarray:
+    """The first sign change in (start, t_end] of each g = c₀ + c₁t + c₂t²
+    (``g0`` = g(start) ≠ 0), NaN where none: g is monotone on [start, t_v]
+    and [t_v, t_end] (t_v = −c₁/2c₂, its vertex, where inside), so the first
+    of these pieces whose end is on the other side (or at 0) holds exactly
+    one root, which :func:`refine` narrows from the quadratic formula's."""
+    c = np.zeros((rows.size, 3))
+    c[:, : sig.poly.shape[1]] = sig.poly[rows, :3]
+    c0, c1, c2 = c.T
+    with np.errstate(divide="ignore", invalid="ignore"):
+        tv = np.where(c2 != 0, -c1 / (2 * c2), np.inf)
+    inner = (tv > start) & (tv < t_end)
+    mid = np.where(inner, tv, start)
+    gv, ge = sig.value(rows, mid), sig.value(rows, t_end)
+    side = np.sign(g0)
+    first = inner & ((gv == 0) | (np.sign(gv) != side))
+    second = ~first & ((ge == 0) | (np.sign(ge) != side))
+    lo = np.where(first, start, mid)
+    hi = np.where(first, mid, t_end)
+    flo = np.where(first, g0, np.where(inner, gv, g0))
+    fhi = np.where(first, gv, ge)
+    out = np.full(rows.size, np.nan)
+    at_hi = (first | second) & (fhi == 0)
+    out[at_hi] = hi[at_hi]
+    open_ = np.flatnonzero((first | second) & (fhi != 0))
+    if open_.size:
+        a, b, k = c2[open_], c1[open_], c0[open_]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            disc = np.sqrt(np.maximum(b * b - 4 * a * k, 0.0))
+            q = -0.5 * (b + np.where(b >= 0, disc, -disc))
+            r1, r2 = q / a, k / q
+            linear = -k / b
+        guess = np.where(a == 0, linear, np.where((r1 >= lo[open_]) & (r1 <= hi[open_]), r1, r2))
+        out[open_] = refine(sig, rows[open_], lo[open_], hi[open_], xtol, 0.0, flo[open_],
+                            fhi[open_], guess=guess)
     return out
 
 
@@ -84,11 +158,12 @@ def all_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, h_min: flo
     _brackets(sig, start, t_end, np.zeros(m), np.zeros(m, dtype=bool), g0, d0, h_min, found)
     if not found:
         return np.zeros(0, dtype=np.intp), np.zeros(0)
-    which, lo, hi = (np.concatenate(parts) for parts in zip(*found))
+    which, lo, hi, flo, fhi = (np.concatenate(parts) for parts in zip(*found))
     out = hi.copy()
     open_ = np.flatnonzero(lo < hi)
     if open_.size:
-        out[open_] = refine(sig, which[open_], lo[open_], hi[open_], xtol)
+        out[open_] = refine(sig, which[open_], lo[open_], hi[open_], xtol, 0.0, flo[open_],
+                            fhi[open_])
     return which, out
 
 
@@ -96,16 +171,30 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
               on_surface: np.ndarray, g0: np.ndarray, d0: np.ndarray, h_min: float,
               collect: list | None = None, level: np.ndarray | None = None,
               band: np.ndarray | None = None,
-              owner: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+              owner: np.ndarray | None = None,
+              limit: np.ndarray | None = None) -> tuple[np.ndarray, ...]:
     """(lo, hi) of the first step over which each g leaves its side, (hi, hi)
-    where it is on the other side or 0 at hi already, NaN where it does not.
+    where it is on the other side or 0 at hi already, NaN where it does not;
+    the values watched at lo and hi, and the level watched at the end.
     With ``collect`` (a list) every bracket is appended to it as (rows, lo,
-    hi) arrays and the search goes on from hi on the other side. Where
-    ``level`` is nonzero the row watches g + level (``level[i]`` turns 0 once g
-    is past ``band[i]`` on its side); lo and hi bracket the value watched.
-    With ``owner``, a row past the earliest ``hi`` of its owner stops."""
+    hi, value at lo, value at hi) arrays and the search goes on from hi on the
+    other side. Where ``level`` is nonzero the row watches g + level
+    (``level[i]`` turns 0 once g is past ``band[i]`` on its side); lo and hi
+    bracket the value watched. With ``owner``, a row past the earliest ``hi``
+    of its owner, or past its ``limit`` (a crossing of its owner found
+    otherwise), stops.
+
+    Each step is the longest of: the certified distances (|g|/L, the root of
+    |g| − |g'| h − M₂h²/2, or, where g moves away from 0, of
+    |g| + |g'| h − M₂h²/2), ``h_min``, and, where g heads for 0, a step
+    over which g is monotone (h ≤ |g'|/(2M₂), so |g'| stays above |g'|/2),
+    twice the Newton distance |g/g'| long: on it g has at most one zero and
+    the sign at its end tells whether it has one, so the step is certified as
+    well, and it brackets a simple root in one step once Newton's distance
+    is accurate."""
     m = start.shape[0]
     lo, hi = np.full(m, np.nan), np.full(m, np.nan)
+    flo, fhi = np.full(m, np.nan), np.full(m, np.nan)
     level = np.zeros(m) if level is None else level.copy()
     t, gt, dt = start.copy(), g0 + level, d0.copy()
     window = sig.window(np.arange(m), np.maximum(t_end - start, h_min))
@@ -139,6 +228,14 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         with np.errstate(divide="ignore", invalid="ignore"):
             newton = 2 * ag / (d1 + np.sqrt(d1 * d1 + 2 * Ma * ag))
             step = np.maximum(ag / La, newton)
+            # g heads for 0 and stays monotone over twice Newton's distance
+            heading = dt[act] * sa
+            mono = np.minimum(2 * ag / d1, 0.5 * d1 / Ma)
+            step = np.where((heading < 0) & (mono > step), mono, step)
+            # g moves away from 0 (a start on the surface): |g| + |g'|h − M₂h²/2
+            # stays above 0 up to its positive root
+            away = (d1 + np.sqrt(d1 * d1 + 2 * Ma * ag)) / Ma
+            step = np.where((heading > 0) & (away > step), away, step)
         step = np.where(La <= 0, w_end[act] - ta, step)     # g constant on the window
         step = np.where(np.sign(ga) != sa, 0.0, step)
         step = np.where(np.isnan(step), 0.0, step)
@@ -157,62 +254,76 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         done = act[crossed]
         lo[done] = np.where(at_hi[crossed], nxt[crossed], ta[crossed])
         hi[done] = nxt[crossed]
+        flo[done] = np.where(at_hi[crossed], gn[crossed], ga[crossed])
+        fhi[done] = gn[crossed]
         t[act], gt[act], dt[act] = nxt, gn, dn
         if collect is None:
             keep = ~crossed & (nxt < t_end[act])
             if owner is not None:                    # past the owner's earliest bracket
                 np.minimum.at(cap, owner[done], hi[done])
                 keep &= nxt <= cap[owner[act]]
+                if limit is not None:
+                    keep &= nxt <= limit[act]
             act = act[keep]
             continue
-        collect.append((done, lo[done], hi[done]))
+        collect.append((done, lo[done], hi[done], flo[done], fhi[done]))
         side[done] = -side[done]
         flat = done[side[done] == 0]                     # began on the surface: g decides
         side[flat] = np.sign(gt[flat])
         act = act[nxt < t_end[act]]
-    return lo, hi
+    return lo, hi, flo, fhi, level
 
 
 def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
            xtol: float = 1e-14, level: np.ndarray | float = 0.0,
-           max_rounds: int = 200) -> np.ndarray:
+           f_lo: np.ndarray | None = None, f_hi: np.ndarray | None = None,
+           max_rounds: int = 200, guess: np.ndarray | None = None) -> np.ndarray:
     """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
-    signs at the ends, or 0 at one), to ``xtol`` plus 4 ulp of the root."""
+    signs at the ends, or 0 at one; ``f_lo``, ``f_hi`` where the search knows
+    them; a first point ``guess`` inside), to ``xtol`` plus 4 ulp of the root.
+
+    Newton's method kept in the bracket: the first point is the secant of the
+    ends, each evaluation gives g and g' (one pass over the terms) and
+    narrows the bracket by its sign; a Newton point outside the bracket is
+    replaced by its middle (so the bracket at least halves), and a row is
+    done when Newton's correction is within the tolerance (the root is the
+    corrected point; convergence is quadratic there) or the bracket is."""
     rtol = 4 * np.finfo(float).eps
     a, b = lo.copy(), hi.copy()
     level = np.broadcast_to(np.asarray(level, dtype=float), a.shape)
-    fa, fb = sig.value(rows, a) + level, sig.value(rows, b) + level
+    fa = sig.value(rows, a) + level if f_lo is None else f_lo.copy()
+    fb = sig.value(rows, b) + level if f_hi is None else f_hi.copy()
     root = np.where(fa == 0.0, a, np.where(fb == 0.0, b, np.nan))
     live = np.flatnonzero(np.isnan(root))
-    last = np.zeros(a.shape[0], dtype=int)           # which end moved last: −1 a, +1 b
-    width = b - a
+    with np.errstate(divide="ignore", invalid="ignore"):
+        x = b - fb * (b - a) / (fb - fa) if guess is None else guess.copy()
+    x = np.where((x > a) & (x < b), x, 0.5 * (a + b))
     for _ in range(max_rounds):
         if not live.size:
             break
-        al, bl, fal, fbl = a[live], b[live], fa[live], fb[live]
-        secant = bl - fbl * (bl - al) / (fbl - fal)
-        mid = 0.5 * (al + bl)
-        halve = (b[live] - a[live]) > 0.5 * width[live]     # the last step shrank too little
-        x = np.where(halve | ~((secant > al) & (secant < bl)), mid, secant)
-        width[live] = b[live] - a[live]
-        fx = sig.value(rows[live], x) + level[live]
-        hit = fx == 0.0
-        left = np.sign(fx) == np.sign(fal)                  # the root is in [x, b]
-        # Illinois: the end that stays twice in a row has its value halved
-        keep_b = left & ~hit
-        keep_a = ~left & ~hit
-        fb_new = np.where(keep_b & (last[live] == -1), 0.5 * fbl, fbl)
-        fa_new = np.where(keep_a & (last[live] == 1), 0.5 * fal, fal)
-        a[live] = np.where(keep_b, x, al)
-        fa[live] = np.where(keep_b, fx, fa_new)
-        b[live] = np.where(keep_a, x, bl)
-        fb[live] = np.where(keep_a, fx, fb_new)
-        last[live] = np.where(keep_b, -1, 1)
-        root[live[hit]] = x[hit]
-        tol = xtol + rtol * np.abs(x)
-        close = ~hit & (b[live] - a[live] <= 2 * tol)
-        root[live[close]] = 0.5 * (a[live[close]] + b[live[close]])
-        live = live[~hit & ~close]
+        xl = x[live]
+        g, d = sig.both(rows[live], xl)
+        g = g + level[live]
+        hit = g == 0.0
+        left = np.sign(g) == np.sign(fa[live])              # the root is in [x, b]
+        a[live] = np.where(left, xl, a[live])
+        fa[live] = np.where(left, g, fa[live])
+        b[live] = np.where(left, b[live], xl)
+        fb[live] = np.where(left, fb[live], g)
+        al, bl = a[live], b[live]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            newton = xl - g / d
+        inside = (newton > al) & (newton < bl)
+        tol = xtol + rtol * np.abs(xl)
+        # a correction within the tolerance: converged (it may point a hair out of
+        # the bracket when g at x is rounding noise)
+        done = ~hit & (np.abs(newton - xl) <= tol)
+        close = ~hit & ~done & (bl - al <= 2 * tol)
+        root[live[hit]] = xl[hit]
+        root[live[done]] = np.clip(newton[done], al[done], bl[done])
+        root[live[close]] = 0.5 * (al[close] + bl[close])
+        x[live] = np.where(inside, newton, 0.5 * (al + bl))
+        live = live[~(hit | done | close)]
     if live.size:
         root[live] = 0.5 * (a[live] + b[live])
     return root

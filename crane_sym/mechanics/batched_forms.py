@@ -68,6 +68,11 @@ class BatchForm:
         z0 = np.concatenate([x0, np.ones((x0.shape[0], 1))], axis=1)
         return (self.coefficients @ z0[:, None, :, None])[..., 0]
 
+    def take(self, rows: np.ndarray) -> "BatchForm":
+        """The designs ``rows`` only (a row may repeat)."""
+        return BatchForm(self.n, self.powers, self.sine, self.sigmas[rows], self.omegas[rows],
+                         self.coefficients[rows], self.real, self.pairs)
+
     def state(self, t: np.ndarray, vectors: np.ndarray) -> np.ndarray:
         """x(t) of each design (t shape (k,)), from :meth:`vectors`."""
         beta = basis(t, self.powers, self.sigmas, self.omegas, self.sine)
@@ -128,6 +133,16 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
             if form is not None:
                 parts.append((where[fine], form))
     return parts, np.array(sorted(refused), dtype=np.intp)
+
+
+def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Positions of the first of each distinct (A, b) (bytes compared) and,
+    per design, which of them it equals."""
+    k = b.shape[0]
+    rows = np.ascontiguousarray(np.concatenate([A.reshape(k, -1), b], axis=1))
+    keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    return first, inverse.ravel()
 
 
 def _ordered(values, vectors, tol):
@@ -194,6 +209,8 @@ def _form(M, lam, vr, vl, kind, cond_limit: float) -> tuple[BatchForm | None, np
     for j in range(size - live):                         # the exact nilpotent series
         if j:
             term = N @ term / j
+            if not term.any():                           # N^j = 0 (a free side): no more
+                break
         powers.append(j), sine.append(False)
         sigmas.append(np.zeros(k)), omegas.append(np.zeros(k)), coefs.append(term)
     return BatchForm(n, np.array(powers, dtype=float), np.array(sine, dtype=bool),
@@ -217,9 +234,17 @@ class FormCache:
         """(positions in ``idx``, their form, or None where refused)."""
         new = np.flatnonzero(self.signature[idx] == -2)
         if new.size:
-            parts, refused = batch_forms(A[new], b[new], self.cond_limit)
-            self.signature[idx[new[refused]]] = -1
-            for where, f in parts:
+            # designs of equal (A, b) (a swept value the mode does not read)
+            # share one decomposition: each design's is computed alone, so the
+            # shared one is bit for bit what it would have got
+            first, inverse = _distinct(A[new], b[new])
+            parts, refused = batch_forms(A[new[first]], b[new[first]], self.cond_limit)
+            self.signature[idx[new[np.isin(inverse, refused)]]] = -1
+            for where_first, f in parts:
+                slot = np.full(first.size, -1)
+                slot[where_first] = np.arange(where_first.size)
+                where = np.flatnonzero(slot[inverse] >= 0)
+                f = f.take(slot[inverse[where]])
                 key = next((i for i, p in enumerate(self.parts)
                             if p[0] == f.real and p[1] == f.pairs
                             and p[2].shape == f.powers.shape), None)

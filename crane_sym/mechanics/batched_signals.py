@@ -181,6 +181,15 @@ class Signals:
         return ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
                  | np.any(self.sin_amps != 0, axis=1) | np.any(self.poly[:, 1:] != 0, axis=1))
 
+    def quadratic(self) -> np.ndarray:
+        """True where a signal is a polynomial of degree 2 at most (no
+        exponential or oscillating term)."""
+        out = ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
+                | np.any(self.sin_amps != 0, axis=1))
+        if self.poly.shape[1] > 3:
+            out &= ~np.any(self.poly[:, 3:] != 0, axis=1)
+        return out
+
     def window(self, rows: np.ndarray, scale: np.ndarray) -> np.ndarray:
         """A window over which the bounds stay tight: a quarter of the shortest
         period, no longer than the e-folding time of a growing term, nor ``scale``."""

@@ -21,6 +21,7 @@ from __future__ import annotations
 import re
 import sys
 import time
+from typing import Callable
 
 from crane_sym.sweep.plan import SweepError
 from crane_sym.sweep.store import deferred_signals
@@ -46,8 +47,12 @@ def connect(address: str, timeout: float = 3.0):
                          f"within {timeout:g} s ({type(exc).__name__})") from None
 
 
-def compute_local(tasks: list, local: str, quiet: bool, own_pool: bool) -> tuple:
-    """``dask.compute`` on the local scheduler. With ``own_pool`` (the tasks
+def compute_local(tasks: Callable[[dict], list], local: str, quiet: bool, own_pool: bool,
+                  once: dict | None = None) -> tuple:
+    """``dask.compute`` of ``tasks(arrays)`` on the local scheduler. With
+    ``once`` (name -> dask array) those arrays are computed first, in the same
+    pool, and kept, and ``tasks`` gets them computed (each block once, however
+    many tasks read it); otherwise ``tasks({})``. With ``own_pool`` (the tasks
     write files) the threads or processes are this call's own, and on a
     failure or signal every task already started has finished, and no other
     starts, before the exception leaves."""
@@ -59,7 +64,11 @@ def compute_local(tasks: list, local: str, quiet: bool, own_pool: bool) -> tuple
         bar.register()
     try:
         extra = {"pool": pool} if pool is not None else {}
-        return dask.compute(*tasks, scheduler=local, **extra)
+        if once is not None:
+            names = list(once)
+            kept = dask.persist(*[once[n] for n in names], scheduler=local, **extra)
+            once = dict(zip(names, kept))
+        return dask.compute(*tasks(once or {}), scheduler=local, **extra)
     finally:
         if bar is not None:
             bar.unregister()
@@ -84,11 +93,17 @@ def _pool(local: str):
     return None
 
 
-def compute_remote(client, tasks: list, quiet: bool, address: str) -> list:
-    """The tasks on a ``dask.distributed`` scheduler. On a failure or signal
-    with the scheduler still there, the tasks are cancelled and the call
-    waits (up to :data:`STOP_WAIT` seconds) until no worker runs one; a
-    lost scheduler becomes a SweepError naming ``--scheduler``."""
+def compute_remote(client, tasks: Callable[[dict], list], quiet: bool, address: str,
+                   once: dict | None = None) -> list:
+    """``tasks(arrays)`` on a ``dask.distributed`` scheduler, the arrays of
+    ``once`` persisted on the cluster first (as :func:`compute_local`). On a
+    failure or signal with the scheduler still there, the tasks are cancelled
+    and the call waits (up to :data:`STOP_WAIT` seconds) until no worker runs
+    one; a lost scheduler becomes a SweepError naming ``--scheduler``."""
+    if once is not None:
+        names = list(once)
+        once = dict(zip(names, client.persist([once[n] for n in names])))
+    tasks = tasks(once or {})
     futures = client.compute(tasks)
     try:
         if not quiet:

@@ -7,10 +7,12 @@ from __future__ import annotations
 import hashlib
 from typing import Any
 
-from crane_sym import __version__
+import numpy as np
+
+from crane_sym import __version__, registry
 from crane_sym.sweep.plan import SweepPlan, shown_unit
 
-__all__ = ["dataset", "sweep_id"]
+__all__ = ["capped_name", "dataset", "output_cap", "sweep_id"]
 
 
 def dataset(plan: SweepPlan, arrays: dict[str, Any]):
@@ -36,6 +38,15 @@ def dataset(plan: SweepPlan, arrays: dict[str, Any]):
         if plan.windowed(o.name):
             attrs["cell_methods"] = f"{plan.window.name}: maximum"
             attrs["window"] = plan.window.text()
+        cap = output_cap(plan, o.name)
+        if cap is not None:
+            attrs["cap_phases"] = cap
+            attrs["capped"] = (f"NaN where a design's run passed {cap} phases (a contact "
+                               f"that chatters): flagged in {capped_name(o.name)}")
+            variables[capped_name(o.name)] = (
+                dims, _isnan(arrays[o.name]),
+                {"long_name": f"{o.name}: run stopped at the cap of {cap} phases, no value",
+                 "cap_phases": cap})
         variables[o.name] = (dims, arrays[o.name], attrs)
     window = plan.window
     attrs = {"scene": plan.scene, "derivation": plan.derivation,
@@ -52,6 +63,24 @@ def dataset(plan: SweepPlan, arrays: dict[str, Any]):
                       "window_stop": window.stop, "window_points": window.n,
                       "window_units": window.unit, "window_to_SI": window.to_si})
     return xr.Dataset(variables, coords=coords, attrs=attrs)
+
+
+def output_cap(plan: SweepPlan, name: str) -> int | None:
+    """The most phases a design's run of output ``name`` may take
+    (``SweepOutput.cap``), None for an output without a cap."""
+    if next(o for o in plan.outputs if o.name == name).kind != "simulated":
+        return None
+    return getattr(registry.sweep_outputs(plan.derivation).get(name), "cap", None)
+
+
+def capped_name(name: str) -> str:
+    """The dataset's flag of the designs of ``name`` stopped at the cap."""
+    return f"{name}_capped"
+
+
+def _isnan(array):
+    import dask.array as da
+    return da.isnan(array) if isinstance(array, da.Array) else np.isnan(array)
 
 
 def sweep_id(plan: SweepPlan) -> str:

@@ -55,6 +55,7 @@ from crane_sym.sweep.compute import compute_local, compute_remote, connect, sche
 from crane_sym.sweep.dataset import dataset, sweep_id
 from crane_sym.sweep.plan import SweepError, SweepPlan
 from crane_sym.sweep.store import deferred_signals, remove_settled, sweep_stage
+from crane_sym.sweep.summaries import summaries
 
 __all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResult", "check_grid",
            "chunks_for", "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
@@ -122,26 +123,6 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
         spec = registry.sweep_outputs(derivation)[output]
         result = spec.evaluate(values, options)
     return np.ascontiguousarray(np.broadcast_to(np.asarray(result, dtype=float), shape))
-
-
-def _block_summary(block: np.ndarray, offsets: tuple[int, ...], shape: tuple[int, ...],
-                   worst_is_max: bool, bound: float | None, op: str) -> tuple:
-    """(worst value, its flat index in the grid, designs within the limit)."""
-    k = int(np.argmax(block) if worst_is_max else np.argmin(block))
-    local = np.unravel_index(k, block.shape)
-    flat = int(np.ravel_multi_index(tuple(o + i for o, i in zip(offsets, local)), shape))
-    within = -1 if bound is None else int(np.count_nonzero(
-        block <= bound if op == "<=" else block >= bound))
-    return float(block[local]), flat, within
-
-
-def _combine(parts: list[tuple], worst_is_max: bool) -> tuple:
-    """The grid's worst of the blocks' worsts (first in grid order on a tie)."""
-    pick = max if worst_is_max else min
-    value = pick(p[0] for p in parts)
-    flat = min(p[1] for p in parts if p[0] == value)
-    within = sum(p[2] for p in parts) if parts[0][2] >= 0 else -1
-    return value, flat, within
 
 
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
@@ -222,6 +203,9 @@ class SweepResult:
     view: np.ndarray | None = None
     #: :func:`sweep_id` of the plan: in the dataset, the PNG and the summary.
     sweep_id: str = ""
+    #: Per output, the designs without a value (NaN: a run stopped at the
+    #: output's cap, ``SweepOutput.cap``), left out of the worst case.
+    capped: dict[str, int] = field(default_factory=dict)
 
     @property
     def blocks(self) -> int:
@@ -338,14 +322,24 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     try:
         workers = len(client.scheduler_info()["workers"]) if client is not None else None
         chunks = chunks_for(plan, chunk_bytes, workers)
-        arrays = grid_arrays(plan, chunks)
-        tasks, order = _summaries(plan, arrays, chunks), [o.name for o in plan.outputs]
-        if tmp is not None:
-            tasks.append(_view(plan, arrays))
-            # metadata written here, now; the blocks by the tasks; consolidated
-            # below, here again: a worker never writes metadata
-            tasks.append(dataset(plan, arrays).to_zarr(tmp, mode="w-", compute=False,
-                                                        zarr_format=2, consolidated=False))
+        lazy = grid_arrays(plan, chunks)
+        order = [o.name for o in plan.outputs]
+        simulated = any(o.kind != "closed" for o in plan.outputs)   # simulated, component
+
+        def tasks(kept: dict[str, Any]) -> list:
+            arrays = kept or lazy
+            found = summaries(plan, arrays, chunks)
+            if tmp is not None:
+                found.append(_view(plan, arrays))
+                # metadata written here, now; the blocks by the tasks; consolidated
+                # below, here again: a worker never writes metadata
+                found.append(dataset(plan, arrays).to_zarr(tmp, mode="w-", compute=False,
+                                                            zarr_format=2, consolidated=False))
+            return found
+        # the summaries, the PNG and the Zarr store each read every block, and
+        # Dask's graph optimisation renames the blocks' tasks for each: a
+        # simulated block is computed once and kept (8 bytes a design)
+        once = lazy if simulated and tmp is not None else None
         local = scheduler if client is None else None
         if client is None and local is None:
             kinds = {o.kind for o in plan.outputs}
@@ -353,9 +347,9 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
                      "synchronous" if kinds == {"component"} else "processes")
         start = time.perf_counter()
         if client is not None:
-            results = compute_remote(client, tasks, quiet, scheduler)
+            results = compute_remote(client, tasks, quiet, scheduler, once)
         else:
-            results = compute_local(tasks, local, quiet, own_pool=tmp is not None)
+            results = compute_local(tasks, local, quiet, own_pool=tmp is not None, once=once)
         seconds = time.perf_counter() - start
         if tmp is not None:
             import zarr
@@ -371,32 +365,13 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     finally:
         if client is not None:
             client.close(timeout=2)
-    worst, within = {}, None
-    for name, (value, flat, count) in zip(order, results):
+    worst, within, capped = {}, None, {}
+    for name, (value, flat, count, gaps) in zip(order, results):
         worst[name] = (value, tuple(int(i) for i in np.unravel_index(flat, plan.shape)))
         if count >= 0:
             within = count
+        capped[name] = gaps
     view = np.asarray(results[len(order)], dtype=float) if tmp is not None else None
     return SweepResult(plan, chunks, worst, within, seconds,
                        scheduler if client is not None else local, target, view=view,
-                       sweep_id=sweep_id(plan))
-
-
-def _summaries(plan: SweepPlan, arrays: dict[str, Any], chunks) -> list:
-    """Per output, the delayed (worst value, its flat index, designs within
-    the limit) of the whole grid, from the blocks' summaries."""
-    import dask
-    starts = [np.cumsum((0,) + c[:-1]) for c in chunks]
-    limit = plan.limit
-    tasks = []
-    for o in plan.outputs:
-        worst_is_max = not (limit is not None and limit.output == o.name and limit.op == ">=")
-        bound = limit.si if limit is not None and limit.output == o.name else None
-        blocks = arrays[o.name].to_delayed()
-        parts = [dask.delayed(_block_summary)(blocks[ix], tuple(int(s[i]) for s, i in
-                                                                  zip(starts, ix)),
-                                              plan.shape, worst_is_max, bound,
-                                              limit.op if bound is not None else "")
-                 for ix in np.ndindex(blocks.shape)]
-        tasks.append(dask.delayed(_combine)(parts, worst_is_max))
-    return tasks
+                       sweep_id=sweep_id(plan), capped=capped)

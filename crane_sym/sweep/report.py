@@ -27,6 +27,7 @@ import sympy as sp
 from crane_sym import registry
 from crane_sym.latex import latex
 from crane_sym.output_files import Stage
+from crane_sym.sweep.dataset import capped_name, output_cap
 from crane_sym.sweep.grid import MAX_PLOT, SweepResult, plotted, strided
 from crane_sym.sweep.plan import SweepPlan
 
@@ -60,6 +61,10 @@ def summary(result: SweepResult) -> dict[str, Any]:
             "worst": {"value": value / factor, "unit": unit, "kind": kind,
                       "design": {a.name: {"value": float(axes[a.name][i]), "unit": a.unit}
                                  for a, i in zip(plan.axes, index)}}}
+        cap = output_cap(plan, o.name)
+        if cap is not None:
+            outputs[o.name]["capped"] = {"designs": result.capped.get(o.name, 0),
+                                         "cap_phases": cap, "flag": capped_name(o.name)}
         if plan.windowed(o.name):
             outputs[o.name]["over"] = plan.window.text()
         if plan.independent_of(o.name):
@@ -107,6 +112,11 @@ def text_lines(data: dict[str, Any]) -> list[str]:
         over = f", {entry['over']}" if "over" in entry else ""
         lines.append(f"  {name}{over}: {w['kind']} {_quantity(w['value'], w['unit'])} "
                      f"at {design}")
+        if "capped" in entry:
+            c = entry["capped"]
+            lines.append(f"    {c['designs']} of {data['points']} designs stopped at the cap of "
+                         f"{c['cap_phases']} phases (NaN, flagged in {c['flag']}; left out of "
+                         f"the worst case)")
         if "independent_of" in entry:
             lines.append(f"    ({name} does not depend on {', '.join(entry['independent_of'])}:"
                          " constant along that axis)")

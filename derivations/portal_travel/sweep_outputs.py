@@ -39,15 +39,18 @@ def _designs(values):
     return arrays[0].shape, runs
 
 
+#: The most phases of a design's start-up before it is stopped (a contact that
+#: chatters): its peak is NaN, flagged in the sweep's dataset.
+MAX_PHASES = 10_000
+
+
 def _peak_startup_link_force(values, options) -> np.ndarray:
     """The largest F1 + F2 of the start-up from rest over Table 1's hold times,
-    the block's designs solved together."""
+    the block's designs solved together; NaN for a design stopped at
+    :data:`MAX_PHASES` phases."""
     from crane_sym.mechanics.batched_runs import largest_of_runs
     shape, runs = _designs(values)
-    result = largest_of_runs(runs, magnitude=False)
-    if result.capped.any():
-        raise RuntimeError("peak_startup_link_force: more than 10000 events in the start-up "
-                           f"of design {int(np.flatnonzero(result.capped)[0])} of a block")
+    result = largest_of_runs(runs, magnitude=False, max_events=MAX_PHASES)
     return result.value.reshape(shape)
 
 
@@ -62,5 +65,5 @@ SWEEP_OUTPUTS = {
         "peak_startup_link_force", "N",
         "Largest F1 + F2 of the two links in the start-up with backlash (Fig. 12, Table 1's "
         "hold times, over 4 s), phases in closed form", _PARAMETERS, (),
-        _peak_startup_link_force, batched=True),
+        _peak_startup_link_force, batched=True, cap=MAX_PHASES),
 }
