@@ -82,6 +82,14 @@ def test_example_right_misprinted_and_unreadable():
     assert unreadable.cause.id == "unexplained"       # the file gives no cause
 
 
+def test_bridge_travel_example_audits_its_referred_mass():
+    """The second new example's formula: the bridge's mass with the wheels
+    referred to the rim, confirmed symbolically (n kept: the rim's reeving)."""
+    (record,) = audit_file(read_component_file(EXAMPLES / "bridge_travel.toml"))
+    assert (record.label, record.verdict, record.method) == ("(B1)", "confirmed", "symbolic")
+    assert [c.status for c in record.checks] == ["pass", "pass", "pass"]
+
+
 def test_cli_table_and_json(capsys):
     assert main(["audit", str(ROPE), "--quiet"]) == 0
     table = capsys.readouterr().out

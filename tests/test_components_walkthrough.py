@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from crane_sym.cli.main import main
+from crane_sym.components.file_audit import audit_file
 from crane_sym.components.reading import read_component_file
 from crane_sym.docs.drive_train import drive_train_walkthrough
 from crane_sym.docs.numbers import math_errors
@@ -18,7 +19,8 @@ from crane_sym.docs.page import math_pieces
 from crane_sym.latex import latex
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"
-FILES = [EXAMPLES / "hoist_fig9.toml", EXAMPLES / "hoist_rope_stretch.toml"]
+FILES = [EXAMPLES / "hoist_fig9.toml", EXAMPLES / "hoist_rope_stretch.toml",
+         EXAMPLES / "bridge_travel.toml"]
 
 
 @pytest.fixture(scope="module", params=FILES, ids=lambda p: p.stem)
@@ -41,7 +43,8 @@ def test_the_equations_are_the_models(handout):
     for q in eq.coordinates:
         assert (f"Q_{{{latex(q, symbol_names=names)}}} = "
                 f"{latex(eq.forces[q], symbol_names=names)}") in text
-    assert "c_{\\mathrm{gearbox\\_mesh}}" in text
+    link = read.model.assembly.links[0].part.name.replace("_", "\\_")
+    assert f"c_{{\\mathrm{{{link}}}}}" in text          # a stiffness, named after its link
 
 
 def test_the_phases_are_the_runs(handout):
@@ -82,9 +85,12 @@ def test_the_files_formulas_with_their_verdicts(handout):
         assert "## The file's formulas" not in text
         return
     part = text.split("## The file's formulas")[1]
-    assert "Verdict: **confirmed** (decided by symbolic)" in part
-    assert "Verdict: **discrepancy** (decided by numeric)" in part
-    assert "Verdict: **not_checkable** (no check could decide)" in part
+    said = {"confirmed": "Verdict: **confirmed** (decided by symbolic)",
+            "discrepancy": "Verdict: **discrepancy** (decided by numeric)",
+            "not_checkable": "Verdict: **not_checkable** (no check could decide)"}
+    verdicts = [r.verdict for r in audit_file(read)]
+    assert sorted(set(verdicts)) == sorted(v for v in said if said[v] in part)
+    assert part.count("Verdict: **") == len(verdicts) == len(read.formulas)
 
 
 def test_cli_writes_markdown_and_html(tmp_path, capsys):
