@@ -90,6 +90,22 @@ def test_bridge_travel_example_audits_its_referred_mass():
     assert [c.status for c in record.checks] == ["pass", "pass", "pass"]
 
 
+def test_a_run_number_is_compared_at_a_motors_torque_as_written(tmp_path):
+    """A motor's torque is a real symbol (either sign): a number of the run is
+    compared at its value, +230 N*m, not at its mirror (which gave 'at M_A =
+    -230.0 ... relative difference 1.85' for a rule 15 % off)."""
+    text = (EXAMPLES / "bridge_travel.toml").read_text(encoding="utf-8") + (
+        '\n[[formula]]\nname = "(B2)"\nlatex = "M_{max} = 2 M_A"\n'
+        'symbols = { "M_A" = "start.torque" }\nquantity = "drive_line.peak"\n'
+        'tolerance = 0.05\n')
+    path = tmp_path / "bridge.toml"
+    path.write_text(text, encoding="utf-8")
+    _, rule = audit_file(read_component_file(path))
+    assert (rule.verdict, rule.method) == ("discrepancy", "numeric")
+    assert "at $M_A$ = 230.0 the printed right-hand side is 460.0" in rule.detail
+    assert "(relative difference 0.148, tolerance 0.05)" in rule.detail
+
+
 def test_cli_table_and_json(capsys):
     assert main(["audit", str(ROPE), "--quiet"]) == 0
     table = capsys.readouterr().out

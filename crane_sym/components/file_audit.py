@@ -97,8 +97,11 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
                                  "number of the run is compared at the file's values, which "
                                  "are sampled as magnitudes")
         low, high = (v, v) if exact else (v / SPREAD, v * SPREAD)
+        # a number of the run is compared at the file's value itself, never at
+        # its mirror: a real symbol (a motor's torque) would be sampled ±
+        sign = "positive" if exact and p.value > 0 else _sign(symbol)
         entries[symbol] = PhysicalSymbol(symbol, p.dimension, p.unit, p.description,
-                                         PARAMETER, _sign(symbol), (low, high))
+                                         PARAMETER, sign, (low, high))
 
     t = model.equations.t
     for printed, target in f.symbols:
