@@ -240,8 +240,9 @@ class ComponentSystem:
             if speed:
                 motion[g] = FORWARD if speed > 0 else BACKWARD
                 return replace(mode, motion=tuple(motion)), x
-            kind = "rest"
-        g = i
+            kind = "rest"                       # engaged at rest: held, or slides
+        else:
+            g = i                                # rests, slips: the group's own event
         x[self.v(g)] = 0.0
         if kind == "slip+":
             motion[g] = FORWARD

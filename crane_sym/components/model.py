@@ -29,7 +29,7 @@ them) and hands the :class:`~crane_sym.components.hybrid.ComponentSystem` to
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import cached_property
+from functools import cached_property, partial
 from typing import Sequence
 
 import numpy as np
@@ -104,6 +104,10 @@ class ComponentRun:
             raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
         return HybridRun(self.system, self.mode, self.x0, self.t_end, self.schedule,
                          self.system.link_load(names.index(link)))
+
+
+def _nothing(size: int, mode: Mode) -> tuple[np.ndarray, float]:
+    return np.zeros(size), 0.0
 
 
 def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[float, float]:
@@ -261,18 +265,49 @@ class Model:
                 out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
         return tuple(sorted(out))
 
-    def run(self, duration: Given, start_body: str | None = None,
-            start_speed: Given = 0.0, exact: bool | None = None,
-            rest: bool = False) -> ComponentRun:
-        """The run from the state of :meth:`start` (steady, or at ``rest``) over
-        ``duration``, phases in closed form
-        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+    def hybrid_run(self, duration: Given, link: str | None = None,
+                   start_body: str | None = None, start_speed: Given = 0.0,
+                   rest: bool = False) -> HybridRun:
+        """The run of :meth:`run`, not yet solved: the system, the state of
+        :meth:`start`, the end and the schedule, with the load of ``link``
+        (default: the first elastic link) as its output. What a paper's
+        ``HybridModel`` hands to scenes, sweeps and the bench.
+
+        Parameters
+        ----------
+        duration : str or float
+            The end of the run (a time with its unit, or seconds).
+        link : str, optional
+            Name of the elastic link whose load is the output.
+        start_body, start_speed, rest
+            The start, as :meth:`start` takes it.
+
+        Returns
+        -------
+        HybridRun
+        """
         from sympy.physics.units import time
         t_end = value("run", "duration", duration, time).si
         if not t_end > 0:
             raise ComponentError(f"run: duration must be > 0, got {duration!r}")
         mode, x0, extra = self.start(start_body, start_speed, rest)
         system = ComponentSystem(self.equations, extra)
-        schedule = self.schedule()
-        result = simulate(system, mode, x0, t_end, schedule, exact=exact)
-        return ComponentRun(self, system, mode, x0, t_end, schedule, result)
+        names = [l.part.name for l in system.assembly.links]
+        if link is not None and link not in names:
+            raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
+        if names:
+            output = system.link_load(names.index(link) if link is not None else 0)
+        else:                                    # no link: a zero output
+            output = partial(_nothing, system.size)
+        return HybridRun(system, mode, x0, t_end, self.schedule(), output)
+
+    def run(self, duration: Given, start_body: str | None = None,
+            start_speed: Given = 0.0, exact: bool | None = None,
+            rest: bool = False) -> ComponentRun:
+        """The run from the state of :meth:`start` (steady, or at ``rest``) over
+        ``duration``, phases in closed form
+        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+        run = self.hybrid_run(duration, None, start_body, start_speed, rest)
+        result = simulate(run.system, run.mode, run.x0, run.t_end, run.schedule, exact=exact)
+        return ComponentRun(self, run.system, run.mode, run.x0, run.t_end,
+                            tuple(run.schedule), result)

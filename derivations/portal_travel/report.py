@@ -160,6 +160,7 @@ def startup_report(scene, module):
 
     from crane_sym.generated import portal_travel as gen
 
+    from .drive_train import step_accelerations
     from .hybrid import STARTUP
     from .startup import F_MEAN
 
@@ -193,8 +194,8 @@ def startup_report(scene, module):
         s = float(module.startup_backlash_at_rim(phi))
         run = STARTUP.solve({**rim, "s": s}, {"holds": holds, "end": end})
         when, peak = run.peak("load")
-        acc = run.system.step_accelerations(run.result)
-        closing = next((t for t, event, _ in run.events if event.startswith("drive")), None)
+        acc = step_accelerations(run.result, run.system)
+        closing = next((t for t, event, _ in run.events if event.endswith("closes +")), None)
         if closing is not None:      # the flank closes: the gap's closed-form speed
             values[f"v_close_{i}"] = float(gen.startup_gap_motor_speed(closing, **gap_args))
             lines.append(f"backlash {fq(phi, 'rad')}: the flank closes at t = "
