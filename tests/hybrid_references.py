@@ -111,14 +111,16 @@ def fig11_reference(v, holds, end, max_step=2e-3):
     """Paper 003, Fig. 11, at the rim: m_d v̇_i = β_k (v0 − v_i) − F_i (k the
     start step), F_i = c·dz(x_i − x_k) + b·u̇_i outside the gap 0 < u_i < s;
     the crane stands while |F1 + F2 − W_w| ≤ W_f, else m_k v̇_k = F1 + F2 − W_w
-    − W_f·sign(v_k). From rest, gaps open. Returns F1 + F2 as a function of time."""
-    c, b, s = v["c_l"], v["b"], v["s"]
+    − W_f·sign(v_k). From rest, gaps open; the right gap ``s_right`` where given.
+    Returns F1 + F2 as a function of time."""
+    c, b = v["c_l"], v["b"]
+    gaps = (v["s"], v.get("s_right", v["s"]))
     slopes = [v["beta_1"] * v["q"] ** k for k in range(len(holds) + 1)]
     mode = {"step": 0, "crane": "stand"}
 
     def links(y):
         out = []
-        for i in (0, 2):
+        for i, s in ((0, gaps[0]), (2, gaps[1])):
             u, du = y[i] - y[4], y[i + 1] - y[5]
             touching = (u >= s) | (u <= 0)
             out.append(c * dead_zone(u, 0.0, s) + np.where(touching, b * du, 0.0))

@@ -42,13 +42,15 @@ def fig11_model(values: Mapping[str, float], holds: Sequence[float]) -> Model:
     side's motors), ``m_k`` (the crane), ``c_l`` and ``b`` (a link's stiffness
     and damping), ``s`` (its backlash), ``v0`` (no-load speed), ``beta_1`` and
     ``q`` (the first characteristic's slope and the ratio of the next),
-    ``W_f``, ``W_w`` (friction and wind); one characteristic per hold time of
+    ``W_f``, ``W_w`` (friction and wind), optionally ``s_right`` (the right
+    link's backlash, where it differs); one characteristic per hold time of
     ``holds`` [s], then the natural one (Table 1's start)."""
     v = values
     slopes = [v["beta_1"] * v["q"] ** k for k in range(len(holds) + 1)]
     parts = [Mass("left", v["m_d"]), Mass("right", v["m_d"]), Mass("crane", v["m_k"])]
     for side in ("left", "right"):
-        parts += [ElasticLink(f"link_{side}", "crane", side, v["c_l"], v["b"], v["s"],
+        gap = v.get("s_right", v["s"]) if side == "right" else v["s"]
+        parts += [ElasticLink(f"link_{side}", "crane", side, v["c_l"], v["b"], gap,
                               contact="negative"),                  # Fig. 11: C_пр, gap
                   Characteristic(f"motors_{side}", side, v["v0"], slopes, list(holds))]
     if v["W_f"] > 0:
