@@ -28,14 +28,14 @@ them) and hands the :class:`~crane_sym.components.hybrid.ComponentSystem` to
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import cached_property, partial
 from typing import Sequence
 
 import numpy as np
 
 from crane_sym.components.equations import Equations, derive
-from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
+from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, HELD, ComponentSystem, Mode
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
                                         value)
@@ -215,15 +215,31 @@ class Model:
                     tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
         return mode, x, extra
 
+    def _at_once(self) -> tuple[bool, ...]:
+        """Which brakes act at rest from t = 0 (a step without delay)."""
+        return tuple(isinstance(l.part, Brake) and l.part.delay == 0
+                     and l.part.build_up == "step"
+                     for l in self.assembly.loads if isinstance(l.part, Brake))
+
     def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
+        """At rest, every gap open; a brake without delay engaged from the
+        start, its body held while the loads at rest are within its capacity
+        (decided here, where the state is exactly zero, not at an event)."""
         if self.steady_motor is not None:
             raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
                                  "hold; give its torque")
         probe = ComponentSystem(self.equations)
-        mode = Mode(tuple(0 for _ in probe.backlash), tuple(FREE for _ in self.assembly.groups),
-                    tuple(False for _ in probe.brakes), tuple(True for _ in probe.motors),
-                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics))
-        return mode, np.zeros(probe.size), {}
+        engaged = self._at_once()
+        motion = [FREE for _ in self.assembly.groups]
+        mode = Mode(tuple(0 for _ in probe.backlash), tuple(motion), engaged,
+                    tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
+                    tuple(0 for _ in probe.characteristics))
+        for g in sorted({probe.brake_group[i] for i, on in enumerate(engaged) if on}):
+            held = replace(mode, motion=tuple(HELD if j == g else m
+                                              for j, m in enumerate(motion)))
+            net, cap = probe.net_load(held, g)[1], probe.capacity(held, g)[1]
+            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
+        return replace(mode, motion=tuple(motion)), np.zeros(probe.size), {}
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
@@ -299,7 +315,13 @@ class Model:
             output = system.link_load(names.index(link) if link is not None else 0)
         else:                                    # no link: a zero output
             output = partial(_nothing, system.size)
-        return HybridRun(system, mode, x0, t_end, self.schedule(), output)
+        schedule = self.schedule()
+        if rest:             # the brakes engaged from the start are in its mode
+            names = {f"{l.part.name} engages" for l, on in zip(
+                [l for l in self.assembly.loads if isinstance(l.part, Brake)], self._at_once())
+                if on}
+            schedule = tuple(e for e in schedule if not (e[0] == 0 and e[1] in names))
+        return HybridRun(system, mode, x0, t_end, schedule, output)
 
     def run(self, duration: Given, start_body: str | None = None,
             start_speed: Given = 0.0, exact: bool | None = None,
