@@ -5,8 +5,8 @@ drive with backlash in both drives (Fig. 11, Fig. 12, Table 1).
 The system (modes, guards, switching) is the component model of
 ``drive_train.fig11_model`` (``crane_sym.components``: the motors of each
 side, the crane, the two links with backlash, the characteristics, friction
-and wind as parts, the drive derived from them); this module says how a scene's values build its run and which outputs it
-has. The values are the drive at the wheel rim: ``m_d``, ``b``, ``v0``,
+and wind as parts, the drive derived from them); this module says how a
+scene's values build its run and which outputs it has. The values are the drive at the wheel rim: ``m_d``, ``b``, ``v0``,
 ``beta_1``, ``q`` and the backlash ``s`` at the rim, with the scene's ``m_k``,
 ``c_l``, ``W_f``, ``W_w``. A start-up scene's module tabulates its curves, one
 run per backlash of the scene (:func:`scene_runs`, the rim quantities from

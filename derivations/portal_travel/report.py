@@ -3,8 +3,8 @@
 Four kinds of scene (``REPORTS``), told apart by the outputs they name: Fig. 10
 (the shift limits against the tooth number), a gear pair checked like Form 1,
 the support loads with Table 3's exceedance probabilities, and the start-up
-with backlash (Fig. 12, Table 1; phases in closed form, the drive of ``drive_train.py``, run
-through ``hybrid.STARTUP``). Numbers come from the scene's generated module,
+with backlash (Fig. 12, Table 1; phases in closed form, the drive of
+``drive_train.py``, run through ``hybrid.STARTUP``). Numbers come from the scene's generated module,
 never from SymPy; the reports import NumPy and the generated modules only
 when run.
 """
