@@ -326,8 +326,8 @@ def startup_load_0(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 5 phases, each in closed form; they end at
-    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
-    end.
+    0.0440671 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -362,7 +362,7 @@ _TABLE_STARTUP_LOAD_1 = (
               5.23188304444, 0.0, 6.062779843024]),
     # cos_amps: cosine amplitudes
     np.array([-87853.52769035, -175707.0550185, -116220.4202539, 116220.4202539, -224780.8878054,
-              270957.3675154, 22392.53688292, 5628.563583048, 1390.328263955, -5739.040162767]),
+              270957.3675154, 22392.53688292, 5628.563583047, 1390.328263955, -5739.040162767]),
     # sin_amps: sine amplitudes
     np.array([72473.28252715, 144946.5652752, 172668.3390622, 0.0, -85715.28498071, 0.0, 0.0,
               178928.8828795, 0.0, 34862.90021577]),
@@ -377,8 +377,9 @@ def startup_load_1(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.0844912 s link_left closes +, 0.0844912 s link_right closes +,
+    0.0956811 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -428,8 +429,9 @@ def startup_load_2(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.127688 s link_left closes +, 0.127688 s link_right closes +, 0.135931
+    s crane slips +, 0.4 s motors_left next step, 1.2 s motors_left next
+    step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -464,7 +466,7 @@ _TABLE_STARTUP_LINK_LOAD_0 = (
               6.062779843024]),
     # cos_amps: cosine amplitudes
     np.array([-97500.0, -61031.60729515, 61031.60729515, -100529.5309677, 132773.2182211,
-              11113.3221028, 2616.631551769, 695.693761045, -2850.482150396]),
+              11113.3221028, 2616.631551768, 695.693761045, -2850.482150396]),
     # sin_amps: sine amplitudes
     np.array([-27212.5736823, 41210.14092052, 0.0, -34722.48852088, 0.0, 0.0, 88759.57623017, 0.0,
               17441.22102577]),
@@ -479,8 +481,8 @@ def startup_link_load_0(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 5 phases, each in closed form; they end at
-    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
-    end.
+    0.0440671 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -532,8 +534,9 @@ def startup_link_load_1(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.0844912 s link_left closes +, 0.0844912 s link_right closes +,
+    0.0956811 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -573,7 +576,7 @@ _TABLE_STARTUP_LINK_LOAD_2 = (
               3080.003290518, 694.4572312911, -2894.91634945]),
     # sin_amps: sine amplitudes
     np.array([96616.12730111, 96616.12738274, -1.040431911234e-05, 105961.5473491, 0.0,
-              8.185091449878e-07, -62155.01762094, 0.0, 0.0, 90403.53736049, 0.0, 17418.46446902]),
+              8.185091449878e-07, -62155.01762094, 0.0, 0.0, 90403.5373605, 0.0, 17418.46446902]),
     # consts: constant of each phase
     np.array([0.0, 97500.0, 97500.0, 30000.0, 30000.0, 30000.0, 30000.0]),
 )
@@ -585,8 +588,9 @@ def startup_link_load_2(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.127688 s link_left closes +, 0.127688 s link_right closes +, 0.135931
+    s crane slips +, 0.4 s motors_left next step, 1.2 s motors_left next
+    step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -620,14 +624,14 @@ _TABLE_STARTUP_MOTOR_SPEED_0 = (
     np.array([16.93687928793, 17.90756986958, 0.0, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0,
               6.062779843024]),
     # cos_amps: cosine amplitudes
-    np.array([-9.214337082542e-43, 0.2003773020809, -0.4021199080758, 0.1330373605647,
+    np.array([-9.401620082155e-42, 0.2003773020809, -0.4021199080758, 0.1330373605647,
               -0.4509966274976, -0.1056156761672, 0.01505354071083, -0.02211546824409,
               0.003177529231606]),
     # sin_amps: sine amplitudes
     np.array([0.3795558660533, 0.1659822723428, 0.0, 0.3614164743081, 0.0, 0.0, -0.146424626445,
               0.0, -0.01335932480694]),
     # consts: constant of each phase
-    np.array([-3.712762634894e-42, 0.3948992184286, 0.4814997917942, 0.525369884435,
+    np.array([2.603370773952e-42, 0.3948992184286, 0.4814997917942, 0.525369884435,
               0.5475935828877]),
 )
 
@@ -638,8 +642,8 @@ def startup_motor_speed_0(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 5 phases, each in closed form; they end at
-    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
-    end.
+    0.0440671 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -683,7 +687,7 @@ _TABLE_STARTUP_MOTOR_SPEED_1 = (
               -1.44212379823e-12, 0.4133129123221, 0.0, 0.0, -0.147625991602, 0.0,
               -0.01335069504317]),
     # consts: constant of each phase
-    np.array([0.5704099821747, -4.709919151398e-42, -4.70991914991e-42, 0.3948992184286,
+    np.array([0.5704099821747, 2.383215283509e-42, 2.383215281796e-42, 0.3948992184286,
               0.4814997917942, 0.525369884435, 0.5475935828877]),
 )
 
@@ -694,8 +698,9 @@ def startup_motor_speed_1(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.0844912 s link_left closes +, 0.0844912 s link_right closes +,
+    0.0956811 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -730,7 +735,7 @@ _TABLE_STARTUP_MOTOR_SPEED_2 = (
     np.array([0.0, 16.93687928793, 16.93687928793, 16.93687928793, 17.90756986958, 0.0,
               13.59821756805, 14.09770770106, 0.0, 0.0, 5.23188304444, 0.0, 6.062779843024]),
     # cos_amps: cosine amplitudes
-    np.array([-0.5704099821747, 0.4351345176058, 0.4351345176793, -3.505275996387e-11,
+    np.array([-0.5704099821747, 0.4351345176058, 0.4351345176793, -3.505275996386e-11,
               0.4157583585807, -0.3744993333484, -1.890423993655e-12, 0.1011154553402,
               -0.4724402826867, -0.107452969429, 0.01465055815356, -0.02207616009439,
               0.003210703945853]),
@@ -739,7 +744,7 @@ _TABLE_STARTUP_MOTOR_SPEED_2 = (
               -7.799083280955e-12, 0.479319512763, 0.0, 0.0, -0.1492270985519, 0.0,
               -0.01333922075183]),
     # consts: constant of each phase
-    np.array([0.5704099821747, -3.694750246668e-42, -3.69475024482e-42, 0.3948992184286,
+    np.array([0.5704099821747, 5.65799738207e-42, 5.657997379943e-42, 0.3948992184286,
               0.4814997917942, 0.525369884435, 0.5475935828877]),
 )
 
@@ -750,8 +755,9 @@ def startup_motor_speed_2(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.127688 s link_left closes +, 0.127688 s link_right closes +, 0.135931
+    s crane slips +, 0.4 s motors_left next step, 1.2 s motors_left next
+    step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -800,8 +806,8 @@ def startup_crane_speed_0(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 5 phases, each in closed form; they end at
-    0.0440671 s away +, 0.4 s next step, 1.2 s next step, 2 s next step, 4 s
-    end.
+    0.0440671 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -850,8 +856,9 @@ def startup_crane_speed_1(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.0844912 s drive 0, 0.0844912 s drive 1, 0.0956811 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.0844912 s link_left closes +, 0.0844912 s link_right closes +,
+    0.0956811 s crane slips +, 0.4 s motors_left next step, 1.2 s
+    motors_left next step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------
@@ -900,8 +907,9 @@ def startup_crane_speed_2(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 7 phases, each in closed form; they end at
-    0.127688 s drive 0, 0.127688 s drive 1, 0.135931 s away +, 0.4 s next
-    step, 1.2 s next step, 2 s next step, 4 s end.
+    0.127688 s link_left closes +, 0.127688 s link_right closes +, 0.135931
+    s crane slips +, 0.4 s motors_left next step, 1.2 s motors_left next
+    step, 2 s motors_left next step, 4 s end.
 
     Parameters
     ----------

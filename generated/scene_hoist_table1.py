@@ -249,8 +249,8 @@ _TABLE_ELASTIC_GEARBOX_TORQUE = (
               0.6412993836655, 0.6412993836655, -5.343055714335, 0.4481324109246, 0.4481324109246,
               0.4481324109246, 0.4481324109246, 0.4481324109246, -1.998750452139, -0.2617751882994]),
     # sin_amps: sine amplitudes
-    np.array([0.0, -0.09367689765358, -5.115125536812, 1.382253516797, -5.115125536812,
-              1.382253516797, -5.115125536812, -0.2332811737762, 3.384304170047, -5.329337840183,
+    np.array([0.0, -0.09367689765359, -5.115125536812, 1.382253516797, -5.115125536812,
+              1.382253516797, -5.115125536812, -0.2332811737763, 3.384304170047, -5.329337840183,
               3.384304170047, -5.329337840183, 3.384304170047, -12.58181901073, -3.869879445083]),
     # consts: constant of each phase
     np.array([0.9033561330609, -0.6412993836655, 0.0, -0.6412993836655, 0.0, -0.6412993836655,
@@ -267,14 +267,17 @@ def elastic_gearbox_torque(t, *, out=None):
     Solved for this scene phase by phase in mpmath
     (crane_sym.mechanics.exact_phases).
     The run has 30 phases, each in closed form; they end at
-    0.1 s safety brake, 0.107472 s open, 0.147935 s close other, 0.171507 s
-    open, 0.21197 s close hold, 0.227769 s open, 0.268232 s close other,
-    0.291804 s open, 0.332267 s close hold, 0.348066 s open, 0.388528 s
-    close other, 0.4 s service brake, 0.411806 s open, 0.441977 s close
-    hold, 0.461985 s open, 0.492156 s close other, 0.515161 s open, 0.545332
-    s close hold, 0.56534 s open, 0.595512 s close other, 0.618516 s open,
-    0.648688 s close hold, 0.668696 s open, 0.684249 s drum rests, 0.701365
-    s close other, 0.702633 s drum slips +, 0.724807 s open, 0.79225 s drum
+    0.1 s safety engages, 0.107472 s coupling opens, 0.147935 s coupling
+    closes -, 0.171507 s coupling opens, 0.21197 s coupling closes +,
+    0.227769 s coupling opens, 0.268232 s coupling closes -, 0.291804 s
+    coupling opens, 0.332267 s coupling closes +, 0.348066 s coupling opens,
+    0.388528 s coupling closes -, 0.4 s service engages, 0.411806 s coupling
+    opens, 0.441977 s coupling closes +, 0.461985 s coupling opens, 0.492156
+    s coupling closes -, 0.515161 s coupling opens, 0.545332 s coupling
+    closes +, 0.56534 s coupling opens, 0.595512 s coupling closes -,
+    0.618516 s coupling opens, 0.648688 s coupling closes +, 0.668696 s
+    coupling opens, 0.684249 s shaft rests, 0.701365 s coupling closes -,
+    0.702633 s shaft slips +, 0.724807 s coupling opens, 0.79225 s shaft
     rests, 0.810066 s motor rests, 1 s end.
 
     Parameters

@@ -246,19 +246,18 @@ def test_003_start_up_with_repeated_eigenvalues_is_batched():
     """Paper 003's travel drive has two equal sides: its modes have repeated
     eigenvalues, clustered with one projector each (as the per-design route
     does); the largest signed F1 + F2 of each start-up agrees to 1e-9."""
-    from crane_sym.derivations.portal_travel.startup import CHOSEN, drive, reduced
+    from crane_sym.derivations.portal_travel.hybrid import STARTUP, rim_values
+    from crane_sym.derivations.portal_travel.startup import CHOSEN, HOLDS
     from crane_sym.mechanics.batched_runs import largest_of_runs
-    from crane_sym.mechanics.phase_table import HybridRun
     rng = np.random.default_rng(3)
-    models = []
+    runs = []
     for k in range(8):
         p = {**CHOSEN, "c_l": 10 ** rng.uniform(6, 7.3), "zeta": rng.uniform(0.0, 0.1)}
-        models.append(drive(reduced(p, (0.0, np.pi, 2 * np.pi, 1.0)[k % 4]), p))
-    runs = [HybridRun(m, m.start_mode(), np.zeros(6), 4.0, m.schedule(), m.total)
-            for m in models]
+        runs.append(STARTUP.run(rim_values(p, (0.0, np.pi, 2 * np.pi, 1.0)[k % 4]),
+                                {"holds": HOLDS, "end": 4.0}))
     result = largest_of_runs(runs, magnitude=False, tail=0)
     assert result.summary["batched"] == 8 and result.summary["fallback"] == 0
-    expected = [m.peak(m.run(4.0))[1] for m in models]
+    expected = [largest(r.solve(), r.system, r.output)[1] for r in runs]
     np.testing.assert_allclose(result.value, expected, rtol=1e-9)
 
 

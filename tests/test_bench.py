@@ -262,8 +262,8 @@ def test_piecewise_bench_rows_and_errors():
     import numpy as np
 
     from crane_sym.bench.piecewise import bench_run, summary
-    from crane_sym.derivations.hoist_brakes.elastic import table1_hoist
-    run = table1_hoist(0.0).emergency_stop(50 * np.pi, 0.3)
+    from crane_sym.derivations.hoist_brakes.drive_train import emergency_stop, table1_values
+    run = emergency_stop({**table1_values(0.0), "omega1": 50 * np.pi}, 0.3)
     rows, table = bench_run(run, points=200, reference_points=60, methods=("DOP853",),
                             rtols=(1e-12,), repeats=1)
     by = {r.method: r for r in rows}

@@ -1,5 +1,5 @@
-"""Component files: the shipped Fig. 9 example against paper 001's hand-written
-model, `crane-sym run FILE` writing only into --out, and bad files refused in
+"""Component files: the shipped Fig. 9 and start-up examples against papers 001's
+and 003's hybrid models (``hybrid.py``: the same physics through the Python API), `crane-sym run FILE` writing only into --out, and bad files refused in
 one line naming the table, the key and the closest known one."""
 from __future__ import annotations
 
@@ -12,19 +12,22 @@ from crane_sym.cli.main import main
 from crane_sym.components import ComponentError
 from crane_sym.components.reading import is_component_file, read_component_file
 
-from test_components import hand_written
-
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml"
 
 
-def test_fig9_example_agrees_with_the_hand_written_model():
-    elastic = hand_written()
-    hoist = elastic.table1_hoist(52e3)
-    when, relative = hoist.peak(hoist.run(elastic.OMEGA1, 1.0))
+def test_fig9_example_agrees_with_paper_001s_model():
+    """The file's data are Table 1's: its run is ``hybrid.EMERGENCY_STOP``'s
+    (whose run is checked against the paper's equations integrated in
+    ``test_components.py``)."""
+    from crane_sym.derivations.hoist_brakes.drive_train import table1_values
+    from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
+    paper = EMERGENCY_STOP.solve(table1_values(52e3), {"duration": 1.0})
+    when, relative = paper.peak("relative_torque")
+    M_st = paper.system.assembly.links[0].reference
     read = read_component_file(EXAMPLE)
     run = read.model.run(read.duration, read.body, read.speed)
     peak = run.peaks[0]
-    assert peak.value == pytest.approx(relative * hoist.M_st, rel=1e-9)
+    assert peak.value == pytest.approx(relative * M_st, rel=1e-9)
     # the payload is the rated one: the load at the start is M_st, the factor M_G/M_st
     assert peak.factor == pytest.approx(relative, rel=1e-9)
     assert peak.time == pytest.approx(when, abs=1e-9)
@@ -152,17 +155,15 @@ def test_generated_module_agrees_with_the_run_and_keeps_text_as_data(tmp_path):
         module.load_gearbox_mesh(1.5)
 
 
-def test_portal_startup_example_agrees_with_paper_003s_hand_written_drive():
-    import importlib
-
+def test_portal_startup_example_agrees_with_paper_003s_model():
+    """The file's data are Table 1's drive at the rim (backlash π rad): its run is
+    ``hybrid.STARTUP``'s."""
     import numpy as np
-    try:
-        startup = importlib.import_module("crane_sym.derivations.portal_travel.startup")
-    except ImportError:
-        pytest.skip("no hand-written travel drive of paper 003")
-    p = dict(startup.CHOSEN)
-    d = startup.drive(startup.reduced(p, np.pi), p, startup.HOLDS)
-    when, peak = d.peak(d.run(4.0))
+
+    from crane_sym.derivations.portal_travel.hybrid import STARTUP, rim_values
+    from crane_sym.derivations.portal_travel.startup import CHOSEN, HOLDS
+    when, peak = STARTUP.solve(rim_values(CHOSEN, np.pi),
+                               {"holds": HOLDS, "end": 4.0}).peak("load")
     read = read_component_file(EXAMPLE.with_name("portal_startup.toml"))
     assert read.rest
     run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)

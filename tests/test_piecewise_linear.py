@@ -7,11 +7,21 @@ import numpy as np
 import pytest
 
 from crane_sym.bench.piecewise import integrate_hybrid
-from crane_sym.derivations.hoist_brakes.elastic import FORWARD, HOLD, OFF, table1_hoist
+from crane_sym.components.hybrid import Mode
+from crane_sym.derivations.hoist_brakes.drive_train import (emergency_stop, rated_torque,
+                                                            table1_values)
+from crane_sym.mechanics.phase_table import largest, values
 from crane_sym.mechanics.piecewise_linear import closed_form, first_crossing, simulate
 
 linalg = pytest.importorskip("scipy.linalg")
 integrate = pytest.importorskip("scipy.integrate")
+
+
+def _stop(payload, duration, **changes):
+    """Paper 001's emergency stop (``drive_train.emergency_stop``, the hoist as
+    components) of Table 1's hoist lowering ``payload`` from 50π rad/s."""
+    q = {**table1_values(payload, **changes), "omega1": 50 * np.pi}
+    return emergency_stop(q, duration), q
 
 
 def _expm_state(A, b, x0, t):
@@ -78,8 +88,7 @@ def test_a_start_on_the_surface_with_zero_slope_does_not_fire_on_rounding_noise(
 def test_fig9_against_solve_ivp(payload):
     """The phases in closed form against DOP853 with events (rtol 1e-12, steps
     capped at 0.1 ms), state and torque."""
-    hoist = table1_hoist(payload)
-    run = hoist.emergency_stop(50 * np.pi, 0.3)
+    run, _ = _stop(payload, 0.3)
     closed = run.solve()
     integrated = integrate_hybrid(run, 1e-12, 1e-12, "DOP853", max_step=1e-4)
     assert len(integrated.phases) == len([s for s in closed.segments if s.t1 > s.t0])
@@ -89,8 +98,8 @@ def test_fig9_against_solve_ivp(payload):
     assert np.max(np.abs(closed.state(times) - states) / scale) < 1e-6
     torque = integrated.output(run, times)
     assert np.max(np.abs(run.table(closed)(times) - torque)) < 1e-6 * np.abs(torque).max()
-    peak_t, peak = hoist.peak(closed)
-    sampled = hoist.relative_torque(closed, np.linspace(0, 0.3, 30001))
+    peak_t, peak = largest(closed, run.system, run.output, magnitude=True)
+    sampled = values(closed, np.linspace(0, 0.3, 30001), run.output)
     assert abs(peak) >= np.max(np.abs(sampled)) - 1e-9
 
 
@@ -98,9 +107,9 @@ def test_solve_ivp_with_default_steps_skips_a_contact_the_closed_form_finds():
     """Lowering the hook: after the first rebound the flanks touch for ~4 ms at
     t = 0.163 s inside one solve_ivp step; its events miss it, the certified
     search does not."""
-    hoist = table1_hoist(0.0)
-    run = hoist.emergency_stop(50 * np.pi, 0.2)
-    closed = [t for t, ev, _ in run.solve().events if ev == "close hold"]
+    run, _ = _stop(0.0, 0.2)
+    hoist = run.system
+    closed = [t for t, ev, _ in run.solve().events if ev == "coupling closes +"]
     assert closed and 0.16 < closed[0] < 0.165
     seen = []
 
@@ -111,48 +120,48 @@ def test_solve_ivp_with_default_steps_skips_a_contact_the_closed_form_finds():
             seen.append((t, name))
             return hoist.switch(mode, name, t, x)
     integrate_hybrid(replace(run, system=Spy()), 1e-12, 1e-12, "DOP853")
-    assert not any(name == "close hold" and t < 0.17 for t, name in seen)
+    assert not any(name == "coupling closes +" and t < 0.17 for t, name in seen)
 
 
 def test_backlash_to_zero_is_the_linear_two_mass_solution():
     """s = 0: while the drum slides, the gearbox torque is that of the linear
     two-mass system (no contact logic), from expm."""
-    h = table1_hoist(0.0, backlash_deg=0.0)
-    run = h.run(50 * np.pi, 0.25)
+    h, q = _stop(0.0, 0.25, backlash_deg=0.0)
+    run = h.solve()
     first_rest = next((t for t, ev, _ in run.events if "rests" in ev), 0.25)
-    mode_a, mode_b = (HOLD, OFF, OFF, False), (HOLD, OFF, FORWARD, False)
-    _, x0 = h.start(50 * np.pi)
-    Aa, ba = h.matrices(mode_a)
-    Ab, bb = h.matrices(mode_b)
-    x_sb = _expm_state(Aa, ba, x0, 0.1)
+    # motor off, no brake yet; then the safety brake sliding on the drum side
+    mode_a = Mode((), ("free", "free"), (False, False), (False,), (False, False))
+    mode_b = Mode((), ("free", "+"), (True, False), (False,), (False, False))
+    Aa, ba = h.system.matrices(mode_a)
+    Ab, bb = h.system.matrices(mode_b)
+    x_sb = _expm_state(Aa, ba, h.x0, 0.1)
     times = np.linspace(0.1, first_rest, 200)
     ref = np.array([_expm_state(Ab, bb, x_sb, t - 0.1) for t in times])
-    torque = h.c * (ref[:, 2] - ref[:, 0]) / h.M_st
-    assert np.allclose(h.relative_torque(run, times), torque, atol=1e-7 * np.abs(torque).max())
+    torque = q["c"] * (ref[:, 2] - ref[:, 0]) / rated_torque(q)
+    assert np.allclose(values(run, times, h.output), torque, atol=1e-7 * np.abs(torque).max())
     # and with a tiny backlash the peak converges to the no-backlash one
-    tiny = table1_hoist(0.0, backlash_deg=1e-7)
-    assert tiny.peak(tiny.run(50 * np.pi, 0.25))[1] == pytest.approx(
-        h.peak(run)[1], rel=1e-4)
+    tiny, _ = _stop(0.0, 0.25, backlash_deg=1e-7)
+    assert largest(tiny.solve(), tiny.system, tiny.output, magnitude=True)[1] == \
+        pytest.approx(largest(run, h.system, h.output, magnitude=True)[1], rel=1e-4)
 
 
 def test_simulate_rejects_runaway_events():
-    h = table1_hoist(0.0)
+    h, _ = _stop(0.0, 1.0)
     with pytest.raises(RuntimeError, match="events"):
-        simulate(h, *h.start(50 * np.pi), 1.0,
-                 [(0.0, "motor torque lost"), (0.1, "safety brake")], max_events=3)
+        simulate(h.system, h.mode, h.x0, 1.0, [(0.0, "drive off"), (0.1, "safety engages")],
+                 max_events=3)
 
 
 def test_generated_no_backlash_torque_is_the_backlash_to_zero_limit():
     from crane_sym.generated import hoist_brakes as gen
-    h = table1_hoist(0.0, backlash_deg=0.0)
-    run = h.run(50 * np.pi, 0.25)
+    h, _ = _stop(0.0, 0.25, backlash_deg=0.0)
     times = np.linspace(0.0, 0.25, 501)
     closed = gen.elastic_gearbox_torque_no_backlash(
         times, J1=20.0, J2=500.0, m_h=1e4, m_p=0.0, m_r=52e3, r=0.5, i_g=26.2, i_t=4.0,
         g=9.81, c=4e4, M_SB=130e3, t_SB=0.1)
-    assert np.max(np.abs(closed - h.relative_torque(run, times))) < 1e-11
-    with_backlash = table1_hoist(0.0)
-    wb = with_backlash.relative_torque(with_backlash.run(50 * np.pi, 0.25), times)
+    assert np.max(np.abs(closed - values(h.solve(), times, h.output))) < 1e-11
+    with_backlash, _ = _stop(0.0, 0.25)
+    wb = values(with_backlash.solve(), times, with_backlash.output)
     assert np.max(np.abs(closed - wb)) > 1.0          # the backlash matters
 
 
@@ -191,7 +200,6 @@ def _scene_module(tmp_path):
 def test_scene_module_carries_the_derivation_table(tmp_path):
     """The printed arrays are the run's table rounded to 13 digits, and the
     function is the phases' closed forms to ~1e-12 of the peak."""
-    from crane_sym.derivations.hoist_brakes.elastic import hoist_from
     from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
     from crane_sym.mechanics.exact_phases import exact_table
     from crane_sym.scenes.reading import load_scene
@@ -201,11 +209,9 @@ def test_scene_module_carries_the_derivation_table(tmp_path):
     table = exact_table(EMERGENCY_STOP.run(scene.parameters, scene.options))
     for printed, ours in zip(module._TABLE_ELASTIC_GEARBOX_TORQUE, rounded(table).arrays()):
         assert np.array_equal(printed, ours)
-    q = scene.parameters
-    hoist = hoist_from(q, q["m_p"])
-    run = hoist.run(q["omega1"], 1.0, 0.0, q["t_SB"], q["t_BB"])
     times = np.linspace(0.0, 1.0, 100_001)
-    ref = hoist.relative_torque(run, times)
+    ref = EMERGENCY_STOP.solve(scene.parameters, {"duration": 1.0}).values("relative_torque",
+                                                                            times)
     got = module.elastic_gearbox_torque(times)
     assert np.max(np.abs(got - ref)) < 2e-11 * np.max(np.abs(ref))
     assert np.max(np.abs(table(times) - ref)) < 1e-12 * np.max(np.abs(ref))
@@ -235,11 +241,11 @@ def test_table_is_the_run_on_hard_cases(payload, stiffness, backlash_deg):
     """Payload -> 0, tiny and huge stiffness, backlash -> 0: the table (what a
     scene's module evaluates) against the run's own closed forms."""
     from crane_sym.mechanics.phase_table import tabulate
-    h = table1_hoist(payload, backlash_deg=backlash_deg, stiffness=stiffness)
-    run = h.run(50 * np.pi, 1.0, 0.0, 0.1, 0.4)
-    table = tabulate(run, h.relative)
+    h, _ = _stop(payload, 1.0, backlash_deg=backlash_deg, stiffness=stiffness)
+    run = h.solve()
+    table = tabulate(run, h.output)
     times = np.sort(np.concatenate([np.linspace(0, 1, 20_001), table.edges]))
-    ref = h.relative_torque(run, times)      # w·x(t) summed in another order
+    ref = values(run, times, h.output)      # w·x(t) summed in another order
     assert np.max(np.abs(table(times) - ref)) < 4e-12 * np.max(np.abs(ref))
 
 

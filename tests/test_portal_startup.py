@@ -1,6 +1,7 @@
 """Paper 003's start-up with backlash (Fig. 11-12, Table 1): the piecewise closed
-form against solve_ivp with events, backlash -> 0 against the linear drive, the
-equations of motion against the hybrid system's matrices, the model's Table 1 as
+form (``hybrid.STARTUP``, a component model) against the paper's equations
+integrated by solve_ivp with events, backlash -> 0 against the linear drive, the
+derivation's equations of motion against the component system's matrices, the model's Table 1 as
 its causes state it, and the Fig. 12 scene (bad data refused by name)."""
 from __future__ import annotations
 
@@ -14,10 +15,11 @@ import sympy as sp
 
 from crane_sym import registry
 from crane_sym.bench.piecewise import integrate_hybrid
+from crane_sym.components.hybrid import Mode
 from crane_sym.derivations.portal_travel import published_loads as pl
-from crane_sym.derivations.portal_travel.startup import (CHOSEN, FORWARD, LINEAR,
-                                                         drive, reduced, table1_results)
-from crane_sym.mechanics.phase_table import HybridRun
+from crane_sym.derivations.portal_travel.hybrid import STARTUP, rim_values
+from crane_sym.derivations.portal_travel.startup import CHOSEN, HOLDS, table1_results
+from crane_sym.mechanics.hybrid_models import HybridSolution
 from crane_sym.scenes.run import run_scene
 from crane_sym.scenes.reading import SceneError, load_scene
 
@@ -27,18 +29,24 @@ SCENE = Path(__file__).resolve().parents[1] / "derivations" / "portal_travel" / 
 integrate = pytest.importorskip("scipy.integrate")
 
 
-def _model(phi: float):
-    return drive(reduced(CHOSEN, phi), CHOSEN)
+def _values(phi: float) -> dict[str, float]:
+    return rim_values(CHOSEN, phi)
+
+
+def _solve(values: dict[str, float], end: float) -> HybridSolution:
+    return STARTUP.solve(values, {"holds": HOLDS, "end": end})
 
 
 @pytest.mark.parametrize("phi1, phi2", [(0.0, 0.0), (np.pi, 0.8 * np.pi), (2 * np.pi, 0.0)])
 def test_closed_form_against_solve_ivp_with_events(phi1, phi2):
     """Unequal gaps (the reference integrator cannot take two flanks closing at one
-    instant, which equal gaps do), one side without backlash in the last case."""
-    model = replace(_model(phi1), s2=_model(phi2).s1)
-    closed = model.run(3.0)
-    run = HybridRun(model, model.start_mode(), np.zeros(6), 3.0, model.schedule(),
-                    model.total)
+    instant, which equal gaps do), one side without backlash in the last case:
+    the component model's own rules integrated by DOP853 with events (the
+    paper's equations written by hand are the reference of
+    ``tests/test_components.py``, for Table 1's equal gaps)."""
+    values = {**_values(phi1), "s_right": _values(phi2)["s"]}
+    run = STARTUP.run(values, {"holds": HOLDS, "end": 3.0})
+    closed = run.solve()
     times = np.linspace(0.0, 3.0, 3001)
     states = integrate_hybrid(run, 1e-12, 1e-12, "DOP853", max_step=1e-3).state(times)
     ours = closed.state(times)
@@ -48,25 +56,23 @@ def test_closed_form_against_solve_ivp_with_events(phi1, phi2):
 
 
 def test_the_peak_is_the_largest_sampled_load():
-    model = _model(np.pi)
-    run = model.run(3.0)
-    when, peak = model.peak(run)
-    sampled = model.load(run, np.linspace(0.0, 3.0, 60001))
+    run = _solve(_values(np.pi), 3.0)
+    when, peak = run.peak("load")
+    sampled = run.values("load", np.linspace(0.0, 3.0, 60001))
     assert peak >= sampled.max() - 1e-6 * peak
-    assert peak == pytest.approx(float(model.load(run, np.array([when]))[0]), rel=1e-12)
+    assert peak == pytest.approx(float(run.values("load", np.array([when]))[0]), rel=1e-12)
 
 
 def test_backlash_to_zero_is_the_linear_drive():
     """s = 0: no contact logic, the links are linear; a tiny backlash converges to it."""
-    linear = _model(0.0)
-    assert linear.start_mode()[:2] == (LINEAR, LINEAR)
-    run = linear.run(3.0)
-    tiny = _model(1e-9)
-    assert tiny.s1 > 0 and tiny.start_mode()[:2] != (LINEAR, LINEAR)
+    linear = _solve(_values(0.0), 3.0)
+    assert linear.run.mode.contacts == ()
+    tiny = _solve(_values(1e-9), 3.0)
+    assert tiny.run.mode.contacts == (0, 0)
     times = np.linspace(0.0, 3.0, 3001)
-    a, b = linear.load(run, times), tiny.load(tiny.run(3.0), times)
+    a, b = linear.values("load", times), tiny.values("load", times)
     assert np.max(np.abs(a - b)) < 1e-4 * np.max(np.abs(a))
-    assert tiny.peak(tiny.run(3.0))[1] == pytest.approx(linear.peak(run)[1], rel=1e-5)
+    assert tiny.peak("load")[1] == pytest.approx(linear.peak("load")[1], rel=1e-5)
 
 
 def test_the_load_grows_with_the_backlash():
@@ -77,21 +83,22 @@ def test_the_load_grows_with_the_backlash():
 def test_the_model_texts_mean_start_load():
     """The model text: mean F1 + F2 over the 2 s of the start is 122-125 kN."""
     for phi in (0.0, np.pi, 2 * np.pi):
-        model = _model(phi)
-        mean = model.load(model.run(2.0), np.linspace(0.0, 2.0, 20001)).mean()
+        mean = _solve(_values(phi), 2.0).values("load", np.linspace(0.0, 2.0, 20001)).mean()
         assert 121.5e3 <= mean < 125.5e3, phi
 
 
 def test_equations_of_motion_are_the_hybrid_systems(derivation):
     """The Lagrange steps, both links driving and the crane moving forward, have the
-    same matrices as startup.py's mode (DRIVE, DRIVE, FORWARD)."""
-    model = _model(np.pi)
+    same matrices as the component model's mode with both links on their driving
+    flanks, the crane moving forward, the second characteristic."""
+    v = _values(np.pi)
+    system = STARTUP.run(v, {"holds": HOLDS, "end": 4.0}).system
     names = {str(s): s for e in (derivation.step(f"start-up, {n}").statement for n in
                                  ("left motors", "right motors", "crane")) for s in e.free_symbols}
-    values = {names["m_d"]: model.m_d, names["m_k"]: model.m_k, names["c_l"]: model.c,
-              names["b_l"]: model.b, names["s_b"]: model.s1, names["v_0"]: model.v0,
-              names["beta_k"]: model.slopes[1], names["W_f"]: model.W_f,
-              names["W_w"]: model.W_w}
+    values = {names["m_d"]: v["m_d"], names["m_k"]: v["m_k"], names["c_l"]: v["c_l"],
+              names["b_l"]: v["b"], names["s_b"]: v["s"], names["v_0"]: v["v0"],
+              names["beta_k"]: v["beta_1"] * v["q"], names["W_f"]: v["W_f"],
+              names["W_w"]: v["W_w"]}
     t = sp.Symbol("t", nonnegative=True)
     funcs = [sp.Function(n)(t) for n in ("x_1", "x_2", "x_k")]
     y = sp.symbols("y0:6")
@@ -100,7 +107,7 @@ def test_equations_of_motion_are_the_hybrid_systems(derivation):
         subs[f.diff(t, 2)] = sp.Symbol(f"acc{i}")
         subs[f.diff(t)] = y[2 * i + 1]
         subs[f] = y[2 * i]
-    A, b = model.matrices((1, 1, FORWARD, 1))
+    A, b = system.matrices(Mode((1, 1), ("free", "free", "+"), (True,), (), (False,), (1, 1)))
     for i, label in enumerate(("left motors", "right motors", "crane")):
         eq = derivation.step(f"start-up, {label}").statement.subs(values)
         eq = (eq.lhs - eq.rhs).subs(subs)
@@ -151,9 +158,8 @@ def test_fig12_scene_runs_and_agrees_with_the_derivation(tmp_path):
     assert len([p for p in plots if p.suffix == ".png"]) == 3
     # the generated first-stage speed is the hybrid run's motor speed when the flank closes
     for i, phi in ((1, np.pi), (2, 2 * np.pi)):
-        model = _model(phi)
-        run = model.run(1.0)
-        closing = next(t for t, event, _ in run.events if event.startswith("drive"))
+        run = _solve(_values(phi), 1.0)
+        closing = next(t for t, event, _ in run.events if event.endswith("closes +"))
         speed = run.state(np.array([closing]))[0, 1]
         assert report.values[f"v_close_{i}"] == pytest.approx(speed, rel=1e-9)
 

@@ -28,14 +28,14 @@ them) and hands the :class:`~crane_sym.components.hybrid.ComponentSystem` to
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-from functools import cached_property
+from dataclasses import dataclass, replace
+from functools import cached_property, partial
 from typing import Sequence
 
 import numpy as np
 
 from crane_sym.components.equations import Equations, derive
-from crane_sym.components.hybrid import FREE, ComponentSystem, Mode
+from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, HELD, ComponentSystem, Mode
 from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
@@ -125,6 +125,10 @@ def start_load(system: ComponentSystem, mode: Mode, x0: np.ndarray,
     static = float(np.asarray(w) @ x0 + k)
     given = system.assembly.links[index].reference
     return static, given if given is not None else (static or None)
+
+
+def _nothing(size: int, mode: Mode) -> tuple[np.ndarray, float]:
+    return np.zeros(size), 0.0
 
 
 def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[float, float]:
@@ -263,19 +267,35 @@ class Model:
                     tuple(0 for _ in probe.laws))
         return mode, x, extra
 
+    def _at_once(self) -> tuple[bool, ...]:
+        """Which brakes act at rest from t = 0 (a step without delay)."""
+        return tuple(isinstance(l.part, Brake) and l.part.delay == 0
+                     and l.part.build_up == "step"
+                     for l in self.assembly.loads if isinstance(l.part, Brake))
+
     def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
+        """At rest, every gap open; a brake without delay engaged from the
+        start, its body held while the loads at rest are within its capacity
+        (decided here, where the state is exactly zero, not at an event)."""
         if self.steady_motor is not None:
             raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
                                  "hold; give its torque")
         probe = ComponentSystem(self.equations)
-        mode = Mode(tuple(0 for _ in probe.backlash), tuple(FREE for _ in self.assembly.groups),
-                    tuple(False for _ in probe.brakes), tuple(True for _ in probe.motors),
-                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
-                    tuple(0 for _ in probe.laws))
+        engaged = self._at_once()
+        motion = [FREE for _ in self.assembly.groups]
+        mode = Mode(tuple(0 for _ in probe.backlash), tuple(motion), engaged,
+                    tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
+                    tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws))
         x = np.zeros(probe.size)
         for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
             x[probe.v(g)] = probe.laws[k].part.value_at(0.0) / kappa
-        return mode, x, {}
+        for g in sorted({probe.brake_group[i] for i, on in enumerate(engaged) if on}):
+            held = replace(mode, motion=tuple(HELD if j == g else m
+                                              for j, m in enumerate(motion)))
+            (wn, kn), (wc, kc) = probe.net_load(held, g), probe.capacity(held, g)
+            net, cap = float(wn @ x + kn), float(wc @ x + kc)
+            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
+        return replace(mode, motion=tuple(motion)), x, {}
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
@@ -340,12 +360,27 @@ class Model:
                         0).schedule()
         return tuple(sorted(out))
 
-    def run(self, duration: Given, start_body: str | None = None,
-            start_speed: Given = 0.0, exact: bool | None = None,
-            rest: bool = False) -> ComponentRun:
-        """The run from the state of :meth:`start` (steady, or at ``rest``) over
-        ``duration``, phases in closed form
-        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+    def hybrid_run(self, duration: Given, link: str | None = None,
+                   start_body: str | None = None, start_speed: Given = 0.0,
+                   rest: bool = False) -> HybridRun:
+        """The run of :meth:`run`, not yet solved: the system, the state of
+        :meth:`start`, the end and the schedule, with the load of ``link``
+        (default: the first elastic link) as its output. What a paper's
+        ``HybridModel`` hands to scenes, sweeps and the bench.
+
+        Parameters
+        ----------
+        duration : str or float
+            The end of the run (a time with its unit, or seconds).
+        link : str, optional
+            Name of the elastic link whose load is the output.
+        start_body, start_speed, rest
+            The start, as :meth:`start` takes it.
+
+        Returns
+        -------
+        HybridRun
+        """
         from sympy.physics.units import time
         t_end = value("run", "duration", duration, time).si
         if not t_end > 0:
@@ -359,6 +394,28 @@ class Model:
                 f" ({scope.dropped[0].reason}); build it for this run (Model.for_run)")
         mode, x0, extra = self.start(start_body, start_speed, rest)
         system = ComponentSystem(self.equations, extra)
+        names = [l.part.name for l in system.assembly.links]
+        if link is not None and link not in names:
+            raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
+        if names:
+            output = system.link_load(names.index(link) if link is not None else 0)
+        else:                                    # no link: a zero output
+            output = partial(_nothing, system.size)
         schedule = self.schedule()
-        result = simulate(system, mode, x0, t_end, schedule, exact=exact)
-        return ComponentRun(self, system, mode, x0, t_end, schedule, result)
+        if rest:             # the brakes engaged from the start are in its mode
+            names = {f"{l.part.name} engages" for l, on in zip(
+                [l for l in self.assembly.loads if isinstance(l.part, Brake)], self._at_once())
+                if on}
+            schedule = tuple(e for e in schedule if not (e[0] == 0 and e[1] in names))
+        return HybridRun(system, mode, x0, t_end, schedule, output)
+
+    def run(self, duration: Given, start_body: str | None = None,
+            start_speed: Given = 0.0, exact: bool | None = None,
+            rest: bool = False) -> ComponentRun:
+        """The run from the state of :meth:`start` (steady, or at ``rest``) over
+        ``duration``, phases in closed form
+        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+        run = self.hybrid_run(duration, None, start_body, start_speed, rest)
+        result = simulate(run.system, run.mode, run.x0, run.t_end, run.schedule, exact=exact)
+        return ComponentRun(self, run.system, run.mode, run.x0, run.t_end,
+                            tuple(run.schedule), result)

@@ -140,7 +140,16 @@ class Body(Component):
 
 
 def Inertia(name: str, inertia: Given) -> Body:
-    """A rotating body of moment of inertia ``inertia`` (kg·m²)."""
+    """A rotating body of moment of inertia ``inertia`` (kg·m²).
+
+    Parameters
+    ----------
+    name : str
+        The body's name (a letter, then letters, digits, ``_``).
+    inertia : str or float
+        Its moment of inertia, text with a unit or kg·m²; zero for a shaft
+        end joined rigidly to bodies that have inertia.
+    """
     name = _name("inertia", name)
     v = value(f"inertia {name!r}", "inertia", inertia, DIMENSIONS["inertia"][ROTATING])
     _at_least(f"inertia {name!r}", "inertia", v, 0.0, False)
@@ -148,7 +157,15 @@ def Inertia(name: str, inertia: Given) -> Body:
 
 
 def Mass(name: str, mass_: Given) -> Body:
-    """A translating body of mass ``mass_`` (kg)."""
+    """A translating body of mass ``mass_`` (kg).
+
+    Parameters
+    ----------
+    name : str
+        The body's name (a letter, then letters, digits, ``_``).
+    mass_ : str or float
+        Its mass, text with a unit or kg.
+    """
     name = _name("mass", name)
     v = value(f"mass {name!r}", "mass", mass_, DIMENSIONS["mass"][TRANSLATING])
     _at_least(f"mass {name!r}", "mass", v, 0.0, False)

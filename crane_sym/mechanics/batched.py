@@ -88,8 +88,8 @@ class BatchedSystem(Protocol):
     def run(self, i: int) -> HybridRun:
         """Design ``i`` for the per-design route (its output the same)."""
 
-    def mode(self, code: int) -> Hashable:
-        """The per-design model's mode of a mode code."""
+    def mode(self, code: int, i: int) -> Hashable:
+        """The per-design model's mode of a mode code, for design ``i``."""
 
 
 @dataclass
@@ -250,7 +250,7 @@ def _finish(system: BatchedSystem, i: int, s: _State, best_key: np.ndarray, name
     pending = [(float(s.times[i, j]) - t, names[s.names[i, j]])
                for j in range(s.ptr[i], s.times.shape[1]) if np.isfinite(s.times[i, j])]
     try:
-        result = simulate(run.system, system.mode(int(s.mode[i])), s.x[i], s.t_end[i] - t,
+        result = simulate(run.system, system.mode(int(s.mode[i]), i), s.x[i], s.t_end[i] - t,
                           pending, max_events=max(max_events - int(s.count[i]), 1),
                           exact=False)
     except RuntimeError:                              # past max_events

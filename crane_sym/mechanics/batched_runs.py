@@ -41,8 +41,8 @@ class RunFamily:
             self._modes.append(mode)
         return self._codes[mode]
 
-    def mode(self, code: int) -> Hashable:
-        """The mode of a code."""
+    def mode(self, code: int, i: int | None = None) -> Hashable:
+        """The mode of a code (the same for every design ``i``)."""
         return self._modes[code]
 
     def matrices(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

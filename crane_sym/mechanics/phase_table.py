@@ -164,7 +164,9 @@ def largest(result: PiecewiseResult, system: HybridSystem, affine: Affine,
             magnitude: bool = False) -> tuple[float, float]:
     """(time, value) of the largest w·x + k over the run (of |w·x + k| with
     ``magnitude``; the value keeps its sign): each phase's ends and stationary
-    points are the only candidates.
+    points are the only candidates. Of values equal to 1e-12 (an undamped gap
+    rings at one amplitude; which of its equal peaks is larger is rounding),
+    the first is taken.
 
     Parameters
     ----------
@@ -185,6 +187,6 @@ def largest(result: PiecewiseResult, system: HybridSystem, affine: Affine,
         found = seg.state(np.array(candidates)) @ w + k
         keys = np.abs(found) if magnitude else found
         i = int(np.argmax(keys))
-        if keys[i] > best_key:
+        if best_key == -np.inf or keys[i] > best_key + 1e-12 * abs(best_key):
             best, best_key = (candidates[i], float(found[i])), keys[i]
     return best

@@ -71,6 +71,11 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
     lo, hi, level = bracket
     if lo == hi:
         return hi
+    if level and np.sign(g(0.0)) * np.sign(g(hi)) < 0:
+        # g itself went from its side across the surface beyond the band: a
+        # real crossing (a gap of 1e-9 closing from rest, backlash -> 0), at
+        # its own root, not where g passes the band
+        lo, level = 0.0, 0.0
     return brentq(lambda t: g(t) + level, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
 
 

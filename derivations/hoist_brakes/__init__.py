@@ -16,9 +16,11 @@ Files:
 - ``model.py``: identity, symbols, Table 1, model text.
 - ``steps.py``: kinematics, reduced inertia, static torque, (1)–(7).
 - ``steps_numbers.py``: the printed numbers from Table 1, one step per reading.
-- ``elastic.py``: the elasto-kinetic emergency stop of Fig. 9 (piecewise linear):
-  the two-mass hoist as a hybrid system, and Fig. 9's peak as steps.
-- ``elastic_batched.py``: the same model for an array of designs (the batched solver).
+- ``drive_train.py``: the hoist of Fig. 9 as components (``crane_sym.components``):
+  the one hybrid model of the emergency stop with coupling backlash.
+- ``elastic.py``: Fig. 9's peak as steps, from that model.
+- ``elastic_batched.py``: the same model reduced to the motor shaft for an array of
+  designs (the batched solver); its per-design route the reduced model as components.
 - ``hybrid.py``: ``HYBRID_MODELS``, that run as scenes, sweeps and the bench reach it.
 - ``published.py``: the printed formulas and numbers (``PUBLISHED``).
 - ``outputs.py``: the Outputs for code generation (and the tabulated Fig. 9 response).

@@ -1,12 +1,17 @@
 """Fig. 9's emergency stop for an array of designs at once: the two-mass
-hoist of ``elastic.py`` described to ``crane_sym.mechanics.batched``.
+hoist described to ``crane_sym.mechanics.batched``.
 
-The same model, mode by mode, as arrays over the designs: a mode (contact,
-motor brake, drum brake, motor torque on) is an integer code, and the
-matrices, guards (in ``TwoMassHoist.guards``' order), switching rule and the
-relative gearbox torque M_G/M_st are those of :class:`elastic.TwoMassHoist`,
-written for every design in one mode together. A design the batched route
-refuses is rebuilt as a ``TwoMassHoist`` and run by the per-design route.
+The model of ``drive_train.py`` reduced to the motor shaft, mode by mode, as
+arrays over the designs: a mode (contact, motor brake, drum brake, motor
+torque on) is an integer code; the matrices, guards, switching rule and the
+relative gearbox torque M_G/M_st are written here by hand for every design in
+one mode together, from the paper's two equations of motion (J1 θ̈_m = T − M_M
++ brake, J_d θ̈_d = −T + M_L − brake; T = c (θ_d − θ_m + off) + b (ω_d − ω_m)
+on a flank, 0 in the gap). A design the batched route refuses is run by the
+per-design route: the same drive as components (:func:`reduced_model`, two
+inertias at the motor shaft, the load as a constant torque), its mode the
+component model's (:meth:`HoistFamily.mode`); ``tests/test_batched.py``
+checks the two against each other.
 """
 from __future__ import annotations
 
@@ -19,7 +24,18 @@ import numpy as np
 from crane_sym.mechanics.batched import BatchedGuard, BatchedLargest, largest_batched
 from crane_sym.mechanics.phase_table import HybridRun
 
-from .elastic import BACKWARD, FORWARD, GAP, HOLD, OFF, OTHER, STUCK, TwoMassHoist
+from crane_sym.components import Brake, ElasticLink, Inertia, Model, Motor, Resistance
+from crane_sym.components.hybrid import Mode
+
+from .drive_train import relative_torque
+
+#: Brake states of one side: no brake yet, sliding forward/backward, stuck.
+OFF, FORWARD, BACKWARD, STUCK = "off", "+", "-", "0"
+#: Contact states: holding flank (twist u >= 0), gap (-s < u < 0), other flank (u <= -s).
+HOLD, GAP, OTHER = 1, 0, -1
+#: The component model's motion of a group by its brake state, and its scheduled events.
+_MOTION = {OFF: "free", FORWARD: "+", BACKWARD: "-", STUCK: "0"}
+_SCHEDULE = ("drive off", "safety engages", "service engages")
 
 #: Every mode (contact, motor brake, drum brake, motor torque on); its code is its index.
 MODES = tuple(product((HOLD, GAP, OTHER), (OFF, FORWARD, BACKWARD, STUCK),
@@ -41,9 +57,14 @@ _CONTACT = {HOLD: 0, GAP: 1, OTHER: 2}
 
 @dataclass(frozen=True)
 class HoistFamily:
-    """Two-mass hoists (:class:`elastic.TwoMassHoist`), one per design: each
+    """Two-mass hoists reduced to the motor shaft, one per design: each
     attribute an array of shape (N,); ``omega0``, ``t_end``, ``t_M``, ``t_SB``,
-    ``t_BB`` of each design's emergency stop."""
+    ``t_BB`` of each design's emergency stop.
+
+    J1, J_d : motor-side and drum-side inertia [kg m²]; c : gearbox stiffness
+    [N m/rad]; s : backlash [rad]; M_L : static load torque; M_st : rated static
+    torque; M_SB, M_BB : safety- and service-brake torques; M_M : motor torque
+    before the stop (M_L) [N m]; b : mesh damping [N m s/rad]."""
 
     J1: np.ndarray
     J_d: np.ndarray
@@ -84,7 +105,7 @@ class HoistFamily:
         return w, self.c[index] * off
 
     def matrices(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(A, b) of :meth:`elastic.TwoMassHoist.matrices` for each design."""
+        """(A, b) of each design in the mode."""
         contact, motor, drum, driven = MODES[mode]
         w, k = self._torque(contact, index)
         A, b = np.zeros((index.size, 4, 4)), np.zeros((index.size, 4))
@@ -102,7 +123,8 @@ class HoistFamily:
         return A, b
 
     def guards(self, mode: int, index: np.ndarray) -> list[BatchedGuard]:
-        """:meth:`elastic.TwoMassHoist.guards` for each design, in its order."""
+        """Contact changes, a braked side coming to rest, a stuck side breaking
+        free, for each design."""
         contact, motor, drum, driven = MODES[mode]
         k = index.size
         u = np.broadcast_to(_U, (k, 4))
@@ -127,7 +149,7 @@ class HoistFamily:
 
     def switch(self, mode: int, event: str, index: np.ndarray, t: np.ndarray,
                x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """:meth:`elastic.TwoMassHoist.switch` for each design."""
+        """Next mode and state after a guard or a scheduled event, for each design."""
         contact, motor, drum, driven = MODES[mode]
         k = index.size
         x = x.copy()
@@ -141,11 +163,11 @@ class HoistFamily:
             c_[:] = _CONTACT[HOLD]
         elif event == "close other":
             c_[:] = _CONTACT[OTHER]
-        elif event == "motor torque lost":
+        elif event == "drive off":
             on = False
-        elif event == "safety brake":
+        elif event == "safety engages":
             d_ = _engage(x[:, 3])
-        elif event == "service brake":
+        elif event == "service engages":
             m_ = _engage(x[:, 1])
         elif event.endswith("rests") or " slips " in event:
             motor_side = event.startswith("motor")
@@ -183,21 +205,25 @@ class HoistFamily:
         return w / M_st[:, None], k / M_st
 
     # --- runs -----------------------------------------------------------------------
-    def hoist(self, i: int) -> TwoMassHoist:
-        """Design ``i`` as a :class:`elastic.TwoMassHoist`."""
-        return TwoMassHoist(*(float(getattr(self, f)[i]) for f in _FIELDS))
+    def model(self, i: int) -> Model:
+        """Design ``i`` as components (:func:`reduced_model`)."""
+        return reduced_model(*(float(getattr(self, f)[i]) for f in _FIELDS + (
+            "t_M", "t_SB", "t_BB")))
 
     def run(self, i: int) -> HybridRun:
         """Design ``i``'s emergency stop for the per-design route (numeric closed
-        forms, as a sweep runs it)."""
-        h = self.hoist(i)
-        run = h.emergency_stop(float(self.omega0[i]), float(self.t_end[i]), float(self.t_M[i]),
-                               float(self.t_SB[i]), float(self.t_BB[i]))
-        return replace(run, exact=False)
+        forms, as a sweep runs it), its output M_G/M_st."""
+        run = self.model(i).hybrid_run(float(self.t_end[i]), "coupling", "motor",
+                                       float(self.omega0[i]))
+        return replace(run, output=relative_torque(run.system), exact=False)
 
-    def mode(self, code: int) -> tuple:
-        """The mode of :class:`elastic.TwoMassHoist` of a mode code."""
-        return MODES[code]
+    def mode(self, code: int, i: int) -> Mode:
+        """The component model's mode (:meth:`model`) of a mode code, design ``i``:
+        its groups the motor side and the drum side, its brakes the safety and
+        the service brake."""
+        contact, motor, drum, driven = MODES[code]
+        return Mode((contact,) if self.s[i] > 0 else (), (_MOTION[motor], _MOTION[drum]),
+                    (drum != OFF, motor != OFF), (driven,), (False, False))
 
     def peaks(self, **options) -> BatchedLargest:
         """The largest |M_G/M_st| of every design's emergency stop."""
@@ -205,9 +231,7 @@ class HoistFamily:
         modes = np.full(N, _CODE[(HOLD, OFF, OFF, True)])
         x0 = np.stack([np.zeros(N), self.omega0, self.M_L / self.c, self.omega0], axis=1)
         times = np.stack([self.t_M, self.t_SB, self.t_BB], axis=1)
-        return largest_batched(self, modes, x0, self.t_end,
-                               ("motor torque lost", "safety brake", "service brake"), times,
-                               **options)
+        return largest_batched(self, modes, x0, self.t_end, _SCHEDULE, times, **options)
 
 
 def _engage(speed: np.ndarray) -> np.ndarray:
@@ -215,9 +239,25 @@ def _engage(speed: np.ndarray) -> np.ndarray:
                     np.where(speed < 0, _BRAKES.index(BACKWARD), _BRAKES.index(STUCK)))
 
 
+def reduced_model(J1: float, J_d: float, c: float, s: float, M_L: float, M_st: float,
+                  M_SB: float, M_BB: float, M_M: float, b: float, t_M: float, t_SB: float,
+                  t_BB: float) -> Model:
+    """The two-mass hoist at the motor shaft as components (the attributes of
+    :class:`HoistFamily`, one design): the drum side lowered by the constant
+    torque M_L, held by the steady motor (M_M = M_L) until ``t_M``."""
+    if not M_M == M_L:
+        raise ValueError("steady lowering needs M_M = M_L")
+    return Model([Inertia("motor", J1), Inertia("drum", J_d),
+                  ElasticLink("coupling", "motor", "drum", c, b, backlash=s, reference=M_st),
+                  Resistance("load", "drum", M_L),
+                  Motor("drive", "motor", "steady", off_at=t_M),
+                  Brake("safety", "drum", M_SB, delay=t_SB),
+                  Brake("service", "motor", M_BB, delay=t_BB)], name="hoist_reduced")
+
+
 def family_from(q: Mapping[str, np.ndarray], t_end: float | np.ndarray,
                 t_M: float | np.ndarray = 0.0, b: float | np.ndarray = 0.0) -> HoistFamily:
-    """:func:`elastic.hoist_from` for arrays: the designs of Table 1's names
+    """The reduced hoists of ``drive_train.fig9_model`` for arrays: the designs of Table 1's names
     (J1, J2, m_h, m_p, m_r, r, i_g, i_t, g, c, delta, M_SB, M_BB, t_SB, t_BB,
     omega1; SI, broadcast together), lowering m_p, stopped after ``t_end``."""
     names = ("J1", "J2", "m_h", "m_p", "m_r", "r", "i_g", "i_t", "g", "c", "delta", "M_SB",

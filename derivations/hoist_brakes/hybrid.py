@@ -2,8 +2,10 @@
 (``crane_sym.mechanics.hybrid_models``): Fig. 9's emergency stop of the
 two-mass hoist with coupling backlash and brakes that stick.
 
-The system itself (modes, guards, switching) is ``elastic.TwoMassHoist``;
-this module says how a scene's or a design's values build its run and which
+The system (modes, guards, switching) is the component model of
+``drive_train.fig9_model`` (``crane_sym.components``: Table 1's motor shafts,
+gearbox, drums, rope and hook as parts, the drive derived from them); this
+module says how a scene's or a design's values build its run and which
 outputs it has. Scenes (the tabulated ``elastic_gearbox_torque`` of
 ``outputs.py``, the report's hook-only run), design sweeps
 (``sweep_outputs.py``) and the bench reach it only through
@@ -11,13 +13,12 @@ outputs it has. Scenes (the tabulated ``elastic_gearbox_torque`` of
 """
 from __future__ import annotations
 
-from operator import attrgetter
 from typing import Any, Mapping
 
 from crane_sym.mechanics.hybrid_models import HybridModel, HybridOutput
 from crane_sym.mechanics.phase_table import HybridRun
 
-from .elastic import hoist_from
+from .drive_train import emergency_stop, relative_torque
 
 __all__ = ["EMERGENCY_STOP", "HYBRID_MODELS"]
 
@@ -26,8 +27,7 @@ def _emergency_stop(values: Mapping[str, float], settings: Mapping[str, Any]) ->
     """The emergency stop while lowering the payload ``values["m_p"]`` from ω1,
     motor torque lost at t = 0, brakes after t_SB and t_BB, up to the setting
     ``duration``; its output is M_G/M_st."""
-    return hoist_from(values, values["m_p"]).emergency_stop(
-        values["omega1"], settings["duration"], 0.0, values["t_SB"], values["t_BB"])
+    return emergency_stop(values, settings["duration"])
 
 
 #: Fig. 9: the two-mass hoist lowering m_p, stopped (Table 1's names, SI).
@@ -42,7 +42,7 @@ EMERGENCY_STOP = HybridModel(
     _emergency_stop,
     {"relative_torque": HybridOutput(
         "1", "gearbox torque over the rated static torque, M_G/M_st (negative: the drum "
-        "side drives the motor shafts)", attrgetter("relative"), magnitude=True)},
+        "side drives the motor shafts)", relative_torque, magnitude=True)},
 )
 
 #: The paper's piecewise-linear models, by name.

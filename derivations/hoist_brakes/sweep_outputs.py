@@ -8,10 +8,10 @@ design). A block of the grid is solved at once by the batched solver
 (``elastic_batched.py``, ``crane_sym.mechanics.batched``): every design its
 own mode, state and clock, the phases' closed forms from batched
 eigen-decompositions, the events of all designs in one vectorised search;
-it agrees with the per-design run (``elastic.py``,
-``crane_sym.mechanics.piecewise_linear``, kept here as
+it agrees with the per-design run (``hybrid.EMERGENCY_STOP``, the hoist as
+components, ``crane_sym.mechanics.piecewise_linear``, kept here as
 :func:`peak_per_design` for the bench) to 1e-9 of the peak
-(``tests/test_batched.py``).
+(``tests/test_batched.py``, ``tests/test_components.py``).
 """
 from __future__ import annotations
 

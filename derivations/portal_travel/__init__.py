@@ -21,8 +21,10 @@ Files:
 - ``model.py``: symbols, symbol table, LaTeX names, model text.
 - ``steps.py``: the gear geometry and Form 1's numbers; ``steps_loads.py``:
   (3)–(4) and Table 1's arithmetic; ``steps_startup.py``: the start-up model.
-- ``startup.py``: the three-mass drive with backlash as a hybrid system, and
-  the model's Table 1.
+- ``drive_train.py``: the three-mass drive with backlash of Fig. 11 as components
+  (``crane_sym.components``): the one hybrid model of the start-up.
+- ``startup.py``: the chosen parameters, their reduction to the rim, and the
+  model's Table 1.
 - ``hybrid.py``: ``HYBRID_MODELS``, that start-up as scenes reach it.
 - ``sweep_outputs.py``: ``SWEEP_OUTPUTS``, the start-up's peak link force for design
   sweeps (batched).

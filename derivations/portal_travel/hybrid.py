@@ -2,9 +2,11 @@
 (``crane_sym.mechanics.hybrid_models``): the start-up of the three-mass travel
 drive with backlash in both drives (Fig. 11, Fig. 12, Table 1).
 
-The system itself (modes, guards, switching) is ``startup.ThreeMassTravel``;
-this module says how a scene's values build its run and which outputs it
-has. The values are the drive at the wheel rim: ``m_d``, ``b``, ``v0``,
+The system (modes, guards, switching) is the component model of
+``drive_train.fig11_model`` (``crane_sym.components``: the motors of each
+side, the crane, the two links with backlash, the characteristics, friction
+and wind as parts, the drive derived from them); this module says how a
+scene's values build its run and which outputs it has. The values are the drive at the wheel rim: ``m_d``, ``b``, ``v0``,
 ``beta_1``, ``q`` and the backlash ``s`` at the rim, with the scene's ``m_k``,
 ``c_l``, ``W_f``, ``W_w``. A start-up scene's module tabulates its curves, one
 run per backlash of the scene (:func:`scene_runs`, the rim quantities from
@@ -15,15 +17,16 @@ Scenes, and through them the bench, reach it only through ``HYBRID_MODELS``.
 from __future__ import annotations
 
 from functools import partial
-from operator import attrgetter
 from typing import Any, Hashable, Mapping
 
 import numpy as np
 
+from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.mechanics.hybrid_models import HybridModel, HybridOutput
 from crane_sym.mechanics.phase_table import Affine, HybridRun
 
-from .startup import ThreeMassTravel, drive, reduced
+from .drive_train import fig11_model, speed_index, total_load
+from .startup import reduced
 
 __all__ = ["HYBRID_MODELS", "STARTUP", "rim_values", "scene_runs"]
 
@@ -32,25 +35,20 @@ def _start_up(values: Mapping[str, float], settings: Mapping[str, Any]) -> Hybri
     """The start-up from rest, gaps open on the trailing side, one
     characteristic per hold time of the setting ``holds`` then the natural
     one, up to the setting ``end`` [s]; its output is F1 + F2."""
-    model = drive(values, values, tuple(settings["holds"]))
-    return HybridRun(model, model.start_mode(), np.zeros(6), settings["end"], model.schedule(),
-                     model.total)
+    return fig11_model(values, tuple(settings["holds"])).hybrid_run(settings["end"],
+                                                                    rest=True)
 
 
-def _link_force(system: ThreeMassTravel, side: int, mode: Hashable) -> tuple[np.ndarray, float]:
-    return system.link(side, mode[side])
+def _left_link(system: ComponentSystem) -> Affine:
+    return system.link_load(0)
 
 
-def _left_link(system: ThreeMassTravel) -> Affine:
-    return partial(_link_force, system, 0)
+def _component(index: int, size: int, mode: Hashable) -> tuple[np.ndarray, float]:
+    return np.eye(size)[index], 0.0
 
 
-def _component(index: int, mode: Hashable) -> tuple[np.ndarray, float]:
-    return np.eye(6)[index], 0.0
-
-
-def _speed(index: int, system: ThreeMassTravel) -> Affine:
-    return partial(_component, index)
+def _speed(body: str, system: ComponentSystem) -> Affine:
+    return partial(_component, speed_index(system, body), system.size)
 
 
 #: Fig. 12: the three-mass drive starting on the stepped rheostat (rim quantities, SI).
@@ -62,11 +60,11 @@ STARTUP = HybridModel(
     ("holds", "end"),
     _start_up,
     {"load": HybridOutput("N", "F1 + F2, the force of both links on the crane",
-                          attrgetter("total")),
+                          total_load),
      "left_link_load": HybridOutput("N", "F1, the force of one link (left side)", _left_link),
      "motor_speed": HybridOutput("m/s", "v1, the speed of one side's motors at the rim",
-                                 partial(_speed, 1)),
-     "crane_speed": HybridOutput("m/s", "v_k, the speed of the crane", partial(_speed, 5))},
+                                 partial(_speed, "left")),
+     "crane_speed": HybridOutput("m/s", "v_k, the speed of the crane", partial(_speed, "crane"))},
 )
 
 #: The paper's piecewise-linear models, by name.

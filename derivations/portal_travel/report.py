@@ -3,8 +3,8 @@
 Four kinds of scene (``REPORTS``), told apart by the outputs they name: Fig. 10
 (the shift limits against the tooth number), a gear pair checked like Form 1,
 the support loads with Table 3's exceedance probabilities, and the start-up
-with backlash (Fig. 12, Table 1; phases in closed form by ``startup.py``, run
-through ``hybrid.STARTUP``). Numbers come from the scene's generated module,
+with backlash (Fig. 12, Table 1; phases in closed form, the drive of
+``drive_train.py``, run through ``hybrid.STARTUP``). Numbers come from the scene's generated module,
 never from SymPy; the reports import NumPy and the generated modules only
 when run.
 """
@@ -169,6 +169,7 @@ def startup_report(scene, module):
 
     from crane_sym.generated import portal_travel as gen
 
+    from .drive_train import step_accelerations
     from .hybrid import STARTUP
     from .startup import F_MEAN
 
@@ -202,8 +203,8 @@ def startup_report(scene, module):
         s = float(module.startup_backlash_at_rim(phi))
         run = STARTUP.solve({**rim, "s": s}, {"holds": holds, "end": end})
         when, peak = run.peak("load")
-        acc = run.system.step_accelerations(run.result)
-        closing = next((t for t, event, _ in run.events if event.startswith("drive")), None)
+        acc = step_accelerations(run.result, run.system)
+        closing = next((t for t, event, _ in run.events if event.endswith("closes +")), None)
         if closing is not None:      # the flank closes: the gap's closed-form speed
             values[f"v_close_{i}"] = float(gen.startup_gap_motor_speed(closing, **gap_args))
             lines.append(f"backlash {fq(phi, 'rad')}: the flank closes at t = "

@@ -2,11 +2,12 @@
 
 The start-up of the travel drive with backlash in both links (Fig. 12, Table
 1) has phases whose number and ends depend on the design: each design is the
-three-mass hybrid system of ``startup.py`` on Table 1's hold times, and a
+component model of ``drive_train.py`` (``hybrid.STARTUP``) on Table 1's hold
+times, and a
 block of the grid is solved at once by the batched solver
 (``crane_sym.mechanics.batched_runs``: each design's own rules, the closed
 forms, events and extrema batched; the two equal sides' repeated eigenvalues
-clustered). It agrees with ``ThreeMassTravel.peak`` of each design to 1e-9
+clustered). It agrees with the per-design run of each design to 1e-9
 (``tests/test_batched.py``). The backlash φ_b is no scene parameter (the
 scene's report runs each value of its options): give it with ``--at`` or
 ``--vary``.
@@ -25,17 +26,15 @@ END = 4.0
 
 def _designs(values):
     """(shape, one HybridRun per design) of the start-up."""
-    from crane_sym.mechanics.phase_table import HybridRun
-
-    from .startup import drive, reduced
+    from .hybrid import STARTUP, rim_values
+    from .startup import HOLDS
     names = list(values)
     arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
     runs = []
     for index in np.ndindex(arrays[0].shape):
         p = {n: float(a[index]) for n, a in zip(names, arrays)}
-        model = drive(reduced(p, p["phi_b"]), p)
-        runs.append(HybridRun(model, model.start_mode(), np.zeros(6), END, model.schedule(),
-                              model.total))
+        runs.append(STARTUP.run(rim_values(p, p["phi_b"]), {"holds": HOLDS, "end": END},
+                                "load"))
     return arrays[0].shape, runs
 
 
@@ -57,7 +56,8 @@ def _peak_startup_link_force(values, options) -> np.ndarray:
 def peak_per_design(values, options) -> np.ndarray:
     """:func:`_peak_startup_link_force` one design at a time (the reference)."""
     shape, runs = _designs(values)
-    return np.array([r.system.peak(r.solve())[1] for r in runs]).reshape(shape)
+    from crane_sym.mechanics.phase_table import largest
+    return np.array([largest(r.solve(), r.system, r.output)[1] for r in runs]).reshape(shape)
 
 
 SWEEP_OUTPUTS = {

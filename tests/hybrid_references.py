@@ -1,0 +1,172 @@
+"""Independent references for the papers' hybrid models: their equations of
+motion written out by hand from the papers (001: the two-mass hoist of Fig. 9;
+003: the three-mass travel drive of Fig. 11), integrated by SciPy's DOP853 with
+events at rtol 1e-12. No crane_sym code: the closed forms' route is what they check."""
+from __future__ import annotations
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+RTOL, ATOL = 1e-12, 1e-13
+
+
+def _integrate(rhs, events, on_event, t0, t1, y0, pieces, max_step):
+    """Integrate from t0 to t1, stopping at the terminal events and calling
+    ``on_event(index, t, y) -> y`` (which may change the caller's mode)."""
+    t, y = t0, np.array(y0, float)
+    for _ in range(10_000):
+        if t >= t1:
+            return t, y
+        sol = solve_ivp(rhs, (t, t1), y, method="DOP853", rtol=RTOL, atol=ATOL,
+                        events=events(), dense_output=True, max_step=max_step)
+        pieces.append((t, sol.t[-1], sol.sol))
+        fired = [i for i, te in enumerate(sol.t_events) if len(te)]
+        t, y = sol.t[-1], sol.y[:, -1]
+        if sol.status == 1:
+            y = on_event(fired[0], t, y)
+    raise RuntimeError("too many events")
+
+
+def _event(fn, direction):
+    fn.terminal, fn.direction = True, direction
+    return fn
+
+
+def dead_zone(u, lower, upper):
+    """u − upper above the gap, u − lower below it, 0 in it."""
+    return np.where(u >= upper, u - upper, np.where(u <= lower, u - lower, 0.0))
+
+
+def fig9_reference(q, duration, max_step=2e-3):
+    """Paper 001, Fig. 9, reduced to the motor shaft (the model text):
+    J1 ω̇m = T − M_BB·sign(ωm) (after t_BB), J_d ω̇d = −T + M_L − (M_SB/i_g)·sign(ωd)
+    (after t_SB), T = c·dz(θd − θm) with the gap −δ i_g < u < 0; the motor's
+    torque M_L lost at t = 0; a braked side at rest stays there while its net
+    torque is within the brake. Returns M_G/M_st as a function of time."""
+    gear = q["r"] / (q["i_g"] * q["i_t"])
+    m = q["m_h"] + q["m_p"]
+    J1, J_d = q["J1"], q["J2"] / q["i_g"] ** 2 + m * gear ** 2
+    c, s, M_L = q["c"], q["delta"] * q["i_g"], m * q["g"] * gear
+    M_st = (q["m_h"] + q["m_r"]) * q["g"] * gear
+    limit = {1: q["M_BB"], 3: q["M_SB"] / q["i_g"]}
+    state = {1: "off", 3: "off"}                     # off, sliding, stuck
+
+    def torque(y):
+        return c * dead_zone(y[2] - y[0], -s, 0.0)
+
+    def net(y, k):                                   # the side's torque but its brake
+        return torque(y) if k == 1 else M_L - torque(y)
+
+    def rhs(t, y):
+        out = np.array([y[1], 0.0, y[3], 0.0])
+        for k, J in ((1, J1), (3, J_d)):
+            if state[k] == "stuck":
+                out[k - 1] = out[k] = 0.0
+                continue
+            brake = limit[k] * np.sign(y[k]) if state[k] == "sliding" else 0.0
+            out[k] = (net(y, k) - brake) / J
+        return out
+
+    def events():
+        out = []
+        for k in (1, 3):
+            if state[k] == "sliding":
+                out.append(_event(lambda t, y, k=k: y[k], 0))
+            elif state[k] == "stuck":
+                out.append(_event(lambda t, y, k=k: abs(net(y, k)) - limit[k], 1))
+            else:
+                out.append(_event(lambda t, y: 1.0, 0))
+        return out
+
+    def on_event(i, t, y):
+        k = (1, 3)[i]
+        y = y.copy()
+        y[k] = 0.0
+        state[k] = "stuck" if abs(net(y, k)) <= limit[k] and state[k] == "sliding" else \
+            "sliding"
+        if state[k] == "sliding":                    # breaks free: a nudge in its direction
+            y[k] = 1e-300 * np.sign(net(y, k))
+        return y
+
+    pieces = []
+    y = np.array([0.0, q["omega1"], M_L / c, q["omega1"]])
+    t = 0.0
+    for until, k in sorted(((q["t_SB"], 3), (q["t_BB"], 1))) + [(duration, None)]:
+        t, y = _integrate(rhs, events, on_event, t, min(until, duration), y, pieces, max_step)
+        if k is not None and until < duration:
+            state[k] = "stuck" if y[k] == 0 and abs(net(y, k)) <= limit[k] else "sliding"
+
+    def output(times):
+        times = np.asarray(times, float)
+        out = np.empty(times.shape)
+        for a, b, sol in pieces:
+            inside = (times >= a) & (times <= b)
+            if inside.any() and b > a:
+                out[inside] = torque(sol(times[inside])) / M_st
+        return out
+    return output
+
+
+def fig11_reference(v, holds, end, max_step=2e-3):
+    """Paper 003, Fig. 11, at the rim: m_d v̇_i = β_k (v0 − v_i) − F_i (k the
+    start step), F_i = c·dz(x_i − x_k) + b·u̇_i outside the gap 0 < u_i < s;
+    the crane stands while |F1 + F2 − W_w| ≤ W_f, else m_k v̇_k = F1 + F2 − W_w
+    − W_f·sign(v_k). From rest, gaps open; the right gap ``s_right`` where given.
+    Returns F1 + F2 as a function of time."""
+    c, b = v["c_l"], v["b"]
+    gaps = (v["s"], v.get("s_right", v["s"]))
+    slopes = [v["beta_1"] * v["q"] ** k for k in range(len(holds) + 1)]
+    mode = {"step": 0, "crane": "stand"}
+
+    def links(y):
+        out = []
+        for i, s in ((0, gaps[0]), (2, gaps[1])):
+            u, du = y[i] - y[4], y[i + 1] - y[5]
+            touching = (u >= s) | (u <= 0)
+            out.append(c * dead_zone(u, 0.0, s) + np.where(touching, b * du, 0.0))
+        return out
+
+    def rhs(t, y):
+        F1, F2 = links(y)
+        beta = slopes[mode["step"]]
+        out = np.array([y[1], (beta * (v["v0"] - y[1]) - F1) / v["m_d"],
+                        y[3], (beta * (v["v0"] - y[3]) - F2) / v["m_d"], y[5], 0.0])
+        if mode["crane"] == "stand":
+            out[4] = 0.0
+        else:
+            out[5] = (F1 + F2 - v["W_w"] - v["W_f"] * np.sign(y[5])) / v["m_k"]
+        return out
+
+    def events():
+        if mode["crane"] == "stand":
+            return [_event(lambda t, y: sum(links(y)) - v["W_w"] - v["W_f"], 1),
+                    _event(lambda t, y: sum(links(y)) - v["W_w"] + v["W_f"], -1)]
+        return [_event(lambda t, y: y[5], 0)]
+
+    def on_event(i, t, y):
+        y = y.copy()
+        if mode["crane"] == "stand":
+            mode["crane"] = "move"
+            y[5] = 1e-300 if i == 0 else -1e-300
+        else:
+            y[5] = 0.0
+            net = sum(links(y)) - v["W_w"]
+            mode["crane"] = "stand" if abs(net) <= v["W_f"] else "move"
+            if mode["crane"] == "move":
+                y[5] = 1e-300 * np.sign(net)
+        return y
+
+    pieces, t, y = [], 0.0, np.zeros(6)
+    for k, until in enumerate(list(np.cumsum(holds)) + [end]):
+        t, y = _integrate(rhs, events, on_event, t, min(until, end), y, pieces, max_step)
+        mode["step"] = min(k + 1, len(holds))
+
+    def output(times):
+        times = np.asarray(times, float)
+        out = np.empty(times.shape)
+        for a, b_, sol in pieces:
+            inside = (times >= a) & (times <= b_)
+            if inside.any() and b_ > a:
+                out[inside] = sum(links(sol(times[inside])))
+        return out
+    return output
