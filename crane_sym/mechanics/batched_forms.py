@@ -1,10 +1,12 @@
 """Closed forms of one phase for many designs at once, and their signals.
 
 The batched sibling of :mod:`crane_sym.mechanics.closed_forms`' numeric route:
-k designs in one mode have matrices M = [[A, b], [0, 0]] of one shape, so
-one call of ``np.linalg.eig`` on the stack (k, n + 1, n + 1) gives every
-design's eigenvalues, and one on the transposed stack its left eigenvectors
-(matched to the right ones by nearest eigenvalue). Each simple nonzero
+k designs in one mode have matrices M = [[A, b], [0, 0]] of one shape; one
+call of ``np.linalg.eig`` on the stack of the distinct A (a swept value that
+moves b only, a backlash, shares A) and one on their transposes give every
+design's eigenvalues and right and left eigenvectors, b brought in
+algebraically (:func:`_augmented_eig`), the left matched to the right by
+nearest eigenvalue. Each simple nonzero
 eigenvalue λ gives the spectral projector C_λ = v wᵀ / (wᵀ v); the
 generalized kernel (rigid modes, the constant input) gets the exact
 nilpotent series Σ_j (N t)^j / j! · Q with Q = I − Σ C_λ and N = M Q, as the
@@ -106,8 +108,7 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     M = np.zeros((k, size, size))
     M[:, :n, :n] = A
     M[:, :n, n] = b
-    lam, vr = np.linalg.eig(M)
-    mu, vl = np.linalg.eig(np.swapaxes(M, 1, 2))
+    lam, vr, mu, vl = _augmented_eig(A, b)
     scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
     tol = 1e-6 * scale
     # both spectra in one order: real nonzero, upper half plane, lower, kernel
@@ -133,6 +134,40 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
             if form is not None:
                 parts.append((where[fine], form))
     return parts, np.array(sorted(refused), dtype=np.intp)
+
+
+def _augmented_eig(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Eigenvalues and unit right and left eigenvectors of each M = [[A, b], [0, 0]]
+    from one ``np.linalg.eig`` of each distinct A (and Aᵀ): M's spectrum is A's
+    and a 0; to λ ≠ 0 belong the right vector (v, 0) and the left (w, wᵀb/λ),
+    b enters algebraically. The kernel's entries (A's near-zero eigenvalues
+    and M's 0) keep placeholder vectors: the kernel's projector is
+    I − Σ C_λ, its vectors are never read. Each distinct A is decomposed
+    alone (a stack of one design gives the same bits)."""
+    k, n = b.shape
+    rows = np.ascontiguousarray(A.reshape(k, -1))
+    keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    inverse = inverse.ravel()
+    lam_a, v_a = np.linalg.eig(A[first])
+    mu_a, w_a = np.linalg.eig(np.swapaxes(A[first], 1, 2))
+    size = n + 1
+    lam = np.zeros((k, size), dtype=complex)
+    mu = np.zeros((k, size), dtype=complex)
+    lam[:, :n], mu[:, :n] = lam_a[inverse], mu_a[inverse]
+    vr = np.zeros((k, size, size), dtype=complex)
+    vr[:, :n, :n] = v_a[inverse]
+    vr[:, n, n] = 1.0
+    vl = np.zeros((k, size, size), dtype=complex)
+    w = w_a[inverse]
+    with np.errstate(all="ignore"):
+        s = np.einsum("ki,kij->kj", b.astype(complex), w) / mu[:, :n]
+    s = np.where(np.abs(mu[:, :n]) > 0, s, 0.0)
+    norm = np.sqrt(1.0 + np.abs(s) ** 2)                # |w| = 1 from eig
+    vl[:, :n, :n] = w / norm[:, None, :]
+    vl[:, n, :n] = s / norm
+    vl[:, n, n] = 1.0
+    return lam, vr, mu, vl
 
 
 def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
