@@ -75,7 +75,7 @@ def _searched(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     quad = sig.quadratic() & ~on_surface
     limit = None
     if quad.any():
-        out[quad] = _quadratic_crossings(sig, rows[quad], start[quad], t_end[quad], g0[quad],
+        out[quad] = _quadratic_crossings(sig.polynomial(), rows[quad], start[quad], t_end[quad], g0[quad],
                                          xtol)
         if owner is not None:                   # the others stop past their owner's
             _, code = np.unique(owner, return_inverse=True)

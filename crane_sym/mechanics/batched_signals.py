@@ -86,6 +86,8 @@ class Signals:
     def both(self, rows: np.ndarray, t: np.ndarray,
              slope: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
         """g and (with ``slope``) g' at ``t``, from one evaluation of each term."""
+        if not t.any():
+            return self._at_zero(rows, slope)
         poly = self.poly[rows]
         D = poly.shape[1]
         g = poly[:, D - 1].copy()
@@ -119,6 +121,32 @@ class Signals:
             if slope:
                 d += _rowsum(s * term)
         return g, d
+
+    def _at_zero(self, rows: np.ndarray,
+                 slope: bool) -> tuple[np.ndarray, np.ndarray | None]:
+        """:meth:`both` at t = 0, without transcendentals: cos 0 = e^0 = 1 and
+        sin 0 = 0 exactly, so the same sums as there."""
+        poly = self.poly[rows]
+        g = poly[:, 0].copy()
+        d = (poly[:, 1].copy() if poly.shape[1] > 1 else np.zeros(rows.size)) if slope else None
+        if self.cos_amps.shape[1]:
+            a = self.cos_amps[rows]
+            g += _rowsum(a)
+            if slope:
+                d += _rowsum(self.pair_sigmas[rows] * a
+                             + self.pair_omegas[rows] * self.sin_amps[rows])
+        if self.real_amps.shape[1]:
+            a = self.real_amps[rows]
+            g += _rowsum(a)
+            if slope:
+                d += _rowsum(self.real_sigmas[rows] * a)
+        return g, d
+
+    def polynomial(self) -> "Signals":
+        """The polynomial block alone (the rest dropped): for signals that
+        hold nothing else, the same values with no transcendental evaluated."""
+        none = np.zeros((self.poly.shape[0], 0))
+        return Signals(none, none, none, none, none, none, self.poly)
 
     def size(self, rows: np.ndarray) -> np.ndarray:
         """Σ |a_j| + |k|: the scale of a signal (the constant in c_0)."""
