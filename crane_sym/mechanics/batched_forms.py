@@ -126,9 +126,9 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     parts, refused = [], list(np.flatnonzero(bad))
     ok = np.flatnonzero(~bad)
     if ok.size:
-        kinds, which = np.unique(pattern[ok], axis=0, return_inverse=True)
+        kinds, which = _unique_rows(pattern[ok])
         for g, kind in enumerate(kinds):
-            where = ok[which.ravel() == g]
+            where = ok[which == g]
             form, fine = _form(M[where], lam[where], vr[where], vl[where], kind, cond_limit)
             refused.extend(where[~fine])
             if form is not None:
@@ -178,6 +178,18 @@ def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
     _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
     return first, inverse.ravel()
+
+
+def _unique_rows(pattern: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(pattern, axis=0, return_inverse=True)`` of small integer rows
+    (0 … 7), each read as one base-8 number: the same rows in the same order."""
+    if pattern.shape[1] > 20:
+        kinds, which = np.unique(pattern, axis=0, return_inverse=True)
+        return kinds, which.ravel()
+    codes = pattern.astype(np.int64) @ (8 ** np.arange(pattern.shape[1] - 1, -1, -1,
+                                                        dtype=np.int64))
+    _, first, which = np.unique(codes, return_index=True, return_inverse=True)
+    return pattern[first], which.ravel()
 
 
 def _ordered(values, vectors, tol):
