@@ -68,7 +68,10 @@ class BatchForm:
     def vectors(self, x0: np.ndarray) -> np.ndarray:
         """C_j (x0, 1) of each design, shape (k, T, rows of C_j)."""
         z0 = np.concatenate([x0, np.ones((x0.shape[0], 1))], axis=1)
-        return (self.coefficients @ z0[:, None, :, None])[..., 0]
+        k, T, rows, size = self.coefficients.shape
+        # one (T·rows, n + 1) matrix-vector product a design, not T small ones
+        flat = self.coefficients.reshape(k, T * rows, size)
+        return (flat @ z0[:, :, None]).reshape(k, T, rows)
 
     def take(self, rows: np.ndarray) -> "BatchForm":
         """The designs ``rows`` only (a row may repeat)."""
