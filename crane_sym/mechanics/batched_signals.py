@@ -178,7 +178,19 @@ class Signals:
                t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Upper bounds of |g'| and |g''| on [t0, t1] (0 ≤ t0 ≤ t1), term by term
         as :meth:`crane_sym.mechanics.closed_forms.ClosedForm.derivative_bound`,
-        a pair a cos + b sin = R cos(ωt − φ) with its amplitude R = √(a² + b²)."""
+        a pair a cos + b sin = R cos(ωt − φ) with its amplitude R = √(a² + b²);
+        in chunks as :meth:`both`."""
+        if rows.size <= CHUNK:
+            return self._bounds(rows, t0, t1)
+        L, M2 = np.empty(rows.size), np.empty(rows.size)
+        for i in range(0, rows.size, CHUNK):
+            part = slice(i, i + CHUNK)
+            L[part], M2[part] = self._bounds(rows[part], t0[part], t1[part])
+        return L, M2
+
+    def _bounds(self, rows: np.ndarray, t0: np.ndarray,
+                t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`bounds` of one chunk."""
         poly = np.abs(self.poly[rows])
         D = poly.shape[1]
         L, M2 = np.zeros_like(t0), np.zeros_like(t0)
