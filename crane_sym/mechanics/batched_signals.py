@@ -170,9 +170,8 @@ class Signals:
 
     def size(self, rows: np.ndarray) -> np.ndarray:
         """Σ |a_j| + |k|: the scale of a signal (the constant in c_0)."""
-        return (np.abs(self.real_amps[rows]).sum(axis=1)
-                + np.abs(self.cos_amps[rows]).sum(axis=1)
-                + np.abs(self.sin_amps[rows]).sum(axis=1) + np.abs(self.poly[rows]).sum(axis=1))
+        return (_abs_rowsum(self.real_amps[rows]) + _abs_rowsum(self.cos_amps[rows])
+                + _abs_rowsum(self.sin_amps[rows]) + _abs_rowsum(self.poly[rows]))
 
     def bounds(self, rows: np.ndarray, t0: np.ndarray,
                t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -238,17 +237,12 @@ class Signals:
 
     def constant(self) -> np.ndarray:
         """True where a signal has no term but its constant."""
-        return ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
-                 | np.any(self.sin_amps != 0, axis=1) | np.any(self.poly[:, 1:] != 0, axis=1))
+        return ~_nonzero(self.real_amps, self.cos_amps, self.sin_amps, self.poly[:, 1:])
 
     def quadratic(self) -> np.ndarray:
         """True where a signal is a polynomial of degree 2 at most (no
         exponential or oscillating term)."""
-        out = ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
-                | np.any(self.sin_amps != 0, axis=1))
-        if self.poly.shape[1] > 3:
-            out &= ~np.any(self.poly[:, 3:] != 0, axis=1)
-        return out
+        return ~_nonzero(self.real_amps, self.cos_amps, self.sin_amps, self.poly[:, 3:])
 
     def window(self, rows: np.ndarray, scale: np.ndarray) -> np.ndarray:
         """A window over which the bounds stay tight: a quarter of the shortest
@@ -261,6 +255,24 @@ class Signals:
             out = np.where(wmax > 0, np.minimum(out, 0.5 * np.pi / wmax), out)
             out = np.where(smax > 0, np.minimum(out, 1.0 / smax), out)
         return out
+
+def _nonzero(*blocks: np.ndarray) -> np.ndarray:
+    """True where a row holds a nonzero entry in any of ``blocks`` (m, ·),
+    column by column: a reduction along short rows is many times slower."""
+    out = np.zeros(blocks[0].shape[0], dtype=bool)
+    for a in blocks:
+        for j in range(a.shape[1]):
+            out |= a[:, j] != 0
+    return out
+
+
+def _abs_rowsum(a: np.ndarray) -> np.ndarray:
+    """Σ_j |a_j| of each row, column by column (as :func:`_nonzero`)."""
+    out = np.zeros(a.shape[0])
+    for j in range(a.shape[1]):
+        out += np.abs(a[:, j])
+    return out
+
 
 def _rowsum(a: np.ndarray) -> np.ndarray:
     """Σ over a row's terms; a single term as it is (a reduction costs more)."""
