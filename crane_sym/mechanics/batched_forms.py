@@ -165,7 +165,7 @@ def _augmented_eig(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, ...]:
     w = w_a[inverse]
     with np.errstate(all="ignore"):
         s = np.einsum("ki,kij->kj", b.astype(complex), w) / mu[:, :n]
-    s = np.where(np.abs(mu[:, :n]) > 0, s, 0.0)
+    s = np.where(np.isfinite(s), s, 0.0)             # a kernel's λ ≈ 0: never read
     norm = np.sqrt(1.0 + np.abs(s) ** 2)                # |w| = 1 from eig
     vl[:, :n, :n] = w / norm[:, None, :]
     vl[:, n, :n] = s / norm
