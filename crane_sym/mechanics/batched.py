@@ -373,7 +373,9 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
         cand_rows.append(moving[which])
         cand_t.append(when)
     rows, when = np.concatenate(cand_rows), np.concatenate(cand_t)
-    vals = out.value(rows, when)
+    # the value at each phase's start apart: at t = 0 it needs no transcendental
+    vals = np.concatenate([out.value(cand_rows[0], cand_t[0]),
+                           out.value(rows[m:], when[m:])])
     keys = np.abs(vals) if s.magnitude else vals
     order = np.lexsort((-keys, rows))                 # per design, its largest first
     first = order[np.r_[True, rows[order][1:] != rows[order][:-1]]]

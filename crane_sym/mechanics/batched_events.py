@@ -75,7 +75,7 @@ def _searched(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     quad = sig.quadratic() & ~on_surface
     limit = None
     if quad.any():
-        out[quad] = _quadratic_crossings(sig, rows[quad], start[quad], t_end[quad], g0[quad],
+        out[quad] = _quadratic_crossings(sig.polynomial(), rows[quad], start[quad], t_end[quad], g0[quad],
                                          xtol)
         if owner is not None:                   # the others stop past their owner's
             _, code = np.unique(owner, return_inverse=True)
@@ -287,7 +287,8 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
     narrows the bracket by its sign; a Newton point outside the bracket is
     replaced by its middle (so the bracket at least halves), and a row is
     done when Newton's correction is within the tolerance (the root is the
-    corrected point; convergence is quadratic there) or the bracket is."""
+    corrected point; convergence is quadratic there), the bracket is, or
+    Newton's correction at an end of it is (that end the root)."""
     rtol = 4 * np.finfo(float).eps
     a, b = lo.copy(), hi.copy()
     level = np.broadcast_to(np.asarray(level, dtype=float), a.shape)
@@ -319,11 +320,18 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
         # the bracket when g at x is rounding noise)
         done = ~hit & (np.abs(newton - xl) <= tol)
         close = ~hit & ~done & (bl - al <= 2 * tol)
+        # an end of the bracket whose Newton correction (by g' at x) is within
+        # the tolerance is the root: Newton points a hair past it, and halving
+        # toward it would take a round per bit
+        fal, fbl = np.abs(fa[live]), np.abs(fb[live])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            at_end = ~hit & ~done & ~close & ~inside & (np.minimum(fal, fbl) <= tol * np.abs(d))
         root[live[hit]] = xl[hit]
         root[live[done]] = np.clip(newton[done], al[done], bl[done])
         root[live[close]] = 0.5 * (al[close] + bl[close])
+        root[live[at_end]] = np.where(fal[at_end] <= fbl[at_end], al[at_end], bl[at_end])
         x[live] = np.where(inside, newton, 0.5 * (al + bl))
-        live = live[~(hit | done | close)]
+        live = live[~(hit | done | close | at_end)]
     if live.size:
         root[live] = 0.5 * (a[live] + b[live])
     return root

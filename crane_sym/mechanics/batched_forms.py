@@ -1,10 +1,12 @@
 """Closed forms of one phase for many designs at once, and their signals.
 
 The batched sibling of :mod:`crane_sym.mechanics.closed_forms`' numeric route:
-k designs in one mode have matrices M = [[A, b], [0, 0]] of one shape, so
-one call of ``np.linalg.eig`` on the stack (k, n + 1, n + 1) gives every
-design's eigenvalues, and one on the transposed stack its left eigenvectors
-(matched to the right ones by nearest eigenvalue). Each simple nonzero
+k designs in one mode have matrices M = [[A, b], [0, 0]] of one shape; one
+call of ``np.linalg.eig`` on the stack of the distinct A (a swept value that
+moves b only, a backlash, shares A) and one on their transposes give every
+design's eigenvalues and right and left eigenvectors, b brought in
+algebraically (:func:`_augmented_eig`), the left matched to the right by
+nearest eigenvalue. Each simple nonzero
 eigenvalue λ gives the spectral projector C_λ = v wᵀ / (wᵀ v); the
 generalized kernel (rigid modes, the constant input) gets the exact
 nilpotent series Σ_j (N t)^j / j! · Q with Q = I − Σ C_λ and N = M Q, as the
@@ -66,7 +68,10 @@ class BatchForm:
     def vectors(self, x0: np.ndarray) -> np.ndarray:
         """C_j (x0, 1) of each design, shape (k, T, rows of C_j)."""
         z0 = np.concatenate([x0, np.ones((x0.shape[0], 1))], axis=1)
-        return (self.coefficients @ z0[:, None, :, None])[..., 0]
+        k, T, rows, size = self.coefficients.shape
+        # one (T·rows, n + 1) matrix-vector product a design, not T small ones
+        flat = self.coefficients.reshape(k, T * rows, size)
+        return (flat @ z0[:, :, None]).reshape(k, T, rows)
 
     def take(self, rows: np.ndarray) -> "BatchForm":
         """The designs ``rows`` only (a row may repeat)."""
@@ -106,8 +111,7 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     M = np.zeros((k, size, size))
     M[:, :n, :n] = A
     M[:, :n, n] = b
-    lam, vr = np.linalg.eig(M)
-    mu, vl = np.linalg.eig(np.swapaxes(M, 1, 2))
+    lam, vr, mu, vl = _augmented_eig(A, b)
     scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
     tol = 1e-6 * scale
     # both spectra in one order: real nonzero, upper half plane, lower, kernel
@@ -125,14 +129,48 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     parts, refused = [], list(np.flatnonzero(bad))
     ok = np.flatnonzero(~bad)
     if ok.size:
-        kinds, which = np.unique(pattern[ok], axis=0, return_inverse=True)
+        kinds, which = _unique_rows(pattern[ok])
         for g, kind in enumerate(kinds):
-            where = ok[which.ravel() == g]
+            where = ok[which == g]
             form, fine = _form(M[where], lam[where], vr[where], vl[where], kind, cond_limit)
             refused.extend(where[~fine])
             if form is not None:
                 parts.append((where[fine], form))
     return parts, np.array(sorted(refused), dtype=np.intp)
+
+
+def _augmented_eig(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Eigenvalues and unit right and left eigenvectors of each M = [[A, b], [0, 0]]
+    from one ``np.linalg.eig`` of each distinct A (and Aᵀ): M's spectrum is A's
+    and a 0; to λ ≠ 0 belong the right vector (v, 0) and the left (w, wᵀb/λ),
+    b enters algebraically. The kernel's entries (A's near-zero eigenvalues
+    and M's 0) keep placeholder vectors: the kernel's projector is
+    I − Σ C_λ, its vectors are never read. Each distinct A is decomposed
+    alone (a stack of one design gives the same bits)."""
+    k, n = b.shape
+    rows = np.ascontiguousarray(A.reshape(k, -1))
+    keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    inverse = inverse.ravel()
+    lam_a, v_a = np.linalg.eig(A[first])
+    mu_a, w_a = np.linalg.eig(np.swapaxes(A[first], 1, 2))
+    size = n + 1
+    lam = np.zeros((k, size), dtype=complex)
+    mu = np.zeros((k, size), dtype=complex)
+    lam[:, :n], mu[:, :n] = lam_a[inverse], mu_a[inverse]
+    vr = np.zeros((k, size, size), dtype=complex)
+    vr[:, :n, :n] = v_a[inverse]
+    vr[:, n, n] = 1.0
+    vl = np.zeros((k, size, size), dtype=complex)
+    w = w_a[inverse]
+    with np.errstate(all="ignore"):
+        s = np.einsum("ki,kij->kj", b.astype(complex), w) / mu[:, :n]
+    s = np.where(np.isfinite(s), s, 0.0)             # a kernel's λ ≈ 0: never read
+    norm = np.sqrt(1.0 + np.abs(s) ** 2)                # |w| = 1 from eig
+    vl[:, :n, :n] = w / norm[:, None, :]
+    vl[:, n, :n] = s / norm
+    vl[:, n, n] = 1.0
+    return lam, vr, mu, vl
 
 
 def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -143,6 +181,18 @@ def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
     _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
     return first, inverse.ravel()
+
+
+def _unique_rows(pattern: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``np.unique(pattern, axis=0, return_inverse=True)`` of small integer rows
+    (0 … 7), each read as one base-8 number: the same rows in the same order."""
+    if pattern.shape[1] > 20:
+        kinds, which = np.unique(pattern, axis=0, return_inverse=True)
+        return kinds, which.ravel()
+    codes = pattern.astype(np.int64) @ (8 ** np.arange(pattern.shape[1] - 1, -1, -1,
+                                                        dtype=np.int64))
+    _, first, which = np.unique(codes, return_index=True, return_inverse=True)
+    return pattern[first], which.ravel()
 
 
 def _ordered(values, vectors, tol):

@@ -19,6 +19,10 @@ from crane_sym.mechanics.batched_forms import BatchForm
 __all__ = ["Signals"]
 
 
+#: Rows a signal evaluation handles at once.
+CHUNK = 4096
+
+
 @dataclass
 class Signals:
     """m scalar signals g_i(t) = Σ_j a_ij β_ij(t) + k_i on their phase's own clock,
@@ -85,7 +89,25 @@ class Signals:
 
     def both(self, rows: np.ndarray, t: np.ndarray,
              slope: bool = True) -> tuple[np.ndarray, np.ndarray | None]:
-        """g and (with ``slope``) g' at ``t``, from one evaluation of each term."""
+        """g and (with ``slope``) g' at ``t``, from one evaluation of each term,
+        in chunks of :data:`CHUNK` rows (their temporaries stay in the cache:
+        about twice as fast on 10⁴ rows; each row's value is the same)."""
+        if not t.any():
+            return self._at_zero(rows, slope)
+        if rows.size <= CHUNK:
+            return self._both(rows, t, slope)
+        g = np.empty(rows.size)
+        d = np.empty(rows.size) if slope else None
+        for i in range(0, rows.size, CHUNK):
+            gi, di = self._both(rows[i:i + CHUNK], t[i:i + CHUNK], slope)
+            g[i:i + CHUNK] = gi
+            if slope:
+                d[i:i + CHUNK] = di
+        return g, d
+
+    def _both(self, rows: np.ndarray, t: np.ndarray,
+              slope: bool) -> tuple[np.ndarray, np.ndarray | None]:
+        """:meth:`both` of one chunk."""
         poly = self.poly[rows]
         D = poly.shape[1]
         g = poly[:, D - 1].copy()
@@ -120,17 +142,54 @@ class Signals:
                 d += _rowsum(s * term)
         return g, d
 
+    def _at_zero(self, rows: np.ndarray,
+                 slope: bool) -> tuple[np.ndarray, np.ndarray | None]:
+        """:meth:`both` at t = 0, without transcendentals: cos 0 = e^0 = 1 and
+        sin 0 = 0 exactly, so the same sums as there."""
+        poly = self.poly[rows]
+        g = poly[:, 0].copy()
+        d = (poly[:, 1].copy() if poly.shape[1] > 1 else np.zeros(rows.size)) if slope else None
+        if self.cos_amps.shape[1]:
+            a = self.cos_amps[rows]
+            g += _rowsum(a)
+            if slope:
+                d += _rowsum(self.pair_sigmas[rows] * a
+                             + self.pair_omegas[rows] * self.sin_amps[rows])
+        if self.real_amps.shape[1]:
+            a = self.real_amps[rows]
+            g += _rowsum(a)
+            if slope:
+                d += _rowsum(self.real_sigmas[rows] * a)
+        return g, d
+
+    def polynomial(self) -> "Signals":
+        """The polynomial block alone (the rest dropped): for signals that
+        hold nothing else, the same values with no transcendental evaluated."""
+        none = np.zeros((self.poly.shape[0], 0))
+        return Signals(none, none, none, none, none, none, self.poly)
+
     def size(self, rows: np.ndarray) -> np.ndarray:
         """Σ |a_j| + |k|: the scale of a signal (the constant in c_0)."""
-        return (np.abs(self.real_amps[rows]).sum(axis=1)
-                + np.abs(self.cos_amps[rows]).sum(axis=1)
-                + np.abs(self.sin_amps[rows]).sum(axis=1) + np.abs(self.poly[rows]).sum(axis=1))
+        return (_abs_rowsum(self.real_amps[rows]) + _abs_rowsum(self.cos_amps[rows])
+                + _abs_rowsum(self.sin_amps[rows]) + _abs_rowsum(self.poly[rows]))
 
     def bounds(self, rows: np.ndarray, t0: np.ndarray,
                t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Upper bounds of |g'| and |g''| on [t0, t1] (0 ≤ t0 ≤ t1), term by term
         as :meth:`crane_sym.mechanics.closed_forms.ClosedForm.derivative_bound`,
-        a pair a cos + b sin = R cos(ωt − φ) with its amplitude R = √(a² + b²)."""
+        a pair a cos + b sin = R cos(ωt − φ) with its amplitude R = √(a² + b²);
+        in chunks as :meth:`both`."""
+        if rows.size <= CHUNK:
+            return self._bounds(rows, t0, t1)
+        L, M2 = np.empty(rows.size), np.empty(rows.size)
+        for i in range(0, rows.size, CHUNK):
+            part = slice(i, i + CHUNK)
+            L[part], M2[part] = self._bounds(rows[part], t0[part], t1[part])
+        return L, M2
+
+    def _bounds(self, rows: np.ndarray, t0: np.ndarray,
+                t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`bounds` of one chunk."""
         poly = np.abs(self.poly[rows])
         D = poly.shape[1]
         L, M2 = np.zeros_like(t0), np.zeros_like(t0)
@@ -178,17 +237,12 @@ class Signals:
 
     def constant(self) -> np.ndarray:
         """True where a signal has no term but its constant."""
-        return ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
-                 | np.any(self.sin_amps != 0, axis=1) | np.any(self.poly[:, 1:] != 0, axis=1))
+        return ~_nonzero(self.real_amps, self.cos_amps, self.sin_amps, self.poly[:, 1:])
 
     def quadratic(self) -> np.ndarray:
         """True where a signal is a polynomial of degree 2 at most (no
         exponential or oscillating term)."""
-        out = ~(np.any(self.real_amps != 0, axis=1) | np.any(self.cos_amps != 0, axis=1)
-                | np.any(self.sin_amps != 0, axis=1))
-        if self.poly.shape[1] > 3:
-            out &= ~np.any(self.poly[:, 3:] != 0, axis=1)
-        return out
+        return ~_nonzero(self.real_amps, self.cos_amps, self.sin_amps, self.poly[:, 3:])
 
     def window(self, rows: np.ndarray, scale: np.ndarray) -> np.ndarray:
         """A window over which the bounds stay tight: a quarter of the shortest
@@ -201,6 +255,24 @@ class Signals:
             out = np.where(wmax > 0, np.minimum(out, 0.5 * np.pi / wmax), out)
             out = np.where(smax > 0, np.minimum(out, 1.0 / smax), out)
         return out
+
+def _nonzero(*blocks: np.ndarray) -> np.ndarray:
+    """True where a row holds a nonzero entry in any of ``blocks`` (m, ·),
+    column by column: a reduction along short rows is many times slower."""
+    out = np.zeros(blocks[0].shape[0], dtype=bool)
+    for a in blocks:
+        for j in range(a.shape[1]):
+            out |= a[:, j] != 0
+    return out
+
+
+def _abs_rowsum(a: np.ndarray) -> np.ndarray:
+    """Σ_j |a_j| of each row, column by column (as :func:`_nonzero`)."""
+    out = np.zeros(a.shape[0])
+    for j in range(a.shape[1]):
+        out += np.abs(a[:, j])
+    return out
+
 
 def _rowsum(a: np.ndarray) -> np.ndarray:
     """Σ over a row's terms; a single term as it is (a reduction costs more)."""
