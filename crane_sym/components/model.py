@@ -337,7 +337,7 @@ class Model:
         """
         model = object.__new__(Model)
         model.components = tuple(components)
-        model.name, model.title = self.name, self.title
+        model.name, model.title, model.scope = self.name, self.title, self.scope
         model.assembly = assemble(model.components)
         model.equations = self.equations.for_design(model.assembly)
         return model

@@ -258,11 +258,17 @@ def _finish(system: BatchedSystem, i: int, s: _State, best_key: np.ndarray, name
         return
     when, value = largest(result, run.system, run.output, magnitude=s.magnitude)
     key = abs(value) if s.magnitude else value
-    if key > best_key[i]:
+    if key > _beyond(best_key[i]):
         s.best[i], s.best_t[i], best_key[i] = value, t + when, key
     s.count[i] += len(result.segments)
     s.tail[i] = True
     s.done[i] = True
+
+
+def _beyond(best):
+    """What a later peak must pass to replace ``best``: of peaks equal to 1e-12
+    the first is kept, as ``phase_table.largest`` keeps it (-inf stays)."""
+    return best + 1e-12 * np.abs(np.where(np.isfinite(best), best, 0.0))
 
 
 def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,
@@ -381,7 +387,7 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
     first = order[np.r_[True, rows[order][1:] != rows[order][:-1]]]
     r, v, key = rows[first], vals[first], keys[first]
     gi = idx[r]
-    up = key > best_key[gi]
+    up = key > _beyond(best_key[gi])
     s.best[gi[up]], s.best_t[gi[up]] = v[up], s.t[gi[up]] + when[first][up]
     best_key[gi[up]] = key[up]
 

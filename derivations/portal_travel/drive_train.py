@@ -34,7 +34,7 @@ from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.mechanics.phase_table import Affine
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult
 
-__all__ = ["fig11_model", "speed_index", "step_accelerations", "total_load"]
+__all__ = ["fig11_design", "fig11_model", "fig11_parts", "speed_index", "step_accelerations", "total_load"]
 
 
 def fig11_model(values: Mapping[str, float], holds: Sequence[float]) -> Model:
@@ -45,6 +45,12 @@ def fig11_model(values: Mapping[str, float], holds: Sequence[float]) -> Model:
     ``W_f``, ``W_w`` (friction and wind), optionally ``s_right`` (the right
     link's backlash, where it differs); one characteristic per hold time of
     ``holds`` [s], then the natural one (Table 1's start)."""
+    return Model(fig11_parts(values, holds), name="portal_startup",
+                 title="Fig. 12: start-up with backlash")
+
+
+def fig11_parts(values: Mapping[str, float], holds: Sequence[float]) -> list:
+    """The parts of :func:`fig11_model` (its values and holds as there)."""
     v = values
     slopes = [v["beta_1"] * v["q"] ** k for k in range(len(holds) + 1)]
     parts = [Mass("left", v["m_d"]), Mass("right", v["m_d"]), Mass("crane", v["m_k"])]
@@ -57,7 +63,26 @@ def fig11_model(values: Mapping[str, float], holds: Sequence[float]) -> Model:
         parts.append(Brake("friction", "crane", v["W_f"]))          # Table 1: W_f
     if v["W_w"] != 0:
         parts.append(Resistance("wind", "crane", -v["W_w"]))       # Table 1: W_w, against
-    return Model(parts, name="portal_startup", title="Fig. 12: start-up with backlash")
+    return parts
+
+
+#: One derived model per structure (which gaps, friction, wind; the number of
+#: holds), the template each design of a sweep takes its derivation from.
+_TEMPLATES: dict[tuple, Model] = {}
+
+
+def fig11_design(values: Mapping[str, float], holds: Sequence[float]) -> Model:
+    """:func:`fig11_model` for a design of a sweep: the parts with this
+    design's values, Lagrange's equations derived once per structure and
+    shared (``Model.with_parts``), not derived again for every design."""
+    parts = fig11_parts(values, holds)
+    key = tuple((type(p).__name__, p.name, isinstance(p, ElasticLink) and p.backlash.si > 0)
+                for p in parts) + (len(holds),)
+    if key not in _TEMPLATES:
+        _TEMPLATES[key] = Model(parts, name="portal_startup",
+                                title="Fig. 12: start-up with backlash")
+        return _TEMPLATES[key]
+    return _TEMPLATES[key].with_parts(parts)
 
 
 def speed_index(system: ComponentSystem, body: str) -> int:

@@ -14,6 +14,8 @@ scene's report runs each value of its options): give it with ``--at`` or
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from crane_sym.derivation import SweepOutput
@@ -26,15 +28,17 @@ END = 4.0
 
 def _designs(values):
     """(shape, one HybridRun per design) of the start-up."""
-    from .hybrid import STARTUP, rim_values
+    from .drive_train import fig11_design, total_load
+    from .hybrid import rim_values
     from .startup import HOLDS
     names = list(values)
     arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
     runs = []
     for index in np.ndindex(arrays[0].shape):
         p = {n: float(a[index]) for n, a in zip(names, arrays)}
-        runs.append(STARTUP.run(rim_values(p, p["phi_b"]), {"holds": HOLDS, "end": END},
-                                "load"))
+        # hybrid.STARTUP's run and output ("load"), its derivation shared by the designs
+        run = fig11_design(rim_values(p, p["phi_b"]), HOLDS).hybrid_run(END, rest=True)
+        runs.append(replace(run, output=total_load(run.system)))
     return arrays[0].shape, runs
 
 
