@@ -153,6 +153,17 @@ def test_paper_000s_eq_14_and_6_confirmed_through_a_file(tmp_path):
     assert (eq6.verdict, eq6.method) == ("confirmed", "symbolic")
 
 
+def test_the_shipped_paper_000_file_confirms_14_and_6_and_peaks_at_twice_the_static_load():
+    """examples/drive_trains/travel_braking_000.toml: (14) and (6) as printed,
+    confirmed symbolically; its run's peak is (14)'s 2 (P_t m2 - W m1)/(m1 + m2)."""
+    read = read_component_file(EXAMPLES / "travel_braking_000.toml")
+    eq14, eq6 = audit_file(read)
+    assert [(r.label, r.verdict, r.method) for r in (eq14, eq6)] == [
+        ("(14)", "confirmed", "symbolic"), ("(6)", "confirmed", "symbolic")]
+    (peak,) = read.model.run(read.duration, rest=True).peaks
+    assert peak.value == pytest.approx(2 * (24e3 * 110e3 - 11e3 * 4.4e3) / 114.4e3, rel=1e-9)
+
+
 def test_a_number_of_the_run_is_checked_at_the_files_values(tmp_path):
     """The dynamic factor as peak over static load: confirmed (numerically, at the
     file's values); the same with a factor 2 too many: a discrepancy."""
