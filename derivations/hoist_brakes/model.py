@@ -104,7 +104,7 @@ LATEX_NAMES = {omega1: r"\omega_1", m_h: "m_h", m_p: "m_p", m_r: "m_r", i_g: "i_
 HANDOUT_WORDS = {"the two-mass hoist with backlash of elastic.py":
                  "the two-mass hoist with backlash of the model text",
                  " (elastic.FIG9_CHOSEN)": "", "BF_SB = 17/10": "BF_SB = 1.7",
-                 "BF_SB = 33/10": "BF_SB = 3.3", "BF_SB": "$BF_{SB}$", "BF_BB": "$BF_{BB}$"}
+                 "BF_SB = 33/10": "BF_SB = 3.3"}
 
 #: Table 1 of 001_544065b666a6bc39.txt ("Технические характеристики подъемника"),
 #: exact, in SI. "per" says what a value is counted for as printed.
