@@ -215,10 +215,10 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         renew = act[t[act] >= w_end[act]]            # the window passed: bounds of the next
         if renew.size:
             w_end[renew] = np.minimum(t[renew] + window[renew], t_end[renew])
-            L[renew], M2[renew] = sig.bounds(renew, t[renew], w_end[renew])
+            (L[renew], M2[renew]), (Lr, Mr) = sig.bounds_on(renew, t[renew], w_end[renew],
+                                                            t_end[renew])
             # where the bounds over the whole rest are nearly those of the window
             # (an undamped oscillation, a rigid motion), the rest is the window
-            Lr, Mr = sig.bounds(renew, t[renew], t_end[renew])
             whole = (Lr <= 2 * L[renew]) & (Mr <= 4 * M2[renew])
             pick = renew[whole]
             w_end[pick], L[pick], M2[pick] = t_end[pick], Lr[whole], Mr[whole]

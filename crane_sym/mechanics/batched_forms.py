@@ -4,10 +4,11 @@ The batched sibling of :mod:`crane_sym.mechanics.closed_forms`' numeric route:
 k designs in one mode have matrices M = [[A, b], [0, 0]] of one shape; one
 call of ``np.linalg.eig`` on the stack of the distinct A (a swept value that
 moves b only, a backlash, shares A) and one on their transposes give every
-design's eigenvalues and right and left eigenvectors, b brought in
-algebraically (:func:`_augmented_eig`), the left matched to the right by
-nearest eigenvalue. Each simple nonzero
-eigenvalue λ gives the spectral projector C_λ = v wᵀ / (wᵀ v); the
+design's eigenvalues and right and left eigenvectors (:func:`_spectra`),
+the left matched to the right by their order. Each simple nonzero
+eigenvalue λ of M (A's, with the right vector (v, 0) and the left (w, wᵀb/λ))
+gives the spectral projector C_λ = v (wᵀ, wᵀb/λ) / (wᵀ v): its A-block once
+per distinct A, its last column per design, b brought in algebraically. The
 generalized kernel (rigid modes, the constant input) gets the exact
 nilpotent series Σ_j (N t)^j / j! · Q with Q = I − Σ C_λ and N = M Q, as the
 per-design route does. A pair λ = σ ± iω folds into t^0 e^{σt} cos ωt and
@@ -22,7 +23,8 @@ condition number ‖(L̂ᵀ R̂)⁻¹‖ above ``cond_limit`` (for a simple eige
 real axis than 10⁻⁵ of the scale, or spectra of M and Mᵀ that do not match.
 
 :class:`FormCache` keeps each design's forms per mode: a mode's (A, b)
-depend on the design only, so a design returning to a mode reuses them.
+depend on the design only, so a design returning to a mode reuses them, and
+a design meeting an (A, b) another met before copies its form.
 """
 from __future__ import annotations
 
@@ -34,6 +36,8 @@ __all__ = ["BatchForm", "FormCache", "batch_forms"]
 
 #: Largest eigenvalue condition number the batched route accepts.
 COND_LIMIT = 1e8
+#: Most distinct (A, b) of new designs a mode's cache looks up one by one.
+KNOWN_LOOKUP = 512
 
 
 @dataclass(frozen=True)
@@ -105,16 +109,55 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     :class:`BatchForm`), designs of one spectral structure (the same clusters
     of nonzero real eigenvalues and of complex pairs); ``refused`` holds the
     positions the batched route does not take (see the module docstring).
+    The spectrum and the projectors' A-blocks come from the distinct A
+    (:func:`_spectra`); b enters each design's last column algebraically.
     """
     k, n = b.shape
-    size = n + 1
-    M = np.zeros((k, size, size))
-    M[:, :n, :n] = A
-    M[:, :n, n] = b
-    lam, vr, mu, vl = _augmented_eig(A, b)
+    first, inverse, lam, vr, mu, vl, cat, bad = _spectra(A)
+    live = cat < 3
+    # clusters: equal nonzero eigenvalues (two equal drives), each one projector
+    scale = np.maximum(np.abs(lam).max(axis=1, initial=0.0), 1.0)[:, None]
+    step = np.abs(np.diff(lam, axis=1)) >= 1e-6 * scale
+    starts = np.concatenate([np.ones((first.size, 1), bool),
+                             step | (np.diff(cat, axis=1) != 0)], axis=1)
+    pattern = np.where(live, cat * 2 + starts, 7)
+    parts, refused = [], list(np.flatnonzero(bad[inverse]))
+    ok = np.flatnonzero(~bad)
+    if ok.size:
+        kinds, which = _unique_rows(pattern[ok])
+        group = np.full(first.size, -1)
+        group[ok] = which
+        of_design = group[inverse]
+        for g, kind in enumerate(kinds):
+            where = np.flatnonzero(of_design == g)
+            d = ok[which == g]                        # its distinct A
+            slot = np.full(first.size, -1)
+            slot[d] = np.arange(d.size)
+            form, fine = _form(A[where], b[where], slot[inverse[where]], lam[d], vr[d],
+                               mu[d], vl[d], kind, cond_limit)
+            refused.extend(where[~fine])
+            if form is not None:
+                parts.append((where[fine], form))
+    return parts, np.array(sorted(refused), dtype=np.intp)
+
+
+def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
+    """Eigenvalues and unit right and left eigenvectors of each distinct A
+    (bytes compared; one ``np.linalg.eig`` of the stack of them and one of
+    their transposes, each A decomposed alone, so a design's bits do not
+    depend on its neighbours), both spectra in one order (:func:`_ordered`):
+    ``first`` (the first design of each distinct A), ``inverse`` (per design,
+    its A), λ, V, μ, W, the categories, and ``bad``: spectra of A and Aᵀ that
+    do not match, a complex pair closer to the real axis than 10⁻⁵ of the
+    scale, or a value not finite."""
+    k = A.shape[0]
+    rows = np.ascontiguousarray(A.reshape(k, -1))
+    keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
+    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    lam, vr = np.linalg.eig(A[first])
+    mu, vl = np.linalg.eig(np.swapaxes(A[first], 1, 2))
     scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
     tol = 1e-6 * scale
-    # both spectra in one order: real nonzero, upper half plane, lower, kernel
     lam, vr, cat = _ordered(lam, vr, tol)
     mu, vl, cat_mu = _ordered(mu, vl, tol)
     live = cat < 3
@@ -122,65 +165,17 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     im = np.abs(lam.imag)
     bad |= np.any(live & (im > 0) & (im < 1e-5 * scale), axis=1)
     bad |= ~np.all(np.isfinite(lam), axis=1) | ~np.all(np.isfinite(mu), axis=1)
-    # clusters: equal nonzero eigenvalues (two equal drives), each one projector
-    step = np.abs(np.diff(lam, axis=1)) >= tol
-    starts = np.concatenate([np.ones((k, 1), bool), step | (np.diff(cat, axis=1) != 0)], axis=1)
-    pattern = np.where(live, cat * 2 + starts, 7)
-    parts, refused = [], list(np.flatnonzero(bad))
-    ok = np.flatnonzero(~bad)
-    if ok.size:
-        kinds, which = _unique_rows(pattern[ok])
-        for g, kind in enumerate(kinds):
-            where = ok[which == g]
-            form, fine = _form(M[where], lam[where], vr[where], vl[where], kind, cond_limit)
-            refused.extend(where[~fine])
-            if form is not None:
-                parts.append((where[fine], form))
-    return parts, np.array(sorted(refused), dtype=np.intp)
+    return first, inverse.ravel(), lam, vr, mu, vl, cat, bad
 
 
-def _augmented_eig(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Eigenvalues and unit right and left eigenvectors of each M = [[A, b], [0, 0]]
-    from one ``np.linalg.eig`` of each distinct A (and Aᵀ): M's spectrum is A's
-    and a 0; to λ ≠ 0 belong the right vector (v, 0) and the left (w, wᵀb/λ),
-    b enters algebraically. The kernel's entries (A's near-zero eigenvalues
-    and M's 0) keep placeholder vectors: the kernel's projector is
-    I − Σ C_λ, its vectors are never read. Each distinct A is decomposed
-    alone (a stack of one design gives the same bits)."""
-    k, n = b.shape
-    rows = np.ascontiguousarray(A.reshape(k, -1))
-    keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
-    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
-    inverse = inverse.ravel()
-    lam_a, v_a = np.linalg.eig(A[first])
-    mu_a, w_a = np.linalg.eig(np.swapaxes(A[first], 1, 2))
-    size = n + 1
-    lam = np.zeros((k, size), dtype=complex)
-    mu = np.zeros((k, size), dtype=complex)
-    lam[:, :n], mu[:, :n] = lam_a[inverse], mu_a[inverse]
-    vr = np.zeros((k, size, size), dtype=complex)
-    vr[:, :n, :n] = v_a[inverse]
-    vr[:, n, n] = 1.0
-    vl = np.zeros((k, size, size), dtype=complex)
-    w = w_a[inverse]
-    with np.errstate(all="ignore"):
-        s = np.einsum("ki,kij->kj", b.astype(complex), w) / mu[:, :n]
-    s = np.where(np.isfinite(s), s, 0.0)             # a kernel's λ ≈ 0: never read
-    norm = np.sqrt(1.0 + np.abs(s) ** 2)                # |w| = 1 from eig
-    vl[:, :n, :n] = w / norm[:, None, :]
-    vl[:, n, :n] = s / norm
-    vl[:, n, n] = 1.0
-    return lam, vr, mu, vl
-
-
-def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Positions of the first of each distinct (A, b) (bytes compared) and,
-    per design, which of them it equals."""
+def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Each design's (A, b) as one bytes key, the positions of the first of
+    each distinct key and, per design, which of them it equals."""
     k = b.shape[0]
     rows = np.ascontiguousarray(np.concatenate([A.reshape(k, -1), b], axis=1))
     keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
     _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
-    return first, inverse.ravel()
+    return keys, first, inverse.ravel()
 
 
 def _unique_rows(pattern: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -206,13 +201,21 @@ def _ordered(values, vectors, tol):
             np.take_along_axis(cat, order, axis=1))
 
 
-def _form(M, lam, vr, vl, kind, cond_limit: float) -> tuple[BatchForm | None, np.ndarray]:
+def _form(A, b, slot, lam, vr, mu, vl, kind, cond_limit: float) -> tuple[BatchForm | None,
+                                                                            np.ndarray]:
     """The :class:`BatchForm` of designs of one cluster pattern ``kind`` (per
-    position: 2·category + starts-a-cluster, 7 for the kernel), and which
-    designs it holds (a cluster whose left and right vectors are nearly
-    dependent, a defective eigenvalue, is refused)."""
-    k, size, _ = M.shape
-    n = size - 1
+    eigenvalue: 2·category + starts-a-cluster, 7 for the kernel), and which
+    designs it holds. ``lam``, ``vr``, ``mu``, ``vl`` belong to the designs'
+    distinct A, design i to ``slot[i]``.
+
+    A cluster's projector of M = [[A, b], [0, 0]] is C = V G⁻¹ [Wᵀ | s]
+    (G = WᵀV, s_j = w_jᵀb/μ_j: the left vector of M is (w, s)): its A-block
+    is computed once per distinct A, its last column per design. Its
+    condition number is ‖G⁻¹ diag(√(1 + |s|²))‖ (the unit left vectors of
+    M); a cluster above ``cond_limit`` (nearly dependent vectors, a
+    defective eigenvalue) refuses the design."""
+    k, n = b.shape
+    size = n + 1
     live = int(np.sum(kind < 7))
     heads = [j for j in range(live) if kind[j] % 2 == 1]
     clusters = [(j, (heads[h + 1] if h + 1 < len(heads) else live) - j, int(kind[j] // 2))
@@ -224,13 +227,22 @@ def _form(M, lam, vr, vl, kind, cond_limit: float) -> tuple[BatchForm | None, np
         if cat == 2:
             continue                                  # the conjugates of the upper half
         R, L = vr[:, :, j:j + m], vl[:, :, j:j + m]
-        gram = np.einsum("kim,kin->kmn", L, R)
+        gram = np.einsum("dim,din->dmn", L, R)
         with np.errstate(all="ignore"):
             inv = np.linalg.inv(gram) if np.all(np.isfinite(gram)) else gram * np.nan
-            cond = np.linalg.norm(inv, ord=2, axis=(1, 2)) if m > 1 else np.abs(inv[:, 0, 0])
+        block = np.einsum("dim,dmn,djn->dij", R, np.nan_to_num(inv), L)
+        with np.errstate(all="ignore"):
+            s_ = np.einsum("ki,kim->km", b.astype(complex), L[slot]) / mu[slot, j:j + m]
+            norm = np.sqrt(1.0 + np.abs(s_) ** 2)
+            scaled = inv[slot] * norm[:, None, :]
+            cond = (np.linalg.norm(scaled, ord=2, axis=(1, 2)) if m > 1
+                    else np.abs(scaled[:, 0, 0]))
         fine &= cond <= cond_limit
-        C = np.einsum("kim,kmn,kjn->kij", R, np.nan_to_num(inv), L)
-        value = lam[:, j:j + m].mean(axis=1)
+        C = np.zeros((k, size, size), dtype=complex)
+        C[:, :n, :n] = block[slot]
+        C[:, :n, n] = np.einsum("kim,kmn,kn->ki", R[slot], np.nan_to_num(inv)[slot],
+                                np.nan_to_num(s_))
+        value = lam[slot, j:j + m].mean(axis=1)
         if cat == 0:
             real.append((value.real, C.real))
             projector += C.real
@@ -239,9 +251,6 @@ def _form(M, lam, vr, vl, kind, cond_limit: float) -> tuple[BatchForm | None, np
             projector += 2 * C.real
     if not fine.any():
         return None, fine
-    if not fine.all():                                # the rest without the refused
-        form, _ = _form(M[fine], lam[fine], vr[fine], vl[fine], kind, cond_limit)
-        return form, fine
     powers, sine, sigmas, omegas, coefs = [], [], [], [], []
     for sigma, C in real:                                 # real: e^{σt}
         powers.append(0), sine.append(False)
@@ -253,24 +262,31 @@ def _form(M, lam, vr, vl, kind, cond_limit: float) -> tuple[BatchForm | None, np
             powers.append(0), sine.append(is_sine)
             sigmas.append(sigma), omegas.append(np.abs(value.imag))
             coefs.append(part)
+    M = np.zeros((k, size, size))
+    M[:, :n, :n] = A
+    M[:, :n, n] = b
     Q = np.eye(size) - projector
     N = M @ Q
     term = Q
+    kept = np.flatnonzero(fine)
     for j in range(size - live):                         # the exact nilpotent series
         if j:
             term = N @ term / j
-            if not term.any():                           # N^j = 0 (a free side): no more
+            if not term[kept].any():                     # N^j = 0 (a free side): no more
                 break
         powers.append(j), sine.append(False)
         sigmas.append(np.zeros(k)), omegas.append(np.zeros(k)), coefs.append(term)
-    return BatchForm(n, np.array(powers, dtype=float), np.array(sine, dtype=bool),
+    form = BatchForm(n, np.array(powers, dtype=float), np.array(sine, dtype=bool),
                      np.stack(sigmas, axis=1), np.stack(omegas, axis=1),
-                     np.stack(coefs, axis=1), len(real), len(pairs)), fine
+                     np.stack(coefs, axis=1), len(real), len(pairs))
+    return (form if fine.all() else form.take(kept)), fine
 
 
 class FormCache:
     """The closed forms of one mode for designs 0 … size − 1, computed on a
-    design's first phase in the mode and kept."""
+    design's first phase in the mode and kept; a design whose (A, b) equals,
+    byte for byte, one met before (a swept value the mode does not read)
+    copies that one's form instead of decomposing it again."""
 
     def __init__(self, size: int, cond_limit: float = COND_LIMIT) -> None:
         self.cond_limit = cond_limit
@@ -278,37 +294,15 @@ class FormCache:
         self.parts: list[tuple[int, int, np.ndarray, np.ndarray, np.ndarray, np.ndarray,
                                np.ndarray]] = []
         self.size = size
+        #: (A, b) bytes met so far: the design that holds its form (−1: refused)
+        self.known: dict[bytes, int] = {}
 
     def forms(self, idx: np.ndarray, A: np.ndarray,
               b: np.ndarray) -> list[tuple[np.ndarray, BatchForm | None]]:
         """(positions in ``idx``, their form, or None where refused)."""
         new = np.flatnonzero(self.signature[idx] == -2)
         if new.size:
-            # designs of equal (A, b) (a swept value the mode does not read)
-            # share one decomposition: each design's is computed alone, so the
-            # shared one is bit for bit what it would have got
-            first, inverse = _distinct(A[new], b[new])
-            parts, refused = batch_forms(A[new[first]], b[new[first]], self.cond_limit)
-            self.signature[idx[new[np.isin(inverse, refused)]]] = -1
-            for where_first, f in parts:
-                slot = np.full(first.size, -1)
-                slot[where_first] = np.arange(where_first.size)
-                where = np.flatnonzero(slot[inverse] >= 0)
-                f = f.take(slot[inverse[where]])
-                key = next((i for i, p in enumerate(self.parts)
-                            if p[0] == f.real and p[1] == f.pairs
-                            and p[2].shape == f.powers.shape), None)
-                if key is None:
-                    T = f.powers.size
-                    n = f.n           # the rows of the state only (the last is 0 … 0 1)
-                    self.parts.append((f.real, f.pairs, f.powers, f.sine,
-                                       np.zeros((self.size, T)), np.zeros((self.size, T)),
-                                       np.zeros((self.size, T, n, n + 1))))
-                    key = len(self.parts) - 1
-                rows = idx[new[where]]
-                _, _, _, _, sig, om, coef = self.parts[key]
-                sig[rows], om[rows], coef[rows] = f.sigmas, f.omegas, f.coefficients[:, :, :f.n]
-                self.signature[rows] = key
+            self._add(idx[new], A[new], b[new])
         out: list = []
         which = self.signature[idx]
         for key in np.unique(which):
@@ -322,3 +316,47 @@ class FormCache:
             out.append((where, BatchForm(n, powers, sine, sig[rows], om[rows], coef[rows],
                                          q, p)))
         return out
+
+    def _add(self, rows: np.ndarray, A: np.ndarray, b: np.ndarray) -> None:
+        """The forms of designs ``rows`` (first time in the mode): copied
+        where their (A, b) was met before, decomposed together otherwise;
+        each design's is computed alone, so a shared one is bit for bit what
+        it would have got."""
+        keys, first, inverse = _distinct(A, b)
+        # a few distinct (A, b) (a mode the swept values barely move) are looked
+        # up; many (a swept value in b) are decomposed: a lookup a key costs more
+        look = first.size <= KNOWN_LOOKUP
+        holder = (np.array([self.known.get(keys[f].tobytes(), -2) for f in first]) if look
+                  else np.full(first.size, -2))
+        fresh = np.flatnonzero(holder == -2)
+        if fresh.size:
+            parts, refused = batch_forms(A[first[fresh]], b[first[fresh]], self.cond_limit)
+            holder[fresh[refused]] = -1
+            for where, f in parts:
+                key = next((i for i, p in enumerate(self.parts)
+                            if p[0] == f.real and p[1] == f.pairs
+                            and p[2].shape == f.powers.shape), None)
+                if key is None:
+                    T = f.powers.size
+                    n = f.n           # the rows of the state only (the last is 0 … 0 1)
+                    self.parts.append((f.real, f.pairs, f.powers, f.sine,
+                                       np.zeros((self.size, T)), np.zeros((self.size, T)),
+                                       np.zeros((self.size, T, n, n + 1))))
+                    key = len(self.parts) - 1
+                held = rows[first[fresh[where]]]
+                _, _, _, _, sig, om, coef = self.parts[key]
+                sig[held], om[held], coef[held] = f.sigmas, f.omegas, f.coefficients[:, :, :f.n]
+                self.signature[held] = key
+                holder[fresh[where]] = held
+            for j in fresh if look else ():
+                self.known[keys[first[j]].tobytes()] = int(holder[j])
+        source = holder[inverse]
+        refused = source < 0
+        self.signature[rows[refused]] = -1
+        copy = np.flatnonzero(~refused)
+        src, dst = source[copy], rows[copy]
+        for key in np.unique(self.signature[src]):
+            sel = self.signature[src] == key
+            _, _, _, _, sig, om, coef = self.parts[key]
+            sig[dst[sel]], om[dst[sel]], coef[dst[sel]] = sig[src[sel]], om[src[sel]], coef[src[sel]]
+            self.signature[dst[sel]] = key

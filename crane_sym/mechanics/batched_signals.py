@@ -179,39 +179,58 @@ class Signals:
         as :meth:`crane_sym.mechanics.closed_forms.ClosedForm.derivative_bound`,
         a pair a cos + b sin = R cos(ωt − φ) with its amplitude R = √(a² + b²);
         in chunks as :meth:`both`."""
+        return self.bounds_on(rows, t0, t1)[0]
+
+    def bounds_on(self, rows: np.ndarray, t0: np.ndarray,
+                  *ends: np.ndarray) -> list[tuple[np.ndarray, np.ndarray]]:
+        """:meth:`bounds` on [t0, t1] for each t1 of ``ends``, in one pass over
+        the terms (an undamped pair's bound does not depend on the interval)."""
         if rows.size <= CHUNK:
-            return self._bounds(rows, t0, t1)
-        L, M2 = np.empty(rows.size), np.empty(rows.size)
+            return self._bounds(rows, t0, ends)
+        out = [(np.empty(rows.size), np.empty(rows.size)) for _ in ends]
         for i in range(0, rows.size, CHUNK):
             part = slice(i, i + CHUNK)
-            L[part], M2[part] = self._bounds(rows[part], t0[part], t1[part])
-        return L, M2
+            for (L, M2), (Lc, Mc) in zip(out, self._bounds(rows[part], t0[part],
+                                                           [t1[part] for t1 in ends])):
+                L[part], M2[part] = Lc, Mc
+        return out
 
     def _bounds(self, rows: np.ndarray, t0: np.ndarray,
-                t1: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """:meth:`bounds` of one chunk."""
+                ends) -> list[tuple[np.ndarray, np.ndarray]]:
+        """:meth:`bounds_on` of one chunk."""
         poly = np.abs(self.poly[rows])
         D = poly.shape[1]
-        L, M2 = np.zeros_like(t0), np.zeros_like(t0)
-        for j in range(1, D):
-            L += poly[:, j] * j * t1 ** (j - 1)
-            if j > 1:
-                M2 += poly[:, j] * j * (j - 1) * t1 ** (j - 2)
-        a0, a1 = t0[:, None], t1[:, None]
+        out = []
+        for t1 in ends:
+            L, M2 = np.zeros_like(t0), np.zeros_like(t0)
+            for j in range(1, D):
+                L += poly[:, j] * j * t1 ** (j - 1)
+                if j > 1:
+                    M2 += poly[:, j] * j * (j - 1) * t1 ** (j - 2)
+            out.append((L, M2))
+        a0 = t0[:, None]
         if self.cos_amps.shape[1]:
             s = self.pair_sigmas[rows]
             rate = np.abs(s) + self.pair_omegas[rows]
             amp = np.hypot(self.cos_amps[rows], self.sin_amps[rows])
             if s.any():
-                amp = amp * np.exp(np.maximum(s * a0, s * a1))
-            L += _rowsum(amp * rate)
-            M2 += _rowsum(amp * rate * rate)
+                for (L, M2), t1 in zip(out, ends):
+                    grown = amp * np.exp(np.maximum(s * a0, s * t1[:, None]))
+                    L += _rowsum(grown * rate)
+                    M2 += _rowsum(grown * rate * rate)
+            else:
+                Lp, Mp = _rowsum(amp * rate), _rowsum(amp * rate * rate)
+                for L, M2 in out:
+                    L += Lp
+                    M2 += Mp
         if self.real_amps.shape[1]:
             s = self.real_sigmas[rows]
-            amp = np.abs(self.real_amps[rows]) * np.exp(np.maximum(s * a0, s * a1))
-            L += _rowsum(amp * np.abs(s))
-            M2 += _rowsum(amp * s * s)
-        return L, M2
+            a = np.abs(self.real_amps[rows])
+            for (L, M2), t1 in zip(out, ends):
+                amp = a * np.exp(np.maximum(s * a0, s * t1[:, None]))
+                L += _rowsum(amp * np.abs(s))
+                M2 += _rowsum(amp * s * s)
+        return out
 
     def spread(self, horizon: np.ndarray) -> np.ndarray:
         """A bound of |g(t) − g_c| on [0, horizon], g_c the constant term:

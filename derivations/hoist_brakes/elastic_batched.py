@@ -44,6 +44,7 @@ _CODE = {m: i for i, m in enumerate(MODES)}
 _BRAKES = (OFF, FORWARD, BACKWARD, STUCK)
 _PUSH = {OFF: 0.0, FORWARD: -1.0, BACKWARD: 1.0, STUCK: 0.0}
 _U = np.array([-1.0, 0.0, 1.0, 0.0])
+_DU = np.array([0.0, -1.0, 0.0, 1.0])
 _FIELDS = ("J1", "J_d", "c", "s", "M_L", "M_st", "M_SB", "M_BB", "M_M", "b")
 
 
@@ -94,6 +95,7 @@ class HoistFamily:
                 raise ValueError(f"{name} must be >= 0, got {getattr(self, name)[bad][0]!r}")
         if not np.array_equal(self.M_M, self.M_L):
             raise ValueError("steady lowering needs M_M = M_L")
+        object.__setattr__(self, "_damped", bool(np.any(self.b)))
 
     # --- the family, mode by mode ---------------------------------------------------
     def _torque(self, contact, index) -> tuple[np.ndarray, np.ndarray]:
@@ -101,7 +103,9 @@ class HoistFamily:
         if contact == GAP:
             return np.zeros((k, 4)), np.zeros(k)
         off = 0.0 if contact == HOLD else self.s[index]
-        w = self.c[index, None] * _U + self.b[index, None] * np.array([0.0, -1.0, 0.0, 1.0])
+        w = self.c[index, None] * _U
+        if self._damped:
+            w += self.b[index, None] * _DU
         return w, self.c[index] * off
 
     def matrices(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
