@@ -44,13 +44,12 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     out = np.full(m, np.nan)
     rows = np.arange(m)
     span = t_end - start
-    reach = start + np.minimum(h_min, span)
-    near = sig.bounds(rows, start, reach)[0] * h_min
-    band = np.maximum(near, 1e-12 * sig.size(rows))
-    # a signal whose constant outweighs everything else it holds over the search
-    # (and by more than the surface band) keeps its sign: no search
     if np.all(start == 0):
-        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - sig.spread(t_end) <= 2 * band)
+        slope, size, spread = sig.scales(np.minimum(h_min, span), t_end)
+        band = np.maximum(slope * h_min, 1e-12 * size)
+        # a signal whose constant outweighs everything else it holds over the
+        # search (and by more than the surface band) keeps its sign: no search
+        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - spread <= 2 * band)
         if live.size < m:
             if not live.size:
                 return out
@@ -60,6 +59,9 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
                             found)
             out[live] = sub
             return out
+    else:
+        near = sig.bounds(rows, start, start + np.minimum(h_min, span))[0] * h_min
+        band = np.maximum(near, 1e-12 * sig.size(rows))
     return _searched(sig, start, t_end, direction, band, h_min, xtol, owner, out)
 
 

@@ -84,20 +84,27 @@ class BatchForm:
 
     def state(self, t: np.ndarray, vectors: np.ndarray) -> np.ndarray:
         """x(t) of each design (t shape (k,)), from :meth:`vectors`."""
-        beta = basis(t, self.powers, self.sigmas, self.omegas, self.sine)
-        return np.einsum("kt,kti->ki", beta, vectors)[:, : self.n]
+        return np.einsum("kt,kti->ki", self.basis(t), vectors)[:, : self.n]
 
-
-def basis(t: np.ndarray, powers: np.ndarray, sigmas: np.ndarray, omegas: np.ndarray,
-          sine: np.ndarray) -> np.ndarray:
-    """β_j(t) for each row, shape (m, T); ``t`` shape (m,)."""
-    tt = t[:, None]
-    wt = omegas * tt
-    out = np.where(sine, np.sin(wt), np.cos(wt))
-    out *= np.exp(sigmas * tt)
-    if powers.any():
-        out *= tt ** powers
-    return out
+    def basis(self, t: np.ndarray) -> np.ndarray:
+        """β_j(t) of each design, shape (k, T), block by block: e^{σt}; one
+        cos and one sin of a pair's ωt (times e^{σt} where σ ≠ 0); t^j."""
+        q, p = self.real, self.pairs
+        tt = t[:, None]
+        out = np.empty((t.size, self.powers.size))
+        if q:
+            out[:, :q] = np.exp(self.sigmas[:, :q] * tt)
+        if p:
+            wt = self.omegas[:, q:q + 2 * p:2] * tt
+            c, s = np.cos(wt), np.sin(wt)
+            sigma = self.sigmas[:, q:q + 2 * p:2]
+            if sigma.any():
+                grow = np.exp(sigma * tt)
+                c *= grow
+                s *= grow
+            out[:, q:q + 2 * p:2], out[:, q + 1:q + 2 * p:2] = c, s
+        out[:, q + 2 * p:] = tt ** self.powers[q + 2 * p:]
+        return out
 
 
 def batch_forms(A: np.ndarray, b: np.ndarray,

@@ -232,6 +232,38 @@ class Signals:
                 M2 += _rowsum(amp * s * s)
         return out
 
+    def scales(self, near: np.ndarray,
+               horizon: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """From t = 0, in one pass over the terms: :meth:`bounds` of |g'| on
+        [0, near], :meth:`size` and :meth:`spread` on [0, horizon] (what
+        a search from a phase's start first asks of every signal)."""
+        poly = np.abs(self.poly)
+        D = poly.shape[1]
+        L, out = np.zeros_like(near), np.zeros_like(horizon)
+        for j in range(1, D):
+            L += poly[:, j] * j * near ** (j - 1)
+        for j in range(D - 1, 0, -1):               # Horner on |c_j|
+            out = (out + poly[:, j]) * horizon
+        size = (_abs_rowsum(self.real_amps) + _abs_rowsum(self.cos_amps)
+                + _abs_rowsum(self.sin_amps) + _abs_rowsum(poly))
+        a0, a1, tt = np.zeros((near.size, 1)), near[:, None], horizon[:, None]
+        if self.cos_amps.shape[1]:
+            s = self.pair_sigmas
+            rate = np.abs(s) + self.pair_omegas
+            amp = np.hypot(self.cos_amps, self.sin_amps)
+            if s.any():
+                L += _rowsum(amp * np.exp(np.maximum(s * a0, s * a1)) * rate)
+                out += _rowsum(amp * np.maximum(1.0, np.exp(s * tt)))
+            else:
+                L += _rowsum(amp * rate)
+                out += _rowsum(amp)
+        if self.real_amps.shape[1]:
+            s = self.real_sigmas
+            a = np.abs(self.real_amps)
+            L += _rowsum(a * np.exp(np.maximum(s * a0, s * a1)) * np.abs(s))
+            out += (a * np.maximum(1.0, np.exp(s * tt))).sum(axis=1)
+        return L, size, out
+
     def spread(self, horizon: np.ndarray) -> np.ndarray:
         """A bound of |g(t) − g_c| on [0, horizon], g_c the constant term:
         Σ_{j≥1} |c_j| H^j, and for each pair √(a² + b²)·max(1, e^{σH}), each
