@@ -158,9 +158,7 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     do not match, a complex pair closer to the real axis than 10⁻⁵ of the
     scale, or a value not finite."""
     k = A.shape[0]
-    rows = np.ascontiguousarray(A.reshape(k, -1))
-    keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
-    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
+    first, inverse = _first_of_equal(np.ascontiguousarray(A.reshape(k, -1)))
     lam, vr = np.linalg.eig(A[first])
     mu, vl = np.linalg.eig(np.swapaxes(A[first], 1, 2))
     scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
@@ -172,7 +170,7 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     im = np.abs(lam.imag)
     bad |= np.any(live & (im > 0) & (im < 1e-5 * scale), axis=1)
     bad |= ~np.all(np.isfinite(lam), axis=1) | ~np.all(np.isfinite(mu), axis=1)
-    return first, inverse.ravel(), lam, vr, mu, vl, cat, bad
+    return first, inverse, lam, vr, mu, vl, cat, bad
 
 
 def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -181,8 +179,30 @@ def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.
     k = b.shape[0]
     rows = np.ascontiguousarray(np.concatenate([A.reshape(k, -1), b], axis=1))
     keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
+    first, inverse = _first_of_equal(rows)
+    return keys, first, inverse
+
+
+#: Odd multipliers of :func:`_first_of_equal`'s hash (fixed: no run depends on a seed).
+_MIX = np.random.default_rng(28).integers(1, 2**62, size=64, dtype=np.int64) * 2 + 1
+
+
+def _first_of_equal(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The first of each group of rows equal byte for byte, and per row its
+    group: rows hashed to one integer, which is sorted (a sort of whole rows
+    as bytes costs several times more); the groups checked byte for byte,
+    and a collision falls back to the sort of rows."""
+    bits = rows.view(np.int64)
+    if bits.shape[1] <= _MIX.size:
+        mixed = (bits * _MIX[: bits.shape[1]]).sum(axis=1)
+        _, first, inverse = np.unique(mixed, return_index=True, return_inverse=True)
+        inverse = inverse.ravel()
+        if np.array_equal(bits[first][inverse], bits):
+            return first, inverse
+    keys = np.ascontiguousarray(rows).view(
+        np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
     _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
-    return keys, first, inverse.ravel()
+    return first, inverse.ravel()
 
 
 def _unique_rows(pattern: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
