@@ -131,7 +131,11 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
     small enough to give every worker several blocks (one design costs ms);
     for outputs that solve a block's designs together (``SweepOutput.batched``)
     one block per worker, at most :data:`BATCH_DESIGNS` designs (a batched
-    solver pays its per-round overhead once per block).
+    solver pays its per-round overhead once per block); on the local machine
+    (``workers`` not given) a grid of at most :data:`BATCH_DESIGNS` designs is
+    one block, which :func:`run_sweep` solves in this process: worker
+    processes take ~3 s to start, more than such a block (10⁴ designs of
+    001's emergency stop: ~1 s).
 
     Parameters
     ----------
@@ -145,12 +149,14 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
     from dask.array.core import normalize_chunks
     simulated = [o for o in plan.outputs if o.kind != "closed"]
     if simulated:
+        local = workers is None
         workers = workers or os.cpu_count() or 1
         specs = ({} if all(o.kind == "component" for o in simulated)
                  else registry.sweep_outputs(plan.derivation))
         if all(o.kind == "component" or getattr(specs.get(o.name), "batched", False)
                for o in simulated):
-            designs = min(BATCH_DESIGNS, math.ceil(plan.points / workers))
+            designs = (plan.points if local and plan.points <= BATCH_DESIGNS
+                       else min(BATCH_DESIGNS, math.ceil(plan.points / workers)))
         else:
             designs = math.ceil(plan.points / (4 * workers))
         chunk_bytes = max(8, min(chunk_bytes, 8 * designs))
@@ -287,8 +293,9 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     blocks.
 
     ``scheduler``: None for Dask's local scheduler (threads for closed forms,
-    processes for simulated responses, synchronous for a component file's), ``"synchronous"``, ``"threads"``,
-    ``"processes"``, or the address of a ``dask.distributed`` scheduler.
+    processes for simulated responses, synchronous for a component file's or
+    a grid of one block), ``"synchronous"``, ``"threads"``, ``"processes"``,
+    or the address of a ``dask.distributed`` scheduler.
     On a failure or signal, the tasks that write are stopped (local pools) or
     cancelled and waited for (a live scheduler) before the partial dataset is
     removed; a lost scheduler is a SweepError naming ``--scheduler``.
@@ -343,8 +350,9 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
         local = scheduler if client is None else None
         if client is None and local is None:
             kinds = {o.kind for o in plan.outputs}
+            one_block = all(len(c) == 1 for c in chunks)
             local = ("threads" if kinds == {"closed"} else
-                     "synchronous" if kinds == {"component"} else "processes")
+                     "synchronous" if kinds == {"component"} or one_block else "processes")
         start = time.perf_counter()
         if client is not None:
             results = compute_remote(client, tasks, quiet, scheduler, once)

@@ -103,8 +103,9 @@ def text_lines(data: dict[str, Any]) -> list[str]:
         From :func:`summary`.
     """
     what = "drive train" if str(data.get("derivation", "")).endswith(".toml") else "scene"
-    lines = [f"sweep of {what} {data['scene']}: {data['points']} designs in {data['chunks']} "
-             f"blocks, {data['seconds']:.3g} s ({data['scheduler']})"]
+    blocks = "1 block" if data["chunks"] == 1 else f"{data['chunks']} blocks"
+    lines = [f"sweep of {what} {data['scene']}: {data['points']} designs in {blocks}, "
+             f"{data['seconds']:.3g} s ({data['scheduler']})"]
     for name, entry in data["outputs"].items():
         w = entry["worst"]
         design = ", ".join(f"{k} = {_quantity(v['value'], v['unit'])}"
