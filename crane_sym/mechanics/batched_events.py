@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from crane_sym.mechanics.batched_signals import Signals
+from crane_sym.mechanics.batched_signals import ALL, Signals
 
 __all__ = ["all_crossings", "first_crossings", "refine"]
 
@@ -70,7 +70,7 @@ def _searched(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
               out: np.ndarray) -> np.ndarray:
     """:func:`first_crossings` of rows that need a search, ``band`` given."""
     rows = np.arange(start.shape[0])
-    g0, d0 = sig.both(rows, start)
+    g0, d0 = sig.both(ALL, start)
     on_surface = np.abs(g0) <= band
     # a quadratic off the surface (a free side's speed or angle): its crossing
     # from its monotone pieces, no stepping
@@ -143,8 +143,13 @@ def _quadratic_crossings(sig: Signals, rows: np.ndarray, start: np.ndarray, t_en
             r1, r2 = q / a, k / q
             linear = -k / b
         guess = np.where(a == 0, linear, np.where((r1 >= lo[open_]) & (r1 <= hi[open_]), r1, r2))
+
+        def horner(live: np.ndarray, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+            # g and g' as Signals.both gives them, from the three coefficients
+            a_, b_ = a[live], b[live]
+            return (a_ * x + b_) * x + k[live], 2 * a_ * x + b_
         out[open_] = refine(sig, rows[open_], lo[open_], hi[open_], xtol, 0.0, flo[open_],
-                            fhi[open_], guess=guess)
+                            fhi[open_], guess=guess, evaluate=horner)
     return out
 
 
@@ -199,7 +204,7 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     flo, fhi = np.full(m, np.nan), np.full(m, np.nan)
     level = np.zeros(m) if level is None else level.copy()
     t, gt, dt = start.copy(), g0 + level, d0.copy()
-    window = sig.window(np.arange(m), np.maximum(t_end - start, h_min))
+    window = sig.window(ALL, np.maximum(t_end - start, h_min))
     side = np.where(on_surface & (direction != 0), -direction, np.sign(gt))
     zero = np.flatnonzero(side == 0)                 # on the surface, either way
     if zero.size:
@@ -217,8 +222,8 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         renew = act[t[act] >= w_end[act]]            # the window passed: bounds of the next
         if renew.size:
             w_end[renew] = np.minimum(t[renew] + window[renew], t_end[renew])
-            (L[renew], M2[renew]), (Lr, Mr) = sig.bounds_on(renew, t[renew], w_end[renew],
-                                                            t_end[renew])
+            (L[renew], M2[renew]), (Lr, Mr) = sig.bounds_on(
+                renew if renew.size < m else ALL, t[renew], w_end[renew], t_end[renew])
             # where the bounds over the whole rest are nearly those of the window
             # (an undamped oscillation, a rigid motion), the rest is the window
             whole = (Lr <= 2 * L[renew]) & (Mr <= 4 * M2[renew])
@@ -242,7 +247,7 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         step = np.where(np.sign(ga) != sa, 0.0, step)
         step = np.where(np.isnan(step), 0.0, step)
         nxt = np.minimum(ta + np.maximum(step, h_min), w_end[act])
-        gn, dn = sig.both(act, nxt)
+        gn, dn = sig.both(act if act.size < m else ALL, nxt)   # act: sorted, unique
         la = level[act]
         gn = gn + la
         banded = np.flatnonzero(la != 0)
@@ -279,10 +284,13 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
 def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
            xtol: float = 1e-14, level: np.ndarray | float = 0.0,
            f_lo: np.ndarray | None = None, f_hi: np.ndarray | None = None,
-           max_rounds: int = 200, guess: np.ndarray | None = None) -> np.ndarray:
+           max_rounds: int = 200, guess: np.ndarray | None = None,
+           evaluate=None) -> np.ndarray:
     """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
     signs at the ends, or 0 at one; ``f_lo``, ``f_hi`` where the search knows
     them; a first point ``guess`` inside), to ``xtol`` plus 4 ulp of the root.
+    ``evaluate(positions, t)`` (g and g' of those of ``rows``) may stand for
+    :meth:`Signals.both` where the caller evaluates them more cheaply.
 
     Newton's method kept in the bracket: the first point is the secant of the
     ends, each evaluation gives g and g' (one pass over the terms) and
@@ -305,7 +313,7 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
         if not live.size:
             break
         xl = x[live]
-        g, d = sig.both(rows[live], xl)
+        g, d = sig.both(rows[live], xl) if evaluate is None else evaluate(live, xl)
         g = g + level[live]
         hit = g == 0.0
         left = np.sign(g) == np.sign(fa[live])              # the root is in [x, b]
