@@ -34,6 +34,7 @@ array of designs in one mode.
 """
 from __future__ import annotations
 
+import functools
 import time
 from dataclasses import dataclass, field
 from typing import Hashable, Protocol, Sequence
@@ -212,15 +213,15 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
         groups = []
         for mode in np.unique(s.mode[act]):
             idx = act[s.mode[act] == mode]
-            A, b = system.matrices(int(mode), idx)
             if int(mode) not in forms:
                 forms[int(mode)] = FormCache(N, cond_limit)
             cache = forms[int(mode)]
-            for where, form in cache.forms(idx, A, b):
+            # (A, b) asked for only where a design meets the mode first
+            for where, form in cache.forms(idx, functools.partial(system.matrices, int(mode))):
                 if form is None:
                     s.fell[idx[where]] = True
                 else:
-                    groups.append(_Group(int(mode), idx[where], form, A[where], b[where]))
+                    groups.append(_Group(int(mode), idx[where], form))
         clock["forms"] += time.process_time() - tick
         if groups:
             _round(system, groups, s, best_key, names, h_min, clock)
@@ -286,8 +287,6 @@ class _Group:
     mode: int
     idx: np.ndarray
     form: BatchForm
-    A: np.ndarray
-    b: np.ndarray
     vectors: np.ndarray = None
     end: np.ndarray = None
     event: np.ndarray = None
@@ -363,15 +362,13 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
              h_min: float) -> None:
     """The output's largest |value| over each design's phase: its ends and its
     stationary points (zeros of its rate, all found in one search)."""
-    outs, rates, ends, base = [], [], [], [0]
+    outs, ends = [], []
     for grp in groups:
         w, c = system.output(grp.mode, grp.idx)
         outs.append(_signals(grp.form, grp.vectors, w, c))
-        rates.append(_signals(grp.form, grp.vectors, np.einsum("ki,kij->kj", w, grp.A),
-                              np.einsum("ki,ki->k", w, grp.b)))
         ends.append(grp.end)
-        base.append(base[-1] + grp.idx.size)
-    out, rate, end = Signals.concat(outs), Signals.concat(rates), np.concatenate(ends)
+    out, end = Signals.concat(outs), np.concatenate(ends)
+    rate = out.rate()
     idx = np.concatenate([grp.idx for grp in groups])
     m = end.size
     rows = np.arange(m)

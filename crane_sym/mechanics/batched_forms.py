@@ -29,6 +29,7 @@ a design meeting an (A, b) another met before copies its form.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Callable
 
 import numpy as np
 
@@ -324,12 +325,14 @@ class FormCache:
         #: (A, b) bytes met so far: the design that holds its form (−1: refused)
         self.known: dict[bytes, int] = {}
 
-    def forms(self, idx: np.ndarray, A: np.ndarray,
-              b: np.ndarray) -> list[tuple[np.ndarray, BatchForm | None]]:
-        """(positions in ``idx``, their form, or None where refused)."""
+    def forms(self, idx: np.ndarray,
+              matrices: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
+              ) -> list[tuple[np.ndarray, BatchForm | None]]:
+        """(positions in ``idx``, their form, or None where refused);
+        ``matrices(designs)`` gives (A, b) of designs new to the mode."""
         new = np.flatnonzero(self.signature[idx] == -2)
         if new.size:
-            self._add(idx[new], A[new], b[new])
+            self._add(idx[new], *matrices(idx[new]))
         out: list = []
         which = self.signature[idx]
         for key in np.unique(which):

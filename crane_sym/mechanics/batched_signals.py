@@ -86,6 +86,18 @@ class Signals:
     _FIELDS = ("real_amps", "real_sigmas", "cos_amps", "sin_amps", "pair_sigmas",
                "pair_omegas", "poly")
 
+    def rate(self) -> "Signals":
+        """g' as signals of the same terms: a e^{σt} gives σa; a pair (a, b)
+        gives (σa + ωb, σb − ωa); Σ c_j t^j gives Σ j c_j t^{j−1}."""
+        D = self.poly.shape[1]
+        poly = np.zeros_like(self.poly)
+        for j in range(1, D):
+            poly[:, j - 1] = j * self.poly[:, j]
+        s, w = self.pair_sigmas, self.pair_omegas
+        a, b = self.cos_amps, self.sin_amps
+        return Signals(self.real_sigmas * self.real_amps, self.real_sigmas,
+                       s * a + w * b, s * b - w * a, s, w, poly)
+
     def take(self, rows: np.ndarray) -> "Signals":
         """The signals ``rows`` only."""
         return Signals(*(a[rows] for a in (self.real_amps, self.real_sigmas, self.cos_amps,
