@@ -312,18 +312,19 @@ def _form(A, b, slot, lam, vr, mu, vl, kind, cond_limit: float) -> tuple[BatchFo
 
 class FormCache:
     """The closed forms of one mode for designs 0 … size − 1, computed on a
-    design's first phase in the mode and kept; a design whose (A, b) equals,
-    byte for byte, one met before (a swept value the mode does not read)
-    copies that one's form instead of decomposing it again."""
+    design's first phase in the mode and kept. Each distinct form is stored
+    once (a part per spectral structure) and a design keeps where its form
+    is: a design whose (A, b) equals, byte for byte, one met before (a swept
+    value the mode does not read) points at that one's form instead of
+    decomposing it again."""
 
     def __init__(self, size: int, cond_limit: float = COND_LIMIT) -> None:
         self.cond_limit = cond_limit
         self.signature = np.full(size, -2)          # −2 not yet, −1 refused, else a part
-        self.parts: list[tuple[int, int, np.ndarray, np.ndarray, np.ndarray, np.ndarray,
-                               np.ndarray]] = []
-        self.size = size
-        #: (A, b) bytes met so far: the design that holds its form (−1: refused)
-        self.known: dict[bytes, int] = {}
+        self.slot = np.zeros(size, dtype=np.intp)   # the form's row in its part
+        self.parts: list[_Store] = []
+        #: (A, b) bytes met so far: (part, slot), part −1 where refused
+        self.known: dict[bytes, tuple[int, int]] = {}
 
     def forms(self, idx: np.ndarray,
               matrices: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
@@ -340,15 +341,11 @@ class FormCache:
             if key < 0:
                 out.append((where, None))
                 continue
-            q, p, powers, sine, sig, om, coef = self.parts[key]
-            rows = idx[where]
-            n = coef.shape[-2]
-            out.append((where, BatchForm(n, powers, sine, sig[rows], om[rows], coef[rows],
-                                         q, p)))
+            out.append((where, self.parts[key].form(self.slot[idx[where]])))
         return out
 
     def _add(self, rows: np.ndarray, A: np.ndarray, b: np.ndarray) -> None:
-        """The forms of designs ``rows`` (first time in the mode): copied
+        """The forms of designs ``rows`` (first time in the mode): found
         where their (A, b) was met before, decomposed together otherwise;
         each design's is computed alone, so a shared one is bit for bit what
         it would have got."""
@@ -356,37 +353,66 @@ class FormCache:
         # a few distinct (A, b) (a mode the swept values barely move) are looked
         # up; many (a swept value in b) are decomposed: a lookup a key costs more
         look = first.size <= KNOWN_LOOKUP
-        holder = (np.array([self.known.get(keys[f].tobytes(), -2) for f in first]) if look
-                  else np.full(first.size, -2))
-        fresh = np.flatnonzero(holder == -2)
+        part, slot = np.full(first.size, -2), np.zeros(first.size, dtype=np.intp)
+        if look:
+            for j, f in enumerate(first):
+                part[j], slot[j] = self.known.get(keys[f].tobytes(), (-2, 0))
+        fresh = np.flatnonzero(part == -2)
         if fresh.size:
             parts, refused = batch_forms(A[first[fresh]], b[first[fresh]], self.cond_limit)
-            holder[fresh[refused]] = -1
+            part[fresh[refused]] = -1
             for where, f in parts:
-                key = next((i for i, p in enumerate(self.parts)
-                            if p[0] == f.real and p[1] == f.pairs
-                            and p[2].shape == f.powers.shape), None)
+                key = next((i for i, p in enumerate(self.parts) if p.holds(f)), None)
                 if key is None:
-                    T = f.powers.size
-                    n = f.n           # the rows of the state only (the last is 0 … 0 1)
-                    self.parts.append((f.real, f.pairs, f.powers, f.sine,
-                                       np.zeros((self.size, T)), np.zeros((self.size, T)),
-                                       np.zeros((self.size, T, n, n + 1))))
+                    self.parts.append(_Store(f))
                     key = len(self.parts) - 1
-                held = rows[first[fresh[where]]]
-                _, _, _, _, sig, om, coef = self.parts[key]
-                sig[held], om[held], coef[held] = f.sigmas, f.omegas, f.coefficients[:, :, :f.n]
-                self.signature[held] = key
-                holder[fresh[where]] = held
+                part[fresh[where]] = key
+                slot[fresh[where]] = self.parts[key].append(f)
             for j in fresh if look else ():
-                self.known[keys[first[j]].tobytes()] = int(holder[j])
-        source = holder[inverse]
-        refused = source < 0
-        self.signature[rows[refused]] = -1
-        copy = np.flatnonzero(~refused)
-        src, dst = source[copy], rows[copy]
-        for key in np.unique(self.signature[src]):
-            sel = self.signature[src] == key
-            _, _, _, _, sig, om, coef = self.parts[key]
-            sig[dst[sel]], om[dst[sel]], coef[dst[sel]] = sig[src[sel]], om[src[sel]], coef[src[sel]]
-            self.signature[dst[sel]] = key
+                self.known[keys[first[j]].tobytes()] = (int(part[j]), int(slot[j]))
+        self.signature[rows] = part[inverse]
+        self.slot[rows] = slot[inverse]
+
+
+class _Store:
+    """The distinct forms of one spectral structure in a mode, a row each
+    (arrays grown by doubling)."""
+
+    def __init__(self, f: BatchForm) -> None:
+        self.real, self.pairs, self.powers, self.sine = f.real, f.pairs, f.powers, f.sine
+        self.n = f.n
+        self.count = 0
+        T = f.powers.size
+        self.sigmas, self.omegas = np.zeros((0, T)), np.zeros((0, T))
+        self.coefficients = np.zeros((0, T, f.n, f.n + 1))
+
+    def holds(self, f: BatchForm) -> bool:
+        """True where ``f`` has this structure (its terms in the same blocks)."""
+        return (self.real == f.real and self.pairs == f.pairs
+                and self.powers.shape == f.powers.shape)
+
+    def append(self, f: BatchForm) -> np.ndarray:
+        """Store the k forms of ``f`` (the rows of the state only: the last
+        row of each C_j is 0 … 0 1); their rows."""
+        k = f.sigmas.shape[0]
+        if self.count + k > self.sigmas.shape[0]:
+            grow = max(2 * self.sigmas.shape[0], self.count + k, 64)
+            self.sigmas = _grown(self.sigmas, grow)
+            self.omegas = _grown(self.omegas, grow)
+            self.coefficients = _grown(self.coefficients, grow)
+        rows = np.arange(self.count, self.count + k)
+        self.sigmas[rows], self.omegas[rows] = f.sigmas, f.omegas
+        self.coefficients[rows] = f.coefficients[:, :, :f.n]
+        self.count += k
+        return rows
+
+    def form(self, rows: np.ndarray) -> BatchForm:
+        """The forms of ``rows``, one per design (a row may repeat)."""
+        return BatchForm(self.n, self.powers, self.sine, self.sigmas[rows], self.omegas[rows],
+                         self.coefficients[rows], self.real, self.pairs)
+
+
+def _grown(a: np.ndarray, rows: int) -> np.ndarray:
+    out = np.zeros((rows,) + a.shape[1:])
+    out[: a.shape[0]] = a
+    return out
