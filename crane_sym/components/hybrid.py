@@ -25,7 +25,8 @@ solves each phase in closed form and finds the events on those closed forms.
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from functools import lru_cache
+from typing import Callable
+
 import numpy as np
 
 from crane_sym.components.equations import Equations
@@ -51,6 +52,20 @@ class Mode:
     ramping: tuple[bool, ...]
     steps: tuple[int, ...] = ()
     pieces: tuple[int, ...] = ()
+
+
+def _memo(func: Callable) -> Callable:
+    """``func`` with its results kept by arguments (a dict: a system is built
+    per design of a sweep, and ``functools.lru_cache`` costs ~70 µs to make)."""
+    kept: dict = {}
+
+    def cached(*args):
+        try:
+            return kept[args]
+        except KeyError:
+            out = kept[args] = func(*args)
+            return out
+    return cached
 
 
 class ComponentSystem:
@@ -96,11 +111,11 @@ class ComponentSystem:
             self.events[f"{law.part.name} next step"] = ("step", m)
         for m, law in enumerate(self.laws):
             self.events[f"{law.part.name} next piece"] = ("piece", m)
-        self._linear = lru_cache(maxsize=None)(self._linear_uncached)
+        self._linear = _memo(self._linear_uncached)
         # a mode's matrices and guards, kept: a batched sweep asks each design
         # for them once a phase (the copies handed out may be changed)
-        self._matrices = lru_cache(maxsize=None)(self._matrices_uncached)
-        self._guards = lru_cache(maxsize=None)(self._guards_uncached)
+        self._matrices = _memo(self._matrices_uncached)
+        self._guards = _memo(self._guards_uncached)
         self._twists: dict[str, np.ndarray] = {}
 
     # --- positions in the state -------------------------------------------------

@@ -18,15 +18,18 @@ same bits.
 """
 from __future__ import annotations
 
+import contextlib
+import gc
 import re
 import sys
 import time
-from typing import Callable
+from typing import Callable, Iterator
 
 from crane_sym.sweep.plan import SweepError
 from crane_sym.sweep.store import deferred_signals
 
-__all__ = ["STOP_WAIT", "compute_local", "compute_remote", "connect", "scheduler_lost"]
+__all__ = ["STOP_WAIT", "compute_local", "compute_remote", "connect", "cycles_collected_after",
+           "scheduler_lost"]
 
 #: Seconds to wait for a live scheduler's workers to stop a cancelled sweep.
 STOP_WAIT = 30.0
@@ -159,3 +162,18 @@ def _stop_remote(client, futures: list, tasks: list) -> bool:
     except Exception:                          # the scheduler went away meanwhile
         pass
     return False
+
+
+@contextlib.contextmanager
+def cycles_collected_after() -> Iterator[None]:
+    """Python's cycle collector paused while a simulated block runs: a block
+    builds a system per design (objects that refer to each other), which the
+    collector would walk again and again (a quarter of 003's start-up block,
+    measured); it runs as usual after the block."""
+    paused = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if paused:
+            gc.enable()

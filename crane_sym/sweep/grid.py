@@ -51,7 +51,8 @@ import numpy as np
 
 from crane_sym import registry
 from crane_sym.output_files import Stage
-from crane_sym.sweep.compute import compute_local, compute_remote, connect, scheduler_lost
+from crane_sym.sweep.compute import (compute_local, compute_remote, connect,
+                                     cycles_collected_after, scheduler_lost)
 from crane_sym.sweep.dataset import dataset, sweep_id
 from crane_sym.sweep.plan import SweepError, SweepPlan
 from crane_sym.sweep.store import deferred_signals, remove_settled, sweep_stage
@@ -111,7 +112,9 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
     window = options.get("window")
     if kind == "component":                    # a component file's link, batched
         from crane_sym.components.designs import evaluate_block as component_block
-        result = component_block(options["component_file"], options["digest"], output, grid)
+        with cycles_collected_after():
+            result = component_block(options["component_file"], options["digest"], output,
+                                     grid)
     elif kind == "closed":
         func = getattr(importlib.import_module(f"crane_sym.generated.{derivation}"), output)
         result = func(*[values[a] for a in args])
@@ -121,8 +124,10 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
                 result = np.maximum(result, func(*[values[a] for a in args]))
     else:
         spec = registry.sweep_outputs(derivation)[output]
-        result = spec.evaluate(values, options)
+        with cycles_collected_after():
+            result = spec.evaluate(values, options)
     return np.ascontiguousarray(np.broadcast_to(np.asarray(result, dtype=float), shape))
+
 
 
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
