@@ -100,20 +100,10 @@ def cmd_audit_components(args: argparse.Namespace) -> int:
 def cmd_walkthrough_components(args: argparse.Namespace) -> int:
     """``crane-sym walkthrough FILE``: the derivation of a component model as
     Markdown or a printable HTML page (nothing written on an error)."""
-    from crane_sym import output_files
+    from crane_sym.cli.handout import deliver_walkthrough
     from crane_sym.docs.drive_train import drive_train_page, drive_train_walkthrough
     if args.format == "ipynb":
         raise ValueError("walkthrough: a component file's walkthrough is Markdown or "
                          "html, not ipynb")
     make = drive_train_page if args.format == "html" else drive_train_walkthrough
-    target = output_files.out_file(args.output, "-o") if args.output else None
-    quiet = getattr(args, "quiet", False)
-    with progress.reporting(progress.Progress(progress.wanted(quiet))) as say:
-        with say.task(f"walkthrough of {args.id}"):
-            text = make(args.id)
-    if target:
-        output_files.write_text(target[0], target[1], text, "-o")
-        print(f"wrote {args.output}")
-    else:
-        print(text)
-    return 0
+    return deliver_walkthrough(args, args.id, make)

@@ -133,20 +133,13 @@ def cmd_walkthrough(args: argparse.Namespace) -> int:
     if is_file_argument(args.id):
         return cmd_walkthrough_components(args)
     # imported on use: see the module docstring
+    from crane_sym.cli.handout import deliver_walkthrough
     from crane_sym.docs.page import handout_page
     from crane_sym.docs.notebook import notebook
     from crane_sym.docs.walkthrough import walkthrough
     name = registry.resolve(args.id)
     make = {"ipynb": notebook, "html": handout_page}.get(args.format, walkthrough)
-    target = output_files.out_file(args.output, "-o") if args.output else None
-    with progress.reporting(_progress(args)) as say, say.task(f"walkthrough of {name}"):
-        text = make(name)
-    if target:
-        output_files.write_text(target[0], target[1], text, "-o")
-        print(f"wrote {args.output}")
-    else:
-        print(text)
-    return 0
+    return deliver_walkthrough(args, name, make)
 
 
 def cmd_generate(args: argparse.Namespace) -> int:

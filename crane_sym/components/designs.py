@@ -9,7 +9,8 @@ in SI; each varied component is rebuilt from its table with those values
 model is assembled anew, and the symbolic derivation is the file's, shared
 (:meth:`crane_sym.components.model.Model.with_parts`); a design whose gaps
 differ from the file's (a backlash varied from or to zero) takes the
-derivation of its own structure, made once.
+derivation of its own structure, made once (:class:`Templates`, which a
+paper's drive train uses for its own designs too).
 
 The outputs, per elastic link ``L``: ``L.peak``, the largest |load| over the
 run from the file's start (N·m, or N between translating bodies), and
@@ -29,7 +30,7 @@ import math
 import tomllib
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Mapping
+from typing import Mapping, Sequence
 
 import numpy as np
 from sympy.physics.units import Dimension, length, time
@@ -37,12 +38,16 @@ from sympy.physics.units.systems.si import dimsys_SI
 
 from crane_sym import units
 from crane_sym.components.hybrid import ComponentSystem
+from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model, start_load
-from crane_sym.components.parts import DIMENSIONS, ROTATING, ComponentError, value
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError,
+                                        ElasticLink, value)
+from crane_sym.components.pruning import Scope
 from crane_sym.components.reading import NUMBERS, TABLES, _build, read_component_file
 from crane_sym.mechanics.phase_table import HybridRun
 
-__all__ = ["OUTPUTS", "Designs", "Field", "designs", "evaluate_block"]
+__all__ = ["OUTPUTS", "Designs", "Field", "Templates", "designs", "evaluate_block",
+           "structure"]
 
 #: The outputs of each elastic link: suffix -> what it is.
 OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
@@ -114,6 +119,58 @@ def _text(value: float, field: Field) -> str | float:
     return repr(float(value)) + ("" if unit == "1" else f" {unit}")
 
 
+def structure(parts: Sequence[Component]) -> tuple:
+    """What a model's derivation rests on beside its parts' values, which
+    :meth:`Model.with_parts` cannot change: each part's kind and name, whether
+    an elastic link has a gap, how many steps a characteristic takes.
+
+    Parameters
+    ----------
+    parts : sequence of Component
+        The parts of a model.
+    """
+    return tuple((type(p).__name__, p.name,
+                  p.backlash.si > 0 if isinstance(p, ElasticLink) else
+                  len(p.holds) if isinstance(p, Characteristic) else None) for p in parts)
+
+
+class Templates:
+    """One derived model per :func:`structure`, the template of every design of
+    it: a design is its template with the design's parts
+    (:meth:`Model.with_parts`: assembled anew, Lagrange's equations and their
+    lambdified form shared, not derived again), its name, title and scope the
+    template's. A structure met for the first time is derived once, as
+    ``Model(parts, name, title, scope)``.
+
+    Parameters
+    ----------
+    name, title : str
+        The name and title of the models.
+    scope : Scope, optional
+        The run the models are built for (``Model.for_run``), if any.
+    models : sequence of Model, optional
+        Templates derived already (a component file's own model).
+    """
+
+    def __init__(self, name: str, title: str = "", scope: Scope | None = None,
+                 models: Sequence[Model] = ()) -> None:
+        self.name, self.title, self.scope = name, title, scope
+        self.models = {structure(m.components): m for m in models}
+
+    def design(self, parts: Sequence[Component]) -> Model:
+        """The model of ``parts``, its derivation its structure's template's.
+
+        Parameters
+        ----------
+        parts : sequence of Component
+            The design's parts.
+        """
+        key = structure(parts)
+        if key not in self.models:
+            self.models[key] = Model(parts, self.name, self.title, self.scope)
+        return self.models[key].with_parts(parts)
+
+
 class Designs:
     """The designs of one component file (read and derived once)."""
 
@@ -130,7 +187,8 @@ class Designs:
                 self.entries[entry["name"]] = (kind, entry)
         self.position = {p.name: i for i, p in enumerate(self.model.components)}
         self.links = [l.part.name for l in self.model.assembly.links]
-        self._bases = {self._structure(self.model): self.model}
+        self.templates = Templates(self.model.name, self.model.title, self.model.scope,
+                                   [self.model])
         self.fields = self._fields()
 
     def _fields(self) -> dict[str, Field]:
@@ -159,10 +217,6 @@ class Designs:
                 text = raw if isinstance(raw, str) else None if raw is None else repr(raw)
                 out[f"{name}.{key}"] = Field(name, kind, key, text, dimension, sign)
         return out
-
-    @staticmethod
-    def _structure(model: Model) -> tuple:
-        return tuple(l.backlash > 0 for l in model.assembly.links)
 
     def outputs(self) -> dict[str, tuple[int, str, str]]:
         """Output name -> (link index, ``peak`` or ``factor``, SI unit)."""
@@ -198,13 +252,7 @@ class Designs:
     def design(self, values: Mapping[str, float]) -> Model:
         """The model of one design, its derivation shared with the file's (or
         with the first design of its structure)."""
-        parts = self.parts(values)
-        try:
-            return self.model.with_parts(parts)
-        except ValueError:
-            fresh = Model(parts, self.model.name, self.model.title)
-            base = self._bases.setdefault(self._structure(fresh), fresh)
-            return base.with_parts(parts)
+        return self.templates.design(self.parts(values))
 
     def start(self, model: Model):
         """(mode, state, system) of a design's run from the file's start."""

@@ -16,6 +16,7 @@ an axis over another link's reference is refused as an axis no output depends on
 """
 from __future__ import annotations
 
+from functools import partial
 from pathlib import Path
 
 from crane_sym import units
@@ -23,8 +24,9 @@ from crane_sym.components.designs import OUTPUTS, Designs, designs
 from crane_sym.components.model import start_load
 from crane_sym.components.parts import ComponentError
 from crane_sym.scenes.options import did_you_mean
-from crane_sym.sweep.plan import Axis, Limit, OutputSpec, SweepError, SweepPlan, shown_unit
-from crane_sym.sweep.spec import _VARY, _not_an_argument, parse_limit, parse_vary
+from crane_sym.sweep.plan import Axis, OutputSpec, SweepError, SweepPlan
+from crane_sym.sweep.spec import (_VARY, _not_an_argument, display_units, parse_limit,
+                                  parse_vary)
 
 __all__ = ["plan_file"]
 
@@ -89,26 +91,11 @@ def _outputs(found: Designs, names: list[str]) -> tuple[OutputSpec, ...]:
     return tuple(specs)
 
 
-def _display(found: Designs, specs: tuple[OutputSpec, ...], limit: Limit | None
-             ) -> dict[str, tuple[str, float]]:
-    """Output -> (unit shown, factor to SI): a load in the one unit the file
-    writes loads of its dimension in, else the limit's, else SI."""
-    shown = {}
-    for s in specs:
-        if not shown_unit(s.unit):
-            shown[s.name] = ("", 1.0)
-            continue
-        dimension = units.parse_unit(s.unit)[1]
-        given = {f.unit for f in found.fields.values() if f.key in _LOAD_KEYS
-                 and f.text is not None and units.same_dimension(f.dimension, dimension)}
-        if len(given) == 1:
-            unit = given.pop()
-            shown[s.name] = (unit, units.parse_unit(unit)[0])
-        elif limit is not None and limit.output == s.name:
-            shown[s.name] = (limit.unit, limit.to_si)
-        else:
-            shown[s.name] = (s.unit, 1.0)
-    return shown
+def _file_given(found: Designs, output: OutputSpec) -> set[str]:
+    """The units the file writes its loads of ``output``'s dimension in."""
+    dimension = units.parse_unit(output.unit)[1]
+    return {f.unit for f in found.fields.values() if f.key in _LOAD_KEYS
+            and f.text is not None and units.same_dimension(f.dimension, dimension)}
 
 
 def plan_file(path: str | Path, vary: list[str], outputs: list[str], at: list[str] = (),
@@ -153,7 +140,7 @@ def plan_file(path: str | Path, vary: list[str], outputs: list[str], at: list[st
         if not any(axis.name in s.depends for s in specs):
             raise SweepError(f"--vary {axis.name}: {_not_an_argument(axis.name, specs)}")
     found_limit = parse_limit(limit, specs) if limit else None
-    display = _display(found, specs, found_limit)
+    display = display_units(specs, partial(_file_given, found), found_limit)
     if found_limit is not None:
         found_limit = found_limit.shown_in(*display[found_limit.output])
     options = {"duration": found.duration, "component_file": str(Path(path).resolve()),

@@ -29,6 +29,8 @@ from __future__ import annotations
 
 import math
 import re
+from functools import partial
+from typing import Callable
 
 from crane_sym import registry, units
 from crane_sym.codegen.module import used_arguments
@@ -37,8 +39,8 @@ from crane_sym.symbols import TIME
 from crane_sym.sweep.plan import (Axis, Limit, OutputSpec, SweepError, SweepPlan, Window,
                                   shown_unit)
 
-__all__ = ["MIN_CHUNK_MIB", "SweepError", "parse_at", "parse_chunk_mib", "parse_limit",
-           "parse_vary", "plan"]
+__all__ = ["MIN_CHUNK_MIB", "SweepError", "display_units", "parse_at", "parse_chunk_mib",
+           "parse_limit", "parse_vary", "plan"]
 
 #: The smallest block ``--chunk-mib`` accepts: below it Dask's cost per task
 #: (~0.1 ms) outweighs a block's work.
@@ -233,19 +235,38 @@ def _same_unit(a: str, b: str) -> bool:
     return a.replace(" ", "").replace("·", "*") == b.replace(" ", "").replace("·", "*")
 
 
-def _display_units(specs: tuple[OutputSpec, ...], scene_units: dict[str, str], symbols,
-                   limit: Limit | None) -> dict[str, tuple[str, float]]:
-    """Output -> (unit it is shown in, factor to SI): the one unit the scene
-    file gives its parameters of the output's SI unit, else the limit's unit
-    for the limited output, else SI; ``""`` for a dimensionless output."""
+def _scene_given(scene_units: dict[str, str], symbols, output: OutputSpec) -> set[str]:
+    """The units the scene file gives its parameters of ``output``'s SI unit in."""
+    return {shown_unit(u) for n, u in scene_units.items()
+            if n in symbols and _same_unit(symbols[n].unit, output.unit)}
+
+
+def display_units(specs: tuple[OutputSpec, ...], given: Callable[[OutputSpec], set[str]],
+                  limit: Limit | None) -> dict[str, tuple[str, float]]:
+    """Output -> (unit it is shown in, factor to SI): ``""`` for a
+    dimensionless output; else the one unit ``given`` names for it (the units
+    its input file writes values of its kind in), else the limit's unit for
+    the limited output, else SI. The rule of a scene's sweep and of a
+    component file's.
+
+    Parameters
+    ----------
+    specs : tuple of OutputSpec
+        The outputs.
+    given : callable
+        Output -> the set of unit texts the input file gives values of the
+        output's kind in (asked only for an output with a unit).
+    limit : Limit or None
+        The ``--limit``, its unit as typed.
+    """
     shown = {}
     for s in specs:
-        given = {shown_unit(u) for n, u in scene_units.items()
-                 if n in symbols and _same_unit(symbols[n].unit, s.unit)}
         if not shown_unit(s.unit):
             shown[s.name] = ("", 1.0)
-        elif len(given) == 1 and "" not in given:
-            unit = given.pop()
+            continue
+        found = given(s)
+        if len(found) == 1 and "" not in found:
+            unit = next(iter(found))
             shown[s.name] = (unit, units.parse_unit(unit)[0])
         elif limit is not None and limit.output == s.name:
             shown[s.name] = (limit.unit, limit.to_si)
@@ -320,7 +341,7 @@ def plan(scene: Scene, vary: list[str], outputs: list[str], at: list[str] = (),
             raise SweepError(f"--output {s.name}: no value for {', '.join(missing)}; "
                              f"give it with --at NAME=VALUE{hint}")
     found = parse_limit(limit, specs) if limit else None
-    display = _display_units(specs, scene_units, d.symbols, found)
+    display = display_units(specs, partial(_scene_given, scene_units, d.symbols), found)
     if found is not None:
         found = found.shown_in(*display[found.output])
     options = {k: scene.options[k] for k in ("duration", "points") if k in scene.options}

@@ -30,11 +30,14 @@ import numpy as np
 
 from crane_sym.components import (Brake, Characteristic, ElasticLink, Mass, Model,
                                   Resistance)
+from crane_sym.components.designs import Templates
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.mechanics.phase_table import Affine
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult
 
 __all__ = ["fig11_design", "fig11_model", "fig11_parts", "speed_index", "step_accelerations", "total_load"]
+
+_NAME, _TITLE = "portal_startup", "Fig. 12: start-up with backlash"
 
 
 def fig11_model(values: Mapping[str, float], holds: Sequence[float]) -> Model:
@@ -45,8 +48,7 @@ def fig11_model(values: Mapping[str, float], holds: Sequence[float]) -> Model:
     ``W_f``, ``W_w`` (friction and wind), optionally ``s_right`` (the right
     link's backlash, where it differs); one characteristic per hold time of
     ``holds`` [s], then the natural one (Table 1's start)."""
-    return Model(fig11_parts(values, holds), name="portal_startup",
-                 title="Fig. 12: start-up with backlash")
+    return Model(fig11_parts(values, holds), name=_NAME, title=_TITLE)
 
 
 def fig11_parts(values: Mapping[str, float], holds: Sequence[float]) -> list:
@@ -66,23 +68,16 @@ def fig11_parts(values: Mapping[str, float], holds: Sequence[float]) -> list:
     return parts
 
 
-#: One derived model per structure (which gaps, friction, wind; the number of
-#: holds), the template each design of a sweep takes its derivation from.
-_TEMPLATES: dict[tuple, Model] = {}
+#: The derived models the designs of a sweep take their derivation from, one
+#: per structure (which gaps, friction, wind; the number of holds).
+_TEMPLATES = Templates(_NAME, _TITLE)
 
 
 def fig11_design(values: Mapping[str, float], holds: Sequence[float]) -> Model:
     """:func:`fig11_model` for a design of a sweep: the parts with this
     design's values, Lagrange's equations derived once per structure and
     shared (``Model.with_parts``), not derived again for every design."""
-    parts = fig11_parts(values, holds)
-    key = tuple((type(p).__name__, p.name, isinstance(p, ElasticLink) and p.backlash.si > 0)
-                for p in parts) + (len(holds),)
-    if key not in _TEMPLATES:
-        _TEMPLATES[key] = Model(parts, name="portal_startup",
-                                title="Fig. 12: start-up with backlash")
-        return _TEMPLATES[key]
-    return _TEMPLATES[key].with_parts(parts)
+    return _TEMPLATES.design(fig11_parts(values, holds))
 
 
 def speed_index(system: ComponentSystem, body: str) -> int:

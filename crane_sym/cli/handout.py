@@ -1,0 +1,36 @@
+"""The tail every ``crane-sym walkthrough`` shares: a paper's or a component
+file's handout made under a progress line, then written to ``-o`` or printed."""
+from __future__ import annotations
+
+import argparse
+from typing import Callable
+
+from crane_sym import output_files, progress
+
+__all__ = ["deliver_walkthrough"]
+
+
+def deliver_walkthrough(args: argparse.Namespace, name: str, make: Callable[[str], str]) -> int:
+    """Make the walkthrough of ``name`` (``make(name)``), then write it to
+    ``-o`` (the file's folder checked before the work; nothing written on an
+    error) and say so, or print it.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The command's arguments (``output``, ``quiet``).
+    name : str
+        The paper id or component file, as the progress line names it.
+    make : callable
+        Name -> the walkthrough's text.
+    """
+    target = output_files.out_file(args.output, "-o") if args.output else None
+    reporter = progress.Progress(progress.wanted(getattr(args, "quiet", False)))
+    with progress.reporting(reporter) as say, say.task(f"walkthrough of {name}"):
+        text = make(name)
+    if target:
+        output_files.write_text(target[0], target[1], text, "-o")
+        print(f"wrote {args.output}")
+    else:
+        print(text)
+    return 0
