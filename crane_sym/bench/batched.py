@@ -92,11 +92,12 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
     if not rows:
         return []
     lines = ["## (e) Hybrid outputs: the batched solver against the per-design loop", "",
-             f"The whole grid of N designs evaluated as one block (as a sweep's worker "
+             "The whole grid of N designs evaluated as one block (as a sweep's worker "
              f"evaluates a block; the least of {REPEATS} runs); the per-design loop run on a "
-             "seeded sample of it, its time for N extrapolated from the sample's mean; the difference is the largest "
-             "relative difference of the peak on the sample. Wall times; the speed-up "
-             "in CPU seconds of this process beside it (the machine is shared).", "",
+             "seeded sample of it, its time for N extrapolated from the sample's mean; the "
+             "difference is the largest relative difference of the peak on the sample. Wall "
+             "times; the speed-up in CPU seconds of this process beside it (the machine is "
+             "shared).", "",
              "| paper | output | N | batched [s] | batched [designs/s] | per design [ms] "
              "(sample) | loop [designs/s] | N by the loop (extrapolated) [s] | speed-up (CPU) | "
              "max rel. difference |", "| --- | --- | --- | --- | --- | --- | --- | --- | --- "

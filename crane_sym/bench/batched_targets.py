@@ -2,7 +2,8 @@
 (issue 28), each row printed with met / not met:
 
 - 10⁴ designs in one block on one core in at most 1 s (the least of
-  three runs, each printed), at least 500× the per-design loop (from :func:`crane_sym.bench.batched.bench_batched`);
+  three runs, each printed), at least 500× the per-design loop (from
+  :func:`crane_sym.bench.batched.bench_batched`);
 - 10⁶ designs as a sweep (blocks on Dask's local processes, nothing written)
   in at most 2 minutes and 1 GiB: run in a child process, its time and the
   largest summed resident memory of it and its workers, sampled every 50 ms

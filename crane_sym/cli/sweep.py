@@ -96,7 +96,8 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler, "
                    "e.g. tcp://10.0.0.5:8786 (default: Dask's local scheduler, threads for "
                    "closed forms, processes for simulated responses, synchronous for a "
-                   "component file's; 'threads', 'processes' or 'synchronous' force one)")
+                   "component file's or a grid of one block; 'threads', 'processes' or "
+                   "'synchronous' force one)")
     p.add_argument("--chunk-mib", type=float, default=8.0,
                    help="output bytes per block of the grid, in MiB (default 8; at least "
                    "0.1, at most the free memory for one block per core)")

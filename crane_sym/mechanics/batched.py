@@ -7,9 +7,10 @@ design sweep of a hybrid model ran it once per design in a Python loop.
 its own mode, state, clock and schedule. A round takes every design still
 running through one phase: the designs are grouped by mode, each group's
 closed forms come from batched eigen-decompositions
-(:func:`crane_sym.mechanics.batched_forms.batch_forms`, kept per design and
-mode), the guards of every design of every mode are searched together by the
-certified no-skip step and refined by bracketing on arrays
+(:func:`crane_sym.mechanics.batched_forms.batch_forms`, kept per mode by
+:class:`crane_sym.mechanics.batched_cache.FormCache`), the guards of every
+design of every mode are searched together by the certified no-skip step
+and refined by bracketing on arrays
 (:mod:`crane_sym.mechanics.batched_events`), the output's stationary points
 of the phase are found the same way (skipped where a bound of the output
 over the phase cannot pass the design's best so far), and the model's
@@ -28,7 +29,8 @@ a defective eigenvalue, a pair nearly real) is run by the per-design route inste
 phases is stopped there and marked (:attr:`BatchedLargest.capped`, value NaN),
 never silently cut short.
 
-The model describes itself to the solver by :class:`BatchedSystem`: modes as
+The model describes itself to the solver by :class:`BatchedSystem`
+(:mod:`crane_sym.mechanics.batched_system`, re-exported here): modes as
 integer codes, and its matrices, guards, switching rule and output for an
 array of designs in one mode.
 """
@@ -36,90 +38,23 @@ from __future__ import annotations
 
 import functools
 import time
-from dataclasses import dataclass, field
-from typing import Hashable, Protocol, Sequence
+from dataclasses import dataclass
+from typing import Sequence
 
 import numpy as np
 
 from crane_sym.mechanics.batched_events import all_crossings, first_crossings
-from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm, FormCache
+from crane_sym.mechanics.batched_cache import FormCache
+from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm
 from crane_sym.mechanics.batched_signals import Signals
-from crane_sym.mechanics.phase_table import HybridRun, largest
+from crane_sym.mechanics.batched_system import BatchedGuard, BatchedLargest, BatchedSystem
+from crane_sym.mechanics.phase_table import largest
 from crane_sym.mechanics.piecewise_linear import simulate
 
 __all__ = ["BatchedGuard", "BatchedLargest", "BatchedSystem", "largest_batched"]
 
 #: Code of the event "end" (the run reached t_end).
 END = -1
-
-
-@dataclass(frozen=True)
-class BatchedGuard:
-    """A guard of k designs in one mode: g = weights·x + constant, per design."""
-
-    name: str
-    weights: np.ndarray          # (k, n)
-    constant: np.ndarray         # (k,)
-    direction: int = 0
-
-
-class BatchedSystem(Protocol):
-    """What :func:`largest_batched` needs from a family of piecewise-linear models.
-
-    Every method gets a mode code and ``index``, the designs (positions in the
-    family) that are in that mode, and answers for all of them at once.
-    """
-
-    n: int
-
-    def matrices(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """(A, b) of each design, shapes (k, n, n) and (k, n)."""
-
-    def guards(self, mode: int, index: np.ndarray) -> list[BatchedGuard]:
-        """The events that end the mode, in the per-design model's order."""
-
-    def switch(self, mode: int, event: str, index: np.ndarray, t: np.ndarray,
-               x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Next mode codes (k,) and states (k, n) after ``event``."""
-
-    def output(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """The output as weights (k, n) and constants (k,)."""
-
-    def run(self, i: int) -> HybridRun:
-        """Design ``i`` for the per-design route (its output the same)."""
-
-    def mode(self, code: int, i: int) -> Hashable:
-        """The per-design model's mode of a mode code, for design ``i``."""
-
-
-@dataclass
-class BatchedLargest:
-    """The largest |output| of each design's run (``value`` keeps its sign)
-    and when; ``phases`` per design; which designs took the per-design route
-    (``fallback``) and which stopped at the cap (``capped``, value NaN)."""
-
-    value: np.ndarray
-    time: np.ndarray
-    phases: np.ndarray
-    fallback: np.ndarray
-    capped: np.ndarray
-    rounds: int = 0
-    #: Where the time went: closed forms, event search, the output's extrema,
-    #: switching and bookkeeping, the per-design route [CPU s of this process].
-    seconds: dict[str, float] = field(default_factory=dict)
-    #: Designs the batched route took part of the way, the per-design route
-    #: the rest (the last ``tail`` still running).
-    finished_alone: np.ndarray = None
-
-    @property
-    def summary(self) -> dict[str, int]:
-        """Designs in all, by the batched route (some finished alone), by the
-        per-design route from the start (fallback), capped."""
-        n = self.value.size
-        fell, cap = int(self.fallback.sum()), int(self.capped.sum())
-        alone = 0 if self.finished_alone is None else int(self.finished_alone.sum())
-        return {"designs": n, "batched": n - fell - cap, "finished_alone": alone,
-                "fallback": fell, "capped": cap, "rounds": self.rounds}
 
 
 @dataclass

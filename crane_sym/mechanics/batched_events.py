@@ -21,6 +21,8 @@ Newton's method kept in the bracket, from the values the search knows, to
 """
 from __future__ import annotations
 
+from typing import Callable
+
 import numpy as np
 
 from crane_sym.mechanics.batched_signals import ALL, Signals
@@ -42,7 +44,6 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     """
     m = start.shape[0]
     out = np.full(m, np.nan)
-    rows = np.arange(m)
     span = t_end - start
     if np.all(start == 0):
         slope, size, spread = sig.scales(np.minimum(h_min, span), t_end)
@@ -60,6 +61,7 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
             out[live] = sub
             return out
     else:
+        rows = np.arange(m)
         near = sig.bounds(rows, start, start + np.minimum(h_min, span))[0] * h_min
         band = np.maximum(near, 1e-12 * sig.size(rows))
     return _searched(sig, start, t_end, direction, band, h_min, xtol, owner, out)
@@ -77,8 +79,8 @@ def _searched(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     quad = sig.quadratic() & ~on_surface
     limit = None
     if quad.any():
-        out[quad] = _quadratic_crossings(sig.polynomial(), rows[quad], start[quad], t_end[quad], g0[quad],
-                                         xtol)
+        out[quad] = _quadratic_crossings(sig.polynomial(), rows[quad], start[quad],
+                                         t_end[quad], g0[quad], xtol)
         if owner is not None:                   # the others stop past their owner's
             _, code = np.unique(owner, return_inverse=True)
             first = np.full(int(code.max()) + 1, np.inf)
@@ -285,7 +287,8 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
            xtol: float = 1e-14, level: np.ndarray | float = 0.0,
            f_lo: np.ndarray | None = None, f_hi: np.ndarray | None = None,
            max_rounds: int = 200, guess: np.ndarray | None = None,
-           evaluate=None) -> np.ndarray:
+           evaluate: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]
+           | None = None) -> np.ndarray:
     """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
     signs at the ends, or 0 at one; ``f_lo``, ``f_hi`` where the search knows
     them; a first point ``guess`` inside), to ``xtol`` plus 4 ulp of the root.

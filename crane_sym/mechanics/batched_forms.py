@@ -22,23 +22,19 @@ condition number ‖(L̂ᵀ R̂)⁻¹‖ above ``cond_limit`` (for a simple eige
 1/|ŵᵀv̂|; a defective eigenvalue makes it huge), a complex pair closer to the
 real axis than 10⁻⁵ of the scale, or spectra of M and Mᵀ that do not match.
 
-:class:`FormCache` keeps each design's forms per mode: a mode's (A, b)
-depend on the design only, so a design returning to a mode reuses them, and
-a design meeting an (A, b) another met before copies its form.
+:class:`crane_sym.mechanics.batched_cache.FormCache` keeps the forms per
+mode.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
-__all__ = ["BatchForm", "FormCache", "batch_forms"]
+__all__ = ["BatchForm", "batch_forms", "first_of_equal"]
 
 #: Largest eigenvalue condition number the batched route accepts.
 COND_LIMIT = 1e8
-#: Most distinct (A, b) of new designs a mode's cache looks up one by one.
-KNOWN_LOOKUP = 512
 
 
 @dataclass(frozen=True)
@@ -159,7 +155,7 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     do not match, a complex pair closer to the real axis than 10⁻⁵ of the
     scale, or a value not finite."""
     k = A.shape[0]
-    first, inverse = _first_of_equal(np.ascontiguousarray(A.reshape(k, -1)))
+    first, inverse = first_of_equal(np.ascontiguousarray(A.reshape(k, -1)))
     lam, vr = np.linalg.eig(A[first])
     mu, vl = np.linalg.eig(np.swapaxes(A[first], 1, 2))
     scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
@@ -174,28 +170,29 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     return first, inverse, lam, vr, mu, vl, cat, bad
 
 
-def _distinct(A: np.ndarray, b: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Each design's (A, b) as one bytes key, the positions of the first of
-    each distinct key and, per design, which of them it equals."""
-    k = b.shape[0]
-    rows = np.ascontiguousarray(np.concatenate([A.reshape(k, -1), b], axis=1))
-    keys = rows.view(np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
-    first, inverse = _first_of_equal(rows)
-    return keys, first, inverse
+#: Odd multipliers of :func:`first_of_equal`'s hash, per row width (fixed:
+#: no run depends on a seed).
+_MIX: dict[int, np.ndarray] = {}
 
 
-#: Odd multipliers of :func:`_first_of_equal`'s hash (fixed: no run depends on a seed).
-_MIX = np.random.default_rng(28).integers(1, 2**62, size=64, dtype=np.int64) * 2 + 1
-
-
-def _first_of_equal(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+def first_of_equal(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The first of each group of rows equal byte for byte, and per row its
     group: rows hashed to one integer, which is sorted (a sort of whole rows
     as bytes costs several times more); the groups checked byte for byte,
-    and a collision falls back to the sort of rows."""
-    bits = rows.view(np.int64)
-    if bits.shape[1] <= _MIX.size:
-        mixed = (bits * _MIX[: bits.shape[1]]).sum(axis=1)
+    and a collision falls back to the sort of rows.
+
+    Parameters
+    ----------
+    rows : ndarray, shape (k, w), float64, C-contiguous
+        The rows compared.
+    """
+    if rows.dtype.itemsize == 8 and rows.flags.c_contiguous:
+        bits = rows.view(np.int64)
+        width = bits.shape[1]
+        if width not in _MIX:
+            _MIX[width] = (np.random.default_rng(28 + width).integers(
+                1, 2**62, size=width, dtype=np.int64) * 2 + 1)
+        mixed = (bits * _MIX[width]).sum(axis=1)
         _, first, inverse = np.unique(mixed, return_index=True, return_inverse=True)
         inverse = inverse.ravel()
         if np.array_equal(bits[first][inverse], bits):
@@ -293,126 +290,19 @@ def _form(A, b, slot, lam, vr, mu, vl, kind, cond_limit: float) -> tuple[BatchFo
     M = np.zeros((k, size, size))
     M[:, :n, :n] = A
     M[:, :n, n] = b
-    Q = np.eye(size) - projector
-    N = M @ Q
-    term = Q
     kept = np.flatnonzero(fine)
-    for j in range(size - live):                         # the exact nilpotent series
-        if j:
-            term = N @ term / j
-            if not term[kept].any():                     # N^j = 0 (a free side): no more
-                break
-        powers.append(j), sine.append(False)
-        sigmas.append(np.zeros(k)), omegas.append(np.zeros(k)), coefs.append(term)
+    with np.errstate(all="ignore"):                      # a refused design's may overflow
+        Q = np.eye(size) - projector
+        N = M @ Q
+        term = Q
+        for j in range(size - live):                     # the exact nilpotent series
+            if j:
+                term = N @ term / j
+                if not term[kept].any():                 # N^j = 0 (a free side): no more
+                    break
+            powers.append(j), sine.append(False)
+            sigmas.append(np.zeros(k)), omegas.append(np.zeros(k)), coefs.append(term)
     form = BatchForm(n, np.array(powers, dtype=float), np.array(sine, dtype=bool),
                      np.stack(sigmas, axis=1), np.stack(omegas, axis=1),
                      np.stack(coefs, axis=1), len(real), len(pairs))
     return (form if fine.all() else form.take(kept)), fine
-
-
-class FormCache:
-    """The closed forms of one mode for designs 0 … size − 1, computed on a
-    design's first phase in the mode and kept. Each distinct form is stored
-    once (a part per spectral structure) and a design keeps where its form
-    is: a design whose (A, b) equals, byte for byte, one met before (a swept
-    value the mode does not read) points at that one's form instead of
-    decomposing it again."""
-
-    def __init__(self, size: int, cond_limit: float = COND_LIMIT) -> None:
-        self.cond_limit = cond_limit
-        self.signature = np.full(size, -2)          # −2 not yet, −1 refused, else a part
-        self.slot = np.zeros(size, dtype=np.intp)   # the form's row in its part
-        self.parts: list[_Store] = []
-        #: (A, b) bytes met so far: (part, slot), part −1 where refused
-        self.known: dict[bytes, tuple[int, int]] = {}
-
-    def forms(self, idx: np.ndarray,
-              matrices: Callable[[np.ndarray], tuple[np.ndarray, np.ndarray]]
-              ) -> list[tuple[np.ndarray, BatchForm | None]]:
-        """(positions in ``idx``, their form, or None where refused);
-        ``matrices(designs)`` gives (A, b) of designs new to the mode."""
-        new = np.flatnonzero(self.signature[idx] == -2)
-        if new.size:
-            self._add(idx[new], *matrices(idx[new]))
-        out: list = []
-        which = self.signature[idx]
-        for key in np.unique(which):
-            where = np.flatnonzero(which == key)
-            if key < 0:
-                out.append((where, None))
-                continue
-            out.append((where, self.parts[key].form(self.slot[idx[where]])))
-        return out
-
-    def _add(self, rows: np.ndarray, A: np.ndarray, b: np.ndarray) -> None:
-        """The forms of designs ``rows`` (first time in the mode): found
-        where their (A, b) was met before, decomposed together otherwise;
-        each design's is computed alone, so a shared one is bit for bit what
-        it would have got."""
-        keys, first, inverse = _distinct(A, b)
-        # a few distinct (A, b) (a mode the swept values barely move) are looked
-        # up; many (a swept value in b) are decomposed: a lookup a key costs more
-        look = first.size <= KNOWN_LOOKUP
-        part, slot = np.full(first.size, -2), np.zeros(first.size, dtype=np.intp)
-        if look:
-            for j, f in enumerate(first):
-                part[j], slot[j] = self.known.get(keys[f].tobytes(), (-2, 0))
-        fresh = np.flatnonzero(part == -2)
-        if fresh.size:
-            parts, refused = batch_forms(A[first[fresh]], b[first[fresh]], self.cond_limit)
-            part[fresh[refused]] = -1
-            for where, f in parts:
-                key = next((i for i, p in enumerate(self.parts) if p.holds(f)), None)
-                if key is None:
-                    self.parts.append(_Store(f))
-                    key = len(self.parts) - 1
-                part[fresh[where]] = key
-                slot[fresh[where]] = self.parts[key].append(f)
-            for j in fresh if look else ():
-                self.known[keys[first[j]].tobytes()] = (int(part[j]), int(slot[j]))
-        self.signature[rows] = part[inverse]
-        self.slot[rows] = slot[inverse]
-
-
-class _Store:
-    """The distinct forms of one spectral structure in a mode, a row each
-    (arrays grown by doubling)."""
-
-    def __init__(self, f: BatchForm) -> None:
-        self.real, self.pairs, self.powers, self.sine = f.real, f.pairs, f.powers, f.sine
-        self.n = f.n
-        self.count = 0
-        T = f.powers.size
-        self.sigmas, self.omegas = np.zeros((0, T)), np.zeros((0, T))
-        self.coefficients = np.zeros((0, T, f.n, f.n + 1))
-
-    def holds(self, f: BatchForm) -> bool:
-        """True where ``f`` has this structure (its terms in the same blocks)."""
-        return (self.real == f.real and self.pairs == f.pairs
-                and self.powers.shape == f.powers.shape)
-
-    def append(self, f: BatchForm) -> np.ndarray:
-        """Store the k forms of ``f`` (the rows of the state only: the last
-        row of each C_j is 0 … 0 1); their rows."""
-        k = f.sigmas.shape[0]
-        if self.count + k > self.sigmas.shape[0]:
-            grow = max(2 * self.sigmas.shape[0], self.count + k, 64)
-            self.sigmas = _grown(self.sigmas, grow)
-            self.omegas = _grown(self.omegas, grow)
-            self.coefficients = _grown(self.coefficients, grow)
-        rows = np.arange(self.count, self.count + k)
-        self.sigmas[rows], self.omegas[rows] = f.sigmas, f.omegas
-        self.coefficients[rows] = f.coefficients[:, :, :f.n]
-        self.count += k
-        return rows
-
-    def form(self, rows: np.ndarray) -> BatchForm:
-        """The forms of ``rows``, one per design (a row may repeat)."""
-        return BatchForm(self.n, self.powers, self.sine, self.sigmas[rows], self.omegas[rows],
-                         self.coefficients[rows], self.real, self.pairs)
-
-
-def _grown(a: np.ndarray, rows: int) -> np.ndarray:
-    out = np.zeros((rows,) + a.shape[1:])
-    out[: a.shape[0]] = a
-    return out

@@ -27,7 +27,10 @@ ALL = slice(None)
 
 def _part(rows: np.ndarray | slice, start: int, stop: int) -> np.ndarray | slice:
     """Rows ``start:stop`` of ``rows`` (of :data:`ALL`: a slice of the signals)."""
-    return slice(start, stop) if isinstance(rows, slice) else rows[start:stop]
+    if isinstance(rows, slice):
+        assert rows == ALL, "rows: an index array or ALL"
+        return slice(start, stop)
+    return rows[start:stop]
 
 
 @dataclass

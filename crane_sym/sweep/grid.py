@@ -36,6 +36,7 @@ solved once in the process (:mod:`crane_sym.components.designs`). With
 """
 from __future__ import annotations
 
+import contextlib
 import functools
 import importlib
 import math
@@ -124,10 +125,11 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
                 result = np.maximum(result, func(*[values[a] for a in args]))
     else:
         spec = registry.sweep_outputs(derivation)[output]
-        with cycles_collected_after():
+        # a block solved together builds its designs' systems at once; a
+        # per-design loop leaves its garbage to the collector as it goes
+        with cycles_collected_after() if spec.batched else contextlib.nullcontext():
             result = spec.evaluate(values, options)
     return np.ascontiguousarray(np.broadcast_to(np.asarray(result, dtype=float), shape))
-
 
 
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
@@ -138,9 +140,9 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
     one block per worker, at most :data:`BATCH_DESIGNS` designs (a batched
     solver pays its per-round overhead once per block); on the local machine
     (``workers`` not given) a grid of at most :data:`BATCH_DESIGNS` designs is
-    one block, which :func:`run_sweep` solves in this process: worker
-    processes take ~3 s to start, more than such a block (10⁴ designs of
-    001's emergency stop: ~1 s).
+    one block, which :func:`run_sweep` solves in this process unless a
+    scheduler is named: worker processes take ~3 s to start, more than such
+    a block (10⁴ designs of 001's emergency stop: ~1 s).
 
     Parameters
     ----------
@@ -358,6 +360,10 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
             one_block = all(len(c) == 1 for c in chunks)
             local = ("threads" if kinds == {"closed"} else
                      "synchronous" if kinds == {"component"} or one_block else "processes")
+        # imported before the clock (Dask looks for a distributed client on its
+        # first compute): the time printed is the sweep's, not the imports'
+        for module in ("distributed",) + (("xarray", "zarr") if tmp is not None else ()):
+            importlib.import_module(module)
         start = time.perf_counter()
         if client is not None:
             results = compute_remote(client, tasks, quiet, scheduler, once)
