@@ -37,7 +37,8 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
 
     ``direction`` (+1, −1 or 0 per row) says on which side a start on the
     surface lies, as for :func:`crane_sym.mechanics.piecewise_linear.first_crossing`.
-    ``owner`` (one integer per row: the rows of one design's guards) asks for
+    ``owner`` (one integer ≥ 0 per row, the rows of one design's guards
+    sharing one; an array as long as the largest is made) asks for
     the earliest crossing of each owner only: a row stops searching, NaN, once
     it is past a bracket another row of its owner has found (its crossing,
     if any, comes later).
@@ -50,51 +51,42 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
         band = np.maximum(slope * h_min, 1e-12 * size)
         # a signal whose constant outweighs everything else it holds over the
         # search (and by more than the surface band) keeps its sign: no search
-        live = np.flatnonzero(np.abs(sig.poly[:, 0]) - spread <= 2 * band)
-        if live.size < m:
-            if not live.size:
-                return out
-            found = np.full(live.size, np.nan)
-            sub = _searched(sig.take(live), start[live], t_end[live], direction[live],
-                            band[live], h_min, xtol, None if owner is None else owner[live],
-                            found)
-            out[live] = sub
-            return out
+        live = np.abs(sig.poly[:, 0]) - spread <= 2 * band
     else:
         rows = np.arange(m)
         near = sig.bounds(rows, start, start + np.minimum(h_min, span))[0] * h_min
         band = np.maximum(near, 1e-12 * sig.size(rows))
-    return _searched(sig, start, t_end, direction, band, h_min, xtol, owner, out)
+        live = np.ones(m, dtype=bool)
+    return _searched(sig, live, start, t_end, direction, band, h_min, xtol, owner, out)
 
 
-def _searched(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.ndarray,
-              band: np.ndarray, h_min: float, xtol: float, owner: np.ndarray | None,
-              out: np.ndarray) -> np.ndarray:
-    """:func:`first_crossings` of rows that need a search, ``band`` given."""
-    rows = np.arange(start.shape[0])
+def _searched(sig: Signals, live: np.ndarray, start: np.ndarray, t_end: np.ndarray,
+              direction: np.ndarray, band: np.ndarray, h_min: float, xtol: float,
+              owner: np.ndarray | None, out: np.ndarray) -> np.ndarray:
+    """:func:`first_crossings` of the rows ``live`` (a mask), ``band`` given:
+    the quadratics solved from their coefficients, the others stepped (the
+    signals they need taken once)."""
     g0, d0 = sig.both(ALL, start)
     on_surface = np.abs(g0) <= band
     # a quadratic off the surface (a free side's speed or angle): its crossing
     # from its monotone pieces, no stepping
-    quad = sig.quadratic() & ~on_surface
+    quad = live & sig.quadratic() & ~on_surface
     limit = None
     if quad.any():
-        out[quad] = _quadratic_crossings(sig.polynomial(), rows[quad], start[quad],
-                                         t_end[quad], g0[quad], xtol)
+        q = np.flatnonzero(quad)
+        out[q] = _quadratic_crossings(sig.polynomial(), q, start[q], t_end[q], g0[q], xtol)
         if owner is not None:                   # the others stop past their owner's
-            _, code = np.unique(owner, return_inverse=True)
-            first = np.full(int(code.max()) + 1, np.inf)
-            np.minimum.at(first, code[quad], np.where(np.isnan(out[quad]), np.inf, out[quad]))
-            limit = first[code]
-        rest = np.flatnonzero(~quad)
-        if not rest.size:
-            return out
+            first = np.full(int(owner.max()) + 1, np.inf)
+            np.minimum.at(first, owner[q], np.where(np.isnan(out[q]), np.inf, out[q]))
+            limit = first[owner]
+    rest = np.flatnonzero(live & ~quad)
+    if not rest.size:
+        return out
+    if rest.size < live.size:
         sig, start, t_end, direction = sig.take(rest), start[rest], t_end[rest], direction[rest]
         g0, d0, band, on_surface = g0[rest], d0[rest], band[rest], on_surface[rest]
         owner = None if owner is None else owner[rest]
         limit = None if limit is None else limit[rest]
-    else:
-        rest = rows
     # a start on the surface with a side: the search watches g + side·band until g
     # leaves the band, so rounding noise about 0 is not taken for a crossing
     level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
@@ -218,7 +210,6 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     L, M2 = np.zeros(m), np.zeros(m)
     act = np.flatnonzero(t < t_end)
     if owner is not None:
-        _, owner = np.unique(owner, return_inverse=True)
         cap = np.full(int(owner.max()) + 1 if m else 0, np.inf)
     while act.size:
         renew = act[t[act] >= w_end[act]]            # the window passed: bounds of the next
