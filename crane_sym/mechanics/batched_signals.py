@@ -138,9 +138,9 @@ class Signals:
         for j in range(D - 2, -1, -1):                 # Horner
             g = g * t + poly[:, j]
         d = None
-        if slope:
-            d = np.zeros_like(t)
-            for j in range(D - 1, 0, -1):
+        if slope:                                      # Horner on j·c_j
+            d = (D - 1) * poly[:, D - 1] if D > 1 else np.zeros_like(t)
+            for j in range(D - 2, 0, -1):
                 d = d * t + j * poly[:, j]
         tt = t[:, None]
         if self.cos_amps.shape[1]:
@@ -149,15 +149,17 @@ class Signals:
             wt = w * tt
             c, sn = np.cos(wt), np.sin(wt)
             wave = a * c + b * sn
-            grow = np.exp(s * tt) if s.any() else None
-            if grow is not None:
+            damped = s.any()
+            if damped:
+                grow = np.exp(s * tt)
                 wave *= grow
             g += _rowsum(wave)
             if slope:
                 turn = w * (b * c - a * sn)
-                if grow is not None:
+                if damped:
                     turn *= grow
-                d += _rowsum(s * wave + turn)
+                    turn += s * wave
+                d += _rowsum(turn)
         if self.real_amps.shape[1]:
             s = self.real_sigmas[rows]
             term = self.real_amps[rows] * np.exp(s * tt)
