@@ -413,3 +413,41 @@ def test_equal_designs_are_grouped_byte_for_byte_even_when_their_hashes_collide(
     first2, inverse2 = batched_forms.first_of_equal(rows)
     assert np.array_equal(rows[first2][inverse2].view(np.int64), rows.view(np.int64))
     assert len(first2) == len(first)
+
+
+@pytest.mark.parametrize("first_point", ["secant", "cubic and curvature"])
+def test_refine_finds_each_root_to_xtol_against_mpmath(first_point):
+    """Roots of g = a cos ωt + b sin ωt + c₁t + c₀ in brackets of the search's
+    kind, refined from the secant or from the cubic through both ends'
+    values and slopes with the stop a curvature bound allows: each within
+    xtol + 4 ulp of mpmath's root at 30 digits."""
+    import mpmath
+
+    from crane_sym.mechanics.batched_events import refine
+    rng = np.random.default_rng(11)
+    k = 64
+    a, b = rng.normal(size=k), rng.normal(size=k)
+    w, c1 = rng.uniform(1, 300, k), rng.normal(size=k)
+    t0 = rng.uniform(0, 0.5, k)
+    c0 = -(a * np.cos(w * t0) + b * np.sin(w * t0) + c1 * t0)      # a root at t0
+    sig = Signals(np.zeros((k, 0)), np.zeros((k, 0)), a[:, None], b[:, None],
+                  np.zeros((k, 1)), w[:, None], np.stack([c0, c1], axis=1))
+    slope = -a * w * np.sin(w * t0) + b * w * np.cos(w * t0) + c1
+    width = 0.5 * np.abs(slope) / (w * w * np.hypot(a, b))          # g monotone on it
+    lo, hi = t0 - rng.uniform(0.1, 1, k) * width, t0 + rng.uniform(0.1, 1, k) * width
+    rows = np.arange(k)
+    (fl, dl), (fh, dh) = sig.both(rows, lo), sig.both(rows, hi)
+    flip = np.sign(fl) == np.sign(fh)
+    assert not flip.any() and np.all(np.abs(slope) > 0)
+    options = {} if first_point == "secant" else {
+        "curvature": w * w * np.hypot(a, b), "slopes": (dl, dh)}
+    found = refine(sig, rows, lo, hi, 1e-14, 0.0, fl, fh, **options)
+    mpmath.mp.dps = 30
+    for i in range(k):
+        ai, bi, wi, c1i, c0i = (mpmath.mpf(float(v[i])) for v in (a, b, w, c1, c0))
+
+        def g(t):
+            return ai * mpmath.cos(wi * t) + bi * mpmath.sin(wi * t) + c1i * t + c0i
+        root = mpmath.findroot(g, (mpmath.mpf(float(lo[i])), mpmath.mpf(float(hi[i]))),
+                               solver="illinois", tol=mpmath.mpf(10) ** -28)
+        assert abs(found[i] - float(root)) <= 1e-14 + 4 * np.spacing(float(root))

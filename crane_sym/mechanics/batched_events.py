@@ -90,7 +90,8 @@ def _searched(sig: Signals, live: np.ndarray, start: np.ndarray, t_end: np.ndarr
     # a start on the surface with a side: the search watches g + side·band until g
     # leaves the band, so rounding noise about 0 is not taken for a crossing
     level = np.where(on_surface & (direction != 0), -direction * band, 0.0)
-    lo, hi, flo, fhi, level = _brackets(sig, start, t_end, direction, on_surface, g0, d0,
+    lo, hi, flo, fhi, level, M2, dlo, dhi = _brackets(sig, start, t_end, direction, on_surface,
+                                                     g0, d0,
                                         h_min, level=level, band=band, owner=owner,
                                         limit=limit)
     found = ~np.isnan(lo)
@@ -99,7 +100,8 @@ def _searched(sig: Signals, live: np.ndarray, start: np.ndarray, t_end: np.ndarr
     open_ = np.flatnonzero(found & (lo < hi))
     if open_.size:
         out[rest[open_]] = refine(sig, open_, lo[open_], hi[open_], xtol, level[open_],
-                                  flo[open_], fhi[open_])
+                                  flo[open_], fhi[open_], curvature=M2[open_],
+                                  slopes=(dlo[open_], dhi[open_]))
     return out
 
 
@@ -143,7 +145,7 @@ def _quadratic_crossings(sig: Signals, rows: np.ndarray, start: np.ndarray, t_en
             a_, b_ = a[live], b[live]
             return (a_ * x + b_) * x + k[live], 2 * a_ * x + b_
         out[open_] = refine(sig, rows[open_], lo[open_], hi[open_], xtol, 0.0, flo[open_],
-                            fhi[open_], guess=guess, evaluate=horner)
+                            fhi[open_], guess=guess, evaluate=horner, curvature=2 * np.abs(a))
     return out
 
 
@@ -159,12 +161,13 @@ def all_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, h_min: flo
     _brackets(sig, start, t_end, np.zeros(m), np.zeros(m, dtype=bool), g0, d0, h_min, found)
     if not found:
         return np.zeros(0, dtype=np.intp), np.zeros(0)
-    which, lo, hi, flo, fhi = (np.concatenate(parts) for parts in zip(*found))
+    which, lo, hi, flo, fhi, M2, dlo, dhi = (np.concatenate(parts) for parts in zip(*found))
     out = hi.copy()
     open_ = np.flatnonzero(lo < hi)
     if open_.size:
         out[open_] = refine(sig, which[open_], lo[open_], hi[open_], xtol, 0.0, flo[open_],
-                            fhi[open_])
+                            fhi[open_], curvature=M2[open_],
+                            slopes=(dlo[open_], dhi[open_]))
     return which, out
 
 
@@ -176,9 +179,10 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
               limit: np.ndarray | None = None) -> tuple[np.ndarray, ...]:
     """(lo, hi) of the first step over which each g leaves its side, (hi, hi)
     where it is on the other side or 0 at hi already, NaN where it does not;
-    the values watched at lo and hi, and the level watched at the end.
+    the values watched at lo and hi, the level watched at the end, and the
+    bound of |g''| over the window that holds the bracket.
     With ``collect`` (a list) every bracket is appended to it as (rows, lo,
-    hi, value at lo, value at hi) arrays and the search goes on from hi on the
+    hi, value at lo, value at hi, bound of |g''|) arrays and the search goes on from hi on the
     other side. Where ``level`` is nonzero the row watches g + level
     (``level[i]`` turns 0 once g is past ``band[i]`` on its side); lo and hi
     bracket the value watched. With ``owner``, a row past the earliest ``hi``
@@ -196,6 +200,7 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     m = start.shape[0]
     lo, hi = np.full(m, np.nan), np.full(m, np.nan)
     flo, fhi = np.full(m, np.nan), np.full(m, np.nan)
+    dlo, dhi = np.full(m, np.nan), np.full(m, np.nan)
     level = np.zeros(m) if level is None else level.copy()
     t, gt, dt = start.copy(), g0 + level, d0.copy()
     window = sig.window(ALL, np.maximum(t_end - start, h_min))
@@ -256,6 +261,8 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
         hi[done] = nxt[crossed]
         flo[done] = np.where(at_hi[crossed], gn[crossed], ga[crossed])
         fhi[done] = gn[crossed]
+        dlo[done] = np.where(at_hi[crossed], dn[crossed], dt[done])
+        dhi[done] = dn[crossed]
         t[act], gt[act], dt[act] = nxt, gn, dn
         if collect is None:
             keep = ~crossed & (nxt < t_end[act])
@@ -266,12 +273,13 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
                     keep &= nxt <= limit[act]
             act = act[keep]
             continue
-        collect.append((done, lo[done], hi[done], flo[done], fhi[done]))
+        collect.append((done, lo[done], hi[done], flo[done], fhi[done], M2[done], dlo[done],
+                        dhi[done]))
         side[done] = -side[done]
         flat = done[side[done] == 0]                     # began on the surface: g decides
         side[flat] = np.sign(gt[flat])
         act = act[nxt < t_end[act]]
-    return lo, hi, flo, fhi, level
+    return lo, hi, flo, fhi, level, M2, dlo, dhi
 
 
 def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
@@ -279,12 +287,19 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
            f_lo: np.ndarray | None = None, f_hi: np.ndarray | None = None,
            max_rounds: int = 200, guess: np.ndarray | None = None,
            evaluate: Callable[[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]
-           | None = None) -> np.ndarray:
+           | None = None, curvature: np.ndarray | None = None,
+           slopes: tuple[np.ndarray, np.ndarray] | None = None) -> np.ndarray:
     """The root of each g + ``level`` in its bracket [lo, hi] (values of opposite
     signs at the ends, or 0 at one; ``f_lo``, ``f_hi`` where the search knows
     them; a first point ``guess`` inside), to ``xtol`` plus 4 ulp of the root.
     ``evaluate(positions, t)`` (g and g' of those of ``rows``) may stand for
     :meth:`Signals.both` where the caller evaluates them more cheaply.
+    ``curvature`` (a bound of |g''| on each bracket) lets a row stop one
+    evaluation sooner: Newton's point x − c is within ``xtol`` of the root
+    once 4M₂c² ≤ (|g'| − 2M₂|c|)·xtol (with |g'| > 4M₂|c|), its error being
+    at most 2M₂c²/(|g'| − 2M₂|c|). ``slopes`` (g' at lo and hi) give the
+    first point as the root of the cubic through both ends' values and
+    slopes (:func:`_hermite_root`) instead of the secant's.
 
     Newton's method kept in the bracket: the first point is the secant of the
     ends, each evaluation gives g and g' (one pass over the terms) and
@@ -302,6 +317,8 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
     live = np.flatnonzero(np.isnan(root))
     with np.errstate(divide="ignore", invalid="ignore"):
         x = b - fb * (b - a) / (fb - fa) if guess is None else guess.copy()
+    if guess is None and slopes is not None:
+        x = _hermite_root(a, b, fa, fb, *slopes, x)
     x = np.where((x > a) & (x < b), x, 0.5 * (a + b))
     for _ in range(max_rounds):
         if not live.size:
@@ -323,6 +340,10 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
         # a correction within the tolerance: converged (it may point a hair out of
         # the bracket when g at x is rounding noise)
         done = ~hit & (np.abs(newton - xl) <= tol)
+        if curvature is not None:                # the Newton point's error is bounded
+            c, M, dd = np.abs(newton - xl), curvature[live], np.abs(d)
+            with np.errstate(invalid="ignore", over="ignore"):
+                done |= ~hit & inside & (dd > 4 * M * c) & (4 * M * c * c <= (dd - 2 * M * c) * tol)
         close = ~hit & ~done & (bl - al <= 2 * tol)
         # an end of the bracket whose Newton correction (by g' at x) is within
         # the tolerance is the root: Newton points a hair past it, and halving
@@ -339,3 +360,23 @@ def refine(sig: Signals, rows: np.ndarray, lo: np.ndarray, hi: np.ndarray,
     if live.size:
         root[live] = 0.5 * (a[live] + b[live])
     return root
+
+
+def _hermite_root(a: np.ndarray, b: np.ndarray, fa: np.ndarray, fb: np.ndarray,
+                  da: np.ndarray, db: np.ndarray, secant: np.ndarray) -> np.ndarray:
+    """The root in [a, b] of the cubic with g's values and slopes at both ends
+    (three Newton steps on it from the secant's point, kept in the bracket);
+    the secant's point where the cubic gives none (a first point only:
+    :func:`refine` narrows it on g itself)."""
+    h = b - a
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        u = np.clip((secant - a) / h, 0.0, 1.0)
+        for _ in range(3):
+            u2, u3 = u * u, u * u * u
+            p = ((2 * u3 - 3 * u2 + 1) * fa + (u3 - 2 * u2 + u) * h * da
+                 + (3 * u2 - 2 * u3) * fb + (u3 - u2) * h * db)
+            dp = ((6 * u2 - 6 * u) * (fa - fb) + (3 * u2 - 4 * u + 1) * h * da
+                  + (3 * u2 - 2 * u) * h * db)
+            u = np.clip(u - p / dp, 0.0, 1.0)
+        x = a + u * h
+    return np.where(np.isfinite(x), x, secant)
