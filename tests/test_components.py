@@ -266,7 +266,9 @@ def test_a_brake_engaged_at_rest_holds_its_own_body():
             ElasticLink("link", "crane", "left", 5e6, 2e4, 0.02, contact="negative"),
             Characteristic("motors", "left", 0.57, [1.7e5, 3.4e5], [0.4]),
             Brake("friction", "crane", 30e3), Resistance("wind", "crane", -10e3)]
-    last, first = (Model(parts(f)).run(2.0, rest=True) for f in (False, True))
+    # numeric closed forms: the exact route (SymPy's Jordan forms of this damped
+    # link's modes) took 146 s and is not what the test is about
+    last, first = (Model(parts(f)).run(2.0, rest=True, exact=False) for f in (False, True))
     crane = last.system.assembly.place["crane"][0]
     assert crane == 1 and last.result.segments[1].mode.motion[crane] == HELD
     assert last.result.segments[1].mode.motion[0] == "free"
