@@ -296,7 +296,7 @@ def test_a_batched_sweep_on_a_local_cluster_is_bit_for_bit_the_local_one(tmp_pat
                   ["peak_elastic_gearbox_torque"])
     local = run_sweep(chosen, tmp_path / "local")
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster:
+                                  dashboard_address=":0") as cluster:
         remote = run_sweep(chosen, tmp_path / "cluster", scheduler=cluster.scheduler_address)
     assert local.blocks == 1 and local.scheduler == "synchronous" and remote.blocks > 1
     a, b = (xr.open_zarr(r.dataset).load()["peak_elastic_gearbox_torque"].values

@@ -68,7 +68,7 @@ def test_local_cluster_is_bit_for_bit_the_local_scheduler(tmp_path):
     local = run_sweep(chosen, tmp_path / "local", chunk_bytes=4096)
     assert local.blocks > 4                        # several blocks, not one
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                                  dashboard_address=None) as cluster:
+                                  dashboard_address=":0") as cluster:
         remote = run_sweep(chosen, tmp_path / "cluster", scheduler=cluster.scheduler_address,
                            chunk_bytes=4096)
     assert remote.worst == local.worst and remote.within == local.within

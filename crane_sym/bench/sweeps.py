@@ -224,7 +224,7 @@ def _cluster(out: Path, n: int = 3000) -> dict[str, Any]:
     local = run_sweep(chosen, out / "local")
     start = time.perf_counter()
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
-                      dashboard_address=None) as cluster:
+                      dashboard_address=":0") as cluster:
         up = time.perf_counter() - start
         remote = run_sweep(chosen, out / "cluster", scheduler=cluster.scheduler_address)
     a, b = (xr.open_zarr(r.dataset).load() for r in (local, remote))
