@@ -96,15 +96,7 @@ def fig9_reference(q, duration, max_step=2e-3):
         if k is not None and until < duration:
             state[k] = "stuck" if y[k] == 0 and abs(net(y, k)) <= limit[k] else "sliding"
 
-    def output(times):
-        times = np.asarray(times, float)
-        out = np.empty(times.shape)
-        for a, b, sol in pieces:
-            inside = (times >= a) & (times <= b)
-            if inside.any() and b > a:
-                out[inside] = torque(sol(times[inside])) / M_st
-        return out
-    return output
+    return _sampled(pieces, lambda y: torque(y) / M_st)
 
 
 def fig11_reference(v, holds, end, max_step=2e-3):
@@ -161,12 +153,18 @@ def fig11_reference(v, holds, end, max_step=2e-3):
         t, y = _integrate(rhs, events, on_event, t, min(until, end), y, pieces, max_step)
         mode["step"] = min(k + 1, len(holds))
 
+    return _sampled(pieces, lambda y: sum(links(y)))
+
+
+def _sampled(pieces, load):
+    """The run's ``load`` of the state at given times, from its integrated
+    pieces (start, end, dense solution)."""
     def output(times):
         times = np.asarray(times, float)
         out = np.empty(times.shape)
-        for a, b_, sol in pieces:
-            inside = (times >= a) & (times <= b_)
-            if inside.any() and b_ > a:
-                out[inside] = sum(links(sol(times[inside])))
+        for a, b, sol in pieces:
+            inside = (times >= a) & (times <= b)
+            if inside.any() and b > a:
+                out[inside] = load(sol(times[inside]))
         return out
     return output

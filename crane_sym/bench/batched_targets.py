@@ -168,7 +168,7 @@ def parallel_row(case: BatchedBenchCase) -> dict[str, Any]:
     result = run_sweep(chosen, None, scheduler="processes", chunk_bytes=8 * size)
     dask_seconds = time.perf_counter() - start
     assert result.blocks == len(blocks), (result.blocks, len(blocks))
-    warm = _warm_pool_seconds(chosen, chunks, case.output)
+    warm = _warm_pool_seconds(chosen, chunks, case.output, (*call, *[a[:2] for a in axes]))
     worst = max(float(np.nanmax(b)) for b in blocks)
     return {"designs": chosen.points, "blocks": len(blocks), "workers": 2,
             "no_dask_seconds": alone, "no_dask_cpu_seconds": alone_cpu,
@@ -178,9 +178,10 @@ def parallel_row(case: BatchedBenchCase) -> dict[str, Any]:
             "same_worst": worst == result.worst[case.output][0]}
 
 
-def _warm_pool_seconds(chosen, chunks, output: str) -> float:
+def _warm_pool_seconds(chosen, chunks, output: str, tiny: tuple) -> float:
     """The same blocks by Dask's process scheduler on a pool of two workers
-    started, and made to import the package, before the clock."""
+    started, and made to import the package (``tiny``: the arguments of a
+    block of a few designs), before the clock."""
     import dask
     from concurrent.futures import ProcessPoolExecutor
 
@@ -191,19 +192,11 @@ def _warm_pool_seconds(chosen, chunks, output: str) -> float:
                              initializer=initialize_worker_process) as pool:
         lazy = grid_arrays(chosen, chunks)[output]
         # each worker imports the package on a tiny block (both busy at once)
-        for done in [pool.submit(evaluate_block, *_warm_call(chosen, output)) for _ in "ab"]:
+        for done in [pool.submit(evaluate_block, *tiny) for _ in "ab"]:
             done.result()
         start = time.perf_counter()
         dask.compute(lazy, scheduler="processes", pool=pool)
         return time.perf_counter() - start
-
-
-def _warm_call(chosen, output: str) -> tuple:
-    """Arguments of one tiny block: a worker imports what a block needs."""
-    spec = chosen.output(output)
-    names = tuple(a.name for a in chosen.axes)
-    return (chosen.derivation, output, spec.kind, spec.args, names, dict(chosen.fixed),
-            dict(chosen.options), *[a.si()[:2] for a in chosen.axes])
 
 
 def worst_row(case: BatchedBenchCase, sample: int = 40, seed: int = 28) -> dict[str, Any]:
