@@ -187,11 +187,12 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
     rhs = map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero)
     shown = latex(lhs)
     if parsed.lhs is not None:
-        if not isinstance(parsed.lhs, sp.Symbol) or str(parsed.lhs).replace(
-                "{", "").replace("}", "") in tokens:
-            raise Unreadable("its left side must be the quantity's name alone, got "
-                             f"{latex(parsed.lhs)!r}")
-        shown = latex(parsed.lhs)
+        head, power = parsed.lhs.as_base_exp()      # ω² = …: ω is its principal root
+        if not isinstance(head, sp.Symbol) or not (power.is_Integer and power > 0) or str(
+                head).replace("{", "").replace("}", "") in tokens:
+            raise Unreadable("its left side must be the quantity's name alone or its power, "
+                             f"got {latex(parsed.lhs)!r}")
+        shown, rhs = latex(head), rhs ** (1 / power)
     return sp.Eq(lhs, rhs, evaluate=False), shown
 
 
