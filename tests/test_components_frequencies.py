@@ -79,21 +79,23 @@ def test_rigid_drive_frequency_is_the_rope_and_load_alone(tmp_path):
     the two-free-masses formula, a factor 2 and the drive's mass instead of the
     load's: each a discrepancy. Period and damped frequency likewise."""
     zeta = r"\frac{d}{2 \sqrt{c m}}"
+    printed = {
+        "w": (r"\omega = \sqrt{\frac{c}{m}}", "frequency"),
+        "w free": (r"\omega = \sqrt{\frac{c (m + m_d)}{m m_d}}", "frequency"),
+        "w 2": (r"\omega = \sqrt{\frac{2 c}{m}}", "frequency"),
+        "w swapped": (r"\omega = \sqrt{\frac{c}{m_d}}", "frequency"),
+        "T": (r"T = 2 \pi \sqrt{\frac{m}{c}}", "period"),
+        "T half": (r"T = \pi \sqrt{\frac{m}{c}}", "period"),
+        "zeta": (rf"\zeta = {zeta}", "damping_ratio"),
+        "zeta 2": (r"\zeta = \frac{d}{\sqrt{c m}}", "damping_ratio"),
+        "wd": (rf"\omega_d = \sqrt{{\frac{{c}}{{m}}}} \sqrt{{1 - \left({zeta}\right)^2}}",
+               "damped_frequency"),
+        "wd no square": (rf"\omega_d = \sqrt{{\frac{{c}}{{m}}}} \sqrt{{1 - {zeta}}}",
+                         "damped_frequency")}
     verdicts = _audit(
         tmp_path, RIGID,
-        _formula("w", r"\omega = \sqrt{\frac{c}{m}}", "rope.frequency", RIGID_NAMES),
-        _formula("w free", r"\omega = \sqrt{\frac{c (m + m_d)}{m m_d}}", "rope.frequency",
-                 RIGID_NAMES),
-        _formula("w 2", r"\omega = \sqrt{\frac{2 c}{m}}", "rope.frequency", RIGID_NAMES),
-        _formula("w swapped", r"\omega = \sqrt{\frac{c}{m_d}}", "rope.frequency", RIGID_NAMES),
-        _formula("T", r"T = 2 \pi \sqrt{\frac{m}{c}}", "rope.period", RIGID_NAMES),
-        _formula("T half", r"T = \pi \sqrt{\frac{m}{c}}", "rope.period", RIGID_NAMES),
-        _formula("zeta", rf"\zeta = {zeta}", "rope.damping_ratio", RIGID_NAMES),
-        _formula("zeta 2", r"\zeta = \frac{d}{\sqrt{c m}}", "rope.damping_ratio", RIGID_NAMES),
-        _formula("wd", rf"\omega_d = \sqrt{{\frac{{c}}{{m}}}} \sqrt{{1 - \left({zeta}\right)^2}}",
-                 "rope.damped_frequency", RIGID_NAMES),
-        _formula("wd no square", rf"\omega_d = \sqrt{{\frac{{c}}{{m}}}} \sqrt{{1 - {zeta}}}",
-                 "rope.damped_frequency", RIGID_NAMES),
+        *(_formula(label, tex, f"rope.{what}", RIGID_NAMES)
+          for label, (tex, what) in printed.items()),
         _formula("wd quantities", r"\nu = \omega \sqrt{1 - \zeta^2}",
                  "rope.damped_frequency",
                  '"\\\\omega" = "rope.frequency", "\\\\zeta" = "rope.damping_ratio"'),
@@ -131,13 +133,12 @@ def test_rigid_drive_frequencies_are_the_runs(tmp_path):
 def test_two_free_masses_as_users_write_them(tmp_path):
     """ω² = c (m1 + m2)/(m1 m2) (a left side squared: ω its principal root)."""
     names = 'c = "link.stiffness", m_1 = "one.mass", m_2 = "two.mass"'
-    verdicts = _audit(
-        tmp_path, TWO_FREE,
-        _formula("right", r"\omega^2 = \frac{c (m_1 + m_2)}{m_1 m_2}", "link.frequency", names),
-        _formula("factor 2", r"\omega^2 = \frac{2 c (m_1 + m_2)}{m_1 m_2}", "link.frequency",
-                 names),
-        _formula("one mass", r"\omega^2 = \frac{c}{m_1}", "link.frequency", names),
-        _formula("missing term", r"\omega^2 = \frac{c m_1}{m_1 m_2}", "link.frequency", names))
+    printed = {"right": r"\omega^2 = \frac{c (m_1 + m_2)}{m_1 m_2}",
+               "factor 2": r"\omega^2 = \frac{2 c (m_1 + m_2)}{m_1 m_2}",
+               "one mass": r"\omega^2 = \frac{c}{m_1}",
+               "missing term": r"\omega^2 = \frac{c m_1}{m_1 m_2}"}
+    verdicts = _audit(tmp_path, TWO_FREE, *(_formula(label, tex, "link.frequency", names)
+                                            for label, tex in printed.items()))
     assert verdicts == {"right": ("confirmed", "symbolic"),
                         "factor 2": ("discrepancy", "numeric"),
                         "one mass": ("discrepancy", "numeric"),
