@@ -227,6 +227,19 @@ def test_three_elastic_roots_evaluated_by_mpmath(tmp_path):
         q = derived_quantity(read.model, "second.frequency", choice=ModeChoice(k, state))
         assert "mpmath" in q.how
         assert float(q.expr.xreplace(values).evalf(30)) == pytest.approx(omega, rel=1e-12)
+    # the rope damped: its mode's ζ is the one-mass d / (2 √(c m)), its damped
+    # frequency the run's (the rope's mode is uncoupled, so the modal value is exact)
+    path.write_text(DECOUPLED.replace('"1e7 N/m"\n', '"1e7 N/m"\ndamping = "30 N*s/m"\n'),
+                    encoding="utf-8")
+    model = read_component_file(path).model
+    choice = ModeChoice("rope", state)
+    zeta = derived_quantity(model, "rope.damping_ratio", choice=choice).expr
+    damped = derived_quantity(model, "rope.damped_frequency", choice=choice).expr
+    values = model.equations.values
+    assert float(zeta.xreplace(values).evalf(30)) == pytest.approx(30 / (2 * math.sqrt(1e7)),
+                                                                   rel=1e-12)
+    assert float(damped.xreplace(values).evalf(30)) == pytest.approx(
+        _run_frequencies(path)[2], rel=1e-12)
 
 
 def test_pendulum_as_a_spring_of_m_g_over_L(tmp_path):

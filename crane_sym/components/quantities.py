@@ -257,7 +257,7 @@ def derived_quantity(model: Model, path: str, run=None,
                         "brakes off, solved for the link loads")
     if what in MODAL:
         try:
-            expr, how = modal_quantity(model, what, choice or ModeChoice(), name, twins)
+            expr, how = modal_quantity(model, what, choice or ModeChoice(), twins)
         except ComponentError as exc:
             raise ComponentError(f"quantity {path!r}: {exc}") from None
         dimension, unit = {"period": (time, "s"), "damping_ratio": (_ONE, "1")}.get(

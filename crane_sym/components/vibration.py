@@ -167,7 +167,7 @@ def _by_link(model: Model, link: str, moving: list[int], M: sp.Matrix, K: sp.Mat
                         for g in moving])
     if not weights.any():
         raise ComponentError(f"the link {link!r} joins bodies the mode holds still")
-    values = {s: v for s, v in eq.values.items()} | {
+    values = dict(eq.values) | {
         sp.Symbol(s.name, negative=True): v for s, v in eq.values.items() if v < 0}
     m = np.array(M.xreplace(values), dtype=float).diagonal()
     k = np.array(K.xreplace(values), dtype=float)
@@ -179,7 +179,7 @@ def _by_link(model: Model, link: str, moving: list[int], M: sp.Matrix, K: sp.Mat
     return int(np.argmax(share)) + 1
 
 
-def natural_frequency(model: Model, choice: ModeChoice, link: str | None = None,
+def natural_frequency(model: Model, choice: ModeChoice,
                       signed: dict | None = None) -> ModalFrequency:
     """ω_k and ζ_k of the chosen mode (see the module docstring);
     ComponentError, one line, where the mode has no such frequency.
@@ -190,8 +190,6 @@ def natural_frequency(model: Model, choice: ModeChoice, link: str | None = None,
         The assembled and derived model.
     choice : ModeChoice
         Which frequency, of which mode of the run.
-    link : str, optional
-        The link whose quantity is asked for (named in errors).
     signed : dict, optional
         Symbols to replace before the roots are taken (a parameter the file
         gives negative, by its negative twin).
@@ -241,7 +239,7 @@ def natural_frequency(model: Model, choice: ModeChoice, link: str | None = None,
     return ModalFrequency(omega, zeta, k, how)
 
 
-def modal_quantity(model: Model, what: str, choice: ModeChoice, link: str | None = None,
+def modal_quantity(model: Model, what: str, choice: ModeChoice,
                    signed: dict | None = None) -> tuple[sp.Expr, str]:
     """(expression, how) of the modal quantity ``what`` (a key of :data:`MODAL`).
 
@@ -253,12 +251,10 @@ def modal_quantity(model: Model, what: str, choice: ModeChoice, link: str | None
         ``frequency``, ``period``, ``damping_ratio`` or ``damped_frequency``.
     choice : ModeChoice
         Which frequency, of which mode of the run.
-    link : str, optional
-        The link whose quantity is asked for.
     signed : dict, optional
         As :func:`natural_frequency` takes it.
     """
-    f = natural_frequency(model, choice, link, signed)
+    f = natural_frequency(model, choice, signed)
     if what == "frequency":
         return f.omega, f.how
     if what == "period":
