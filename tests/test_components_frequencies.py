@@ -195,6 +195,32 @@ def test_three_mass_chain_both_frequencies_from_its_characteristic_equation(tmp_
     assert int(np.argmax(share)) + 1 == 2           # what mode = "c_a" confirmed above
 
 
+#: The chain with 2 mm of backlash in c_a, pushed at its middle from rest: the
+#: gap open at the start, closed from 0.050 s to 0.118 s, open again to 0.142 s.
+GAP = (CHAIN.replace('name = "chain"', 'name = "gap"')
+       .replace('"2e6 N/m"\n', '"2e6 N/m"\nbacklash = "2 mm"\n')
+       + '\n[[resistance]]\nname = "push"\nbody = "two"\nforce = "-5 kN"\n')
+
+
+def test_gaps_as_they_are(tmp_path):
+    """The mode at the start has c_a's gap open: only m2 -c_b- m3 rings; at
+    0.08 s the gap is closed and the chain's lower root is the frequency."""
+    alone = r"\omega^2 = \frac{c_2 (m_2 + m_3)}{m_2 m_3}"
+    verdicts = _audit(
+        tmp_path, GAP,
+        _formula("open", alone, "c_b.frequency", CHAIN_NAMES),
+        _formula("chain at start", _roots("-"), "c_b.frequency", CHAIN_NAMES),
+        _formula("closed", _roots("-"), "c_b.frequency", CHAIN_NAMES, 'at = "0.08 s"\n'),
+        _formula("open at 0.08 s", alone, "c_b.frequency", CHAIN_NAMES, 'at = "0.08 s"\n'),
+        _formula("open again", alone, "c_b.frequency", CHAIN_NAMES, 'at = "0.13 s"\n'))
+    assert {k: v[0] for k, v in verdicts.items()} == {
+        "open": "confirmed", "chain at start": "discrepancy", "closed": "confirmed",
+        "open at 0.08 s": "discrepancy", "open again": "confirmed"}
+    with pytest.raises(ComponentError, match="the link 'c_a' is in its gap in this mode"):
+        _audit(tmp_path, GAP, _formula("by c_a", alone, "c_b.frequency", CHAIN_NAMES,
+                                       'mode = "c_a"\n'))
+
+
 #: A drive held by its speed law and three bodies on it: one rope alone, a chain
 #: of two; three elastic roots, the rope's far above the chain's.
 DECOUPLED = ('[model]\nname = "decoupled"\n' + MASS.format("drive", "1 t")
