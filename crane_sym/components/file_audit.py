@@ -99,9 +99,8 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
             raise ComponentError(f"{where}: {symbol} has no value in the file")
         v = abs(p.value)
         low, high = (v, v) if exact else (v / SPREAD, v * SPREAD)
-        # sampled with the sign the file gives it, never at its mirror: a real
-        # symbol (a motor's torque) would be drawn ±; a negative one is its
-        # negative twin (quantities.signed)
+        # drawn at the sign the file gives it: a real symbol (a motor's torque)
+        # never at its mirror, a negative one as its negative twin (quantities.signed)
         sign = "negative" if p.value < 0 else "positive"
         entries[symbol] = PhysicalSymbol(symbol, p.dimension, p.unit, p.description,
                                          PARAMETER, sign, (low, high))

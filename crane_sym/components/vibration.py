@@ -153,9 +153,10 @@ def _matrices(model: Model, state: Mode | None, signed: dict) -> tuple[list[int]
 
 
 def _by_link(model: Model, link: str, moving: list[int], M: sp.Matrix, K: sp.Matrix,
-             rigid: int, state: Mode | None) -> int:
+             rigid: int, state: Mode | None, signed: dict) -> int:
     """The elastic mode (1 = lowest) in which ``link`` holds the largest share of
-    the strain energy, at the file's values."""
+    the strain energy, at the file's values; ComponentError for a link in its gap
+    or between bodies the mode holds still."""
     a, eq = model.assembly, model.equations
     names = [l.part.name for l in a.links]
     i = names.index(link)
@@ -167,8 +168,7 @@ def _by_link(model: Model, link: str, moving: list[int], M: sp.Matrix, K: sp.Mat
                         for g in moving])
     if not weights.any():
         raise ComponentError(f"the link {link!r} joins bodies the mode holds still")
-    values = dict(eq.values) | {
-        sp.Symbol(s.name, negative=True): v for s, v in eq.values.items() if v < 0}
+    values = dict(eq.values) | {twin: eq.values[s] for s, twin in signed.items()}
     m = np.array(M.xreplace(values), dtype=float).diagonal()
     k = np.array(K.xreplace(values), dtype=float)
     scale = 1 / np.sqrt(m)
@@ -209,7 +209,7 @@ def natural_frequency(model: Model, choice: ModeChoice,
                                 ": every body is held or moved by a law"))
     which = choice.which
     if isinstance(which, str) and which != LOWEST:
-        which = _by_link(model, which, moving, M, K, rigid, choice.state)
+        which = _by_link(model, which, moving, M, K, rigid, choice.state, signed or {})
     k = 1 if which == LOWEST else int(which)
     if not 1 <= k <= count:
         raise ComponentError(f"natural frequency number {k} {where}: the mode has "
