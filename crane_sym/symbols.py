@@ -19,7 +19,7 @@ DEFINED = "defined"        # a quantity a step defines (p, A, B, F, ...)
 STATE = "state"            # a component of the state vector a solver passes in
 
 _ROLES = (PARAMETER, TIME, COORDINATE, DEFINED, STATE)
-_SIGNS = ("positive", "nonnegative", "real")
+_SIGNS = ("positive", "nonnegative", "real", "negative")
 #: How far beyond a symbol's physical range its generated functions serve.
 SERVE_FACTOR = 1e6
 
@@ -41,8 +41,9 @@ class PhysicalSymbol:
     role : str
         One of ``parameter``, ``time``, ``coordinate``, ``defined``.
     sign : str
-        ``positive``, ``nonnegative`` or ``real``: the admissible sign, checked
-        by generated code and used when sampling.
+        ``positive``, ``nonnegative``, ``real`` or ``negative`` (a value a
+        component file gives below zero, sampled at its own sign): the
+        admissible sign, checked by generated code and used when sampling.
     sample_range : (float, float)
         Physical range (SI) sampled log-uniformly by the numeric check.
     serve_range : (float, float), optional
@@ -77,10 +78,11 @@ class PhysicalSymbol:
         """(low, high): the values (SI) a generated function accepts for this
         symbol and returns a finite value for. ``serve_range``, or
         ``SERVE_FACTOR`` times beyond ``sample_range`` each way; from 0 for a
-        nonnegative symbol, from −high for a real one."""
+        nonnegative symbol, from −high for a real one, −high to −low for a negative one."""
         lo, hi = self.serve_range or (float(f"{self.sample_range[0] / SERVE_FACTOR:.6g}"),
                                       float(f"{self.sample_range[1] * SERVE_FACTOR:.6g}"))
-        return {"positive": (lo, hi), "nonnegative": (0.0, hi)}.get(self.sign, (-hi, hi))
+        return {"positive": (lo, hi), "nonnegative": (0.0, hi),
+                "negative": (-hi, -lo)}.get(self.sign, (-hi, hi))
 
     @property
     def name(self) -> str:

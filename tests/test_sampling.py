@@ -114,3 +114,19 @@ def test_a_symbol_with_two_meanings_has_no_one_definition():
     defs = physical_definitions(d.steps, d.symbols)
     (bf,) = _symbols(d, "BF_SB")
     assert bf not in defs and d.symbols[bf].sample_range == (1.0, 4.0)
+
+
+def test_a_negative_symbol_is_drawn_at_its_own_sign():
+    """A value a component file gives below zero is sampled there, never at its
+    mirror; what generated code accepts for it is below zero too."""
+    from sympy.physics.units import force
+    from crane_sym.audit.sampling import draw
+    from crane_sym.symbols import PhysicalSymbol
+    R = sp.Symbol("R", negative=True)
+    entry = PhysicalSymbol(R, force, "N", "a resistance", sign="negative",
+                           sample_range=(1e3, 4e3))
+    rng = np.random.default_rng(7)
+    values = [draw(entry, rng) for _ in range(200)]
+    assert all(-4e3 <= v <= -1e3 for v in values)
+    low, high = entry.serves
+    assert low < high < 0

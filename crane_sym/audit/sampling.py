@@ -40,10 +40,10 @@ _MAX_OPS = 400
 
 def draw(entry: PhysicalSymbol, rng: np.random.Generator) -> float:
     """A value of ``entry`` in its physical range (log-uniform), with a random sign
-    when the symbol is ``real``."""
+    when the symbol is ``real``, below zero when it is ``negative``."""
     lo, hi = entry.sample_range
     value = float(np.exp(rng.uniform(np.log(lo), np.log(hi))))
-    if entry.sign == "real" and rng.random() < 0.5:
+    if entry.sign == "negative" or entry.sign == "real" and rng.random() < 0.5:
         value = -value
     return value
 
@@ -103,6 +103,8 @@ def separation(values: dict, dims: dict) -> float:
 def _sign_ok(entry: PhysicalSymbol, value) -> bool:
     if entry.sign == "positive":
         return value > 0
+    if entry.sign == "negative":
+        return value < 0
     return value >= 0 if entry.sign == "nonnegative" else True
 
 

@@ -34,6 +34,7 @@ from crane_sym.components.formulas import TIME, FileFormula
 from crane_sym.components.parts import ComponentError, value
 from crane_sym.components.quantities import KINDS, NUMERIC, derived_quantity, parameters
 from crane_sym.components.reading import ComponentFile
+from crane_sym.components.vibration import ModeChoice, mode_at
 from crane_sym.derivation import Derivation, Step
 from crane_sym.latex import latex
 from crane_sym.published import Cause, PublishedFormula
@@ -47,9 +48,13 @@ NUMERIC_TOLERANCE = 1e-9
 SPREAD = 2.0
 
 
-def _sign(symbol: sp.Symbol) -> str:
-    return ("positive" if symbol.is_positive else
-            "nonnegative" if symbol.is_nonnegative else "real")
+def _choice(read: ComponentFile, f: FileFormula) -> ModeChoice | None:
+    """Which natural frequency the formula means, of the run's mode at its ``at``."""
+    if not f.modal:
+        return None
+    end = value("run", "duration", read.duration, time).si
+    state, instant = mode_at(read.model, f.at, end, read.body, read.speed, read.rest)
+    return ModeChoice(f.mode, state, instant)
 
 
 def _numeric(read: ComponentFile, f: FileFormula) -> bool:
@@ -74,7 +79,8 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
     model = read.model
     where = f"{read.path.name}: [[formula]] {f.name!r}"
     try:
-        quantity = derived_quantity(model, f.quantity, run)
+        choice = _choice(read, f)
+        quantity = derived_quantity(model, f.quantity, run, choice)
     except ComponentError as exc:
         raise ComponentError(f"{where}: {exc}") from None
     exact = _numeric(read, f)
@@ -92,14 +98,10 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
         if p is None or not p.value == p.value:          # a steady motor's torque: no value
             raise ComponentError(f"{where}: {symbol} has no value in the file")
         v = abs(p.value)
-        if exact and p.value < 0:
-            raise ComponentError(f"{where}: {p.path} is negative ({p.value:g} {p.unit}); a "
-                                 "number of the run is compared at the file's values, which "
-                                 "are sampled as magnitudes")
         low, high = (v, v) if exact else (v / SPREAD, v * SPREAD)
-        # a number of the run is compared at the file's value itself, never at
-        # its mirror: a real symbol (a motor's torque) would be sampled ±
-        sign = "positive" if exact and p.value > 0 else _sign(symbol)
+        # drawn at the sign the file gives it: a real symbol (a motor's torque)
+        # never at its mirror, a negative one as its negative twin (quantities.signed)
+        sign = "negative" if p.value < 0 else "positive"
         entries[symbol] = PhysicalSymbol(symbol, p.dimension, p.unit, p.description,
                                          PARAMETER, sign, (low, high))
 
@@ -115,7 +117,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
             if by_path[target].value != 0:
                 entry(symbol)
         else:
-            inner = derived_quantity(model, target, run)
+            inner = derived_quantity(model, target, run, choice)
             what = f"{target}: {KINDS[target.partition('.')[2]][1]}"
             if inner.numeric:        # a number of the run: a parameter at its magnitude
                 symbol = sp.Symbol(f"quantity_{len(names)}", positive=True)
@@ -184,11 +186,12 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
     rhs = map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero)
     shown = latex(lhs)
     if parsed.lhs is not None:
-        if not isinstance(parsed.lhs, sp.Symbol) or str(parsed.lhs).replace(
-                "{", "").replace("}", "") in tokens:
-            raise Unreadable("its left side must be the quantity's name alone, got "
-                             f"{latex(parsed.lhs)!r}")
-        shown = latex(parsed.lhs)
+        head, power = parsed.lhs.as_base_exp()      # ω² = …: ω is its principal root
+        if not isinstance(head, sp.Symbol) or not (power.is_Integer and power > 0) or str(
+                head).replace("{", "").replace("}", "") in tokens:
+            raise Unreadable("its left side must be the quantity's name alone or its power, "
+                             f"got {latex(parsed.lhs)!r}")
+        shown, rhs = latex(head), rhs ** (1 / power)
     return sp.Eq(lhs, rhs, evaluate=False), shown
 
 

@@ -11,12 +11,20 @@ user's source, to be audited against the model derived from the components.
     quantity = "gearbox_mesh.static"         # what the formula gives
     tolerance = 0.0                          # optional: relative, for a rounded print
     cause = "..."                            # optional: the user's diagnosis of a finding
+    mode = "lowest"                          # optional, for a frequency: "lowest", k, or a link
+    at = "0.2 s"                             # optional, for a frequency: the run's instant
 
 ``symbols`` maps each name the print uses to a parameter of the model
 (``<component>.<key>``, :func:`crane_sym.components.quantities.parameters`),
 to ``"time"``, or to a derived quantity (its expression is put in);
 ``quantity`` names what the formula's left side is
-(:mod:`crane_sym.components.quantities`). The names are checked when the
+(:mod:`crane_sym.components.quantities`). ``mode`` and ``at`` say which
+natural frequency a modal quantity (``frequency``, ``period``,
+``damping_ratio``, ``damped_frequency``, named by ``quantity`` or in
+``symbols``) means: the lowest (the default), the k-th from the lowest
+(``mode = 2``), or the one whose mode loads a link most (``mode = "rope"``),
+of the mode the run is in at ``at`` (default: its start;
+:mod:`crane_sym.components.vibration`). The names are checked when the
 file is read: an unknown key, parameter or quantity is one line naming it.
 The LaTeX itself is read only when the file is audited
 (:mod:`crane_sym.components.file_audit`), never evaluated.
@@ -27,15 +35,19 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
+from sympy.physics.units import time
+
 from crane_sym.components.model import Model
-from crane_sym.components.parts import ComponentError
+from crane_sym.components.parts import ComponentError, value
 from crane_sym.components.quantities import KINDS, parameters
+from crane_sym.components.vibration import LOWEST, MODAL
 from crane_sym.scenes.options import did_you_mean
 
 __all__ = ["FORMULA_KEYS", "FileFormula", "TIME", "read_formulas"]
 
 #: Keys of a [[formula]] table: required, then optional.
-FORMULA_KEYS = (("name", "latex", "quantity"), ("symbols", "tolerance", "cause"))
+FORMULA_KEYS = (("name", "latex", "quantity"),
+                ("symbols", "tolerance", "cause", "mode", "at"))
 #: The word a symbol maps to for time.
 TIME = "time"
 _PRINTED_NAME = re.compile(r"\S{1,40}")
@@ -51,6 +63,14 @@ class FileFormula:
     symbols: tuple[tuple[str, str], ...]
     tolerance: float = 0.0
     cause: str = ""
+    mode: int | str = LOWEST
+    at: float | None = None
+
+    @property
+    def modal(self) -> bool:
+        """Whether the formula names a natural frequency or a quantity of one."""
+        return any(p.partition(".")[2] in MODAL
+                   for p in [self.quantity, *(t for _, t in self.symbols)])
 
 
 def _quantity_names(model: Model) -> dict[str, str]:
@@ -140,8 +160,30 @@ def read_formulas(entries: Any, model: Model, where: str) -> tuple[FileFormula, 
                 or not 0 <= tolerance < 1:
             raise ComponentError(f"{here}: tolerance must be a number in [0, 1), "
                                  f"got {tolerance!r}")
-        out.append(FileFormula(entry["name"], entry["latex"],
-                               _check_quantity(entry["quantity"], model, here, "quantity"),
-                               _check_symbols(entry.get("symbols", {}), model, here),
-                               float(tolerance), entry.get("cause", "")))
+        f = FileFormula(entry["name"], entry["latex"],
+                        _check_quantity(entry["quantity"], model, here, "quantity"),
+                        _check_symbols(entry.get("symbols", {}), model, here),
+                        float(tolerance), entry.get("cause", ""),
+                        *_check_choice(entry, model, here))
+        if not f.modal and ("mode" in entry or "at" in entry):
+            raise ComponentError(f"{here}: mode and at choose a natural frequency; the "
+                                 f"formula names none ({', '.join(MODAL)})")
+        out.append(f)
     return tuple(out)
+
+
+def _check_choice(entry: dict, model: Model, where: str) -> tuple[int | str, float | None]:
+    """(mode, at) of a formula: which natural frequency, at which instant of the run."""
+    mode = entry.get("mode", LOWEST)
+    links = [l.part.name for l in model.assembly.links]
+    if isinstance(mode, bool) or not (isinstance(mode, int) and mode >= 1 or
+                                      mode == LOWEST or mode in links):
+        raise ComponentError(f"{where}: mode must be \"{LOWEST}\", a number k >= 1 (the k-th "
+                             f"from the lowest) or an elastic link ({', '.join(links)}), "
+                             f"got {mode!r}")
+    at = entry.get("at")
+    if at is not None:
+        at = value(where, "at", at, time).si
+        if not at >= 0:
+            raise ComponentError(f"{where}: at must be an instant >= 0 s, got {at:g} s")
+    return mode, at

@@ -13,8 +13,13 @@ A parameter is named ``<component>.<key>`` as the component file writes it
                            on, brakes off, gaps on their flank): each rigid group's
                            equilibrium Σ_k F_k ∂u_k/∂q = Q, solved for the link loads
                            (and a ``steady`` motor's torque)
-``<link>.frequency``       the natural angular frequency of a model of two rigid groups
-                           joined by this link: Ω² = tr(M⁻¹K), undamped, gap closed
+``<link>.frequency``       a natural angular frequency ω_k of the mode the run is in
+                           (:mod:`crane_sym.components.vibration`: bodies a speed law
+                           moves and brakes that hold fixed, gaps as they are; the
+                           lowest, the k-th, or the one loading a link most)
+``<link>.period``          its period 2π/ω_k
+``<link>.damping_ratio``   its modal damping ratio ζ_k = φᵀDφ / (2 ω_k φᵀMφ)
+``<link>.damped_frequency`` its damped angular frequency ω_k √(1 − ζ_k²)
 ``<link>.response``        the link's load F(t) in closed form after a start at rest
                            with zero twist (:func:`crane_sym.components.closed.link_response`;
                            a model that never switches)
@@ -23,7 +28,10 @@ A parameter is named ``<component>.<key>`` as the component file writes it
 ========================== ===========================================================
 
 A parameter whose value is zero (a shaft without inertia, an undamped link)
-is put to zero in every symbolic quantity, as the derivation drops it.
+is put to zero in every symbolic quantity, as the derivation drops it; one
+the file gives negative (a resistance, a gear that turns the other way) is
+its negative twin, a symbol of the same name declared negative
+(:func:`signed`), so that a quantity keeps the sign the file gives.
 """
 from __future__ import annotations
 
@@ -36,9 +44,10 @@ from crane_sym.components.loads import Characteristic, Gravity, Motor, Resistanc
 from crane_sym.components.model import Model
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, ComponentError, Drum,
                                         Gear)
+from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
-           "static_loads"]
+           "signed", "static_loads"]
 
 _ONE = Dimension(1)
 #: SI unit of each kind of value, by the kind of body it acts on.
@@ -51,7 +60,7 @@ UNITS = {"inertia": {ROTATING: "kg*m^2", TRANSLATING: "kg"},
 #: What a quantity of each name is, and the kind of component it belongs to.
 KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
          "static": ("link", "its load in the steady motion at the start"),
-         "frequency": ("link", "the natural angular frequency of the model's elastic mode"),
+         **{what: ("link", text) for what, text in MODAL.items()},
          "response": ("link", "its load F(t) in closed form after a start at rest"),
          "peak": ("link", "its largest load over the file's run"),
          "factor": ("link", "its dynamic factor: peak over reference or static load")}
@@ -71,6 +80,19 @@ class Parameter:
     description: str
 
 
+def signed(model: Model) -> dict[sp.Symbol, sp.Symbol]:
+    """Each parameter symbol whose value the file gives negative -> its twin of the
+    same name declared negative: what every quantity and formula uses instead.
+
+    Parameters
+    ----------
+    model : Model
+        The assembled and derived model.
+    """
+    return {s: sp.Symbol(s.name, negative=True) for s, v in model.equations.values.items()
+            if v < 0}
+
+
 def parameters(model: Model) -> dict[str, Parameter]:
     """Every parameter of ``model`` that its equations hold, by ``<component>.<key>``.
 
@@ -81,13 +103,14 @@ def parameters(model: Model) -> dict[str, Parameter]:
     """
     a, eq = model.assembly, model.equations
     symbols = {s.name: s for s in eq.values} | {s.name: s for s in eq.motor_loads}
+    twins = signed(model)
     out: dict[str, Parameter] = {}
 
     def add(path: str, name: str, dimension: Dimension, unit: str, what: str) -> None:
         s = symbols.get(name)
         if s is not None:
-            out[path] = Parameter(path, s, float(eq.values.get(s, float("nan"))), dimension,
-                                  unit, what)
+            out[path] = Parameter(path, twins.get(s, s), float(eq.values.get(s, float("nan"))),
+                                  dimension, unit, what)
     for body in a.bodies.values():
         key = "inertia" if body.motion == ROTATING else "mass"
         add(f"{body.name}.{key}", f"{'J' if key == 'inertia' else 'm'}_{body.name}",
@@ -174,8 +197,9 @@ def static_loads(model: Model) -> dict[str, sp.Expr]:
     if free:
         raise ComponentError("a static load: the elastic links form a loop, so their "
                              "static loads are not fixed by equilibrium alone")
-    zero = _zeros(model)
-    return {l.part.name: sp.simplify(v.xreplace(zero)) for l, v in zip(a.links, values)}
+    zero, twins = _zeros(model), signed(model)
+    return {l.part.name: sp.simplify(v.xreplace(zero).xreplace(twins))
+            for l, v in zip(a.links, values)}
 
 
 def _link(model: Model, name: str):
@@ -185,11 +209,12 @@ def _link(model: Model, name: str):
     raise ComponentError(f"no elastic link {name!r}")
 
 
-def derived_quantity(model: Model, path: str, run=None) -> Quantity:
+def derived_quantity(model: Model, path: str, run=None,
+                     choice: ModeChoice | None = None) -> Quantity:
     """The quantity named ``path`` (see the module docstring); ``run`` (a
     :class:`~crane_sym.components.model.ComponentRun`) for the numbers of the
-    run. ComponentError, one line, for a name the model has not or a quantity
-    it cannot derive.
+    run, ``choice`` for a modal one. ComponentError, one line, for a name the
+    model has not or a quantity it cannot derive.
 
     Parameters
     ----------
@@ -199,20 +224,23 @@ def derived_quantity(model: Model, path: str, run=None) -> Quantity:
         ``<component>.<quantity>``.
     run : ComponentRun, optional
         The file's run (needed for ``peak`` and ``factor``).
+    choice : ModeChoice, optional
+        Which natural frequency of which mode of the run (default: the lowest,
+        every gap closed, no brake holding).
     """
     name, _, what = path.partition(".")
     if what not in KINDS:
         raise ComponentError(f"unknown quantity {path!r}; a quantity is <component>."
                              f"{{{', '.join(KINDS)}}}")
     a, eq = model.assembly, model.equations
-    zero = _zeros(model)
+    zero, twins = _zeros(model), signed(model)
     if KINDS[what][0] == "body":
         if name not in a.bodies:
             raise ComponentError(f"quantity {path!r}: no body {name!r}; bodies: "
                                  f"{', '.join(a.bodies)}")
         g, _, kappa = a.place[name]
         M = eq.linear[0]
-        inertia = sp.simplify((M[g, g] / kappa**2).xreplace(zero))
+        inertia = sp.simplify((M[g, g] / kappa**2).xreplace(zero).xreplace(twins))
         body = a.bodies[name]
         key = "inertia" if body.motion == ROTATING else "mass"
         return Quantity(path, inertia, DIMENSIONS[key][body.motion], UNITS[key][body.motion],
@@ -227,23 +255,21 @@ def derived_quantity(model: Model, path: str, run=None) -> Quantity:
         return Quantity(path, static_loads(model)[name], *load,
                         "each rigid group in equilibrium, Σ F_k ∂u_k/∂q = Q, motors on, "
                         "brakes off, solved for the link loads")
-    if what == "frequency":
-        if len(a.groups) != 2:
-            raise ComponentError(f"quantity {path!r}: a natural frequency of a link needs "
-                                 f"a model of two rigid groups; this one has {len(a.groups)}")
-        M, _, K, _ = eq.linear
-        closed = {c: 1 for c in eq.contact} | {d: 0 for d in eq.flank}
-        square = sp.simplify((M.inv() * K).trace().xreplace(closed).xreplace(zero))
-        return Quantity(path, sp.sqrt(square), 1 / time, "rad/s",
-                        "Ω² = tr(M⁻¹K) of Lagrange's equations, the gap closed (one "
-                        "rigid-body mode at 0)")
+    if what in MODAL:
+        try:
+            expr, how = modal_quantity(model, what, choice or ModeChoice(), twins)
+        except ComponentError as exc:
+            raise ComponentError(f"quantity {path!r}: {exc}") from None
+        dimension, unit = {"period": (time, "s"), "damping_ratio": (_ONE, "1")}.get(
+            what, (1 / time, "rad/s"))
+        return Quantity(path, expr, dimension, unit, how)
     if what == "response":
         from crane_sym.components.closed import link_response
         try:
             force_t = link_response(model).force
         except ComponentError as exc:
             raise ComponentError(f"quantity {path!r}: {exc}") from None
-        return Quantity(path, sp.simplify(force_t.xreplace(zero)), *load,
+        return Quantity(path, sp.simplify(force_t.xreplace(zero).xreplace(twins)), *load,
                         "the link's relative equation (Komarov's elimination) solved from "
                         "rest at zero twist, F = c u + d u̇")
     if run is None:
