@@ -174,3 +174,19 @@ symbols = { m = "hook.mass", g = "weight.g", r = "reel.radius", n = "reel.reevin
     assert record["label"] == "coupling, with the run's speed"
     assert record["verdict"] == "discrepancy", record["detail"]
     assert r"Printed − derived: $\frac{J v}{\tau}$" in record["detail"]
+
+
+def test_a_symbol_mapped_to_a_zero_value_is_read_and_put_to_zero(tmp_path, capsys):
+    """The run's speed of 0 rpm, as any zero value, is put to zero as the
+    derivation drops it: the print's ``J v / τ`` vanishes and the formula
+    confirms (it was a name the parser could not find before)."""
+    extra = r'''
+[[formula]]
+name = "at rest"
+latex = "M = \\frac{m g r}{n} + \\frac{J v}{\\tau}"
+quantity = "coupling.static"
+symbols = { m = "hook.mass", g = "weight.g", r = "reel.radius", n = "reel.reeving", J = "motor.inertia", v = "run.speed", "\\tau" = "stop.delay" }
+'''
+    assert main(["audit", str(_gantry(tmp_path, extra)), "--format", "json", "-q"]) == 0
+    record = json.loads(capsys.readouterr().out)[-1]
+    assert (record["label"], record["verdict"]) == ("at rest", "confirmed"), record["detail"]

@@ -92,6 +92,10 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
         if p is None or not p.value == p.value:          # a steady motor's torque: no value
             raise ComponentError(f"{where}: {symbol} has no value in the file")
         v = abs(p.value)
+        if v == 0:         # put to zero before any check (``zero``): its name is only read
+            entries[symbol] = PhysicalSymbol(symbol, p.dimension, p.unit, p.description,
+                                             PARAMETER, _sign(symbol))
+            return
         if exact and p.value < 0:
             raise ComponentError(f"{where}: {p.path} is negative ({p.value:g} {p.unit}); a "
                                  "number of the run is compared at the file's values, which "
@@ -112,8 +116,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
                                         (end / 100, end))
         elif target in by_path:
             symbol = by_path[target].symbol
-            if by_path[target].value != 0:
-                entry(symbol)
+            entry(symbol)          # a zero value too: its name is read, then put to 0
         else:
             inner = derived_quantity(model, target, run)
             what = f"{target}: {KINDS[target.partition('.')[2]][1]}"
