@@ -100,6 +100,16 @@ symbols = { m = "hook.mass", g = "weight.g", r = "reel.radius", n = "reel.reevin
 '''
 
 
+#: A static-load formula with a term in the run's speed over a brake's delay.
+SPEED_TERM = r'''
+[[formula]]
+name = "{name}"
+latex = "M = \\frac{{m g r}}{{n}} + \\frac{{J v}}{{\\tau}}"
+quantity = "coupling.static"
+symbols = {{ m = "hook.mass", g = "weight.g", r = "reel.radius", n = "reel.reeving", J = "motor.inertia", v = "run.speed", "\\tau" = "stop.delay" }}
+'''
+
+
 def _gantry(tmp_path: Path, extra: str = "") -> Path:
     path = tmp_path / "gantry.toml"
     path.write_text(GANTRY + extra, encoding="utf-8")
@@ -155,13 +165,7 @@ def test_the_runs_speed_is_a_symbol_a_formula_may_name(tmp_path, capsys):
     """``run.speed`` (100 rpm at the motor) and a brake's delay: the static load
     depends on neither, so a print that adds ``J v / τ`` is found off by
     exactly that term."""
-    extra = r'''
-[[formula]]
-name = "coupling, with the run's speed"
-latex = "M = \\frac{m g r}{n} + \\frac{J v}{\\tau}"
-quantity = "coupling.static"
-symbols = { m = "hook.mass", g = "weight.g", r = "reel.radius", n = "reel.reeving", J = "motor.inertia", v = "run.speed", "\\tau" = "stop.delay" }
-'''
+    extra = SPEED_TERM.format(name="coupling, with the run's speed")
     path = _gantry(tmp_path, extra)
     path.write_text(path.read_text(encoding="utf-8").replace('speed = "0 rpm"',
                                                              'speed = "100 rpm"'))
@@ -180,13 +184,7 @@ def test_a_symbol_mapped_to_a_zero_value_is_read_and_put_to_zero(tmp_path, capsy
     """The run's speed of 0 rpm, as any zero value, is put to zero as the
     derivation drops it: the print's ``J v / τ`` vanishes and the formula
     confirms (it was a name the parser could not find before)."""
-    extra = r'''
-[[formula]]
-name = "at rest"
-latex = "M = \\frac{m g r}{n} + \\frac{J v}{\\tau}"
-quantity = "coupling.static"
-symbols = { m = "hook.mass", g = "weight.g", r = "reel.radius", n = "reel.reeving", J = "motor.inertia", v = "run.speed", "\\tau" = "stop.delay" }
-'''
+    extra = SPEED_TERM.format(name="at rest")
     assert main(["audit", str(_gantry(tmp_path, extra)), "--format", "json", "-q"]) == 0
     record = json.loads(capsys.readouterr().out)[-1]
     assert (record["label"], record["verdict"]) == ("at rest", "confirmed"), record["detail"]
