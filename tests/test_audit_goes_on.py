@@ -188,3 +188,18 @@ def test_a_symbol_mapped_to_a_zero_value_is_read_and_put_to_zero(tmp_path, capsy
     assert main(["audit", str(_gantry(tmp_path, extra)), "--format", "json", "-q"]) == 0
     record = json.loads(capsys.readouterr().out)[-1]
     assert (record["label"], record["verdict"]) == ("at rest", "confirmed"), record["detail"]
+
+
+def test_the_table_keeps_its_columns_past_fourteen_characters(tmp_path, capsys):
+    """Every column starts where its header does, whatever the length of a
+    model's name or a formula's label (a fixed width of 15 broke both)."""
+    path = _gantry(tmp_path)
+    path.write_text(path.read_text(encoding="utf-8").replace(
+        'name = "gantry_hoist"', 'name = "gantry_hoist_with_parallel_ropes"'), encoding="utf-8")
+    assert main(["audit", str(path), "--format", "table", "-q"]) == 0
+    head, _, *rows = capsys.readouterr().out.splitlines()
+    starts = [head.index(name) for name in ("label", "verdict", "basis", "cause", "method")]
+    records = [row for row in rows if row.startswith("gantry_hoist")]
+    assert len(records) == 3
+    for row in records:
+        assert all(row[at - 1] == " " and row[at] != " " for at in starts), row

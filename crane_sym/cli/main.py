@@ -37,13 +37,15 @@ _SCENES = ("A scene by name (`crane-sym list --scenes` names the shipped ones)\n
 #: Where the names an example uses come from, shown after it.
 _FILES = ("\nA drive train of your own: its component TOML file (README, \"Your own "
           "drive train\").")
+#: Where a component file to start from is (the repository's examples folder:
+#: files to copy and edit, not installed with the package).
+_EXAMPLES = ("\nA drive train of your own: its component TOML file (the repository's "
+             "examples/drive_trains/ holds examples to copy).")
 NAMES = {"audit": _PAPERS + _FILES, "walkthrough": _PAPERS + _FILES, "accuracy": _PAPERS,
          "bench": _PAPERS,
          "generate": _SCENES, "sweep": _SCENES,
-         "run": _SCENES + "\nA drive train of your own: its component TOML file "
-                          "(examples/drive_trains/ has four).",
-         "model": "A drive train of your own: its component TOML file "
-                  "(examples/drive_trains/ has four)."}
+         "run": _SCENES + _EXAMPLES,
+         "model": _EXAMPLES.strip()}
 
 
 def _ids(names: Sequence[str]) -> list[str]:
