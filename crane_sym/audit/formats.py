@@ -126,17 +126,22 @@ def rests_on_lines(r: AuditRecord) -> list[str]:
 
 
 def as_table(records: Sequence[AuditRecord], width: int = 90) -> str:
-    """Fixed-width text table, detail cut to fit, each row followed by what it
-    rests on (indented), then the counts."""
-    head = (f"{'derivation':<15} {'label':<26} {'verdict':<26} {'basis':<20} "
-            f"{'cause':<24} {'method':<9} detail")
+    """Fixed-width text table, each column as wide as its widest entry, detail
+    cut to fit, each row followed by what it rests on (indented), then the
+    counts."""
+    rows = [(r.derivation, r.label, r.verdict, r.basis, r.cause.id if r.cause else "—",
+             r.method) for r in records]
+    names = ("derivation", "label", "verdict", "basis", "cause", "method")
+    widths = [max(len(text) for text in column) for column in zip(names, *rows)]
+
+    def line(cells: Sequence[str], detail: str) -> str:
+        return " ".join(f"{c:<{w}}" for c, w in zip(cells, widths)) + " " + detail
+    head = line(names, "detail")
     lines = [head, "-" * len(head)]
-    for r in records:
+    for r, cells in zip(records, rows):
         detail = r.detail if len(r.detail) <= width else r.detail[:width - 1] + "…"
-        cause = r.cause.id if r.cause else "—"
-        lines.append(f"{r.derivation:<15} {r.label:<26} {r.verdict:<26} {r.basis:<20} "
-                     f"{cause:<24} {r.method:<9} {detail}")
-        lines += [f"{'':<17}↳ {line}" for line in rests_on_lines(r)]
+        lines.append(line(cells, detail))
+        lines += [f"{'':<{widths[0] + 2}}↳ {text}" for text in rests_on_lines(r)]
     lines += ["", summary(records)]
     return "\n".join(lines)
 

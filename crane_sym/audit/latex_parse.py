@@ -28,6 +28,8 @@ from functools import lru_cache
 import sympy as sp
 from sympy.utilities.exceptions import SymPyDeprecationWarning
 
+from crane_sym.audit.parse_hints import parse_hint
+
 __all__ = ["Unreadable", "candidates", "layout", "parse", "placeholder", "split",
            "wrap_calls", "bound_variables", "BOUND", "parse_side"]
 
@@ -225,7 +227,9 @@ def parse_side(side: str, functions: frozenset) -> sp.Basic:
         raise
     except Exception as err:       # lark's UnexpectedInput and its kin
         first = str(err).splitlines()[0] if str(err) else type(err).__name__
-        raise Unreadable(f"the parser cannot read {side!r}: {first}") from None
+        hint = parse_hint(wrap_calls(side), first)
+        raise Unreadable(f"the parser cannot read {side!r}: {first}"
+                         + (f"; {hint}" if hint else "")) from None
 
 
 def candidates(tex: str) -> list[str]:

@@ -13,12 +13,14 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+import tempfile
 import time
 from pathlib import Path
 from typing import Sequence
 
 from crane_sym import output_files, progress, registry
 from crane_sym.cli import sweep as cli_sweep
+from crane_sym.cli.unasked import say_no_files
 from crane_sym.markdown import markdown_table
 
 #: What each count option of ``bench`` accepts: (least, most).
@@ -45,10 +47,23 @@ def _machine() -> str:
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    """Speed against error of the generated functions and the SciPy alternatives."""
+    """Speed against error of the generated functions and the SciPy alternatives
+    (without ``--out``: the same run, its files made in a temporary folder,
+    removed at the end, and not named)."""
     quiet = getattr(args, "quiet", False)
     with progress.reporting(progress.Progress(progress.wanted(quiet))):
-        return _bench(args)
+        if args.out:
+            return _bench(args, Path(args.out), keep=True)
+        with tempfile.TemporaryDirectory(prefix="crane_sym_bench_") as scratch:
+            code = _bench(args, Path(scratch) / "bench", keep=False)
+    say_no_files("--out DIR", "the Markdown and PNG files", stderr=args.format == "json")
+    return code
+
+
+def _wrote(paths: Sequence[Path], keep: bool) -> None:
+    """Name the files written, when they are the user's to keep."""
+    if keep and paths:
+        print("wrote " + ", ".join(map(str, paths)))
 
 
 def check_options(args: argparse.Namespace) -> None:
@@ -66,10 +81,11 @@ def check_options(args: argparse.Namespace) -> None:
         if not low <= rtol <= high:
             raise ValueError(f"--rtols: each tolerance must be in [{low:g}, {high:g}], "
                              f"got {rtol:g}")
-    output_files.check_folder(args.out)
+    if args.out:
+        output_files.check_folder(args.out)
 
 
-def _bench(args: argparse.Namespace) -> int:
+def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
     # imported on use: see the module docstring
     from crane_sym.bench import functions as bench
     from crane_sym.bench import memory as bench_memory
@@ -79,15 +95,16 @@ def _bench(args: argparse.Namespace) -> int:
     say = progress.current()
     ids = _ids(args.ids)                 # an unknown id fails before the folder is made
     check_options(args)                  # so does an option out of its range
-    out_dir = Path(args.out)
     if args.sweep:
         output_files.out_folder(out_dir)
         with say.task("design sweeps against per-design integration"):
-            cli_sweep.run_bench(out_dir, args.format == "json")
+            _wrote([cli_sweep.run_bench(out_dir, args.format == "json")],
+                   keep and args.format == "table")
         if not args.ids and not getattr(args, "components", None):
             return 0                       # `bench --sweep` alone: the sweep bench only
     if getattr(args, "components", None):
-        _bench_components(args.components, out_dir, args.format == "table")
+        _wrote([_bench_components(args.components, out_dir, args.format == "table")],
+               keep and args.format == "table")
         if not args.ids:                   # `bench --components FILE` alone: only that
             return 0
     everything, goals = [], []
@@ -159,7 +176,7 @@ def _bench(args: argparse.Namespace) -> int:
                              f"{i}: best tuned integrator / closed form against N")
         if args.format == "table":
             print("\n".join(lines[:5 + len(heads)]))
-            print(f"wrote {md}" + (f" and {', '.join(map(str, pngs))}" if pngs else ""))
+            _wrote([md, *pngs], keep)
     if goals and args.format == "table":
         print("\n## Targets (this run)\n")
         print(bt.goals_table(goals))
@@ -167,17 +184,19 @@ def _bench(args: argparse.Namespace) -> int:
         if registry.get(i).tabulated:
             output_files.out_folder(out_dir)
             with say.task(f"{i}: piecewise-linear runs against solve_ivp"):
-                _bench_piecewise(i, out_dir, args.points, args.format == "table")
+                _wrote([_bench_piecewise(i, out_dir, args.points, args.format == "table")],
+                       keep and args.format == "table")
     if args.sampled:
         output_files.out_folder(out_dir)
         with say.task("loads sampled on a grid"):
-            _bench_sampled(out_dir, args.format == "table")
+            _wrote([_bench_sampled(out_dir, args.format == "table")],
+                   keep and args.format == "table")
     if args.format == "json":
         print(json.dumps(bench.as_dicts(everything), indent=2))
     return 0
 
 
-def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
+def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> Path:
     """Piecewise-linear runs in closed form against solve_ivp with events."""
     # imported on use: see the module docstring
     from crane_sym.bench.piecewise import scene_sections
@@ -191,10 +210,10 @@ def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> None:
     path.write_text(text, encoding="utf-8")
     if show:
         print(text)
-        print(f"wrote {path}")
+    return path
 
 
-def _bench_components(files: Sequence[str], out_dir: Path, show: bool) -> None:
+def _bench_components(files: Sequence[str], out_dir: Path, show: bool) -> Path:
     """Component models from file to run, stage by stage, against item 7's targets."""
     # imported on use: see the module docstring
     from crane_sym.bench.components import as_markdown, time_model
@@ -213,10 +232,10 @@ def _bench_components(files: Sequence[str], out_dir: Path, show: bool) -> None:
     path.write_text(text, encoding="utf-8")
     if show:
         print(text)
-        print(f"wrote {path}")
+    return path
 
 
-def _bench_sampled(out_dir: Path, show: bool) -> None:
+def _bench_sampled(out_dir: Path, show: bool) -> Path:
     """Sampled-load Duhamel responses against the closed forms, and their memory."""
     # imported on use: see the module docstring
     from crane_sym.bench import memory as bench_memory
@@ -236,4 +255,4 @@ def _bench_sampled(out_dir: Path, show: bool) -> None:
     path.write_text(text, encoding="utf-8")
     if show:
         print(text)
-        print(f"wrote {path}")
+    return path

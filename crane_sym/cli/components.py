@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 from crane_sym import progress
+from crane_sym.cli.unasked import say_no_files
 
 __all__ = ["cmd_run_components"]
 
@@ -17,16 +18,21 @@ def cmd_run_components(args: argparse.Namespace) -> int:
     quiet = getattr(args, "quiet", False)
     with progress.reporting(progress.Progress(progress.wanted(quiet))) as say:
         with say.task(f"deriving and running {args.scene}"):
-            report = run_component_file(args.scene, Path(args.out))
-    if getattr(args, "format", "text") == "json":
+            report = run_component_file(args.scene, Path(args.out) if args.out else None)
+    as_json = getattr(args, "format", "text") == "json"
+    if as_json:
         from crane_sym.components.report import results
         print(json.dumps(results(report), indent=2, ensure_ascii=False))
-        return 0
-    model = report.run.model
-    print(f"model {model.name}: {model.title}" if model.title else f"model {model.name}")
-    for line in report.lines:
-        print(f"  {line}")
-    print("written: " + ", ".join(str(f) for f in report.files))
+    else:
+        model = report.run.model
+        print(f"model {model.name}: {model.title}" if model.title else f"model {model.name}")
+        for line in report.lines:
+            print(f"  {line}")
+        if args.out:
+            print("written: " + ", ".join(str(f) for f in report.files))
+    if not args.out:
+        say_no_files("--out DIR", "the JSON, the module of its loads and the plot",
+                     stderr=as_json)
     return 0
 
 

@@ -6,6 +6,7 @@ import argparse
 from typing import Callable
 
 from crane_sym import output_files, progress
+from crane_sym.cli.unasked import say_no_files
 
 __all__ = ["deliver_walkthrough"]
 
@@ -13,7 +14,7 @@ __all__ = ["deliver_walkthrough"]
 def deliver_walkthrough(args: argparse.Namespace, name: str, make: Callable[[str], str]) -> int:
     """Make the walkthrough of ``name`` (``make(name)``), then write it to
     ``-o`` (the file's folder checked before the work; nothing written on an
-    error) and say so, or print it.
+    error) and say so, or print it and say on stderr how to get the file.
 
     Parameters
     ----------
@@ -33,4 +34,5 @@ def deliver_walkthrough(args: argparse.Namespace, name: str, make: Callable[[str
         print(f"wrote {args.output}")
     else:
         print(text)
+        say_no_files("-o FILE", "it to a file", stderr=True)
     return 0

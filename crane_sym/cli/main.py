@@ -20,6 +20,7 @@ from typing import Sequence
 from crane_sym import __version__, output_files, progress, registry
 from crane_sym.cli import sweep as cli_sweep
 from crane_sym.cli.bench import cmd_bench
+from crane_sym.cli.unasked import say_no_files
 
 DESCRIPTION = """\
 Derive, audit and generate code for the dynamics of crane mechanisms.
@@ -36,13 +37,15 @@ _SCENES = ("A scene by name (`crane-sym list --scenes` names the shipped ones)\n
 #: Where the names an example uses come from, shown after it.
 _FILES = ("\nA drive train of your own: its component TOML file (README, \"Your own "
           "drive train\").")
+#: Where a component file to start from is (the repository's examples folder:
+#: files to copy and edit, not installed with the package).
+_EXAMPLES = ("\nA drive train of your own: its component TOML file (the repository's "
+             "examples/drive_trains/ holds examples to copy).")
 NAMES = {"audit": _PAPERS + _FILES, "walkthrough": _PAPERS + _FILES, "accuracy": _PAPERS,
          "bench": _PAPERS,
          "generate": _SCENES, "sweep": _SCENES,
-         "run": _SCENES + "\nA drive train of your own: its component TOML file "
-                          "(examples/drive_trains/ has four).",
-         "model": "A drive train of your own: its component TOML file "
-                  "(examples/drive_trains/ has four)."}
+         "run": _SCENES + _EXAMPLES,
+         "model": _EXAMPLES.strip()}
 
 
 def _ids(names: Sequence[str]) -> list[str]:
@@ -148,6 +151,13 @@ def cmd_generate(args: argparse.Namespace) -> int:
     from crane_sym.codegen import files as module_files
     from crane_sym.scenes import specialize
     from crane_sym.scenes.generate import all_files
+    if args.scene and not args.out and not args.check:
+        with progress.reporting(_progress(args)):
+            files = specialize.scene_files(args.scene)
+        for text in files.values():
+            print(text, end="")
+        say_no_files("--out DIR", "the module to a file", stderr=True)
+        return 0
     if args.scene:
         directory = Path(args.out or ".")
     else:
@@ -230,17 +240,21 @@ def cmd_run(args: argparse.Namespace) -> int:
     with progress.reporting(_progress(args)) as say:
         with say.task(f"reading scene {args.scene}"):
             scene = load_scene(args.scene)
-        report, figures = run_scene(scene, Path(args.out))
+        report, figures = run_scene(scene, Path(args.out) if args.out else None)
     if args.format == "json":
         from crane_sym.scenes.results import scene_results
-        files = [Path(args.out) / module_name(scene), *figures]
+        files = [Path(args.out) / module_name(scene), *figures] if args.out else []
         print(json.dumps(scene_results(scene, report, files), indent=2, ensure_ascii=False))
-        return 0
-    print(f"scene {scene.name}: {scene.title}")
-    for line in report.lines:
-        print(f"  {line}")
-    print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
-          + ", ".join(str(f) for f in figures))
+    else:
+        print(f"scene {scene.name}: {scene.title}")
+        for line in report.lines:
+            print(f"  {line}")
+        if args.out:
+            print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
+                  + ", ".join(str(f) for f in figures))
+    if not args.out:
+        say_no_files("--out DIR", "the scene's module and its plots",
+                     stderr=args.format == "json")
     return 0
 
 
@@ -300,7 +314,7 @@ def parser() -> argparse.ArgumentParser:
     p.add_argument("--check", action="store_true", help="write nothing; name the missing, "
                    "stale and stray files; exit 1 if there are any")
     p.add_argument("--out", help="folder to write to or check (default: the package's "
-                   "generated/, or . with --scene)")
+                   "generated/; with --scene: print the module, or check it in .)")
     p.add_argument("--scene", help="write only the module specialized to this scene "
                    "(name or TOML path)")
     p = _subcommand(sub, "accuracy", "generated functions against mpmath on the hard cases; "
@@ -310,7 +324,8 @@ def parser() -> argparse.ArgumentParser:
                     True)
     p.add_argument("ids", nargs="*", help=ids_help)
     p.add_argument("--format", choices=("table", "json"), default="table")
-    p.add_argument("--out", default="bench", help="folder for Markdown and PNG (default: bench/)")
+    p.add_argument("--out", help="folder for the Markdown and PNG files (default: none "
+                   "written, the tables printed)")
     p.add_argument("--points", type=int, default=2000, help="grid points for the comparison (2 to 1e7)")
     p.add_argument("--throughput-points", type=int, default=10**6,
                    help="array length for the large-array np.cos comparison (1 to 1e8)")
@@ -340,8 +355,8 @@ def parser() -> argparse.ArgumentParser:
                     cmd_run, True)
     p.add_argument("scene", help="scene name or path to a scene TOML file, or a component "
                    "model TOML file (a [model] table; README, \"Your own drive train\")")
-    p.add_argument("--out", default=".", help="folder for the scene module and the plots "
-                   "(default: .)")
+    p.add_argument("--out", help="folder for the scene module and the plots (a component "
+                   "file: its JSON, module and plot); without it nothing is written")
     p.add_argument("--format", choices=("text", "json"), default="text",
                    help="text (default) or JSON on stdout: every result with its unit, the "
                    "warnings as a list")

@@ -108,13 +108,14 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "(default 1e-6)")
 
 
-def run_bench(out_dir: Path, as_json: bool) -> None:
+def run_bench(out_dir: Path, as_json: bool) -> Path:
     """Design sweeps against per-design integration, efficiency, 10⁸ designs,
     a LocalCluster against the local scheduler; hybrid outputs batched against
-    their per-design loop."""
+    their per-design loop; returns the Markdown file's path."""
     from crane_sym.bench.sweeps import bench_sweep, markdown
     results = bench_sweep()
     text = markdown(results)
     path = out_dir / "bench_sweep.md"
     path.write_text(text, encoding="utf-8")
-    print(json.dumps(results, indent=2) if as_json else f"{text}\nwrote {path}")
+    print(json.dumps(results, indent=2) if as_json else text)
+    return path

@@ -40,7 +40,7 @@ from crane_sym.latex import latex
 from crane_sym.published import Cause, PublishedFormula
 from crane_sym.symbols import DEFINED, PARAMETER, TIME as TIME_ROLE, PhysicalSymbol, SymbolTable
 
-__all__ = ["NUMERIC_TOLERANCE", "audit_file", "formula_derivation"]
+__all__ = ["NUMERIC_TOLERANCE", "audit_file", "formula_derivation", "not_checkable"]
 
 #: The relative tolerance of a comparison with a number of the run.
 NUMERIC_TOLERANCE = 1e-9
@@ -84,7 +84,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
     except ComponentError as exc:
         raise ComponentError(f"{where}: {exc}") from None
     exact = _numeric(read, f)
-    params = {p.symbol: p for p in parameters(model).values()}
+    params = {p.symbol: p for p in parameters(model, (read.body, read.speed)).values()}
     by_path = {p.path: p for p in params.values()}
     zero = {s: 0 for s, p in params.items() if p.value == 0}
     entries: dict[sp.Basic, PhysicalSymbol] = {}
@@ -98,6 +98,10 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
         if p is None or not p.value == p.value:          # a steady motor's torque: no value
             raise ComponentError(f"{where}: {symbol} has no value in the file")
         v = abs(p.value)
+        if v == 0:         # put to zero before any check (``zero``): its name is only read
+            entries[symbol] = PhysicalSymbol(symbol, p.dimension, p.unit, p.description,
+                                             PARAMETER, _sign(symbol))
+            return
         low, high = (v, v) if exact else (v / SPREAD, v * SPREAD)
         # drawn at the sign the file gives it: a real symbol (a motor's torque)
         # never at its mirror, a negative one as its negative twin (quantities.signed)
@@ -114,8 +118,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
                                         (end / 100, end))
         elif target in by_path:
             symbol = by_path[target].symbol
-            if by_path[target].value != 0:
-                entry(symbol)
+            entry(symbol)          # a zero value too: its name is read, then put to 0
         else:
             inner = derived_quantity(model, target, run, choice)
             what = f"{target}: {KINDS[target.partition('.')[2]][1]}"
@@ -150,11 +153,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
                    "", SymbolTable([*entries.values(), lhs_entry]), latex_names=names)
     d.steps.append(Step(f.quantity, sp.Eq(lhs, quantity.expr), quantity.how,
                         title=KINDS[f.quantity.partition(".")[2]][1]))
-    where_printed = f"{read.path.name}, [[formula]] {f.name}"
-    cause = (Cause(f"{model.name}-{re.sub(r'[^A-Za-z0-9]+', '-', f.name).strip('-')}",
-                   f.cause) if f.cause else
-             Cause("unexplained", f"{where_printed}: the file gives no cause for this finding "
-                   "(a cause = \"...\" line in the [[formula]] states one)"))
+    where_printed, cause = _printed_where(read, f), _cause(read, f)
     tolerance = max(f.tolerance, NUMERIC_TOLERANCE) if exact else f.tolerance
     try:
         relation, shown = _read(f, d, lhs, inserted, zero)
@@ -166,6 +165,42 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
     d.latex_names[lhs] = shown
     return d, PublishedFormula(f.name, f.latex, relation, where_printed,
                                compare_to=f.quantity, tolerance=tolerance, cause=cause)
+
+
+def _printed_where(read: ComponentFile, f: FileFormula) -> str:
+    return f"{read.path.name}, [[formula]] {f.name}"
+
+
+def _cause(read: ComponentFile, f: FileFormula) -> Cause:
+    """The file's cause of a finding, or a cause saying it gives none."""
+    if f.cause:
+        return Cause(f"{read.model.name}-{re.sub(r'[^A-Za-z0-9]+', '-', f.name).strip('-')}",
+                     f.cause)
+    return Cause("unexplained", f"{_printed_where(read, f)}: the file gives no cause for this "
+                 "finding (a cause = \"...\" line in the [[formula]] states one)")
+
+
+def not_checkable(read: ComponentFile, f: FileFormula, reason: str) -> tuple[
+        Derivation, PublishedFormula]:
+    """A formula the model cannot check (a quantity it cannot derive, a symbol
+    without a value), as a published formula with the reason: its verdict is
+    ``not_checkable`` and the audit goes on with the file's other formulas.
+
+    Parameters
+    ----------
+    read : ComponentFile
+        The read component file.
+    f : FileFormula
+        The formula.
+    reason : str
+        Why it cannot be checked (one line).
+    """
+    model = read.model
+    d = Derivation(model.name, read.path.name, model.title or model.name, str(read.path),
+                   "", SymbolTable([]))
+    return d, PublishedFormula(f.name, f.latex, None, _printed_where(read, f),
+                               compare_to=f.quantity, not_checkable=reason,
+                               cause=_cause(read, f))
 
 
 def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
@@ -227,7 +262,10 @@ def audit_file(read: ComponentFile) -> list[AuditRecord]:
         run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
     records = []
     for f in read.formulas:
-        d, published = formula_derivation(read, f, run)
+        try:
+            d, published = formula_derivation(read, f, run)
+        except ComponentError as why:             # this formula only: the rest go on
+            d, published = not_checkable(read, f, f"the model cannot check it: {why}")
         record = _with_ratio(audit_formula(d, published), d, published)
         seen = (MachineRead(AGREES, "read by machine (a file's formula has no hand "
                             "transcription: the parse is what is audited)",

@@ -96,11 +96,12 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
     return path
 
 
-def _check_symbols(table: object, model: Model, where: str) -> tuple[tuple[str, str], ...]:
+def _check_symbols(table: object, model: Model, where: str,
+                   start: tuple | None = None) -> tuple[tuple[str, str], ...]:
     if not isinstance(table, dict):
         raise ComponentError(f"{where}: symbols must be a table like {{ c = "
                              f"\"coupling.stiffness\" }}, got {table!r}")
-    known = parameters(model)
+    known = parameters(model, start)
     out = []
     for printed, target in table.items():
         if not _PRINTED_NAME.fullmatch(printed):
@@ -121,7 +122,8 @@ def _check_symbols(table: object, model: Model, where: str) -> tuple[tuple[str, 
     return tuple(out)
 
 
-def read_formulas(entries: Any, model: Model, where: str) -> tuple[FileFormula, ...]:
+def read_formulas(entries: Any, model: Model, where: str,
+                  start: tuple | None = None) -> tuple[FileFormula, ...]:
     """The [[formula]] tables of a file, their keys and names checked against
     ``model``; ComponentError, one line naming the formula and what is wrong.
 
@@ -133,6 +135,8 @@ def read_formulas(entries: Any, model: Model, where: str) -> tuple[FileFormula, 
         The file's model, whose parameters and quantities the names must be.
     where : str
         How errors name the file's model.
+    start : (body, speed), optional
+        The [run] table's start, so that ``run.speed`` is a name a formula may map.
     """
     if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
         raise ComponentError(f"{where}: [[formula]] must be an array of tables "
@@ -162,7 +166,7 @@ def read_formulas(entries: Any, model: Model, where: str) -> tuple[FileFormula, 
                                  f"got {tolerance!r}")
         f = FileFormula(entry["name"], entry["latex"],
                         _check_quantity(entry["quantity"], model, here, "quantity"),
-                        _check_symbols(entry.get("symbols", {}), model, here),
+                        _check_symbols(entry.get("symbols", {}), model, here, start),
                         float(tolerance), entry.get("cause", ""),
                         *_check_choice(entry, model, here))
         if not f.modal and ("mode" in entry or "at" in entry):

@@ -36,18 +36,20 @@ its negative twin, a symbol of the same name declared negative
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import sympy as sp
 from sympy.physics.units import Dimension, length, time
 
-from crane_sym.components.loads import Characteristic, Gravity, Motor, Resistance
+from crane_sym.components.laws import MotorLaw
+from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.model import Model
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, ComponentError, Drum,
-                                        Gear)
+                                        Gear, value)
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
-           "signed", "static_loads"]
+           "signed", "static_loads", "switching_values"]
 
 _ONE = Dimension(1)
 #: SI unit of each kind of value, by the kind of body it acts on.
@@ -57,6 +59,9 @@ UNITS = {"inertia": {ROTATING: "kg*m^2", TRANSLATING: "kg"},
          "damping": {ROTATING: "N*m*s/rad", TRANSLATING: "N*s/m"},
          "load": {ROTATING: "N*m", TRANSLATING: "N"},
          "speed": {ROTATING: "rad/s", TRANSLATING: "m/s"}}
+#: SI unit of a motor law's values, by its kind and the body's motion.
+LAW_UNITS = {"torque": UNITS["load"], "speed": UNITS["speed"],
+             "acceleration": {ROTATING: "rad/s^2", TRANSLATING: "m/s^2"}}
 #: What a quantity of each name is, and the kind of component it belongs to.
 KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
          "static": ("link", "its load in the steady motion at the start"),
@@ -93,13 +98,18 @@ def signed(model: Model) -> dict[sp.Symbol, sp.Symbol]:
             if v < 0}
 
 
-def parameters(model: Model) -> dict[str, Parameter]:
-    """Every parameter of ``model`` that its equations hold, by ``<component>.<key>``.
+def parameters(model: Model, start: tuple[str | None, Any] | None = None
+               ) -> dict[str, Parameter]:
+    """Every parameter of ``model`` that its equations hold, by ``<component>.<key>``,
+    then its switching values (:func:`switching_values`) and, given the run's
+    ``start``, the run's speed as ``run.speed``.
 
     Parameters
     ----------
     model : Model
         The assembled and derived model.
+    start : (body, speed), optional
+        The [run] table's ``body`` (None: the first) and ``speed``.
     """
     a, eq = model.assembly, model.equations
     symbols = {s.name: s for s in eq.values} | {s.name: s for s in eq.motor_loads}
@@ -143,6 +153,59 @@ def parameters(model: Model) -> dict[str, Parameter]:
         elif isinstance(part, Characteristic):
             add(f"{part.name}.speed", f"v0_{part.name}", DIMENSIONS["speed"][motion],
                 UNITS["speed"][motion], f"no-load speed of the characteristic {part.name}")
+    return out | switching_values(model) | (_run_speed(model, *start) if start else {})
+
+
+def _run_speed(model: Model, body: str | None, speed: Any) -> dict[str, Parameter]:
+    a = model.assembly
+    body = body or next(iter(a.bodies))
+    if body not in a.bodies:                # the run itself names it (Model.start)
+        return {}
+    motion = a.bodies[body].motion
+    v = value("run", "speed", speed, DIMENSIONS["speed"][motion]).si
+    symbol = sp.Symbol("value_run_speed", **({"nonnegative": True} if v >= 0 else
+                                             {"real": True}))
+    return {"run.speed": Parameter("run.speed", symbol, v, DIMENSIONS["speed"][motion],
+                                   UNITS["speed"][motion], f"the run's speed of {body}")}
+
+
+def switching_values(model: Model) -> dict[str, Parameter]:
+    """The values that switch the model rather than enter its equations (a
+    link's backlash, a brake's torque and delay, a motor law's breakpoints and
+    values), each under a symbol of its own, so that a [[formula]] of a shock
+    load or a lift-off can name them (none of them is in a derived quantity).
+
+    Parameters
+    ----------
+    model : Model
+        The assembled and derived model.
+    """
+    a, out = model.assembly, {}
+
+    def add(path: str, value: float, dimension: Dimension, unit: str, what: str) -> None:
+        symbol = sp.Symbol("value_" + path.replace(".", "_"), nonnegative=True)
+        out[path] = Parameter(path, symbol, float(value), dimension, unit, what)
+    for link in a.links:
+        motion = a.bodies[link.part.first].motion
+        add(f"{link.part.name}.backlash", link.part.backlash.si,
+            DIMENSIONS["backlash"][motion], "rad" if motion == ROTATING else "m",
+            f"backlash (gap) of the elastic link {link.part.name}")
+    for load in a.loads:
+        part, motion = load.part, a.bodies[load.part.body].motion
+        if isinstance(part, Brake):
+            word = "torque" if motion == ROTATING else "force"
+            add(f"{part.name}.{word}", part.load.si, DIMENSIONS["load"][motion],
+                UNITS["load"][motion], f"{word} of the brake {part.name}")
+            add(f"{part.name}.delay", part.delay, time, "s", f"delay of the brake {part.name}")
+        elif isinstance(part, MotorLaw):
+            # breakpoint k (from 1) in s, and the law's value where piece k starts
+            unit = LAW_UNITS[part.law][motion]
+            for k, b in enumerate(part.breakpoints, start=1):
+                add(f"{part.name}.time_{k}", float(b), time, "s",
+                    f"breakpoint {k} of the motor law {part.name}")
+            for k, row in enumerate(part.coefficients, start=1):
+                add(f"{part.name}.value_{k}", float(row[0]), part.dimension, unit,
+                    f"value of the motor law {part.name} at its breakpoint {k}")
     return out
 
 
@@ -168,15 +231,17 @@ def _load_dimension(model: Model, link) -> tuple[Dimension, str]:
     return DIMENSIONS["load"][motion], UNITS["load"][motion]
 
 
-def static_loads(model: Model) -> dict[str, sp.Expr]:
+def static_loads(model: Model) -> dict[str, sp.Expr | None]:
     """Each link's load in the steady motion at the start, symbolic: every rigid
-    group in equilibrium, Σ_k F_k ∂u_k/∂q_g = Q_g (motors on, brakes off).
+    group in equilibrium, Σ_k F_k ∂u_k/∂q_g = Q_g (motors on, brakes off);
+    None for a link in a loop of elastic links (equilibrium alone does not fix
+    its load).
 
     Parameters
     ----------
     model : Model
         The assembled and derived model; ComponentError when its loads depend
-        on the speed, do not balance in the symbols, or its links form a loop.
+        on the speed or do not balance in the symbols.
     """
     a, eq = model.assembly, model.equations
     if a.loads_of(Characteristic):
@@ -193,13 +258,11 @@ def static_loads(model: Model) -> dict[str, sp.Expr]:
         raise ComponentError("a static load: the constant loads do not balance in the "
                              "symbols; give one motor the torque 'steady'")
     (values,) = solved
-    free = set().union(*(v.free_symbols for v in values)) & set(unknowns)
-    if free:
-        raise ComponentError("a static load: the elastic links form a loop, so their "
-                             "static loads are not fixed by equilibrium alone")
     zero, twins = _zeros(model), signed(model)
-    return {l.part.name: sp.simplify(v.xreplace(zero).xreplace(twins))
-            for l, v in zip(a.links, values)}
+    # A link in a loop of elastic links keeps a free unknown: its load is not
+    # fixed by equilibrium alone (None); a link outside every loop still is.
+    return {l.part.name: None if v.free_symbols & set(unknowns) else
+            sp.simplify(v.xreplace(zero).xreplace(twins)) for l, v in zip(a.links, values)}
 
 
 def _link(model: Model, name: str):
@@ -252,7 +315,11 @@ def derived_quantity(model: Model, path: str, run=None,
                              f"{', '.join(l.part.name for l in a.links) or 'none'}")
     load = _load_dimension(model, link)
     if what == "static":
-        return Quantity(path, static_loads(model)[name], *load,
+        static = static_loads(model)[name]
+        if static is None:
+            raise ComponentError(f"{name} lies in a loop of elastic links, so its static "
+                                 "load is not fixed by equilibrium alone")
+        return Quantity(path, static, *load,
                         "each rigid group in equilibrium, Σ F_k ∂u_k/∂q = Q, motors on, "
                         "brakes off, solved for the link loads")
     if what in MODAL:

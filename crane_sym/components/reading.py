@@ -283,7 +283,8 @@ def read_component_file(path: str | Path) -> ComponentFile:
         model = Model.for_run(read.parts, read.duration, read.rest, read.name, read.title)
     except ComponentError as exc:
         raise ComponentError(f"{where_file}: {exc}") from None
-    formulas = read_formulas(read.data.get("formula", []), model, where_file)
+    formulas = read_formulas(read.data.get("formula", []), model, where_file,
+                             (read.body, read.speed))
     return ComponentFile(model, read.duration, read.body, read.speed, read.path, read.rest,
                          formulas, {k: read.data.get(k, []) for k in TABLES}, tuple(read.parts))
 

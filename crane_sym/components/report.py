@@ -109,7 +109,7 @@ def load_figures(run: ComponentRun, title: str) -> list:
     return figures(panels, title) if panels else []
 
 
-def run_component_file(path: str | Path, out: str | Path) -> ComponentReport:
+def run_component_file(path: str | Path, out: str | Path | None) -> ComponentReport:
     """Read ``path``, run it, write ``<name>.json``, the module
     ``model_<name>.py`` (the links' loads as tables of closed forms) and
     ``<name>_loads*.png`` into ``out`` (nothing else, nowhere else).
@@ -118,14 +118,18 @@ def run_component_file(path: str | Path, out: str | Path) -> ComponentReport:
     ----------
     path : str or Path
         The component TOML file.
-    out : str or Path
-        The output folder (made if missing; nothing is written elsewhere).
+    out : str or Path or None
+        The output folder (made if missing; nothing is written elsewhere);
+        None: the report only, no file written anywhere.
     """
-    output_files.check_folder(out)
+    if out is not None:
+        output_files.check_folder(out)
     read: ComponentFile = read_component_file(path)
     model = read.model
     run = model.run(read.duration, read.body, read.speed, rest=read.rest)
     lines = report_lines(run)
+    if out is None:
+        return ComponentReport(run, lines, [])
     figs = load_figures(run, model.title or model.name)
     source = render_component_module(run)
     with output_files.staged(out) as stage:

@@ -304,6 +304,10 @@ def _static(run: ComponentRun) -> list[str]:
            "solved for the link loads:"]
     units = {p.link: p.unit for p in run.peaks}
     for name, expr in loads.items():
+        if expr is None:
+            out.append(f"**{name}**: in a loop of elastic links, its static load is not "
+                       "fixed by equilibrium alone.")
+            continue
         number = float(expr.xreplace(values))
         out.append(f"**{name}** ({units[name]}):")
         out.append(_display(f"F_{{st}} = {_tex(expr, run.model)} \\approx {_number(number)}"))

@@ -14,6 +14,7 @@ from __future__ import annotations
 import importlib
 import importlib.util
 import inspect
+import tempfile
 from pathlib import Path
 from types import ModuleType
 from typing import Callable
@@ -71,15 +72,18 @@ def time_function(scene: Scene, module: ModuleType, name: str) -> Callable:
     return lambda t: general(t, **given)
 
 
-def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, list[Path]]:
+def run_scene(scene: Scene | str | Path,
+              outdir: Path | None) -> tuple[SceneReport, list[Path]]:
     """Evaluate a scene through its own generated module and plot it.
 
     Parameters
     ----------
     scene : Scene, or a scene name or TOML path
         From :func:`crane_sym.scenes.reading.load_scene`, or what it reads.
-    outdir : Path
-        Folder for the module and the plots; created if needed.
+    outdir : Path or None
+        Folder for the module and the plots; created if needed. None: the
+        report only, nothing written where anyone looks (the module is imported
+        from a temporary folder, removed at once; no plots).
 
     Returns
     -------
@@ -87,7 +91,7 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, lis
         The derivation's report (its last line names the module written) and
         the PNGs written (:func:`plot_report`): ``<outdir>/<scene.name>.png``,
         or ``<scene.name>_1.png``, ``_2`` ... when the panels need several
-        figures.
+        figures; none without ``outdir``.
     """
     if not isinstance(scene, Scene):
         scene = load_scene(scene)
@@ -95,27 +99,39 @@ def run_scene(scene: Scene | str | Path, outdir: Path) -> tuple[SceneReport, lis
     if make is None:
         raise SceneError(f"derivation {scene.derivation!r} has no scene_report()")
     say = progress.current()
-    check_folder(outdir)
+    if outdir is not None:
+        check_folder(outdir)
     with say.task(f"specializing and printing {module_name(scene)}"):
         text = render_scene_module(scene)    # stage 2 refuses bad data: nothing written
+    if outdir is None:
+        with tempfile.TemporaryDirectory(prefix="crane_sym_scene_") as scratch:
+            written = Path(scratch) / module_name(scene)
+            written.write_text(text, encoding="utf-8")
+            with say.task(f"running scene {scene.name}"):
+                return _checked(make(scene, import_module_file(written)), scene), []
     # The module and the plots go to temporaries in the folder and are renamed
     # into place together at the end: a failure or a signal leaves nothing.
     with staged(outdir) as stage:
         source = Path(outdir) / module_name(scene)
         written = stage.write(source.name, text.encode("utf-8"), ".py")
         with say.task(f"running scene {scene.name}"):
-            report = make(scene, import_module_file(written))
-        if not isinstance(report, SceneReport) or not report.panels:
-            raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
-        greyed = [p.title for p in report.panels if p.invalid]
-        if greyed and not report.warnings:
-            raise SceneError(f"{scene.derivation}.scene_report() greys where the model does "
-                             f"not hold in {greyed} but states it in no line starting with "
-                             f"{WARNING!r}")
+            report = _checked(make(scene, import_module_file(written)), scene)
         report.lines.append(f"module written to {source}")
         with say.task(f"plotting {len(report.panels)} panels"):
             paths = plot_report(report, scene.title, stage, f"{scene.name}.png")
     return report, paths
+
+
+def _checked(report: SceneReport, scene: Scene) -> SceneReport:
+    """The report, refused when it has no panels or greys a panel unsaid."""
+    if not isinstance(report, SceneReport) or not report.panels:
+        raise SceneError(f"{scene.derivation}.scene_report() returned no panels")
+    greyed = [p.title for p in report.panels if p.invalid]
+    if greyed and not report.warnings:
+        raise SceneError(f"{scene.derivation}.scene_report() greys where the model does "
+                         f"not hold in {greyed} but states it in no line starting with "
+                         f"{WARNING!r}")
+    return report
 
 
 def plot_report(report: SceneReport, title: str, stage: Stage, name: str) -> list[Path]:
