@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 from crane_sym import progress
+from crane_sym.escapes import terminal_text
 
 __all__ = ["cmd_run_components"]
 
@@ -23,7 +24,8 @@ def cmd_run_components(args: argparse.Namespace) -> int:
         print(json.dumps(results(report), indent=2, ensure_ascii=False))
         return 0
     model = report.run.model
-    print(f"model {model.name}: {model.title}" if model.title else f"model {model.name}")
+    print(f"model {model.name}: {terminal_text(model.title)}" if model.title
+          else f"model {model.name}")
     for line in report.lines:
         print(f"  {line}")
     print("written: " + ", ".join(str(f) for f in report.files))
@@ -39,7 +41,8 @@ def model_text(path: str) -> str:
     import sympy as sp
     model = read_component_file(path).model
     a, eq = model.assembly, model.equations
-    lines = [f"model {model.name}" + (f": {model.title}" if model.title else ""), "",
+    lines = [f"model {model.name}" + (f": {terminal_text(model.title)}" if model.title
+                                      else ""), "",
              "components:"]
     lines += [f"  {p.label}" for p in model.components]
     lines += [f"  {d.line()}" for d in model.dropped]

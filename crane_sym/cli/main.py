@@ -19,6 +19,7 @@ from typing import Sequence
 
 from crane_sym import __version__, output_files, progress, registry
 from crane_sym.cli import sweep as cli_sweep
+from crane_sym.escapes import terminal_text
 from crane_sym.cli.bench import cmd_bench
 
 DESCRIPTION = """\
@@ -236,7 +237,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         files = [Path(args.out) / module_name(scene), *figures]
         print(json.dumps(scene_results(scene, report, files), indent=2, ensure_ascii=False))
         return 0
-    print(f"scene {scene.name}: {scene.title}")
+    print(f"scene {scene.name}: {terminal_text(scene.title)}")
     for line in report.lines:
         print(f"  {line}")
     print(f"{len(figures)} plot{'s' if len(figures) > 1 else ''} written: "
