@@ -7,7 +7,9 @@ way), the derived quantity it names as the one step
 (:mod:`crane_sym.components.quantities`), and the formula as a published
 one. The print is read by the machine reader of the papers' prints
 (:mod:`crane_sym.audit.latex_parse` and :mod:`crane_sym.audit.print_names`:
-SymPy's lark LaTeX parser, names mapped, nothing evaluated); then
+SymPy's lark LaTeX parser, names mapped, nothing evaluated), within the
+bounds of :mod:`crane_sym.components.formula_limits` (a formula over one is
+not_checkable, "too large to check", and the audit goes on); then
 :func:`crane_sym.audit.verdicts.audit_formula` decides exactly as for a paper:
 symbolic identity first, mpmath at seeded physical points second, dimensions
 third, the record naming the check that decided, its basis (the model derived
@@ -30,6 +32,8 @@ from crane_sym.audit.latex_parse import Unreadable, bound_variables, candidates,
 from crane_sym.audit.machine_read import AGREES, UNREADABLE, MachineRead
 from crane_sym.audit.print_names import calls_pass, map_symbols, names_pass, vocabulary
 from crane_sym.audit.verdicts import DISCREPANCY, AuditRecord, audit_formula
+from crane_sym.components import formula_limits as limits
+from crane_sym.components.formula_limits import Refused, TooLarge, check_parsed, check_print
 from crane_sym.components.formulas import TIME, FileFormula
 from crane_sym.components.parts import ComponentError, value
 from crane_sym.components.quantities import KINDS, NUMERIC, derived_quantity, parameters
@@ -155,7 +159,11 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
                    "(a cause = \"...\" line in the [[formula]] states one)"))
     tolerance = max(f.tolerance, NUMERIC_TOLERANCE) if exact else f.tolerance
     try:
-        relation, shown = _read(f, d, lhs, inserted, zero)
+        with limits.budget(limits.PARSE_SECONDS, "reading it"):
+            relation, shown = _read(f, d, lhs, inserted, zero)
+    except Refused as why:          # formula_limits: the bound it broke
+        return d, PublishedFormula(f.name, f.latex, None, where_printed, compare_to=f.quantity,
+                                   not_checkable=f"{why.prefix}: {why}", cause=cause)
     except Unreadable as why:       # a name as the parser's token shows it: as text
         reason = re.sub(r"Token\('\w+', ('[^']*')\)", r"\1", str(why))
         return d, PublishedFormula(f.name, f.latex, None, where_printed, compare_to=f.quantity,
@@ -170,6 +178,7 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
           zero: dict) -> tuple[sp.Eq, str]:
     """The print read by machine as ``lhs = ...`` and the LaTeX of its left side;
     :class:`Unreadable` with the reason."""
+    check_print(f.latex)
     vocab = vocabulary(d)
     tokens: dict[str, sp.Basic] = {}
     tex = calls_pass(names_pass(bound_variables(f.latex), vocab, tokens), vocab, tokens)
@@ -182,6 +191,7 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
     if isinstance(parsed.rhs, sp.core.relational.Relational):
         raise Unreadable("an inequality, not a formula for the quantity")
     rhs = map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero)
+    check_parsed(rhs)
     shown = latex(lhs)
     if parsed.lhs is not None:
         if not isinstance(parsed.lhs, sp.Symbol) or str(parsed.lhs).replace(
@@ -225,7 +235,12 @@ def audit_file(read: ComponentFile) -> list[AuditRecord]:
     records = []
     for f in read.formulas:
         d, published = formula_derivation(read, f, run)
-        record = _with_ratio(audit_formula(d, published), d, published)
+        try:
+            with limits.budget(limits.CHECK_SECONDS, "checking it"):
+                record = _with_ratio(audit_formula(d, published), d, published)
+        except TooLarge as why:
+            published = replace(published, printed=None, not_checkable=f"{why.prefix}: {why}")
+            record = audit_formula(d, published)
         seen = (MachineRead(AGREES, "read by machine (a file's formula has no hand "
                             "transcription: the parse is what is audited)",
                             latex(published.printed.rhs, symbol_names=d.latex_names))
