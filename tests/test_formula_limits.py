@@ -15,7 +15,7 @@ from pathlib import Path
 import pytest
 
 from crane_sym.components import formula_limits as limits
-from crane_sym.components.formula_limits import Refused, TooLarge, budget, check_print
+from crane_sym.components.formula_limits import Refused, TooLarge, bounded, budget, check_print
 
 ROOT = Path(__file__).parents[1]
 EXAMPLES = ROOT / "examples" / "drive_trains"
@@ -119,3 +119,13 @@ def test_budget_stops_a_block_and_restores_the_alarm():
     with budget(5, "nothing"):
         pass
     assert issubclass(TooLarge, Refused)
+
+
+def test_a_small_sum_or_product_is_written_out_and_checked():
+    import sympy as sp
+    k, c = sp.symbols("k c", positive=True)
+    assert bounded(sp.Sum(c, (k, 1, 3)) + sp.Product(c, (k, 1, 2))) == 3 * c + c**2
+    with pytest.raises(Refused, match=r"^a \\sum whose bounds are not numbers$"):
+        bounded(sp.Sum(c, (k, 1, sp.Symbol("n"))))
+    with pytest.raises(TooLarge, match=r"^a \\prod of 1001 terms \(at most 1000\)$"):
+        bounded(sp.Product(c, (k, 0, 1000)))

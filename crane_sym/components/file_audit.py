@@ -33,7 +33,7 @@ from crane_sym.audit.machine_read import AGREES, UNREADABLE, MachineRead
 from crane_sym.audit.print_names import calls_pass, map_symbols, names_pass, vocabulary
 from crane_sym.audit.verdicts import DISCREPANCY, AuditRecord, audit_formula
 from crane_sym.components import formula_limits as limits
-from crane_sym.components.formula_limits import Refused, TooLarge, check_parsed, check_print
+from crane_sym.components.formula_limits import Refused, TooLarge, bounded, check_print
 from crane_sym.components.formulas import TIME, FileFormula
 from crane_sym.components.parts import ComponentError, value
 from crane_sym.components.quantities import KINDS, NUMERIC, derived_quantity, parameters
@@ -190,8 +190,7 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
     parsed = parse(call.group(1) + " =" + right if equals and call else found[0])
     if isinstance(parsed.rhs, sp.core.relational.Relational):
         raise Unreadable("an inequality, not a formula for the quantity")
-    rhs = map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero)
-    check_parsed(rhs)
+    rhs = bounded(map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero))
     shown = latex(lhs)
     if parsed.lhs is not None:
         if not isinstance(parsed.lhs, sp.Symbol) or str(parsed.lhs).replace(

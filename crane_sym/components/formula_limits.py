@@ -13,7 +13,7 @@ refused for another reason, "cannot be checked", with the reason):
    depth of its groups and of its superscripts, a number raised to a raised
    power, the size of a number in an exponent or before a factorial, the
    factorials;
-2. the parsed expression (:func:`check_parsed`): powers, factorials and
+2. the parsed expression (:func:`bounded`): powers, factorials and
    iterated sums and products that would be too large to evaluate, a limit
    (not checked), a value imaginary for the file's positive values;
 3. time (:func:`budget`): reading a formula and checking it each have a
@@ -32,7 +32,7 @@ import sympy as sp
 
 __all__ = ["CHECK_SECONDS", "MAX_CHARACTERS", "MAX_DEPTH", "MAX_EXPONENT", "MAX_FACTORIAL",
            "MAX_FACTORIALS", "MAX_SUPERSCRIPTS", "MAX_TERMS", "PARSE_SECONDS", "Refused", "TooLarge",
-           "budget", "check_parsed", "check_print"]
+           "bounded", "budget", "check_print"]
 
 #: Characters of a formula's LaTeX.
 MAX_CHARACTERS = 1000
@@ -155,8 +155,9 @@ def _number(e: sp.Basic) -> float | None:
         return float("inf")
 
 
-def check_parsed(expr: sp.Basic) -> None:
-    """Nothing if the parsed right side ``expr`` may be checked;
+def bounded(expr: sp.Basic) -> sp.Basic:
+    """The parsed right side ``expr`` with every ``\\sum`` and ``\\prod`` written
+    out (the checks cannot take them whole), if it may be checked;
     :class:`TooLarge` naming the bound otherwise (see the module docstring,
     item 2); :class:`Refused` for a limit, an iterated operator with a bound
     that is no number, or an imaginary value.
@@ -165,6 +166,13 @@ def check_parsed(expr: sp.Basic) -> None:
     ----------
     expr : sympy.Basic
         The formula's right side, parsed (its symbols positive).
+
+    Examples
+    --------
+    >>> import sympy as sp
+    >>> k, c = sp.symbols("k c", positive=True)
+    >>> bounded(sp.Sum(c * k, (k, 1, 3)))
+    6*c
     """
     for e in sp.preorder_traversal(expr):
         if isinstance(e, sp.Limit):
@@ -189,6 +197,7 @@ def check_parsed(expr: sp.Basic) -> None:
                                    f"most {MAX_TERMS})")
     if expr.has(sp.I):
         raise Refused("it is imaginary for the file's positive values")
+    return expr.replace(lambda e: isinstance(e, (sp.Sum, sp.Product)), lambda e: e.doit())
 
 
 class _Overrun(BaseException):
