@@ -132,3 +132,10 @@ def test_run_prints_and_plots_the_title_as_text(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "\x1b" not in out and "\\x1b[31m red $\\input{x}$" in out   # escaped, one line
     assert list((tmp_path / "out").glob("*.png"))                      # mathtext took it
+
+
+def test_math_the_converter_cannot_read_is_shown_as_text():
+    from crane_sym.docs.page import render_page
+    page = render_page("# t\n\nbad $\\frac{$ and\n\n$$\n\\frac{\n$$\n", "t")
+    assert "<code>\\frac{</code></span> and" in page and live_tags(page) == []
+    assert '<div class="display"><code>\\frac{</code></div>' in page

@@ -56,7 +56,11 @@ ul { margin: 0.3em 0; }
 
 def _math(content: str, options: dict) -> str:
     display = bool(options.get("display_mode"))
-    out = mathml(content.strip(), display=display)
+    try:
+        out = mathml(content.strip(), display=display)
+    except Exception:        # the converter's parse errors (``\frac{`` alone): as text
+        code = f"<code>{html.escape(content.strip())}</code>"
+        return f'<div class="display">{code}</div>\n' if display else code
     out = out.replace(' xmlns="http://www.w3.org/1998/Math/MathML"', "")
     return f'<div class="display">{out}</div>\n' if display else out
 
