@@ -139,3 +139,14 @@ def test_math_the_converter_cannot_read_is_shown_as_text():
     page = render_page("# t\n\nbad $\\frac{$ and\n\n$$\n\\frac{\n$$\n", "t")
     assert "<code>\\frac{</code></span> and" in page and live_tags(page) == []
     assert '<div class="display"><code>\\frac{</code></div>' in page
+
+
+@pytest.mark.parametrize("form", ["table", "markdown", "json"])
+def test_audit_of_the_file_prints_no_escape_code(form, tmp_path, capsys):
+    source = hostile_file(tmp_path)
+    text = source.read_text(encoding="utf-8")
+    text = text.replace('name = "<script>', 'name = "\\u001b[2J<script>', 1)
+    source.write_text(text, encoding="utf-8")
+    assert main(["audit", str(source), "--format", form, "-q"]) == 0
+    out = capsys.readouterr().out
+    assert "\x1b" not in out and ("\\x1b[2J" in out or "\\u001b[2J" in out)

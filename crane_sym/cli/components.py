@@ -96,7 +96,7 @@ def cmd_audit_components(args: argparse.Namespace) -> int:
         for name in args.ids:
             with say.task(f"auditing the formulas of {name}"):
                 records += audit_file(read_component_file(name))
-    print(FORMATS[args.format](records))
+    print(terminal_text(FORMATS[args.format](records)))   # the file's names and formulas
     return 0
 
 
