@@ -150,3 +150,17 @@ def test_audit_of_the_file_prints_no_escape_code(form, tmp_path, capsys):
     assert main(["audit", str(source), "--format", form, "-q"]) == 0
     out = capsys.readouterr().out
     assert "\x1b" not in out and ("\\x1b[2J" in out or "\\u001b[2J" in out)
+
+
+@pytest.mark.parametrize("title", ["$\\input{x}$ cost $5", "bad $\\frac{$", "\x1b[31m red"])
+def test_a_plot_title_is_text_never_mathtext(title, tmp_path):
+    pytest.importorskip("matplotlib")
+    import numpy as np
+
+    from crane_sym.scenes.panels import Panel
+    from crane_sym.scenes.plots import figures
+    t = np.linspace(0.0, 1.0, 5)
+    (fig,) = figures([Panel("$F$", "$F$ [N]", [("$F_1$", t, t)])], title)
+    fig.savefig(tmp_path / "x.png")                 # mathtext would fail on the title
+    shown = fig._suptitle.get_text().splitlines()[0]   # then the panel's own title
+    assert "\x1b" not in shown and shown.count("$") == shown.count("\\$")

@@ -31,8 +31,8 @@ from typing import Iterator
 import sympy as sp
 
 __all__ = ["CHECK_SECONDS", "MAX_CHARACTERS", "MAX_DEPTH", "MAX_EXPONENT", "MAX_FACTORIAL",
-           "MAX_FACTORIALS", "MAX_SUPERSCRIPTS", "MAX_TERMS", "PARSE_SECONDS", "Refused", "TooLarge",
-           "bounded", "budget", "check_print"]
+           "MAX_FACTORIALS", "MAX_SUPERSCRIPTS", "MAX_TERMS", "PARSE_SECONDS", "Refused",
+           "TooLarge", "bounded", "budget", "check_print"]
 
 #: Characters of a formula's LaTeX.
 MAX_CHARACTERS = 1000
