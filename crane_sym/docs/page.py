@@ -20,9 +20,9 @@ from markdown_it import MarkdownIt
 from mdit_py_plugins.dollarmath import dollarmath_plugin
 
 from crane_sym import registry
-from crane_sym.escapes import terminal_text
 from crane_sym.docs.numbers import mathml
 from crane_sym.docs.walkthrough import walkthrough
+from crane_sym.escapes import terminal_text
 from crane_sym.scenes.reading import load_scene, scenes_directory
 from crane_sym.scenes.run import run_scene
 
@@ -151,8 +151,7 @@ def render_page(markdown: str, title: str, figures: list[tuple[str, bytes]] = ()
             f'{base64.b64encode(png).decode()}"><figcaption>{html.escape(cap)}'
             "</figcaption></figure>" for cap, png in figures)
         note = f"<p>{html.escape(figures_note)}</p>\n" if figures_note else ""
-        block = (f"<h2>Figures</h2>\n{note}{shown}\n"
-                 "<h2>Symbols</h2>")
+        block = f"<h2>Figures</h2>\n{note}{shown}\n<h2>Symbols</h2>"
         body = body.replace("<h2>Symbols</h2>", block, 1)
     body = _with_contents(body)
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
