@@ -17,8 +17,10 @@ from crane_sym.escapes import terminal_text
 
 __all__ = ["fenced", "markdown_table", "markdown_text"]
 
-#: What Markdown (CommonMark, GFM tables, dollar math) or HTML reads as markup.
-_MARKUP = re.compile(r"([\\`*{}\[\]()<>&$|~!#]|(?<![A-Za-z0-9])_|_(?![A-Za-z0-9]))")
+#: What Markdown (CommonMark, GFM tables and strikethrough, dollar math) or HTML
+#: reads as markup inside a line: brackets escaped, ``(`` ``!`` cannot make a
+#: link or an image; ``#`` matters only at a line's start, which a caller writes.
+_MARKUP = re.compile(r"([\\`*\[\]<>&$|~]|(?<![A-Za-z0-9])_|_(?![A-Za-z0-9]))")
 
 
 def markdown_text(text: object) -> str:
