@@ -4,7 +4,11 @@ whole or not at all, nothing left behind.
 Every file is first written under a fresh temporary name in its target
 folder (the process id and a random part, created exclusively, so two runs
 never share one) and then renamed over the target name. A rename replaces a
-symbolic link at the target name, it never writes through it. A
+symbolic link at the target name, it never writes through it. Only a regular
+file is replaced (:func:`check_target`): a target that is, or links to, a
+device, a FIFO or a socket is refused (``-o /dev/null`` as root would
+otherwise turn the device into a file), and so is one of the command's own
+inputs (:func:`inputs`; ``walkthrough x.toml -o x.toml``). A
 :class:`Stage` collects the files of one result (a dataset and its plot, a
 scene's module and its figures) and renames them together at the end, with
 SIGINT and SIGTERM held off between the renames; on any failure, or a
@@ -19,13 +23,16 @@ import os
 import secrets
 import shutil
 import signal
+import stat
 import threading
 from contextlib import contextmanager
+from contextvars import ContextVar
 from pathlib import Path
-from typing import Iterator
+from typing import Iterable, Iterator
 
-__all__ = ["OutputError", "Stage", "check_folder", "deferred_signals", "describe",
-           "folder_lock", "out_file", "out_folder", "staged", "write_text"]
+__all__ = ["OutputError", "Stage", "check_folder", "check_target", "deferred_signals",
+           "describe", "folder_lock", "inputs", "is_stdout", "out_file", "out_folder",
+           "staged", "write_text"]
 
 
 class OutputError(OSError):
@@ -49,6 +56,85 @@ def describe(err: OSError) -> str:
     import errno
     name = errno.errorcode.get(err.errno or 0, "")
     return _REASONS.get(name, err.strerror or type(err).__name__)
+
+
+#: The (device, inode) of each file the running command reads (:func:`inputs`).
+_INPUTS: ContextVar[frozenset[tuple[int, int]]] = ContextVar("inputs", default=frozenset())
+
+_KINDS = ((stat.S_ISCHR, "character device"), (stat.S_ISBLK, "block device"),
+          (stat.S_ISFIFO, "FIFO"), (stat.S_ISSOCK, "socket"))
+
+
+@contextmanager
+def inputs(paths: Iterable[str | Path]) -> Iterator[None]:
+    """Inside the block, the existing files among ``paths`` are the command's
+    inputs, which :func:`check_target` never lets a write replace (by device
+    and inode, so another spelling, a link or a hard link of an input is one
+    too).
+
+    Parameters
+    ----------
+    paths : iterable of str or Path
+        What the command reads; names that are no file are ignored.
+    """
+    found = set(_INPUTS.get())
+    for path in paths:
+        try:
+            info = os.stat(path)
+        except (OSError, ValueError):
+            continue
+        if stat.S_ISREG(info.st_mode):
+            found.add((info.st_dev, info.st_ino))
+    token = _INPUTS.set(frozenset(found))
+    try:
+        yield
+    finally:
+        _INPUTS.reset(token)
+
+
+def check_target(path: str | Path, option: str = "-o") -> None:
+    """Nothing if a write may replace ``path``: it is missing, a regular file
+    or a link to one (the link is replaced, never followed); :class:`OutputError`
+    naming ``option`` if it is, or links to, a device, a FIFO or a socket, or
+    is one of the command's :func:`inputs`. A folder is left to the caller.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file a command is to write.
+    option : str, optional
+        The command-line option an error names.
+    """
+    try:
+        info = os.stat(path)                       # through a link: what it names
+    except OSError:
+        return                                     # missing or a broken link
+    for test, kind in _KINDS:
+        if test(info.st_mode):
+            raise OutputError(f"{option} {str(path)!r} is a {kind}, not a regular file; "
+                              "not replaced (write to a file, or leave out the option to "
+                              "print)")
+    if (info.st_dev, info.st_ino) in _INPUTS.get():
+        raise OutputError(f"{option} {str(path)!r} is one of this command's inputs; "
+                          "not replaced (name another file)")
+
+
+def is_stdout(path: str | Path) -> bool:
+    """Whether ``path`` means the standard output: ``-``, or a name of the
+    very file, pipe or terminal the standard output is (``/dev/stdout``).
+
+    Parameters
+    ----------
+    path : str or Path
+        A file name from the command line.
+    """
+    if str(path) == "-":
+        return True
+    try:
+        mine, there = os.fstat(1), os.stat(path)
+    except (OSError, ValueError):
+        return False
+    return (mine.st_dev, mine.st_ino) == (there.st_dev, there.st_ino)
 
 
 def check_folder(path: str | Path, option: str = "--out") -> Path:
@@ -118,6 +204,7 @@ def out_file(path: str | Path, option: str = "-o") -> tuple[Path, str]:
     target = Path(path)
     if target.is_dir():
         raise OutputError(f"{option} {str(target)!r} is a folder; give a file name")
+    check_target(target, option)
     folder = target.parent
     if not folder.is_dir():
         raise OutputError(f"{option} {str(target)!r}: the folder {str(folder)!r} does not exist")
@@ -135,8 +222,9 @@ class Stage:
     """Files of one result under temporary names in ``folder``, renamed onto
     their names by :meth:`commit` (see the module docstring)."""
 
-    def __init__(self, folder: Path) -> None:
+    def __init__(self, folder: Path, option: str = "--out") -> None:
         self.folder = Path(folder)
+        self.option = option
         self._moves: list[tuple[Path, Path]] = []
 
     def path(self, name: str, suffix: str = "") -> Path:
@@ -170,8 +258,12 @@ class Stage:
     def commit(self) -> list[Path]:
         """Rename every temporary onto its name, under :func:`folder_lock` and
         with signals deferred (:func:`deferred_signals`); a folder already at a
-        name (a Zarr store) is replaced whole."""
+        name (a Zarr store) is replaced whole; a target :func:`check_target`
+        refuses stops the commit before any rename."""
         with deferred_signals(), folder_lock(self.folder):
+            for tmp, target in self._moves:
+                if not (tmp.is_dir() and target.is_dir()):
+                    check_target(target, self.option)
             done = []
             for tmp, target in self._moves:
                 if not tmp.exists():
@@ -217,7 +309,7 @@ def staged(folder: str | Path, option: str = "--out") -> Iterator[Stage]:
     option : str, optional
         The command-line option an error names.
     """
-    stage = Stage(out_folder(folder, option))
+    stage = Stage(out_folder(folder, option), option)
     try:
         yield stage
         stage.commit()

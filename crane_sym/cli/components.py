@@ -7,6 +7,7 @@ from pathlib import Path
 
 from crane_sym import progress
 from crane_sym.cli.unasked import say_no_files
+from crane_sym.escapes import terminal_text
 
 __all__ = ["cmd_run_components"]
 
@@ -25,7 +26,8 @@ def cmd_run_components(args: argparse.Namespace) -> int:
         print(json.dumps(results(report), indent=2, ensure_ascii=False))
     else:
         model = report.run.model
-        print(f"model {model.name}: {model.title}" if model.title else f"model {model.name}")
+        print(f"model {model.name}: {terminal_text(model.title)}" if model.title
+              else f"model {model.name}")
         for line in report.lines:
             print(f"  {line}")
         if args.out:
@@ -45,7 +47,8 @@ def model_text(path: str) -> str:
     import sympy as sp
     model = read_component_file(path).model
     a, eq = model.assembly, model.equations
-    lines = [f"model {model.name}" + (f": {model.title}" if model.title else ""), "",
+    lines = [f"model {model.name}" + (f": {terminal_text(model.title)}" if model.title
+                                      else ""), "",
              "components:"]
     lines += [f"  {p.label}" for p in model.components]
     lines += [f"  {d.line()}" for d in model.dropped]
@@ -99,7 +102,7 @@ def cmd_audit_components(args: argparse.Namespace) -> int:
         for name in args.ids:
             with say.task(f"auditing the formulas of {name}"):
                 records += audit_file(read_component_file(name))
-    print(FORMATS[args.format](records))
+    print(terminal_text(FORMATS[args.format](records)))   # the file's names and formulas
     return 0
 
 

@@ -1,5 +1,6 @@
 """The tail every ``crane-sym walkthrough`` shares: a paper's or a component
-file's handout made under a progress line, then written to ``-o`` or printed."""
+file's handout made under a progress line, then written to ``-o`` or printed
+(``-o -`` or ``-o /dev/stdout`` print too)."""
 from __future__ import annotations
 
 import argparse
@@ -25,7 +26,8 @@ def deliver_walkthrough(args: argparse.Namespace, name: str, make: Callable[[str
     make : callable
         Name -> the walkthrough's text.
     """
-    target = output_files.out_file(args.output, "-o") if args.output else None
+    printed = not args.output or output_files.is_stdout(args.output)
+    target = None if printed else output_files.out_file(args.output, "-o")
     reporter = progress.Progress(progress.wanted(getattr(args, "quiet", False)))
     with progress.reporting(reporter) as say, say.task(f"walkthrough of {name}"):
         text = make(name)

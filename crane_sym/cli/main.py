@@ -19,6 +19,7 @@ from typing import Sequence
 
 from crane_sym import __version__, output_files, progress, registry
 from crane_sym.cli import sweep as cli_sweep
+from crane_sym.escapes import terminal_text
 from crane_sym.cli.bench import cmd_bench
 from crane_sym.cli.unasked import say_no_files
 
@@ -246,7 +247,7 @@ def cmd_run(args: argparse.Namespace) -> int:
         files = [Path(args.out) / module_name(scene), *figures] if args.out else []
         print(json.dumps(scene_results(scene, report, files), indent=2, ensure_ascii=False))
     else:
-        print(f"scene {scene.name}: {scene.title}")
+        print(f"scene {scene.name}: {terminal_text(scene.title)}")
         for line in report.lines:
             print(f"  {line}")
         if args.out:
@@ -387,6 +388,16 @@ def _os_message(err: OSError) -> str:
     return f"{where}{output_files.describe(err)}"
 
 
+def _input_names(args: argparse.Namespace) -> list[str]:
+    """The names a command reads (papers, scenes, component files): a write
+    never replaces one of them (:func:`crane_sym.output_files.inputs`)."""
+    names: list[str] = []
+    for key in ("id", "ids", "scene", "file", "components"):
+        value = getattr(args, key, None)
+        names += [value] if isinstance(value, str) else list(value or ())
+    return names
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit code: 0 done, 1 a check failed
     (``generate --check``, ``accuracy``), 2 an error (one line on stderr),
@@ -402,7 +413,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     if threading.current_thread() is threading.main_thread():
         previous = signal.signal(signal.SIGTERM, _terminate)
     try:
-        return args.func(args)
+        with output_files.inputs(_input_names(args)):
+            return args.func(args)
     except (KeyError, ValueError) as err:
         message = err.args[0] if isinstance(err, KeyError) and err.args else err
         print(f"crane-sym: error: {message}", file=sys.stderr)

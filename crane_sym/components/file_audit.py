@@ -7,7 +7,9 @@ way), the derived quantity it names as the one step
 (:mod:`crane_sym.components.quantities`), and the formula as a published
 one. The print is read by the machine reader of the papers' prints
 (:mod:`crane_sym.audit.latex_parse` and :mod:`crane_sym.audit.print_names`:
-SymPy's lark LaTeX parser, names mapped, nothing evaluated); then
+SymPy's lark LaTeX parser, names mapped, nothing evaluated), within the
+bounds of :mod:`crane_sym.components.formula_limits` (a formula over one is
+not_checkable, "too large to check", and the audit goes on); then
 :func:`crane_sym.audit.verdicts.audit_formula` decides exactly as for a paper:
 symbolic identity first, mpmath at seeded physical points second, dimensions
 third, the record naming the check that decided, its basis (the model derived
@@ -30,6 +32,8 @@ from crane_sym.audit.latex_parse import Unreadable, bound_variables, candidates,
 from crane_sym.audit.machine_read import AGREES, UNREADABLE, MachineRead
 from crane_sym.audit.print_names import calls_pass, map_symbols, names_pass, vocabulary
 from crane_sym.audit.verdicts import DISCREPANCY, AuditRecord, audit_formula
+from crane_sym.components import formula_limits as limits
+from crane_sym.components.formula_limits import Refused, TooLarge, bounded, check_print
 from crane_sym.components.formulas import TIME, FileFormula
 from crane_sym.components.parts import ComponentError, value
 from crane_sym.components.quantities import KINDS, NUMERIC, derived_quantity, parameters
@@ -156,7 +160,11 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
     where_printed, cause = _printed_where(read, f), _cause(read, f)
     tolerance = max(f.tolerance, NUMERIC_TOLERANCE) if exact else f.tolerance
     try:
-        relation, shown = _read(f, d, lhs, inserted, zero)
+        with limits.budget(limits.PARSE_SECONDS, "reading it"):
+            relation, shown = _read(f, d, lhs, inserted, zero)
+    except Refused as why:          # formula_limits: the bound it broke
+        return d, PublishedFormula(f.name, f.latex, None, where_printed, compare_to=f.quantity,
+                                   not_checkable=f"{why.prefix}: {why}", cause=cause)
     except Unreadable as why:       # a name as the parser's token shows it: as text
         reason = re.sub(r"Token\('\w+', ('[^']*')\)", r"\1", str(why))
         return d, PublishedFormula(f.name, f.latex, None, where_printed, compare_to=f.quantity,
@@ -207,6 +215,7 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
           zero: dict) -> tuple[sp.Eq, str]:
     """The print read by machine as ``lhs = ...`` and the LaTeX of its left side;
     :class:`Unreadable` with the reason."""
+    check_print(f.latex)
     vocab = vocabulary(d)
     tokens: dict[str, sp.Basic] = {}
     tex = calls_pass(names_pass(bound_variables(f.latex), vocab, tokens), vocab, tokens)
@@ -218,7 +227,7 @@ def _read(f: FileFormula, d: Derivation, lhs: sp.Symbol, inserted: dict,
     parsed = parse(call.group(1) + " =" + right if equals and call else found[0])
     if isinstance(parsed.rhs, sp.core.relational.Relational):
         raise Unreadable("an inequality, not a formula for the quantity")
-    rhs = map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero)
+    rhs = bounded(map_symbols(parsed.rhs, vocab, tokens).xreplace(inserted).xreplace(zero))
     shown = latex(lhs)
     if parsed.lhs is not None:
         head, power = parsed.lhs.as_base_exp()      # ω² = …: ω is its principal root
@@ -266,7 +275,12 @@ def audit_file(read: ComponentFile) -> list[AuditRecord]:
             d, published = formula_derivation(read, f, run)
         except ComponentError as why:             # this formula only: the rest go on
             d, published = not_checkable(read, f, f"the model cannot check it: {why}")
-        record = _with_ratio(audit_formula(d, published), d, published)
+        try:
+            with limits.budget(limits.CHECK_SECONDS, "checking it"):
+                record = _with_ratio(audit_formula(d, published), d, published)
+        except TooLarge as why:
+            published = replace(published, printed=None, not_checkable=f"{why.prefix}: {why}")
+            record = audit_formula(d, published)
         seen = (MachineRead(AGREES, "read by machine (a file's formula has no hand "
                             "transcription: the parse is what is audited)",
                             latex(published.printed.rhs, symbol_names=d.latex_names))

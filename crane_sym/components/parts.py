@@ -74,9 +74,16 @@ class Value:
 Given = Union[str, float, int, Value]
 
 
+#: The magnitudes a value may have in SI units, besides 0: past them a run's
+#: linear algebra is singular (1e308 kg, 1e-300 N/m) or overflows to inf
+#: (1e-320 kg). A backlash of 1e-6 deg is 1.7e-8 rad.
+MAGNITUDES = (1e-9, 1e12)
+
+
 def value(owner: str, what: str, given: Given, expected: Dimension | None = None) -> Value:
     """``given`` (text with a unit, or a number in SI) as a :class:`Value`; with
-    ``expected``, its dimension checked at once."""
+    ``expected``, its dimension checked at once; 0 or a magnitude within
+    :data:`MAGNITUDES`, else :class:`ComponentError`."""
     if isinstance(given, Value):
         result = given
     elif isinstance(given, bool):
@@ -96,6 +103,10 @@ def value(owner: str, what: str, given: Given, expected: Dimension | None = None
                              f"got {type(given).__name__}")
     if expected is not None:
         result.check(owner, what, expected)
+    low, high = MAGNITUDES
+    if result.si != 0 and not low <= abs(result.si) <= high:
+        raise ComponentError(f"{owner}: {what} must be 0 or of magnitude {low:g} to {high:g} "
+                             f"in SI units, got {result.text!r}")
     return result
 
 

@@ -109,6 +109,7 @@ from crane_sym.components.laws import MotorLaw
 from crane_sym.components.model import Model
 from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
+from crane_sym.scenes.fields import toml_reason
 from crane_sym.scenes.options import did_you_mean
 
 __all__ = ["ComponentFile", "ComponentParts", "is_component_file", "read_component_file",
@@ -175,7 +176,7 @@ def is_component_file(path: str | Path) -> bool:
         return False
     try:
         data = tomllib.loads(p.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError, OSError):
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError, OSError, RecursionError):
         return False
     return "model" in data and "scene" not in data
 
@@ -304,8 +305,8 @@ def read_parts(path: str | Path) -> ComponentParts:
         raise ComponentError(f"no component file {str(p)!r}")
     try:
         data = tomllib.loads(p.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise ComponentError(f"{p.name}: not valid TOML: {str(exc).splitlines()[0]}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError, RecursionError) as exc:
+        raise ComponentError(f"{p.name}: not valid TOML: {toml_reason(exc)}") from None
     tables = ("model", "run", "formula", *TABLES)
     _keys(data, tables, f"component file {p.name!r}", "table")
     head = data.get("model")

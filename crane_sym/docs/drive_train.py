@@ -16,6 +16,7 @@ reads the file and runs it.
 from __future__ import annotations
 
 import io
+import re
 from pathlib import Path
 
 from crane_sym.components.hybrid import BACKWARD, FORWARD, HELD, ComponentSystem, Mode
@@ -24,9 +25,9 @@ from crane_sym.components.parts import ComponentError
 from crane_sym.components.quantities import derived_quantity, parameters, static_loads
 from crane_sym.components.reading import TABLES, ComponentFile, read_component_file
 from crane_sym.docs.numbers import math_errors
-from crane_sym.docs.walkthrough import _cell, _display, _math_cell
+from crane_sym.docs.walkthrough import _display, _math_cell
 from crane_sym.latex import latex
-from crane_sym.markdown import markdown_table
+from crane_sym.markdown import fenced, markdown_table, markdown_text
 from crane_sym.scenes.panels import format_quantity
 
 __all__ = ["drive_train_page", "drive_train_walkthrough", "render"]
@@ -38,11 +39,22 @@ TIME_DIGITS = 9
 _WHERE = {"gear": ("input", "output"), "drum": ("drum", "load")}
 
 
+class _Markup(str):
+    """A table cell that is Markdown already: math, or the parts' checked names
+    with math (``components.reading``'s ``_SAFE_NAME``)."""
+
+
+def _math(tex: str) -> _Markup:
+    """Inline math for a table cell."""
+    return _Markup(_math_cell(tex))
+
+
 def _table(header: list[str], rows: list[list[str]]) -> str:
-    """A Markdown table whose text cells keep their ``*`` (``N*m*s/rad`` as
-    written, not emphasis); math cells (``$…$``) as they are."""
-    return markdown_table(header, [[c if c.startswith("$") else c.replace("*", "\\*")
-                                    for c in map(str, row)] for row in rows])
+    """A Markdown table whose text cells are text (:func:`markdown_text`: a
+    ``*`` in ``N*m*s/rad`` as written, a ``<`` from a file as a ``<``); math
+    and other :class:`_Markup` cells as they are."""
+    return markdown_table(header, [[c if isinstance(c, _Markup) else markdown_text(c)
+                                    for c in row] for row in rows])
 
 
 def _tex(expr, model) -> str:
@@ -70,26 +82,25 @@ def _components(read: ComponentFile) -> str:
             values = "; ".join(f"{k} = {_value_text(v)}" for k, v in entry.items()
                                if k not in ("name", "between", "body", "input", "output",
                                             "drum", "load"))
-            rows.append([_cell(entry.get("name", "")), kind, _cell(_connects(kind, entry)),
-                         _cell(values or "—")])
+            rows.append([entry.get("name", ""), kind, _connects(kind, entry), values or "—"])
     return _table(["component", "kind", "joins / acts on", "values as written"], rows)
 
 
 def _symbols(read: ComponentFile, run: ComponentRun) -> list[str]:
     solved = run.system.extra
-    rows = [[_math_cell(_tex(p.symbol, read.model)), _cell(p.description), _cell(p.path),
+    rows = [[_math(_tex(p.symbol, read.model)), p.description, p.path,
              f"{p.value:.6g}" if p.value == p.value else
              f"{float(solved[p.symbol]):.6g} (solved at the start)", p.unit]
             for p in parameters(read.model).values()]
     eq = read.model.equations
-    rows += [[_math_cell(_tex(q, read.model)), f"coordinate of the rigid group of {g.name}", "—", "—",
+    rows += [[_math(_tex(q, read.model)), f"coordinate of the rigid group of {g.name}", "—", "—",
               "rad" if g.motion == "rotating" else "m"]
              for g, q in zip(read.model.assembly.groups, eq.coordinates)]
     for law, signal in zip(run.system.clock.laws, eq.signals):
         assert signal.name.endswith("_" + law.name), (signal, law.name)
-        rows.append([_math_cell(_tex(signal, read.model)),
-                     _cell(f"{law.law} of the law {law.name} at time t (its pieces: the "
-                           "components above)"), law.name, "law in t", _cell(law.unit)])
+        rows.append([_math(_tex(signal, read.model)),
+                     f"{law.law} of the law {law.name} at time t (its pieces: the "
+                     "components above)", law.name, "law in t", law.unit])
     return ["Every symbol is named after its component. A value 0 (a shaft end without "
             "inertia, an undamped link) is kept in the equations below and drops out of the "
             "numbers.",
@@ -110,7 +121,7 @@ def _groups(read: ComponentFile) -> list[str]:
         members = ", ".join(f"{b.name}: $\\kappa = {_tex(k, model)}$" for (b, _), k in
                             zip(g.members, g.factors))
         reduced = derived_quantity(model, f"{g.name}.reduced_inertia")
-        rows.append([_math_cell(_tex(q, model)), _cell(members), _math_cell(_tex(reduced.expr, model)),
+        rows.append([_math(_tex(q, model)), _Markup(members), _math(_tex(reduced.expr, model)),
                      format_quantity(g.inertia, reduced.unit, 6)])
     out.append(_table(["coordinate", "bodies", "reduced inertia", "value"], rows))
     return out
@@ -226,7 +237,7 @@ def _modes(run: ComponentRun) -> list[str]:
             continue
         seen.append(seg.mode)
         A, b = system.matrices(seg.mode)
-        out.append(f"**Mode {len(seen)}:** {_cell(describe_mode(system, seg.mode))}.")
+        out.append(f"**Mode {len(seen)}:** {markdown_text(describe_mode(system, seg.mode))}.")
         out.append(_display(f"A = {_matrix(A)}, \\quad b = {_matrix(b[:, None])}"))
         out.append(_frequencies(A))
     return out
@@ -258,7 +269,7 @@ def _phases(read: ComponentFile, run: ComponentRun) -> list[str]:
             modes.append(seg.mode)
     rows = [[str(k), format_quantity(seg.t0, "s", TIME_DIGITS),
              format_quantity(seg.t1, "s", TIME_DIGITS), str(modes.index(seg.mode) + 1),
-             _cell(seg.event if seg.event != "end" else "end of the run")]
+             seg.event if seg.event != "end" else "end of the run"]
             for k, seg in enumerate(run.result.segments, start=1)]
     body = read.body or next(iter(read.model.assembly.bodies))
     start = ("at rest, every link at zero twist and every gap open" if read.rest
@@ -297,7 +308,7 @@ def _static(run: ComponentRun) -> list[str]:
     try:
         loads = static_loads(run.model)
     except ComponentError as why:
-        return [f"(No static load in the symbols: {why}.)"]
+        return [f"(No static load in the symbols: {markdown_text(why)}.)"]
     values = {**run.model.equations.values, **run.system.extra}
     out = ["In the steady motion at the start every rigid group is in equilibrium, "
            "$\\sum_k F_k \\, \\partial u_k / \\partial q = Q$ (motors on, brakes off); "
@@ -316,20 +327,22 @@ def _static(run: ComponentRun) -> list[str]:
 
 def _formulas(read: ComponentFile, records) -> list[str]:
     if isinstance(records[0], str):
-        return [f"The file's formulas could not be audited: {_cell(records[0])}."]
+        return [f"The file's formulas could not be audited: {markdown_text(records[0])}."]
     out = ["The formulas the file lists, read by machine and checked against the model "
            "above as the papers' prints are (`crane-sym audit FILE`): symbolic identity "
            "first, then mpmath at seeded physical points, then dimensions."]
     for f, r in zip(read.formulas, records):
-        names = ", ".join(f"`{printed}` = {target}" for printed, target in f.symbols)
-        out.append(f"**{_cell(f.name)}**, for `{f.quantity}`"
+        names = ", ".join(f"{markdown_text(printed)} = {markdown_text(target)}"
+                          for printed, target in f.symbols)
+        out.append(f"**{markdown_text(f.name)}**, for {markdown_text(f.quantity)}"
                    + (f" (with {names})" if names else "") + ":")
         shown = f.latex.replace("%", "\\%")
-        out.append("```text\n" + f.latex + "\n```" if r.machine_read.status == "unreadable"
-                   or math_errors(shown) else _display(shown))
+        plain = (r.machine_read.status == "unreadable" or math_errors(shown)
+                 or re.search(r"[$<>]|\n\s*\n", f.latex))  # would leave the display
+        out.append(fenced(f.latex) if plain else _display(shown))
         how = "no check could decide" if r.method == "none" else f"decided by {r.method}"
         detail = r.detail[:1].upper() + r.detail[1:]
-        out.append(f"Verdict: **{r.verdict}** ({how}). {detail}"
+        out.append(f"Verdict: **{r.verdict}** ({how}). {markdown_text(detail)}"
                    + ("" if detail.endswith(".") else "."))
     return out
 
@@ -347,8 +360,8 @@ def render(read: ComponentFile, run: ComponentRun, records=()) -> str:
         Verdicts on its formulas (:func:`crane_sym.components.file_audit.audit_file`).
     """
     model = read.model
-    parts = [f"# {model.title or model.name}",
-             f"Drive train `{model.name}` from the component file `{read.path.name}`, "
+    parts = [f"# {markdown_text(model.title or model.name)}",
+             f"Drive train `{model.name}` from the component file {markdown_text(read.path.name)}, "
              "derived by crane_sym from its components: every equation below is built "
              "from the energies of the parts, none is typed in.",
              "## The components", _components(read),

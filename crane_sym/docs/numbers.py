@@ -192,8 +192,11 @@ def _braces_balance(tex: str) -> bool:
 
 def mathml(tex: str, display: bool = False) -> str:
     """MathML of ``tex`` (``latex2mathml``), ``aligned`` set as an array (the
-    converter has no ``aligned``), display or inline."""
-    from latex2mathml.converter import convert
+    converter has no ``aligned``), display or inline; allow-listed and escaped
+    (:func:`crane_sym.docs.safe_mathml.safe_mathml`)."""
+    from latex2mathml.converter import convert_to_element
+
+    from crane_sym.docs.safe_mathml import safe_mathml
 
     def aligned(m: re.Match) -> str:
         body = m.group(1)
@@ -201,7 +204,7 @@ def mathml(tex: str, display: bool = False) -> str:
         return (r"\begin{array}{" + ("rl" * cols)[:cols] + "}" + body + r"\end{array}")
 
     tex = re.sub(r"\\begin\{aligned\}(.*?)\\end\{aligned\}", aligned, tex, flags=re.S)
-    return convert(tex, display="block" if display else "inline")
+    return safe_mathml(convert_to_element(tex, display="block" if display else "inline"))
 
 
 def math_errors(tex: str) -> list[str]:

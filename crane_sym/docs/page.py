@@ -22,6 +22,7 @@ from mdit_py_plugins.dollarmath import dollarmath_plugin
 from crane_sym import registry
 from crane_sym.docs.numbers import mathml
 from crane_sym.docs.walkthrough import walkthrough
+from crane_sym.escapes import terminal_text
 from crane_sym.scenes.reading import load_scene, scenes_directory
 from crane_sym.scenes.run import run_scene
 
@@ -55,14 +56,19 @@ ul { margin: 0.3em 0; }
 
 def _math(content: str, options: dict) -> str:
     display = bool(options.get("display_mode"))
-    out = mathml(content.strip(), display=display)
+    try:
+        out = mathml(content.strip(), display=display)
+    except Exception:        # the converter's parse errors (``\frac{`` alone): as text
+        code = f"<code>{html.escape(content.strip())}</code>"
+        return f'<div class="display">{code}</div>\n' if display else code
     out = out.replace(' xmlns="http://www.w3.org/1998/Math/MathML"', "")
     return f'<div class="display">{out}</div>\n' if display else out
 
 
 def markdown_parser() -> MarkdownIt:
-    """CommonMark with tables and ``$…$``/``$$…$$`` math set as MathML."""
-    return (MarkdownIt("commonmark").enable("table")
+    """CommonMark with tables and ``$…$``/``$$…$$`` math set as MathML; raw
+    HTML off (a ``<script>`` in a file's title is shown as text)."""
+    return (MarkdownIt("commonmark", {"html": False}).enable("table")
             .use(dollarmath_plugin, allow_space=True, allow_digits=True,
                  double_inline=True, renderer=_math))
 
@@ -138,16 +144,18 @@ def render_page(markdown: str, title: str, figures: list[tuple[str, bytes]] = ()
     str
         One HTML document that needs nothing outside itself.
     """
+    body = markdown_parser().render(markdown)
     if figures:
         shown = "\n".join(
             f'<figure><img alt="{html.escape(cap)}" src="data:image/png;base64,'
             f'{base64.b64encode(png).decode()}"><figcaption>{html.escape(cap)}'
             "</figcaption></figure>" for cap, png in figures)
-        block = f"## Figures\n\n{figures_note}\n\n" + shown + "\n\n## Symbols"
-        markdown = markdown.replace("\n## Symbols", "\n" + block, 1)
-    body = _with_contents(markdown_parser().render(markdown))
+        note = f"<p>{html.escape(figures_note)}</p>\n" if figures_note else ""
+        block = f"<h2>Figures</h2>\n{note}{shown}\n<h2>Symbols</h2>"
+        body = body.replace("<h2>Symbols</h2>", block, 1)
+    body = _with_contents(body)
     return ("<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
-            f"<title>{html.escape(title)}</title>\n"
+            f"<title>{html.escape(terminal_text(title))}</title>\n"
             "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
             f"<style>{_CSS}</style>\n</head>\n<body>\n{body}</body>\n</html>\n")
 

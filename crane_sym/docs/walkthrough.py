@@ -23,7 +23,7 @@ from crane_sym.docs.numbers import (broken_lines, decimal, escape_specials, is_n
                                     named_lines, printed_digits)
 from crane_sym.docs.verdicts import Voice, verdict_name
 from crane_sym.latex import cyrillic_as_text, latex
-from crane_sym.markdown import markdown_table
+from crane_sym.markdown import fenced, markdown_table
 from crane_sym.symbols import COORDINATE, DEFINED, PARAMETER, TIME
 
 __all__ = ["render", "walkthrough"]
@@ -59,13 +59,6 @@ def _math_cell(tex: str) -> str:
     return "$" + " ".join(cyrillic_as_text(tex).split()).replace("|", r"\vert ") + "$"
 
 
-def _fenced(text: str) -> str:
-    """``text`` verbatim in a code fence longer than any backtick run in it."""
-    longest = max((len(run) for run in re.findall(r"`+", text)), default=0)
-    fence = "`" * max(3, longest + 1)
-    return f"{fence}text\n{text}\n{fence}"
-
-
 def _model(model: str, voice: Voice | None = None) -> str:
     """The model: prose paragraphs as text (in the handout's words), indented
     paragraphs (the diagram) verbatim in a code block."""
@@ -75,7 +68,7 @@ def _model(model: str, voice: Voice | None = None) -> str:
         if not any(lines):
             continue
         if all(line[:1] in (" ", "\t") for line in lines if line):
-            blocks.append(_fenced("\n".join(lines)))
+            blocks.append(fenced("\n".join(lines)))
         else:
             text = " ".join(line.strip() for line in lines if line.strip())
             blocks.append(voice.say(text) if voice else text)
@@ -136,7 +129,7 @@ def printed_blocks(formulas: list, by_label: dict[str, AuditRecord], names: dict
         elif f.verbatim or (f.reconstructed and f.printed is not None):
             blocks.append(f"**As printed in the paper** {label}"
                           + (", the OCR verbatim:" if f.reconstructed else ":"))
-            blocks.append(_fenced(f.latex.strip()))
+            blocks.append(fenced(f.latex.strip()))
             if f.printed is not None:
                 shown = _transcribed(f, step, names)
                 head = ((f"**Read as** (a reconstruction; {note})" if note else

@@ -12,11 +12,28 @@ from crane_sym.scenes.options import did_you_mean
 from crane_sym.symbols import PhysicalSymbol
 
 __all__ = ["SceneError", "known_keys", "read_inputs", "read_outputs", "read_parameters",
-           "required_table", "switches_off"]
+           "required_table", "switches_off", "toml_reason"]
 
 
 class SceneError(ValueError):
     """A scene file that cannot be read or does not fit its derivation."""
+
+
+def toml_reason(err: Exception) -> str:
+    """Why a TOML file could not be read, in one line: the parser's first line,
+    or for values nested past Python's recursion limit (``x = [[[[…]]]]``
+    5000 deep), that bound.
+
+    Parameters
+    ----------
+    err : Exception
+        What ``tomllib.loads`` (or the decoding before it) raised.
+    """
+    import sys
+    if isinstance(err, RecursionError):
+        return (f"arrays or tables nested too deep (the reader's limit is below "
+                f"{sys.getrecursionlimit()})")
+    return (str(err).splitlines() or [type(err).__name__])[0]
 
 
 def read_outputs(raw: Any, known: list[str], owner: str, where: str) -> list[str]:

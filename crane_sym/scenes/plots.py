@@ -16,6 +16,7 @@ from typing import Sequence
 
 import numpy as np
 
+from crane_sym.escapes import mathtext_text
 from crane_sym.scenes.panels import Panel, valid_mask
 
 __all__ = ["MAX_PANELS", "chunks", "figures", "grey_invalid", "layout", "legend_outside",
@@ -123,7 +124,8 @@ def figures(panels: Sequence[Panel], title: str) -> list:
                 legend_outside(ax, fontsize=9)
         single = members[0].title if len(members) == 1 else ""
         # a figure's name once: not again when the panel's own title starts with it
-        heading = f"{title}: {group}" if group and not single.startswith(group) else title
+        text = mathtext_text(title)                 # the user's text, never mathtext
+        heading = f"{text}: {group}" if group and not single.startswith(group) else text
         named = re.match(r"(Fig\. \d+[a-z]?): ", single)
         if named and named.group(1) in heading:
             single = single[named.end():]

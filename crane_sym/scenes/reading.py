@@ -46,7 +46,8 @@ import numpy as np
 from crane_sym import registry
 from crane_sym.derivation import SceneLoad
 from crane_sym.scenes.fields import (SceneError, known_keys, read_inputs, read_outputs,
-                                     read_parameters, required_table, switches_off)
+                                     read_parameters, required_table, switches_off,
+                                     toml_reason)
 from crane_sym.scenes.panels import Panel, SceneReport, Span, format_quantity
 from crane_sym.scenes.options import OptionError, failed_check, options_for, read_options
 from crane_sym.symbols import STATE, TIME
@@ -192,8 +193,8 @@ def read_toml(path: Path) -> dict[str, Any]:
     """
     try:
         return tomllib.loads(path.read_text(encoding="utf-8"))
-    except (tomllib.TOMLDecodeError, UnicodeDecodeError) as exc:
-        raise SceneError(f"{path}: not valid TOML: {exc}") from None
+    except (tomllib.TOMLDecodeError, UnicodeDecodeError, RecursionError) as exc:
+        raise SceneError(f"{path}: not valid TOML: {toml_reason(exc)}") from None
 
 
 def load_scene(path_or_name: str | Path) -> Scene:

@@ -138,8 +138,8 @@ def plot_report(report: SceneReport, title: str, stage: Stage, name: str) -> lis
     """Write the report's panels as PNGs into ``stage``: ``name`` when one
     figure holds them all, else ``<stem>_1.png``, ``<stem>_2.png`` ... (see
     :func:`crane_sym.scenes.plots.figures`); return the final paths. ``title`` is
-    text, never mathtext (a ``$`` in it is printed as a ``$``)."""
-    made = plots.figures(report.panels, title.replace("$", r"\$"))
+    text, never mathtext (``figures`` escapes it: a ``$`` in it is printed as a ``$``)."""
+    made = plots.figures(report.panels, title)
     paths = plots.numbered(stage.folder / name, len(made))
     for fig, path in zip(made, paths):
         plots.save(fig, stage.path(path.name, ".png"))
