@@ -20,18 +20,22 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from typing import Sequence
 
 import sympy as sp
 
 from crane_sym.audit.checks import symbolic_equivalence
 from crane_sym.derivation import Derivation
 from crane_sym.latex import latex
-from crane_sym.audit.latex_parse import Parsed, Unreadable, bound_variables, candidates, parse
+from crane_sym.audit.latex_parse import (Parsed, Unreadable, bound_variables, candidates, parse,
+                                         parse_side, parse_table, parser)
+from crane_sym.audit.parse_table import render
 from crane_sym.audit.print_names import (BOUND_SYMBOL, cached_vocabulary, calls_pass, map_symbols,
                                          names_pass)
 from crane_sym.published import PublishedFormula
 
-__all__ = ["AGREES", "DIFFERS", "UNREADABLE", "MachineRead", "machine_read"]
+__all__ = ["AGREES", "DIFFERS", "UNREADABLE", "MachineRead", "machine_read",
+           "parse_table_text"]
 
 AGREES, DIFFERS, UNREADABLE = "agrees", "differs", "unreadable"
 _WRAPPERS = re.compile(r"\\(?:text|mathrm|mathit|mathtt|operatorname)\s*")
@@ -117,16 +121,7 @@ def machine_read(d: Derivation, f: PublishedFormula) -> MachineRead:
         return MachineRead(UNREADABLE, "no transcription to compare: " + f.not_checkable)
     if "\\div" in f.latex:
         return MachineRead(UNREADABLE, "\\div: the print leaves the scope of ÷ open")
-    vocab, functions = cached_vocabulary(d, f.verbatim)
-    tokens: dict[str, sp.Basic] = {}
-    tex = names_pass(bound_variables(f.latex), vocab, tokens)
-    tex = calls_pass(tex, vocab, tokens)
-    read, reasons = [], []
-    for cand in candidates(tex):
-        try:
-            read.append((cand, _relation(parse(cand, functions), vocab, tokens)))
-        except Unreadable as why:
-            reasons.append(str(why))
+    read, reasons, tokens = _read(d, f)
     for _, rel in read:
         if _same(rel, f.printed, d):
             return MachineRead(AGREES, "the parse is the hand transcription",
@@ -151,6 +146,43 @@ def machine_read(d: Derivation, f: PublishedFormula) -> MachineRead:
     return MachineRead(DIFFERS, "printed − transcribed: $" +
                        _difference(rel, f.printed, d.latex_names) + "$",
                        _tex(rel, d.latex_names), _explained(d, f, [r for _, r in read]))
+
+
+def _read(d: Derivation, f: PublishedFormula) -> tuple[list, list[str], dict]:
+    """The relations of the print parsed and mapped to the derivation's symbols
+    (candidate, relation), the parser's reasons for those it cannot read, and
+    the tokens the names pass gave."""
+    vocab, functions = cached_vocabulary(d, f.verbatim)
+    tokens: dict[str, sp.Basic] = {}
+    tex = names_pass(bound_variables(f.latex), vocab, tokens)
+    tex = calls_pass(tex, vocab, tokens)
+    read, reasons = [], []
+    for cand in candidates(tex):
+        try:
+            read.append((cand, _relation(parse(cand, functions), vocab, tokens)))
+        except Unreadable as why:
+            reasons.append(str(why))
+    return read, reasons, tokens
+
+
+def parse_table_text(derivations: Sequence[Derivation]) -> str:
+    """The text of ``generated/machine_reading.json``: the parse of every side the
+    machine reading of ``derivations`` parses, from the committed table where it
+    holds the side, else parsed afresh (``crane_sym.audit.parse_table``).
+
+    Parameters
+    ----------
+    derivations : sequence of Derivation
+        The built papers, each of whose published prints is read.
+    """
+    parse_side.cache_clear()
+    table = parse_table()
+    table.requested.clear()
+    for d in derivations:
+        for f in d.published:
+            if f.printed is not None and "\\div" not in f.latex:
+                _read(d, f)
+    return render(table, parser())
 
 
 def _explained(d: Derivation, f: PublishedFormula, parsed: list) -> str:

@@ -106,6 +106,7 @@ def cmd_audit(args: argparse.Namespace) -> int:
     # imported on use: see the module docstring
     from crane_sym.audit.verdicts import audit
     from crane_sym.audit.formats import FORMATS
+    from crane_sym.audit.latex_parse import parse_table
     records, timings = [], []
     with progress.reporting(_progress(args)) as say:
         for i in _ids(args.ids):
@@ -117,6 +118,11 @@ def cmd_audit(args: argparse.Namespace) -> int:
                 records += audit(d)
             timings.append((i, built - start, time.perf_counter() - built))
     print(FORMATS[args.format](records))
+    table = parse_table()
+    if table.fresh:
+        print(f"machine reading: {table.fresh} of {len(table.requested)} printed sides parsed "
+              f"afresh, not from the committed table {table.path} (`crane-sym generate` "
+              "adds them)", file=sys.stderr)
     if args.profile:
         for i, b, a in timings:
             print(f"{i}: build {b:.2f} s, audit {a:.2f} s; slowest steps:", file=sys.stderr)
@@ -328,6 +334,10 @@ def parser() -> argparse.ArgumentParser:
                    "integrator, each 2 to 1e7 (default: 100 2000 100000)")
     p.add_argument("--sampled", action="store_true",
                    help="also bench loads sampled on a grid against the closed forms")
+    p.add_argument("--audit", action="store_true",
+                   help="bench the main job: `audit` of every paper and `generate --check`, "
+                        "each in a fresh process, against their targets, and an audit's "
+                        "time paper by paper and stage by stage")
     p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
                    "per-design integration; alone, only that")
     p.add_argument("--components", nargs="+", metavar="FILE",

@@ -1,8 +1,11 @@
 """Everything ``crane-sym generate`` writes: one module per derivation, one
-per shipped scene, and the package ``__init__``."""
+per shipped scene, the package ``__init__``, and the machine reading's table of
+parses (``crane_sym.audit.parse_table``)."""
 from __future__ import annotations
 
 from crane_sym import progress, registry
+from crane_sym.audit.machine_read import parse_table_text
+from crane_sym.audit.parse_table import FILE as PARSE_TABLE
 from crane_sym.codegen import module as codegen
 from crane_sym.codegen import files as module_files
 from crane_sym.scenes import specialize
@@ -23,4 +26,7 @@ def all_files() -> dict[str, str]:
     for name in list_scenes():
         with say.task(f"specializing scene {name}"):
             modules.update(specialize.scene_files(name))
-    return module_files.with_package_init(modules)
+    files = module_files.with_package_init(modules)
+    with say.task("reading the prints by machine (the table of parses)"):
+        files[PARSE_TABLE] = parse_table_text(derivations)
+    return files
