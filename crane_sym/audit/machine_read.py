@@ -24,9 +24,10 @@ from typing import Sequence
 
 import sympy as sp
 
-from crane_sym.audit.checks import symbolic_equivalence
+from crane_sym.audit.checks import numeric_equivalence, symbolic_equivalence
 from crane_sym.derivation import Derivation
 from crane_sym.latex import latex
+from crane_sym.outcomes import FAIL
 from crane_sym.audit.latex_parse import (Parsed, Unreadable, bound_variables, candidates, parse,
                                          parse_side, parse_table, parser)
 from crane_sym.audit.parse_table import render
@@ -87,8 +88,32 @@ def _zero(expr: sp.Basic) -> bool:
     return sp.expand(expr) == 0 or sp.simplify(expr, doit=False) == 0
 
 
+def _refuted(parsed, hand: sp.Eq, d: Derivation) -> bool:
+    """True when mpmath at a few seeded points shows the parse is not the
+    relation ``hand`` in any form ``_same`` accepts (``numeric_equivalence``
+    fails by more than a relative 10⁻¹²: neither equal sides, nor equal
+    residuals, nor a constant residual ratio), so no simplification need be
+    tried; False when the numbers cannot tell (an integral, a name outside the
+    symbol table, a point where the print is undefined) or the expanded
+    difference is already 0."""
+    if parsed.has(sp.Integral) or hand.has(sp.Integral):
+        return False
+    relation = parsed if isinstance(parsed, sp.Equality) \
+        else sp.Eq(hand.lhs, parsed, evaluate=False)
+    if relation.lhs == hand.lhs and sp.expand(relation.rhs - hand.rhs) == 0 \
+            or sp.expand((relation.lhs - relation.rhs) - (hand.lhs - hand.rhs)) == 0:
+        return False
+    try:
+        return numeric_equivalence(relation, hand, d.symbols, points=3,
+                                   tol=1e-12).status == FAIL
+    except (ValueError, TypeError, ArithmeticError, NameError, AttributeError):
+        return False
+
+
 def _same(parsed, hand: sp.Eq, d: Derivation) -> bool:
     parsed, hand = _canonical(parsed), _canonical(hand)
+    if _refuted(parsed, hand, d):
+        return False               # numbers refute it: no simplification can confirm it
     if not isinstance(parsed, sp.Equality):
         return _zero(parsed - hand.rhs)
     if parsed.lhs == hand.lhs:
