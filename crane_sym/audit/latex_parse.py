@@ -229,7 +229,15 @@ def parse_side(side: str, functions: frozenset) -> sp.Basic:
     side (``crane_sym.audit.parse_table``), else by the Earley parser, which is
     slow (papers repeat their prints: each side is parsed once per process).
     A fresh parse is returned as the table would give it (its names plain
-    strings, not lark's tokens), so a run reads the same with or without it."""
+    strings, not lark's tokens), so a run reads the same with or without it.
+
+    Parameters
+    ----------
+    side : str
+        One side of a relation, after the layout pass.
+    functions : frozenset of str
+        The names to read as functions.
+    """
     table = parse_table()
     entry = table.lookup(side, functions)
     if entry is None:

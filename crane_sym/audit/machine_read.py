@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Sequence
 
 import sympy as sp
 
@@ -36,7 +35,7 @@ from crane_sym.audit.print_names import (BOUND_SYMBOL, cached_vocabulary, calls_
 from crane_sym.published import PublishedFormula
 
 __all__ = ["AGREES", "DIFFERS", "UNREADABLE", "MachineRead", "machine_read",
-           "parse_table_text"]
+           "parse_table_text", "table_entries"]
 
 AGREES, DIFFERS, UNREADABLE = "agrees", "differs", "unreadable"
 _WRAPPERS = re.compile(r"\\(?:text|mathrm|mathit|mathtt|operatorname)\s*")
@@ -141,7 +140,15 @@ def _difference(parsed, hand: sp.Eq, names: dict) -> str:
 
 
 def machine_read(d: Derivation, f: PublishedFormula) -> MachineRead:
-    """The print of ``f`` read by machine against its hand transcription."""
+    """The print of ``f`` read by machine against its hand transcription.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built paper, whose symbols and names the print is read in.
+    f : PublishedFormula
+        One of its published formulas.
+    """
     if f.printed is None:
         return MachineRead(UNREADABLE, "no transcription to compare: " + f.not_checkable)
     if "\\div" in f.latex:
@@ -190,24 +197,34 @@ def _read(d: Derivation, f: PublishedFormula) -> tuple[list, list[str], dict]:
     return read, reasons, tokens
 
 
-def parse_table_text(derivations: Sequence[Derivation]) -> str:
-    """The text of ``generated/machine_reading.json``: the parse of every side the
-    machine reading of ``derivations`` parses, from the committed table where it
-    holds the side, else parsed afresh (``crane_sym.audit.parse_table``).
+def table_entries(d: Derivation) -> dict[str, dict]:
+    """The committed table's entries for every side the machine reading of ``d``
+    parses (key -> entry), each from the table where it holds the side, else
+    parsed afresh (``crane_sym.audit.parse_table``).
 
     Parameters
     ----------
-    derivations : sequence of Derivation
-        The built papers, each of whose published prints is read.
+    d : Derivation
+        The built paper, each of whose published prints is read.
     """
-    parse_side.cache_clear()
+    parse_side.cache_clear()           # every side asked again, so every one is noted
     table = parse_table()
     table.requested.clear()
-    for d in derivations:
-        for f in d.published:
-            if f.printed is not None and "\\div" not in f.latex:
-                _read(d, f)
-    return render(table, parser())
+    for f in d.published:
+        if f.printed is not None and "\\div" not in f.latex:
+            _read(d, f)
+    return dict(table.requested)
+
+
+def parse_table_text(entries: dict[str, dict]) -> str:
+    """The text of ``generated/machine_reading.json`` holding ``entries``.
+
+    Parameters
+    ----------
+    entries : dict of str to dict
+        Key -> entry, of every paper (:func:`table_entries`).
+    """
+    return render(entries, parser())
 
 
 def _explained(d: Derivation, f: PublishedFormula, parsed: list) -> str:

@@ -164,6 +164,7 @@ class ParseTable:
     path: Path | None
     requested: dict[str, dict] = field(default_factory=dict)
     fresh: int = 0                   # sides parsed afresh (not in the table)
+    found: int = 0                   # sides found in the table
 
     @classmethod
     def read(cls, fingerprint: str) -> "ParseTable":
@@ -191,6 +192,7 @@ class ParseTable:
         if entry is None or "live" in entry or entry["side"] != side:
             return None
         self.requested[key(side, functions)] = entry
+        self.found += 1
         return entry
 
     def keep(self, entry: dict) -> None:
@@ -199,14 +201,13 @@ class ParseTable:
         self.fresh += 1
 
 
-def render(table: ParseTable, parser: dict[str, str]) -> str:
-    """The table's file text: a header, then one entry a line in key order, the
-    entries being those ``table.requested`` (what the readings asked).
+def render(entries: dict[str, dict], parser: dict[str, str]) -> str:
+    """The table's file text: a header, then one entry a line in key order.
 
     Parameters
     ----------
-    table : ParseTable
-        The table after the machine reading of every paper.
+    entries : dict of str to dict
+        Key -> entry: what the machine reading of every paper asked.
     parser : dict of str to str
         The parser's versions and fingerprint, written in the header.
     """
@@ -215,7 +216,7 @@ def render(table: ParseTable, parser: dict[str, str]) -> str:
                      "generate --check`; keys are SHA-256 of the side and its function names.",
             "parser": parser}
     lines = [json.dumps(k) + ": " + json.dumps(e, ensure_ascii=False)
-             for k, e in sorted(table.requested.items())]
+             for k, e in sorted(entries.items())]
     body = ",\n".join(lines)
     return (json.dumps(head, ensure_ascii=False, indent=1)[:-2]
             + ',\n "parses": {\n' + body + "\n }\n}\n")

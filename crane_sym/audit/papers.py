@@ -1,0 +1,95 @@
+"""The papers audited, each built and judged in a process of its own when
+more than one core is free.
+
+A paper's build and audit share nothing with another paper's, and SymPy holds
+the GIL, so two papers in two processes take about the time of the longer one
+where one process takes their sum. The records come back in the papers'
+order, the same records a single process gives (``tests/test_audit_papers.py``).
+"""
+from __future__ import annotations
+
+import os
+import time
+from concurrent.futures import ProcessPoolExecutor
+from dataclasses import dataclass
+
+from crane_sym import progress, registry
+from crane_sym.audit.latex_parse import parse_table
+from crane_sym.audit.verdicts import AuditRecord, audit
+
+__all__ = ["PaperAudit", "audit_paper", "audit_papers", "workers"]
+
+
+@dataclass(frozen=True)
+class PaperAudit:
+    """One paper's records, with its build and audit times [s], its five
+    slowest steps (seconds, label), and how many sides of its prints the
+    parser read afresh, not from the committed table."""
+
+    paper: str
+    records: list[AuditRecord]
+    build: float
+    audit: float
+    slowest: tuple[tuple[float, str], ...]
+    parsed_fresh: int
+
+
+def audit_paper(paper: str) -> PaperAudit:
+    """Build one paper and judge its printed formulas, timed.
+
+    Parameters
+    ----------
+    paper : str
+        The paper's id.
+    """
+    fresh = parse_table().fresh
+    start = time.perf_counter()
+    d = registry.get(paper)
+    built = time.perf_counter()
+    records = audit(d)
+    slowest = tuple((s.seconds, s.label) for s in sorted(d.steps, key=lambda s: -s.seconds)[:5])
+    return PaperAudit(paper, records, built - start, time.perf_counter() - built, slowest,
+                      parse_table().fresh - fresh)
+
+
+def _quiet_audit(paper: str) -> PaperAudit:
+    """:func:`audit_paper` in a worker process, its progress silent (the parent
+    reports the papers)."""
+    with progress.reporting(progress.Progress(False)):
+        return audit_paper(paper)
+
+
+def workers(papers: int) -> int:
+    """Processes for ``papers`` papers: one a core this process may use, at most
+    one a paper.
+
+    Parameters
+    ----------
+    papers : int
+        How many papers are to be audited.
+    """
+    cores = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    return max(1, min(papers, cores or 1))
+
+
+def audit_papers(papers: list[str], processes: int) -> list[PaperAudit]:
+    """Each paper audited, in ``processes`` worker processes when more than one
+    (in this one otherwise), the results in the order of ``papers``.
+
+    Parameters
+    ----------
+    papers : list of str
+        The papers' ids.
+    processes : int
+        How many processes to use (:func:`workers` gives one a core).
+    """
+    say = progress.current()
+    if processes <= 1 or len(papers) <= 1:
+        out = []
+        for paper in papers:
+            with say.task(f"building and auditing {paper}"):
+                out.append(audit_paper(paper))
+        return out
+    with say.task(f"building and auditing {len(papers)} papers in {processes} processes"):
+        with ProcessPoolExecutor(max_workers=processes) as pool:
+            return list(pool.map(_quiet_audit, papers))
