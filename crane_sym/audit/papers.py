@@ -42,11 +42,14 @@ def audit_paper(paper: str) -> PaperAudit:
     paper : str
         The paper's id.
     """
+    say = progress.current()
     fresh = parse_table().fresh
     start = time.perf_counter()
-    d = registry.get(paper)
+    with say.task(f"building {paper}"):
+        d = registry.get(paper)
     built = time.perf_counter()
-    records = audit(d)
+    with say.task(f"auditing {paper} ({len(d.published)} printed formulas)"):
+        records = audit(d)
     slowest = tuple((s.seconds, s.label) for s in sorted(d.steps, key=lambda s: -s.seconds)[:5])
     return PaperAudit(paper, records, built - start, time.perf_counter() - built, slowest,
                       parse_table().fresh - fresh)
@@ -83,13 +86,8 @@ def audit_papers(papers: list[str], processes: int) -> list[PaperAudit]:
     processes : int
         How many processes to use (:func:`workers` gives one a core).
     """
-    say = progress.current()
     if processes <= 1 or len(papers) <= 1:
-        out = []
-        for paper in papers:
-            with say.task(f"building and auditing {paper}"):
-                out.append(audit_paper(paper))
-        return out
-    with say.task(f"building and auditing {len(papers)} papers in {processes} processes"):
+        return [audit_paper(paper) for paper in papers]
+    with progress.current().task(f"building and auditing {len(papers)} papers in {processes} processes"):
         with ProcessPoolExecutor(max_workers=processes) as pool:
             return list(pool.map(_quiet_audit, papers))
