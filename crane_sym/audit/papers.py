@@ -10,14 +10,17 @@ from __future__ import annotations
 
 import os
 import time
-from concurrent.futures import ProcessPoolExecutor
+from concurrent.futures import ProcessPoolExecutor, as_completed
 from dataclasses import dataclass
+from typing import Callable, TypeVar
 
 from crane_sym import progress, registry
 from crane_sym.audit.latex_parse import parse_table
 from crane_sym.audit.verdicts import AuditRecord, audit
 
-__all__ = ["PaperAudit", "audit_paper", "audit_papers", "workers"]
+__all__ = ["PaperAudit", "audit_paper", "audit_papers", "in_processes", "workers"]
+
+T = TypeVar("T")
 
 
 @dataclass(frozen=True)
@@ -55,11 +58,41 @@ def audit_paper(paper: str) -> PaperAudit:
                       parse_table().fresh - fresh)
 
 
-def _quiet_audit(paper: str) -> PaperAudit:
-    """:func:`audit_paper` in a worker process, its progress silent (the parent
-    reports the papers)."""
+def _quietly(work: Callable[[str], T], paper: str) -> T:
+    """``work(paper)`` in a worker process, its progress silent (the parent
+    reports each paper as it comes back)."""
     with progress.reporting(progress.Progress(False)):
-        return audit_paper(paper)
+        return work(paper)
+
+
+def in_processes(work: Callable[[str], T], papers: list[str], processes: int,
+                 what: str, done: Callable[[T], str]) -> list[T]:
+    """``work(paper)`` for each paper in ``processes`` worker processes, the
+    results in the order of ``papers``; ``done(result)`` said as each comes back.
+
+    Parameters
+    ----------
+    work : callable
+        A module-level function of a paper's id (it is sent to the workers).
+    papers : list of str
+        The papers' ids.
+    processes : int
+        How many worker processes.
+    what : str
+        What is done, for the progress line of the whole.
+    done : callable
+        One progress line on a result.
+    """
+    say = progress.current()
+    with say.task(f"{what}: {len(papers)} papers in {processes} processes"):
+        with ProcessPoolExecutor(max_workers=processes) as pool:
+            futures = {pool.submit(_quietly, work, paper): paper for paper in papers}
+            results = {}
+            for future in as_completed(futures):
+                results[futures[future]] = future.result()
+                say.say(f"  {done(results[futures[future]])} ({len(results)} of "
+                        f"{len(papers)})")
+    return [results[paper] for paper in papers]
 
 
 def workers(papers: int) -> int:
@@ -88,6 +121,6 @@ def audit_papers(papers: list[str], processes: int) -> list[PaperAudit]:
     """
     if processes <= 1 or len(papers) <= 1:
         return [audit_paper(paper) for paper in papers]
-    with progress.current().task(f"building and auditing {len(papers)} papers in {processes} processes"):
-        with ProcessPoolExecutor(max_workers=processes) as pool:
-            return list(pool.map(_quiet_audit, papers))
+    return in_processes(audit_paper, papers, processes, "building and auditing",
+                        lambda a: f"audited {a.paper}: {len(a.records)} printed formulas, "
+                                  f"build {a.build:.1f} s, audit {a.audit:.1f} s")

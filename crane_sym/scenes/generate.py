@@ -9,11 +9,9 @@ are the same bytes either way, assembled in the order one process gives.
 """
 from __future__ import annotations
 
-from concurrent.futures import ProcessPoolExecutor
-
 from crane_sym import progress, registry
 from crane_sym.audit.machine_read import parse_table_text, table_entries
-from crane_sym.audit.papers import workers
+from crane_sym.audit.papers import in_processes, workers
 from crane_sym.audit.parse_table import FILE as PARSE_TABLE
 from crane_sym.codegen import module as codegen
 from crane_sym.codegen import files as module_files
@@ -53,10 +51,11 @@ def paper_files(paper: str) -> tuple[dict[str, str], dict[str, dict[str, str]], 
     return own, scenes, entries
 
 
-def _quiet_paper_files(paper: str) -> tuple:
-    """:func:`paper_files` in a worker process, its progress silent."""
-    with progress.reporting(progress.Progress(False)):
-        return paper_files(paper)
+def _printed(share: tuple) -> str:
+    """One progress line on a paper's share of ``generated/``."""
+    own, scenes, entries = share
+    return (f"printed {', '.join(own) or 'no module'}; specialized scenes "
+            f"{', '.join(scenes) or '(none)'}; {len(entries)} sides read by machine")
 
 
 def all_files(processes: int | None = None) -> dict[str, str]:
@@ -71,10 +70,8 @@ def all_files(processes: int | None = None) -> dict[str, str]:
     papers = registry.ids()
     processes = workers(len(papers)) if processes is None else processes
     if processes > 1:
-        with progress.current().task(f"printing {len(papers)} papers and their scenes in "
-                                     f"{processes} processes"):
-            with ProcessPoolExecutor(max_workers=processes) as pool:
-                shares = list(pool.map(_quiet_paper_files, papers))
+        shares = in_processes(paper_files, papers, processes, "printing modules and scenes",
+                              _printed)
     else:
         shares = [paper_files(paper) for paper in papers]
     modules: dict[str, str] = {}
