@@ -164,3 +164,21 @@ def test_a_side_not_in_the_table_is_parsed_afresh_and_counted():
     a, b, x = sp.symbols("a b x")
     assert sp.simplify(first - (a / b + sp.Float("3.5") * x + 39)) == 0
     assert all(type(s.name) is str for s in first.free_symbols)   # not lark's tokens
+
+
+def test_a_side_missing_from_the_table_makes_generate_check_stale(monkeypatch):
+    """A side the table lacks is parsed afresh, counted, and put back in the text
+    `generate` writes, so that text differs from a table without it."""
+    from crane_sym.audit.latex_parse import parse_table
+    from crane_sym.audit.machine_read import parse_table_text, table_entries
+    d = registry.get("travel_braking")
+    table = parse_table()
+    whole = table_entries(d)
+    dropped = sorted(whole)[0]
+    monkeypatch.setattr(table, "entries", {k: e for k, e in table.entries.items()
+                                           if k != dropped})
+    before = table.fresh
+    again = table_entries(d)
+    assert table.fresh == before + 1 and again == whole
+    without = {k: e for k, e in whole.items() if k != dropped}
+    assert parse_table_text(again) != parse_table_text(without)

@@ -164,7 +164,7 @@ class ParseTable:
     path: Path | None
     requested: dict[str, dict] = field(default_factory=dict)
     fresh: int = 0                   # sides parsed afresh (not in the table)
-    found: int = 0                   # sides found in the table
+    found: int = 0                   # look-ups the table answered
 
     @classmethod
     def read(cls, fingerprint: str) -> "ParseTable":
@@ -196,8 +196,10 @@ class ParseTable:
         return entry
 
     def keep(self, entry: dict) -> None:
-        """Note an entry parsed afresh in this process."""
-        self.requested[key(entry["side"], frozenset(entry["functions"]))] = entry
+        """Note an entry parsed afresh in this process, and hold it for the next
+        look-up (an unreadable side raises, so ``parse_side``'s cache misses it)."""
+        k = key(entry["side"], frozenset(entry["functions"]))
+        self.requested[k] = self.entries[k] = entry
         self.fresh += 1
 
 

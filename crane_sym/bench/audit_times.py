@@ -6,9 +6,10 @@ Targets: the audit of the five papers at most 20 s from a cold process, and
 ``generate --check`` at most 20 s. The stages of one paper's audit are its
 build (``registry.get``), the checks of its printed formulas
 (``audit_formula``: symbolic, numeric, dimensions), and the machine reading of
-its prints (``machine_read``), the last with how many of the prints' sides
-came from the committed table of parses and how many the Earley parser read
-afresh (``crane_sym.audit.parse_table``). The machine is shared, so each
+its prints (``machine_read``), the last with how many look-ups of the prints'
+sides the committed table of parses answered (an unreadable side is looked up
+each time it is met) and how many sides the Earley parser read afresh
+(``crane_sym.audit.parse_table``). The machine is shared, so each
 measurement is quoted with the load average before and after it.
 """
 from __future__ import annotations
@@ -43,7 +44,7 @@ class PaperTimes:
     build: float
     checks: float
     reading: float
-    from_table: int            # sides of its prints the table held
+    from_table: int            # look-ups of its prints' sides the table answered
     parsed_fresh: int          # sides the Earley parser read afresh
 
     @property
@@ -147,6 +148,6 @@ def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes]) -
                  f"{sum(p.total for p in papers):.2f}"])
     stages = markdown_table(
         ["paper", "formulas", "build s", "checks s", "machine reading s",
-         "sides from table / parsed afresh", "total s"], rows)
+         "table look-ups / sides parsed afresh", "total s"], rows)
     return "\n".join(["## Targets", "", targets, "", "## Where an audit's time goes "
                       "(one process, paper by paper)", "", stages])
