@@ -38,7 +38,7 @@ ROWS = {
     "force 1e300 N": Fault(TRAVEL, 'force = "24 kN"', 'force = "1e300 N"',
                            rf"resistance 'brake': \w+ {MAGNITUDE}'1e300 N'"),
     "speed 1e308 rpm": Fault(HOIST, 'speed = "1500 rpm"', 'speed = "1e308 rpm"',
-                             rf"start of 'motor': speed {MAGNITUDE}'1e308 rpm'"),
+                             rf"run: speed {MAGNITUDE}'1e308 rpm'"),
     "reeving 1e300": Fault(HOIST, "reeving = 4", "reeving = 1e300",
                            rf"drum 'tackle': reeving {MAGNITUDE}'1e\+300'"),
     "ratio 1e-320": Fault(HOIST, "ratio = 26.2", "ratio = 1e-320",

@@ -216,9 +216,12 @@ def test_gaps_as_they_are(tmp_path):
     assert {k: v[0] for k, v in verdicts.items()} == {
         "open": "confirmed", "chain at start": "discrepancy", "closed": "confirmed",
         "open at 0.08 s": "discrepancy", "open again": "confirmed"}
-    with pytest.raises(ComponentError, match="the link 'c_a' is in its gap in this mode"):
-        _audit(tmp_path, GAP, _formula("by c_a", alone, "c_b.frequency", CHAIN_NAMES,
-                                       'mode = "c_a"\n'))
+    path = tmp_path / "model.toml"       # the model cannot check it: not_checkable, why
+    path.write_text(GAP + _formula("by c_a", alone, "c_b.frequency", CHAIN_NAMES,
+                                   'mode = "c_a"\n'), encoding="utf-8")
+    (record,) = audit_file(read_component_file(path))
+    assert record.verdict == "not_checkable"
+    assert "the link 'c_a' is in its gap in this mode" in record.detail
 
 
 #: A drive held by its speed law and three bodies on it: one rope alone, a chain
@@ -352,8 +355,6 @@ def test_negative_parameters_keep_the_sign_the_file_gives(tmp_path):
     ('mode = "rop"\n', "mode must be \"lowest\", a number k >= 1 (the k-th from the lowest) "
                        "or an elastic link (rope), got 'rop'"),
     ('at = "-1 s"\n', "at must be an instant >= 0 s"),
-    ("mode = 2\n", "natural frequency number 2 in the mode of the run's start: the mode "
-                   "has 1 (k from 1 to 1)"),
 ])
 def test_a_bad_choice_is_one_line(extra, message, tmp_path):
     path = tmp_path / "model.toml"
@@ -362,6 +363,17 @@ def test_a_bad_choice_is_one_line(extra, message, tmp_path):
     with pytest.raises(ComponentError) as err:
         audit_file(read_component_file(path))
     assert message in str(err.value) and "\n" not in str(err.value)
+
+
+def test_a_frequency_the_mode_has_not_is_not_checkable(tmp_path):
+    """mode = 2 of a one-mode model: the file is fine, the model cannot check it."""
+    path = tmp_path / "model.toml"
+    path.write_text(RIGID + _formula("w", r"\omega = \sqrt{c/m}", "rope.frequency",
+                                     RIGID_NAMES, "mode = 2\n"), encoding="utf-8")
+    (record,) = audit_file(read_component_file(path))
+    assert record.verdict == "not_checkable"
+    assert ("natural frequency number 2 in the mode of the run's start: the mode has 1 "
+            "(k from 1 to 1)") in record.detail
 
 
 def test_mode_and_at_belong_to_a_frequency(tmp_path):

@@ -104,7 +104,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
         v = abs(p.value)
         if v == 0:         # put to zero before any check (``zero``): its name is only read
             entries[symbol] = PhysicalSymbol(symbol, p.dimension, p.unit, p.description,
-                                             PARAMETER, _sign(symbol))
+                                             PARAMETER, "positive")
             return
         low, high = (v, v) if exact else (v / SPREAD, v * SPREAD)
         # drawn at the sign the file gives it: a real symbol (a motor's torque)
