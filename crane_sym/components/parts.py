@@ -77,7 +77,7 @@ Given = Union[str, float, int, Value]
 #: The magnitudes a value may have in SI units, besides 0: past them a run's
 #: linear algebra is singular (1e308 kg, 1e-300 N/m) or overflows to inf
 #: (1e-320 kg). A backlash of 1e-6 deg is 1.7e-8 rad.
-MAGNITUDES = (1e-9, 1e12)
+MAGNITUDES = (1e-30, 1e30)
 
 
 def value(owner: str, what: str, given: Given, expected: Dimension | None = None) -> Value:
