@@ -14,10 +14,12 @@ nilpotent series Σ_j (N t)^j / j! · Q with Q = I − Σ C_λ and N = M Q, as t
 per-design route does. A pair λ = σ ± iω folds into t^0 e^{σt} cos ωt and
 sin ωt terms.
 
-Equal nonzero eigenvalues (within 10⁻⁶ of the spectrum's scale: two equal
-drives) form a cluster with one projector C = R (Lᵀ R)⁻¹ Lᵀ from its right
-and left eigenvectors, as the per-design route clusters them. A design is
-refused (for the per-design route) where this is not safe: a cluster's
+Equal nonzero eigenvalues (equal to 10⁻¹² of the spectrum's scale: two
+equal drives) form a cluster with one projector C = R (Lᵀ R)⁻¹ Lᵀ from its
+right and left eigenvectors. A design is refused (for the per-design route,
+which resolves nearly equal and defective eigenvalues,
+:mod:`crane_sym.mechanics.spectral_clusters`) where this is not safe:
+eigenvalues closer than 10⁻⁶ of the scale but not equal, a cluster's
 condition number ‖(L̂ᵀ R̂)⁻¹‖ above ``cond_limit`` (for a simple eigenvalue
 1/|ŵᵀv̂|; a defective eigenvalue makes it huge), a complex pair closer to the
 real axis than 10⁻⁵ of the scale, or spectra of M and Mᵀ that do not match.
@@ -33,8 +35,10 @@ import numpy as np
 
 __all__ = ["BatchForm", "batch_forms", "first_of_equal"]
 
-#: Largest eigenvalue condition number the batched route accepts.
-COND_LIMIT = 1e8
+#: Largest eigenvalue condition number the batched route accepts: a design's
+#: error grows like eps times it, so 1e5 keeps it near 1e-11 (a nearly
+#: defective pair, critical damping, goes to the per-design route).
+COND_LIMIT = 1e5
 
 
 @dataclass(frozen=True)
@@ -167,6 +171,12 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     im = np.abs(lam.imag)
     bad |= np.any(live & (im > 0) & (im < 1e-5 * scale), axis=1)
     bad |= ~np.all(np.isfinite(lam), axis=1) | ~np.all(np.isfinite(mu), axis=1)
+    # a cluster is one eigenvalue with one projector: only where its members are
+    # equal to rounding (equal drives); nearly equal ones go to the per-design
+    # route, whose clusters resolve them (spectral_clusters)
+    gap = np.abs(np.diff(lam, axis=1))
+    same = live[:, 1:] & live[:, :-1] & (cat[:, 1:] == cat[:, :-1])
+    bad |= np.any(same & (gap < tol) & (gap > 1e-12 * scale), axis=1)
     return first, inverse, lam, vr, mu, vl, cat, bad
 
 

@@ -28,7 +28,9 @@ from typing import Iterator, Sequence
 import numpy as np
 import sympy as sp
 
-__all__ = ["ClosedForm", "clear_cache", "closed_form", "jordan", "jordan_blocks"]
+from crane_sym.mechanics.spectral_clusters import numpy_terms
+
+__all__ = ["ClosedForm", "clear_cache", "closed_form", "fold", "jordan", "jordan_blocks"]
 
 
 @dataclass(frozen=True)
@@ -160,72 +162,53 @@ def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedFo
     A : (n, n) array-like of numbers
     b : (n,) array-like of numbers
     exact : bool, optional
-        True: SymPy's exact Jordan form (entries as exact decimals); cheap for
-        n ≤ 4 (two masses: quadratic eigenvalues), slow for larger systems with
-        arbitrary data. False: numeric eigenvectors of the nonzero eigenvalues
-        (simple, or repeated with a full set of eigenvectors) and the exact
-        nilpotent series on the rest
-        (rigid modes). Default: exact for n ≤ 4, numeric above.
+        True: SymPy's exact Jordan form (entries as exact decimals), whose cost
+        grows without bound with n and near-coinciding eigenvalues (radicals):
+        only when asked for. False or None (the default): the spectral clusters
+        (:mod:`crane_sym.mechanics.spectral_clusters`), O(n³), exact where
+        eigenvalues coincide or nearly do.
     """
     A = np.asarray(A, dtype=float)
     key = (tuple(map(float, A.ravel())), tuple(map(float, np.ravel(b))))
-    if exact if exact is not None else len(key[1]) <= 4:
+    if exact:
         return _closed_form_cached(*key)
     return _closed_form_numeric(*key)
 
 
 @lru_cache(maxsize=256)
 def _closed_form_numeric(a_key: tuple, b_key: tuple) -> ClosedForm:
-    """exp(M t) = Σ e^{λt} C_λ over the nonzero eigenvalues, plus Σ_j (N t)^j / j! · Q
-    on the generalized kernel (Q = I − Σ C_λ, N = M Q). C_λ = R (Lᴴ R)⁻¹ Lᴴ from the
-    right and left eigenvectors of λ: a repeated eigenvalue with a full set of
-    eigenvectors (two equal drives) stays numeric; a defective one goes exact."""
-    from scipy.linalg import eig
-
+    """exp(M t) from its spectral clusters (:mod:`crane_sym.mechanics.spectral_clusters`):
+    single eigenvalues from their eigenvectors, the kernel's nilpotent series, and
+    coinciding or nearly coinciding eigenvalues (critical damping, equal
+    subsystems) in closed form from an ordered Schur form's projector."""
     n = len(b_key)
     M = np.zeros((n + 1, n + 1))
     M[:n, :n] = np.reshape(a_key, (n, n))
     M[:n, n] = b_key
-    lam, vl, vr = eig(M, left=True, right=True)
-    scale = max(np.abs(lam).max(), 1.0)
-    live = np.flatnonzero(np.abs(lam) > 1e-6 * scale)
-    clusters: list[list[int]] = []                 # equal eigenvalues (symmetric sides)
-    for i in live:
-        near = [c for c in clusters if abs(lam[c[0]] - lam[i]) < 1e-6 * scale]
-        if near:
-            near[0].append(i)
-        else:
-            clusters.append([i])
-    projector = np.zeros((n + 1, n + 1), dtype=complex)
-    powers, sigmas, omegas, sine, coefs = [], [], [], [], []
-    for cluster in clusters:     # projector R (L^H R)^-1 L^H: semisimple clusters only
-        R, L = vr[:, cluster], vl[:, cluster].conj().T
-        gram = L @ R
-        if np.linalg.cond(gram) > 1e8:
-            return _closed_form_cached(a_key, b_key)   # a defective nonzero eigenvalue
-        C = R @ np.linalg.solve(gram, L)
-        projector += C
-        value = np.mean(lam[cluster])
-        if abs(value.imag) < 1e-6 * scale:             # real, or a pair too close to part
-            value = complex(value.real, 0.0)
-        if value.imag < 0:
+    return fold(n, numpy_terms(M))
+
+
+def fold(n: int, terms: list[tuple[int, complex, np.ndarray]]) -> ClosedForm:
+    """The real ClosedForm of Σ t^j e^{λt} C: a pair λ = σ ± iω into cos ωt and
+    sin ωt terms (the terms of λ with ω < 0 are their conjugates' and dropped);
+    terms of one (j, λ) summed."""
+    merged: dict[tuple, np.ndarray] = {}
+    for j, lam, C in terms:
+        lam = complex(lam)
+        if lam.imag < 0:
             continue
-        pair = 2.0 if value.imag > 0 else 1.0
+        key = (int(j), lam.real, lam.imag)
+        merged[key] = merged.get(key, 0) + np.asarray(C, dtype=complex)
+    powers, sigmas, omegas, sine, coefs = [], [], [], [], []
+    for (j, re, im), C in sorted(merged.items(), key=lambda kv: kv[0]):
+        pair = 2.0 if im > 0 else 1.0
         for is_sine, part in ((False, pair * C.real), (True, -pair * C.imag)):
-            if value.imag == 0 and is_sine:
+            if im == 0 and is_sine:
                 continue
-            powers.append(0), sigmas.append(value.real), omegas.append(abs(value.imag))
+            powers.append(j), sigmas.append(re), omegas.append(im)
             sine.append(is_sine), coefs.append(part)
-    Q = np.eye(n + 1) - projector.real
-    N = M @ Q
-    term = Q.copy()
-    for j in range(n + 1 - live.size):
-        if j:
-            term = N @ term / j
-        powers.append(j), sigmas.append(0.0), omegas.append(0.0)
-        sine.append(False), coefs.append(term.copy())
     return ClosedForm(n, np.array(powers, float), np.array(sigmas), np.array(omegas),
-                      np.array(sine), np.array(coefs))
+                      np.array(sine, dtype=bool), np.array(coefs))
 
 
 def clear_cache() -> None:

@@ -36,6 +36,7 @@ import sympy as sp
 
 from crane_sym.mechanics.closed_forms import ClosedForm, jordan, jordan_blocks
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
+from crane_sym.mechanics.spectral_clusters import Algebra, cluster_terms, group
 from crane_sym.mechanics.piecewise_linear import Guard, HybridSystem, sign_change, signal
 
 __all__ = ["DPS", "ExactForm", "ExactRun", "ExactSegment", "crossing", "exact_form",
@@ -154,34 +155,49 @@ def _form_jordan(a_key: tuple, b_key: tuple) -> ExactForm:
     return _real_terms([tuple(v) for v in terms.values()], size - 1)
 
 
+def _mp_algebra() -> Algebra:
+    return Algebra(matmul=lambda X, Y: X * Y, norm=lambda X: mpmath.mnorm(X, "F"),
+                   sqrt=mpmath.sqrt, trace=lambda X: mpmath.fsum(X[i, i] for i in range(X.rows)),
+                   eps=float(mpmath.mpf(10) ** (-mpmath.mp.dps)))
+
+
 def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
-    """The terms from mpmath's left and right eigenvectors of the nonzero
-    eigenvalues and the nilpotent series on the rest; None where a nonzero
-    eigenvalue is defective (the exact route then)."""
+    """The terms from the spectral clusters of M
+    (:mod:`crane_sym.mechanics.spectral_clusters`), their projectors from
+    mpmath's left and right eigenvectors at twice the working digits (a
+    defective pair's eigenvectors lose half the digits they are computed
+    with); None where even those are not enough (the exact route then)."""
+    algebra = _mp_algebra()
     M = _augmented(a_key, b_key)
     size = M.rows
-    lam, left, right = mpmath.eig(M, left=True, right=True)
+    with mpmath.workdps(2 * mpmath.mp.dps):
+        lam, left, right = mpmath.eig(M, left=True, right=True)
     scale = max(max(abs(v) for v in lam), 1)
-    live = [i for i in range(size) if abs(lam[i]) > mpmath.mpf("1e-6") * scale]
-    clusters: list[list[int]] = []
-    for i in live:
-        near = [c for c in clusters if abs(lam[c[0]] - lam[i]) < mpmath.mpf("1e-6") * scale]
-        near[0].append(i) if near else clusters.append([i])
+    kernel, clusters = group(list(lam), float(scale))
     terms, projector = [], mpmath.zeros(size, size)
     for cluster in clusters:
-        R = mpmath.matrix([[right[r, c] for c in cluster] for r in range(size)])
-        L = mpmath.matrix([[left[c, r] for r in range(size)] for c in cluster])
-        gram = L * R
-        if mpmath.cond(gram) > 1e8:
-            return None
-        C = R * mpmath.inverse(gram) * L
-        projector += C
-        terms.append((0, mpmath.fsum(lam[i] for i in cluster) / len(cluster), C))
+        with mpmath.workdps(2 * mpmath.mp.dps):
+            R = mpmath.matrix([[right[r, c] for c in cluster] for r in range(size)])
+            L = mpmath.matrix([[left[c, r] for r in range(size)] for c in cluster])
+            gram = L * R
+            if mpmath.cond(gram) > mpmath.mpf(10) ** (mpmath.mp.dps - 10):
+                return None
+            P = R * mpmath.inverse(gram) * L
+            mu = mpmath.fsum(lam[i] for i in cluster) / len(cluster)
+        P = P * 1                                     # rounded to the working digits
+        projector += P
+        real = mpmath.mpf("1e-6") if len(cluster) > 1 else mpmath.mpf(10) ** (10 - mpmath.mp.dps)
+        if abs(mpmath.im(mu)) <= real * abs(mu):     # a real eigenvalue, or a real
+            mu = mpmath.mpc(mpmath.re(mu), 0)        # (conjugate-closed) cluster
+        if mpmath.im(mu) < 0:
+            continue
+        N = (M - mu * mpmath.eye(size)) * P
+        terms += cluster_terms(P, N, mu, len(cluster), algebra, float(scale))
     form = _real_terms(terms, size - 1)
     Q = mpmath.eye(size) - projector.apply(mpmath.re)
     N, term = M * Q, Q
     extra = []
-    for j in range(size - len(live)):
+    for j in range(len(kernel)):
         if j:
             term = N * term / j
         extra.append(term)
@@ -194,8 +210,6 @@ def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
 @lru_cache(maxsize=256)
 def _exact_form_cached(a_key: tuple, b_key: tuple, dps: int) -> ExactForm:
     with mpmath.workdps(dps):
-        if len(b_key) <= 4:
-            return _form_jordan(a_key, b_key)
         return _form_eig(a_key, b_key) or _form_jordan(a_key, b_key)
 
 

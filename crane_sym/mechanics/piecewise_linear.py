@@ -42,13 +42,13 @@ from scipy.optimize import brentq
 from crane_sym.mechanics.closed_forms import ClosedForm, closed_form
 
 __all__ = ["ClosedForm", "Guard", "HybridSystem", "PiecewiseResult", "Segment", "by_phase",
-           "closed_form", "first_crossing", "sign_change", "signal", "simulate"]
+           "closed_form", "exact_zeros", "first_crossing", "sign_change", "signal", "simulate"]
 
 
 def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
                    constant: float, t_end: float, *, direction: int = 0,
                    h_min: float = 1e-10, xtol: float = 1e-14,
-                   window: float | None = None) -> float | None:
+                   window: float | None = None, clean: bool = False) -> float | None:
     """The first t in (0, t_end] where g = w·x(t) + k changes sign, or None.
 
     Steps by the certified distance |g|/L (L bounds |g'| over the current
@@ -57,9 +57,13 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
     falls, 0: either) says on which side a start on the surface lies: a phase
     that begins where the previous event left g = 0 up to rounding takes g on
     the side opposite to ``direction``, so the surface it starts on does not
-    fire again at once.
+    fire again at once. ``clean``: g's terms that are rounding noise of an exact
+    zero dropped first (:func:`exact_zeros`), so a rate that is zero in exact
+    arithmetic (a load held constant, a rigid mode's share of a relative
+    load) has no crossings of noise.
     """
-    amps, k = form.scalar_terms(weights, constant, x0)
+    amps, k = (exact_zeros(form, weights, constant, x0) if clean
+               else form.scalar_terms(weights, constant, x0))
     g, slope = signal(form, amps, k)
     size = float(np.sum(np.abs(amps)) + abs(k))
     band = max(form.derivative_bound(amps, 0.0, min(h_min, t_end)) * h_min, 1e-12 * size)
@@ -77,6 +81,27 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
         # its own root, not where g passes the band
         lo, level = 0.0, 0.0
     return brentq(lambda t: g(t) + level, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
+
+
+def exact_zeros(form: ClosedForm, weights: np.ndarray, constant: float,
+                x0: np.ndarray) -> tuple[np.ndarray, float]:
+    """The amplitudes a_j of g = w·x + k (:meth:`ClosedForm.scalar_terms`) with each
+    a_j that is within 64 ulps of the sum it comes from (Σ_i |w_i (C_j z0)_i|) set
+    to 0, and the constant merged into the constant term, likewise."""
+    w = np.asarray(weights, float)
+    z0 = np.append(np.asarray(x0, dtype=float), 1.0)
+    parts = (form.coefficients @ z0)[:, : form.n] * w
+    amps = parts.sum(axis=1)
+    noise = 64 * np.finfo(float).eps * np.abs(parts).sum(axis=1)
+    const = np.flatnonzero((form.powers == 0) & (form.sigmas == 0) & (form.omegas == 0))
+    k = float(constant)
+    if const.size:
+        j = const[0]
+        amps[j] += k
+        noise[j] += 64 * np.finfo(float).eps * abs(k)
+        k = 0.0
+    amps[np.abs(amps) <= noise] = 0.0
+    return amps, k
 
 
 def signal(form: ClosedForm, amps: np.ndarray,
@@ -172,12 +197,15 @@ def sign_change(form: ClosedForm, amps: np.ndarray, g: Callable[[float], float],
 
 def _window(form: ClosedForm, scale: float) -> float:
     """A window length over which the derivative bound stays tight: a quarter of
-    the shortest period, and no longer than the e-folding time of a growing term."""
+    the shortest period, and no longer than the e-folding time of the fastest
+    growing or decaying term (a bound taken at a window's start is otherwise
+    stale once the terms it holds have decayed, and the steps |g|/L shrink
+    with g)."""
     limits = [scale]
     if np.any(form.omegas > 0):
         limits.append(0.25 * 2 * np.pi / form.omegas.max())
-    if np.any(form.sigmas > 0):
-        limits.append(1.0 / form.sigmas.max())
+    if np.any(form.sigmas != 0):
+        limits.append(1.0 / np.abs(form.sigmas).max())
     return min(limits)
 
 

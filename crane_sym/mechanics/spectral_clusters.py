@@ -1,0 +1,184 @@
+"""exp(M t) by spectral clusters: exact where eigenvalues coincide or nearly do.
+
+A phase x' = A x + b is z' = M z with z = (x, 1). Its eigenvalues are grouped
+into clusters: the generalized kernel (rigid modes, the constant input, a
+law's clock states), single eigenvalues, and groups closer together than
+:data:`CLUSTER` of their size (critical damping, equal subsystems). Each
+cluster c has its spectral projector P and the part N = (M − μI) P about its
+centre μ, and exp(Mt) = Σ_c e^{μt} exp(N t) P. On a cluster the series is
+summed in closed form, never from eigenvectors of nearly equal eigenvalues
+(which lose as many digits as the eigenvalues are close):
+
+- a single eigenvalue: e^{λt} P;
+- the kernel (μ = 0, N nilpotent): Σ_{j<m} (N t)^j / j!, exactly;
+- a cluster whose N² = q P (every 2 × 2 cluster, by Cayley–Hamilton, and
+  equal subsystems): exp(Nt) P = cosh(√q t) P + sinh(√q t)/√q N, written as
+
+  * q = 0 (a Jordan block, within rounding): P + t N;
+  * e^{μt} times its Taylor polynomial in q t² where |q| τ² ≤ :data:`TAYLOR`
+    (τ = 1/|Re μ|, the cluster's decay time): terms t^k e^{μt} whose
+    coefficients stay bounded however close the eigenvalues are;
+  * two exponentials e^{(μ ± √q) t} with (P ± N/√q)/2 elsewhere, where
+    √q τ ≥ √TAYLOR bounds what their difference can cancel;
+
+- any other cluster: its own eigenvectors where they are well conditioned,
+  else refused by name (:class:`ClusterError`).
+
+The terms come back as (power j, rate λ, complex matrix C): exp(Mt) =
+Σ t^j e^{λt} C. The same rules serve NumPy (doubles, projectors from an
+ordered Schur form) and mpmath (projectors from eigenvectors at twice the
+working digits) through :class:`Algebra`.
+"""
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+__all__ = ["Algebra", "CLUSTER", "ClusterError", "KERNEL", "TAYLOR", "cluster_terms",
+           "group", "numpy_terms"]
+
+#: Eigenvalues closer than this fraction of their modulus form one cluster.
+CLUSTER = 1e-3
+#: Eigenvalues below this fraction of the spectrum's scale are the kernel's.
+KERNEL = 1e-6
+#: Largest |q| τ² written as a Taylor polynomial (its 9 terms then reach 1e-19
+#: at 50 decay times, past which e^{μt} has fallen below 1e-21).
+TAYLOR = 1e-4
+#: Terms k = 0 … TAYLOR_TERMS − 1 of the Taylor polynomials in q t².
+TAYLOR_TERMS = 9
+
+
+class ClusterError(ValueError):
+    """A cluster of eigenvalues that no closed form here resolves."""
+
+
+@dataclass(frozen=True)
+class Algebra:
+    """The few operations the rules need, for NumPy or mpmath matrices."""
+
+    matmul: Callable[[Any, Any], Any]
+    norm: Callable[[Any], float]
+    sqrt: Callable[[Any], Any]
+    trace: Callable[[Any], Any]
+    eps: float
+
+
+def group(values: Sequence[complex], scale: float) -> tuple[list[int], list[list[int]]]:
+    """(kernel, clusters): indices of the eigenvalues below KERNEL·scale, and
+    the rest grouped (transitively) where |λ_i − λ_j| ≤ CLUSTER·max(|λ_i|, |λ_j|)."""
+    kernel = [i for i, v in enumerate(values) if abs(v) <= KERNEL * scale]
+    live = [i for i, v in enumerate(values) if abs(v) > KERNEL * scale]
+    parent = {i: i for i in live}
+
+    def root(i: int) -> int:
+        while parent[i] != i:
+            i = parent[i]
+        return i
+
+    for a, i in enumerate(live):
+        for j in live[a + 1:]:
+            if abs(values[i] - values[j]) <= CLUSTER * max(abs(values[i]), abs(values[j])):
+                parent[root(j)] = root(i)
+    clusters: dict[int, list[int]] = {}
+    for i in live:
+        clusters.setdefault(root(i), []).append(i)
+    return kernel, sorted(clusters.values(), key=lambda c: c[0])
+
+
+def cluster_terms(P: Any, N: Any, mu: Any, size: int, algebra: Algebra,
+                  scale: float) -> list[tuple[int, Any, Any]]:
+    """The terms (j, λ, C) of e^{μt} exp(N t) P for one live cluster of ``size``
+    eigenvalues about ``mu`` (N = (M − μI) P), by the rules of the module."""
+    mul, norm, eps = algebra.matmul, algebra.norm, algebra.eps
+    tiny = 1e3 * eps
+    n_norm = norm(N)
+    if size == 1 or n_norm <= tiny * scale * max(norm(P), 1.0):
+        return [(0, mu, P)]                         # one eigenvalue, or equal and semisimple
+    N2 = mul(N, N)
+    q = algebra.trace(N2) / size
+    if size > 2 and norm(N2 - P * q) > tiny * n_norm ** 2:
+        raise ClusterError(
+            f"{size} eigenvalues within {CLUSTER:g} of each other about {complex(mu):.6g}"
+            " form neither a Jordan block nor equal subsystems; no closed form here resolves"
+            " them")
+    if abs(q) <= tiny * n_norm ** 2:                # a Jordan block within rounding
+        return [(0, mu, P), (1, mu, N)]
+    decay = abs(complex(mu).real)
+    if decay > 0 and abs(complex(q)) <= TAYLOR * decay ** 2:
+        terms, power = [], 1
+        for k in range(TAYLOR_TERMS):
+            terms.append((2 * k, mu, P * (power / math.factorial(2 * k))))
+            terms.append((2 * k + 1, mu, N * (power / math.factorial(2 * k + 1))))
+            power = power * q
+        return terms
+    root_q = algebra.sqrt(q)
+    half = N * (1 / root_q)
+    return [(0, mu + root_q, (P + half) * 0.5), (0, mu - root_q, (P - half) * 0.5)]
+
+
+def _np_algebra() -> Algebra:
+    return Algebra(matmul=np.matmul, norm=lambda X: float(np.linalg.norm(X)),
+                   sqrt=lambda q: complex(np.sqrt(complex(q))),
+                   trace=lambda X: complex(np.trace(X)), eps=float(np.finfo(float).eps))
+
+
+def _schur_projector(M: np.ndarray, centre: complex, radius: float, size: int) -> np.ndarray:
+    """The spectral projector of the eigenvalues within ``radius`` of ``centre``,
+    from an ordered complex Schur form (stable for a defective cluster)."""
+    from scipy.linalg import schur, solve_sylvester
+
+    T, Z, m = schur(M.astype(complex), output="complex",
+                    sort=lambda x: abs(x - centre) <= radius)
+    if m != size:
+        raise ClusterError(f"the Schur form found {m} eigenvalues about {centre:.6g},"
+                           f" the eigenvalues {size}")
+    Y = solve_sylvester(T[:m, :m], -T[m:, m:], T[:m, m:])
+    Z1, Z2 = Z[:, :m], Z[:, m:]
+    return Z1 @ (Z1.conj().T + Y @ Z2.conj().T)
+
+
+def numpy_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
+    """The terms (j, λ, C) of exp(M t) = Σ t^j e^{λt} C in doubles."""
+    from scipy.linalg import eig
+
+    algebra = _np_algebra()
+    lam, vl, vr = eig(M, left=True, right=True)
+    scale = max(float(np.abs(lam).max()), 1.0)
+    kernel, clusters = group(list(lam), scale)
+    size = M.shape[0]
+    terms, projector = [], np.zeros((size, size), dtype=complex)
+    for cluster in clusters:
+        members = lam[cluster]
+        mu = complex(np.mean(members))
+        if len(cluster) > 1 and abs(mu.imag) <= 1e-6 * abs(mu):
+            mu = complex(mu.real, 0.0)               # a real cluster (conjugate-closed)
+        if len(cluster) == 1:
+            r, l = vr[:, cluster], vl[:, cluster].conj().T
+            P = r @ l / (l @ r)
+        else:
+            spread = float(np.abs(members - mu).max())
+            others = np.delete(lam, cluster)
+            gap = float(np.abs(others - mu).min()) if others.size else np.inf
+            radius = min(max(4 * spread, 1e-12 * scale), 0.5 * gap)
+            P = _schur_projector(M, mu, radius, len(cluster))
+        projector += P
+        if mu.imag < 0:
+            continue                                 # its conjugate's terms carry it
+        terms += cluster_terms(P, (M - mu * np.eye(size)) @ P, mu, len(cluster), algebra,
+                               scale)
+    Q = np.eye(size) - projector.real
+    N = M @ Q
+    term = Q.astype(complex)
+    for j in range(len(kernel)):                     # the kernel: Σ_j (N t)^j / j! Q
+        if j:
+            term = N @ term / j
+        terms.append((j, 0j, term))
+    if kernel and np.linalg.norm(N @ term) > 1e3 * algebra.eps * scale * max(
+            np.linalg.norm(term), 1.0) * len(kernel):
+        raise ClusterError(f"{len(kernel)} eigenvalues below {KERNEL:g} of the spectrum's"
+                           " scale are not a rigid kernel (a mode too slow beside the"
+                           " fastest to be resolved in double precision)")
+    return terms
