@@ -163,16 +163,38 @@ def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedFo
     b : (n,) array-like of numbers
     exact : bool, optional
         True: SymPy's exact Jordan form (entries as exact decimals), whose cost
-        grows without bound with n and near-coinciding eigenvalues (radicals):
-        only when asked for. False or None (the default): the spectral clusters
-        (:mod:`crane_sym.mechanics.spectral_clusters`), O(n³), exact where
-        eigenvalues coincide or nearly do.
+        grows without bound with n and near-coinciding eigenvalues (radicals).
+        False: the spectral clusters (:mod:`crane_sym.mechanics.spectral_clusters`),
+        O(n³), exact where eigenvalues coincide or nearly do. None (the
+        default): the exact form where it is cheap (:func:`_exact_is_cheap`:
+        n ≤ 4, no clusters, factors at most quadratic), the clusters elsewhere.
     """
     A = np.asarray(A, dtype=float)
     key = (tuple(map(float, A.ravel())), tuple(map(float, np.ravel(b))))
-    if exact:
+    if exact or (exact is None and _exact_is_cheap(*key)):
         return _closed_form_cached(*key)
     return _closed_form_numeric(*key)
+
+
+@lru_cache(maxsize=256)
+def _exact_is_cheap(a_key: tuple, b_key: tuple) -> bool:
+    """Whether SymPy's Jordan form is cheap and adds accuracy: n ≤ 4, no two
+    nonzero eigenvalues within a cluster of each other (where exact radicals
+    of nearly equal roots grow without bound), and a characteristic
+    polynomial whose factors over the rationals are at most quadratic."""
+    from crane_sym.mechanics.spectral_clusters import group
+
+    n = len(b_key)
+    if n > 4:
+        return False
+    A = np.reshape(a_key, (n, n))
+    lam = np.linalg.eigvals(A)
+    _, clusters = group(list(lam), max(float(np.abs(lam).max(initial=0.0)), 1.0))
+    if any(len(c) > 1 for c in clusters):
+        return False
+    exact = sp.Matrix(n, n, [sp.Rational(repr(float(v))) for v in a_key])
+    _, factors = sp.factor_list(exact.charpoly().as_expr())
+    return all(sp.degree(f) <= 2 for f, _ in factors)
 
 
 @lru_cache(maxsize=256)
