@@ -244,8 +244,11 @@ def test_any_hybrid_run_goes_through_the_batched_solver():
 
 def test_003_start_up_with_repeated_eigenvalues_is_batched():
     """Paper 003's travel drive has two equal sides: its modes have repeated
-    eigenvalues, clustered with one projector each (as the per-design route
-    does); the largest signed F1 + F2 of each start-up agrees to 1e-9."""
+    eigenvalues, clustered with one projector each; the largest signed F1 + F2
+    of each start-up agrees to 1e-9. One design's last phase has a nearly
+    defective pair (-86.49137 and -86.49131: a side damped near critically),
+    which goes to the per-design route (its clusters resolve it; one
+    projector for both would drop the pair's t e^{λt} part)."""
     from crane_sym.derivations.portal_travel.hybrid import STARTUP, rim_values
     from crane_sym.derivations.portal_travel.startup import CHOSEN, HOLDS
     from crane_sym.mechanics.batched_runs import largest_of_runs
@@ -256,7 +259,7 @@ def test_003_start_up_with_repeated_eigenvalues_is_batched():
         runs.append(STARTUP.run(rim_values(p, (0.0, np.pi, 2 * np.pi, 1.0)[k % 4]),
                                 {"holds": HOLDS, "end": 4.0}))
     result = largest_of_runs(runs, magnitude=False, tail=0)
-    assert result.summary["batched"] == 8 and result.summary["fallback"] == 0
+    assert result.summary["batched"] == 7 and result.summary["fallback"] == 1
     expected = [largest(r.solve(), r.system, r.output)[1] for r in runs]
     np.testing.assert_allclose(result.value, expected, rtol=1e-9)
 

@@ -42,7 +42,7 @@ from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, Compone
                                         value)
 from crane_sym.components.pruning import Dropped, Scope, needed
 from crane_sym.components.topology import Assembly, assemble
-from crane_sym.mechanics.phase_table import HybridRun, stationary_times
+from crane_sym.mechanics.phase_table import HybridRun, first_of_largest, stationary_times
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
 
 __all__ = ["ComponentRun", "LinkPeak", "Model", "start_load"]
@@ -135,9 +135,10 @@ def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[
     """(time, value) of the largest |w·x + k| over the run: each phase's ends,
     and its stationary points where its rate is not flat (a load held constant
     has a rate of rounding noise, whose every sign change would be an extremum;
-    :func:`crane_sym.mechanics.phase_table.largest` on the rest). Of peaks equal
-    to 1e-12 (an undamped gap rings at one amplitude), the first is taken."""
-    best, key = (0.0, float("nan")), -np.inf
+    :func:`crane_sym.mechanics.phase_table.largest` on the rest); the time is
+    the first at which the load comes within 1e-9 of its peak
+    (:func:`~crane_sym.mechanics.phase_table.first_of_largest`)."""
+    times, found = [], []
     for seg in result.segments:
         w, k = affine(seg.mode)
         w = np.asarray(w, float)
@@ -150,11 +151,9 @@ def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[
                                       initial=0.0))
             if np.abs(rate).sum() + abs(rk) > 1e-12 * pace * (np.abs(out).sum() + abs(k)):
                 candidates += stationary_times(seg, system, w)
-        found = seg.state(np.array(candidates)) @ w + k
-        i = int(np.argmax(np.abs(found)))
-        if abs(found[i]) > key * (1 + 1e-12):     # of equal peaks, the first
-            best, key = (float(candidates[i]), float(found[i])), abs(found[i])
-    return best
+        times += candidates
+        found += list(seg.state(np.array(candidates)) @ w + k)
+    return first_of_largest(times, found, magnitude=True)
 
 
 class Model:

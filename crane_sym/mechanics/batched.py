@@ -48,7 +48,7 @@ from crane_sym.mechanics.batched_cache import FormCache
 from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm
 from crane_sym.mechanics.batched_signals import Signals
 from crane_sym.mechanics.batched_system import BatchedGuard, BatchedLargest, BatchedSystem
-from crane_sym.mechanics.phase_table import largest
+from crane_sym.mechanics.phase_table import PEAK_TIE, largest
 from crane_sym.mechanics.piecewise_linear import simulate
 
 __all__ = ["BatchedGuard", "BatchedLargest", "BatchedSystem", "largest_batched"]
@@ -203,9 +203,10 @@ def _finish(system: BatchedSystem, i: int, s: _State, best_key: np.ndarray, name
 
 
 def _beyond(best):
-    """What a later peak must pass to replace ``best``: of peaks equal to 1e-12
-    the first is kept, as ``phase_table.largest`` keeps it (-inf stays)."""
-    return best + 1e-12 * np.abs(np.where(np.isfinite(best), best, 0.0))
+    """What a later peak must pass to replace ``best``: of peaks within
+    ``PEAK_TIE`` (1e-9) the first is kept, as ``phase_table.largest`` keeps
+    it (-inf stays)."""
+    return best + PEAK_TIE * np.abs(np.where(np.isfinite(best), best, 0.0))
 
 
 def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,
@@ -313,26 +314,32 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
                             & (reach > best_key[idx]))
     if moving.size:
         which, when = all_crossings(rate.take(moving), np.zeros(moving.size), end[moving], h_min)
-    # each phase's largest: its start, else its end where larger, else the
-    # first of its largest stationary points where larger still (ties: the earliest)
+    # each phase's largest over its start, stationary points and end
     v = out.value(rows, np.zeros(m))                 # at t = 0: no transcendental
     v_end = out.value(rows, end)
     key, key_end = (np.abs(v), np.abs(v_end)) if s.magnitude else (v, v_end)
     at = np.zeros(m)
-    later = key_end > key
-    v, key, at = np.where(later, v_end, v), np.where(later, key_end, key), np.where(later, end, at)
+    top = np.maximum(key, key_end)
     if moving.size and which.size:
         rows = moving[which]
         vs = out.value(rows, when)
         ks = np.abs(vs) if s.magnitude else vs
-        top = np.full(m, -np.inf)
         np.maximum.at(top, rows, ks)
-        tops = np.flatnonzero(ks == top[rows])
+    # the first candidate (start, stationary points in time, end) within PEAK_TIE of top
+    near = top - PEAK_TIE * np.abs(top)
+    open_ = key < near                               # the start is not within the tie
+    if moving.size and which.size:
+        order = np.lexsort((when, rows))
+        rows, vs, ks, when = rows[order], vs[order], ks[order], when[order]
+        tops = np.flatnonzero(ks >= near[rows])
         _, first = np.unique(rows[tops], return_index=True)
         pick = tops[first]
         r = rows[pick]
-        win = ks[pick] > key[r]
+        win = open_[r]
         v[r[win]], key[r[win]], at[r[win]] = vs[pick[win]], ks[pick[win]], when[pick[win]]
+        open_[r[win]] = False
+    later = open_ & (key_end >= near)
+    v, key, at = np.where(later, v_end, v), np.where(later, key_end, key), np.where(later, end, at)
     up = key > _beyond(best_key[idx])
     gi = idx[up]
     s.best[gi], s.best_t[gi] = v[up], s.t[gi] + at[up]

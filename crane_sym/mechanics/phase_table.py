@@ -26,7 +26,8 @@ from crane_sym.kernels.arithmetic import _phase_sum
 from crane_sym.mechanics.piecewise_linear import (HybridSystem, PiecewiseResult, Segment, by_phase, first_crossing,
                                                   simulate)
 
-__all__ = ["HybridRun", "PhaseTable", "largest", "stationary_times", "tabulate", "values"]
+__all__ = ["PEAK_TIE", "HybridRun", "PhaseTable", "first_of_largest", "largest", "stationary_times",
+           "tabulate", "values"]
 
 #: An affine output of the state per mode: mode -> (w, k), the output w·x + k.
 Affine = Callable[[Hashable], tuple[np.ndarray, float]]
@@ -162,13 +163,33 @@ def stationary_times(segment: Segment, system: HybridSystem, weights: np.ndarray
     return found
 
 
+#: A peak's time is the first instant the output comes within this fraction of
+#: the peak (equal crests of an undamped ring differ by rounding: the first is
+#: where an engineer reads "the peak occurs").
+PEAK_TIE = 1e-9
+
+
+def first_of_largest(times: Sequence[float], found: Sequence[float],
+                     magnitude: bool = False) -> tuple[float, float]:
+    """(time, value) of the earliest candidate within :data:`PEAK_TIE` of the
+    largest value (of |value| with ``magnitude``; the value keeps its sign)."""
+    times, found = np.asarray(times, float), np.asarray(found, float)
+    if not times.size:
+        return 0.0, float("nan")
+    order = np.argsort(times, kind="stable")
+    times, found = times[order], found[order]
+    keys = np.abs(found) if magnitude else found
+    top = keys.max()
+    i = int(np.flatnonzero(keys >= top - PEAK_TIE * abs(top))[0])
+    return float(times[i]), float(found[i])
+
+
 def largest(result: PiecewiseResult, system: HybridSystem, affine: Affine,
             magnitude: bool = False) -> tuple[float, float]:
     """(time, value) of the largest w·x + k over the run (of |w·x + k| with
     ``magnitude``; the value keeps its sign): each phase's ends and stationary
-    points are the only candidates. Of values equal to 1e-12 (an undamped gap
-    rings at one amplitude; which of its equal peaks is larger is rounding),
-    the first is taken.
+    points are the only candidates; the time is the first at which the output
+    comes within :data:`PEAK_TIE` of it (:func:`first_of_largest`).
 
     Parameters
     ----------
@@ -181,14 +202,11 @@ def largest(result: PiecewiseResult, system: HybridSystem, affine: Affine,
     magnitude : bool, optional
         The largest absolute value instead.
     """
-    best, best_key = (0.0, np.nan), -np.inf
+    times, found = [], []
     for seg in result.segments:
         w, k = affine(seg.mode)
         w = np.asarray(w, float)
         candidates = [seg.t0, seg.t1] + (stationary_times(seg, system, w) if w.any() else [])
-        found = seg.state(np.array(candidates)) @ w + k
-        keys = np.abs(found) if magnitude else found
-        i = int(np.argmax(keys))
-        if best_key == -np.inf or keys[i] > best_key + 1e-12 * abs(best_key):
-            best, best_key = (candidates[i], float(found[i])), keys[i]
-    return best
+        times += candidates
+        found += list(seg.state(np.array(candidates)) @ w + k)
+    return first_of_largest(times, found, magnitude)

@@ -66,11 +66,14 @@ class Algebra:
     eps: float
 
 
-def group(values: Sequence[complex], scale: float) -> tuple[list[int], list[list[int]]]:
-    """(kernel, clusters): indices of the eigenvalues below KERNEL·scale, and
-    the rest grouped (transitively) where |λ_i − λ_j| ≤ CLUSTER·max(|λ_i|, |λ_j|)."""
-    kernel = [i for i, v in enumerate(values) if abs(v) <= KERNEL * scale]
-    live = [i for i, v in enumerate(values) if abs(v) > KERNEL * scale]
+def group(values: Sequence[complex], scale: float,
+          floor: float | None = None) -> tuple[list[int], list[list[int]]]:
+    """(kernel, clusters): indices of the eigenvalues below KERNEL·scale (or
+    ``floor``), and the rest grouped (transitively) where
+    |λ_i − λ_j| ≤ CLUSTER·max(|λ_i|, |λ_j|)."""
+    floor = KERNEL * scale if floor is None else floor
+    kernel = [i for i, v in enumerate(values) if abs(v) <= floor]
+    live = [i for i, v in enumerate(values) if abs(v) > floor]
     parent = {i: i for i in live}
 
     def root(i: int) -> int:
@@ -169,16 +172,22 @@ def numpy_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
             continue                                 # its conjugate's terms carry it
         terms += cluster_terms(P, (M - mu * np.eye(size)) @ P, mu, len(cluster), algebra,
                                scale)
+    if not kernel:
+        return terms
     Q = np.eye(size) - projector.real
     N = M @ Q
-    term = Q.astype(complex)
-    for j in range(len(kernel)):                     # the kernel: Σ_j (N t)^j / j! Q
+    term = Q.astype(complex)                         # the kernel: Σ_j (N t)^j / j! Q
+    for j in range(len(kernel)):
         if j:
             term = N @ term / j
         terms.append((j, 0j, term))
-    if kernel and np.linalg.norm(N @ term) > 1e3 * algebra.eps * scale * max(
-            np.linalg.norm(term), 1.0) * len(kernel):
-        raise ClusterError(f"{len(kernel)} eigenvalues below {KERNEL:g} of the spectrum's"
-                           " scale are not a rigid kernel (a mode too slow beside the"
-                           " fastest to be resolved in double precision)")
+    # N^m Q = 0 up to its rounding (eps ‖M‖ ‖N‖^(m−1) ‖Q‖), else a mode slower
+    # than the kernel's bound sits in it
+    m = len(kernel)
+    rounding = algebra.eps * float(np.linalg.norm(M)) * float(np.linalg.norm(Q)) * float(
+        np.linalg.norm(N)) ** (m - 1) / math.factorial(m - 1)
+    if np.linalg.norm(N @ term) > 1e3 * m * rounding:
+        raise ClusterError(f"{m} eigenvalues below {KERNEL:g} of the spectrum's scale are"
+                           " not a rigid kernel: a mode too slow beside the fastest to be"
+                           " resolved in double precision")
     return terms

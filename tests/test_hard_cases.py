@@ -1,0 +1,364 @@
+"""Hard cases of the phase solver, each against a closed form or mpmath at 40
+digits, relative error ≤ 1e-9 of the peak: critical damping (a repeated,
+defective eigenvalue) and its neighbourhood, equal subsystems (repeated,
+semisimple eigenvalues), equal crests, a rigid mode with a brake, stiffness
+and mass ratios over many decades, a vanishing backlash — on the per-design
+route, the batched route of a sweep, and a generated module."""
+from __future__ import annotations
+
+import math
+
+import mpmath
+import numpy as np
+import pytest
+
+from crane_sym.components.designs import designs
+from crane_sym.components.reading import read_component_file
+
+K, M_LOAD, A_RAMP = 490.5, 500.0, 0.1           # the issue's trolley, load and ramp
+RTOL = 1e-9
+
+
+def _write(tmp_path, name: str, text: str):
+    path = tmp_path / f"{name}.toml"
+    path.write_text(f'[model]\nname = "{name}"\n' + text)
+    return path
+
+
+def _run(path):
+    f = read_component_file(path)
+    return f.model.run(f.duration, f.body, f.speed, rest=f.rest)
+
+
+def _ramp_file(tmp_path, damping: float, duration: float = 30.0, backlash: str = ""):
+    """A trolley on a speed ramp a t carrying a load on a damped link (the
+    trolley's motion prescribed: the link sees one mode, m ü + d u̇ + c u = −m a)."""
+    return _write(tmp_path, "ramp", f"""
+[[mass]]
+name = "trolley"
+mass = "1 t"
+[[mass]]
+name = "load"
+mass = "{M_LOAD} kg"
+[[elastic]]
+name = "link"
+between = ["load", "trolley"]
+stiffness = "{K} N/m"
+damping = "{damping!r} N*s/m"
+{backlash}
+[[motor_law]]
+name = "drive"
+body = "trolley"
+law = "speed"
+unit = "m/s"
+time_unit = "s"
+breakpoints = [0.0, {duration}]
+coefficients = [[0.0, {A_RAMP}]]
+[run]
+duration = "{duration} s"
+start = "rest"
+""")
+
+
+def _mp_peak(A: list[list[float]], z0: list[float], w: list[float], t_guess: float):
+    """(t, value) of the first extremum of w·z(t), z' = A z, from mpmath's
+    exponential at 40 digits and a root of the rate near ``t_guess``."""
+    with mpmath.workdps(40):
+        Am = mpmath.matrix([[mpmath.mpf(repr(v)) for v in row] for row in A])
+        z = mpmath.matrix([mpmath.mpf(repr(v)) for v in z0])
+        wv = mpmath.matrix([[mpmath.mpf(repr(v)) for v in w]])
+
+        def out(t):
+            return (wv * mpmath.expm(Am * t) * z)[0]
+
+        def rate(t):
+            return (wv * Am * mpmath.expm(Am * t) * z)[0]
+        t = mpmath.findroot(rate, mpmath.mpf(t_guess))
+        return float(t), float(out(t))
+
+
+def _ramp_reference(damping: float) -> tuple[float, float]:
+    """The ramp case: u = x_load − x_trolley, z = (u, u̇, 1), the link load
+    F = c u + d u̇ (its first extremum)."""
+    A = [[0, 1, 0], [-K / M_LOAD, -damping / M_LOAD, -A_RAMP], [0, 0, 0]]
+    omega = math.sqrt(K / M_LOAD)
+    t, value = _mp_peak(A, [0, 0, 1], [K, damping, 0], 2 / omega)
+    return t, abs(value)
+
+
+CRITICAL = 2 * math.sqrt(K * M_LOAD)
+
+
+def test_critically_damped_ramp_is_the_closed_form(tmp_path):
+    """The issue's case: m a (1 + e⁻²) at t = 2/ω (it printed 51.55 N at 60 s)."""
+    peak = _run(_ramp_file(tmp_path, CRITICAL)).peaks[0]
+    omega = math.sqrt(K / M_LOAD)
+    expected = M_LOAD * A_RAMP * (1 + math.exp(-2))
+    assert abs(abs(peak.value) - expected) <= RTOL * expected
+    assert abs(peak.time - 2 / omega) <= 1e-6
+    assert round(abs(peak.value), 4) == 56.7668 and round(peak.time, 4) == 2.0193
+
+
+@pytest.mark.parametrize("offset", [-1e-4, -1e-8, -1e-12, 1e-12, 1e-8, 1e-4])
+def test_damping_near_critical_is_continuous_and_right(tmp_path, offset):
+    """ζ = 1 ± 1e-4, 1e-8, 1e-12: against mpmath, and continuous through ζ = 1."""
+    damping = CRITICAL * (1 + offset)
+    peak = _run(_ramp_file(tmp_path, damping)).peaks[0]
+    t_ref, ref = _ramp_reference(damping)
+    assert abs(abs(peak.value) - ref) <= RTOL * ref
+    assert abs(peak.time - t_ref) <= 1e-6
+    critical = M_LOAD * A_RAMP * (1 + math.exp(-2))
+    assert abs(abs(peak.value) - critical) <= 2 * abs(offset) * critical + RTOL * critical
+
+
+def _free_pair(tmp_path, damping: str):
+    return _write(tmp_path, "free_pair", f"""
+[[mass]]
+name = "trolley"
+mass = "2 t"
+[[mass]]
+name = "load"
+mass = "500 kg"
+[[elastic]]
+name = "link"
+between = ["load", "trolley"]
+stiffness = "{K} N/m"
+{damping}
+[[motor]]
+name = "push"
+body = "trolley"
+force = "250 N"
+[run]
+duration = "60 s"
+start = "rest"
+""")
+
+
+def test_free_two_mass_link_at_critical_damping(tmp_path):
+    """The relative mode of two free masses critically damped: 50 N (1 + e⁻²)
+    at 2/ω (it did not finish in 120 s)."""
+    reduced = 2000 * 500 / 2500
+    d = 2 * math.sqrt(K * reduced)
+    peak = _run(_free_pair(tmp_path, f'damping = "{d!r} N*s/m"')).peaks[0]
+    expected = 50 * (1 + math.exp(-2))
+    assert abs(abs(peak.value) - expected) <= RTOL * expected
+    assert abs(peak.time - 2 / math.sqrt(K / reduced)) <= 1e-6
+    assert round(peak.time, 3) == 1.806
+
+
+def test_equal_crests_report_the_first(tmp_path):
+    """Undamped: crests of 2 · 50 N at π/ω, 3π/ω, …; the peak's time is the first."""
+    peak = _run(_free_pair(tmp_path, "")).peaks[0]
+    omega = math.sqrt(K / (2000 * 500 / 2500))
+    assert abs(abs(peak.value) - 100.0) <= RTOL * 100.0
+    assert abs(peak.time - math.pi / omega) <= 1e-6
+
+
+def _three_loads(tmp_path):
+    loads = "".join(f"""
+[[mass]]
+name = "load{i}"
+mass = "500 kg"
+[[elastic]]
+name = "link{i}"
+between = ["load{i}", "trolley"]
+stiffness = "{K} N/m"
+""" for i in (1, 2, 3))
+    return _write(tmp_path, "three_loads", f"""
+[[mass]]
+name = "trolley"
+mass = "1 t"
+{loads}
+[[motor]]
+name = "push"
+body = "trolley"
+force = "1000 N"
+[run]
+duration = "20 s"
+start = "rest"
+""")
+
+
+def test_three_equal_loads_double_eigenvalue(tmp_path):
+    """Three equal loads on one trolley (a double eigenvalue k/m of the
+    antisymmetric modes): each link 2 m F/(M + 3m) at π/ω_s, ω_s² = c/m + 3c/M."""
+    run = _run(_three_loads(tmp_path))
+    omega = math.sqrt(K / 500 + 3 * K / 1000)
+    expected = 2 * 500 * 1000 / (1000 + 3 * 500)
+    for peak in run.peaks:
+        assert abs(abs(peak.value) - expected) <= RTOL * expected
+        assert abs(peak.time - math.pi / omega) <= 1e-6
+
+
+def _two_hoists(tmp_path, zeta: float = 0.1):
+    """One drum on a speed ramp lifting two equal loads on two equal ropes (the
+    drum's motion prescribed: two equal damped pairs)."""
+    d = 2 * zeta * math.sqrt(K * M_LOAD)
+    ropes = "".join(f"""
+[[mass]]
+name = "load{i}"
+mass = "{M_LOAD} kg"
+[[elastic]]
+name = "rope{i}"
+between = ["load{i}", "drum"]
+stiffness = "{K} N/m"
+damping = "{d!r} N*s/m"
+""" for i in (1, 2))
+    return _write(tmp_path, "two_hoists", f"""
+[[mass]]
+name = "drum"
+mass = "1 t"
+{ropes}
+[[motor_law]]
+name = "drive"
+body = "drum"
+law = "speed"
+unit = "m/s"
+time_unit = "s"
+breakpoints = [0.0, 20.0]
+coefficients = [[0.0, {A_RAMP}]]
+[run]
+duration = "20 s"
+start = "rest"
+"""), d
+
+
+def test_two_equal_ropes_on_one_drum(tmp_path):
+    """Two equal ropes on one driven drum (equal damped pairs: a repeated,
+    semisimple eigenvalue), each as one rope alone."""
+    path, d = _two_hoists(tmp_path)
+    t_ref, ref = _ramp_reference(d)
+    for peak in _run(path).peaks:
+        assert abs(abs(peak.value) - ref) <= RTOL * ref
+        assert abs(peak.time - t_ref) <= 1e-6
+
+
+def test_rigid_mode_with_a_brake(tmp_path):
+    """A trolley moving at 2 m/s is braked by 600 N from 0.5 s; its load on an
+    undamped link: 2 m F_b/(M + m) at 0.5 s + π/ω, ω² = c (M + m)/(M m)."""
+    path = _write(tmp_path, "braked", f"""
+[[mass]]
+name = "trolley"
+mass = "2 t"
+[[mass]]
+name = "load"
+mass = "500 kg"
+[[elastic]]
+name = "link"
+between = ["load", "trolley"]
+stiffness = "{K} N/m"
+[[brake]]
+name = "brake"
+body = "trolley"
+force = "600 N"
+delay = "0.5 s"
+[run]
+duration = "8 s"
+start = "steady"
+body = "trolley"
+speed = "2 m/s"
+""")
+    run = _run(path)
+    peak = run.peaks[0]
+    omega = math.sqrt(K * 2500 / (2000 * 500))
+    expected = 2 * 500 * 600 / 2500
+    assert abs(abs(peak.value) - expected) <= RTOL * expected
+    assert abs(peak.time - (0.5 + math.pi / omega)) <= 1e-6
+
+
+def test_stiffness_ratio_1e8_and_mass_ratio_1e6(tmp_path):
+    """A stiff coupling (1e10 N/m) between a 1 kg drive and a 1 kg hub, a soft
+    rope (100 N/m) to a 1e6 kg load, the drive on a speed ramp: the rope's
+    first extremum against mpmath's exponential of the hand-written system."""
+    path = _write(tmp_path, "ratios", """
+[[mass]]
+name = "drive"
+mass = "1 kg"
+[[mass]]
+name = "hub"
+mass = "1 kg"
+[[mass]]
+name = "load"
+mass = "1e6 kg"
+[[elastic]]
+name = "coupling"
+between = ["hub", "drive"]
+stiffness = "1e10 N/m"
+[[elastic]]
+name = "rope"
+between = ["load", "hub"]
+stiffness = "100 N/m"
+[[motor_law]]
+name = "ramp"
+body = "drive"
+law = "speed"
+unit = "m/s"
+time_unit = "s"
+breakpoints = [0.0, 400.0]
+coefficients = [[0.0, 0.01]]
+[run]
+duration = "400 s"
+start = "rest"
+""")
+    run = _run(path)
+    rope = run.peaks[1]
+    # z = (u1, v1, u2, v2, 1): u1 = x_hub − x_drive, u2 = x_load − x_hub; drive a = 0.01
+    k1, k2, m_h, m_l, a = 1e10, 100.0, 1.0, 1e6, 0.01
+    A = [[0, 1, 0, 0, 0],
+         [-k1 / m_h, 0, k2 / m_h, 0, -a],
+         [0, 0, 0, 1, 0],
+         [k1 / m_h, 0, -k2 / m_l - k2 / m_h, 0, 0],
+         [0, 0, 0, 0, 0]]
+    omega = math.sqrt(k2 / m_l)
+    t_ref, ref = _mp_peak(A, [0, 0, 0, 0, 1], [0, 0, k2, 0, 0], math.pi / omega)
+    assert abs(abs(rope.value) - abs(ref)) <= RTOL * abs(ref)
+    assert abs(rope.time - t_ref) <= 1e-6 * t_ref
+
+
+def test_backlash_to_zero_is_the_link_without_gap(tmp_path):
+    """A backlash of 1e-12 m gives the peak of the link without one."""
+    d = 0.2 * CRITICAL
+    plain = _run(_ramp_file(tmp_path, d)).peaks[0]
+    gap = _run(_ramp_file(tmp_path, d, backlash='backlash = "1e-12 m"')).peaks[0]
+    assert abs(abs(gap.value) - abs(plain.value)) <= 1e-8 * abs(plain.value)
+
+
+@pytest.mark.parametrize("offset", [0.0, -1e-8, 1e-12])
+def test_the_batched_sweep_equals_the_per_design_run_near_critical(tmp_path, offset):
+    """Designs about critical damping through the sweep's batched route and one
+    at a time, both against mpmath."""
+    path = _ramp_file(tmp_path, CRITICAL)
+    d = designs(path)
+    dampings = np.array([CRITICAL * (1 + offset), 0.5 * CRITICAL, CRITICAL * 1.5])
+    batched = d.largest("link.peak", {"link.damping": dampings})
+    single = d.per_design("link.peak", {"link.damping": dampings})
+    for value, other, damping in zip(batched, single, dampings):
+        ref = _ramp_reference(float(damping))[1]
+        assert abs(value - ref) <= RTOL * ref
+        assert abs(other - ref) <= RTOL * ref
+
+
+def test_the_batched_sweep_of_equal_subsystems(tmp_path):
+    path, damping = _two_hoists(tmp_path, zeta=1.0)
+    batched = designs(path).largest("rope1.peak", {"rope2.damping": np.array([damping])})
+    expected = M_LOAD * A_RAMP * (1 + math.exp(-2))
+    assert abs(batched[0] - expected) <= RTOL * expected
+
+
+def test_the_generated_module_of_critical_damping_is_its_run(tmp_path):
+    """The module `run` writes tabulates the run: its load at the peak's time is
+    the closed form (its table is mpmath's, clusters included)."""
+    from crane_sym.components.report import run_component_file
+    from crane_sym.scenes.run import import_module_file
+    out = tmp_path / "out"
+    report = run_component_file(_ramp_file(tmp_path, CRITICAL), out)
+    module = import_module_file(out / "model_ramp.py")
+    omega = math.sqrt(K / M_LOAD)
+    expected = M_LOAD * A_RAMP * (1 + math.exp(-2))
+    value = float(module.load_link(2 / omega))
+    assert abs(abs(value) - expected) <= RTOL * expected
+    times = np.linspace(0.0, 30.0, 3001)
+    run = report.run
+    from crane_sym.mechanics.phase_table import values
+    ref = values(run.result, times, run.system.link_load(0))
+    assert np.max(np.abs(module.load_link(times) - ref)) <= RTOL * expected
