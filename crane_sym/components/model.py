@@ -42,7 +42,7 @@ from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, Compone
                                         value)
 from crane_sym.components.pruning import Dropped, Scope, needed
 from crane_sym.components.topology import Assembly, assemble
-from crane_sym.mechanics.phase_table import HybridRun, first_of_largest, stationary_times
+from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
 
 __all__ = ["ComponentRun", "LinkPeak", "Model", "start_load"]
@@ -132,28 +132,10 @@ def _nothing(size: int, mode: Mode) -> tuple[np.ndarray, float]:
 
 
 def _largest(result: PiecewiseResult, system: ComponentSystem, affine) -> tuple[float, float]:
-    """(time, value) of the largest |w·x + k| over the run: each phase's ends,
-    and its stationary points where its rate is not flat (a load held constant
-    has a rate of rounding noise, whose every sign change would be an extremum;
-    :func:`crane_sym.mechanics.phase_table.largest` on the rest); the time is
-    the first at which the load comes within 1e-9 of its peak
-    (:func:`~crane_sym.mechanics.phase_table.first_of_largest`)."""
-    times, found = [], []
-    for seg in result.segments:
-        w, k = affine(seg.mode)
-        w = np.asarray(w, float)
-        candidates = [seg.t0, seg.t1]
-        if w.any():
-            A, b = system.matrices(seg.mode)
-            out, _ = seg.form.scalar_terms(w, k, seg.x0)
-            rate, rk = seg.form.scalar_terms(w @ A, float(w @ b), seg.x0)
-            pace = 1.0 + float(np.max(np.abs(seg.form.omegas) + np.abs(seg.form.sigmas),
-                                      initial=0.0))
-            if np.abs(rate).sum() + abs(rk) > 1e-12 * pace * (np.abs(out).sum() + abs(k)):
-                candidates += stationary_times(seg, system, w)
-        times += candidates
-        found += list(seg.state(np.array(candidates)) @ w + k)
-    return first_of_largest(times, found, magnitude=True)
+    """(time, value) of the largest |w·x + k| over the run
+    (:func:`crane_sym.mechanics.phase_table.largest`: the time is the first at
+    which the load comes within 1e-9 of its peak)."""
+    return largest(result, system, affine, magnitude=True)
 
 
 class Model:

@@ -3,10 +3,12 @@
 Closed form of one phase
 ------------------------
 With z = (x, 1), z' = M z and M = [[A, b], [0, 0]], so z(t) = exp(M t) z(0).
-SymPy's exact Jordan decomposition M = P J P⁻¹ (each entry of A and b taken
-as the exact rational of its shortest decimal; P evaluated to 30 digits, then
-inverted in floating point, which is stable where a symbolic inverse of
-nested radicals is not) gives
+exp(M t) as a sum of terms t^j e^{λt} C, from SymPy's exact Jordan
+decomposition M = P J P⁻¹ where that is cheap (each entry of A and b taken as
+the exact rational of its shortest decimal; P evaluated to 30 digits, then
+inverted in floating point), or from the spectral clusters of M
+(:mod:`crane_sym.mechanics.spectral_clusters`: O(n³), exact where
+eigenvalues coincide or nearly do):
 
 .. math::
 
@@ -14,10 +16,7 @@ nested radicals is not) gives
 
 and a pair λ = σ ± iω folds into real terms t^j e^{σt} cos ωt and t^j e^{σt} sin ωt
 (:class:`ClosedForm`). Rigid-body modes (λ = 0, Jordan blocks) give the
-polynomial part. Above n = 4 (where exact eigenvalues of arbitrary data become
-costly radicals) the same terms come from numeric eigenvectors of the nonzero,
-simple eigenvalues and the exact nilpotent series on the generalized kernel
-(:func:`closed_form`, ``exact``). Evaluation is NumPy.
+polynomial part (:func:`closed_form`, ``exact``). Evaluation is NumPy.
 """
 from __future__ import annotations
 
@@ -30,7 +29,8 @@ import sympy as sp
 
 from crane_sym.mechanics.spectral_clusters import numpy_terms
 
-__all__ = ["ClosedForm", "clear_cache", "closed_form", "fold", "jordan", "jordan_blocks"]
+__all__ = ["ClosedForm", "clear_cache", "closed_form", "exact_is_cheap", "fold", "jordan",
+           "jordan_blocks"]
 
 
 @dataclass(frozen=True)
@@ -166,18 +166,18 @@ def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedFo
         grows without bound with n and near-coinciding eigenvalues (radicals).
         False: the spectral clusters (:mod:`crane_sym.mechanics.spectral_clusters`),
         O(n³), exact where eigenvalues coincide or nearly do. None (the
-        default): the exact form where it is cheap (:func:`_exact_is_cheap`:
+        default): the exact form where it is cheap (:func:`exact_is_cheap`:
         n ≤ 4, no clusters, factors at most quadratic), the clusters elsewhere.
     """
     A = np.asarray(A, dtype=float)
     key = (tuple(map(float, A.ravel())), tuple(map(float, np.ravel(b))))
-    if exact or (exact is None and _exact_is_cheap(*key)):
+    if exact or (exact is None and exact_is_cheap(*key)):
         return _closed_form_cached(*key)
     return _closed_form_numeric(*key)
 
 
 @lru_cache(maxsize=256)
-def _exact_is_cheap(a_key: tuple, b_key: tuple) -> bool:
+def exact_is_cheap(a_key: tuple, b_key: tuple) -> bool:
     """Whether SymPy's Jordan form is cheap and adds accuracy: n ≤ 4, no two
     nonzero eigenvalues within a cluster of each other (where exact radicals
     of nearly equal roots grow without bound), and a characteristic

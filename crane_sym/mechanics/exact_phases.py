@@ -9,8 +9,9 @@ machine to another; where a guard grazes its surface (a speed that starts
 from rest with zero acceleration) rounding noise even decides whether an
 event fires. :func:`simulate_exact` runs the same model at :data:`DPS` digits:
 
-- each phase's exp(Mt) from SymPy's exact Jordan form (n ≤ 4, as the double
-  run does) or from mpmath's eigenvectors (:class:`ExactForm`);
+- each phase's exp(Mt) from SymPy's exact Jordan form where that is cheap
+  (n ≤ 4, no clusters, factors at most quadratic, as the double run takes it)
+  or from its spectral clusters in mpmath (:class:`ExactForm`);
 - each event by the same certified search, stepping in double, but every sign
   it acts on is the double's only where the double is farther from 0 than its
   rounding bound, and mpmath's elsewhere; the step where the sign changes is
@@ -34,7 +35,7 @@ import mpmath
 import numpy as np
 import sympy as sp
 
-from crane_sym.mechanics.closed_forms import ClosedForm, jordan, jordan_blocks
+from crane_sym.mechanics.closed_forms import ClosedForm, exact_is_cheap, jordan, jordan_blocks
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.spectral_clusters import Algebra, cluster_terms, group
 from crane_sym.mechanics.piecewise_linear import Guard, HybridSystem, sign_change, signal
@@ -164,23 +165,29 @@ def _mp_algebra() -> Algebra:
 def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
     """The terms from the spectral clusters of M
     (:mod:`crane_sym.mechanics.spectral_clusters`), their projectors from
-    mpmath's left and right eigenvectors at twice the working digits (a
-    defective pair's eigenvectors lose half the digits they are computed
-    with); None where even those are not enough (the exact route then)."""
+    mpmath's left and right eigenvectors, at twice the working digits where
+    eigenvalues cluster (a defective pair's eigenvectors lose half the digits
+    they are computed with); None where even those are not enough (the exact
+    route then)."""
     algebra = _mp_algebra()
     M = _augmented(a_key, b_key)
     size = M.rows
-    with mpmath.workdps(2 * mpmath.mp.dps):
-        lam, left, right = mpmath.eig(M, left=True, right=True)
+    digits = mpmath.mp.dps
+    lam, left, right = mpmath.eig(M, left=True, right=True)
     scale = max(max(abs(v) for v in lam), 1)
     kernel, clusters = group(list(lam), float(scale))
+    if any(len(c) > 1 for c in clusters):      # their vectors at twice the digits
+        digits = 2 * mpmath.mp.dps
+        with mpmath.workdps(digits):
+            lam, left, right = mpmath.eig(M, left=True, right=True)
+        kernel, clusters = group(list(lam), float(scale))
     terms, projector = [], mpmath.zeros(size, size)
     for cluster in clusters:
-        with mpmath.workdps(2 * mpmath.mp.dps):
+        with mpmath.workdps(digits):
             R = mpmath.matrix([[right[r, c] for c in cluster] for r in range(size)])
             L = mpmath.matrix([[left[c, r] for r in range(size)] for c in cluster])
             gram = L * R
-            if mpmath.cond(gram) > mpmath.mpf(10) ** (mpmath.mp.dps - 10):
+            if mpmath.cond(gram) > mpmath.mpf(10) ** (digits - 25):   # 25 digits kept
                 return None
             P = R * mpmath.inverse(gram) * L
             mu = mpmath.fsum(lam[i] for i in cluster) / len(cluster)
@@ -210,6 +217,8 @@ def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
 @lru_cache(maxsize=256)
 def _exact_form_cached(a_key: tuple, b_key: tuple, dps: int) -> ExactForm:
     with mpmath.workdps(dps):
+        if exact_is_cheap(a_key, b_key):            # as the double run takes it
+            return _form_jordan(a_key, b_key)
         return _form_eig(a_key, b_key) or _form_jordan(a_key, b_key)
 
 

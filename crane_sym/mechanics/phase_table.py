@@ -23,10 +23,11 @@ from typing import Callable, Hashable, Sequence
 import numpy as np
 
 from crane_sym.kernels.arithmetic import _phase_sum
-from crane_sym.mechanics.piecewise_linear import (HybridSystem, PiecewiseResult, Segment, by_phase, first_crossing,
+from crane_sym.mechanics.phase_peaks import peak_candidates
+from crane_sym.mechanics.piecewise_linear import (HybridSystem, PiecewiseResult, Segment, by_phase, exact_zeros,
                                                   simulate)
 
-__all__ = ["PEAK_TIE", "HybridRun", "PhaseTable", "first_of_largest", "largest", "stationary_times",
+__all__ = ["PEAK_TIE", "HybridRun", "PhaseTable", "first_of_largest", "largest", "phase_candidates",
            "tabulate", "values"]
 
 #: An affine output of the state per mode: mode -> (w, k), the output w·x + k.
@@ -134,35 +135,6 @@ def values(result: PiecewiseResult, times: np.ndarray, affine: Affine) -> np.nda
     return out
 
 
-def stationary_times(segment: Segment, system: HybridSystem, weights: np.ndarray) -> list[float]:
-    """Times inside the phase where d/dt(w·x) = w·(A x + b) changes sign, found
-    like any event on the closed form (:func:`first_crossing`: none skipped; the
-    rate's terms that are rounding noise of an exact zero dropped, so a load
-    held constant has no extrema of noise).
-
-    Parameters
-    ----------
-    segment : Segment
-        One phase of the run.
-    system : HybridSystem
-        The system (its matrices in the phase's mode).
-    weights : ndarray
-        The output's weights w on the state.
-    """
-    A, b = system.matrices(segment.mode)
-    rate_w, rate_k = np.asarray(weights, float) @ A, float(np.asarray(weights, float) @ b)
-    found, t, x = [], segment.t0, segment.x0
-    while segment.t1 - t > 1e-12:
-        hit = first_crossing(segment.form, x, rate_w, rate_k, segment.t1 - t, clean=True)
-        if hit is None:
-            break
-        t += hit
-        found.append(t)
-        t += 1e-9                                   # past this extremum
-        x = segment.form.state(t - segment.t0, segment.x0)
-    return found
-
-
 #: A peak's time is the first instant the output comes within this fraction of
 #: the peak (equal crests of an undamped ring differ by rounding: the first is
 #: where an engineer reads "the peak occurs").
@@ -204,9 +176,25 @@ def largest(result: PiecewiseResult, system: HybridSystem, affine: Affine,
     """
     times, found = [], []
     for seg in result.segments:
-        w, k = affine(seg.mode)
-        w = np.asarray(w, float)
-        candidates = [seg.t0, seg.t1] + (stationary_times(seg, system, w) if w.any() else [])
-        times += candidates
-        found += list(seg.state(np.array(candidates)) @ w + k)
-    return first_of_largest(times, found, magnitude)
+        when, value = phase_candidates(seg, system, affine, magnitude)
+        times.append(when), found.append(value)
+    return first_of_largest(np.concatenate(times), np.concatenate(found), magnitude)
+
+
+def phase_candidates(segment: Segment, system: HybridSystem, affine: Affine,
+                     magnitude: bool) -> tuple[np.ndarray, np.ndarray]:
+    """(t, value) of the instants of one phase where its output w·x + k may come
+    within :data:`PEAK_TIE` of its largest (:func:`crane_sym.mechanics.phase_peaks.peak_candidates`:
+    its ends, its best grid points, its stationary points near the top; the
+    rate's terms that are rounding noise of an exact zero dropped)."""
+    w, k = affine(segment.mode)
+    w = np.asarray(w, float)
+    ends = np.array([segment.t0, segment.t1])
+    if not w.any():
+        return ends, np.full(2, float(k))
+    A, b = system.matrices(segment.mode)
+    amps, k0 = segment.form.scalar_terms(w, float(k), segment.x0)
+    rate, rate_k = exact_zeros(segment.form, w @ A, float(w @ b), segment.x0)
+    tau, value = peak_candidates(segment.form, amps, k0, rate, rate_k,
+                                 segment.t1 - segment.t0, magnitude, PEAK_TIE)
+    return segment.t0 + tau, value
