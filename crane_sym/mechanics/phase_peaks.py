@@ -7,9 +7,12 @@ of it matter, not every extremum: a grid no coarser than a quarter of the
 fastest period (and the fastest e-folding time) gives a first best; on each
 interval [a, b], |g| ≤ max(|g(a)|, |g(b)|) + M₂ (b − a)²/8 with M₂ a bound of
 |g''| there (the rate's certified derivative bound), so an interval whose bound
-falls short of the best is dropped, as is one that cannot add a tenth of
-the tie to what its ends know; the others are halved, and solved at the
-root of g' where g' changes sign over them, until none is left. The cost
+can neither raise the best past the tie nor reach the tie before its ends
+do is dropped, as is one that cannot add a tenth of the tie to what its ends
+know; the others are halved, and solved at the root of g' where g' changes
+sign over them and they may raise the best, until none is left. The tie is
+relative to the best, or to a millionth of g's terms where the best is
+smaller (an output held at zero). The cost
 follows the number of crests near the top, not every extremum of a
 many-mode signal (a chain of 20 bodies).
 """
@@ -26,6 +29,8 @@ __all__ = ["peak_candidates"]
 GRID = 20_000
 #: An interval this much shorter than the phase is not halved again.
 SHORTEST = 1e-13
+#: Most intervals open at once (a search that needs more is refused by name).
+MOST = 1_000_000
 
 
 def _values(form: ClosedForm, amps: np.ndarray, k: float, tau: np.ndarray) -> np.ndarray:
@@ -45,8 +50,8 @@ def peak_candidates(form: ClosedForm, amps: np.ndarray, k: float, rate: np.ndarr
                     rate_k: float, length: float, magnitude: bool,
                     tie: float) -> tuple[np.ndarray, np.ndarray]:
     """(τ, g(τ)) of the instants where g may come within ``tie`` of its largest
-    over [0, ``length``]: the phase's ends, its best grid points and the
-    stationary points of the intervals that could hold more (in time order).
+    over [0, ``length``]: the phase's ends and the crests (roots of g') of every
+    interval that could come within the tie (in time order).
 
     Parameters
     ----------
@@ -75,33 +80,41 @@ def peak_candidates(form: ClosedForm, amps: np.ndarray, k: float, rate: np.ndarr
     grid = np.linspace(0.0, length, count + 1)
     values = _values(form, amps, k, grid)
     best = float(key(values).max())
-    times, found = [grid], [values]
+    times, found = [np.array([0.0, length])], [values[[0, -1]]]
     a, b, va, vb = grid[:-1], grid[1:], values[:-1], values[1:]
     floor = SHORTEST * max(length, 1.0)
+    # g's own size: a tie below it is none (an output held at 0)
+    size = 1e-6 * (float(np.abs(amps).sum()) + abs(k))
     while a.size:
-        need = best - tie * abs(best)
+        if a.size > MOST:
+            raise RuntimeError(f"the peak search of a phase of {length:g} s holds {a.size}"
+                               f" intervals (at most {MOST})")
+        scale = max(abs(best), size)
         M2 = _curvature(form, rate, a, b)
         known = np.maximum(key(va), key(vb))
         slack = M2 * (b - a) ** 2 / 8                  # what the interval may add
-        live = (known + slack >= need) & (slack > 0.1 * tie * abs(best)) & (b - a > floor)
+        live = ((known + slack >= best - tie * scale) & (slack > 0.1 * tie * scale)
+                & (b - a > floor))
         a, b, va, vb = a[live], b[live], va[live], vb[live]
         if not a.size:
             break
         ra = _values(form, rate, rate_k, a)
         rb = _values(form, rate, rate_k, b)
-        turns = np.sign(ra) * np.sign(rb) < 0
-        for lo, hi in zip(a[turns], b[turns]):        # one root of g' each, solved
-            t = brentq(lambda x: float(_values(form, rate, rate_k, np.array([x]))[0]),
-                       lo, hi, xtol=1e-15, rtol=4 * np.finfo(float).eps)
-            v = _values(form, amps, k, np.array([t]))
-            times.append(np.array([t])), found.append(v)
-            best = max(best, float(key(v)[0]))
-        # every interval still open is halved (one with a turn may hold two)
-        mid = 0.5 * (a + b)
-        vm = _values(form, amps, k, mid)
-        times.append(mid), found.append(vm)
+        split = 0.5 * (a + b)              # halved, or cut at its crest (g' = 0)
+        turns = np.flatnonzero(np.sign(ra) * np.sign(rb) < 0)
+        def slope(x: float) -> float:
+            return float(_values(form, rate, rate_k, np.array([x]))[0])
+        for i in turns:
+            if slope(a[i]) * slope(b[i]) < 0:      # the same signs evaluated alone
+                split[i] = brentq(slope, a[i], b[i], xtol=1e-15,
+                                  rtol=4 * np.finfo(float).eps)
+        inside = (split[turns] - a[turns] > floor) & (b[turns] - split[turns] > floor)
+        split[turns[~inside]] = 0.5 * (a + b)[turns[~inside]]   # the crest found before
+        turns = turns[inside]
+        vm = _values(form, amps, k, split)
+        times.append(split[turns]), found.append(vm[turns])
         best = max(best, float(key(vm).max()))
-        a, b = np.concatenate([a, mid]), np.concatenate([mid, b])
+        a, b = np.concatenate([a, split]), np.concatenate([split, b])
         va, vb = np.concatenate([va, vm]), np.concatenate([vm, vb])
     times, found = np.concatenate(times), np.concatenate(found)
     order = np.argsort(times, kind="stable")
