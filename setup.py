@@ -16,6 +16,9 @@ packages = find_packages(include=["crane_sym", "crane_sym.*"]) + [
     for name in find_packages(include=[p for m in MAPPED for p in (m, f"{m}.*")])
 ]
 
-setup(packages=packages,
-      package_data={name: ["scenes/*.toml"] for name in packages
-                    if name.startswith("crane_sym.derivations.")})
+package_data = {name: ["scenes/*.toml"] for name in packages
+                if name.startswith("crane_sym.derivations.")}
+# the machine reading's committed table of parses (crane_sym.audit.parse_table)
+package_data["crane_sym.generated"] = ["machine_reading.json"]
+
+setup(packages=packages, package_data=package_data)

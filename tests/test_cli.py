@@ -44,9 +44,12 @@ def test_generate_writes_an_empty_folder_in_full(tmp_path, files, capsys, monkey
     assert sorted(p.name for p in out.iterdir()) == sorted(files)
     assert all((out / n).read_text(encoding="utf-8") == t for n, t in files.items())
     assert f"wrote {out / '__init__.py'}" in captured.out
-    # progress went to stderr, per derivation and per scene
-    assert "printing travel_braking.py" in captured.err
-    assert "specializing scene overhead_crane_50t" in captured.err
+    # progress went to stderr, per derivation and per scene (in one process or in
+    # several, as each paper comes back)
+    assert "printing travel_braking.py" in captured.err \
+        or "printed travel_braking.py" in captured.err
+    assert "specializing scene overhead_crane_50t" in captured.err \
+        or "specialized scenes overhead_crane_50t" in captured.err
     assert "wrote" not in captured.err and "printing" not in captured.out
     assert main(["generate", "--check", "--out", str(out)]) == 0
 

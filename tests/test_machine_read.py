@@ -113,3 +113,72 @@ def test_an_unreadable_print_gives_one_message_whatever_the_hash_seed():
                                env={**os.environ, "PYTHONHASHSEED": str(seed)},
                                check=True).stdout for seed in range(6)}
     assert messages == {"no symbol of the derivation is printed 'f'\n"}
+
+
+def test_a_structural_form_rebuilds_its_expression_without_eval():
+    """The table's forms: numbers, functions, integrals, relations and the
+    undefined functions the lark transformer builds, rebuilt from an allow-list."""
+    from crane_sym.audit.parse_table import expression, form
+    x, t = sp.symbols("x t")
+    f = sp.Function("Y_{2}", commutative=True)
+    for e in (sp.Float("2.5", 30) * x + sp.Rational(3, 7), sp.exp(-x) * sp.cos(sp.pi * t),
+              sp.Integral(f(x), (x, 0, t)), sp.Eq(sp.Abs(x), 2), x < 1, sp.I * x):
+        assert expression(form(e)) == e and form(expression(form(e))) == form(e)
+    with pytest.raises(ValueError, match="unknown form"):
+        expression(["__import__", ["Symbol", "os", {}]])
+    with pytest.raises(ValueError, match="no structural form"):
+        form(sp.Matrix([x]))
+
+
+def test_the_committed_table_is_this_parsers_and_holds_fresh_parses():
+    """The table's fingerprint is this parser's, every key is its side's, and a
+    seeded sample of its entries parsed afresh gives the stored forms."""
+    import json
+    import random
+    from crane_sym.audit.latex_parse import Unreadable, _parse_live, parse_table, parser
+    from crane_sym.audit.parse_table import entry_for, key
+    table = parse_table()
+    assert table.path is not None and table.entries, "generated/machine_reading.json"
+    data = json.loads(table.path.read_text(encoding="utf-8"))
+    assert data["parser"] == parser()
+    for k, entry in table.entries.items():
+        assert k == key(entry["side"], frozenset(entry["functions"]))
+    for k in random.Random(39).sample(sorted(table.entries), 8):
+        entry = table.entries[k]
+        functions = frozenset(entry["functions"])
+        try:
+            fresh = entry_for(entry["side"], functions, _parse_live(entry["side"], functions))
+        except Unreadable as why:
+            fresh = entry_for(entry["side"], functions, None, str(why))
+        assert fresh == entry
+
+
+def test_a_side_not_in_the_table_is_parsed_afresh_and_counted():
+    from crane_sym.audit.latex_parse import parse_side, parse_table
+    table = parse_table()
+    before = table.fresh
+    side = r"\frac{a}{b} + 3.5 x + 39"
+    parse_side.cache_clear()
+    first = parse_side(side, frozenset())
+    assert table.fresh == before + 1
+    a, b, x = sp.symbols("a b x")
+    assert sp.simplify(first - (a / b + sp.Float("3.5") * x + 39)) == 0
+    assert all(type(s.name) is str for s in first.free_symbols)   # not lark's tokens
+
+
+def test_a_side_missing_from_the_table_makes_generate_check_stale(monkeypatch):
+    """A side the table lacks is parsed afresh, counted, and put back in the text
+    `generate` writes, so that text differs from a table without it."""
+    from crane_sym.audit.latex_parse import parse_table
+    from crane_sym.audit.machine_read import parse_table_text, table_entries
+    d = registry.get("travel_braking")
+    table = parse_table()
+    whole = table_entries(d)
+    dropped = sorted(whole)[0]
+    monkeypatch.setattr(table, "entries", {k: e for k, e in table.entries.items()
+                                           if k != dropped})
+    before = table.fresh
+    again = table_entries(d)
+    assert table.fresh == before + 1 and again == whole
+    without = {k: e for k, e in whole.items() if k != dropped}
+    assert parse_table_text(again) != parse_table_text(without)

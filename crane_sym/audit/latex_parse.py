@@ -17,21 +17,31 @@ own (``tests/test_machine_read.py``):
   one candidate per relation.
 
 A print the parser still cannot read is ``unreadable`` with its reason.
+
+The Earley parser is slow, so each side's parse is kept in a committed table
+(``crane_sym.audit.parse_table``, ``generated/machine_reading.json``), read
+before the parser is asked; :func:`parser` is the fingerprint the table is
+valid for.
 """
 from __future__ import annotations
 
+import hashlib
+import inspect
 import re
 import warnings
 from dataclasses import dataclass
 from functools import lru_cache
+from pathlib import Path
 
 import sympy as sp
 from sympy.utilities.exceptions import SymPyDeprecationWarning
 
 from crane_sym.audit.parse_hints import parse_hint
+from crane_sym.audit.parse_table import ParseTable, entry_for, expression, form, rebuilt
 
 __all__ = ["Unreadable", "candidates", "layout", "parse", "placeholder", "split",
-           "wrap_calls", "bound_variables", "BOUND", "parse_side"]
+           "wrap_calls", "bound_variables", "BOUND", "parse_side", "parse_table",
+           "parser"]
 
 
 class Unreadable(ValueError):
@@ -216,8 +226,38 @@ def parse(candidate: str, functions: frozenset = frozenset()) -> Parsed:
 
 @lru_cache(maxsize=4096)
 def parse_side(side: str, functions: frozenset) -> sp.Basic:
-    """One side parsed (the Earley parser is slow, and papers repeat their prints:
-    each side is parsed once per process)."""
+    """One side parsed: from the committed table of parses when it holds the
+    side (``crane_sym.audit.parse_table``), else by the Earley parser, which is
+    slow (papers repeat their prints: each side is parsed once per process).
+    A fresh parse is returned as the table would give it (its names plain
+    strings, not lark's tokens), so a run reads the same with or without it.
+
+    Parameters
+    ----------
+    side : str
+        One side of a relation, after the layout pass.
+    functions : frozenset of str
+        The names to read as functions.
+    """
+    table = parse_table()
+    entry = table.lookup(side, functions)
+    if entry is None:
+        try:
+            parsed = _parse_live(side, functions)
+        except Unreadable as why:
+            table.keep(entry_for(side, functions, None, str(why)))
+            raise
+        entry = entry_for(side, functions, parsed)
+        table.keep(entry)
+        if "live" in entry:
+            return parsed
+    if "unreadable" in entry:
+        raise Unreadable(entry["unreadable"])
+    return rebuilt(entry["form"])
+
+
+def _parse_live(side: str, functions: frozenset) -> sp.Basic:
+    """One side parsed by SymPy's lark parser, an ambiguity resolved by ``_resolve``."""
     from sympy.parsing.latex import parse_latex
     try:
         with warnings.catch_warnings():    # the lark transformer's Mul of a Tuple
@@ -230,6 +270,30 @@ def parse_side(side: str, functions: frozenset) -> sp.Basic:
         hint = parse_hint(wrap_calls(side), first)
         raise Unreadable(f"the parser cannot read {side!r}: {first}"
                          + (f"; {hint}" if hint else "")) from None
+
+
+def parser() -> dict[str, str]:
+    """SymPy's and lark's versions and a fingerprint of what a parse depends on:
+    both versions, the grammar files and the source of the live parse."""
+    import lark
+    grammar = Path(sp.__file__).parent / "parsing" / "latex" / "lark" / "grammar"
+    digest = hashlib.sha256(f"{sp.__version__} {lark.__version__}".encode())
+    for path in sorted(grammar.glob("*.lark")):
+        digest.update(path.read_bytes())
+    for part in (_parse_live, wrap_calls, _resolve, _depth, form, expression):
+        try:
+            digest.update(inspect.getsource(part).encode("utf-8"))
+        except OSError:            # no source installed: a fingerprint no table has
+            digest.update(part.__code__.co_code)
+    return {"sympy": sp.__version__, "lark": lark.__version__,
+            "fingerprint": digest.hexdigest()[:16]}
+
+
+@lru_cache(maxsize=1)
+def parse_table() -> ParseTable:
+    """The committed table of parses, read once per process (empty when its
+    fingerprint is not this parser's: then every side is parsed afresh)."""
+    return ParseTable.read(parser()["fingerprint"])
 
 
 def candidates(tex: str) -> list[str]:

@@ -23,15 +23,19 @@ from dataclasses import dataclass
 
 import sympy as sp
 
-from crane_sym.audit.checks import symbolic_equivalence
+from crane_sym.audit.checks import numeric_equivalence, symbolic_equivalence
 from crane_sym.derivation import Derivation
 from crane_sym.latex import latex
-from crane_sym.audit.latex_parse import Parsed, Unreadable, bound_variables, candidates, parse
+from crane_sym.outcomes import FAIL
+from crane_sym.audit.latex_parse import (Parsed, Unreadable, bound_variables, candidates, parse,
+                                         parse_side, parse_table, parser)
+from crane_sym.audit.parse_table import render
 from crane_sym.audit.print_names import (BOUND_SYMBOL, cached_vocabulary, calls_pass, map_symbols,
                                          names_pass)
 from crane_sym.published import PublishedFormula
 
-__all__ = ["AGREES", "DIFFERS", "UNREADABLE", "MachineRead", "machine_read"]
+__all__ = ["AGREES", "DIFFERS", "UNREADABLE", "MachineRead", "machine_read",
+           "parse_table_text", "table_entries"]
 
 AGREES, DIFFERS, UNREADABLE = "agrees", "differs", "unreadable"
 _WRAPPERS = re.compile(r"\\(?:text|mathrm|mathit|mathtt|operatorname)\s*")
@@ -83,8 +87,32 @@ def _zero(expr: sp.Basic) -> bool:
     return sp.expand(expr) == 0 or sp.simplify(expr, doit=False) == 0
 
 
+def _refuted(parsed, hand: sp.Eq, d: Derivation) -> bool:
+    """True when mpmath at a few seeded points shows the parse is not the
+    relation ``hand`` in any form ``_same`` accepts (``numeric_equivalence``
+    fails by more than a relative 10⁻¹²: neither equal sides, nor equal
+    residuals, nor a constant residual ratio), so no simplification need be
+    tried; False when the numbers cannot tell (an integral, a name outside the
+    symbol table, a point where the print is undefined) or the expanded
+    difference is already 0."""
+    if parsed.has(sp.Integral) or hand.has(sp.Integral):
+        return False
+    relation = parsed if isinstance(parsed, sp.Equality) \
+        else sp.Eq(hand.lhs, parsed, evaluate=False)
+    if relation.lhs == hand.lhs and sp.expand(relation.rhs - hand.rhs) == 0 \
+            or sp.expand((relation.lhs - relation.rhs) - (hand.lhs - hand.rhs)) == 0:
+        return False
+    try:
+        return numeric_equivalence(relation, hand, d.symbols, points=3,
+                                   tol=1e-12).status == FAIL
+    except (ValueError, TypeError, ArithmeticError, NameError, AttributeError):
+        return False
+
+
 def _same(parsed, hand: sp.Eq, d: Derivation) -> bool:
     parsed, hand = _canonical(parsed), _canonical(hand)
+    if _refuted(parsed, hand, d):
+        return False               # numbers refute it: no simplification can confirm it
     if not isinstance(parsed, sp.Equality):
         return _zero(parsed - hand.rhs)
     if parsed.lhs == hand.lhs:
@@ -112,21 +140,20 @@ def _difference(parsed, hand: sp.Eq, names: dict) -> str:
 
 
 def machine_read(d: Derivation, f: PublishedFormula) -> MachineRead:
-    """The print of ``f`` read by machine against its hand transcription."""
+    """The print of ``f`` read by machine against its hand transcription.
+
+    Parameters
+    ----------
+    d : Derivation
+        The built paper, whose symbols and names the print is read in.
+    f : PublishedFormula
+        One of its published formulas.
+    """
     if f.printed is None:
         return MachineRead(UNREADABLE, "no transcription to compare: " + f.not_checkable)
     if "\\div" in f.latex:
         return MachineRead(UNREADABLE, "\\div: the print leaves the scope of ÷ open")
-    vocab, functions = cached_vocabulary(d, f.verbatim)
-    tokens: dict[str, sp.Basic] = {}
-    tex = names_pass(bound_variables(f.latex), vocab, tokens)
-    tex = calls_pass(tex, vocab, tokens)
-    read, reasons = [], []
-    for cand in candidates(tex):
-        try:
-            read.append((cand, _relation(parse(cand, functions), vocab, tokens)))
-        except Unreadable as why:
-            reasons.append(str(why))
+    read, reasons, tokens = _read(d, f)
     for _, rel in read:
         if _same(rel, f.printed, d):
             return MachineRead(AGREES, "the parse is the hand transcription",
@@ -151,6 +178,53 @@ def machine_read(d: Derivation, f: PublishedFormula) -> MachineRead:
     return MachineRead(DIFFERS, "printed − transcribed: $" +
                        _difference(rel, f.printed, d.latex_names) + "$",
                        _tex(rel, d.latex_names), _explained(d, f, [r for _, r in read]))
+
+
+def _read(d: Derivation, f: PublishedFormula) -> tuple[list, list[str], dict]:
+    """The relations of the print parsed and mapped to the derivation's symbols
+    (candidate, relation), the parser's reasons for those it cannot read, and
+    the tokens the names pass gave."""
+    vocab, functions = cached_vocabulary(d, f.verbatim)
+    tokens: dict[str, sp.Basic] = {}
+    tex = names_pass(bound_variables(f.latex), vocab, tokens)
+    tex = calls_pass(tex, vocab, tokens)
+    read, reasons = [], []
+    for cand in candidates(tex):
+        try:
+            read.append((cand, _relation(parse(cand, functions), vocab, tokens)))
+        except Unreadable as why:
+            reasons.append(str(why))
+    return read, reasons, tokens
+
+
+def table_entries(d: Derivation) -> dict[str, dict]:
+    """The committed table's entries for every side the machine reading of ``d``
+    parses (key -> entry), each from the table where it holds the side, else
+    parsed afresh (``crane_sym.audit.parse_table``).
+
+    Parameters
+    ----------
+    d : Derivation
+        The built paper, each of whose published prints is read.
+    """
+    parse_side.cache_clear()           # every side asked again, so every one is noted
+    table = parse_table()
+    table.requested.clear()
+    for f in d.published:
+        if f.printed is not None and "\\div" not in f.latex:
+            _read(d, f)
+    return dict(table.requested)
+
+
+def parse_table_text(entries: dict[str, dict]) -> str:
+    """The text of ``generated/machine_reading.json`` holding ``entries``.
+
+    Parameters
+    ----------
+    entries : dict of str to dict
+        Key -> entry, of every paper (:func:`table_entries`).
+    """
+    return render(entries, parser())
 
 
 def _explained(d: Derivation, f: PublishedFormula, parsed: list) -> str:

@@ -1,6 +1,7 @@
 """`crane-sym bench`: speed against error of the generated code and the SciPy
 alternatives, the targets table, piecewise-linear runs, sampled loads,
-(with ``--sweep``) design sweeps and (with ``--components FILE``) component
+(with ``--audit``) the main job's time against its targets, (with ``--sweep``)
+design sweeps and (with ``--components FILE``) component
 models from the file to the run.
 
 A subcommand imports its machinery when it runs (the imports inside the
@@ -12,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 import tempfile
 import time
@@ -95,6 +97,12 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
     say = progress.current()
     ids = _ids(args.ids)                 # an unknown id fails before the folder is made
     check_options(args)                  # so does an option out of its range
+    if getattr(args, "audit", False):
+        with say.task("the main job: audit and generate --check"):
+            _wrote([_bench_audit(out_dir, args.format == "table")],
+                   keep and args.format == "table")
+        if not args.ids and not args.sweep and not getattr(args, "components", None):
+            return 0                       # `bench --audit` alone: the main job only
     if args.sweep:
         output_files.out_folder(out_dir)
         with say.task("design sweeps against per-design integration"):
@@ -196,6 +204,37 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
     return 0
 
 
+def _write_section(text: str, path: Path, show: bool) -> Path:
+    """One bench section written as Markdown into its folder (made if missing),
+    and with ``show`` printed; its path."""
+    output_files.out_folder(path.parent)
+    path.write_text(text, encoding="utf-8")
+    if show:
+        print(text)
+    return path
+
+
+def _bench_audit(out_dir: Path, show: bool) -> Path:
+    """The main job (`audit` of every paper, `generate --check`) in fresh
+    processes against its targets, and an audit's time stage by stage."""
+    # imported on use: see the module docstring
+    from crane_sym.bench import audit_times as at
+    say = progress.current()
+    start = time.perf_counter()
+    with say.task("`crane-sym audit` of every paper in a fresh process"):
+        audit = at.command_time(["audit", "--format", "json", "--quiet"], at.AUDIT_TARGET)
+    with say.task("`crane-sym generate --check` in a fresh process"):
+        check = at.command_time(["generate", "--check", "--quiet"], at.CHECK_TARGET)
+    with say.task("an audit stage by stage, paper by paper"):
+        papers = at.paper_times(registry.ids())
+    text = "\n".join(["# Bench: the main job (audit and generate --check)", "",
+                      f"Absolute times are this machine's ({_machine()}, {os.cpu_count()} "
+                      f"cores, shared), from this one run ({time.perf_counter() - start:.0f} "
+                      "s); the one-minute load average is given with each command.", "",
+                      at.as_markdown([audit, check], papers), ""])
+    return _write_section(text, out_dir / "bench_audit.md", show)
+
+
 def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> Path:
     """Piecewise-linear runs in closed form against solve_ivp with events."""
     # imported on use: see the module docstring
@@ -227,12 +266,7 @@ def _bench_components(files: Sequence[str], out_dir: Path, show: bool) -> Path:
                       f"Absolute times are this machine's ({_machine()}), from this one run "
                       f"({time.perf_counter() - start:.0f} s); SymPy's cache and the closed "
                       "forms' cleared before each stage.", "", as_markdown(timings)])
-    output_files.out_folder(out_dir)
-    path = out_dir / "bench_components.md"
-    path.write_text(text, encoding="utf-8")
-    if show:
-        print(text)
-    return path
+    return _write_section(text, out_dir / "bench_components.md", show)
 
 
 def _bench_sampled(out_dir: Path, show: bool) -> Path:

@@ -12,7 +12,6 @@ import json
 import signal
 import sys
 import threading
-import time
 from importlib import metadata
 from pathlib import Path
 from typing import Sequence
@@ -101,6 +100,13 @@ def _list_scenes(form: str) -> int:
     return 0
 
 
+def _processes(text: str) -> int:
+    """``--processes``: an integer in 1..64 (argparse prints the message, exit 2)."""
+    if not text.isdigit() or not 1 <= int(text) <= 64:
+        raise argparse.ArgumentTypeError(f"must be an integer in 1..64, got {text!r}")
+    return int(text)
+
+
 def cmd_audit(args: argparse.Namespace) -> int:
     """Verdicts on the printed formulas of the chosen papers (or on the
     [[formula]] tables of component files)."""
@@ -108,25 +114,24 @@ def cmd_audit(args: argparse.Namespace) -> int:
     if any(is_file_argument(n) for n in args.ids):
         return cmd_audit_components(args)
     # imported on use: see the module docstring
-    from crane_sym.audit.verdicts import audit
     from crane_sym.audit.formats import FORMATS
-    records, timings = [], []
-    with progress.reporting(_progress(args)) as say:
-        for i in _ids(args.ids):
-            start = time.perf_counter()
-            with say.task(f"building {i}"):
-                d = registry.get(i)
-            built = time.perf_counter()
-            with say.task(f"auditing {i} ({len(d.published)} printed formulas)"):
-                records += audit(d)
-            timings.append((i, built - start, time.perf_counter() - built))
-    print(FORMATS[args.format](records))
+    from crane_sym.audit.papers import audit_papers, workers
+    ids = _ids(args.ids)
+    processes = args.processes or workers(len(ids))
+    with progress.reporting(_progress(args)):
+        audited = audit_papers(ids, processes)
+    print(FORMATS[args.format]([r for a in audited for r in a.records]))
+    fresh = sum(a.parsed_fresh for a in audited)
+    if fresh:
+        print(f"machine reading: {fresh} printed sides parsed afresh, not from the committed "
+              "table generated/machine_reading.json (`crane-sym generate` adds them)",
+              file=sys.stderr)
     if args.profile:
-        for i, b, a in timings:
-            print(f"{i}: build {b:.2f} s, audit {a:.2f} s; slowest steps:", file=sys.stderr)
-            steps = sorted(registry.get(i).steps, key=lambda s: -s.seconds)[:5]
-            for s in steps:
-                print(f"    {s.seconds:7.3f} s  {s.label}", file=sys.stderr)
+        for a in audited:
+            print(f"{a.paper}: build {a.build:.2f} s, audit {a.audit:.2f} s; slowest steps:",
+                  file=sys.stderr)
+            for seconds, label in a.slowest:
+                print(f"    {seconds:7.3f} s  {label}", file=sys.stderr)
     return 0
 
 
@@ -302,6 +307,9 @@ def parser() -> argparse.ArgumentParser:
                    "[[formula]] tables")
     p.add_argument("--format", choices=("table", "json", "markdown"), default="table")
     p.add_argument("--profile", action="store_true", help="time per derivation on stderr")
+    p.add_argument("--processes", type=_processes, metavar="N",
+                   help="papers audited in N processes at once (default: one a core, at most "
+                        "one a paper; 1: all in this process)")
     p = _subcommand(sub, "walkthrough", "step-by-step derivation as Markdown, a notebook "
                     "or a printable page", cmd_walkthrough, True)
     p.add_argument("id", help="derivation id or paper number, or a component TOML file")
@@ -344,6 +352,10 @@ def parser() -> argparse.ArgumentParser:
                    "integrator, each 2 to 1e7 (default: 100 2000 100000)")
     p.add_argument("--sampled", action="store_true",
                    help="also bench loads sampled on a grid against the closed forms")
+    p.add_argument("--audit", action="store_true",
+                   help="bench the main job: `audit` of every paper and `generate --check`, "
+                        "each in a fresh process, against their targets, and an audit's "
+                        "time paper by paper and stage by stage")
     p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
                    "per-design integration; alone, only that")
     p.add_argument("--components", nargs="+", metavar="FILE",

@@ -1,26 +1,86 @@
 """Everything ``crane-sym generate`` writes: one module per derivation, one
-per shipped scene, and the package ``__init__``."""
+per shipped scene, the package ``__init__``, and the machine reading's table of
+parses (``crane_sym.audit.parse_table``).
+
+A paper's module, its scenes' modules and its prints' parses need that paper
+built and nothing of another paper's, so the papers are printed in processes
+of their own when more than one core is free (SymPy holds the GIL); the files
+are the same bytes either way, assembled in the order one process gives.
+"""
 from __future__ import annotations
 
 from crane_sym import progress, registry
+from crane_sym.audit.machine_read import parse_table_text, table_entries
+from crane_sym.audit.papers import in_processes, workers
+from crane_sym.audit.parse_table import FILE as PARSE_TABLE
 from crane_sym.codegen import module as codegen
 from crane_sym.codegen import files as module_files
 from crane_sym.scenes import specialize
-from crane_sym.scenes.reading import list_scenes
+from crane_sym.scenes.reading import list_scenes, read_toml, scene_path
 
 
-def all_files() -> dict[str, str]:
-    """File name -> source for the whole ``generated/`` folder."""
+def _scenes_of(paper: str) -> list[str]:
+    """The shipped scenes of ``paper``, in ``list_scenes`` order."""
+    return [name for name in list_scenes()
+            if read_toml(scene_path(name))["scene"]["derivation"] == paper]
+
+
+def paper_files(paper: str) -> tuple[dict[str, str], dict[str, dict[str, str]], dict]:
+    """One paper's share of ``generated/``: its module (if it has outputs), each
+    of its scenes' files by scene name, and its prints' entries in the table
+    of parses.
+
+    Parameters
+    ----------
+    paper : str
+        The paper's id.
+    """
     say = progress.current()
-    derivations = []
-    for i in registry.ids():
-        with say.task(f"building {i}"):
-            derivations.append(registry.get(i))
-    modules = {}
-    for d in (d for d in derivations if d.outputs):
-        with say.task(f"printing {d.id}.py"):
-            modules[f"{d.id}.py"] = codegen.render_module(d)
-    for name in list_scenes():
+    with say.task(f"building {paper}"):
+        d = registry.get(paper)
+    own = {}
+    if d.outputs:
+        with say.task(f"printing {paper}.py"):
+            own[f"{paper}.py"] = codegen.render_module(d)
+    scenes = {}
+    for name in _scenes_of(paper):
         with say.task(f"specializing scene {name}"):
-            modules.update(specialize.scene_files(name))
-    return module_files.with_package_init(modules)
+            scenes[name] = specialize.scene_files(name)
+    with say.task(f"reading the prints of {paper} by machine"):
+        entries = table_entries(d)
+    return own, scenes, entries
+
+
+def _printed(share: tuple) -> str:
+    """One progress line on a paper's share of ``generated/``."""
+    own, scenes, entries = share
+    return (f"printed {', '.join(own) or 'no module'}; specialized scenes "
+            f"{', '.join(scenes) or '(none)'}; {len(entries)} sides read by machine")
+
+
+def all_files(processes: int | None = None) -> dict[str, str]:
+    """File name -> source for the whole ``generated/`` folder.
+
+    Parameters
+    ----------
+    processes : int, optional
+        Papers printed at once in worker processes (default: one a core this
+        process may use, at most one a paper; 1: all in this process).
+    """
+    papers = registry.ids()
+    processes = workers(len(papers)) if processes is None else processes
+    if processes > 1:
+        shares = in_processes(paper_files, papers, processes, "printing modules and scenes",
+                              _printed)
+    else:
+        shares = [paper_files(paper) for paper in papers]
+    modules: dict[str, str] = {}
+    for own, _, _ in shares:
+        modules.update(own)
+    scenes = {name: files for _, by_scene, _ in shares for name, files in by_scene.items()}
+    for name in list_scenes():
+        modules.update(scenes[name])
+    files = module_files.with_package_init(modules)
+    files[PARSE_TABLE] = parse_table_text({k: e for _, _, entries in shares
+                                           for k, e in entries.items()})
+    return files

@@ -1,0 +1,153 @@
+"""The main job's time: ``crane-sym audit`` of every paper and
+``crane-sym generate --check``, each in a fresh process, against their targets,
+and where an audit's time goes, paper by paper and stage by stage.
+
+Targets: the audit of the five papers at most 20 s from a cold process, and
+``generate --check`` at most 20 s. The stages of one paper's audit are its
+build (``registry.get``), the checks of its printed formulas
+(``audit_formula``: symbolic, numeric, dimensions), and the machine reading of
+its prints (``machine_read``), the last with how many look-ups of the prints'
+sides the committed table of parses answered (an unreadable side is looked up
+each time it is met) and how many sides the Earley parser read afresh
+(``crane_sym.audit.parse_table``). The machine is shared, so each
+measurement is quoted with the load average before and after it.
+"""
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
+from typing import Sequence
+
+from crane_sym import registry
+from crane_sym.audit.latex_parse import parse_side, parse_table
+from crane_sym.audit.machine_read import machine_read
+from crane_sym.audit.verdicts import audit_formula
+from crane_sym.markdown import markdown_table
+
+__all__ = ["AUDIT_TARGET", "CHECK_TARGET", "CommandTime", "PaperTimes", "as_markdown",
+           "command_time", "paper_times"]
+
+#: Seconds: the audit of every paper from a cold process, and ``generate --check``.
+AUDIT_TARGET = 20.0
+CHECK_TARGET = 20.0
+
+
+@dataclass(frozen=True)
+class PaperTimes:
+    """One paper's audit, stage by stage, in seconds (wall)."""
+
+    paper: str
+    formulas: int
+    build: float
+    checks: float
+    reading: float
+    from_table: int            # look-ups of its prints' sides the table answered
+    parsed_fresh: int          # sides the Earley parser read afresh
+
+    @property
+    def total(self) -> float:
+        """Build, checks and machine reading together."""
+        return self.build + self.checks + self.reading
+
+
+@dataclass(frozen=True)
+class CommandTime:
+    """One command run in a fresh process: its wall time, its target, and the
+    one-minute load average before and after it."""
+
+    command: str
+    seconds: float
+    target: float
+    load_before: float
+    load_after: float
+
+    @property
+    def met(self) -> bool:
+        """True when the command took at most its target."""
+        return self.seconds <= self.target
+
+
+def paper_times(ids: Sequence[str]) -> list[PaperTimes]:
+    """Each paper built, its formulas checked and its prints read by machine,
+    timed stage by stage in this process (the first build of each paper here).
+
+    Parameters
+    ----------
+    ids : sequence of str
+        The papers, by id.
+    """
+    table = parse_table()
+    out = []
+    for i in ids:
+        parse_side.cache_clear()            # each paper's sides counted, as in a cold run
+        found, fresh = table.found, table.fresh
+        start = time.perf_counter()
+        d = registry.get(i)
+        built = time.perf_counter()
+        for f in d.published:
+            audit_formula(d, f)
+        checked = time.perf_counter()
+        for f in d.published:
+            machine_read(d, f)
+        read = time.perf_counter()
+        out.append(PaperTimes(i, len(d.published), built - start, checked - built,
+                              read - checked, table.found - found, table.fresh - fresh))
+    return out
+
+
+def command_time(args: Sequence[str], target: float) -> CommandTime:
+    """``python -m crane_sym ARGS`` run in a fresh process (its output discarded),
+    timed; RuntimeError naming the command if it fails.
+
+    Parameters
+    ----------
+    args : sequence of str
+        The command line after ``crane-sym``.
+    target : float
+        The command's target [s].
+    """
+    before = os.getloadavg()[0]
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "crane_sym", *args], stdout=subprocess.DEVNULL,
+                          stderr=subprocess.PIPE, text=True)
+    seconds = time.perf_counter() - start
+    if done.returncode != 0:
+        last = (done.stderr.strip().splitlines() or ["no message"])[-1]
+        raise RuntimeError(f"bench --audit: `crane-sym {' '.join(args)}` exited "
+                           f"{done.returncode}: {last}")
+    return CommandTime("crane-sym " + " ".join(args), seconds, target, before,
+                       os.getloadavg()[0])
+
+
+def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes]) -> str:
+    """The targets table (met / not met) and the stages table.
+
+    Parameters
+    ----------
+    commands : sequence of CommandTime
+        The commands timed in fresh processes.
+    papers : sequence of PaperTimes
+        The stages of each paper's audit.
+    """
+    targets = markdown_table(
+        ["command (fresh process)", "seconds", "target", "met", "load before / after"],
+        [[f"`{c.command}`", f"{c.seconds:.1f}", f"≤ {c.target:g} s",
+          "met" if c.met else "not met", f"{c.load_before:.2f} / {c.load_after:.2f}"]
+         for c in commands])
+    rows = [[p.paper, str(p.formulas), f"{p.build:.2f}", f"{p.checks:.2f}",
+             f"{p.reading:.2f}", f"{p.from_table} / {p.parsed_fresh}", f"{p.total:.2f}"]
+            for p in papers]
+    rows.append(["all", str(sum(p.formulas for p in papers)),
+                 *(f"{sum(getattr(p, s) for p in papers):.2f}"
+                   for s in ("build", "checks", "reading")),
+                 f"{sum(p.from_table for p in papers)} / "
+                 f"{sum(p.parsed_fresh for p in papers)}",
+                 f"{sum(p.total for p in papers):.2f}"])
+    stages = markdown_table(
+        ["paper", "formulas", "build s", "checks s", "machine reading s",
+         "table look-ups / sides parsed afresh", "total s"], rows)
+    return "\n".join(["## Targets", "", targets, "", "## Where an audit's time goes "
+                      "(one process, paper by paper)", "", stages])
