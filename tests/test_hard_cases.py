@@ -3,9 +3,7 @@ digits, relative error ≤ 1e-9 of the peak: critical damping (a repeated,
 defective eigenvalue) and its neighbourhood, equal subsystems (repeated,
 semisimple eigenvalues), equal crests, a rigid mode with a brake, stiffness
 and mass ratios over many decades, a vanishing backlash — on the per-design
-route and a generated module. (The batched route of a sweep is not here: its
-extremum search on a load that settles to a constant over a long run steps
-through the rounding noise of its rate and runs out of memory; open.)"""
+route, the batched route of a sweep, and a generated module."""
 from __future__ import annotations
 
 import math
@@ -14,6 +12,7 @@ import mpmath
 import numpy as np
 import pytest
 
+from crane_sym.components.designs import designs
 from crane_sym.components.reading import read_component_file
 
 K, M_LOAD, A_RAMP = 490.5, 500.0, 0.1           # the issue's trolley, load and ramp
@@ -175,6 +174,28 @@ def test_two_equal_ropes_on_one_drum(tmp_path):
     for peak in _run(path).peaks:
         assert abs(abs(peak.value) - ref) <= RTOL * ref
         assert abs(peak.time - t_ref) <= 1e-6
+
+
+@pytest.mark.parametrize("offset", [0.0, -1e-8, 1e-12])
+def test_the_batched_sweep_equals_the_per_design_run_near_critical(tmp_path, offset):
+    """Designs about critical damping through the sweep's batched route and one
+    at a time, both against mpmath (a load that settles to a constant over 30 s:
+    its rate's zeros past the settling are rounding noise, not crests)."""
+    d = designs(_ramp_file(tmp_path, CRITICAL))
+    dampings = np.array([CRITICAL * (1 + offset), 0.5 * CRITICAL, CRITICAL * 1.5])
+    batched = d.largest("link.peak", {"link.damping": dampings})
+    single = d.per_design("link.peak", {"link.damping": dampings})
+    for value, other, damping in zip(batched, single, dampings):
+        ref = _ramp_reference(float(damping))[1]
+        assert abs(abs(value) - ref) <= RTOL * ref
+        assert abs(abs(other) - ref) <= RTOL * ref
+
+
+def test_the_batched_sweep_of_equal_subsystems(tmp_path):
+    path, damping = _two_hoists(tmp_path, zeta=1.0)
+    batched = designs(path).largest("rope1.peak", {"rope2.damping": np.array([damping])})
+    expected = M_LOAD * A_RAMP * (1 + math.exp(-2))
+    assert abs(abs(batched[0]) - expected) <= RTOL * expected
 
 
 def test_rigid_mode_with_a_brake(tmp_path):

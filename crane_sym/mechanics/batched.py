@@ -211,8 +211,13 @@ def _beyond(best):
 
 def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,
              const: np.ndarray) -> Signals:
-    """g = w·x + k of each design over the phase, as a :class:`Signals`."""
-    amps = np.einsum("kti,ki->kt", vectors[:, :, : form.n], weights)
+    """g = w·x + k of each design over the phase, as a :class:`Signals`; a
+    term within 64 ulps of the sum it comes from is rounding noise of an exact
+    zero (the rigid mode's powers of t of a load that only the springs set) and
+    is 0, as on the per-design route (``piecewise_linear.exact_zeros``)."""
+    parts = vectors[:, :, : form.n] * weights[:, None, :]
+    amps = parts.sum(axis=2)
+    amps[np.abs(amps) <= 64 * np.finfo(float).eps * np.abs(parts).sum(axis=2)] = 0.0
     return Signals.of(form, amps, np.asarray(const, float))
 
 
@@ -312,12 +317,22 @@ def _extrema(system: BatchedSystem, groups: list[_Group], s: _State, best_key: n
     reach = (np.abs(out.poly[:, 0]) if s.magnitude else out.poly[:, 0]) + out.spread(end)
     moving = np.flatnonzero(~rate.constant() & ~out.constant() & (end > 1e-12)
                             & (reach > best_key[idx]))
-    if moving.size:
-        which, when = all_crossings(rate.take(moving), np.zeros(moving.size), end[moving], h_min)
-    # each phase's largest over its start, stationary points and end
     v = out.value(rows, np.zeros(m))                 # at t = 0: no transcendental
     v_end = out.value(rows, end)
     key, key_end = (np.abs(v), np.abs(v_end)) if s.magnitude else (v, v_end)
+    if moving.size:
+        # crests only until the output has settled: past that instant none can
+        # come within the tie of what is known, nor add a tenth of the tie
+        # (a load settling to a constant: its rate's zeros are rounding noise)
+        known = np.maximum(np.maximum(key, key_end), best_key[idx])[moving]
+        g_c = out.poly[moving, 0]
+        lower = known - PEAK_TIE * np.abs(known)
+        room = lower - (np.abs(g_c) if s.magnitude else g_c)
+        margin = np.maximum(room, 0.1 * PEAK_TIE * np.maximum(np.abs(g_c), np.abs(known)))
+        margin = np.where(np.isfinite(margin), margin, 0.0)
+        until = out.take(moving).settled_by(margin, end[moving])
+        which, when = all_crossings(rate.take(moving), np.zeros(moving.size), until, h_min)
+    # each phase's largest over its start, stationary points and end
     at = np.zeros(m)
     top = np.maximum(key, key_end)
     if moving.size and which.size:

@@ -204,6 +204,7 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
     level = np.zeros(m) if level is None else level.copy()
     t, gt, dt = start.copy(), g0 + level, d0.copy()
     window = sig.window(ALL, np.maximum(t_end - start, h_min))
+    decays = sig.decays()
     side = np.where(on_surface & (direction != 0), -direction, np.sign(gt))
     zero = np.flatnonzero(side == 0)                 # on the surface, either way
     if zero.size:
@@ -223,8 +224,9 @@ def _brackets(sig: Signals, start: np.ndarray, t_end: np.ndarray, direction: np.
             (L[renew], M2[renew]), (Lr, Mr) = sig.bounds_on(
                 renew if renew.size < m else ALL, t[renew], w_end[renew], t_end[renew])
             # where the bounds over the whole rest are nearly those of the window
-            # (an undamped oscillation, a rigid motion), the rest is the window
-            whole = (Lr <= 2 * L[renew]) & (Mr <= 4 * M2[renew])
+            # (an undamped oscillation, a rigid motion), the rest is the window;
+            # not where a term decays: its bounds shrink window by window
+            whole = (Lr <= 2 * L[renew]) & (Mr <= 4 * M2[renew]) & ~decays[renew]
             pick = renew[whole]
             w_end[pick], L[pick], M2[pick] = t_end[pick], Lr[whole], Mr[whole]
         ta, ga, sa, La, Ma = t[act], gt[act], side[act], L[act], M2[act]

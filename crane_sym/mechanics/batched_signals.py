@@ -312,6 +312,31 @@ class Signals:
                     * np.maximum(1.0, np.exp(self.real_sigmas * tt))).sum(axis=1)
         return out
 
+    def settled_by(self, margin: np.ndarray, horizon: np.ndarray) -> np.ndarray:
+        """The earliest τ in [0, horizon] (to within a hundredth of the horizon
+        or one e-folding) after which |g(t) − g_c| ≤ ``margin`` for every t ≥ τ
+        up to the horizon, certified by the powers' bound Σ_{j≥1} |c_j| H^j plus
+        the decaying envelope Σ|a_j| e^{σ_j τ}; ``horizon`` where an exponential
+        does not decay (σ ≥ 0) or the powers alone use up the margin."""
+        amps = [np.abs(self.real_amps), np.hypot(self.cos_amps, self.sin_amps)]
+        sigmas = [self.real_sigmas, self.pair_sigmas]
+
+        def envelope(tau: np.ndarray) -> np.ndarray:
+            return sum(_rowsum(np.where(a != 0, a * np.exp(s * tau[:, None]), 0.0))
+                       if a.shape[1] else np.zeros_like(tau) for a, s in zip(amps, sigmas))
+        lasting = _nonzero(*(np.where(s >= 0, a, 0.0) for a, s in zip(amps, sigmas)))
+        powers = np.zeros_like(horizon)
+        for j in range(self.poly.shape[1] - 1, 0, -1):   # Horner on |c_j|
+            powers = (powers + np.abs(self.poly[:, j])) * horizon
+        margin = margin - powers
+        lo, hi = np.zeros_like(horizon), horizon.copy()
+        fits = ~lasting & (margin > 0) & (envelope(hi) <= margin)
+        for _ in range(24):                         # bisection: the envelope decreases
+            mid = 0.5 * (lo + hi)
+            ok = envelope(mid) <= margin
+            hi, lo = np.where(ok, mid, hi), np.where(ok, lo, mid)
+        return np.where(fits, hi, horizon)
+
     def constant(self) -> np.ndarray:
         """True where a signal has no term but its constant."""
         return ~_nonzero(self.real_amps, self.cos_amps, self.sin_amps, self.poly[:, 1:])
@@ -323,15 +348,29 @@ class Signals:
 
     def window(self, rows: np.ndarray, scale: np.ndarray) -> np.ndarray:
         """A window over which the bounds stay tight: a quarter of the shortest
-        period, no longer than the e-folding time of a growing term, nor ``scale``."""
+        period, no longer than the e-folding time of a growing term or of the
+        slowest decaying one (the bounds then shrink with the signal), nor ``scale``."""
         out = scale.copy()
         wmax = self.pair_omegas[rows].max(axis=1, initial=0.0)
         smax = np.maximum(self.pair_sigmas[rows].max(axis=1, initial=0.0),
                           self.real_sigmas[rows].max(axis=1, initial=0.0))
+        decay = np.inf
+        for a, s in ((self.real_amps[rows], self.real_sigmas[rows]),
+                     (np.hypot(self.cos_amps[rows], self.sin_amps[rows]),
+                      self.pair_sigmas[rows])):
+            decay = np.minimum(decay, np.where((a != 0) & (s < 0), -s, np.inf).min(
+                axis=1, initial=np.inf))
         with np.errstate(divide="ignore"):
             out = np.where(wmax > 0, np.minimum(out, 0.5 * np.pi / wmax), out)
             out = np.where(smax > 0, np.minimum(out, 1.0 / smax), out)
+            out = np.where(np.isfinite(decay), np.minimum(out, 1.0 / decay), out)
         return out
+
+    def decays(self) -> np.ndarray:
+        """True where a signal has a decaying term (σ < 0, a nonzero amplitude)."""
+        return _nonzero(np.where(self.real_sigmas < 0, self.real_amps, 0.0),
+                        np.where(self.pair_sigmas < 0, self.cos_amps, 0.0),
+                        np.where(self.pair_sigmas < 0, self.sin_amps, 0.0))
 
 def _nonzero(*blocks: np.ndarray) -> np.ndarray:
     """True where a row holds a nonzero entry in any of ``blocks`` (m, ·),

@@ -100,6 +100,9 @@ def peak_candidates(form: ClosedForm, amps: np.ndarray, k: float, rate: np.ndarr
             break
         ra = _values(form, rate, rate_k, a)
         rb = _values(form, rate, rate_k, b)
+        for ends, rates, vals in ((a, ra, va), (b, rb, vb)):    # g' = 0 on an end
+            flat = rates == 0
+            times.append(ends[flat]), found.append(vals[flat])
         split = 0.5 * (a + b)              # halved, or cut at its crest (g' = 0)
         turns = np.flatnonzero(np.sign(ra) * np.sign(rb) < 0)
         def slope(x: float) -> float:
@@ -109,7 +112,12 @@ def peak_candidates(form: ClosedForm, amps: np.ndarray, k: float, rate: np.ndarr
                 split[i] = brentq(slope, a[i], b[i], xtol=1e-15,
                                   rtol=4 * np.finfo(float).eps)
         inside = (split[turns] - a[turns] > floor) & (b[turns] - split[turns] > floor)
-        split[turns[~inside]] = 0.5 * (a + b)[turns[~inside]]   # the crest found before
+        # a crest on an end of its interval (a grid point, a half) is that end
+        edge = turns[~inside]
+        at_a = split[edge] - a[edge] <= floor
+        times.append(np.where(at_a, a[edge], b[edge]))
+        found.append(np.where(at_a, va[edge], vb[edge]))
+        split[edge] = 0.5 * (a + b)[edge]
         turns = turns[inside]
         vm = _values(form, amps, k, split)
         times.append(split[turns]), found.append(vm[turns])
