@@ -231,6 +231,59 @@ speed = "2 m/s"
     assert abs(peak.time - (0.5 + math.pi / omega)) <= 1e-6
 
 
+def _braked_pair(tmp_path, push: float, extra: str = "", run: str = "") -> object:
+    return _write(tmp_path, "braked_pair", _mass("trolley", "2 t") + _mass("load", "500 kg")
+                  + _link("link", "load", "trolley") + extra + _push(f"{push} N")
+                  + '\n[[brake]]\nname = "brake"\nbody = "trolley"\nforce = "600 N"\n'
+                  + 'delay = "0 s"\n' + (run or _at_rest(8)))
+
+
+@pytest.mark.parametrize("push", [1000.0, 250.0])
+def test_a_brake_engaging_at_zero_speed(tmp_path, push):
+    """A brake of 600 N engaging at t = 0 on a trolley at rest, pushed by
+    1000 N (it slides: the load sees 2 m (F − F_b)/(M + m) at π/ω) or by 250 N
+    (it holds: the load sees nothing)."""
+    peak = _run(_braked_pair(tmp_path, push)).peaks[0]
+    net = max(push - 600.0, 0.0)
+    expected = 2 * 500 * net / 2500
+    assert abs(abs(peak.value) - expected) <= RTOL * max(expected, 1.0)
+    if net:
+        assert abs(peak.time - math.pi / math.sqrt(K * 2500 / (2000 * 500))) <= 1e-6
+
+
+def _bouncing(tmp_path, duration: float):
+    """A trolley at 2 m/s braked by 600 N from 0.5 s; its load on an undamped
+    link with 5 cm of backlash: once the trolley is held, the load crosses the
+    gap back and forth for ever."""
+    return _write(tmp_path, "bouncing", _mass("trolley", "2 t") + _mass("load", "500 kg")
+                  + _link("link", "load", "trolley") + 'backlash = "0.05 m"\n'
+                  + '\n[[brake]]\nname = "brake"\nbody = "trolley"\nforce = "600 N"\n'
+                  + 'delay = "0.5 s"\n'
+                  + f'\n[run]\nduration = "{duration} s"\nstart = "steady"\n'
+                  + 'body = "trolley"\nspeed = "2 m/s"\n')
+
+
+def test_a_run_of_ten_thousand_phases(tmp_path):
+    """Nearly 10⁴ phases (16 000 s of a load bouncing across a gap): the late
+    crests keep the energy of the first after the hold, |F| = |v| √(m c) with v
+    the load's speed as the gap opens, to 1e-9; the peak and its time are those
+    of a 30 s run."""
+    from crane_sym.mechanics.phase_table import phase_candidates
+    short = _run(_bouncing(tmp_path, 30.0)).peaks[0]
+    run = _run(_bouncing(tmp_path, 16000.0))
+    segments = run.result.segments
+    assert len(segments) > 9000
+    assert (run.peaks[0].value, run.peaks[0].time) == (short.value, short.time)
+    held = next(i for i, s in enumerate(segments) if s.event == "trolley rests")
+    opens = next(s for s in segments[held:] if s.event == "link opens")
+    speed = abs(opens.form.state(opens.t1 - opens.t0, opens.x0)[3])
+    expected = speed * math.sqrt(M_LOAD * K)
+    late = max(float(np.abs(phase_candidates(s, run.system, run.system.link_load(0),
+                                               True)[1]).max())
+               for s in segments if s.t0 > 15000.0)
+    assert abs(late - expected) <= RTOL * expected
+
+
 def test_stiffness_ratio_1e8_and_mass_ratio_1e6(tmp_path):
     """A stiff coupling (1e10 N/m) between a 1 kg drive and a 1 kg hub, a soft
     rope (100 N/m) to a 1e6 kg load, the drive on a speed ramp: the rope's

@@ -10,3 +10,7 @@ geometry, sampled loads.
 May import: the top-level vocabulary (``symbols``, ``units``, ``dimensions``,
 ``latex``, ``derivation``, ``outcomes``, ...) and ``kernels``.
 """
+
+# a double phase whose form rounding has spoilt falls back to mpmath's
+# (piecewise_linear.precise_form): the provider registers itself on import
+from crane_sym.mechanics import exact_phases as _exact_phases  # noqa: E402,F401

@@ -19,12 +19,10 @@ equal drives) form a cluster with one projector C = R (Lᵀ R)⁻¹ Lᵀ from it
 right and left eigenvectors. A design is refused (for the per-design route,
 which resolves nearly equal and defective eigenvalues,
 :mod:`crane_sym.mechanics.spectral_clusters`) where this is not safe:
-eigenvalues (a complex pair's two included) closer than
-:data:`~crane_sym.mechanics.spectral_clusters.CLUSTER` of their size but not
-equal (near-critical damping: an error of eps/gap² there), a cluster's
+eigenvalues closer than 10⁻⁶ of the scale but not equal, a cluster's
 condition number ‖(L̂ᵀ R̂)⁻¹‖ above ``cond_limit`` (for a simple eigenvalue
-1/|ŵᵀv̂|; a defective eigenvalue makes it huge), or spectra of M and Mᵀ that
-do not match.
+1/|ŵᵀv̂|; a defective eigenvalue makes it huge), a complex pair closer to the
+real axis than 10⁻⁵ of the scale, or spectra of M and Mᵀ that do not match.
 
 :class:`crane_sym.mechanics.batched_cache.FormCache` keeps the forms per
 mode.
@@ -35,14 +33,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from crane_sym.mechanics.spectral_clusters import CLUSTER
-
 __all__ = ["BatchForm", "batch_forms", "first_of_equal"]
 
-#: Largest eigenvalue condition number the batched route accepts: a design's
-#: error grows like eps times it, so 1e5 keeps it near 1e-11 (a nearly
-#: defective pair, critical damping, goes to the per-design route).
-COND_LIMIT = 1e5
+#: Largest eigenvalue condition number κ the batched route accepts. Near a
+#: defective pair (near-critical damping) a design's error grows like eps·κ²
+#: (an eigenvalue off by eps·κ, times amplitudes κ large: 3e-9 of the peak at
+#: κ = 3.6e3, damping 1e-8 below critical), so 200 keeps it near 1e-11; the
+#: others go to the per-design route, whose clusters resolve them.
+COND_LIMIT = 200.0
 
 
 @dataclass(frozen=True)
@@ -172,19 +170,15 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     mu, vl, cat_mu = _ordered(mu, vl, tol)
     live = cat < 3
     bad = np.any(cat != cat_mu, axis=1) | np.any(live & (np.abs(lam - mu) >= tol), axis=1)
-    # a complex pair or two eigenvalues nearer than CLUSTER of their size
-    # (near-critical damping): the eigenvectors are ill-conditioned there, and
-    # the per-design route's clusters resolve them
     im = np.abs(lam.imag)
-    bad |= np.any(live & (im > 0) & (2 * im < CLUSTER * np.abs(lam)), axis=1)
+    bad |= np.any(live & (im > 0) & (im < 1e-5 * scale), axis=1)
     bad |= ~np.all(np.isfinite(lam), axis=1) | ~np.all(np.isfinite(mu), axis=1)
     # a cluster is one eigenvalue with one projector: only where its members are
-    # equal to rounding (equal drives); nearly equal ones (within CLUSTER) go to
-    # the per-design route, whose clusters resolve them (spectral_clusters)
+    # equal to rounding (equal drives); nearly equal ones go to the per-design
+    # route, whose clusters resolve them (spectral_clusters)
     gap = np.abs(np.diff(lam, axis=1))
     same = live[:, 1:] & live[:, :-1] & (cat[:, 1:] == cat[:, :-1])
-    size = np.maximum(np.abs(lam[:, 1:]), np.abs(lam[:, :-1]))
-    bad |= np.any(same & (gap < CLUSTER * size) & (gap > 1e-12 * scale), axis=1)
+    bad |= np.any(same & (gap < tol) & (gap > 1e-12 * scale), axis=1)
     return first, inverse, lam, vr, mu, vl, cat, bad
 
 

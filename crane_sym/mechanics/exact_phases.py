@@ -38,7 +38,8 @@ import sympy as sp
 from crane_sym.mechanics.closed_forms import ClosedForm, exact_is_cheap, jordan, jordan_blocks
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.spectral_clusters import Algebra, cluster_terms, group
-from crane_sym.mechanics.piecewise_linear import Guard, HybridSystem, sign_change, signal
+from crane_sym.mechanics.piecewise_linear import (Guard, HybridSystem, sign_change, signal,
+                                                  use_precise_forms)
 
 __all__ = ["DPS", "ExactForm", "ExactRun", "ExactSegment", "crossing", "exact_form",
            "exact_table", "illinois", "simulate_exact", "tabulate_exact"]
@@ -162,6 +163,19 @@ def _mp_algebra() -> Algebra:
                    eps=float(mpmath.mpf(10) ** (-mpmath.mp.dps)))
 
 
+def _errors(M: mpmath.matrix, left: mpmath.matrix, right: mpmath.matrix) -> list[float]:
+    """Rounding bounds eps·κ_i·‖M‖ of the eigenvalues at the working digits
+    (:func:`crane_sym.mechanics.spectral_clusters.resolution`, in mpmath)."""
+    eps, norm, out = mpmath.mpf(10) ** (-mpmath.mp.dps), mpmath.mnorm(M, "F"), []
+    for i in range(M.rows):
+        r = [right[k, i] for k in range(M.rows)]
+        l = [left[i, k] for k in range(M.rows)]
+        dot = abs(mpmath.fsum(a * c for a, c in zip(l, r)))
+        size = mpmath.sqrt(mpmath.fsum(abs(a) ** 2 for a in l) * mpmath.fsum(abs(c) ** 2 for c in r))
+        out.append(float(eps * norm * size / dot) if dot else math.inf)
+    return out
+
+
 def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
     """The terms from the spectral clusters of M
     (:mod:`crane_sym.mechanics.spectral_clusters`), their projectors from
@@ -175,12 +189,13 @@ def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
     digits = mpmath.mp.dps
     lam, left, right = mpmath.eig(M, left=True, right=True)
     scale = max(max(abs(v) for v in lam), 1)
-    kernel, clusters = group(list(lam), float(scale))
+    kernel, clusters = group(list(lam), float(scale), errors=_errors(M, left, right))
     if any(len(c) > 1 for c in clusters):      # their vectors at twice the digits
         digits = 2 * mpmath.mp.dps
         with mpmath.workdps(digits):
             lam, left, right = mpmath.eig(M, left=True, right=True)
-        kernel, clusters = group(list(lam), float(scale))
+            errors = _errors(M, left, right)
+        kernel, clusters = group(list(lam), float(scale), errors=errors)
     terms, projector = [], mpmath.zeros(size, size)
     for cluster in clusters:
         with mpmath.workdps(digits):
@@ -220,6 +235,17 @@ def _exact_form_cached(a_key: tuple, b_key: tuple, dps: int) -> ExactForm:
         if exact_is_cheap(a_key, b_key):            # as the double run takes it
             return _form_jordan(a_key, b_key)
         return _form_eig(a_key, b_key) or _form_jordan(a_key, b_key)
+
+
+def _precise(A: np.ndarray, b: np.ndarray) -> ClosedForm:
+    """exp(Mt) at :data:`DPS` digits rounded to double: what a double run
+    takes where its own form does not solve its equations (time scales 1e7
+    apart)."""
+    with mpmath.workdps(DPS):
+        return exact_form(A, b).double
+
+
+use_precise_forms(_precise)
 
 
 def exact_form(A: Sequence, b: Sequence) -> ExactForm:

@@ -45,6 +45,41 @@ __all__ = ["ClosedForm", "Guard", "HybridSystem", "PiecewiseResult", "Segment", 
            "closed_form", "exact_zeros", "first_crossing", "sign_change", "signal", "simulate"]
 
 
+#: Largest relative residual of a phase's closed form at the phase's end
+#: (:meth:`ClosedForm.residual`) before it is taken from :func:`precise_form`.
+RESIDUAL = 1e-8
+#: The provider of precise closed forms (mpmath: ``exact_phases`` registers it).
+_PRECISE: list[Callable[[np.ndarray, np.ndarray], ClosedForm]] = []
+
+
+def use_precise_forms(provider: Callable[[np.ndarray, np.ndarray], ClosedForm]) -> None:
+    """Register the closed forms :func:`precise_form` falls back to."""
+    _PRECISE[:] = [provider]
+
+
+def precise_form(A: np.ndarray, b: np.ndarray, length: float, x0: np.ndarray) -> ClosedForm:
+    """The phase's closed form from the precise provider, where the double one
+    does not solve its equations to :data:`RESIDUAL` over ``length``; refused
+    by name where none is registered or it does not either."""
+    form = _PRECISE[0](A, b) if _PRECISE else None
+    if form is None or form.residual(length, x0, A, b) > RESIDUAL:
+        raise RuntimeError(f"a phase of {length:g} s: its closed form does not solve its"
+                           f" equations to {RESIDUAL:g} (time scales too far apart for"
+                           " double precision)")
+    return form
+
+
+def _next_event(system: "HybridSystem", mode: Hashable, form: ClosedForm, x: np.ndarray,
+                end: float, event: str, h_min: float) -> tuple[float, str]:
+    """The phase's end: the first guard crossed before ``end``, else ``event``."""
+    for guard in system.guards(mode):
+        hit = first_crossing(form, x, np.array(guard.weights), guard.constant,
+                             end, direction=guard.direction, h_min=h_min)
+        if hit is not None and hit < end:
+            end, event = hit, guard.name
+    return end, event
+
+
 def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
                    constant: float, t_end: float, *, direction: int = 0,
                    h_min: float = 1e-10, xtol: float = 1e-14,
@@ -64,6 +99,8 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
     """
     amps, k = (exact_zeros(form, weights, constant, x0) if clean
                else form.scalar_terms(weights, constant, x0))
+    if not np.any(amps) and k == 0.0:
+        return None             # g ≡ 0: the state rides the surface, never crosses
     g, slope = signal(form, amps, k)
     size = float(np.sum(np.abs(amps)) + abs(k))
     band = max(form.derivative_bound(amps, 0.0, min(h_min, t_end)) * h_min, 1e-12 * size)
@@ -327,12 +364,11 @@ def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: f
         A, b = system.matrices(mode)
         form = closed_form(A, b, exact)
         horizon = (pending[0][0] if pending else t_end) - t
-        end, event = horizon, (pending[0][1] if pending else "end")
-        for guard in system.guards(mode):
-            hit = first_crossing(form, x, np.array(guard.weights), guard.constant,
-                                 end, direction=guard.direction, h_min=h_min)
-            if hit is not None and hit < end:
-                end, event = hit, guard.name
+        first = (horizon, pending[0][1] if pending else "end")
+        end, event = _next_event(system, mode, form, x, *first, h_min)
+        if form.residual(end, x, A, b) > RESIDUAL:      # rounding grown past the phase
+            form = precise_form(A, b, end, x)
+            end, event = _next_event(system, mode, form, x, *first, h_min)
         result.segments.append(Segment(mode, t, t + end, x, form, event))
         x_end = form.state(end, x)
         t += end

@@ -37,13 +37,15 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-__all__ = ["Algebra", "CLUSTER", "ClusterError", "KERNEL", "TAYLOR", "cluster_terms",
-           "group", "numpy_terms"]
+__all__ = ["Algebra", "CLUSTER", "ClusterError", "KERNEL", "RESOLVED", "TAYLOR",
+           "cluster_terms", "group", "numpy_terms", "resolution"]
 
 #: Eigenvalues closer than this fraction of their modulus form one cluster.
 CLUSTER = 1e-3
 #: Eigenvalues below this fraction of the spectrum's scale are the kernel's.
 KERNEL = 1e-6
+#: A small eigenvalue this many times above its rounding bound is live.
+RESOLVED = 10.0
 #: Largest |q| τ² written as a Taylor polynomial (its 9 terms then reach 1e-19
 #: at 50 decay times, past which e^{μt} has fallen below 1e-21).
 TAYLOR = 1e-4
@@ -66,14 +68,21 @@ class Algebra:
     eps: float
 
 
-def group(values: Sequence[complex], scale: float,
-          floor: float | None = None) -> tuple[list[int], list[list[int]]]:
+def group(values: Sequence[complex], scale: float, floor: float | None = None,
+          errors: Sequence[float] | None = None) -> tuple[list[int], list[list[int]]]:
     """(kernel, clusters): indices of the eigenvalues below KERNEL·scale (or
-    ``floor``), and the rest grouped (transitively) where
-    |λ_i − λ_j| ≤ CLUSTER·max(|λ_i|, |λ_j|)."""
+    ``floor``) that their ``errors`` do not resolve, and the rest grouped
+    (transitively) where |λ_i − λ_j| ≤ CLUSTER·max(|λ_i|, |λ_j|).
+
+    ``errors`` bound each eigenvalue's rounding (:func:`resolution`): an
+    eigenvalue RESOLVED times above it is a slow mode, however small beside
+    the fastest (a soft rope beside a stiff coupling, 1e-7 of the scale), not
+    the rounding of a rigid mode's zero."""
     floor = KERNEL * scale if floor is None else floor
-    kernel = [i for i, v in enumerate(values) if abs(v) <= floor]
-    live = [i for i, v in enumerate(values) if abs(v) > floor]
+    errors = [math.inf] * len(values) if errors is None else errors
+    small = [abs(v) <= floor and abs(v) <= RESOLVED * e for v, e in zip(values, errors)]
+    kernel = [i for i, v in enumerate(values) if small[i]]
+    live = [i for i, v in enumerate(values) if not small[i]]
     parent = {i: i for i in live}
 
     def root(i: int) -> int:
@@ -143,14 +152,34 @@ def _schur_projector(M: np.ndarray, centre: complex, radius: float, size: int) -
     return Z1 @ (Z1.conj().T + Y @ Z2.conj().T)
 
 
+def resolution(left: np.ndarray, right: np.ndarray, norm: float, eps: float) -> np.ndarray:
+    """First-order rounding bounds eps·κ_i·‖M‖ of the eigenvalues, κ_i =
+    ‖l_i‖‖r_i‖/|l_iᴴ r_i| (infinite where l_iᴴ r_i = 0: a defective one)."""
+    dots = np.abs(np.sum(left.conj() * right, axis=0))
+    sizes = np.linalg.norm(left, axis=0) * np.linalg.norm(right, axis=0)
+    with np.errstate(divide="ignore"):
+        return np.where(dots > 0, eps * norm * sizes / np.where(dots > 0, dots, 1.0), np.inf)
+
+
 def numpy_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
-    """The terms (j, λ, C) of exp(M t) = Σ t^j e^{λt} C in doubles."""
+    """The terms (j, λ, C) of exp(M t) = Σ t^j e^{λt} C in doubles, from M
+    balanced by a diagonal of powers of 2 (exact: stiffness ratios of 1e8 make
+    ‖M‖ large beside its slow modes, and every rounding scales with ‖M‖)."""
+    from scipy.linalg import matrix_balance
+
+    B, T = matrix_balance(M, permute=False)
+    d = np.diag(T)
+    return [(j, lam, C * d[:, None] / d[None, :]) for j, lam, C in _balanced_terms(B)]
+
+
+def _balanced_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
     from scipy.linalg import eig
 
     algebra = _np_algebra()
     lam, vl, vr = eig(M, left=True, right=True)
     scale = max(float(np.abs(lam).max()), 1.0)
-    kernel, clusters = group(list(lam), scale)
+    errors = resolution(vl, vr, float(np.linalg.norm(M)), algebra.eps)
+    kernel, clusters = group(list(lam), scale, errors=list(errors))
     size = M.shape[0]
     terms, projector = [], np.zeros((size, size), dtype=complex)
     for cluster in clusters:

@@ -3,7 +3,7 @@
 drive with backlash in both drives (Fig. 11, Fig. 12, Table 1).
 
 The system (modes, guards, switching) is the component model of
-``drive_train.fig11_model`` (``crane_sym.components``: the motors of each
+``drive_train.fig11_design`` (``crane_sym.components``: the motors of each
 side, the crane, the two links with backlash, the characteristics, friction
 and wind as parts, the drive derived from them); this module says how a
 scene's values build its run and which outputs it has. The values are the drive at the wheel rim: ``m_d``, ``b``, ``v0``,
@@ -25,7 +25,7 @@ from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.mechanics.hybrid_models import HybridModel, HybridOutput
 from crane_sym.mechanics.phase_table import Affine, HybridRun
 
-from .drive_train import fig11_model, speed_index, total_load
+from .drive_train import fig11_design, speed_index, total_load
 from .startup import reduced
 
 __all__ = ["HYBRID_MODELS", "STARTUP", "rim_values", "scene_runs"]
@@ -34,9 +34,11 @@ __all__ = ["HYBRID_MODELS", "STARTUP", "rim_values", "scene_runs"]
 def _start_up(values: Mapping[str, float], settings: Mapping[str, Any]) -> HybridRun:
     """The start-up from rest, gaps open on the trailing side, one
     characteristic per hold time of the setting ``holds`` then the natural
-    one, up to the setting ``end`` [s]; its output is F1 + F2."""
-    return fig11_model(values, tuple(settings["holds"])).hybrid_run(settings["end"],
-                                                                    rest=True)
+    one, up to the setting ``end`` [s]; its output is F1 + F2. The drive's
+    equations are derived once and shared by every run (``fig11_design``), so
+    a run here is the run of Table 1 and of the sweeps to the last bit."""
+    return fig11_design(values, tuple(settings["holds"])).hybrid_run(settings["end"],
+                                                                     rest=True)
 
 
 def _left_link(system: ComponentSystem) -> Affine:
