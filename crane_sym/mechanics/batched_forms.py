@@ -33,14 +33,20 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from crane_sym.mechanics.spectral_clusters import CLUSTER
+
 __all__ = ["BatchForm", "batch_forms", "first_of_equal"]
 
-#: Largest eigenvalue condition number κ the batched route accepts. Near a
-#: defective pair (near-critical damping) a design's error grows like eps·κ²
-#: (an eigenvalue off by eps·κ, times amplitudes κ large: 3e-9 of the peak at
-#: κ = 3.6e3, damping 1e-8 below critical), so 200 keeps it near 1e-11; the
-#: others go to the per-design route, whose clusters resolve them.
-COND_LIMIT = 200.0
+#: Largest eigenvalue condition number the batched route accepts: a design's
+#: error grows like eps times it, so 1e5 keeps it near 1e-11 (a nearly
+#: defective pair, critical damping, goes to the per-design route).
+COND_LIMIT = 1e5
+#: Largest condition number κ of an eigenvalue with a neighbour within
+#: CLUSTER of it: near a defective pair (near-critical damping) the error
+#: grows like eps·κ² (the eigenvalue off by eps·κ, times amplitudes κ large:
+#: 3e-9 of the peak at κ = 3.6e3, damping 1e-8 below critical), so 200 keeps
+#: it near 1e-11; the per-design route's clusters resolve the others.
+NEAR_COND = 200.0
 
 
 @dataclass(frozen=True)
@@ -179,6 +185,17 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     gap = np.abs(np.diff(lam, axis=1))
     same = live[:, 1:] & live[:, :-1] & (cat[:, 1:] == cat[:, :-1])
     bad |= np.any(same & (gap < tol) & (gap > 1e-12 * scale), axis=1)
+    # nearly defective: a neighbour within CLUSTER (a pair's conjugate included)
+    # and a condition number above NEAR_COND
+    with np.errstate(divide="ignore"):
+        kappa = 1.0 / np.abs(np.sum(vl * vr, axis=1))
+    near = np.zeros_like(live)
+    for j in range(lam.shape[1]):
+        d = np.abs(lam - lam[:, j:j + 1])
+        d[:, j] = np.inf
+        d[d <= 1e-12 * scale] = np.inf                # equal: one cluster, one projector
+        near[:, j] = d.min(axis=1) <= CLUSTER * np.abs(lam[:, j])
+    bad |= np.any(live & near & (kappa > NEAR_COND), axis=1)
     return first, inverse, lam, vr, mu, vl, cat, bad
 
 

@@ -88,7 +88,11 @@ class ClosedForm:
         x, dx = beta @ vectors, rate @ vectors
         A, b = np.asarray(A, float), np.asarray(b, float)
         scale = np.abs(x) + t * (np.abs(A) @ np.abs(x) + np.abs(b))
+        # a row that stays ~0 (a held body's speed) is measured against the
+        # rows that move: its rounding is no residual
+        floor = 1e-6 * float((np.abs(x) + t * np.abs(dx)).max(initial=0.0))
         miss = t * np.abs(dx - (A @ x + b))
+        scale = np.maximum(scale, floor)
         with np.errstate(divide="ignore", invalid="ignore"):
             ratio = np.where(scale > 0, miss / scale, np.where(miss > 0, np.inf, 0.0))
         return float(ratio.max(initial=0.0))
