@@ -139,7 +139,7 @@ def figures(panels: Sequence[Panel], title: str) -> list:
 def fitted(title: str, inches: float, points: float = 12.0) -> str:
     """``title`` broken at spaces into lines that fit a figure ``inches`` wide
     at ``points`` (a suptitle's size): a long title wraps instead of running
-    past both edges, where the PNG clips it.
+    past both edges, where the PNG clips it. Mathtext (``$…$``) is not broken.
 
     Parameters
     ----------
@@ -152,7 +152,10 @@ def fitted(title: str, inches: float, points: float = 12.0) -> str:
     """
     import textwrap
     chars = max(20, int(0.92 * inches * 72 / (0.6 * points)))   # a sans glyph is ~0.6 em
-    return "\n".join(textwrap.fill(line, chars) if line else line
+    keep = "\u00a0"                      # a space inside $…$, not a place to break
+    title = re.sub(r"\$[^$]*\$", lambda m: m.group(0).replace(" ", keep), title)
+    return "\n".join(textwrap.fill(line, chars, break_long_words=False,
+                                   break_on_hyphens=False).replace(keep, " ")
                      for line in title.split("\n"))
 
 
