@@ -111,3 +111,20 @@ def test_json_stays_si_and_says_what_positive_is(capsys):
 def test_linkpeak_keeps_its_old_fields():
     p = LinkPeak("rope", 0.1, 2.0, "N", 1.0, None)
     assert p.positive is None and p.factor is None
+
+
+def test_a_brake_at_the_steady_starts_instant_is_said(tmp_path):
+    """A brake without delay on a steady start engages at t = 0, after the steady
+    motion it starts from: the run says so, rather than leave it to be guessed."""
+    fig9 = GANTRY.parent / "hoist_fig9.toml"
+    path = tmp_path / "at_once.toml"
+    path.write_text(fig9.read_text(encoding="utf-8").replace('delay = "0.1 s"',
+                                                              'delay = "0 s"'),
+                    encoding="utf-8")
+    read = read_component_file(path)
+    at_once = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
+    assert any(l.startswith("note: brake 'safety_brakes' engages at t = 0") and
+               "computed without it" in l for l in report_lines(at_once))
+    read = read_component_file(fig9)
+    later = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
+    assert not any(l.startswith("note: brake") for l in report_lines(later))

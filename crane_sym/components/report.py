@@ -69,11 +69,20 @@ def load_text(value: float, unit: str, positive: str | None, factor: float,
 
 
 def report_lines(run: ComponentRun) -> list[str]:
-    """The components dropped as not needed, how the loads' signs read, peak
+    """The components dropped as not needed, a brake that engages the instant
+    a steady start begins (its friction is not in that steady motion), how
+    the loads' signs read, peak
     loads (in kN or kN·m where they are that large, in words where a link
     declares its ``positive``; with time and dynamic factor) and events, one
     per line."""
     lines = [d.line() for d in run.model.dropped]
+    for t, event in run.schedule:          # a steady start: the brake comes after it
+        if t == 0 and event.endswith(" engages"):
+            brake = event.removesuffix(" engages")
+            lines.append(f"note: brake {brake!r} engages at t = 0, the instant the run "
+                         "starts from its steady motion, which is computed without it (a "
+                         "friction that acts throughout: start = \"rest\", or give the "
+                         "motion's resistance as a [[resistance]])")
     if any(p.positive is None for p in run.peaks):
         lines.append(SIGNS)
     for p in run.peaks:
