@@ -104,14 +104,20 @@ def test_chromium_typesets_every_formula_and_figure(page, tmp_path):
     assert m["toc_links"] and m["targets"] == m["toc_links"], m
 
 
-def test_chromium_screenshot_is_a_page(page, tmp_path):
+def screenshot(page: str, folder: Path, *flags: str):
+    """The pixels of ``page`` as headless Chromium shows it (with ``flags``),
+    and the PNG's path."""
     mpimg = pytest.importorskip("matplotlib.image")
     browser = _chromium()
-    source = tmp_path / "page.html"
+    source = folder / "page.html"
     source.write_text(page, encoding="utf-8")
-    shot = tmp_path / "page.png"
-    _run(browser, tmp_path / "profile", f"--screenshot={shot}", source.as_uri())
-    pixels = mpimg.imread(shot)
+    shot = folder / "page.png"
+    _run(browser, folder / "profile", *flags, f"--screenshot={shot}", source.as_uri())
+    return mpimg.imread(shot), shot
+
+
+def test_chromium_screenshot_is_a_page(page, tmp_path):
+    pixels, _ = screenshot(page, tmp_path)
     assert pixels.shape[0] >= 1000 and pixels.shape[1] >= 900
     ink = (pixels[..., :3].mean(axis=2) < 0.5).mean()        # dark pixels: text, math
     assert 0.005 < ink < 0.5, ink

@@ -136,10 +136,11 @@ def test_cyrillic_inside_mathtext_renders():
         _draw(fig)                               # the check can fail: a Tamil letter
 
 
-def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
+def test_bench_plot_splits_into_figures_of_three_panels(tmp_path, monkeypatch):
     from crane_sym.bench import report
     from crane_sym.bench.rows import GENERATED, INTEGRATOR, BenchRow
-    rows = [BenchRow("demo", f"f{k}", method, 1e-3 * (1 + j), 100, err, 1.0, err, kind=kind)
+    rows = [BenchRow("demo", f"f{k}", method, 1e-3 * (1 + j), 100, err * (k + 1), 1.0,
+                     err * (k + 1), kind=kind)
             for k in range(6)
             for j, (method, err, kind) in enumerate([("generated", 1e-16, GENERATED),
                                                      ("RK45 rtol=1e-3 [x]", 1e-3, INTEGRATOR),
@@ -149,17 +150,43 @@ def test_bench_plot_splits_into_figures_of_two_panels(tmp_path, monkeypatch):
     monkeypatch.setattr(report, "save", lambda fig, path, dpi=120: made.append(fig)
                         or save(fig, path, dpi))          # the name the bench report calls
     paths = report.plot(rows, tmp_path / "bench_demo.png", "demo")
-    assert paths == [tmp_path / f"bench_demo_{k}.png" for k in (1, 2, 3)]
+    assert paths == [tmp_path / f"bench_demo_{k}.png" for k in (1, 2)]
     assert all(p.read_bytes()[:4] == b"\x89PNG" for p in paths)
-    assert [sum(ax.get_visible() for ax in f.get_axes()) for f in made] == [2, 2, 2]
-    assert [f.get_suptitle() for f in made] == [f"demo, {k} of 3" for k in (1, 2, 3)]
+    assert [sum(ax.get_visible() for ax in f.get_axes()) for f in made] == [3, 3]
+    assert [f.get_suptitle() for f in made] == [f"demo, {k} of 2" for k in (1, 2)]
     for fig in made:                             # the legend lies below the panels
         renderer = _draw(fig)
         (legend,) = fig.legends
         box = legend.get_window_extent(renderer)
         assert not any(box.overlaps(ax.get_window_extent(renderer))
                        for ax in fig.get_axes() if ax.get_visible())
-    assert report.plot(rows[:6], tmp_path / "bench_two.png", "two") == [tmp_path / "bench_two.png"]
+    assert report.plot(rows[:9], tmp_path / "bench_3.png", "3") == [tmp_path / "bench_3.png"]
     alone = [r for r in rows if r.kind == GENERATED]      # nothing to compare with
     assert report.plot(alone, tmp_path / "bench_none.png", "none") == []
     assert not (tmp_path / "bench_none.png").exists()
+
+
+def test_bench_panels_hold_six_curves_and_draw_the_same_runs_once():
+    """Nine methods in two coordinate systems: a panel per system, at most six
+    curves each; a second function with the very same errors (a force that is a
+    constant times the displacement it is computed from) shares its panels,
+    whatever the noise of its timings; one with other errors has its own."""
+    from crane_sym.bench import report
+    from crane_sym.bench.rows import INTEGRATOR, BenchRow
+    methods = [f"M{m} rtol=1e-{j} [{system}]" for system in ("x", "y") for m in range(9)
+               for j in (3, 9)]
+    rows = [BenchRow("demo", name, method, 1e-3, 100, 1e-6 * (1 + k), 1.0, 1e-6 * (1 + k),
+                     kind=INTEGRATOR)
+            for name in ("displacement", "force") for k, method in enumerate(methods)]
+    found = report.panels(rows)
+    assert [len(families) for _, _, families in found] == [5, 4, 5, 4]   # 9 = 5 + 4
+    assert {title.split("\n")[0] for title, _, _ in found} == {
+        "displacement, force (the same errors; times of displacement)"}
+    noisy = [r if r.function == "displacement" else BenchRow(
+        "demo", r.function, r.method, 1.1e-3, 100, r.max_error_over_peak, 1.0,
+        r.max_rel_error, kind=INTEGRATOR) for r in rows]           # timed apart
+    assert len(report.panels(noisy)) == 4
+    other = [r if r.function == "displacement" else BenchRow(
+        "demo", r.function, r.method, 1e-3, 100, r.max_rel_error, 1.0,
+        2 * r.max_error_over_peak, kind=INTEGRATOR) for r in rows]
+    assert len(report.panels(other)) == 8

@@ -5,12 +5,16 @@ A paper's build and audit share nothing with another paper's, and SymPy holds
 the GIL, so two papers in two processes take about the time of the longer one
 where one process takes their sum. The records come back in the papers'
 order, the same records a single process gives (``tests/test_audit_papers.py``).
+While they work, each worker's progress (the stage it is in, the step it
+finished) is relayed to the parent through a queue and said there, so a
+long paper is never a silence.
 """
 from __future__ import annotations
 
 import os
+import queue
 import time
-from concurrent.futures import ProcessPoolExecutor, as_completed
+from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from dataclasses import dataclass
 from typing import Callable, TypeVar
 
@@ -58,11 +62,40 @@ def audit_paper(paper: str) -> PaperAudit:
                       parse_table().fresh - fresh)
 
 
-def _quietly(work: Callable[[str], T], paper: str) -> T:
-    """``work(paper)`` in a worker process, its progress silent (the parent
-    reports each paper as it comes back)."""
-    with progress.reporting(progress.Progress(False)):
+class _Relay(progress.Progress):
+    """A worker's progress, sent to the parent's queue as ("say" | "step", text)."""
+
+    def __init__(self, outbox) -> None:
+        super().__init__(outbox is not None)
+        self._outbox = outbox
+
+    def say(self, message: str) -> None:
+        if self.enabled:
+            self._outbox.put(("say", message))
+
+    def step(self, message: str) -> None:
+        if self.enabled:
+            self._outbox.put(("step", message))
+
+    def done(self) -> None:
+        """Nothing to clear: the parent owns the terminal."""
+
+
+def _relayed(work: Callable[[str], T], paper: str, outbox) -> T:
+    """``work(paper)`` in a worker process, its progress sent to ``outbox``
+    (silent when None)."""
+    with progress.reporting(_Relay(outbox)):
         return work(paper)
+
+
+def _drain(inbox, say: progress.Progress) -> None:
+    """Say what the workers have sent since the last call."""
+    while True:
+        try:
+            kind, message = inbox.get_nowait()
+        except (queue.Empty, OSError, EOFError):
+            return
+        (say.step if kind == "step" else say.say)(f"  {message}")
 
 
 def in_processes(work: Callable[[str], T], papers: list[str], processes: int,
@@ -83,12 +116,20 @@ def in_processes(work: Callable[[str], T], papers: list[str], processes: int,
     done : callable
         One progress line on a result.
     """
+    import multiprocessing
+
     say = progress.current()
-    with say.task(f"{what}: {len(papers)} papers in {processes} processes"):
-        with ProcessPoolExecutor(max_workers=processes) as pool:
-            futures = {pool.submit(_quietly, work, paper): paper for paper in papers}
-            results = {}
-            for future in as_completed(futures):
+    with say.task(f"{what}: {len(papers)} papers in {processes} processes"), \
+            multiprocessing.Manager() as manager, \
+            ProcessPoolExecutor(max_workers=processes) as pool:
+        inbox = manager.Queue() if say.enabled else None
+        futures = {pool.submit(_relayed, work, paper, inbox): paper for paper in papers}
+        results, pending = {}, set(futures)
+        while pending:
+            finished, pending = wait(pending, timeout=0.5, return_when=FIRST_COMPLETED)
+            if inbox is not None:
+                _drain(inbox, say)
+            for future in finished:
                 results[futures[future]] = future.result()
                 say.say(f"  {done(results[futures[future]])} ({len(results)} of "
                         f"{len(papers)})")

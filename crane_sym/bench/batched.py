@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from crane_sym import progress
 from crane_sym.bench.cases import BatchedBenchCase, batched_cases
 from crane_sym.scenes.reading import load_scene
 from crane_sym.sweep.grid import evaluate_block
@@ -83,8 +84,12 @@ def bench_batched(paper: str, case: BatchedBenchCase, seed: int = 28) -> dict[st
 
 
 def run_all() -> list[dict[str, Any]]:
-    """Every declared case."""
-    return [bench_batched(i, c) for i, c in batched_cases()]
+    """Every declared case, each said as it is measured."""
+    say, rows = progress.current(), []
+    for i, c in batched_cases():
+        with say.task(f"  batched {i} {c.output}"):
+            rows.append(bench_batched(i, c))
+    return rows
 
 
 def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:

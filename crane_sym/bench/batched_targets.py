@@ -34,6 +34,7 @@ from typing import Any
 
 import numpy as np
 
+from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
 from crane_sym.sweep.grid import chunks_for, evaluate_block, run_sweep
@@ -300,8 +301,15 @@ def run_targets(rows: list[dict[str, Any]], designs: int = 10**6) -> dict[str, A
         return {}
     paper, case = found[0]
     one = next(r for r in rows if r["paper"] == paper and r["output"] == case.output)
-    out: dict[str, Any] = {"one_block": one, "parallel": parallel_row(case),
-                           "worst": worst_row(case), "large": large_row(case, designs)}
+    say = progress.current()
+    out: dict[str, Any] = {"one_block": one}
+    with say.task("  blocks in parallel"):
+        out["parallel"] = parallel_row(case)
+    with say.task("  the worst design"):
+        out["worst"] = worst_row(case)
+    with say.task(f"  {designs:.0e} designs"):
+        out["large"] = large_row(case, designs)
     if case.run is not None:
-        out["ivp"] = ivp_rows(case, one["batched_seconds"], one["designs"])
+        with say.task("  against solve_ivp"):
+            out["ivp"] = ivp_rows(case, one["batched_seconds"], one["designs"])
     return out

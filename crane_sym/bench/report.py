@@ -163,19 +163,77 @@ def _family(method: str) -> str:
     return re.sub(r": [A-Za-z_]\w*(?=[;\]])", "", re.sub(r" (rtol|n)=\S+", "", method))
 
 
-#: Panels to a work-precision figure (one figure per group of functions), the
-#: page width in inches it is drawn at, and the type size (points).
-PANELS, WIDTH, TYPE = 2, 7.5, 9
+#: Panels to a work-precision figure, curves to a panel, the page width in
+#: inches it is drawn at, and the type size (points).
+PANELS, CURVES, WIDTH, TYPE = 3, 6, 7.5, 9
+
+
+def _system(family: str) -> str:
+    """The coordinate system and right-hand side of a method family (``[…]``)."""
+    return "[" + family.split(" [")[-1] if " [" in family else ""
+
+
+def _errors(rows: Sequence[BenchRow], name: str) -> list[tuple[str, float]]:
+    """The errors the curves of function ``name`` draw: (method, error over
+    the peak) of every alternative, in order."""
+    return sorted((r.method, r.max_error_over_peak) for r in rows
+                  if r.function == name and r.kind in ALTERNATIVES)
+
+
+def _same(a: list[tuple[str, float]], b: list[tuple[str, float]]) -> bool:
+    """True when two functions' curves have the same methods and errors, as a
+    log-log plot shows them: within 1 % of each other, or both at the
+    rounding floor (1e-13 of the peak), where a constant factor moves them."""
+    return len(a) == len(b) and all(
+        m == n and abs(x - y) <= 0.01 * max(abs(x), abs(y)) + 1e-13
+        for (m, x), (n, y) in zip(a, b))
+
+
+def panels(rows: Sequence[BenchRow]) -> list[tuple[str, str, list[str]]]:
+    """The work-precision panels of ``rows``: (title, the function whose rows
+    it draws, its method families), one panel per function and coordinate
+    system, at most ``CURVES`` families each. Functions with the same errors
+    by every method (a force that is a constant times the displacement the
+    same solve gives: its panels would differ only by the noise of the
+    timings) share their panels, titled with every name; the times drawn are
+    the first function's.
+
+    Parameters
+    ----------
+    rows : sequence of BenchRow
+        The rows of one paper's bench run.
+    """
+    names = [n for n in dict.fromkeys(r.function for r in rows)
+             if any(r.function == n and r.kind in ALTERNATIVES for r in rows)]
+    groups: list[list[str]] = []
+    for name in names:
+        mine = _errors(rows, name)
+        found = next((g for g in groups if _same(_errors(rows, g[0]), mine)), None)
+        if found is None:
+            groups.append([name])
+        else:
+            found.append(name)
+    out = []
+    for group in groups:
+        mine = sorted({_family(r.method) for r in rows
+                       if r.function == group[0] and r.kind in ALTERNATIVES})
+        for system in dict.fromkeys(_system(f) for f in mine):
+            chosen = [f for f in mine if _system(f) == system]
+            for part in chunks(chosen, CURVES):
+                title = ", ".join(group) + (f" (the same errors; times of {group[0]})"
+                                            if len(group) > 1 else "")
+                out.append((f"{title}\n{system}", group[0], part))
+    return out
 
 
 def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     """Work-precision plot: time per evaluation against error (max error over
-    the peak), log-log, one panel per function that has alternatives; one
-    colour per method, one line style per coordinate system and right-hand
-    side, the legend below the panels. Drawn at page width with 9-pt type, two
-    panels to a PNG: ``path``, or ``<stem>_1.png`` ... when there are more;
-    none when no function has an alternative (Vöth and Tyulenev's torque and
-    brake factors).
+    the peak), log-log, one panel per function with alternatives and
+    coordinate system (:func:`panels`: at most six curves, functions with the
+    same runs drawn once); one colour per method, the legend below the
+    panels. Drawn at page width with 9-pt type, three panels to a PNG:
+    ``path``, or ``<stem>_1.png`` ... when there are more; none when no
+    function has an alternative (Vöth and Tyulenev's torque and brake factors).
 
     Parameters
     ----------
@@ -188,56 +246,48 @@ def plot(rows: Sequence[BenchRow], path: Path, title: str) -> list[Path]:
     """
     from matplotlib import colormaps
 
-    names = [n for n in dict.fromkeys(r.function for r in rows)
-             if any(r.function == n and r.kind in ALTERNATIVES for r in rows)]
-    if not names:                        # no function has an alternative: no plot
+    found = panels(rows)
+    if not found:                        # no function has an alternative: no plot
         return []
-    families = sorted({_family(r.method) for r in rows if r.kind in ALTERNATIVES})
-    methods = sorted({f.split(" [")[0] for f in families})
-    systems = sorted({f.split(" [")[-1] for f in families})
+    methods = sorted({f.split(" [")[0] for _, _, fs in found for f in fs})
     colour = dict(zip(methods, cycle(colormaps["tab10"].colors)))
-    style = dict(zip(systems, cycle(("-", "--", ":", "-."))))
-    pages = chunks(names, PANELS)
+    pages = chunks(found, PANELS)
     paths = numbered(path, len(pages))
     for k, (page, target) in enumerate(zip(pages, paths), start=1):
         heading = title if len(pages) == 1 else f"{title}, {k} of {len(pages)}"
-        save(_figure(rows, page, families, colour, style, heading), target, dpi=120)
+        save(_figure(rows, page, colour, heading), target, dpi=120)
     return paths
 
 
-def _figure(rows: Sequence[BenchRow], names: Sequence[str], families: Sequence[str],
-            colour: dict, style: dict, title: str):
-    """One work-precision figure of the functions ``names``, one panel a row,
-    the legend (colours: methods; line styles: systems) below the panels."""
+def _figure(rows: Sequence[BenchRow], page: Sequence[tuple[str, str, list[str]]],
+            colour: dict, title: str):
+    """One work-precision figure of the panels ``page``, one a row, the legend
+    (colours: methods) below them."""
     from matplotlib.figure import Figure
     from matplotlib.lines import Line2D
 
-    entries = len(colour) + len(style) + 2
-    legend = 0.22 * -(-entries // 2) + 0.3          # inches below the panels
-    fig = Figure(figsize=(WIDTH, 3.0 * len(names) + legend + 0.5))
-    axes = fig.subplots(len(names), 1, squeeze=False).ravel()
-    for ax, name in zip(axes, names):
-        mine = [r for r in rows if r.function == name]
+    shown = sorted({f.split(" [")[0] for _, _, fs in page for f in fs})
+    legend = 0.22 * -(-(len(shown) + 2) // 2) + 0.3          # inches below the panels
+    fig = Figure(figsize=(WIDTH, 3.2 * len(page) + legend + 0.5))
+    axes = fig.subplots(len(page), 1, squeeze=False).ravel()
+    for ax, (name, function, families) in zip(axes, page):
+        mine = [r for r in rows if r.function == function]
         for key in families:
             rs = [r for r in mine if r.kind in ALTERNATIVES and _family(r.method) == key]
-            if rs:
-                method, system = key.split(" [")[0], key.split(" [")[-1]
-                ax.loglog([max(r.max_error_over_peak, 1e-17) for r in rs],
-                          [r.seconds / r.points for r in rs], marker="o", ms=3, lw=1,
-                          color=colour[method], linestyle=style[system])
+            ax.loglog([max(r.max_error_over_peak, 1e-17) for r in rs],
+                      [r.seconds / r.points for r in rs], marker="o", ms=3, lw=1,
+                      color=colour[key.split(" [")[0]])
         for kind, marker in ((GENERATED, "*"), (LAMBDIFY, "D")):
             for r in (r for r in mine if r.kind == kind):
                 ax.loglog([max(r.max_error_over_peak, 1e-17)], [r.seconds / r.points],
                           marker=marker, ms=12 if marker == "*" else 7, color="k",
                           mfc="k" if marker == "*" else "none", linestyle="none")
         ax.set_title(name, fontsize=TYPE + 1)
-        ax.set_xlabel("max error / peak |value|", fontsize=TYPE)
-        ax.set_ylabel("s per evaluation", fontsize=TYPE)
+        ax.set_xlabel("largest error over the peak |value|", fontsize=TYPE)
+        ax.set_ylabel("time per evaluation [s]", fontsize=TYPE)
         ax.tick_params(labelsize=TYPE)
         ax.grid(True, which="both", alpha=0.3)
-    handles = [Line2D([], [], color=c, lw=1.5, label=m) for m, c in colour.items()]
-    handles += [Line2D([], [], color="0.3", lw=1, linestyle=ls, label=f"[{s}" if not
-                       s.startswith("[") else s) for s, ls in style.items()]
+    handles = [Line2D([], [], color=colour[m], lw=1.5, label=m) for m in shown]
     handles += [Line2D([], [], marker="*", ms=11, color="k", linestyle="none",
                        label="generated closed form"),
                 Line2D([], [], marker="D", ms=6, color="k", mfc="none", linestyle="none",

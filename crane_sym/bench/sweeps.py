@@ -40,7 +40,7 @@ from typing import Any
 
 import numpy as np
 
-from crane_sym import registry
+from crane_sym import progress, registry
 from crane_sym.bench import batched, batched_targets
 from crane_sym.bench.cases import SweepBenchCase, sweep_cases
 from crane_sym.bench.odes import first_order, parameters
@@ -236,15 +236,28 @@ def _cluster(out: Path, n: int = 3000) -> dict[str, Any]:
 
 
 def bench_sweep() -> dict[str, Any]:
-    """The measurements (a)–(f); datasets in a temporary folder."""
+    """The measurements (a)–(f), each said on stderr as it starts and ends
+    (:mod:`crane_sym.progress`); datasets in a temporary folder."""
+    say = progress.current()
     with tempfile.TemporaryDirectory(prefix="crane_sym_bench_sweep_") as tmp:
-        rows = batched.run_all()
-        return {"matched_accuracy": [_matched(i, c) for i, c in sweep_cases()],
-                "parallel_efficiency": _efficiency(),
-                "large": _big(Path(tmp) / "big"),
-                "cluster": _cluster(Path(tmp)),
-                "batched": rows, "batched_targets": batched_targets.run_targets(rows),
-                "cores": os.cpu_count(), "load_average": os.getloadavg()[0]}
+        with say.task("(e) hybrid outputs batched against their per-design loop"):
+            rows = batched.run_all()
+        matched = []
+        for i, c in sweep_cases():
+            with say.task(f"(a) {i} {c.output}: 10^4 designs against integrating a sample"):
+                matched.append(_matched(i, c))
+        with say.task("(b) parallel efficiency, 1 and 2 workers"):
+            efficiency = _efficiency()
+        with say.task("(c) the command line on 10^8 designs"):
+            large = _big(Path(tmp) / "big")
+        with say.task("(d) a LocalCluster against the local scheduler"):
+            cluster = _cluster(Path(tmp))
+        with say.task("(f) the batched targets"):
+            targets = batched_targets.run_targets(rows)
+        return {"matched_accuracy": matched, "parallel_efficiency": efficiency,
+                "large": large, "cluster": cluster, "batched": rows,
+                "batched_targets": targets, "cores": os.cpu_count(),
+                "load_average": os.getloadavg()[0]}
 
 
 def _matched_row(a: dict[str, Any]) -> list[str]:

@@ -43,14 +43,17 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     if args.certify:
         from crane_sym.sweep.certify import prepare
         certify = prepare(chosen, args.certify_tol)   # refuses before anything is written
-    quiet = not progress.wanted(getattr(args, "quiet", False))
-    with _distributed_quiet(), sweep_stage(out) as stage:
-        result = run_sweep(chosen, stage, scheduler=args.scheduler, chunk_bytes=chunk_bytes,
-                           quiet=quiet)
-        plot(result, stage)
+    say = progress.Progress(progress.wanted(getattr(args, "quiet", False)))
+    with _distributed_quiet(), sweep_stage(out) as stage, progress.reporting(say):
+        with say.task(f"computing {chosen.points} designs"):   # Dask's bar inside
+            result = run_sweep(chosen, stage, scheduler=args.scheduler,
+                               chunk_bytes=chunk_bytes, quiet=not say.enabled)
+        with say.task("drawing the PNG"):
+            plot(result, stage)
         if certify is not None:
             from crane_sym.sweep.certify import certify_result
-            result.extra["certified"] = certify_result(certify, result, args.scheduler)
+            with say.task("certifying the worst case by intervals"):
+                result.extra["certified"] = certify_result(certify, result, args.scheduler)
     data = summary(result)
     if args.format == "json":
         print(json.dumps(data, indent=2, ensure_ascii=False))

@@ -60,6 +60,7 @@ class LinkPeak:
     unit: str
     static: float
     reference: float | None
+    positive: str | None = None       # what a positive load is: "tension", "compression"
 
     @property
     def factor(self) -> float | None:
@@ -93,7 +94,8 @@ class ComponentRun:
             static, reference = start_load(self.system, self.mode, self.x0, i)
             motion = self.system.assembly.bodies[link.part.first].motion
             out.append(LinkPeak(link.part.name, when, peak,
-                                "N*m" if motion == ROTATING else "N", static, reference))
+                                "N*m" if motion == ROTATING else "N", static, reference,
+                                link.part.positive))
         return out
 
     def hybrid_run(self, link: str) -> HybridRun:

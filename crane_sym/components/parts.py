@@ -246,6 +246,10 @@ class Drum(Component):
         return self.radius / self.reeving
 
 
+#: What a translating link's positive load may be declared to be, and its opposite.
+SENSES = {"tension": "compression", "compression": "tension"}
+
+
 @dataclass(frozen=True)
 class ElasticLink(Component):
     """A spring and a viscous damper between two bodies of one kind, with an
@@ -256,7 +260,10 @@ class ElasticLink(Component):
     −s < u < 0 (the link rests on its positive flank at u = 0: F = c·u + d·u̇
     for u ≥ 0, c·(u + s) + d·u̇ for u ≤ −s), ``"negative"`` at 0 < u < s. In the
     gap F = 0. ``reference``, a load, divides the peak into the dynamic factor
-    (default: the link's load at the start).
+    (default: the link's load at the start). ``positive`` (``"tension"`` or
+    ``"compression"``, a translating link only) says what a positive F is,
+    so that a report states the load in words: a rope listed from its upper
+    end down, with x downwards, is in tension when F > 0.
     """
 
     name: str
@@ -267,11 +274,12 @@ class ElasticLink(Component):
     backlash: Value
     contact: str = "positive"
     reference: Value | None = None
+    positive: str | None = None
     kind = "elastic link"
 
     def __init__(self, name: str, first: str, second: str, stiffness: Given,
                  damping: Given = 0.0, backlash: Given = 0.0, contact: str = "positive",
-                 reference: Given | None = None) -> None:
+                 reference: Given | None = None, positive: str | None = None) -> None:
         name = _name("elastic link", name)
         owner = f"elastic link {name!r}"
         c, d = value(owner, "stiffness", stiffness), value(owner, "damping", damping)
@@ -282,12 +290,15 @@ class ElasticLink(Component):
         if contact not in ("positive", "negative"):
             raise ComponentError(f"{owner}: contact must be 'positive' or 'negative', "
                                  f"got {contact!r}")
+        if positive not in (None, *SENSES):
+            raise ComponentError(f"{owner}: positive must be 'tension' or 'compression', "
+                                 f"got {positive!r}")
         ref = None if reference is None else value(owner, "reference", reference)
         if ref is not None and ref.si == 0:
             raise ComponentError(f"{owner}: reference must not be 0")
         for key, v in (("name", name), ("first", first), ("second", second),
                        ("stiffness", c), ("damping", d), ("backlash", s),
-                       ("contact", contact), ("reference", ref)):
+                       ("contact", contact), ("reference", ref), ("positive", positive)):
             object.__setattr__(self, key, v)
 
     @property

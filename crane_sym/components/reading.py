@@ -122,7 +122,7 @@ TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
     "gear": (("name", "input", "output", "ratio"), ()),
     "drum": (("name", "drum", "load", "radius"), ("reeving",)),
     "elastic": (("name", "between", "stiffness"), ("damping", "backlash", "contact",
-                                                    "reference")),
+                                                    "reference", "positive")),
     "brake": (("name", "body"), ("torque", "force", "delay", "build_up", "time")),
     "motor": (("name", "body"), ("torque", "force", "off_at")),
     "characteristic": (("name", "body", "speed", "slopes"), ("holds",)),
@@ -238,7 +238,7 @@ def _build(kind: str, entry: dict, where: str):
             raise ComponentError(f"{where}: between must be two body names, got {ends!r}")
         return ElasticLink(g["name"], ends[0], ends[1], g["stiffness"], g.get("damping", 0.0),
                            g.get("backlash", 0.0), g.get("contact", "positive"),
-                           g.get("reference"))
+                           g.get("reference"), g.get("positive"))
     if kind == "brake":
         return Brake(g["name"], g["body"], g[_load_key(entry, where)], g.get("delay", 0.0),
                      g.get("build_up", "step"), g.get("time", 0.0))

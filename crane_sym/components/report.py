@@ -18,7 +18,8 @@ from crane_sym.components.generate import module_name, render_component_module
 from crane_sym.components.model import ComponentRun
 from crane_sym.components.reading import ComponentFile, read_component_file
 from crane_sym.mechanics.phase_table import values
-from crane_sym.scenes.panels import Panel, format_quantity
+from crane_sym.components.parts import SENSES
+from crane_sym.scenes.panels import Panel, engineering, format_quantity
 from crane_sym.scenes.results import number
 
 __all__ = ["ComponentReport", "load_figures", "report_lines", "results", "run_component_file"]
@@ -36,15 +37,60 @@ class ComponentReport:
     files: list[Path]
 
 
+#: How the sign of a link's load reads, said once above the loads.
+SIGNS = ("signs: a link's load is c·u + d·u' with u = its second body's coordinate minus "
+         "its first's (the order of `between`), so it is positive when the second body is "
+         "ahead of the first; `positive = \"tension\"` (or \"compression\") on a "
+         "translating link states its load in words")
+
+
+def load_text(value: float, unit: str, positive: str | None, factor: float,
+              scaled: str) -> str:
+    """A link's load as an engineer reads it: in ``scaled`` units (``value`` /
+    ``factor``), as tension or compression when the link declares what its
+    positive load is, else signed.
+
+    Parameters
+    ----------
+    value : float
+        The load, SI.
+    unit : str
+        Its SI unit (for a value not scaled).
+    positive : str or None
+        What a positive load of the link is (``ElasticLink.positive``).
+    factor, scaled : float, str
+        From :func:`crane_sym.scenes.panels.engineering`.
+    """
+    if positive is None:
+        return format_quantity(value / factor, scaled)
+    word = positive if value >= 0 else SENSES[positive]
+    return f"{format_quantity(abs(value) / factor, scaled)} {word}" if value else \
+        format_quantity(0.0, scaled)
+
+
 def report_lines(run: ComponentRun) -> list[str]:
-    """The components dropped as not needed, peak loads (with time and dynamic
-    factor) and events, one per line."""
+    """The components dropped as not needed, a brake that engages the instant
+    a steady start begins (its friction is not in that steady motion), how
+    the loads' signs read, peak
+    loads (in kN or kN·m where they are that large, in words where a link
+    declares its ``positive``; with time and dynamic factor) and events, one
+    per line."""
     lines = [d.line() for d in run.model.dropped]
+    for t, event in run.schedule:          # a steady start: the brake comes after it
+        if t == 0 and event.endswith(" engages"):
+            brake = event.removesuffix(" engages")
+            lines.append(f"note: brake {brake!r} engages at t = 0, the instant the run "
+                         "starts from its steady motion, which is computed without it (a "
+                         "friction that acts throughout: start = \"rest\", or give the "
+                         "motion's resistance as a [[resistance]])")
+    if any(p.positive is None for p in run.peaks):
+        lines.append(SIGNS)
     for p in run.peaks:
         factor = "" if p.factor is None else f", dynamic factor {format_quantity(p.factor)}"
-        lines.append(f"peak load of {p.link}: {format_quantity(p.value, p.unit)} at "
-                     f"t = {format_quantity(p.time, 's')} (at the start "
-                     f"{format_quantity(p.static, p.unit)}{factor})")
+        scale = engineering(max(abs(p.value), abs(p.static)), p.unit)
+        lines.append(f"peak load of {p.link}: {load_text(p.value, p.unit, p.positive, *scale)}"
+                     f" at t = {format_quantity(p.time, 's')} (at the start "
+                     f"{load_text(p.static, p.unit, p.positive, *scale)}{factor})")
     for t, event in run.events:
         lines.append(f"event at t = {format_quantity(t, 's', 6)}: {event}")
     return lines
@@ -54,8 +100,11 @@ def results(report: ComponentReport) -> dict:
     """What ``crane-sym run FILE --format json`` prints: per elastic link
     ``<link>.peak`` (signed, as printed), ``<link>.peak_time``,
     ``<link>.start_load`` and ``<link>.factor`` (None without a reference),
-    each as ``{"value": number, "unit": text}``; the events with their times;
-    no warnings (a component run holds throughout); the files written.
+    each as ``{"value": number, "unit": text}`` (SI, signed as
+    ``sign_convention`` says); ``positive``, what a positive load is for each
+    link that declares it (``"tension"``, ``"compression"``); the events with
+    their times; no warnings (a component run holds throughout); the files
+    written.
 
     Parameters
     ----------
@@ -72,6 +121,8 @@ def results(report: ComponentReport) -> dict:
                                            else number(p.factor), "unit": "1"}})
     return {"scene": model.name, "title": model.title, "model": model.name,
             "results": found,
+            "sign_convention": SIGNS.removeprefix("signs: "),
+            "positive": {p.link: p.positive for p in report.run.peaks if p.positive},
             "events": [{"time": {"value": number(t), "unit": "s"}, "event": e}
                        for t, e in report.run.events],
             "warnings": [], "lines": list(report.lines),
@@ -83,7 +134,8 @@ def _json(run: ComponentRun, name: str) -> str:
         "model": name,
         "dropped": [{"component": d.part.label, "reason": d.reason} for d in run.model.dropped],
         "peaks": [{"link": p.link, "time_s": p.time, "value": p.value, "unit": p.unit,
-                   "static": p.static, "reference": p.reference, "dynamic_factor": p.factor}
+                   "static": p.static, "reference": p.reference, "dynamic_factor": p.factor,
+                   "positive": p.positive}
                   for p in run.peaks],
         "events": [{"time_s": float(t), "event": e} for t, e in run.events],
     }, indent=2)
@@ -91,7 +143,9 @@ def _json(run: ComponentRun, name: str) -> str:
 
 def load_figures(run: ComponentRun, title: str) -> list:
     """The figures (Matplotlib) of the loads of the run's elastic links, at most
-    four panels each.
+    four panels each; each axis says what it shows in words and units (a
+    link's tension where it declares its ``positive``, kN or kN·m where the
+    load is that large).
 
     Parameters
     ----------
@@ -102,10 +156,15 @@ def load_figures(run: ComponentRun, title: str) -> list:
     """
     from crane_sym.scenes.plots import figures
     times = np.linspace(0.0, run.t_end, POINTS)
-    panels = [Panel(f"load of the elastic link {p.link}", f"[{p.unit}]",
-                    [(p.link, times, values(run.result, times, run.system.link_load(i)))],
-                    group="elastic links")
-              for i, p in enumerate(run.peaks)]
+    panels = []
+    for i, p in enumerate(run.peaks):
+        factor, unit = engineering(max(abs(p.value), abs(p.static)), p.unit)
+        what = (p.positive if p.positive is not None else
+                "torque" if p.unit == "N*m" else "force")
+        panels.append(Panel(f"load of the elastic link {p.link}", f"{what} [{unit}]",
+                            [(p.link, times, values(run.result, times,
+                                                    run.system.link_load(i)) / factor)],
+                            group="elastic links", xlabel="time [s]"))
     return figures(panels, title) if panels else []
 
 

@@ -182,6 +182,10 @@ def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
                                  "drum between them)")
         if a.name == b.name:
             raise ComponentError(f"{part.label} joins {a.label} to itself")
+        if part.positive is not None and a.motion == ROTATING:
+            raise ComponentError(f"{part.label}: positive = {part.positive!r} is for a "
+                                 "translating link (a rope, a buffer); a shaft's torque "
+                                 "keeps its sign")
 
 
 def _connected(bodies: dict[str, Body], rigid: list, elastic: list) -> None:

@@ -25,6 +25,7 @@ from crane_sym.components.parts import ComponentError
 from crane_sym.components.quantities import derived_quantity, parameters, static_loads
 from crane_sym.components.reading import TABLES, ComponentFile, read_component_file
 from crane_sym.docs.numbers import math_errors
+from crane_sym.docs.rows import aligned_rows, column_blocks, sum_terms
 from crane_sym.docs.walkthrough import _display, _math_cell
 from crane_sym.latex import latex
 from crane_sym.markdown import fenced, markdown_table, markdown_text
@@ -62,6 +63,20 @@ def _tex(expr, model) -> str:
     return latex(expr, symbol_names=model.equations.latex_names)
 
 
+def _sum(lhs: str, expr, model, tail: str = "") -> str:
+    """``lhs = expr [tail]`` in aligned rows a page holds
+    (:func:`crane_sym.docs.rows.aligned_rows`)."""
+    return aligned_rows(lhs, sum_terms(expr, lambda t: _tex(t, model)), tail)
+
+
+def _symbol(p, model) -> str:
+    """A parameter's symbol: its handout name, or for a value that only switches
+    the model (a gap, a brake's delay: no symbol of the equations) its path upright."""
+    if p.symbol in model.equations.latex_names:
+        return _tex(p.symbol, model)
+    return "\\mathrm{" + p.path.replace("_", "\\_") + "}"
+
+
 def _connects(kind: str, entry: dict) -> str:
     if kind == "elastic":
         return " – ".join(entry.get("between", []))
@@ -88,7 +103,7 @@ def _components(read: ComponentFile) -> str:
 
 def _symbols(read: ComponentFile, run: ComponentRun) -> list[str]:
     solved = run.system.extra
-    rows = [[_math(_tex(p.symbol, read.model)), p.description, p.path,
+    rows = [[_math(_symbol(p, read.model)), p.description, p.path,
              f"{p.value:.6g}" if p.value == p.value else
              f"{float(solved[p.symbol]):.6g} (solved at the start)", p.unit]
             for p in parameters(read.model).values()]
@@ -136,11 +151,11 @@ def _energies(read: ComponentFile) -> list[str]:
            "backlash carries its contact $\\chi$ (1 on a flank, 0 in its gap) and the "
            "flank $\\delta$ it rests on; a motor's torque is multiplied by its switch "
            "$\\mathrm{on}$; a brake's friction $B$ is what the mode makes it.",
-           "**Kinetic energy**", _display(f"T = {_tex(eq.T, read.model)}"),
-           "**Potential energy**", _display(f"\\Pi = {_tex(eq.V, read.model)}"),
-           "**Dissipation**", _display(f"\\Phi = {_tex(eq.dissipation, read.model)}"),
+           "**Kinetic energy**", _display(_sum("T", eq.T, read.model)),
+           "**Potential energy**", _display(_sum("\\Pi", eq.V, read.model)),
+           "**Dissipation**", _display(_sum("\\Phi", eq.dissipation, read.model)),
            "**Generalised forces**"]
-    out += [_display(f"Q_{{{_tex(q, read.model)}}} = {_tex(eq.forces[q], read.model)}")
+    out += [_display(_sum(f"Q_{{{_tex(q, read.model)}}}", eq.forces[q], read.model))
             for q in eq.coordinates]
     return out
 
@@ -152,7 +167,8 @@ def _lagrange(read: ComponentFile) -> list[str]:
                     r"\frac{\partial T}{\partial q} + \frac{\partial \Phi}{\partial \dot q}"
                     r" + \frac{\partial \Pi}{\partial q} = Q,"),
            "give the equations of motion:"]
-    out += [_display(text) for text in eq.latex()]
+    out += [_display(_sum("", e.lhs, read.model, f"= {_tex(e.rhs, read.model)}"))
+            for e in eq.lagrange.equations]
     out.append("They are linear in the state once a mode fixes $\\chi$, $\\delta$, "
                "$\\mathrm{on}$ and $B$: $M \\ddot q + D \\dot q + K q = f$.")
     return out
@@ -191,12 +207,26 @@ def _number(x: float) -> str:
     return text
 
 
-def _matrix(rows) -> str:
-    body = " \\\\ ".join(" & ".join(_number(float(x)) for x in row) for row in rows)
-    return f"\\begin{{pmatrix}} {body} \\end{{pmatrix}}"
+def _matrices(A, b) -> list[str]:
+    """A and b as displays: A whole while it fits the page, else by blocks of
+    its columns (each said with the states it multiplies)."""
+    numbers = [[_number(float(x)) for x in row] for row in A]
+    blocks = column_blocks("A", numbers)
+    column = column_blocks("b", [[_number(float(x))] for x in b])[0][1]
+    if len(blocks) == 1:
+        return [_display(f"{blocks[0][1]}, \\quad {column}")]
+    out = [f"$A$ has {len(numbers[0])} columns, one for each entry of $x$; shown "
+           f"{blocks[0][0].stop} at most at a time:"]
+    for cols, tex in blocks:
+        out += [f"columns {cols.start + 1}–{cols.stop} (of $x_{{{cols.start + 1}}}$ to "
+                f"$x_{{{cols.stop}}}$):" if len(cols) > 1 else f"column {cols.start + 1}:",
+                _display(tex)]
+    return out + [_display(column)]
 
 
 def _state(system: ComponentSystem) -> str:
+    """The entries of the state x, numbered, each its own piece of math (a line
+    of the page may break between them)."""
     eq = system.equations
     names = []
     for q in eq.coordinates:
@@ -207,7 +237,7 @@ def _state(system: ComponentSystem) -> str:
     for law in system.clock.laws:        # w_j = τ^j of the law's current piece
         upright = "\\mathrm{" + law.name.replace("_", "\\_") + "}"
         names += [f"w_{{{upright},{j}}}" for j in range(1, law.degree + 1)]
-    return ", ".join(names)
+    return ", ".join(f"$x_{{{k}}} = {n}$" for k, n in enumerate(names, start=1))
 
 
 def _modes(run: ComponentRun) -> list[str]:
@@ -224,7 +254,7 @@ def _modes(run: ComponentRun) -> list[str]:
     out.append("What switches: " + ("; ".join(lines) if lines else "nothing (one mode)")
                + ". A group held by its brakes has $\\dot q = 0$ until its load exceeds "
                "what they hold; a sliding group feels their friction against its motion.")
-    out.append(f"The state is $x = ({_state(system)})$ (each group's coordinate and speed, "
+    out.append(f"The state is $x$: {_state(system)} (each group's coordinate and speed, "
                "then the build-up $0 \\le \\beta \\le 1$ of each brake that does not act at "
                "once, then for each law in time of degree $K$ the clock states "
                "$w_j = \\tau^j$, $j = 1 \\ldots K$, of the time $\\tau$ since its piece began: "
@@ -238,7 +268,7 @@ def _modes(run: ComponentRun) -> list[str]:
         seen.append(seg.mode)
         A, b = system.matrices(seg.mode)
         out.append(f"**Mode {len(seen)}:** {markdown_text(describe_mode(system, seg.mode))}.")
-        out.append(_display(f"A = {_matrix(A)}, \\quad b = {_matrix(b[:, None])}"))
+        out += _matrices(A, b)
         out.append(_frequencies(A))
     return out
 
@@ -321,7 +351,7 @@ def _static(run: ComponentRun) -> list[str]:
             continue
         number = float(expr.xreplace(values))
         out.append(f"**{name}** ({units[name]}):")
-        out.append(_display(f"F_{{st}} = {_tex(expr, run.model)} \\approx {_number(number)}"))
+        out.append(_display(_sum("F_{st}", expr, run.model, f"\\approx {_number(number)}")))
     return out
 
 

@@ -46,6 +46,8 @@ pre { background: #f4f4f4; padding: 0.5em; font-size: 0.82em; white-space: pre-w
       break-inside: avoid; }
 .display { margin: 0.5em 0 0.5em 1.5em; overflow-x: auto; break-inside: avoid; }
 math { font-size: 1.05em; }
+mtd[columnalign="left"] { text-align: left; }
+mtd[columnalign="right"] { text-align: right; }
 figure { margin: 1em 0; break-inside: avoid; text-align: center; }
 figure img { max-width: 100%; }
 figcaption { font-size: 0.9em; color: #333; }

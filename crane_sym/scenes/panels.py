@@ -19,8 +19,8 @@ from typing import Sequence
 
 import numpy as np
 
-__all__ = ["WARNING", "Panel", "SceneReport", "Span", "format_quantity", "outside",
-           "valid_mask"]
+__all__ = ["WARNING", "Panel", "SceneReport", "Span", "engineering", "format_quantity",
+           "outside", "valid_mask"]
 
 #: How a report line that states a crossed validity begins.
 WARNING = "warning:"
@@ -104,6 +104,35 @@ def format_quantity(value: float, unit: str = "", digits: int = 4) -> str:
     if "e" not in text:
         text = text.rstrip(".")
     return f"{text} {unit}".rstrip()
+
+
+#: The loads an engineer reads in kN or MN, with the unit they are given in (SI).
+_SCALED = {"N": "N", "N*m": "N·m"}
+
+
+def engineering(magnitude: float, unit: str) -> tuple[float, str]:
+    """(factor, unit) for a load of about ``magnitude`` in the SI ``unit``: a
+    force or torque of a thousand newtons or more in kN or kN·m (a million:
+    MN, MN·m), divided by the factor; another unit as it is (factor 1).
+
+    Parameters
+    ----------
+    magnitude : float
+        The size of the values to show (the largest |value|).
+    unit : str
+        Their SI unit as the toolkit writes it (``N``, ``N*m``).
+
+    >>> engineering(-152100.0, "N")
+    (1000.0, 'kN')
+    """
+    if unit not in _SCALED:
+        return 1.0, unit
+    size = abs(magnitude)
+    if size >= 1e6:
+        return 1e6, "M" + _SCALED[unit]
+    if size >= 1e3:
+        return 1e3, "k" + _SCALED[unit]
+    return 1.0, _SCALED[unit]
 
 
 def outside(start: float, end: float, before: str = "", after: str = "") -> list[Span]:

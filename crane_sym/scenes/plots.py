@@ -19,7 +19,7 @@ import numpy as np
 from crane_sym.escapes import mathtext_text
 from crane_sym.scenes.panels import Panel, valid_mask
 
-__all__ = ["MAX_PANELS", "chunks", "figures", "grey_invalid", "layout", "legend_outside",
+__all__ = ["MAX_PANELS", "chunks", "figures", "fitted", "grey_invalid", "layout", "legend_outside",
            "numbered", "save"]
 
 #: The most panels one figure holds.
@@ -131,9 +131,32 @@ def figures(panels: Sequence[Panel], title: str) -> list:
             single = single[named.end():]
         if single and single.lower() not in heading.lower():  # said once
             heading += "\n" + single
-        fig.suptitle(heading)
+        fig.suptitle(fitted(heading, fig.get_figwidth()))
         out.append(fig)
     return out
+
+
+def fitted(title: str, inches: float, points: float = 12.0) -> str:
+    """``title`` broken at spaces into lines that fit a figure ``inches`` wide
+    at ``points`` (a suptitle's size): a long title wraps instead of running
+    past both edges, where the PNG clips it. Mathtext (``$…$``) is not broken.
+
+    Parameters
+    ----------
+    title : str
+        The title; its own line breaks are kept.
+    inches : float
+        The figure's width.
+    points : float
+        The title's font size.
+    """
+    import textwrap
+    chars = max(20, int(0.92 * inches * 72 / (0.6 * points)))   # a sans glyph is ~0.6 em
+    keep = "\u00a0"                      # a space inside $…$, not a place to break
+    title = re.sub(r"\$[^$]*\$", lambda m: m.group(0).replace(" ", keep), title)
+    return "\n".join(textwrap.fill(line, chars, break_long_words=False,
+                                   break_on_hyphens=False).replace(keep, " ")
+                     for line in title.split("\n"))
 
 
 def grey_invalid(ax, panel: Panel) -> None:

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import sympy as sp
 
-from crane_sym import registry
+from crane_sym import progress, registry
 from crane_sym.codegen.module import render_module
 from crane_sym.derivation import Derivation, Output, SpecializedLoad, TabulatedOutput
 from crane_sym.mechanics.exact_phases import exact_table
@@ -129,8 +129,13 @@ def tabulated_runs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, H
 
 def tabulated_outputs(d: Derivation, scene: Scene) -> list[tuple[TabulatedOutput, PhaseTable]]:
     """The scene's tabulated responses, each solved with the scene's data
-    (:func:`tabulated_runs`) in mpmath."""
-    return [(out, exact_table(run)) for out, run in tabulated_runs(d, scene)]
+    (:func:`tabulated_runs`) in mpmath, each said as it starts (a run of many
+    phases takes seconds)."""
+    say, tables = progress.current(), []
+    for out, run in tabulated_runs(d, scene):
+        say.say(f"{scene.name}: solving {out.name} phase by phase in mpmath")
+        tables.append((out, exact_table(run)))
+    return tables
 
 
 def module_name(scene: Scene) -> str:

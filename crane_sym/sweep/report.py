@@ -27,6 +27,7 @@ import sympy as sp
 from crane_sym import registry
 from crane_sym.latex import latex
 from crane_sym.output_files import Stage
+from crane_sym.scenes.plots import fitted
 from crane_sym.sweep.dataset import capped_name, output_cap
 from crane_sym.sweep.grid import MAX_PLOT, SweepResult, plotted, strided
 from crane_sym.sweep.plan import SweepPlan
@@ -156,9 +157,13 @@ def names(plan: SweepPlan) -> dict[str, str]:
     variable: the paper's LaTeX name in mathtext (``LATEX_NAMES``, else
     SymPy's name of the symbol; an output by the symbol a step of the
     derivation defines as its expression, else in words; a component file's
-    fields and outputs by their names)."""
+    fields and outputs in words: ``stiffness of gearbox_mesh``)."""
     if any(o.kind == "component" for o in plan.outputs):
-        return {**{a.name: a.name for a in plan.axes}, **{o.name: o.name for o in plan.outputs}}
+        def words(name: str) -> str:            # COMPONENT.FIELD, LINK.peak
+            part, _, field = name.rpartition(".")
+            return f"{field.replace('_', ' ')} of {part}" if part else name
+        return {**{a.name: words(a.name) for a in plan.axes},
+                **{o.name: words(o.name) for o in plan.outputs}}
     d = registry.get(plan.derivation)
 
     def tex(symbol, fallback: str) -> str:
@@ -214,6 +219,9 @@ def figure(result: SweepResult):
     if plan.limit:
         limit = f"{tex[name]} {'≤' if plan.limit.op == '<=' else '≥'} " \
             f"{_quantity(plan.limit.value, plan.limit.unit)}"
+    summary = next(o.summary for o in plan.outputs if o.name == name)
+    shows = fitted(f"{label[name]}{over}: {summary}" if summary else label[name] + over, 5.2,
+                   10.0)                          # what the values are, in words
     fig = Figure(figsize=(7.5, 5.2), layout="constrained")
     ax = fig.add_subplot()
     marker = dict(marker="*", color="red", markersize=14, markeredgecolor="black",
@@ -226,15 +234,15 @@ def figure(result: SweepResult):
         if plan.limit:
             ax.axhline(plan.limit.value, color="C3", linestyle="--", label=f"limit: {limit}")
         ax.set_xlabel(label[axes[0].name])
-        ax.set_ylabel(label[name] + over)
+        ax.set_ylabel(shows)
         if axes[0].log:
             ax.set_xscale("log")
     else:
         x, y = coords
         mesh = ax.pcolormesh(x, y, values.T, shading="nearest", cmap="viridis")
-        fig.colorbar(mesh, ax=ax, label=label[name] + over + (
+        fig.colorbar(mesh, ax=ax, label=fitted(shows.replace("\n", " ") + (
             " (worst over " + ", ".join(tex[a.name] for a in axes[2:]) + ")"
-            if len(axes) > 2 else ""))
+            if len(axes) > 2 else ""), 5.2, 10.0))
         if plan.limit and values.min() < plan.limit.value < values.max():
             ax.contour(x, y, values.T, levels=[plan.limit.value], colors="white",
                        linewidths=2)

@@ -40,15 +40,15 @@ def rhs(d: Derivation, label: str) -> sp.Expr:
 
 def equations_of_motion(d: Derivation):
     """(1)–(6): Lagrange's equations, the stretch equation, general solution."""
-    T_, V_, dA = sp.symbols("T_kin Pi delta_A")
+    T_, V_, dA = sp.Symbol("T_kin"), sp.Symbol("Pi"), sp.Symbol(r"\delta A")
     energy = m1 * x1.diff(t) ** 2 / 2 + m2 * x2.diff(t) ** 2 / 2
     strain = C * (x1 - x2) ** 2 / 2
     forces = {x1: P, x2: -Q}
     d.add("kinetic energy", sp.Eq(T_, energy), "Sum of ½·m·v² of drive and load.",
           "Lagrange's equations need the energies of the model.", "Energies and forces")
     d.add("potential energy", sp.Eq(V_, strain), "Strain energy ½·C·x² of the rope.")
-    d.add("virtual work", sp.Eq(dA, P * sp.Symbol(r"\delta x1")
-                                - Q * sp.Symbol(r"\delta x2")),
+    d.add("virtual work", sp.Eq(dA, P * sp.Symbol(r"\delta x_{1}")
+                                - Q * sp.Symbol(r"\delta x_{2}")),
           "P(t) drives m1 up, Q(t) holds m2 down.",
           "The generalized forces are the coefficients of the virtual displacements.")
     eq1, eq2 = lagrange_equations(energy, strain, [x1, x2], t, forces).equations

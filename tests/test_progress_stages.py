@@ -1,0 +1,59 @@
+"""Long commands say what they are doing within seconds: the papers audited or
+printed in worker processes relay their stages and steps to the parent, which
+says them while it waits; a sweep says each stage (computing, drawing,
+certifying). Progress goes to stderr only, stdout stays the result."""
+from __future__ import annotations
+
+import io
+import re
+import sys
+import time
+from pathlib import Path
+
+from crane_sym import progress
+from crane_sym.audit.papers import in_processes
+from crane_sym.cli.main import main
+
+FIG9 = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml"
+
+
+def _slow_paper(paper: str) -> str:
+    """A worker's work: two stages, the second a step, a pause between them
+    (what a long paper does), said through ``progress.current()``."""
+    say = progress.current()
+    with say.task(f"building {paper}"):
+        say.step(f"{paper}: step (1) done")
+        time.sleep(0.3)
+    return paper.upper()
+
+
+def test_the_workers_stages_reach_the_parent():
+    stream = io.StringIO()
+    with progress.reporting(progress.Progress(True, stream)):
+        out = in_processes(_slow_paper, ["a", "b"], 2, "working",
+                           lambda r: f"done {r}")
+    assert out == ["A", "B"]                                   # in the papers' order
+    said = stream.getvalue()
+    for paper in "ab":
+        assert f"  building {paper} ..." in said and f"  {paper}: step (1) done" in said
+        assert said.index(f"  building {paper} ...") < said.index(f"done {paper.upper()}")
+        assert re.search(rf"  building {paper}: \d+\.\d s", said)
+
+
+def test_silent_workers_say_nothing():
+    stream = io.StringIO()
+    with progress.reporting(progress.Progress(False, stream)):
+        assert in_processes(_slow_paper, ["a", "b"], 2, "working", str) == ["A", "B"]
+    assert stream.getvalue() == ""
+
+
+def test_a_sweep_says_its_stages(tmp_path, capsys, monkeypatch):
+    monkeypatch.setattr(sys.stderr, "isatty", lambda: True)
+    assert main(["sweep", str(FIG9), "--vary", "gearbox_mesh.stiffness=2e4:8e4:3",
+                 "--output", "gearbox_mesh.peak", "--out", str(tmp_path / "out"),
+                 "--format", "json"]) == 0
+    captured = capsys.readouterr()
+    for stage in ("computing 3 designs ...", "drawing the PNG ..."):
+        assert stage in captured.err
+    assert captured.out.lstrip().startswith("{")               # stdout: the JSON only
+
