@@ -20,7 +20,7 @@ from crane_sym.audit.checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome, diff
 from crane_sym.derivation import Derivation
 from crane_sym.audit.fits import fit_of
 from crane_sym.latex import latex
-from crane_sym.audit.machine_read import MachineRead, machine_read
+from crane_sym.audit.machine_read import DIFFERS, MachineRead, machine_read
 from crane_sym.published import (ASSUMPTION, CHOSEN, DEFINITION, INTERNAL, READINGS,
                                  RECONSTRUCTED, Cause, Convention, PublishedFormula)
 from crane_sym.audit.sampling import physical_definitions
@@ -34,8 +34,10 @@ DISCREPANCY = "discrepancy"
 DIMENSION_ERROR = "dimension_error"
 NOT_CHECKABLE = "not_checkable"
 REMARK = "remark"
+#: The print read by machine differs from the transcription checked, unexplained.
+NOT_THE_PRINT = "not_the_print"
 VERDICTS = (CONFIRMED, CONFIRMED_WITH_CONVENTION, RESTATED, CONSISTENT, DISCREPANCY,
-            DIMENSION_ERROR, NOT_CHECKABLE, REMARK)
+            DIMENSION_ERROR, NOT_CHECKABLE, REMARK, NOT_THE_PRINT)
 #: Verdicts that hold nothing to report: no cause.
 AGREEMENTS = (CONFIRMED, RESTATED)
 #: Verdicts that count as confirmations (never a ``definition`` record, never a
@@ -363,10 +365,38 @@ def _check_key(f: PublishedFormula) -> tuple | None:
     return (f.target, sp.srepr(f.printed), f.kind, f.rejected_target)
 
 
+#: The cause of a record whose transcription is not what is printed.
+NOT_THE_PRINT_CAUSE = Cause(
+    "transcription-not-the-print", "the transcription checked is not the print: read by "
+    "machine, the printed LaTeX differs from the transcription, and no labelled "
+    "reconstruction or named reading explains the difference")
+
+
+def tied_to_print(r: AuditRecord) -> AuditRecord:
+    """``r`` unless its print, read by machine, differs from its transcription
+    without a labelled reconstruction or a named reading to explain it: then a
+    ``not_the_print`` finding, whatever the transcription's own check gave (a
+    verdict rests on the print; the check of the transcription is kept in the
+    detail and the attempts).
+
+    Parameters
+    ----------
+    r : AuditRecord
+        A record with its ``machine_read``.
+    """
+    read = r.machine_read
+    if read is None or read.status != DIFFERS or read.explained_by:
+        return r
+    return replace(r, verdict=NOT_THE_PRINT, method="machine reading",
+                   cause=NOT_THE_PRINT_CAUSE,
+                   detail=f"the transcription checked is not the print ({read.detail}); "
+                          f"on the transcription the audit gave {r.verdict}: {r.detail}")
+
+
 def audit(d: Derivation) -> list[AuditRecord]:
     """Verdicts on every published formula of ``d``, in the paper's order, each with
-    its print read by machine against the transcription (``machine_read``); a
-    record that repeats an earlier one's check (the same number printed twice, 8.9
+    its print read by machine against the transcription (``machine_read``) and
+    tied to it (``tied_to_print``); a record that repeats an earlier one's check (the same number printed twice, 8.9
     and 890 %) names that record in ``duplicate_of`` and is counted once.
 
     Parameters
@@ -377,7 +407,7 @@ def audit(d: Derivation) -> list[AuditRecord]:
     records, seen = [], {}
     for f in d.published:
         progress.current().step(f"{d.id}: checking printed formula {f.label}")
-        r = replace(audit_formula(d, f), machine_read=machine_read(d, f))
+        r = tied_to_print(replace(audit_formula(d, f), machine_read=machine_read(d, f)))
         key = _check_key(f)
         if key is not None and key in seen:
             r = replace(r, duplicate_of=seen[key])
@@ -388,7 +418,8 @@ def audit(d: Derivation) -> list[AuditRecord]:
 
 
 __all__ = ["AGREEMENTS", "CONFIRMATIONS", "CONFIRMED", "CONFIRMED_WITH_CONVENTION",
-           "CONSISTENT", "DIMENSION_ERROR", "DISCREPANCY", "NOT_CHECKABLE", "ON_MODEL",
+           "CONSISTENT", "DIMENSION_ERROR", "DISCREPANCY", "NOT_CHECKABLE", "NOT_THE_PRINT",
+           "NOT_THE_PRINT_CAUSE", "ON_MODEL",
            "ON_PAPER", "ON_READING", "ON_RECONSTRUCTION", "REMARK", "RESTATED", "RESTS_ON",
            "UNEXPLAINED", "VERDICTS", "Attempt", "AuditRecord", "Convention",
-           "audit", "audit_formula"]
+           "audit", "audit_formula", "tied_to_print"]

@@ -20,6 +20,7 @@ from crane_sym.published import (CHOSEN, DEFINITION, FITTED_VALUE, INTERNAL, REC
 
 from .model import (BF_BB, BF_SB, LF, MF, PAPER, J, M_BB, M_L, M_M, M_SB, M_rel, M_rel_max,
                     M_st, N, alpha, d_omega, d_t, i_g, phi5)
+from .printed_items import TABLE1_CELLS, table1_label
 
 #: The one reading of Table 1 every record of this paper uses.
 TABLE1_COUNTING = PaperReading(
@@ -35,6 +36,8 @@ BF33 = Cause("001-bf-3.3", "the second brake factor BF_SB = 3.3 after (5) follow
 CASE44 = Cause("001-4.4-case", "the 4.4 'in some cases' is not (4) at the text's "
                "BF_SB = 3.3 (4.10 with Table 1's MF); only the reading of Table 1 this paper "
                "rejects reproduces it, as (5) with 130 kN·m on each drum (BF_SB = 3.42)")
+TABLE1_INPUTS = Cause("001-table1-inputs", "Table 1's cells other than the hoist speed are "
+                      "the reference hoist's data: inputs of every check, not results")
 BRAKING_TIME = Cause("001-unstated-braking-time", "(6)–(7) need the braking time Δt, which "
                      "the paper never states; fitted to the eight percentages of Figs 11–12 "
                      "it lies in [0.999, 1.005] s, and Δt = 1 s reproduces all of them")
@@ -159,6 +162,12 @@ PUBLISHED = [
             cause=CASE44, paper_reading=TABLE1_COUNTING,
             rejected_target="(5) at Table 1, per drum"),
 ]
+PUBLISHED += [_printed(
+    table1_label(name), cell, None, f"Table 1's cell {name}, as the OCR prints it",
+    not_checkable="an input: Table 1 gives the reference hoist's data, which the model "
+    "takes as given and nothing in the paper derives", basis=INTERNAL,
+    basis_note="the table's inputs, nothing derived", cause=TABLE1_INPUTS, verbatim=True)
+    for name, cell in TABLE1_CELLS.items() if name != "v"]
 PUBLISHED.append(_number(
     "Fig. 9 peak 8.9", "8,9", "Fig. 9 peak, hook only", "the text: 'M_rel,max = 8,9 (Fig. 9)' "
     "while lowering the hook ('спуск грузозахватного механизма'), and '890 %' in the "
