@@ -94,12 +94,17 @@ class PaperReading:
         Why: the printed numbers that decide between the readings.
     rejected : str
         The other reading, e.g. "values of each train (counted twice)".
+    fixed_by : tuple of str
+        Labels of the records whose prints are that evidence. Such a record
+        matches under the reading it chose and fails under the other, so it is
+        ``consistent`` with the reading, never a confirmation of it.
     """
 
     subject: str
     reading: str
     evidence: str
     rejected: str
+    fixed_by: tuple[str, ...] = ()
 
     @property
     def text(self) -> str:

@@ -78,8 +78,8 @@ def summary(records: Sequence[AuditRecord]) -> str:
              f"counted once): {sum(on.values())} confirmations ("
              + ", ".join(f"{n} {k}" for k, n in on.items()) + "; "
              f"{c['confirmed_with_convention']} records under a named reading), "
-             f"{c[CONSISTENT]} consistent with a reconstruction only through chosen "
-             f"parameters (not counted as confirmations), "
+             f"{c[CONSISTENT]} consistent (with a reconstruction only through chosen "
+             f"parameters, or under one of two readings; not counted as confirmations), "
              f"{c['restated']} restated definitions (not counted as confirmations), "
              f"{len(found)} findings from {len(causes)} causes"]
     for verdict in VERDICTS:

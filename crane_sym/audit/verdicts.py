@@ -244,17 +244,34 @@ def _convention_note(d: Derivation, f: PublishedFormula, conv: Convention) -> st
     return f"{conv.note} ({fit_of(d, conv.fit, f).text(f.label)})"
 
 
+#: The slips a band must tell from the print to be evidence: a factor 2 either way
+#: and a decimal point shifted either way.
+SLIPS = ((2.0, "twice"), (0.5, "half"), (10.0, "ten times"), (0.1, "a tenth"))
+
+
+def _undiscriminated(value: float, inside) -> list[str]:
+    """The slips of ``value`` that would still lie inside the band (``inside``)."""
+    return [f"{name} it ({factor * value:.4g})" for factor, name in SLIPS
+            if inside(factor * value)]
+
+
 def _band(d: Derivation, f: PublishedFormula, literal: Attempt,
           how: str) -> tuple[str, Attempt, str]:
     """A result of chosen parameters against the band they span: ``consistent``
-    inside it, ``discrepancy`` outside; the band's half-width is the tolerance."""
+    inside it, ``discrepancy`` outside; the band's half-width is the tolerance.
+    A band is evidence only if it discriminates: when a print off by a factor 2
+    or by a shifted decimal point would lie inside it too, the verdict is
+    ``not_checkable`` (the band is stated, and says which slips it holds)."""
     sens = d.step(f.target).sensitivity
     if sens is None or f.printed is None or not f.printed.rhs.is_number:
         raise ValueError(f"{d.id} {f.label}: a result of chosen parameters is a printed "
                          f"number whose derived step ({f.target}) carries a sensitivity")
     value, (low, high) = float(f.printed.rhs), sens.band
     slack = f.tolerance
-    inside = low - slack * abs(low) <= value <= high + slack * abs(high)
+
+    def holds(x: float) -> bool:
+        return low - slack * abs(low) <= x <= high + slack * abs(high)
+    inside = holds(value)
     check = CheckOutcome(
         "numeric", PASS if inside else FAIL,
         f"the printed {value:g} is {'inside' if inside else 'outside'} the band "
@@ -265,6 +282,11 @@ def _band(d: Derivation, f: PublishedFormula, literal: Attempt,
                       f"{low:.4g} \\ldots {high:.4g}", "", (check,))
     detail = (f"{how}: {literal.summary} at the chosen parameters; {check.detail}. "
               f"Sensitivity: {sens.text()}.")
+    slips = _undiscriminated(value, holds)
+    if slips:
+        return NOT_CHECKABLE, attempt, (
+            f"the band does not discriminate: a print of {', '.join(slips)} would lie "
+            f"inside it too, so it is no evidence either way. {detail}")
     return (CONSISTENT if inside else DISCREPANCY), attempt, detail
 
 
@@ -301,10 +323,21 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
         else "the print as printed", f.printed, f.target)
     if f.kind == CHOSEN:
         verdict, band, detail = _band(d, f, literal, how)
-        return record(verdict, "numeric", detail, (literal, band))
+        return record(verdict, "numeric" if verdict != NOT_CHECKABLE else "none", detail,
+                      (literal, band))
     on = f" (on the paper's reading: {f.paper_reading.text})" if f.paper_reading else ""
     if literal.matches:
         verdict = RESTATED if f.basis == DEFINITION else CONFIRMED
+        if verdict == CONFIRMED and _evidence_of_its_reading(f):
+            other, _, _ = _attempt(d, f, REJECTED, f.paper_reading.rejected, f.printed,
+                                   f.rejected_target)
+            if not other.matches:
+                return record(CONSISTENT, comp.method, f"{how}, {literal.summary}{on}; "
+                              f"{dim.detail}. Under the other reading ("
+                              f"{f.paper_reading.rejected}): {other.summary}. A match "
+                              "under one of two readings, the one this print is evidence "
+                              "for, is consistent with it, not a confirmation",
+                              (literal, other))
         return record(verdict, comp.method, f"{how}, {literal.summary}{on}; "
                       f"{dim.detail}", (literal,))
     attempts = [literal]
@@ -343,6 +376,13 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
     return record(NOT_CHECKABLE, "none",
                   "neither check could decide: "
                   + "; ".join(c.detail for c in literal.checks), tuple(attempts))
+
+
+def _evidence_of_its_reading(f: PublishedFormula) -> bool:
+    """``f`` is among the prints that fix its paper's reading, and the other
+    reading can be tried on it."""
+    return bool(f.paper_reading and f.rejected_target
+                and f.label in f.paper_reading.fixed_by)
 
 
 def _why_not(comp: _Comparison, dim: CheckOutcome) -> str:
