@@ -32,7 +32,7 @@ from crane_sym.audit.latex_parse import (Parsed, Unreadable, bound_variables, ca
 from crane_sym.audit.parse_table import render
 from crane_sym.audit.print_names import (BOUND_SYMBOL, cached_vocabulary, calls_pass, map_symbols,
                                          names_pass)
-from crane_sym.published import PublishedFormula
+from crane_sym.published import FITTED_VALUE, PublishedFormula
 
 __all__ = ["AGREES", "DIFFERS", "FORMULA", "NOTHING", "NUMBER", "UNREADABLE", "MachineRead",
            "machine_read", "parse_table_text", "subject", "table_entries"]
@@ -257,6 +257,8 @@ def _explained(d: Derivation, f: PublishedFormula, parsed: list) -> str:
     """What explains a difference: the record's reconstruction, or a reading it names
     that one of the parsed relations is; "" when nothing does (a defect)."""
     for c in f.conventions:
+        if c.kind == FITTED_VALUE:     # changes what is compared, not how the print reads
+            continue
         if any(_same(rel, c.reading, d) for rel in parsed):
             return f"the parse is the record's {c.kind} reading: {c.note}"
     if f.reconstructed:
