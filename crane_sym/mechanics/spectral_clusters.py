@@ -162,17 +162,7 @@ def resolution(left: np.ndarray, right: np.ndarray, norm: float, eps: float) -> 
 
 
 def numpy_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
-    """The terms (j, λ, C) of exp(M t) = Σ t^j e^{λt} C in doubles, from M
-    balanced by a diagonal of powers of 2 (exact: stiffness ratios of 1e8 make
-    ‖M‖ large beside its slow modes, and every rounding scales with ‖M‖)."""
-    from scipy.linalg import matrix_balance
-
-    B, T = matrix_balance(M, permute=False)
-    d = np.diag(T)
-    return [(j, lam, C * d[:, None] / d[None, :]) for j, lam, C in _balanced_terms(B)]
-
-
-def _balanced_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
+    """The terms (j, λ, C) of exp(M t) = Σ t^j e^{λt} C in doubles."""
     from scipy.linalg import eig
 
     algebra = _np_algebra()
