@@ -299,7 +299,7 @@ class PhaseLimitError(RuntimeError):
     """A run past its phase limit: the limit, the instant reached and the end."""
 
     def __init__(self, limit: int, t: float, t_end: float, last: str) -> None:
-        super().__init__(f"more than {limit} phases by t = {t:.6g} s of {t_end:g} s "
+        super().__init__(f"more than {limit} phases (events) by t = {t:.6g} s of {t_end:g} s "
                          f"(the phase limit; the last event {last!r})")
         self.limit, self.t, self.t_end, self.last = limit, t, t_end, last
 
