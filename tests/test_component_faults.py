@@ -78,6 +78,10 @@ ROWS = {
     "20 backlash links": Fault(TRAVEL, "[run]", _tables("backlash", 20, "drive") + "[run]",
                                r"component model 'travel_braking_000': 20 elastic links with "
                                r"backlash, at most 8"),
+    "25 elastic links": Fault(TRAVEL, "[run]", "".join(
+        f'[[elastic]]\nname = "p{i}"\nbetween = ["bridge", "drive"]\nstiffness = "1e5 N/m"\n\n'
+        for i in range(24)) + "[run]",
+        r"component model 'travel_braking_000': 25 elastic links, at most 24"),
     "50 ramp brakes": Fault(FIG9, "[run]", _tables("brake", 50, "drum") + "[run]",
                             r"component model 'hoist_fig9': 52 brakes, at most 8"),
     "200 geared inertias": Fault(FIG9, "[run]", _tables("geared", 200, "drum") + "[run]",
