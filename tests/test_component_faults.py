@@ -15,7 +15,7 @@ EXAMPLES = Path(__file__).parents[1] / "examples" / "drive_trains"
 TRAVEL, HOIST = "travel_braking_000.toml", "hoist_rope_stretch.toml"
 FIG9 = "hoist_fig9.toml"
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
-PERIODS = r"run: duration {} s spans {} periods of the fastest mode \({} s\), at most 10000; "
+PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
 
 def _tables(kind: str, n: int, body: str) -> str:

@@ -366,12 +366,17 @@ ESTIMATE = (r"estimate: [0-9.e+]+ designs x 1 output\(s\) on \d+ worker\(s\): ab
 
 def test_a_million_designs_of_a_component_file_are_estimated_and_refused(tmp_path, capsys):
     """10^6 designs of the Fig. 9 hoist (each a run of its own) under the
-    default --time-limit: the estimate first, then one line, nothing written."""
+    default --time-limit: the estimate first, then one line, nothing written;
+    with --quiet, the one line alone."""
     out = tmp_path / "out"
-    assert main(["sweep", str(FIG9), "--vary", "gearbox_mesh.stiffness=1e4:1e5:1000:log",
-                 "--vary", "safety_brakes.torque=100:160:1000", "--output", "gearbox_mesh.peak",
-                 "--out", str(out), "--quiet"]) == 2
+    argv = ["sweep", str(FIG9), "--vary", "gearbox_mesh.stiffness=1e4:1e5:1000:log",
+            "--vary", "safety_brakes.torque=100:160:1000", "--output", "gearbox_mesh.peak",
+            "--out", str(out)]
+    assert main([*argv, "--quiet"]) == 2
+    alone = capsys.readouterr().err.splitlines()
+    assert main(argv) == 2
     estimate, error = capsys.readouterr().err.splitlines()
+    assert len(alone) == 1 and alone[0].startswith("crane-sym: error: --time-limit 900: ")
     assert re.fullmatch(ESTIMATE.replace("[0-9.e+]+ designs", "1e\\+06 designs"), estimate)
     assert re.fullmatch(r"crane-sym: error: --time-limit 900: the sweep of 1e\+06 designs would "
                         r"take about [0-9.e+]+ s \(a timed pilot of \d+ designs\); give fewer "
@@ -380,8 +385,7 @@ def test_a_million_designs_of_a_component_file_are_estimated_and_refused(tmp_pat
 
 
 def test_a_sweep_prints_its_estimate_before_it_starts(tmp_path, capsys):
-    base = ["sweep", SCENE, "--vary", "m1=1:100:20", "--output", "peak_elastic_force",
-            "--quiet"]
+    base = ["sweep", SCENE, "--vary", "m1=1:100:20", "--output", "peak_elastic_force"]
     assert main([*base, "--out", str(tmp_path / "slow"), "--time-limit", "1e-9"]) == 2
     err = capsys.readouterr().err.splitlines()
     assert re.fullmatch(ESTIMATE, err[0]) and err[1].startswith("crane-sym: error: "

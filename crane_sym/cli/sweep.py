@@ -49,7 +49,8 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         raise SweepError(f"--time-limit {args.time_limit:g}: must be > 0 s")
     from crane_sym.sweep.estimate import check_estimate, estimate
     cost = estimate(chosen, chunk_bytes)
-    print(cost.line(), file=sys.stderr, flush=True)
+    if not getattr(args, "quiet", False):     # a refusal names the estimate anyway
+        print(cost.line(), file=sys.stderr, flush=True)
     check_estimate(cost, args.time_limit)
     certify = None
     if args.certify:
