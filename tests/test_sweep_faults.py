@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -300,6 +301,8 @@ BAD = [
     (["--chunk-mib", "1e9"], "--chunk-mib 1e+09", "free memory"),
     (["--at", "t=1e999"], "--at", "finite"),
     (["--vary", "P_t=5:1e300:3 GN"], "--vary", "finite in SI"),
+    (["--time-limit", "0"], "--time-limit 0", "must be > 0 s"),
+    (["--time-limit", "nan"], "--time-limit nan", "must be > 0 s"),
 ]
 
 
@@ -353,3 +356,42 @@ def test_grid_size_is_checked_against_memory_and_blocks_before_any_work(monkeypa
     with pytest.raises(ValueError, match=r"^--chunk-mib 0.1: the grid of 1e\+10 designs "
                                          r"makes .* blocks, more than the 100000"):
         check_grid(many, None, int(0.1 * 2**20))
+
+
+FIG9 = Path(__file__).parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml"
+ESTIMATE = (r"estimate: [0-9.e+]+ designs x 1 output\(s\) on \d+ worker\(s\): about [0-9.e+-]+ s "
+            r"and [0-9.e+-]+ MiB \(a timed pilot of \d+ designs: [0-9.e+-]+ s a design, "
+            r"[0-9.e+-]+ s to start\)")
+
+
+def test_a_million_designs_of_a_component_file_are_estimated_and_refused(tmp_path, capsys):
+    """10^6 designs of the Fig. 9 hoist (each a run of its own) under the
+    default --time-limit: the estimate first, then one line, nothing written;
+    with --quiet, the one line alone."""
+    out = tmp_path / "out"
+    argv = ["sweep", str(FIG9), "--vary", "gearbox_mesh.stiffness=1e4:1e5:1000:log",
+            "--vary", "safety_brakes.torque=100:160:1000", "--output", "gearbox_mesh.peak",
+            "--out", str(out)]
+    assert main([*argv, "--quiet"]) == 2
+    alone = capsys.readouterr().err.splitlines()
+    # other pilot values: a block once solved is cached in this process
+    assert main([a.replace("160:1000", "161:1000") for a in argv]) == 2
+    estimate, error = capsys.readouterr().err.splitlines()
+    assert len(alone) == 1 and alone[0].startswith("crane-sym: error: --time-limit 900: ")
+    assert re.fullmatch(ESTIMATE.replace("[0-9.e+]+ designs", "1e\\+06 designs"), estimate)
+    assert re.fullmatch(r"crane-sym: error: --time-limit 900: the sweep of 1e\+06 designs would "
+                        r"take about [0-9.e+]+ s \(a timed pilot of \d+ designs\); give fewer "
+                        r"designs or a larger limit", error)
+    assert not out.exists()
+
+
+def test_a_sweep_prints_its_estimate_before_it_starts(tmp_path, capsys):
+    base = ["sweep", SCENE, "--vary", "m1=1:100:20", "--output", "peak_elastic_force"]
+    assert main([*base, "--out", str(tmp_path / "slow"), "--time-limit", "1e-9"]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert re.fullmatch(ESTIMATE, err[0]) and err[1].startswith("crane-sym: error: "
+                                                                "--time-limit 1e-09: ")
+    assert not (tmp_path / "slow").exists()
+    assert main([*base, "--out", str(tmp_path / "fine")]) == 0
+    assert re.fullmatch(ESTIMATE, capsys.readouterr().err.splitlines()[0])
+    assert (tmp_path / "fine" / f"{SCENE}_sweep.zarr").is_dir()

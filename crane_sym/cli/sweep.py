@@ -10,11 +10,16 @@ from __future__ import annotations
 import argparse
 import json
 import logging
+import sys
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator
 
 from crane_sym import output_files, progress
+
+#: ``--time-limit``'s default, seconds (crane_sym.sweep.estimate.DEFAULT_TIME_LIMIT: the
+#: command line does not import the sweep's machinery at start-up).
+DEFAULT_TIME_LIMIT = 900.0
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
@@ -25,6 +30,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     # imported on use: see the module docstring
     from crane_sym.scenes.reading import load_scene
     from crane_sym.sweep.grid import check_grid, run_sweep
+    from crane_sym.sweep.plan import SweepError
     from crane_sym.sweep.report import plot, summary, text_lines
     from crane_sym.sweep.spec import parse_chunk_mib, plan
     from crane_sym.sweep.store import sweep_stage
@@ -39,6 +45,13 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         chosen = plan(load_scene(args.scene), args.vary, args.output, args.at or [],
                       args.limit)
     check_grid(chosen, out, chunk_bytes)
+    if not args.time_limit > 0:
+        raise SweepError(f"--time-limit {args.time_limit:g}: must be > 0 s")
+    from crane_sym.sweep.estimate import check_estimate, estimate
+    cost = estimate(chosen, chunk_bytes)
+    if not getattr(args, "quiet", False):     # a refusal names the estimate anyway
+        print(cost.line(), file=sys.stderr, flush=True)
+    check_estimate(cost, args.time_limit)
     certify = None
     if args.certify:
         from crane_sym.sweep.certify import prepare
@@ -93,6 +106,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    "is maximised (sampled)")
     p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
                    help="count the designs within it, draw its contour")
+    p.add_argument("--time-limit", type=float, default=DEFAULT_TIME_LIMIT, metavar="SECONDS",
+                   help="refuse a sweep whose estimate (a timed pilot block, printed before "
+                   f"the sweep starts) passes it (default {DEFAULT_TIME_LIMIT:g} s)")
     p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG "
                    "(both replaced together, or neither)")
     p.add_argument("--format", choices=("table", "json"), default="table")

@@ -45,6 +45,7 @@ from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, Compone
 from crane_sym.components.pruning import Scope
 from crane_sym.components.reading import NUMBERS, TABLES, _build, read_component_file
 from crane_sym.mechanics.phase_table import HybridRun
+from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
 __all__ = ["OUTPUTS", "Designs", "Field", "Templates", "designs", "evaluate_block",
            "structure"]
@@ -286,7 +287,7 @@ class Designs:
         result = largest_of_runs(runs, magnitude=True)
         if result.capped.any():
             k = int(np.flatnonzero(result.capped)[0])
-            raise RuntimeError(f"{output}: more than 10000 events in the run of design {k} "
+            raise RuntimeError(f"{output}: more than {MAX_PHASES} phases in the run of design {k} "
                                "of a block")
         peak = np.abs(result.value)
         return (peak if kind == "peak" else peak / reference).reshape(shape)

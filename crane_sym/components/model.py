@@ -38,12 +38,13 @@ from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, HELD, ComponentSystem, Mode
 from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
+from crane_sym.components.model_limits import MAX_PHASES, check_cycles
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
                                         value)
 from crane_sym.components.pruning import Dropped, Scope, needed
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, largest
-from crane_sym.mechanics.piecewise_linear import PiecewiseResult, simulate
+from crane_sym.mechanics.piecewise_linear import PhaseLimitError, PiecewiseResult, simulate
 
 __all__ = ["ComponentRun", "LinkPeak", "Model", "start_load"]
 
@@ -159,12 +160,15 @@ class Model:
         ``rest``) needs: the components that cannot act over it dropped before
         the derivation (:func:`~crane_sym.components.pruning.needed`), named in
         ``scope.dropped``; a longer run, or a steady start where one at rest was
-        assumed, is refused."""
+        assumed, is refused, and so is a run of more periods than
+        :data:`~crane_sym.components.model_limits.MAX_CYCLES`, before the
+        derivation."""
         from sympy.physics.units import time
         t_end = value("run", "duration", duration, time).si
         if not t_end > 0:
             raise ComponentError(f"run: duration must be > 0, got {duration!r}")
         kept, scope = needed(components, t_end, rest)
+        check_cycles(assemble(kept), t_end)
         return cls(kept, name, title, scope)
 
     @property
@@ -375,6 +379,7 @@ class Model:
                 f"run: the model was built for a run of {scope.duration:g} s"
                 f"{' from rest' if scope.rest else ''} without {scope.dropped[0].part.label}"
                 f" ({scope.dropped[0].reason}); build it for this run (Model.for_run)")
+        check_cycles(self.assembly, t_end)
         mode, x0, extra = self.start(start_body, start_speed, rest)
         system = ComponentSystem(self.equations, extra)
         names = [l.part.name for l in system.assembly.links]
@@ -397,8 +402,14 @@ class Model:
             rest: bool = False) -> ComponentRun:
         """The run from the state of :meth:`start` (steady, or at ``rest``) over
         ``duration``, phases in closed form
-        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`)."""
+        (:func:`~crane_sym.mechanics.piecewise_linear.simulate`); a run past
+        :data:`~crane_sym.mechanics.piecewise_linear.MAX_PHASES` phases is a
+        ComponentError naming the instant it reached."""
         run = self.hybrid_run(duration, None, start_body, start_speed, rest)
-        result = simulate(run.system, run.mode, run.x0, run.t_end, run.schedule, exact=exact)
+        try:
+            result = simulate(run.system, run.mode, run.x0, run.t_end, run.schedule, exact=exact,
+                              max_events=MAX_PHASES)
+        except PhaseLimitError as exc:
+            raise ComponentError(f"run: {exc}") from None
         return ComponentRun(self, run.system, run.mode, run.x0, run.t_end,
                             tuple(run.schedule), result)

@@ -107,6 +107,7 @@ from typing import Any
 from crane_sym.components.formulas import read_formulas
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.model import Model
+from crane_sym.components.model_limits import check_counts
 from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
 from crane_sym.scenes.fields import toml_reason
@@ -331,6 +332,7 @@ def read_parts(path: str | Path) -> ComponentParts:
             if missing:
                 raise ComponentError(f"{where}: lacks {', '.join(map(repr, missing))}")
             parts.append(_build(kind, entry, where))
+    check_counts(parts, where_file)
     run = data.get("run", {})
     if not isinstance(run, dict):
         raise ComponentError(f"{where_file}: [run] must be a table")

@@ -38,8 +38,8 @@ import sympy as sp
 from crane_sym.mechanics.closed_forms import ClosedForm, exact_is_cheap, jordan, jordan_blocks
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.spectral_clusters import Algebra, cluster_terms, group
-from crane_sym.mechanics.piecewise_linear import (Guard, HybridSystem, sign_change, signal,
-                                                  use_precise_forms)
+from crane_sym.mechanics.piecewise_linear import (MAX_PHASES, Guard, HybridSystem, PhaseLimitError,
+                                                  sign_change, signal, use_precise_forms)
 
 __all__ = ["DPS", "ExactForm", "ExactRun", "ExactSegment", "crossing", "exact_form",
            "exact_table", "illinois", "simulate_exact", "tabulate_exact"]
@@ -346,14 +346,14 @@ class ExactRun:
 
 def simulate_exact(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: float,
                    schedule: Sequence[tuple[float, str]] = (), *, h_min: float = 1e-10,
-                   max_events: int = 10_000, dps: int = DPS) -> ExactRun:
+                   max_events: int = MAX_PHASES, dps: int = DPS) -> ExactRun:
     """:func:`crane_sym.mechanics.piecewise_linear.simulate` with every phase, event time,
     state and switching decision in mpmath at ``dps`` digits (the search for
     the events steps in double, see :func:`crossing`)."""
     with mpmath.workdps(dps):
         z = tuple(mpmath.mpf(float(v)) for v in x0)
         pending = sorted((float(s), name) for s, name in schedule if 0 <= s < t_end)
-        t, segments = mpmath.mpf(0), []
+        t, segments, event = mpmath.mpf(0), [], "start"
         for _ in range(max_events):
             form = exact_form(*system.matrices(mode))
             horizon = mpmath.mpf(pending[0][0] if pending else t_end) - t
@@ -372,7 +372,7 @@ def simulate_exact(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_
             x[:] = form.state(end, z)
             mode, x = system.switch(mode, event, t, x)
             z = tuple(mpmath.mpf(v) for v in x)
-    raise RuntimeError(f"more than {max_events} events before t = {t_end}")
+    raise PhaseLimitError(max_events, float(t), t_end, event)
 
 
 def tabulate_exact(run: ExactRun, output: Callable[[Hashable], tuple[np.ndarray, float]],

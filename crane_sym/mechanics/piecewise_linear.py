@@ -41,7 +41,8 @@ from scipy.optimize import brentq
 
 from crane_sym.mechanics.closed_forms import ClosedForm, closed_form
 
-__all__ = ["ClosedForm", "Guard", "HybridSystem", "PiecewiseResult", "Segment", "by_phase",
+__all__ = ["ClosedForm", "Guard", "HybridSystem", "MAX_PHASES", "PhaseLimitError", "PiecewiseResult",
+           "Segment", "by_phase",
            "closed_form", "exact_zeros", "first_crossing", "sign_change", "signal", "simulate"]
 
 
@@ -325,9 +326,24 @@ def by_phase(starts: Sequence[float], times: np.ndarray) -> Iterator[tuple[int, 
             yield i, mask
 
 
+#: The most phases a run may take (a chattering contact, a brake that sticks
+#: and slips at every step, would otherwise never end): past it the run stops
+#: with :class:`PhaseLimitError`.
+MAX_PHASES = 10_000
+
+
+class PhaseLimitError(RuntimeError):
+    """A run past its phase limit: the limit, the instant reached and the end."""
+
+    def __init__(self, limit: int, t: float, t_end: float, last: str) -> None:
+        super().__init__(f"more than {limit} phases (events) by t = {t:.6g} s of {t_end:g} s "
+                         f"(the phase limit; the last event {last!r})")
+        self.limit, self.t, self.t_end, self.last = limit, t, t_end, last
+
+
 def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: float,
              schedule: Sequence[tuple[float, str]] = (), *, h_min: float = 1e-10,
-             max_events: int = 10_000, exact: bool | None = None) -> PiecewiseResult:
+             max_events: int = MAX_PHASES, exact: bool | None = None) -> PiecewiseResult:
     """Run ``system`` from ``mode`` and ``x0`` at t = 0 to ``t_end``.
 
     ``schedule`` lists (time, name) events known in advance (a brake that
@@ -353,13 +369,13 @@ def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: f
     h_min : float, optional
         Shortest step of the event search.
     max_events : int, optional
-        The run fails beyond this many phases.
+        The run fails beyond this many phases (:class:`PhaseLimitError`).
     exact : bool, optional
         The closed forms' route (None: the system's choice).
     """
     x = np.asarray(x0, dtype=float)
     pending = sorted((float(t), name) for t, name in schedule if 0 <= t < t_end)
-    result, t = PiecewiseResult(), 0.0
+    result, t, event = PiecewiseResult(), 0.0, "start"
     for _ in range(max_events):
         A, b = system.matrices(mode)
         form = closed_form(A, b, exact)
@@ -377,5 +393,5 @@ def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: f
         if pending and event == pending[0][1] and end == horizon:
             pending.pop(0)
         mode, x = system.switch(mode, event, t, x_end)
-    raise RuntimeError(f"more than {max_events} events before t = {t_end}")
+    raise PhaseLimitError(max_events, t, t_end, event)
 

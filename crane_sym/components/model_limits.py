@@ -1,0 +1,132 @@
+"""The bounds on a model's size and on its run, checked before it is solved.
+
+A component file is read from anyone: twenty links with backlash, fifty
+brakes, two hundred bodies or a run of 10⁵ s would each keep the solver busy
+for hours, with no word of why. Each bound is a named constant, chosen from
+what a run takes on a shared two-core machine (the shipped chain of 21
+damped masses in 55 s; the Fig. 9 hoist with eight more ramp brakes in six,
+sixteen in 25; the 000 example over 8470 periods in 48), stated in the
+README and named in the one-line error:
+
+============================  ===================  ===================================
+what                          bound                why
+============================  ===================  ===================================
+bodies (inertias, masses)     :data:`MAX_BODIES`    the derivation and the eigenproblem
+elastic links                 :data:`MAX_LINKS`     each is a stiffness of the eigenproblem
+links with backlash (gaps)    :data:`MAX_GAPS`      each triples the contact modes
+brakes                        :data:`MAX_BRAKES`    each adds a state and stick/slip modes
+the run's cycles              :data:`MAX_CYCLES`    each crest of a link's load is searched
+phases of a run               ``MAX_PHASES``        a chattering contact never ends
+============================  ===================  ===================================
+
+The run's cycles are its duration over the longest period of the model with
+every link in contact and every body free (:func:`frequencies`): a
+stiffness of 1e20 N/m on the two masses of paper 000 and a run of 10⁵ s are
+the same fault, too many oscillations to follow one by one. The slowest mode,
+not the fastest: a stiff link the run barely excites (a stiffness ratio of
+1e8 under a slow speed law) is solved in seconds, its terms below the peak
+search's tie; a fast mode that is excited over many slow periods is not
+bounded here, only by the phase limit. The phase limit is the solver's
+(:data:`crane_sym.mechanics.piecewise_linear.MAX_PHASES`).
+"""
+from __future__ import annotations
+
+import math
+from typing import Sequence
+
+import numpy as np
+import scipy.linalg
+
+from crane_sym.components.parts import Component, ComponentError
+from crane_sym.components.topology import Assembly
+from crane_sym.mechanics.piecewise_linear import MAX_PHASES
+
+__all__ = ["MAX_BODIES", "MAX_BRAKES", "MAX_CYCLES", "MAX_GAPS", "MAX_LINKS", "MAX_PHASES",
+           "check_counts", "check_cycles", "frequencies"]
+
+#: The most bodies (inertias and masses) a model may declare.
+MAX_BODIES = 24
+#: The most elastic links.
+MAX_LINKS = 24
+#: The most elastic links with backlash (each a gap with three contacts).
+MAX_GAPS = 8
+#: The most brakes.
+MAX_BRAKES = 8
+#: The most oscillations of the fastest mode a run may span.
+MAX_CYCLES = 10_000
+
+#: What each count covers: (kinds of component, its bound, how a message names it).
+_COUNTS = ((("inertia", "mass"), MAX_BODIES, "bodies (inertias and masses)"),
+           (("elastic link",), MAX_LINKS, "elastic links"),
+           (("brake",), MAX_BRAKES, "brakes"))
+
+
+def check_counts(parts: Sequence[Component], where: str) -> None:
+    """Refuse a model with more bodies, links, gaps or brakes than its bounds
+    allow, in one line naming the count and the bound (ComponentError).
+
+    Parameters
+    ----------
+    parts : sequence of Component
+        The components as read, before the model is assembled.
+    where : str
+        How the message names the model (``component model 'x'``).
+    """
+    for kinds, bound, what in _COUNTS:
+        n = sum(p.kind in kinds for p in parts)
+        if n > bound:
+            raise ComponentError(f"{where}: {n} {what}, at most {bound}")
+    gaps = sum(p.kind == "elastic link" and p.backlash.si != 0 for p in parts)
+    if gaps > MAX_GAPS:
+        raise ComponentError(f"{where}: {gaps} elastic links with backlash, at most {MAX_GAPS}")
+
+
+def frequencies(assembly: Assembly) -> np.ndarray:
+    """The natural frequencies (rad/s) with every link in contact and every
+    group free: the finite, nonzero roots of det(K − ω² M) = 0, K from the
+    links (c b bᵀ, b the twist's factors κ on the groups at its ends) and M the
+    groups' inertias (a group without inertia adds no finite frequency).
+
+    Parameters
+    ----------
+    assembly : Assembly
+        The assembled model.
+    """
+    n = len(assembly.groups)
+    K, M = np.zeros((n, n)), np.diag([g.inertia for g in assembly.groups])
+    for link in assembly.links:
+        b = np.zeros(n)
+        (ga, ka), (gb, kb) = (assembly.place[e][:2] for e in link.part.ends)
+        b[ga] -= ka
+        b[gb] += kb
+        K += link.stiffness * np.outer(b, b)
+    if not assembly.links:
+        return np.zeros(0)
+    with np.errstate(all="ignore"):
+        squares = scipy.linalg.eigvals(K, M).real
+    squares = squares[np.isfinite(squares)]
+    if squares.size == 0:
+        return np.zeros(0)
+    return np.sqrt(squares[squares > 1e-12 * squares.max()])
+
+
+def check_cycles(assembly: Assembly, duration: float) -> None:
+    """Refuse a run of more than :data:`MAX_CYCLES` periods of the slowest
+    mode (:func:`frequencies`), in one line naming the duration, the period
+    and the bound (ComponentError).
+
+    Parameters
+    ----------
+    assembly : Assembly
+        The assembled model.
+    duration : float
+        The run's end, s.
+    """
+    omega = frequencies(assembly)
+    if omega.size == 0:
+        return
+    cycles = duration * omega.min() / (2 * math.pi)
+    if cycles > MAX_CYCLES:
+        raise ComponentError(f"run: duration {duration:g} s spans {cycles:.3g} periods of the "
+                             f"slowest mode ({2 * math.pi / omega.min():.3g} s), at most "
+                             f"{MAX_CYCLES}; shorten the run or soften the stiffest link")

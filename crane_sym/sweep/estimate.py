@@ -1,0 +1,119 @@
+"""What a sweep will cost, from a timed pilot, before it starts.
+
+A grid of 10⁶ designs of a component file is one command line away, and each
+design is a run of its own: the sweep must say what it will take, and refuse
+beyond ``--time-limit``, before any block is computed. The estimate is
+measured, not modelled: every output is evaluated on a small pilot block of
+the grid (:data:`PILOT_DESIGNS` designs, strided along the axes) by the same
+function the sweep's blocks run, once to warm up (a component file derives
+its template, a paper's module is imported) and once timed; the time per
+design, times the designs, over the workers that will share them, plus the
+warm-up each worker pays once, is the time printed. Memory: the results held
+(8 bytes a design and output; a simulated output's blocks are kept for the
+summary, the PNG and the store) and one block of values per worker.
+"""
+from __future__ import annotations
+
+import math
+import os
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from crane_sym.sweep.grid import CHUNK_BYTES, evaluate_block
+from crane_sym.sweep.plan import SweepError, SweepPlan
+
+__all__ = ["PILOT_DESIGNS", "Estimate", "check_estimate", "estimate"]
+
+#: Designs in the timed pilot block (a closed form: 64 times as many).
+PILOT_DESIGNS = 16
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """A sweep's estimated cost: ``seconds`` on ``workers``, ``bytes`` of
+    memory, from a pilot of ``pilot`` designs per output timed at
+    ``per_design`` seconds each (after a warm-up of ``warmup`` seconds)."""
+
+    designs: int
+    outputs: int
+    workers: int
+    seconds: float
+    bytes: int
+    pilot: int
+    per_design: float
+    warmup: float
+
+    def line(self) -> str:
+        """The estimate as the command prints it before the sweep starts."""
+        return (f"estimate: {self.designs:.3g} designs x {self.outputs} output(s) on "
+                f"{self.workers} worker(s): about {self.seconds:.3g} s and "
+                f"{self.bytes / 2**20:.3g} MiB (a timed pilot of {self.pilot} designs: "
+                f"{self.per_design:.3g} s a design, {self.warmup:.3g} s to start)")
+
+
+def _pilot_blocks(plan: SweepPlan, designs: int) -> list[np.ndarray]:
+    """A block of at most ``designs`` designs, strided along each axis (SI)."""
+    per_axis = max(1, int(designs ** (1 / len(plan.axes))))
+    blocks = []
+    for a in plan.axes:
+        values = a.si()
+        take = min(per_axis, len(values))
+        blocks.append(values[np.linspace(0, len(values) - 1, take).round().astype(int)])
+    return blocks
+
+
+def estimate(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES) -> Estimate:
+    """The sweep's time and memory from a timed pilot block (module docstring).
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    chunk_bytes : int, optional
+        Size of a block of a closed form (``--chunk-mib``).
+    """
+    kinds = {o.kind for o in plan.outputs}
+    workers = 1 if kinds == {"component"} else (os.cpu_count() or 1)
+    size = PILOT_DESIGNS * (64 if kinds == {"closed"} else 1)
+    blocks = _pilot_blocks(plan, size)
+    pilot = math.prod(len(b) for b in blocks)
+    names = tuple(a.name for a in plan.axes)
+    warmup = per_design = 0.0
+    for o in plan.outputs:
+        run = lambda bs: evaluate_block(plan.derivation, o.name, o.kind, o.args,  # noqa: E731
+                                        names, dict(plan.fixed), dict(plan.options), *bs)
+        start = time.perf_counter()
+        run([b[:1] for b in blocks])
+        warmup += time.perf_counter() - start
+        start = time.perf_counter()
+        run(blocks)
+        per_design += (time.perf_counter() - start) / pilot
+    n = plan.points
+    seconds = warmup + per_design * n / workers
+    held = 8 * n * len(plan.outputs) * (2 if kinds != {"closed"} else 1)
+    return Estimate(n, len(plan.outputs), workers, seconds, held + workers * chunk_bytes,
+                    pilot, per_design, warmup)
+
+
+def check_estimate(found: Estimate, time_limit: float) -> None:
+    """SweepError naming ``--time-limit`` when the estimate passes it, and
+    naming the memory when it passes what is free; nothing is computed.
+
+    Parameters
+    ----------
+    found : Estimate
+        From :func:`estimate`.
+    time_limit : float
+        ``--time-limit``, seconds.
+    """
+    if found.seconds > time_limit:
+        raise SweepError(f"--time-limit {time_limit:g}: the sweep of {found.designs:.3g} designs "
+                         f"would take about {found.seconds:.3g} s (a timed pilot of "
+                         f"{found.pilot} designs); give fewer designs or a larger limit")
+    import psutil
+    free = psutil.virtual_memory().available
+    if found.bytes > free:
+        raise SweepError(f"the sweep of {found.designs:.3g} designs would hold about "
+                         f"{found.bytes / 2**30:.3g} GiB, only {free / 2**30:.3g} GiB are free")
