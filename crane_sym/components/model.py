@@ -44,7 +44,8 @@ from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, Compone
 from crane_sym.components.pruning import Dropped, Scope, needed
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, largest
-from crane_sym.mechanics.piecewise_linear import PhaseLimitError, PiecewiseResult, simulate
+from crane_sym.mechanics.piecewise_linear import (PhaseFormError, PhaseLimitError, PiecewiseResult,
+                                                  simulate)
 
 __all__ = ["ComponentRun", "LinkPeak", "Model", "start_load"]
 
@@ -409,7 +410,7 @@ class Model:
         try:
             result = simulate(run.system, run.mode, run.x0, run.t_end, run.schedule, exact=exact,
                               max_events=MAX_PHASES)
-        except PhaseLimitError as exc:
+        except (PhaseLimitError, PhaseFormError) as exc:
             raise ComponentError(f"run: {exc}") from None
         return ComponentRun(self, run.system, run.mode, run.x0, run.t_end,
                             tuple(run.schedule), result)

@@ -176,25 +176,30 @@ def _errors(M: mpmath.matrix, left: mpmath.matrix, right: mpmath.matrix) -> list
     return out
 
 
-def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
+def _form_eig(a_key: tuple, b_key: tuple, resolve: bool = False) -> ExactForm | None:
     """The terms from the spectral clusters of M
     (:mod:`crane_sym.mechanics.spectral_clusters`), their projectors from
     mpmath's left and right eigenvectors, at twice the working digits where
     eigenvalues cluster (a defective pair's eigenvectors lose half the digits
     they are computed with); None where even those are not enough (the exact
-    route then)."""
+    route then). With ``resolve`` a small eigenvalue its rounding bound resolves
+    is a mode, not the kernel's (the precise fallback of a double phase: a slow
+    mode beside one 1e7 times faster); without, every eigenvalue below
+    KERNEL of the scale is the kernel's (a double's rounding in A leaves a rigid
+    mode's zeros at ±3e-7i, exactly as the doubles say)."""
     algebra = _mp_algebra()
     M = _augmented(a_key, b_key)
     size = M.rows
     digits = mpmath.mp.dps
     lam, left, right = mpmath.eig(M, left=True, right=True)
     scale = max(max(abs(v) for v in lam), 1)
-    kernel, clusters = group(list(lam), float(scale), errors=_errors(M, left, right))
+    errors = _errors(M, left, right) if resolve else None
+    kernel, clusters = group(list(lam), float(scale), errors=errors)
     if any(len(c) > 1 for c in clusters):      # their vectors at twice the digits
         digits = 2 * mpmath.mp.dps
         with mpmath.workdps(digits):
             lam, left, right = mpmath.eig(M, left=True, right=True)
-            errors = _errors(M, left, right)
+            errors = _errors(M, left, right) if resolve else None
         kernel, clusters = group(list(lam), float(scale), errors=errors)
     terms, projector = [], mpmath.zeros(size, size)
     for cluster in clusters:
@@ -230,19 +235,21 @@ def _form_eig(a_key: tuple, b_key: tuple) -> ExactForm | None:
 
 
 @lru_cache(maxsize=256)
-def _exact_form_cached(a_key: tuple, b_key: tuple, dps: int) -> ExactForm:
+def _exact_form_cached(a_key: tuple, b_key: tuple, dps: int,
+                       resolve: bool = False) -> ExactForm:
     with mpmath.workdps(dps):
         if exact_is_cheap(a_key, b_key):            # as the double run takes it
             return _form_jordan(a_key, b_key)
-        return _form_eig(a_key, b_key) or _form_jordan(a_key, b_key)
+        return _form_eig(a_key, b_key, resolve) or _form_jordan(a_key, b_key)
 
 
 def _precise(A: np.ndarray, b: np.ndarray) -> ClosedForm:
     """exp(Mt) at :data:`DPS` digits rounded to double: what a double run
     takes where its own form does not solve its equations (time scales 1e7
     apart)."""
-    with mpmath.workdps(DPS):
-        return exact_form(A, b).double
+    A = np.asarray(A, dtype=float)
+    return _exact_form_cached(tuple(map(float, A.ravel())), tuple(map(float, np.ravel(b))),
+                              DPS, True).double
 
 
 use_precise_forms(_precise)
@@ -301,9 +308,13 @@ def crossing(form: ExactForm, z0: Sequence[mpmath.mpf], guard: Guard,
     double, each sign it acts on is the double's where the double is farther
     from 0 than its rounding bound and mpmath's elsewhere, and the step where
     the sign changes is refined in mpmath (:func:`illinois`)."""
-    amps_mp = form.amplitudes(z0, [mpmath.mpf(w) for w in guard.weights])
+    weights = [mpmath.mpf(w) for w in guard.weights]
+    amps_mp = form.amplitudes(z0, weights)
     k_mp = mpmath.mpf(guard.constant)
     size = mpmath.fsum(abs(a) for a in amps_mp) + abs(k_mp)
+    parts = mpmath.fsum(abs(w * x) for v in form.vectors(z0) for w, x in zip(weights, v))
+    if size <= mpmath.mpf(10) ** (10 - mpmath.mp.dps) * parts:
+        return None            # g ≡ 0 to the working digits: the state rides the surface
     amps, k = np.array([float(a) for a in amps_mp]), float(k_mp)
     double = form.double
     g_double, slope = signal(double, amps, k)

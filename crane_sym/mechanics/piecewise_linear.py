@@ -41,9 +41,9 @@ from scipy.optimize import brentq
 
 from crane_sym.mechanics.closed_forms import ClosedForm, closed_form
 
-__all__ = ["ClosedForm", "Guard", "HybridSystem", "MAX_PHASES", "PhaseLimitError", "PiecewiseResult",
-           "Segment", "by_phase",
-           "closed_form", "exact_zeros", "first_crossing", "sign_change", "signal", "simulate"]
+__all__ = ["ClosedForm", "Guard", "HybridSystem", "MAX_PHASES", "PhaseFormError",
+           "PhaseLimitError", "PiecewiseResult", "Segment", "by_phase", "closed_form",
+           "exact_zeros", "first_crossing", "sign_change", "signal", "simulate"]
 
 
 #: Largest relative residual of a phase's closed form at the phase's end
@@ -64,10 +64,14 @@ def precise_form(A: np.ndarray, b: np.ndarray, length: float, x0: np.ndarray) ->
     by name where none is registered or it does not either."""
     form = _PRECISE[0](A, b) if _PRECISE else None
     if form is None or form.residual(length, x0, A, b) > RESIDUAL:
-        raise RuntimeError(f"a phase of {length:g} s: its closed form does not solve its"
-                           f" equations to {RESIDUAL:g} (time scales too far apart for"
-                           " double precision)")
+        raise PhaseFormError(f"a phase of {length:g} s: its closed form does not solve its"
+                             f" equations to {RESIDUAL:g} (time scales too far apart for"
+                             " double precision)")
     return form
+
+
+class PhaseFormError(RuntimeError):
+    """A phase whose closed form neither route computes to :data:`RESIDUAL`."""
 
 
 def _next_event(system: "HybridSystem", mode: Hashable, form: ClosedForm, x: np.ndarray,
