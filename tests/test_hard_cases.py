@@ -375,3 +375,35 @@ def test_fig9_without_gravity_starts_on_the_gap_edge(tmp_path):
     swept = designs(original).largest("gearbox_mesh.peak", {"weight.g": np.array([0.0])})
     assert abs(abs(peak.value) - abs(swept[0])) <= RTOL * abs(swept[0])
     assert abs(abs(peak.value) / 1e3 - 27.11) < 0.005
+
+
+def _rigid_brake(tmp_path):
+    return _write(tmp_path, "braked", _mass("trolley", "2 t") + _mass("load", "500 kg")
+                  + _link("link", "load", "trolley")
+                  + '\n[[brake]]\nname = "brake"\nbody = "trolley"\nforce = "600 N"\n'
+                  + 'delay = "0.5 s"\n\n[run]\nduration = "8 s"\nstart = "steady"\n'
+                  + 'body = "trolley"\nspeed = "2 m/s"\n')
+
+
+#: (builder, link, field, value, closed form of the link's peak)
+BATCHED = {
+    "three equal loads": (_three_loads, "link1", "link2.stiffness", K,
+                          2 * 500 * 1000 / (1000 + 3 * 500)),
+    "rigid mode with a brake": (_rigid_brake, "link", "link.stiffness", K, 2 * 500 * 600 / 2500),
+    "brake at zero speed": (lambda p: _braked_pair(p, 1000.0), "link", "link.stiffness", K,
+                            2 * 500 * 400 / 2500),
+    "backlash 1e-12 m": (lambda p: _ramp_file(p, 0.2 * CRITICAL, backlash='backlash = "1e-12 m"'),
+                         "link", "link.backlash", 1e-12, None),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BATCHED))
+def test_each_hard_case_through_the_batched_sweep(tmp_path, case):
+    """The batched route of a sweep (or the per-design route for what it
+    refuses) gives the closed form, as the run does."""
+    build, link, field, value, expected = BATCHED[case]
+    path = build(tmp_path)
+    swept = designs(path).largest(f"{link}.peak", {field: np.array([value])})[0]
+    if expected is None:                       # backlash → 0: the link without one
+        expected = abs(_run(_ramp_file(tmp_path, 0.2 * CRITICAL)).peaks[0].value)
+    assert abs(abs(swept) - expected) <= RTOL * expected
