@@ -9,6 +9,7 @@ from functools import lru_cache
 from types import ModuleType
 
 from crane_sym.derivation import Derivation, SceneLoad, SweepOutput
+from crane_sym.repeatable import fixed_sympy_draws
 
 #: id -> module under ``crane_sym.derivations``, in paper order.
 DERIVATIONS: dict[str, str] = {
@@ -153,5 +154,7 @@ def value_units(name: str) -> dict[str, str]:
 
 @lru_cache(maxsize=None)
 def get(name: str) -> Derivation:
-    """The built derivation for ``name`` (built once per process)."""
-    return module(name).build()
+    """The built derivation for ``name`` (built once per process, under fixed
+    SymPy draws: the same path and time in every process)."""
+    with fixed_sympy_draws():
+        return module(name).build()

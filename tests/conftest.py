@@ -1,14 +1,5 @@
 """Shared fixtures: a test module names its paper with ``DERIVATION = "<id>"``."""
-import os
-
 import pytest
-
-# SymPy's multivariate factorization (paper 004's Jacobian, ``sp.factor``) takes
-# a path that depends on the symbols' string hashes: one hash seed in a CI run
-# of this session spent 17 min in it where others take 8 s. The test workers
-# (spawned after this file loads) get one fixed seed; the open issue is to make
-# that step independent of the seed.
-os.environ.setdefault("PYTHONHASHSEED", "0")
 
 from crane_sym import registry
 from crane_sym.audit.verdicts import audit

@@ -26,6 +26,7 @@ from crane_sym.mechanics.phase_table import PhaseTable
 from crane_sym.codegen.printers import DoubleDoublePrinter, TernaryPrinter, printer_for, render_helper
 from crane_sym.codegen.rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
 from crane_sym.codegen.scalar_path import fast_path, literal, serves_literal
+from crane_sym.repeatable import fixed_sympy_draws
 from crane_sym.symbols import TIME, SymbolTable
 from crane_sym.codegen.tabulated import render_tabulated
 from crane_sym.codegen.wave_sums import merge_waves
@@ -282,6 +283,7 @@ def docstring_text(text: str) -> str:
     return "".join(c if c == "\n" or c.isprintable() else " " for c in text)
 
 
+@fixed_sympy_draws()
 def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
                   rules: Sequence[Rule] | None = None, scene_note: str = "",
                   tables: Sequence[tuple[TabulatedOutput, PhaseTable]] = (),
