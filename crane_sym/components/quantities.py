@@ -44,24 +44,17 @@ from sympy.physics.units import Dimension, length, time
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
 from crane_sym.components.model import Model
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, ComponentError, Drum,
-                                        Gear, value)
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, ComponentError, Drum, Gear,
+                                        value)
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
            "signed", "static_loads", "switching_values"]
 
 _ONE = Dimension(1)
-#: SI unit of each kind of value, by the kind of body it acts on.
-UNITS = {"inertia": {ROTATING: "kg*m^2", TRANSLATING: "kg"},
-         "mass": {TRANSLATING: "kg"},
-         "stiffness": {ROTATING: "N*m/rad", TRANSLATING: "N/m"},
-         "damping": {ROTATING: "N*m*s/rad", TRANSLATING: "N*s/m"},
-         "load": {ROTATING: "N*m", TRANSLATING: "N"},
-         "speed": {ROTATING: "rad/s", TRANSLATING: "m/s"}}
 #: SI unit of a motor law's values, by its kind and the body's motion.
 LAW_UNITS = {"torque": UNITS["load"], "speed": UNITS["speed"],
-             "acceleration": {ROTATING: "rad/s^2", TRANSLATING: "m/s^2"}}
+             "acceleration": UNITS["acceleration"]}
 #: What a quantity of each name is, and the kind of component it belongs to.
 KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
          "static": ("link", "its load in the steady motion at the start"),
@@ -188,7 +181,7 @@ def switching_values(model: Model) -> dict[str, Parameter]:
     for link in a.links:
         motion = a.bodies[link.part.first].motion
         add(f"{link.part.name}.backlash", link.part.backlash.si,
-            DIMENSIONS["backlash"][motion], "rad" if motion == ROTATING else "m",
+            DIMENSIONS["backlash"][motion], UNITS["backlash"][motion],
             f"backlash (gap) of the elastic link {link.part.name}")
     for load in a.loads:
         part, motion = load.part, a.bodies[load.part.body].motion

@@ -20,10 +20,11 @@ import re
 from pathlib import Path
 
 from crane_sym.components.hybrid import BACKWARD, FORWARD, HELD, ComponentSystem, Mode
+from crane_sym.components.kinds import by_table
 from crane_sym.components.model import ComponentRun
 from crane_sym.components.parts import ComponentError
 from crane_sym.components.quantities import derived_quantity, parameters, static_loads
-from crane_sym.components.reading import TABLES, ComponentFile, read_component_file
+from crane_sym.components.reading import ComponentFile, read_component_file
 from crane_sym.docs.numbers import math_errors
 from crane_sym.docs.rows import aligned_rows, column_blocks, sum_terms
 from crane_sym.docs.walkthrough import _display, _math_cell
@@ -92,7 +93,7 @@ def _value_text(v) -> str:
 
 def _components(read: ComponentFile) -> str:
     rows = []
-    for kind in TABLES:
+    for kind in by_table():
         for entry in read.tables.get(kind, []):
             values = "; ".join(f"{k} = {_value_text(v)}" for k, v in entry.items()
                                if k not in ("name", "between", "body", "input", "output",

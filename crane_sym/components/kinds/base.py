@@ -1,0 +1,154 @@
+"""What a kind of component declares, once: the table a component file gives
+it in, its keys (how each is written, the kind of value it holds, the sign a
+sweep must keep, its default) and how its part is built from them.
+
+A key's ``form`` says how the file writes it:
+
+============ ==============================================================
+``quantity`` text with its unit (``"4e4 N*m/rad"``)
+``number``   a bare number, or text with a unit (dimensionless: a ratio)
+``word``     text: a name, or one of the kind's choices
+``list``     a list of quantities as text (``["0.4 s", "0.8 s"]``)
+``law``      numbers only, never text, checked by the law's own reader
+``ends``     the two body names a link joins
+============ ==============================================================
+
+A key's ``value`` is a kind of value (a key of
+:data:`crane_sym.components.parts.VALUE_KINDS`, its dimension by the body's
+motion) or a fixed dimension; a key without one is not a value a design sweep
+varies (:mod:`crane_sym.components.designs`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, Callable
+
+from sympy.physics.units import Dimension
+
+from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
+
+__all__ = ["FORMS", "Key", "Kind", "load_key"]
+
+FORMS = ("quantity", "number", "word", "list", "law", "ends")
+#: The signs a swept value may be bound to keep ("": either).
+SIGNS = ("positive", "nonnegative", "nonzero", "")
+
+
+@dataclass(frozen=True)
+class Key:
+    """One key of a kind's table (see the module docstring)."""
+
+    name: str
+    form: str = "quantity"
+    value: str | Dimension | None = None
+    sign: str = ""
+    required: bool = True
+    default: Any = None
+    #: Whether the key's value acts, given its table (a step brake has no
+    #: build-up time); None: always.
+    when: Callable[[dict], bool] | None = None
+
+    def __post_init__(self) -> None:
+        if self.form not in FORMS:
+            raise ValueError(f"key {self.name!r}: form must be one of {FORMS}, got {self.form!r}")
+        if self.sign not in SIGNS:
+            raise ValueError(f"key {self.name!r}: sign must be one of {SIGNS}, got {self.sign!r}")
+        if isinstance(self.value, str) and self.value not in VALUE_KINDS:
+            raise ValueError(f"key {self.name!r}: value must be one of {tuple(VALUE_KINDS)} "
+                             f"or a Dimension, got {self.value!r}")
+
+    def acts(self, entry: dict) -> bool:
+        """Whether this key's value acts in the table ``entry`` (a sweep varies
+        only values that do)."""
+        return self.when is None or self.when(entry)
+
+    def given(self, v: Any, where: str) -> Any:
+        """``v`` as the file gives it, checked against the key's form (text, or
+        a bare number only where it is dimensionless); ComponentError naming
+        the key otherwise."""
+        if self.form == "law":
+            return v
+        if self.form == "ends":
+            if not (isinstance(v, list) and len(v) == 2 and all(isinstance(e, str) for e in v)):
+                raise ComponentError(f"{where}: {self.name} must be two body names, got {v!r}")
+            return v
+        if self.form == "list":
+            if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
+                raise ComponentError(f"{where}: {self.name} must be a list of values with "
+                                     f"their units as text, e.g. [\"0.4 s\", \"0.8 s\"], "
+                                     f"got {v!r}")
+            return v
+        if self.form == "word":
+            if not isinstance(v, str):
+                raise ComponentError(f"{where}: {self.name} must be text, got {v!r}")
+            return v
+        if self.form == "number" and isinstance(v, (int, float)) and not isinstance(v, bool):
+            return v
+        if not isinstance(v, str):
+            raise ComponentError(f"{where}: {self.name} needs a value with its unit as text, "
+                                 f"e.g. {self.name} = \"0.1 s\", got {v!r}")
+        return v
+
+
+#: Builds a kind's part from its keys as given (the optional ones not given at
+#: their defaults), the table as written, and where it is (for messages).
+Builder = Callable[[dict[str, Any], dict, str], Component]
+
+
+@dataclass(frozen=True)
+class Kind:
+    """A kind of component: its ``table`` (``[[table]]`` in a component file),
+    its ``keys`` (the required ones first), how its part is built, and one
+    line saying what it is."""
+
+    table: str
+    keys: tuple[Key, ...]
+    build: Builder
+    text: str
+
+    @property
+    def required(self) -> tuple[str, ...]:
+        return tuple(k.name for k in self.keys if k.required)
+
+    @property
+    def optional(self) -> tuple[str, ...]:
+        return tuple(k.name for k in self.keys if not k.required)
+
+    def key(self, name: str) -> Key:
+        """The key called ``name``; KeyError if the kind has none."""
+        for k in self.keys:
+            if k.name == name:
+                return k
+        raise KeyError(name)
+
+    def read(self, entry: dict, where: str) -> Component:
+        """The part of one table ``entry`` whose keys are known and complete
+        (the reader checks that first): each key as given, then the part."""
+        forms = {k.name: k for k in self.keys}
+        ordered = [k for k in entry if forms[k].form != "ends"] + \
+                  [k for k in entry if forms[k].form == "ends"]
+        given = {k.name: k.default for k in self.keys if not k.required}
+        given.update({k: forms[k].given(entry[k], where) for k in ordered})
+        return self.build(given, entry, where)
+
+
+def load_key(entry: dict, where: str, optional: bool = False) -> str | None:
+    """Which of ``torque`` (on a rotating body) and ``force`` (on a translating
+    one) ``entry`` gives: one, not both; None only if ``optional``.
+
+    Parameters
+    ----------
+    entry : dict
+        A table of a component file.
+    where : str
+        The table, as messages name it.
+    optional : bool
+        Whether giving neither is allowed.
+    """
+    given = [k for k in ("torque", "force") if k in entry]
+    if len(given) > 1:
+        raise ComponentError(f"{where}: give torque or force, not both")
+    if not given and not optional:
+        raise ComponentError(f"{where}: lacks 'torque' (on a rotating body) or 'force' "
+                             "(on a translating one)")
+    return given[0] if given else None

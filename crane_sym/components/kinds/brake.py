@@ -1,0 +1,17 @@
+"""``[[brake]]``: a brake on a body, its torque (a force on a translating body)
+built up after a delay as a step, a ramp or an exponential."""
+from sympy.physics.units import time
+
+from crane_sym.components.kinds.base import Key, Kind, load_key
+from crane_sym.components.loads import Brake
+
+KIND = Kind("brake", (Key("name", "word"), Key("body", "word"),
+                      Key("torque", value="load", sign="positive", required=False),
+                      Key("force", value="load", sign="positive", required=False),
+                      Key("delay", value=time, sign="nonnegative", required=False, default=0.0),
+                      Key("build_up", "word", required=False, default="step"),
+                      Key("time", value=time, sign="positive", required=False, default=0.0,
+                          when=lambda entry: entry.get("build_up", "step") != "step")),
+            lambda g, entry, where: Brake(g["name"], g["body"], g[load_key(entry, where)],
+                                          g["delay"], g["build_up"], g["time"]),
+            "a brake on a body")

@@ -1,0 +1,7 @@
+"""``[[mass]]``: a translating body, its mass in kg."""
+from crane_sym.components.kinds.base import Key, Kind
+from crane_sym.components.parts import Mass
+
+KIND = Kind("mass", (Key("name", "word"), Key("mass", value="mass", sign="nonnegative")),
+            lambda g, entry, where: Mass(g["name"], g["mass"]),
+            "a translating body")
