@@ -64,7 +64,10 @@ class Equations:
     forces : generalized force of each coordinate
     lagrange : the equations of motion
     twists : u_k of each elastic link, in the coordinates
-    link_loads : the force (torque) of each elastic link, F_k = χ_k (c_k (u_k − δ_k) + d_k u̇_k)
+    link_loads : the force (torque) of each elastic link, derived from the energies,
+        F_k = ∂Π/∂u_k + ∂Φ/∂u̇_k (= χ_k (c_k (u_k − δ_k) + d_k u̇_k)), in the coordinates
+    link_laws : the same in each link's own stretch and rate (:attr:`stretches`)
+    stretches : the symbols (u_k, u̇_k) of each link's stretch and its rate
     contact, flank : χ_k and δ_k of the links with backlash (the others have χ = 1, δ = 0)
     switches : the ``on`` symbol of each motor
     friction : the signed friction B of each brake
@@ -92,6 +95,8 @@ class Equations:
     values: dict[sp.Symbol, float]
     slopes: tuple[sp.Symbol, ...] = ()
     signals: tuple[sp.Symbol, ...] = ()
+    link_laws: tuple[sp.Expr, ...] = ()
+    stretches: tuple[tuple[sp.Symbol, sp.Symbol], ...] = ()
     #: True for a design of a sweep (:meth:`for_design`): :meth:`numeric`
     #: evaluates the lambdified form shared by every design of the model.
     shared: bool = False
@@ -202,6 +207,38 @@ class Equations:
         design.__dict__["_lambdified"] = self._lambdified
         return design
 
+    @cached_property
+    def _link_coefficients(self) -> tuple[tuple[sp.Expr, sp.Expr, sp.Expr], ...]:
+        """Each link's load on a flank (χ = 1) as ∂F/∂u, ∂F/∂u̇ and ∂F/∂δ: it is
+        affine in the three (shared by every design of the model)."""
+        out = []
+        for k, (law, (u, rate)) in enumerate(zip(self.link_laws, self.stretches)):
+            on = law.xreplace({c: 1 for c in self.contact})
+            delta = self._flank_of(k)
+            out.append((sp.diff(on, u), sp.diff(on, rate),
+                        sp.diff(on, delta) if delta is not None else sp.Integer(0)))
+        return tuple(out)
+
+    def _flank_of(self, index: int) -> sp.Symbol | None:
+        name = self.assembly.links[index].part.name
+        return next((f for f in self.flank if f.name == f"delta_{name}"), None)
+
+    def link_coefficients(self, index: int, extra: dict | None = None
+                          ) -> tuple[float, float, float]:
+        """(a, b, e) of link ``index``'s load on a flank, F = a u + b u̇ + e δ,
+        in this model's values (and ``extra``): the derivatives of
+        ∂Π/∂u + ∂Φ/∂u̇, so the load a run reports is the one its energies give.
+
+        Parameters
+        ----------
+        index : int
+            The link's position among ``assembly.links``.
+        extra : dict, optional
+            Values solved later (a steady motor's torque).
+        """
+        values = {**self.values, **(extra or {})}
+        return tuple(float(c.xreplace(values)) for c in self._link_coefficients[index])
+
     def latex(self) -> list[str]:
         """The equations of motion in LaTeX, one per coordinate, as a mechanics
         text writes them (q̇, q̈; :func:`crane_sym.latex.latex`, with
@@ -263,7 +300,7 @@ def derive(assembly: Assembly) -> Equations:
             J = _p(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}")
             T += J * (kappa * q.diff(t)) ** 2 / 2
     V = D = sp.Integer(0)
-    twists, loads, contact, flank = [], [], [], []
+    twists, stretches, contact, flank = [], [], [], []
     for link in assembly.links:
         name = link.part.name
         (ka, qa), (kb, qb) = (where[e] for e in link.part.ends)
@@ -274,10 +311,18 @@ def derive(assembly: Assembly) -> Equations:
             chi, delta = _r(f"chi_{name}"), _r(f"delta_{name}")
             contact.append(chi)
             flank.append(delta)
-        V += chi * c * (u - delta) ** 2 / 2
-        D += chi * d * u.diff(t) ** 2 / 2
+        s, rate = _r(f"u_{name}"), _r(f"udot_{name}")
+        V += chi * c * (s - delta) ** 2 / 2
+        D += chi * d * rate ** 2 / 2
         twists.append(u)
-        loads.append(chi * (c * (u - delta) + d * u.diff(t)))
+        stretches.append((s, rate))
+    # a link's load is what the energies give: F_k = ∂Π/∂u_k + ∂Φ/∂u̇_k
+    laws = [sp.factor_terms(sp.diff(V, s) + sp.diff(D, rate)) for s, rate in stretches]
+    back = {}
+    for (s, rate), u in zip(stretches, twists):
+        back.update({s: u, rate: u.diff(t)})
+    V, D = V.xreplace(back), D.xreplace(back)
+    loads = [F.xreplace(back) for F in laws]
     forces = {q: sp.Integer(0) for q in coords}
     switches, friction, motors, slopes, signals = [], [], [], [], []
     acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
@@ -320,7 +365,8 @@ def derive(assembly: Assembly) -> Equations:
     values = parameter_values(assembly)
     return Equations(assembly, tuple(coords), T, V, D, forces, eqs, tuple(twists),
                      tuple(loads), tuple(contact), tuple(flank), tuple(switches),
-                     tuple(friction), tuple(motors), values, tuple(slopes), tuple(signals))
+                     tuple(friction), tuple(motors), values, tuple(slopes), tuple(signals),
+                     tuple(laws), tuple(stretches))
 
 
 def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,
