@@ -145,3 +145,20 @@ def test_a_links_load_is_the_one_its_energies_give(path):
         assert sp.expand(eq.link_loads[k] - chi * (c * (u - delta) + d * u.diff(eq.t))) == 0
         assert eq.link_coefficients(k) == (link.stiffness, link.damping,
                                            -link.stiffness if link.backlash > 0 else 0.0)
+
+
+def test_every_declared_symbol_names_a_key_and_every_part_finds_its_kind():
+    """A kind's symbols come from its own keys (their dimensions and units are
+    the keys'), and ``kinds.of`` gives each part the kind whose table built it."""
+    for kind in kinds.KINDS:
+        for declared in kind.symbols:
+            assert kind.key(declared.key).value is not None, (kind.table, declared.key)
+    seen = set()
+    for path in EXAMPLES:
+        read = read_component_file(path)
+        for table, entries in read.tables.items():
+            for entry in entries:
+                part = next(p for p in read.parts if p.name == entry["name"])
+                assert kinds.of(part).table == table
+                seen.add(table)
+    assert seen == {k.table for k in kinds.KINDS}      # the examples hold every kind

@@ -37,13 +37,13 @@ from sympy.physics.units import Dimension, time
 from sympy.physics.units.systems.si import dimsys_SI
 
 from crane_sym import units
+from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
-from crane_sym.components.loads import Characteristic
-from crane_sym.components.model import Model, start_load
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError,
-                                        ElasticLink, value)
-from crane_sym.components.pruning import Scope
 from crane_sym.components.kinds import by_table
+from crane_sym.components.model import Model, start_load
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, Component, ComponentError,
+                                        value)
+from crane_sym.components.pruning import Scope
 from crane_sym.components.reading import read_component_file
 from crane_sym.mechanics.phase_table import HybridRun
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
@@ -107,16 +107,17 @@ def _text(value: float, field: Field) -> str | float:
 def structure(parts: Sequence[Component]) -> tuple:
     """What a model's derivation rests on beside its parts' values, which
     :meth:`Model.with_parts` cannot change: each part's kind and name, whether
-    an elastic link has a gap, how many steps a characteristic takes.
+    an elastic link has a gap, how many steps a characteristic takes (each
+    kind's ``shape``).
 
     Parameters
     ----------
     parts : sequence of Component
         The parts of a model.
     """
-    return tuple((type(p).__name__, p.name,
-                  p.backlash.si > 0 if isinstance(p, ElasticLink) else
-                  len(p.holds) if isinstance(p, Characteristic) else None) for p in parts)
+    shapes = [kinds.of(p).shape for p in parts]
+    return tuple((type(p).__name__, p.name, shape(p) if shape is not None else None)
+                 for p, shape in zip(parts, shapes))
 
 
 class Templates:
@@ -204,7 +205,7 @@ class Designs:
         for i, link in enumerate(self.model.assembly.links):
             motion = self.model.assembly.bodies[link.part.first].motion
             for kind in OUTPUTS:
-                unit = ("N*m" if motion == ROTATING else "N") if kind == "peak" else "1"
+                unit = UNITS["load"][motion] if kind == "peak" else "1"
                 out[f"{link.part.name}.{kind}"] = (i, kind, unit)
         return out
 

@@ -31,9 +31,8 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
-from crane_sym.components.parts import Gear
+from crane_sym.components import kinds
+from crane_sym.components.kinds.base import ROLES
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 
@@ -249,8 +248,8 @@ class Equations:
 
 def parameter_values(assembly: Assembly) -> dict[sp.Symbol, float]:
     """Every parameter symbol of :func:`derive`'s equations with its SI value in
-    ``assembly`` (a steady motor's torque, solved later, left out): the one
-    place a part's value meets its symbol, for the model and for each design
+    ``assembly`` (a steady motor's torque, solved later, left out), as each
+    kind declares them (``Kind.symbols``), for the model and for each design
     of a sweep (:meth:`Equations.for_design`).
 
     Parameters
@@ -259,29 +258,13 @@ def parameter_values(assembly: Assembly) -> dict[sp.Symbol, float]:
         The assembled parts.
     """
     values: dict[sp.Symbol, float] = {}
-    for g in assembly.groups:
-        for body, _ in g.members:
-            values[_p(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}")] = body.inertia
-    for part in assembly.rigid:
-        if isinstance(part, Gear):
-            values[_p(f"i_{part.name}")] = part.ratio
-        else:
-            values[_p(f"r_{part.name}")] = part.radius
-            values[_p(f"n_{part.name}")] = part.reeving
-    for link in assembly.links:
-        name = link.part.name
-        values[_p(f"c_{name}")] = link.stiffness
-        values[sp.Symbol(f"d_{name}", nonnegative=True)] = link.damping
-    for load in assembly.loads:
-        part = load.part
-        if isinstance(part, Motor) and load.load is not None:
-            values[_r(f"M_{part.name}")] = load.load
-        elif isinstance(part, Gravity):
-            values[_p(f"g_{part.name}")] = part.g
-        elif isinstance(part, Resistance):
-            values[_r(f"R_{part.name}")] = load.load
-        elif isinstance(part, Characteristic):
-            values[_r(f"v0_{part.name}")] = load.values[0]
+    members = [body for g in assembly.groups for body, _ in g.members]
+    for item in (*members, *assembly.rigid, *assembly.links, *assembly.loads):
+        part = getattr(item, "part", item)
+        for declared in kinds.of(part).symbols:
+            v = declared.value(item)
+            if v is not None:                   # a steady motor's, solved at the start
+                values[declared.symbol(part.name)] = v
     return values
 
 
@@ -324,39 +307,21 @@ def derive(assembly: Assembly) -> Equations:
     V, D = V.xreplace(back), D.xreplace(back)
     loads = [F.xreplace(back) for F in laws]
     forces = {q: sp.Integer(0) for q in coords}
-    switches, friction, motors, slopes, signals = [], [], [], [], []
+    joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}
     acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
     balancing = None
     for load in assembly.loads:
         part = load.part
         kappa, q = where[part.body]
-        if isinstance(part, Motor):
-            on, M = _r(f"on_{part.name}"), _r(f"M_{part.name}")
-            switches.append(on)
-            motors.append(M)
-            F = on * M
-        elif isinstance(part, Gravity):
-            m, g = _p(f"m_{part.body}"), _p(f"g_{part.name}")
-            F = m * g * (1 if part.direction == "+" else -1)
-        elif isinstance(part, Resistance):
-            F = _r(f"R_{part.name}")
-        elif isinstance(part, Brake):
-            F = _r(f"B_{part.name}")
-            friction.append(F)
-        elif isinstance(part, Characteristic):
-            beta, v0 = _p(f"beta_{part.name}"), _r(f"v0_{part.name}")
-            slopes.append(beta)
-            F = beta * (v0 - kappa * q.diff(t))
-        elif isinstance(part, MotorLaw):
-            letter = {"torque": "L", "acceleration": "a", "speed": "T"}[part.law]
-            signals.append(_r(f"{letter}_{part.name}"))
-            if part.law == "acceleration":
-                balancing = (part, signals[-1])
-                continue
-            F = signals[-1]
-        if not isinstance(part, (Brake, Characteristic, MotorLaw)):
-            acting.append((part.body, F))
-        forces[q] += kappa * F
+        acts = kinds.of(part).acts(part, kappa, q)
+        for role, symbol in acts.joins:
+            joined[role].append(symbol)
+        if acts.force is None:                  # an acceleration law: see _rigid_drive
+            balancing = (part, acts.joins[-1][1])
+            continue
+        if acts.constant:
+            acting.append((part.body, acts.force))
+        forces[q] += kappa * acts.force
     if balancing is not None:
         part, a_law = balancing
         kappa, q = where[part.body]
@@ -364,9 +329,10 @@ def derive(assembly: Assembly) -> Equations:
     eqs = lagrange_equations(T, V, coords, t, forces, D)
     values = parameter_values(assembly)
     return Equations(assembly, tuple(coords), T, V, D, forces, eqs, tuple(twists),
-                     tuple(loads), tuple(contact), tuple(flank), tuple(switches),
-                     tuple(friction), tuple(motors), values, tuple(slopes), tuple(signals),
-                     tuple(laws), tuple(stretches))
+                     tuple(loads), tuple(contact), tuple(flank), tuple(joined["switches"]),
+                     tuple(joined["friction"]), tuple(joined["motor_loads"]), values,
+                     tuple(joined["slopes"]), tuple(joined["signals"]), tuple(laws),
+                     tuple(stretches))
 
 
 def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,

@@ -39,13 +39,14 @@ from dataclasses import dataclass
 from typing import Any
 
 import sympy as sp
-from sympy.physics.units import Dimension, length, time
+from sympy.physics.units import Dimension, time
 
+from crane_sym.components import kinds
+from crane_sym.components.kinds.base import FIXED_UNITS, Key
 from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
+from crane_sym.components.loads import Brake, Characteristic
 from crane_sym.components.model import Model
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, ComponentError, Drum, Gear,
-                                        value)
+from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS, ComponentError, value
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
@@ -114,39 +115,26 @@ def parameters(model: Model, start: tuple[str | None, Any] | None = None
         if s is not None:
             out[path] = Parameter(path, twins.get(s, s), float(eq.values.get(s, float("nan"))),
                                   dimension, unit, what)
-    for body in a.bodies.values():
-        key = "inertia" if body.motion == ROTATING else "mass"
-        add(f"{body.name}.{key}", f"{'J' if key == 'inertia' else 'm'}_{body.name}",
-            DIMENSIONS[key][body.motion], UNITS[key][body.motion],
-            f"{'moment of inertia' if key == 'inertia' else 'mass'} of {body.name}")
-    for part in a.rigid:
-        if isinstance(part, Gear):
-            add(f"{part.name}.ratio", f"i_{part.name}", _ONE, "1", f"ratio of the gear {part.name}")
-        elif isinstance(part, Drum):
-            add(f"{part.name}.radius", f"r_{part.name}", length, "m", f"radius of the drum {part.name}")
-            add(f"{part.name}.reeving", f"n_{part.name}", _ONE, "1", f"reeving (rope falls) of the drum {part.name}")
-    for link in a.links:
-        motion = a.bodies[link.part.first].motion
-        for key, letter in (("stiffness", "c"), ("damping", "d")):
-            add(f"{link.part.name}.{key}", f"{letter}_{link.part.name}",
-                DIMENSIONS[key][motion], UNITS[key][motion], f"{key} of the elastic link {link.part.name}")
-    for load in a.loads:
-        part, motion = load.part, a.bodies[load.part.body].motion
-        word = "torque" if motion == ROTATING else "force"
-        if isinstance(part, Gravity):
-            add(f"{part.name}.g", f"g_{part.name}", length / time**2, "m/s^2",
-                f"acceleration of the gravity {part.name} on {part.body}")
-        elif isinstance(part, Resistance):
-            add(f"{part.name}.{word}", f"R_{part.name}", DIMENSIONS["load"][motion],
-                UNITS["load"][motion], f"{word} of the resistance {part.name} on {part.body}")
-        elif isinstance(part, Motor):
-            add(f"{part.name}.{word}", f"M_{part.name}", DIMENSIONS["load"][motion],
-                UNITS["load"][motion], f"{word} of the motor {part.name} on {part.body}"
-                + (" (steady: solved at the start)" if load.load is None else ""))
-        elif isinstance(part, Characteristic):
-            add(f"{part.name}.speed", f"v0_{part.name}", DIMENSIONS["speed"][motion],
-                UNITS["speed"][motion], f"no-load speed of the characteristic {part.name}")
+    for item in (*a.bodies.values(), *a.rigid, *a.links, *a.loads):
+        part = getattr(item, "part", item)
+        kind = kinds.of(part)
+        for declared in kind.symbols:
+            dimension, unit, key = _dimension(a, kind.key(declared.key), part)
+            what = declared.what.format(name=part.name, body=getattr(part, "body", ""), key=key)
+            add(f"{part.name}.{key}", declared.symbol(part.name).name, dimension, unit,
+                what + (" (steady: solved at the start)" if declared.value(item) is None else ""))
     return out | switching_values(model) | (_run_speed(model, *start) if start else {})
+
+
+def _dimension(a, key: Key, part) -> tuple[Dimension, str, str]:
+    """The dimension and SI unit of a part's ``key`` and the key's name on its
+    body: a kind of value by the body's motion (``torque`` is ``force`` on a
+    translating body), or the fixed dimension the key declares."""
+    if not isinstance(key.value, str):
+        return key.value, FIXED_UNITS[key.value], key.name
+    body = part if part.name in a.bodies else a.bodies[getattr(part, "body", None) or part.ends[0]]
+    name = "force" if key.name == "torque" and body.motion != ROTATING else key.name
+    return DIMENSIONS[key.value][body.motion], UNITS[key.value][body.motion], name
 
 
 def _run_speed(model: Model, body: str | None, speed: Any) -> dict[str, Parameter]:

@@ -11,7 +11,9 @@ from crane_sym.components.kinds import (brake, characteristic, drum, elastic, ge
                                         inertia, mass, motor, motor_law, resistance)
 from crane_sym.components.kinds.base import Key, Kind
 
-__all__ = ["KINDS", "Key", "Kind", "by_table"]
+from crane_sym.components.parts import Component
+
+__all__ = ["KINDS", "Key", "Kind", "by_table", "of"]
 
 #: Every kind, in the order a component file's tables are read.
 KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, brake, motor,
@@ -21,3 +23,17 @@ KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, brake,
 def by_table() -> dict[str, Kind]:
     """Each kind by its table name, from :data:`KINDS` as it is now."""
     return {k.table: k for k in KINDS}
+
+
+def of(part: Component) -> Kind:
+    """The kind of ``part`` (by its ``kind``: ``gear``, ``elastic link``).
+
+    Parameters
+    ----------
+    part : Component
+        A part of a model.
+    """
+    for kind in KINDS:
+        if kind.part_kind == part.kind:
+            return kind
+    raise KeyError(f"no kind declares parts of kind {part.kind!r}")

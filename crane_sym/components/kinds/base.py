@@ -23,11 +23,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Callable
 
-from sympy.physics.units import Dimension
+import sympy as sp
+from sympy.physics.units import Dimension, length, time
 
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
-__all__ = ["FORMS", "Key", "Kind", "load_key"]
+__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Key", "Kind", "Symbolic", "load_key",
+           "run_end"]
 
 FORMS = ("quantity", "number", "word", "list", "law", "ends")
 #: The signs a swept value may be bound to keep ("": either).
@@ -90,6 +92,60 @@ class Key:
         return v
 
 
+#: The SI unit of each fixed dimension a key may hold.
+FIXED_UNITS = {Dimension(1): "1", length: "m", time: "s", length / time**2: "m/s^2"}
+
+
+@dataclass(frozen=True)
+class Symbolic:
+    """A value of a part that the equations hold as a symbol
+    ``<letter>_<component>`` (``c_coupling``), with ``assumption``
+    (``positive``, ``nonnegative`` or ``real``). ``key`` is the table's key it
+    comes from (``torque`` is named ``force`` on a translating body); ``value``
+    takes it in SI from the assembled item (the body, the rigid part, the
+    ``topology.Link`` or ``topology.Load``; None: solved at the start);
+    ``what`` says what it is, formatted with ``name``, ``body`` and ``key``."""
+
+    key: str
+    letter: str
+    assumption: str
+    value: Callable[[Any], "float | None"]
+    what: str
+
+    def symbol(self, component: str) -> sp.Symbol:
+        """Its symbol for the component called ``component``."""
+        return sp.Symbol(f"{self.letter}_{component}", **{self.assumption: True})
+
+
+#: The lists of a mode's symbols a part acting on a body may join (fields of
+#: :class:`crane_sym.components.equations.Equations`): a motor's switch and
+#: torque, a brake's friction, a characteristic's slope, a law's value.
+ROLES = ("switches", "motor_loads", "friction", "slopes", "signals")
+
+
+@dataclass(frozen=True)
+class Acting:
+    """What a part acting on one body adds to the generalized force: its force
+    ``force`` along the body's coordinate (None: an acceleration law, which
+    drives the rigid drive instead), the mode's symbols it brings as
+    ``(role, symbol)`` (a role of :data:`ROLES`), and whether the force is
+    ``constant`` in time (a weight, a resistance, a motor: what an
+    acceleration law's rigid drive balances)."""
+
+    force: sp.Expr | None
+    joins: tuple[tuple[str, sp.Symbol], ...] = ()
+    constant: bool = False
+
+
+#: The :class:`Acting` of a part on its body, given the body's κ and its
+#: group's coordinate q(t).
+Acts = Callable[[Component, sp.Expr, sp.Expr], Acting]
+
+
+#: Why a part does nothing over a run of ``duration`` seconds (from rest when
+#: ``rest``), so the run may drop it; None when it may act.
+Idle = Callable[[Component, float, bool], "str | None"]
+
 #: Builds a kind's part from its keys as given (the optional ones not given at
 #: their defaults), the table as written, and where it is (for messages).
 Builder = Callable[[dict[str, Any], dict, str], Component]
@@ -98,13 +154,30 @@ Builder = Callable[[dict[str, Any], dict, str], Component]
 @dataclass(frozen=True)
 class Kind:
     """A kind of component: its ``table`` (``[[table]]`` in a component file),
-    its ``keys`` (the required ones first), how its part is built, and one
-    line saying what it is."""
+    its ``keys`` (the required ones first), how its part is built, one line
+    saying what it is, how messages name its parts (``label``, default the
+    table: ``Component.kind``), when a run may drop one (``idle``; None:
+    never), the values its equations hold as symbols (``symbols``), what
+    its derivation rests on beside them (``shape``) and, for a part acting on
+    one body, its share of Q (``acts``)."""
 
     table: str
     keys: tuple[Key, ...]
     build: Builder
     text: str
+    label: str = ""
+    idle: Idle | None = None
+    symbols: tuple[Symbolic, ...] = ()
+    #: What the derivation of a part rests on beside its values (whether a
+    #: link has a gap); None: nothing.
+    shape: Callable[[Component], Any] | None = None
+    #: What a part that acts on one body adds to Q (None: it joins bodies).
+    acts: Acts | None = None
+
+    @property
+    def part_kind(self) -> str:
+        """What its parts' ``kind`` is (``elastic link`` for ``[[elastic]]``)."""
+        return self.label or self.table
 
     @property
     def required(self) -> tuple[str, ...]:
@@ -152,3 +225,8 @@ def load_key(entry: dict, where: str, optional: bool = False) -> str | None:
         raise ComponentError(f"{where}: lacks 'torque' (on a rotating body) or 'force' "
                              "(on a translating one)")
     return given[0] if given else None
+
+
+def run_end(duration: float) -> str:
+    """How an ``idle`` reason names the run's end."""
+    return f"the run ends at {duration:g} s"

@@ -1,9 +1,24 @@
 """``[[brake]]``: a brake on a body, its torque (a force on a translating body)
 built up after a delay as a step, a ramp or an exponential."""
+import sympy as sp
 from sympy.physics.units import time
 
-from crane_sym.components.kinds.base import Key, Kind, load_key
+from crane_sym.components.kinds.base import Acting, Key, Kind, load_key, run_end
 from crane_sym.components.loads import Brake
+
+
+
+def _idle(part: Brake, duration: float, rest: bool) -> str | None:
+    if part.delay >= duration:
+        return f"it engages at t = {part.delay:g} s, and {run_end(duration)}"
+    return None
+
+
+def _acts(part: Brake, kappa: sp.Expr, q: sp.Expr) -> Acting:
+    """B: its signed friction, which the mode sets."""
+    B = sp.Symbol(f"B_{part.name}", real=True)
+    return Acting(B, (("friction", B),))
+
 
 KIND = Kind("brake", (Key("name", "word"), Key("body", "word"),
                       Key("torque", value="load", sign="positive", required=False),
@@ -14,4 +29,4 @@ KIND = Kind("brake", (Key("name", "word"), Key("body", "word"),
                           when=lambda entry: entry.get("build_up", "step") != "step")),
             lambda g, entry, where: Brake(g["name"], g["body"], g[load_key(entry, where)],
                                           g["delay"], g["build_up"], g["time"]),
-            "a brake on a body")
+            "a brake on a body", idle=_idle, acts=_acts)

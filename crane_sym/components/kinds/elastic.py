@@ -1,6 +1,6 @@
 """``[[elastic]]``: a spring and a viscous damper between two bodies of one kind,
 with an optional backlash gap: F = c (u − flank) + d u̇, u = x(second) − x(first)."""
-from crane_sym.components.kinds.base import Key, Kind
+from crane_sym.components.kinds.base import Key, Kind, Symbolic
 from crane_sym.components.parts import ElasticLink
 
 
@@ -19,4 +19,10 @@ KIND = Kind("elastic", (Key("name", "word"), Key("between", "ends"),
                         Key("contact", "word", required=False, default="positive"),
                         Key("reference", value="load", sign="nonzero", required=False),
                         Key("positive", "word", required=False)),
-            _build, "a spring and damper between two bodies, with an optional backlash")
+            _build, "a spring and damper between two bodies, with an optional backlash",
+            "elastic link",
+            symbols=(Symbolic("stiffness", "c", "positive", lambda link: link.stiffness,
+                              "stiffness of the elastic link {name}"),
+                     Symbolic("damping", "d", "nonnegative", lambda link: link.damping,
+                              "damping of the elastic link {name}")),
+            shape=lambda link: link.backlash.si > 0)

@@ -1,7 +1,31 @@
 """``[[motor_law]]``: a torque, acceleration or speed law in time, piecewise polynomial
 (paper 002's drive laws)."""
-from crane_sym.components.kinds.base import Key, Kind
+import sympy as sp
+
+from crane_sym.components.kinds.base import Acting, Key, Kind, run_end
 from crane_sym.components.laws import MotorLaw
+
+
+
+def _idle(part: MotorLaw, duration: float, rest: bool) -> str | None:
+    if part.law == "torque":
+        if all(c == 0 for row in part.coefficients for c in row):
+            return "its law is 0 throughout"
+        if part.breakpoints[0] >= duration:
+            return f"its law starts at t = {float(part.breakpoints[0]):g} s, and {run_end(duration)}"
+    return None
+
+
+#: The letter of a law's value by its kind: a torque L, an acceleration a, the
+#: torque T a speed law takes.
+LETTERS = {"torque": "L", "acceleration": "a", "speed": "T"}
+
+
+def _acts(part: MotorLaw, kappa: sp.Expr, q: sp.Expr) -> Acting:
+    """Its value at t (an acceleration law's drives the rigid drive instead)."""
+    value = sp.Symbol(f"{LETTERS[part.law]}_{part.name}", real=True)
+    return Acting(None if part.law == "acceleration" else value, (("signals", value),))
+
 
 KIND = Kind("motor_law", (Key("name", "word"), Key("body", "word"), Key("law", "word"),
                           Key("unit", "word"), Key("breakpoints", "law"),
@@ -10,4 +34,4 @@ KIND = Kind("motor_law", (Key("name", "word"), Key("body", "word"), Key("law", "
             lambda g, entry, where: MotorLaw(g["name"], g["body"], g["breakpoints"],
                                              g["coefficients"], g["unit"], g["law"],
                                              g["time_unit"]),
-            "a law in time on a body")
+            "a law in time on a body", "motor law", _idle, acts=_acts)
