@@ -15,7 +15,7 @@ quantities a reviewer checks (reduced inertia, static load, frequency, closed
 form, peak) and verdicts on the formulas a file lists (``file_audit``).
 Each kind of component is declared once, in its module of ``kinds``: its
 table and keys, how its part is built, when a run may drop it, the symbols
-its values take.
+its values take, its share of the generalized forces.
 
 May import: the top-level vocabulary (``units``, ``symbols``, ...),
 ``audit`` (the papers' checks, for a file's formulas), ``mechanics``,
