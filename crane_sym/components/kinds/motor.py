@@ -6,7 +6,6 @@ from crane_sym.components.kinds.base import Acting, Key, Kind, Symbolic, load_ke
 from crane_sym.components.loads import Motor
 
 
-
 def _idle(part: Motor, duration: float, rest: bool) -> str | None:
     if part.load is not None:
         if part.load.si == 0:
