@@ -43,8 +43,7 @@ from sympy.physics.units import Dimension, time
 
 from crane_sym.components import kinds
 from crane_sym.components.kinds.base import FIXED_UNITS, Key
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Brake, Characteristic
+from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model
 from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS, ComponentError, value
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
@@ -53,9 +52,6 @@ __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quanti
            "signed", "static_loads", "switching_values"]
 
 _ONE = Dimension(1)
-#: SI unit of a motor law's values, by its kind and the body's motion.
-LAW_UNITS = {"torque": UNITS["load"], "speed": UNITS["speed"],
-             "acceleration": UNITS["acceleration"]}
 #: What a quantity of each name is, and the kind of component it belongs to.
 KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
          "static": ("link", "its load in the steady motion at the start"),
@@ -132,9 +128,15 @@ def _dimension(a, key: Key, part) -> tuple[Dimension, str, str]:
     translating body), or the fixed dimension the key declares."""
     if not isinstance(key.value, str):
         return key.value, FIXED_UNITS[key.value], key.name
-    body = part if part.name in a.bodies else a.bodies[getattr(part, "body", None) or part.ends[0]]
-    name = "force" if key.name == "torque" and body.motion != ROTATING else key.name
-    return DIMENSIONS[key.value][body.motion], UNITS[key.value][body.motion], name
+    motion = _motion(a, part)
+    name = "force" if key.name == "torque" and motion != ROTATING else key.name
+    return DIMENSIONS[key.value][motion], UNITS[key.value][motion], name
+
+
+def _motion(a, part) -> str:
+    """The motion of the body a part is, acts on, or (a link) starts at."""
+    body = part.name if part.name in a.bodies else getattr(part, "body", None) or part.ends[0]
+    return a.bodies[body].motion
 
 
 def _run_speed(model: Model, body: str | None, speed: Any) -> dict[str, Parameter]:
@@ -166,27 +168,12 @@ def switching_values(model: Model) -> dict[str, Parameter]:
     def add(path: str, value: float, dimension: Dimension, unit: str, what: str) -> None:
         symbol = sp.Symbol("value_" + path.replace(".", "_"), nonnegative=True)
         out[path] = Parameter(path, symbol, float(value), dimension, unit, what)
-    for link in a.links:
-        motion = a.bodies[link.part.first].motion
-        add(f"{link.part.name}.backlash", link.part.backlash.si,
-            DIMENSIONS["backlash"][motion], UNITS["backlash"][motion],
-            f"backlash (gap) of the elastic link {link.part.name}")
-    for load in a.loads:
-        part, motion = load.part, a.bodies[load.part.body].motion
-        if isinstance(part, Brake):
-            word = "torque" if motion == ROTATING else "force"
-            add(f"{part.name}.{word}", part.load.si, DIMENSIONS["load"][motion],
-                UNITS["load"][motion], f"{word} of the brake {part.name}")
-            add(f"{part.name}.delay", part.delay, time, "s", f"delay of the brake {part.name}")
-        elif isinstance(part, MotorLaw):
-            # breakpoint k (from 1) in s, and the law's value where piece k starts
-            unit = LAW_UNITS[part.law][motion]
-            for k, b in enumerate(part.breakpoints, start=1):
-                add(f"{part.name}.time_{k}", float(b), time, "s",
-                    f"breakpoint {k} of the motor law {part.name}")
-            for k, row in enumerate(part.coefficients, start=1):
-                add(f"{part.name}.value_{k}", float(row[0]), part.dimension, unit,
-                    f"value of the motor law {part.name} at its breakpoint {k}")
+    for item in (*a.links, *a.loads):
+        switching = kinds.of(item.part).switching
+        if switching is None:
+            continue
+        for key, v, dimension, unit, what in switching(item.part, _motion(a, item.part)):
+            add(f"{item.part.name}.{key}", v, dimension, unit, what)
     return out
 
 

@@ -142,6 +142,12 @@ class Acting:
 Acts = Callable[[Component, sp.Expr, sp.Expr], Acting]
 
 
+#: The values of a part that switch the model rather than enter its equations,
+#: given the part and its body's motion: (key, SI value, dimension, SI unit,
+#: what it is) each, for a [[formula]] to name.
+Switching = Callable[[Component, str], "tuple[tuple[str, float, Dimension, str, str], ...]"]
+
+
 #: Why a part does nothing over a run of ``duration`` seconds (from rest when
 #: ``rest``), so the run may drop it; None when it may act.
 Idle = Callable[[Component, float, bool], "str | None"]
@@ -158,8 +164,9 @@ class Kind:
     saying what it is, how messages name its parts (``label``, default the
     table: ``Component.kind``), when a run may drop one (``idle``; None:
     never), the values its equations hold as symbols (``symbols``), what
-    its derivation rests on beside them (``shape``) and, for a part acting on
-    one body, its share of Q (``acts``)."""
+    its derivation rests on beside them (``shape``), for a part acting on
+    one body its share of Q (``acts``), and the values that switch the model
+    (``switching``)."""
 
     table: str
     keys: tuple[Key, ...]
@@ -173,6 +180,8 @@ class Kind:
     shape: Callable[[Component], Any] | None = None
     #: What a part that acts on one body adds to Q (None: it joins bodies).
     acts: Acts | None = None
+    #: The values that switch the model rather than enter its equations.
+    switching: Switching | None = None
 
     @property
     def part_kind(self) -> str:

@@ -5,6 +5,7 @@ from sympy.physics.units import time
 
 from crane_sym.components.kinds.base import Acting, Key, Kind, load_key, run_end
 from crane_sym.components.loads import Brake
+from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS
 
 
 
@@ -20,6 +21,13 @@ def _acts(part: Brake, kappa: sp.Expr, q: sp.Expr) -> Acting:
     return Acting(B, (("friction", B),))
 
 
+def _switching(part: Brake, motion: str) -> tuple:
+    word = "torque" if motion == ROTATING else "force"
+    return ((word, part.load.si, DIMENSIONS["load"][motion], UNITS["load"][motion],
+             f"{word} of the brake {part.name}"),
+            ("delay", part.delay, time, "s", f"delay of the brake {part.name}"))
+
+
 KIND = Kind("brake", (Key("name", "word"), Key("body", "word"),
                       Key("torque", value="load", sign="positive", required=False),
                       Key("force", value="load", sign="positive", required=False),
@@ -29,4 +37,4 @@ KIND = Kind("brake", (Key("name", "word"), Key("body", "word"),
                           when=lambda entry: entry.get("build_up", "step") != "step")),
             lambda g, entry, where: Brake(g["name"], g["body"], g[load_key(entry, where)],
                                           g["delay"], g["build_up"], g["time"]),
-            "a brake on a body", idle=_idle, acts=_acts)
+            "a brake on a body", idle=_idle, acts=_acts, switching=_switching)

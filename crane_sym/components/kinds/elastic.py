@@ -1,13 +1,18 @@
 """``[[elastic]]``: a spring and a viscous damper between two bodies of one kind,
 with an optional backlash gap: F = c (u − flank) + d u̇, u = x(second) − x(first)."""
 from crane_sym.components.kinds.base import Key, Kind, Symbolic
-from crane_sym.components.parts import ElasticLink
+from crane_sym.components.parts import DIMENSIONS, UNITS, ElasticLink
 
 
 def _build(g: dict, entry: dict, where: str) -> ElasticLink:
     first, second = g["between"]
     return ElasticLink(g["name"], first, second, g["stiffness"], g["damping"], g["backlash"],
                        g["contact"], g["reference"], g["positive"])
+
+
+def _switching(part: ElasticLink, motion: str) -> tuple:
+    return (("backlash", part.backlash.si, DIMENSIONS["backlash"][motion],
+             UNITS["backlash"][motion], f"backlash (gap) of the elastic link {part.name}"),)
 
 
 KIND = Kind("elastic", (Key("name", "word"), Key("between", "ends"),
@@ -25,4 +30,4 @@ KIND = Kind("elastic", (Key("name", "word"), Key("between", "ends"),
                               "stiffness of the elastic link {name}"),
                      Symbolic("damping", "d", "nonnegative", lambda link: link.damping,
                               "damping of the elastic link {name}")),
-            shape=lambda link: link.backlash.si > 0)
+            shape=lambda link: link.backlash.si > 0, switching=_switching)

@@ -1,9 +1,11 @@
 """``[[motor_law]]``: a torque, acceleration or speed law in time, piecewise polynomial
 (paper 002's drive laws)."""
 import sympy as sp
+from sympy.physics.units import time
 
 from crane_sym.components.kinds.base import Acting, Key, Kind, run_end
 from crane_sym.components.laws import MotorLaw
+from crane_sym.components.parts import UNITS
 
 
 
@@ -27,6 +29,22 @@ def _acts(part: MotorLaw, kappa: sp.Expr, q: sp.Expr) -> Acting:
     return Acting(None if part.law == "acceleration" else value, (("signals", value),))
 
 
+#: SI unit of a law's values, by its kind and the body's motion.
+LAW_UNITS = {"torque": UNITS["load"], "speed": UNITS["speed"],
+             "acceleration": UNITS["acceleration"]}
+
+
+def _switching(part: MotorLaw, motion: str) -> tuple:
+    """Breakpoint k (from 1) in s, and the law's value where piece k starts."""
+    unit = LAW_UNITS[part.law][motion]
+    times = tuple((f"time_{k}", float(b), time, "s",
+                   f"breakpoint {k} of the motor law {part.name}")
+                  for k, b in enumerate(part.breakpoints, start=1))
+    return times + tuple((f"value_{k}", float(row[0]), part.dimension, unit,
+                          f"value of the motor law {part.name} at its breakpoint {k}")
+                         for k, row in enumerate(part.coefficients, start=1))
+
+
 KIND = Kind("motor_law", (Key("name", "word"), Key("body", "word"), Key("law", "word"),
                           Key("unit", "word"), Key("breakpoints", "law"),
                           Key("coefficients", "law"),
@@ -34,4 +52,5 @@ KIND = Kind("motor_law", (Key("name", "word"), Key("body", "word"), Key("law", "
             lambda g, entry, where: MotorLaw(g["name"], g["body"], g["breakpoints"],
                                              g["coefficients"], g["unit"], g["law"],
                                              g["time_unit"]),
-            "a law in time on a body", "motor law", _idle, acts=_acts)
+            "a law in time on a body", "motor law", _idle, acts=_acts,
+            switching=_switching)
