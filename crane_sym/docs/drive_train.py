@@ -38,7 +38,6 @@ __all__ = ["drive_train_page", "drive_train_walkthrough", "render"]
 MATRIX_DIGITS = 4
 #: Significant digits of event times.
 TIME_DIGITS = 9
-_WHERE = {"gear": ("input", "output"), "drum": ("drum", "load")}
 
 
 class _Markup(str):
@@ -79,12 +78,14 @@ def _symbol(p, model) -> str:
 
 
 def _connects(kind: str, entry: dict) -> str:
-    if kind == "elastic":
-        return " – ".join(entry.get("between", []))
-    if kind in _WHERE:
-        a, b = _WHERE[kind]
-        return f"{entry.get(a, '')} → {entry.get(b, '')}"
-    return entry.get("body", "—")
+    keys = by_table()[kind].places
+    if not keys:
+        return "—"
+    if keys[0].form == "ends":
+        return " – ".join(entry.get(keys[0].name, []))
+    if len(keys) == 2:
+        return f"{entry.get(keys[0].name, '')} → {entry.get(keys[1].name, '')}"
+    return entry.get(keys[0].name, "—")
 
 
 def _value_text(v) -> str:
@@ -95,9 +96,9 @@ def _components(read: ComponentFile) -> str:
     rows = []
     for kind in by_table():
         for entry in read.tables.get(kind, []):
+            places = {k.name for k in by_table()[kind].places}
             values = "; ".join(f"{k} = {_value_text(v)}" for k, v in entry.items()
-                               if k not in ("name", "between", "body", "input", "output",
-                                            "drum", "load"))
+                               if k != "name" and k not in places)
             rows.append([entry.get("name", ""), kind, _connects(kind, entry), values or "—"])
     return _table(["component", "kind", "joins / acts on", "values as written"], rows)
 

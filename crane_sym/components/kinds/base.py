@@ -8,6 +8,7 @@ A key's ``form`` says how the file writes it:
 ``quantity`` text with its unit (``"4e4 N*m/rad"``)
 ``number``   a bare number, or text with a unit (dimensionless: a ratio)
 ``word``     text: a name, or one of the kind's choices
+``body``     text: the name of a body the part joins or acts on
 ``list``     a list of quantities as text (``["0.4 s", "0.8 s"]``)
 ``law``      numbers only, never text, checked by the law's own reader
 ``ends``     the two body names a link joins
@@ -31,7 +32,7 @@ from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 __all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Key", "Kind", "Symbolic", "load_key",
            "run_end"]
 
-FORMS = ("quantity", "number", "word", "list", "law", "ends")
+FORMS = ("quantity", "number", "word", "body", "list", "law", "ends")
 #: The signs a swept value may be bound to keep ("": either).
 SIGNS = ("positive", "nonnegative", "nonzero", "")
 
@@ -80,7 +81,7 @@ class Key:
                                      f"their units as text, e.g. [\"0.4 s\", \"0.8 s\"], "
                                      f"got {v!r}")
             return v
-        if self.form == "word":
+        if self.form in ("word", "body"):
             if not isinstance(v, str):
                 raise ComponentError(f"{where}: {self.name} must be text, got {v!r}")
             return v
@@ -195,6 +196,11 @@ class Kind:
     @property
     def optional(self) -> tuple[str, ...]:
         return tuple(k.name for k in self.keys if not k.required)
+
+    @property
+    def places(self) -> tuple[Key, ...]:
+        """The keys that name the bodies a part joins or acts on."""
+        return tuple(k for k in self.keys if k.form in ("body", "ends"))
 
     def key(self, name: str) -> Key:
         """The key called ``name``; KeyError if the kind has none."""

@@ -28,7 +28,7 @@ def _switching(part: Brake, motion: str) -> tuple:
             ("delay", part.delay, time, "s", f"delay of the brake {part.name}"))
 
 
-KIND = Kind("brake", (Key("name", "word"), Key("body", "word"),
+KIND = Kind("brake", (Key("name", "word"), Key("body", "body"),
                       Key("torque", value="load", sign="positive", required=False),
                       Key("force", value="load", sign="positive", required=False),
                       Key("delay", value=time, sign="nonnegative", required=False, default=0.0),

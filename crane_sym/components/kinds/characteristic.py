@@ -15,7 +15,7 @@ def _acts(part: Characteristic, kappa: sp.Expr, q: sp.Expr) -> Acting:
     return Acting(beta * (SPEED.symbol(part.name) - v), (("slopes", beta),))
 
 
-KIND = Kind("characteristic", (Key("name", "word"), Key("body", "word"),
+KIND = Kind("characteristic", (Key("name", "word"), Key("body", "body"),
                                Key("speed", value="speed"), Key("slopes", "list"),
                                Key("holds", "list", required=False, default=[])),
             lambda g, entry, where: Characteristic(g["name"], g["body"], g["speed"], g["slopes"],

@@ -4,7 +4,7 @@ from sympy.physics.units import Dimension, length
 from crane_sym.components.kinds.base import Key, Kind, Symbolic
 from crane_sym.components.parts import Drum
 
-KIND = Kind("drum", (Key("name", "word"), Key("drum", "word"), Key("load", "word"),
+KIND = Kind("drum", (Key("name", "word"), Key("drum", "body"), Key("load", "body"),
                      Key("radius", value=length, sign="positive"),
                      Key("reeving", "number", Dimension(1), "positive", False, 1)),
             lambda g, entry, where: Drum(g["name"], g["drum"], g["load"], g["radius"],

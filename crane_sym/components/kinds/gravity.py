@@ -15,7 +15,7 @@ def _acts(part: Gravity, kappa: sp.Expr, q: sp.Expr) -> Acting:
     return Acting(m * G.symbol(part.name) * (1 if part.direction == "+" else -1), constant=True)
 
 
-KIND = Kind("gravity", (Key("name", "word"), Key("body", "word"),
+KIND = Kind("gravity", (Key("name", "word"), Key("body", "body"),
                         Key("g", value=length / time**2, sign="nonnegative", required=False,
                             default="9.81 m/s^2"),
                         Key("direction", "word", required=False, default="+")),

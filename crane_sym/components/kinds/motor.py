@@ -25,7 +25,7 @@ def _acts(part: Motor, kappa: sp.Expr, q: sp.Expr) -> Acting:
     return Acting(on * M, (("switches", on), ("motor_loads", M)), constant=True)
 
 
-KIND = Kind("motor", (Key("name", "word"), Key("body", "word"),
+KIND = Kind("motor", (Key("name", "word"), Key("body", "body"),
                       Key("torque", value="load", sign="positive", required=False),
                       Key("force", value="load", sign="positive", required=False),
                       Key("off_at", value=time, sign="nonnegative", required=False)),

@@ -45,7 +45,7 @@ def _switching(part: MotorLaw, motion: str) -> tuple:
                          for k, row in enumerate(part.coefficients, start=1))
 
 
-KIND = Kind("motor_law", (Key("name", "word"), Key("body", "word"), Key("law", "word"),
+KIND = Kind("motor_law", (Key("name", "word"), Key("body", "body"), Key("law", "word"),
                           Key("unit", "word"), Key("breakpoints", "law"),
                           Key("coefficients", "law"),
                           Key("time_unit", "word", required=False, default="s")),

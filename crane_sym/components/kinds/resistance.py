@@ -5,7 +5,7 @@ from crane_sym.components.loads import Resistance
 LOAD = Symbolic("torque", "R", "real", lambda load: load.load,
                 "{key} of the resistance {name} on {body}")
 
-KIND = Kind("resistance", (Key("name", "word"), Key("body", "word"),
+KIND = Kind("resistance", (Key("name", "word"), Key("body", "body"),
                            Key("torque", value="load", required=False),
                            Key("force", value="load", required=False)),
             lambda g, entry, where: Resistance(g["name"], g["body"], g[load_key(entry, where)]),
