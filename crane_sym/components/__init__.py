@@ -13,6 +13,9 @@ equations in the components' symbols, the piecewise-linear system of its
 modes, a run solved phase by phase in closed form, and the component TOML;
 quantities a reviewer checks (reduced inertia, static load, frequency, closed
 form, peak) and verdicts on the formulas a file lists (``file_audit``).
+Each kind of component is declared once, in its module of ``kinds``: its
+table and keys, how its part is built, when a run may drop it, the symbols
+its values take, its share of the generalized forces.
 
 May import: the top-level vocabulary (``units``, ``symbols``, ...),
 ``audit`` (the papers' checks, for a file's formulas), ``mechanics``,

@@ -33,17 +33,18 @@ from pathlib import Path
 from typing import Mapping, Sequence
 
 import numpy as np
-from sympy.physics.units import Dimension, length, time
+from sympy.physics.units import Dimension, time
 from sympy.physics.units.systems.si import dimsys_SI
 
 from crane_sym import units
+from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
-from crane_sym.components.loads import Characteristic
+from crane_sym.components.kinds import by_table
 from crane_sym.components.model import Model, start_load
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError,
-                                        ElasticLink, value)
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, Component, ComponentError,
+                                        value)
 from crane_sym.components.pruning import Scope
-from crane_sym.components.reading import NUMBERS, TABLES, _build, read_component_file
+from crane_sym.components.reading import read_component_file
 from crane_sym.mechanics.phase_table import HybridRun
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
@@ -54,23 +55,6 @@ __all__ = ["OUTPUTS", "Designs", "Field", "Templates", "designs", "evaluate_bloc
 OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
            "factor": "dynamic factor of the elastic link {link}: its largest |load| over "
                      "|{reference}|"}
-_ONE = Dimension(1)
-#: Each key that holds one value: the kind of value (a key of ``DIMENSIONS``,
-#: its dimension by the body's motion) or its dimension, and its sign.
-_KEYS: dict[str, tuple[str | Dimension, str]] = {
-    "inertia": ("inertia", "nonnegative"), "mass": ("mass", "nonnegative"),
-    "ratio": (_ONE, "positive"), "radius": (length, "positive"),
-    "reeving": (_ONE, "positive"), "stiffness": ("stiffness", "positive"),
-    "damping": ("damping", "nonnegative"), "backlash": ("backlash", "nonnegative"),
-    "reference": ("load", "nonzero"), "torque": ("load", "positive"),
-    "force": ("load", "positive"), "delay": (time, "nonnegative"),
-    "time": (time, "positive"), "off_at": (time, "nonnegative"),
-    "g": (length / time**2, "nonnegative"), "speed": ("speed", ""),
-}
-#: Keys whose sign another rule gives: a resistance pushes either way.
-_ANY_SIGN = {("resistance", "torque"), ("resistance", "force")}
-
-
 @dataclass(frozen=True)
 class Field:
     """A value of one component that a sweep may vary: ``<component>.<key>``,
@@ -114,7 +98,7 @@ def si_unit(dimension: Dimension) -> str:
 
 def _text(value: float, field: Field) -> str | float:
     """A value in SI as the file's reader takes it."""
-    if field.key in NUMBERS:
+    if by_table()[field.table].key(field.key).form == "number":
         return float(value)
     unit = si_unit(field.dimension)
     return repr(float(value)) + ("" if unit == "1" else f" {unit}")
@@ -123,16 +107,17 @@ def _text(value: float, field: Field) -> str | float:
 def structure(parts: Sequence[Component]) -> tuple:
     """What a model's derivation rests on beside its parts' values, which
     :meth:`Model.with_parts` cannot change: each part's kind and name, whether
-    an elastic link has a gap, how many steps a characteristic takes.
+    an elastic link has a gap, how many steps a characteristic takes (each
+    kind's ``shape``).
 
     Parameters
     ----------
     parts : sequence of Component
         The parts of a model.
     """
-    return tuple((type(p).__name__, p.name,
-                  p.backlash.si > 0 if isinstance(p, ElasticLink) else
-                  len(p.holds) if isinstance(p, Characteristic) else None) for p in parts)
+    shapes = [kinds.of(p).shape for p in parts]
+    return tuple((type(p).__name__, p.name, shape(p) if shape is not None else None)
+                 for p, shape in zip(parts, shapes))
 
 
 class Templates:
@@ -183,7 +168,7 @@ class Designs:
         self.model = self.file.model
         self.data = tomllib.loads(text.decode("utf-8"))
         self.entries: dict[str, tuple[str, dict]] = {}
-        for kind in TABLES:
+        for kind in by_table():
             for entry in self.data.get(kind, []):
                 self.entries[entry["name"]] = (kind, entry)
         self.position = {p.name: i for i, p in enumerate(self.model.components)}
@@ -196,27 +181,22 @@ class Designs:
         a = self.model.assembly
         out = {}
         for name, (kind, entry) in self.entries.items():
-            required, optional = TABLES[kind]
-            for key in (*required, *optional):
-                if key not in _KEYS or (key in ("torque", "force") and key not in entry):
+            for declared in by_table()[kind].keys:
+                key = declared.name
+                if declared.value is None or (key in ("torque", "force") and key not in entry):
                     continue
                 raw = entry.get(key)
-                if (isinstance(raw, str) and raw == "steady") or (
-                        kind == "brake" and key == "time"
-                        and entry.get("build_up", "step") == "step"):
-                    continue                 # solved at the start; a step has no time
-                kind_of, sign = _KEYS[key]
-                if (kind, key) in _ANY_SIGN:
-                    sign = ""
-                if isinstance(kind_of, str):
+                if (isinstance(raw, str) and raw == "steady") or not declared.acts(entry):
+                    continue                 # solved at the start, or without effect
+                if isinstance(declared.value, str):
                     body = entry.get("body") or (entry.get("between") or [None])[0]
                     motion = a.bodies[body].motion if body in a.bodies else (
                         ROTATING if kind == "inertia" else "translating")
-                    dimension = DIMENSIONS[kind_of][motion]
+                    dimension = DIMENSIONS[declared.value][motion]
                 else:
-                    dimension = kind_of
+                    dimension = declared.value
                 text = raw if isinstance(raw, str) else None if raw is None else repr(raw)
-                out[f"{name}.{key}"] = Field(name, kind, key, text, dimension, sign)
+                out[f"{name}.{key}"] = Field(name, kind, key, text, dimension, declared.sign)
         return out
 
     def outputs(self) -> dict[str, tuple[int, str, str]]:
@@ -225,7 +205,7 @@ class Designs:
         for i, link in enumerate(self.model.assembly.links):
             motion = self.model.assembly.bodies[link.part.first].motion
             for kind in OUTPUTS:
-                unit = ("N*m" if motion == ROTATING else "N") if kind == "peak" else "1"
+                unit = UNITS["load"][motion] if kind == "peak" else "1"
                 out[f"{link.part.name}.{kind}"] = (i, kind, unit)
         return out
 
@@ -246,8 +226,8 @@ class Designs:
             entry[f.key] = _text(v, f)
         for component, entry in changed.items():
             kind = self.entries[component][0]
-            parts[self.position[component]] = _build(
-                kind, entry, f"component model {self.model.name!r}: [[{kind}]] {component!r}")
+            parts[self.position[component]] = by_table()[kind].read(
+                entry, f"component model {self.model.name!r}: [[{kind}]] {component!r}")
         return parts
 
     def design(self, values: Mapping[str, float]) -> Model:

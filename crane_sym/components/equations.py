@@ -31,9 +31,8 @@ from typing import Callable
 import numpy as np
 import sympy as sp
 
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
-from crane_sym.components.parts import Gear
+from crane_sym.components import kinds
+from crane_sym.components.kinds.base import ROLES
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 
@@ -64,7 +63,10 @@ class Equations:
     forces : generalized force of each coordinate
     lagrange : the equations of motion
     twists : u_k of each elastic link, in the coordinates
-    link_loads : the force (torque) of each elastic link, F_k = χ_k (c_k (u_k − δ_k) + d_k u̇_k)
+    link_loads : the force (torque) of each elastic link, derived from the energies,
+        F_k = ∂Π/∂u_k + ∂Φ/∂u̇_k (= χ_k (c_k (u_k − δ_k) + d_k u̇_k)), in the coordinates
+    link_laws : the same in each link's own stretch and rate (:attr:`stretches`)
+    stretches : the symbols (u_k, u̇_k) of each link's stretch and its rate
     contact, flank : χ_k and δ_k of the links with backlash (the others have χ = 1, δ = 0)
     switches : the ``on`` symbol of each motor
     friction : the signed friction B of each brake
@@ -92,6 +94,8 @@ class Equations:
     values: dict[sp.Symbol, float]
     slopes: tuple[sp.Symbol, ...] = ()
     signals: tuple[sp.Symbol, ...] = ()
+    link_laws: tuple[sp.Expr, ...] = ()
+    stretches: tuple[tuple[sp.Symbol, sp.Symbol], ...] = ()
     #: True for a design of a sweep (:meth:`for_design`): :meth:`numeric`
     #: evaluates the lambdified form shared by every design of the model.
     shared: bool = False
@@ -202,6 +206,38 @@ class Equations:
         design.__dict__["_lambdified"] = self._lambdified
         return design
 
+    @cached_property
+    def _link_coefficients(self) -> tuple[tuple[sp.Expr, sp.Expr, sp.Expr], ...]:
+        """Each link's load on a flank (χ = 1) as ∂F/∂u, ∂F/∂u̇ and ∂F/∂δ: it is
+        affine in the three (shared by every design of the model)."""
+        out = []
+        for k, (law, (u, rate)) in enumerate(zip(self.link_laws, self.stretches)):
+            on = law.xreplace({c: 1 for c in self.contact})
+            delta = self._flank_of(k)
+            out.append((sp.diff(on, u), sp.diff(on, rate),
+                        sp.diff(on, delta) if delta is not None else sp.Integer(0)))
+        return tuple(out)
+
+    def _flank_of(self, index: int) -> sp.Symbol | None:
+        name = self.assembly.links[index].part.name
+        return next((f for f in self.flank if f.name == f"delta_{name}"), None)
+
+    def link_coefficients(self, index: int, extra: dict | None = None
+                          ) -> tuple[float, float, float]:
+        """(a, b, e) of link ``index``'s load on a flank, F = a u + b u̇ + e δ,
+        in this model's values (and ``extra``): the derivatives of
+        ∂Π/∂u + ∂Φ/∂u̇, so the load a run reports is the one its energies give.
+
+        Parameters
+        ----------
+        index : int
+            The link's position among ``assembly.links``.
+        extra : dict, optional
+            Values solved later (a steady motor's torque).
+        """
+        values = {**self.values, **(extra or {})}
+        return tuple(float(c.xreplace(values)) for c in self._link_coefficients[index])
+
     def latex(self) -> list[str]:
         """The equations of motion in LaTeX, one per coordinate, as a mechanics
         text writes them (q̇, q̈; :func:`crane_sym.latex.latex`, with
@@ -212,8 +248,8 @@ class Equations:
 
 def parameter_values(assembly: Assembly) -> dict[sp.Symbol, float]:
     """Every parameter symbol of :func:`derive`'s equations with its SI value in
-    ``assembly`` (a steady motor's torque, solved later, left out): the one
-    place a part's value meets its symbol, for the model and for each design
+    ``assembly`` (a steady motor's torque, solved later, left out), as each
+    kind declares them (``Kind.symbols``), for the model and for each design
     of a sweep (:meth:`Equations.for_design`).
 
     Parameters
@@ -222,29 +258,13 @@ def parameter_values(assembly: Assembly) -> dict[sp.Symbol, float]:
         The assembled parts.
     """
     values: dict[sp.Symbol, float] = {}
-    for g in assembly.groups:
-        for body, _ in g.members:
-            values[_p(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}")] = body.inertia
-    for part in assembly.rigid:
-        if isinstance(part, Gear):
-            values[_p(f"i_{part.name}")] = part.ratio
-        else:
-            values[_p(f"r_{part.name}")] = part.radius
-            values[_p(f"n_{part.name}")] = part.reeving
-    for link in assembly.links:
-        name = link.part.name
-        values[_p(f"c_{name}")] = link.stiffness
-        values[sp.Symbol(f"d_{name}", nonnegative=True)] = link.damping
-    for load in assembly.loads:
-        part = load.part
-        if isinstance(part, Motor) and load.load is not None:
-            values[_r(f"M_{part.name}")] = load.load
-        elif isinstance(part, Gravity):
-            values[_p(f"g_{part.name}")] = part.g
-        elif isinstance(part, Resistance):
-            values[_r(f"R_{part.name}")] = load.load
-        elif isinstance(part, Characteristic):
-            values[_r(f"v0_{part.name}")] = load.values[0]
+    members = [body for g in assembly.groups for body, _ in g.members]
+    for item in (*members, *assembly.rigid, *assembly.links, *assembly.loads):
+        part = getattr(item, "part", item)
+        for declared in kinds.of(part).symbols:
+            v = declared.value(item)
+            if v is not None:                   # a steady motor's, solved at the start
+                values[declared.symbol(part.name)] = v
     return values
 
 
@@ -263,7 +283,7 @@ def derive(assembly: Assembly) -> Equations:
             J = _p(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}")
             T += J * (kappa * q.diff(t)) ** 2 / 2
     V = D = sp.Integer(0)
-    twists, loads, contact, flank = [], [], [], []
+    twists, stretches, contact, flank = [], [], [], []
     for link in assembly.links:
         name = link.part.name
         (ka, qa), (kb, qb) = (where[e] for e in link.part.ends)
@@ -274,44 +294,34 @@ def derive(assembly: Assembly) -> Equations:
             chi, delta = _r(f"chi_{name}"), _r(f"delta_{name}")
             contact.append(chi)
             flank.append(delta)
-        V += chi * c * (u - delta) ** 2 / 2
-        D += chi * d * u.diff(t) ** 2 / 2
+        s, rate = _r(f"u_{name}"), _r(f"udot_{name}")
+        V += chi * c * (s - delta) ** 2 / 2
+        D += chi * d * rate ** 2 / 2
         twists.append(u)
-        loads.append(chi * (c * (u - delta) + d * u.diff(t)))
+        stretches.append((s, rate))
+    # a link's load is what the energies give: F_k = ∂Π/∂u_k + ∂Φ/∂u̇_k
+    laws = [sp.factor_terms(sp.diff(V, s) + sp.diff(D, rate)) for s, rate in stretches]
+    back = {}
+    for (s, rate), u in zip(stretches, twists):
+        back.update({s: u, rate: u.diff(t)})
+    V, D = V.xreplace(back), D.xreplace(back)
+    loads = [F.xreplace(back) for F in laws]
     forces = {q: sp.Integer(0) for q in coords}
-    switches, friction, motors, slopes, signals = [], [], [], [], []
+    joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}
     acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
     balancing = None
     for load in assembly.loads:
         part = load.part
         kappa, q = where[part.body]
-        if isinstance(part, Motor):
-            on, M = _r(f"on_{part.name}"), _r(f"M_{part.name}")
-            switches.append(on)
-            motors.append(M)
-            F = on * M
-        elif isinstance(part, Gravity):
-            m, g = _p(f"m_{part.body}"), _p(f"g_{part.name}")
-            F = m * g * (1 if part.direction == "+" else -1)
-        elif isinstance(part, Resistance):
-            F = _r(f"R_{part.name}")
-        elif isinstance(part, Brake):
-            F = _r(f"B_{part.name}")
-            friction.append(F)
-        elif isinstance(part, Characteristic):
-            beta, v0 = _p(f"beta_{part.name}"), _r(f"v0_{part.name}")
-            slopes.append(beta)
-            F = beta * (v0 - kappa * q.diff(t))
-        elif isinstance(part, MotorLaw):
-            letter = {"torque": "L", "acceleration": "a", "speed": "T"}[part.law]
-            signals.append(_r(f"{letter}_{part.name}"))
-            if part.law == "acceleration":
-                balancing = (part, signals[-1])
-                continue
-            F = signals[-1]
-        if not isinstance(part, (Brake, Characteristic, MotorLaw)):
-            acting.append((part.body, F))
-        forces[q] += kappa * F
+        acts = kinds.of(part).acts(part, kappa, q)
+        for role, symbol in acts.joins:
+            joined[role].append(symbol)
+        if acts.force is None:                  # an acceleration law: see _rigid_drive
+            balancing = (part, acts.joins[-1][1])
+            continue
+        if acts.constant:
+            acting.append((part.body, acts.force))
+        forces[q] += kappa * acts.force
     if balancing is not None:
         part, a_law = balancing
         kappa, q = where[part.body]
@@ -319,8 +329,10 @@ def derive(assembly: Assembly) -> Equations:
     eqs = lagrange_equations(T, V, coords, t, forces, D)
     values = parameter_values(assembly)
     return Equations(assembly, tuple(coords), T, V, D, forces, eqs, tuple(twists),
-                     tuple(loads), tuple(contact), tuple(flank), tuple(switches),
-                     tuple(friction), tuple(motors), values, tuple(slopes), tuple(signals))
+                     tuple(loads), tuple(contact), tuple(flank), tuple(joined["switches"]),
+                     tuple(joined["friction"]), tuple(joined["motor_loads"]), values,
+                     tuple(joined["slopes"]), tuple(joined["signals"]), tuple(laws),
+                     tuple(stretches))
 
 
 def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,

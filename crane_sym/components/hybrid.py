@@ -327,6 +327,8 @@ class ComponentSystem:
         rate = np.roll(u, 1)                     # q̇ sits right after q
         rate[2 * self.n:] = 0.0
         position = [j for j, l in enumerate(self.backlash) if l is link]
+        # on a flank F = a u + b u̇ + e δ, from the energies (Equations.link_laws)
+        a, b, e = self.equations.link_coefficients(index, self.extra)
 
         def affine(mode: Mode) -> tuple[np.ndarray, float]:
             delta = 0.0
@@ -334,5 +336,5 @@ class ComponentSystem:
                 if mode.contacts[position[0]] == 0:
                     return np.zeros(self.size), 0.0
                 delta = self._flanks(mode.contacts)[1][position[0]]
-            return link.stiffness * u + link.damping * rate, -link.stiffness * delta
+            return a * u + b * rate, e * delta
         return affine

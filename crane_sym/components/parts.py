@@ -30,23 +30,32 @@ from sympy.physics.units import Dimension, force, length, mass, time
 from crane_sym import units
 
 __all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "ElasticLink", "Gear",
-           "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "Value", "value"]
+           "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "UNITS", "VALUE_KINDS",
+           "Value", "value"]
 
 ROTATING, TRANSLATING = "rotating", "translating"
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,39}")
 _ONE = Dimension(1)
 
-#: Dimension of each kind of value, by the kind of body it acts on.
-DIMENSIONS = {
-    "inertia": {ROTATING: mass * length**2},
-    "mass": {TRANSLATING: mass},
-    "stiffness": {ROTATING: force * length, TRANSLATING: force / length},
-    "damping": {ROTATING: force * length * time, TRANSLATING: force * time / length},
-    "backlash": {ROTATING: _ONE, TRANSLATING: length},
-    "load": {ROTATING: force * length, TRANSLATING: force},
-    "speed": {ROTATING: 1 / time, TRANSLATING: length / time},
-    "acceleration": {ROTATING: 1 / time**2, TRANSLATING: length / time**2},
+#: Each kind of value a component holds: its dimension and SI unit by the kind
+#: of body it acts on. The one table of them: :data:`DIMENSIONS` and
+#: :data:`UNITS` are its two columns, and a kind's keys
+#: (:mod:`crane_sym.components.kinds`) name its rows.
+VALUE_KINDS: dict[str, dict[str, tuple[Dimension, str]]] = {
+    "inertia": {ROTATING: (mass * length**2, "kg*m^2")},
+    "mass": {TRANSLATING: (mass, "kg")},
+    "stiffness": {ROTATING: (force * length, "N*m/rad"), TRANSLATING: (force / length, "N/m")},
+    "damping": {ROTATING: (force * length * time, "N*m*s/rad"),
+                TRANSLATING: (force * time / length, "N*s/m")},
+    "backlash": {ROTATING: (_ONE, "rad"), TRANSLATING: (length, "m")},
+    "load": {ROTATING: (force * length, "N*m"), TRANSLATING: (force, "N")},
+    "speed": {ROTATING: (1 / time, "rad/s"), TRANSLATING: (length / time, "m/s")},
+    "acceleration": {ROTATING: (1 / time**2, "rad/s^2"), TRANSLATING: (length / time**2, "m/s^2")},
 }
+#: Dimension of each kind of value, by the kind of body it acts on.
+DIMENSIONS = {k: {motion: d for motion, (d, _) in by.items()} for k, by in VALUE_KINDS.items()}
+#: SI unit of each kind of value, by the kind of body it acts on.
+UNITS = {k: {motion: u for motion, (_, u) in by.items()} for k, by in VALUE_KINDS.items()}
 
 
 class ComponentError(ValueError):

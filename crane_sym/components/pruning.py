@@ -17,15 +17,15 @@ be is a load that provably does nothing over [0, duration] from the run's start:
 Each is the same system with fewer modes and states: its links' loads are the
 full model's (tests/test_components_pruning.py). A pruned model remembers the
 run it was pruned for and refuses a longer one, or a steady start where it was
-pruned for a start at rest (:class:`Scope`).
+pruned for a start at rest (:class:`Scope`). Each kind says when its part is
+idle (``Kind.idle``, in its module of :mod:`crane_sym.components.kinds`).
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
 from typing import Sequence
 
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Brake, Gravity, Motor, Resistance
+from crane_sym.components import kinds
 from crane_sym.components.parts import Component
 
 __all__ = ["Dropped", "Scope", "needed"]
@@ -54,25 +54,9 @@ class Scope:
 
 
 def _why(part: Component, duration: float, rest: bool) -> str | None:
-    """Why ``part`` does nothing over [0, duration], or None."""
-    end = f"the run ends at {duration:g} s"
-    if isinstance(part, Brake) and part.delay >= duration:
-        return f"it engages at t = {part.delay:g} s, and {end}"
-    if isinstance(part, Motor) and part.load is not None:
-        if part.load.si == 0:
-            return "its torque is 0"
-        if rest and part.off_at == 0:
-            return "it is switched off at t = 0 and the run starts at rest"
-    if isinstance(part, Resistance) and part.load.si == 0:
-        return "its load is 0"
-    if isinstance(part, Gravity) and part.g == 0:
-        return "g is 0"
-    if isinstance(part, MotorLaw) and part.law == "torque":
-        if all(c == 0 for row in part.coefficients for c in row):
-            return "its law is 0 throughout"
-        if part.breakpoints[0] >= duration:
-            return f"its law starts at t = {float(part.breakpoints[0]):g} s, and {end}"
-    return None
+    """Why ``part`` does nothing over [0, duration], or None: its kind says."""
+    idle = kinds.of(part).idle
+    return None if idle is None else idle(part, duration, rest)
 
 
 def needed(components: Sequence[Component], duration: float,

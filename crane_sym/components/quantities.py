@@ -39,29 +39,19 @@ from dataclasses import dataclass
 from typing import Any
 
 import sympy as sp
-from sympy.physics.units import Dimension, length, time
+from sympy.physics.units import Dimension, time
 
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
+from crane_sym.components import kinds
+from crane_sym.components.kinds.base import FIXED_UNITS, Key
+from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, ComponentError, Drum,
-                                        Gear, value)
+from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS, ComponentError, value
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
            "signed", "static_loads", "switching_values"]
 
 _ONE = Dimension(1)
-#: SI unit of each kind of value, by the kind of body it acts on.
-UNITS = {"inertia": {ROTATING: "kg*m^2", TRANSLATING: "kg"},
-         "mass": {TRANSLATING: "kg"},
-         "stiffness": {ROTATING: "N*m/rad", TRANSLATING: "N/m"},
-         "damping": {ROTATING: "N*m*s/rad", TRANSLATING: "N*s/m"},
-         "load": {ROTATING: "N*m", TRANSLATING: "N"},
-         "speed": {ROTATING: "rad/s", TRANSLATING: "m/s"}}
-#: SI unit of a motor law's values, by its kind and the body's motion.
-LAW_UNITS = {"torque": UNITS["load"], "speed": UNITS["speed"],
-             "acceleration": {ROTATING: "rad/s^2", TRANSLATING: "m/s^2"}}
 #: What a quantity of each name is, and the kind of component it belongs to.
 KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
          "static": ("link", "its load in the steady motion at the start"),
@@ -121,39 +111,32 @@ def parameters(model: Model, start: tuple[str | None, Any] | None = None
         if s is not None:
             out[path] = Parameter(path, twins.get(s, s), float(eq.values.get(s, float("nan"))),
                                   dimension, unit, what)
-    for body in a.bodies.values():
-        key = "inertia" if body.motion == ROTATING else "mass"
-        add(f"{body.name}.{key}", f"{'J' if key == 'inertia' else 'm'}_{body.name}",
-            DIMENSIONS[key][body.motion], UNITS[key][body.motion],
-            f"{'moment of inertia' if key == 'inertia' else 'mass'} of {body.name}")
-    for part in a.rigid:
-        if isinstance(part, Gear):
-            add(f"{part.name}.ratio", f"i_{part.name}", _ONE, "1", f"ratio of the gear {part.name}")
-        elif isinstance(part, Drum):
-            add(f"{part.name}.radius", f"r_{part.name}", length, "m", f"radius of the drum {part.name}")
-            add(f"{part.name}.reeving", f"n_{part.name}", _ONE, "1", f"reeving (rope falls) of the drum {part.name}")
-    for link in a.links:
-        motion = a.bodies[link.part.first].motion
-        for key, letter in (("stiffness", "c"), ("damping", "d")):
-            add(f"{link.part.name}.{key}", f"{letter}_{link.part.name}",
-                DIMENSIONS[key][motion], UNITS[key][motion], f"{key} of the elastic link {link.part.name}")
-    for load in a.loads:
-        part, motion = load.part, a.bodies[load.part.body].motion
-        word = "torque" if motion == ROTATING else "force"
-        if isinstance(part, Gravity):
-            add(f"{part.name}.g", f"g_{part.name}", length / time**2, "m/s^2",
-                f"acceleration of the gravity {part.name} on {part.body}")
-        elif isinstance(part, Resistance):
-            add(f"{part.name}.{word}", f"R_{part.name}", DIMENSIONS["load"][motion],
-                UNITS["load"][motion], f"{word} of the resistance {part.name} on {part.body}")
-        elif isinstance(part, Motor):
-            add(f"{part.name}.{word}", f"M_{part.name}", DIMENSIONS["load"][motion],
-                UNITS["load"][motion], f"{word} of the motor {part.name} on {part.body}"
-                + (" (steady: solved at the start)" if load.load is None else ""))
-        elif isinstance(part, Characteristic):
-            add(f"{part.name}.speed", f"v0_{part.name}", DIMENSIONS["speed"][motion],
-                UNITS["speed"][motion], f"no-load speed of the characteristic {part.name}")
+    for item in (*a.bodies.values(), *a.rigid, *a.links, *a.loads):
+        part = getattr(item, "part", item)
+        kind = kinds.of(part)
+        for declared in kind.symbols:
+            dimension, unit, key = _dimension(a, kind.key(declared.key), part)
+            what = declared.what.format(name=part.name, body=getattr(part, "body", ""), key=key)
+            add(f"{part.name}.{key}", declared.symbol(part.name).name, dimension, unit,
+                what + (" (steady: solved at the start)" if declared.value(item) is None else ""))
     return out | switching_values(model) | (_run_speed(model, *start) if start else {})
+
+
+def _dimension(a, key: Key, part) -> tuple[Dimension, str, str]:
+    """The dimension and SI unit of a part's ``key`` and the key's name on its
+    body: a kind of value by the body's motion (``torque`` is ``force`` on a
+    translating body), or the fixed dimension the key declares."""
+    if not isinstance(key.value, str):
+        return key.value, FIXED_UNITS[key.value], key.name
+    motion = _motion(a, part)
+    name = "force" if key.name == "torque" and motion != ROTATING else key.name
+    return DIMENSIONS[key.value][motion], UNITS[key.value][motion], name
+
+
+def _motion(a, part) -> str:
+    """The motion of the body a part is, acts on, or (a link) starts at."""
+    body = part.name if part.name in a.bodies else getattr(part, "body", None) or part.ends[0]
+    return a.bodies[body].motion
 
 
 def _run_speed(model: Model, body: str | None, speed: Any) -> dict[str, Parameter]:
@@ -185,27 +168,12 @@ def switching_values(model: Model) -> dict[str, Parameter]:
     def add(path: str, value: float, dimension: Dimension, unit: str, what: str) -> None:
         symbol = sp.Symbol("value_" + path.replace(".", "_"), nonnegative=True)
         out[path] = Parameter(path, symbol, float(value), dimension, unit, what)
-    for link in a.links:
-        motion = a.bodies[link.part.first].motion
-        add(f"{link.part.name}.backlash", link.part.backlash.si,
-            DIMENSIONS["backlash"][motion], "rad" if motion == ROTATING else "m",
-            f"backlash (gap) of the elastic link {link.part.name}")
-    for load in a.loads:
-        part, motion = load.part, a.bodies[load.part.body].motion
-        if isinstance(part, Brake):
-            word = "torque" if motion == ROTATING else "force"
-            add(f"{part.name}.{word}", part.load.si, DIMENSIONS["load"][motion],
-                UNITS["load"][motion], f"{word} of the brake {part.name}")
-            add(f"{part.name}.delay", part.delay, time, "s", f"delay of the brake {part.name}")
-        elif isinstance(part, MotorLaw):
-            # breakpoint k (from 1) in s, and the law's value where piece k starts
-            unit = LAW_UNITS[part.law][motion]
-            for k, b in enumerate(part.breakpoints, start=1):
-                add(f"{part.name}.time_{k}", float(b), time, "s",
-                    f"breakpoint {k} of the motor law {part.name}")
-            for k, row in enumerate(part.coefficients, start=1):
-                add(f"{part.name}.value_{k}", float(row[0]), part.dimension, unit,
-                    f"value of the motor law {part.name} at its breakpoint {k}")
+    for item in (*a.links, *a.loads):
+        switching = kinds.of(item.part).switching
+        if switching is None:
+            continue
+        for key, v, dimension, unit, what in switching(item.part, _motion(a, item.part)):
+            add(f"{item.part.name}.{key}", v, dimension, unit, what)
     return out
 
 

@@ -105,43 +105,18 @@ from pathlib import Path
 from typing import Any
 
 from crane_sym.components.formulas import read_formulas
-from crane_sym.components.laws import MotorLaw
+from crane_sym.components.kinds import Key, by_table
 from crane_sym.components.model import Model
 from crane_sym.components.model_limits import check_counts
-from crane_sym.components.loads import Brake, Characteristic, Gravity, Motor, Resistance
-from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
+from crane_sym.components.parts import ComponentError
 from crane_sym.scenes.fields import toml_reason
 from crane_sym.scenes.options import did_you_mean
 
 __all__ = ["ComponentFile", "ComponentParts", "is_component_file", "read_component_file",
            "read_parts"]
 
-#: Each table of components: its keys (required first, then optional) and its builder.
-TABLES: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
-    "inertia": (("name", "inertia"), ()),
-    "mass": (("name", "mass"), ()),
-    "gear": (("name", "input", "output", "ratio"), ()),
-    "drum": (("name", "drum", "load", "radius"), ("reeving",)),
-    "elastic": (("name", "between", "stiffness"), ("damping", "backlash", "contact",
-                                                    "reference", "positive")),
-    "brake": (("name", "body"), ("torque", "force", "delay", "build_up", "time")),
-    "motor": (("name", "body"), ("torque", "force", "off_at")),
-    "characteristic": (("name", "body", "speed", "slopes"), ("holds",)),
-    "motor_law": (("name", "body", "law", "unit", "breakpoints", "coefficients"),
-                  ("time_unit",)),
-    "gravity": (("name", "body"), ("g", "direction")),
-    "resistance": (("name", "body"), ("torque", "force")),
-}
-#: Keys that may be bare numbers (dimensionless).
-NUMBERS = ("ratio", "reeving")
-#: Keys that are names or choices, not quantities.
-WORDS = ("name", "input", "output", "drum", "load", "body", "contact", "build_up", "direction",
-         "law", "unit", "time_unit")
-#: Keys whose numbers the law reader checks (numbers only, never text).
-LAW_NUMBERS = ("breakpoints", "coefficients")
 MODEL_KEYS, RUN_KEYS = ("name", "title"), ("duration", "start", "body", "speed")
-#: Keys that are lists of quantities.
-LISTS = ("slopes", "holds")
+_RUN_BODY = Key("body", "word")
 _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
 
 
@@ -189,72 +164,6 @@ def _keys(table: dict, known: tuple[str, ...], where: str, what: str = "key") ->
                                  f"{did_you_mean(key, known)}expected {', '.join(known)}")
 
 
-def _given(entry: dict, key: str, where: str) -> Any:
-    """A value of an entry: text (a word or a quantity), a bare number only
-    where it is dimensionless."""
-    v = entry[key]
-    if key in LAW_NUMBERS:
-        return v
-    if key in LISTS:
-        if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
-            raise ComponentError(f"{where}: {key} must be a list of values with their units "
-                                 f"as text, e.g. [\"0.4 s\", \"0.8 s\"], got {v!r}")
-        return v
-    if key in WORDS:
-        if not isinstance(v, str):
-            raise ComponentError(f"{where}: {key} must be text, got {v!r}")
-        return v
-    if key in NUMBERS and isinstance(v, (int, float)) and not isinstance(v, bool):
-        return v
-    if not isinstance(v, str):
-        raise ComponentError(f"{where}: {key} needs a value with its unit as text, e.g. "
-                             f"{key} = \"0.1 s\", got {v!r}")
-    return v
-
-
-def _load_key(entry: dict, where: str, optional: bool = False) -> str | None:
-    given = [k for k in ("torque", "force") if k in entry]
-    if len(given) > 1:
-        raise ComponentError(f"{where}: give torque or force, not both")
-    if not given and not optional:
-        raise ComponentError(f"{where}: lacks 'torque' (on a rotating body) or 'force' "
-                             "(on a translating one)")
-    return given[0] if given else None
-
-
-def _build(kind: str, entry: dict, where: str):
-    g = {k: _given(entry, k, where) for k in entry if k != "between"}
-    if kind == "inertia":
-        return Inertia(g["name"], g["inertia"])
-    if kind == "mass":
-        return Mass(g["name"], g["mass"])
-    if kind == "gear":
-        return Gear(g["name"], g["input"], g["output"], g["ratio"])
-    if kind == "drum":
-        return Drum(g["name"], g["drum"], g["load"], g["radius"], g.get("reeving", 1))
-    if kind == "elastic":
-        ends = entry["between"]
-        if not (isinstance(ends, list) and len(ends) == 2 and all(isinstance(e, str)
-                                                                  for e in ends)):
-            raise ComponentError(f"{where}: between must be two body names, got {ends!r}")
-        return ElasticLink(g["name"], ends[0], ends[1], g["stiffness"], g.get("damping", 0.0),
-                           g.get("backlash", 0.0), g.get("contact", "positive"),
-                           g.get("reference"), g.get("positive"))
-    if kind == "brake":
-        return Brake(g["name"], g["body"], g[_load_key(entry, where)], g.get("delay", 0.0),
-                     g.get("build_up", "step"), g.get("time", 0.0))
-    if kind == "motor":
-        return Motor(g["name"], g["body"], g[_load_key(entry, where)], g.get("off_at"))
-    if kind == "characteristic":
-        return Characteristic(g["name"], g["body"], g["speed"], g["slopes"], g.get("holds", []))
-    if kind == "motor_law":
-        return MotorLaw(g["name"], g["body"], g["breakpoints"], g["coefficients"], g["unit"],
-                        g["law"], g.get("time_unit", "s"))
-    if kind == "gravity":
-        return Gravity(g["name"], g["body"], g.get("g", "9.81 m/s^2"), g.get("direction", "+"))
-    return Resistance(g["name"], g["body"], g[_load_key(entry, where)])
-
-
 @dataclass(frozen=True)
 class ComponentParts:
     """A component file read and checked, its model not yet derived."""
@@ -288,7 +197,8 @@ def read_component_file(path: str | Path) -> ComponentFile:
     formulas = read_formulas(read.data.get("formula", []), model, where_file,
                              (read.body, read.speed))
     return ComponentFile(model, read.duration, read.body, read.speed, read.path, read.rest,
-                         formulas, {k: read.data.get(k, []) for k in TABLES}, tuple(read.parts))
+                         formulas, {k: read.data.get(k, []) for k in by_table()},
+                         tuple(read.parts))
 
 
 def read_parts(path: str | Path) -> ComponentParts:
@@ -308,7 +218,8 @@ def read_parts(path: str | Path) -> ComponentParts:
         data = tomllib.loads(p.read_text(encoding="utf-8"))
     except (tomllib.TOMLDecodeError, UnicodeDecodeError, RecursionError) as exc:
         raise ComponentError(f"{p.name}: not valid TOML: {toml_reason(exc)}") from None
-    tables = ("model", "run", "formula", *TABLES)
+    kinds = by_table()
+    tables = ("model", "run", "formula", *kinds)
     _keys(data, tables, f"component file {p.name!r}", "table")
     head = data.get("model")
     if not isinstance(head, dict):
@@ -320,18 +231,18 @@ def read_parts(path: str | Path) -> ComponentParts:
                              f"digits, '_' or '-', got {name!r}")
     where_file = f"component model {name!r}"
     parts = []
-    for kind, (required, optional) in TABLES.items():
+    for kind, declared in kinds.items():
         entries = data.get(kind, [])
         if not isinstance(entries, list) or not all(isinstance(e, dict) for e in entries):
             raise ComponentError(f"{where_file}: [[{kind}]] must be an array of tables "
                                  f"(write [[{kind}]], not [{kind}])")
         for number, entry in enumerate(entries, 1):
             where = f"{where_file}: [[{kind}]] {entry.get('name', f'number {number}')!r}"
-            _keys(entry, required + optional, where)
-            missing = [k for k in required if k not in entry]
+            _keys(entry, declared.required + declared.optional, where)
+            missing = [k for k in declared.required if k not in entry]
             if missing:
                 raise ComponentError(f"{where}: lacks {', '.join(map(repr, missing))}")
-            parts.append(_build(kind, entry, where))
+            parts.append(declared.read(entry, where))
     check_counts(parts, where_file)
     run = data.get("run", {})
     if not isinstance(run, dict):
@@ -339,7 +250,7 @@ def read_parts(path: str | Path) -> ComponentParts:
     _keys(run, RUN_KEYS, f"{where_file}: [run]")
     if "duration" not in run:
         raise ComponentError(f"{where_file}: [run] lacks 'duration', e.g. duration = \"1 s\"")
-    settings = {k: _given(run, k, f"{where_file}: [run]") if k == "body" else run[k]
+    settings = {k: _RUN_BODY.given(run[k], f"{where_file}: [run]") if k == "body" else run[k]
                 for k in run}
     start = run.get("start", "steady")
     if start not in ("steady", "rest"):

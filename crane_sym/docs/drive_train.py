@@ -20,10 +20,11 @@ import re
 from pathlib import Path
 
 from crane_sym.components.hybrid import BACKWARD, FORWARD, HELD, ComponentSystem, Mode
+from crane_sym.components.kinds import by_table
 from crane_sym.components.model import ComponentRun
 from crane_sym.components.parts import ComponentError
 from crane_sym.components.quantities import derived_quantity, parameters, static_loads
-from crane_sym.components.reading import TABLES, ComponentFile, read_component_file
+from crane_sym.components.reading import ComponentFile, read_component_file
 from crane_sym.docs.numbers import math_errors
 from crane_sym.docs.rows import aligned_rows, column_blocks, sum_terms
 from crane_sym.docs.walkthrough import _display, _math_cell
@@ -37,7 +38,6 @@ __all__ = ["drive_train_page", "drive_train_walkthrough", "render"]
 MATRIX_DIGITS = 4
 #: Significant digits of event times.
 TIME_DIGITS = 9
-_WHERE = {"gear": ("input", "output"), "drum": ("drum", "load")}
 
 
 class _Markup(str):
@@ -78,12 +78,14 @@ def _symbol(p, model) -> str:
 
 
 def _connects(kind: str, entry: dict) -> str:
-    if kind == "elastic":
-        return " – ".join(entry.get("between", []))
-    if kind in _WHERE:
-        a, b = _WHERE[kind]
-        return f"{entry.get(a, '')} → {entry.get(b, '')}"
-    return entry.get("body", "—")
+    keys = by_table()[kind].places
+    if not keys:
+        return "—"
+    if keys[0].form == "ends":
+        return " – ".join(entry.get(keys[0].name, []))
+    if len(keys) == 2:
+        return f"{entry.get(keys[0].name, '')} → {entry.get(keys[1].name, '')}"
+    return entry.get(keys[0].name, "—")
 
 
 def _value_text(v) -> str:
@@ -92,11 +94,11 @@ def _value_text(v) -> str:
 
 def _components(read: ComponentFile) -> str:
     rows = []
-    for kind in TABLES:
+    for kind in by_table():
         for entry in read.tables.get(kind, []):
+            places = {k.name for k in by_table()[kind].places}
             values = "; ".join(f"{k} = {_value_text(v)}" for k, v in entry.items()
-                               if k not in ("name", "between", "body", "input", "output",
-                                            "drum", "load"))
+                               if k != "name" and k not in places)
             rows.append([entry.get("name", ""), kind, _connects(kind, entry), values or "—"])
     return _table(["component", "kind", "joins / acts on", "values as written"], rows)
 

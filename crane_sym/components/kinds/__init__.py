@@ -1,0 +1,39 @@
+"""The kinds of component, each declared once in its own module: its TOML
+table, its keys (form, kind of value, sign, default) and how its part is
+built. Reading a component file, the fields a design sweep varies and the
+walkthrough's table of components loop over :data:`KINDS`.
+
+May import: the rest of ``components`` below the reader (``parts``,
+``loads``, ``laws``) and the top-level vocabulary; never ``reading``,
+``designs`` or what imports them.
+"""
+from crane_sym.components.kinds import (brake, characteristic, drum, elastic, gear, gravity,
+                                        inertia, mass, motor, motor_law, resistance)
+from crane_sym.components.kinds.base import Key, Kind
+
+from crane_sym.components.parts import Component
+
+__all__ = ["KINDS", "Key", "Kind", "by_table", "of"]
+
+#: Every kind, in the order a component file's tables are read.
+KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, brake, motor,
+                                      characteristic, motor_law, gravity, resistance)]
+
+
+def by_table() -> dict[str, Kind]:
+    """Each kind by its table name, from :data:`KINDS` as it is now."""
+    return {k.table: k for k in KINDS}
+
+
+def of(part: Component) -> Kind:
+    """The kind of ``part`` (by its ``kind``: ``gear``, ``elastic link``).
+
+    Parameters
+    ----------
+    part : Component
+        A part of a model.
+    """
+    for kind in KINDS:
+        if kind.part_kind == part.kind:
+            return kind
+    raise KeyError(f"no kind declares parts of kind {part.kind!r}")

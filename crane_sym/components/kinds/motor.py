@@ -1,0 +1,35 @@
+"""``[[motor]]``: a constant (or ``steady``) torque on a body, optionally switched off."""
+import sympy as sp
+from sympy.physics.units import time
+
+from crane_sym.components.kinds.base import Acting, Key, Kind, Symbolic, load_key
+from crane_sym.components.loads import Motor
+
+
+def _idle(part: Motor, duration: float, rest: bool) -> str | None:
+    if part.load is not None:
+        if part.load.si == 0:
+            return "its torque is 0"
+        if rest and part.off_at == 0:
+            return "it is switched off at t = 0 and the run starts at rest"
+    return None
+
+
+TORQUE = Symbolic("torque", "M", "real", lambda load: load.load,
+                  "{key} of the motor {name} on {body}")
+
+
+def _acts(part: Motor, kappa: sp.Expr, q: sp.Expr) -> Acting:
+    """on·M: its torque while switched on."""
+    on, M = sp.Symbol(f"on_{part.name}", real=True), TORQUE.symbol(part.name)
+    return Acting(on * M, (("switches", on), ("motor_loads", M)), constant=True)
+
+
+KIND = Kind("motor", (Key("name", "word"), Key("body", "body"),
+                      Key("torque", value="load", sign="positive", required=False),
+                      Key("force", value="load", sign="positive", required=False),
+                      Key("off_at", value=time, sign="nonnegative", required=False)),
+            lambda g, entry, where: Motor(g["name"], g["body"], g[load_key(entry, where)],
+                                          g["off_at"]),
+            "a motor's constant or steady torque on a body", idle=_idle,
+            symbols=(TORQUE,), acts=_acts)
