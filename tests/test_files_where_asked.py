@@ -52,6 +52,24 @@ def test_bench_without_out_prints_and_writes_nothing(tmp_path, monkeypatch, caps
     assert out.strip().splitlines()[-1].startswith("no files written: add --out DIR")
 
 
+def test_bench_components_json_prints_the_rows_and_writes_nothing(tmp_path, monkeypatch,
+                                                                   capsys):
+    """`bench --components FILE --format json`: stdout is the JSON of the model's
+    stages and targets (it was empty), the hint on stderr, no file."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["bench", "--components", str(EXAMPLES / "hoist_fig9.toml"), "--format",
+                 "json", "-q"]) == 0
+    captured = capsys.readouterr()
+    (row,) = json.loads(captured.out)
+    assert row["model"] == "hoist_fig9" and row["phases"] >= 30
+    assert row["stages_seconds"] and all(s >= 0 for s in row["stages_seconds"].values())
+    assert [t["target"] for t in row["targets"]] == ["derive and solve (s)",
+                                                      "run of >= 30 phases (s)"]
+    assert list(tmp_path.iterdir()) == []
+    assert captured.err.strip() == ("no files written: add --out DIR to write the Markdown "
+                                    "and PNG files")
+
+
 def test_walkthrough_without_o_prints_and_writes_nothing(tmp_path, monkeypatch, capsys):
     monkeypatch.chdir(tmp_path)
     assert main(["walkthrough", str(EXAMPLES / "hoist_fig9.toml"), "-q"]) == 0

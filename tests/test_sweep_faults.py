@@ -395,3 +395,18 @@ def test_a_sweep_prints_its_estimate_before_it_starts(tmp_path, capsys):
     assert main([*base, "--out", str(tmp_path / "fine")]) == 0
     assert re.fullmatch(ESTIMATE, capsys.readouterr().err.splitlines()[0])
     assert (tmp_path / "fine" / f"{SCENE}_sweep.zarr").is_dir()
+
+
+def test_certify_of_a_component_file_is_one_line_naming_it(tmp_path, capsys):
+    """`sweep FILE --certify`: its outputs are a hybrid run's, with no interval
+    enclosure; one line naming --certify and the output (it said "unknown
+    derivation" with the file's path), before the estimate's pilot, nothing written."""
+    out = tmp_path / "out"
+    assert main(["sweep", str(FIG9), "--vary", "gearbox_mesh.stiffness=2e4:8e4:3",
+                 "--output", "gearbox_mesh.peak", "--certify", "--out", str(out)]) == 2
+    err = capsys.readouterr().err
+    assert re.fullmatch(r"crane-sym: error: --certify: gearbox_mesh\.peak is a hybrid run "
+                        r"\(phases that end at events found numerically\): .*; certify a "
+                        r"paper's closed-form output \(a component file's outputs are all "
+                        r"hybrid\)\n", err), err
+    assert not out.exists()
