@@ -374,8 +374,7 @@ def test_a_million_designs_of_a_component_file_are_estimated_and_refused(tmp_pat
             "--out", str(out)]
     assert main([*argv, "--quiet"]) == 2
     alone = capsys.readouterr().err.splitlines()
-    # other pilot values: a block once solved is cached in this process
-    assert main([a.replace("160:1000", "161:1000") for a in argv]) == 2
+    assert main(argv) == 2          # the same pilot again: solved afresh, not looked up
     estimate, error = capsys.readouterr().err.splitlines()
     assert len(alone) == 1 and alone[0].startswith("crane-sym: error: --time-limit 900: ")
     assert re.fullmatch(ESTIMATE.replace("[0-9.e+]+ designs", "1e\\+06 designs"), estimate)
@@ -410,3 +409,32 @@ def test_certify_of_a_component_file_is_one_line_naming_it(tmp_path, capsys):
                         r"paper's closed-form output \(a component file's outputs are all "
                         r"hybrid\)\n", err), err
     assert not out.exists()
+
+
+def test_the_pilot_solves_afresh_what_the_process_has_solved_before(monkeypatch):
+    """A block a sweep solved is kept in the process and handed out again; the
+    estimate's pilot must time a solve, not that look-up: with its blocks
+    already kept, they are solved again (Designs.largest called for the
+    warm-up and the timed block), and the pilot keeps nothing."""
+    from crane_sym.components import designs
+    from crane_sym.sweep.component_plan import plan_file
+    from crane_sym.sweep.estimate import estimate
+    chosen = plan_file(str(FIG9), ["gearbox_mesh.stiffness=2e4:8e4:3"], ["gearbox_mesh.peak"],
+                       [], None)
+    solved = []
+    real = designs.Designs.largest
+
+    def counted(self, output, values):
+        solved.append(output)
+        return real(self, output, values)
+    monkeypatch.setattr(designs.Designs, "largest", counted)
+    path, digest = chosen.options["component_file"], chosen.options["digest"]
+    axis = chosen.axes[0].si()
+    for block in (axis[:1], axis):          # the pilot's blocks, as a sweep keeps them
+        designs.evaluate_block(path, digest, "gearbox_mesh.peak",
+                               {"gearbox_mesh.stiffness": block})
+    assert len(solved) == 2
+    kept = set(designs._SOLVED)
+    found = estimate(chosen)
+    assert len(solved) == 4 and found.per_design > 0
+    assert set(designs._SOLVED) == kept
