@@ -22,6 +22,9 @@ from crane_sym import output_files
 from crane_sym.cli.main import Terminated, main
 from crane_sym.scenes.reading import scene_path
 
+#: The harm these cases guard against (tests/fault_counts.py counts them).
+pytestmark = pytest.mark.harm("one-line")
+
 
 @dataclass(frozen=True)
 class Fault:
@@ -227,6 +230,7 @@ def test_fault(case, tmp_path, monkeypatch, capsys):
         assert not folder.exists() or list(folder.iterdir()) == [], sorted(folder.iterdir())
 
 
+@pytest.mark.harm("writes")
 @pytest.mark.parametrize("name,argv", [
     ("scene_overhead_crane_50t.py", lambda t: ["generate", "--scene", RUN, "--out",
                                                str(t / "out")]),

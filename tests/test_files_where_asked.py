@@ -6,6 +6,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from crane_sym.cli.main import main
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"
@@ -52,6 +54,7 @@ def test_bench_without_out_prints_and_writes_nothing(tmp_path, monkeypatch, caps
     assert out.strip().splitlines()[-1].startswith("no files written: add --out DIR")
 
 
+@pytest.mark.harm("one-line")      # it ended in nothing at all, not in its result
 def test_bench_components_json_prints_the_rows_and_writes_nothing(tmp_path, monkeypatch,
                                                                    capsys):
     """`bench --components FILE --format json`: stdout is the JSON of the model's

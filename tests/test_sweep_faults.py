@@ -31,6 +31,9 @@ SCENE = "overhead_crane_50t"
 SLOW = ["--vary", "m1=1:100:2000:log", "--vary", "P_t=5:50:2000", "--output", "elastic_force",
         "--at", "t=0:1.5:11", "--chunk-mib", "1"]
 
+#: The harm these cases guard against (tests/fault_counts.py counts them).
+pytestmark = pytest.mark.harm("one-line")
+
 
 def _opens(folder: Path) -> list[Path]:
     """Every folder at or below ``folder`` (hidden ones too) that
@@ -340,6 +343,7 @@ def test_out_an_existing_file_or_a_folder_not_writable(tmp_path, capsys, monkeyp
     assert afile.read_text() == "keep" and list(locked.iterdir()) == []
 
 
+@pytest.mark.harm("bounds")
 def test_grid_size_is_checked_against_memory_and_blocks_before_any_work(monkeypatch):
     import psutil
     chosen = plan(load_scene(SCENE), ["m1=1:100:100000000", "P_t=5:50:3"],
@@ -364,6 +368,7 @@ ESTIMATE = (r"estimate: [0-9.e+]+ designs x 1 output\(s\) on \d+ worker\(s\): ab
             r"[0-9.e+-]+ s to start\)")
 
 
+@pytest.mark.harm("bounds")
 def test_a_million_designs_of_a_component_file_are_estimated_and_refused(tmp_path, capsys):
     """10^6 designs of the Fig. 9 hoist (each a run of its own) under the
     default --time-limit: the estimate first, then one line, nothing written;
@@ -384,6 +389,7 @@ def test_a_million_designs_of_a_component_file_are_estimated_and_refused(tmp_pat
     assert not out.exists()
 
 
+@pytest.mark.harm("bounds")
 def test_a_sweep_prints_its_estimate_before_it_starts(tmp_path, capsys):
     base = ["sweep", SCENE, "--vary", "m1=1:100:20", "--output", "peak_elastic_force"]
     assert main([*base, "--out", str(tmp_path / "slow"), "--time-limit", "1e-9"]) == 2
@@ -411,6 +417,7 @@ def test_certify_of_a_component_file_is_one_line_naming_it(tmp_path, capsys):
     assert not out.exists()
 
 
+@pytest.mark.harm("bounds")
 def test_the_pilot_solves_afresh_what_the_process_has_solved_before(monkeypatch):
     """A block a sweep solved is kept in the process and handed out again; the
     estimate's pilot must time a solve, not that look-up: with its blocks
