@@ -1,5 +1,5 @@
 import sys
 
-from crane_sym.cli.main import main
+from crane_sym.cli.start import main
 
 sys.exit(main())

@@ -140,6 +140,27 @@ def test_a_bad_file_is_one_line_and_writes_nothing(tmp_path, capsys):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.toml"]
 
 
+@pytest.mark.parametrize("form", ["markdown", "html"])
+def test_an_audit_that_fails_ends_the_walkthrough_as_it_ends_audit(form, tmp_path, capsys,
+                                                                   monkeypatch):
+    """A page is not written with its formulas "not audited": when the file's audit
+    fails (the file's fault, not a formula's), the walkthrough ends as `audit FILE`
+    does, on the same one line, exit 2, nothing written."""
+    import crane_sym.components.file_audit as file_audit
+
+    def failing(read):
+        raise file_audit.ComponentError(f"{read.path.name}: the audit failed here")
+    monkeypatch.setattr(file_audit, "audit_file", failing)
+    out = tmp_path / "page.out"
+    assert main(["audit", str(FILES[1]), "--quiet"]) == 2
+    said = capsys.readouterr().err
+    assert main(["walkthrough", str(FILES[1]), "--format", form, "-o", str(out),
+                 "--quiet"]) == 2
+    err = capsys.readouterr().err
+    assert err == said == "crane-sym: error: hoist_rope_stretch.toml: the audit failed here\n"
+    assert list(tmp_path.iterdir()) == []
+
+
 def test_a_law_in_time_is_named_and_its_clock_is_in_the_state():
     """002's acceleration law (degree 1): its symbol is in the table of symbols
     with its unit, its one clock state w_1 = τ closes the state vector, and

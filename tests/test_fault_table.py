@@ -22,6 +22,9 @@ from crane_sym import output_files
 from crane_sym.cli.main import Terminated, main
 from crane_sym.scenes.reading import scene_path
 
+#: The harm these cases guard against (tests/fault_counts.py counts them).
+pytestmark = pytest.mark.harm("one-line")
+
 
 @dataclass(frozen=True)
 class Fault:
@@ -227,6 +230,7 @@ def test_fault(case, tmp_path, monkeypatch, capsys):
         assert not folder.exists() or list(folder.iterdir()) == [], sorted(folder.iterdir())
 
 
+@pytest.mark.harm("writes")
 @pytest.mark.parametrize("name,argv", [
     ("scene_overhead_crane_50t.py", lambda t: ["generate", "--scene", RUN, "--out",
                                                str(t / "out")]),
@@ -237,3 +241,28 @@ def test_a_symlink_in_out_is_replaced_never_followed(name, argv, tmp_path, capsy
     assert (tmp_path / "outside.txt").read_text() == "keep me"
     assert not (tmp_path / "out" / name).is_symlink()
     assert not [p for p in (tmp_path / "out").iterdir() if p.name.startswith(".")]
+
+
+def test_sigterm_while_the_command_line_is_imported_is_one_line(tmp_path):
+    """SIGTERM during start-up (the second or two of importing SymPy and the
+    command line) ends with the line and 143, as later (it ended silently, -15):
+    a process delivers it to itself just as the entry point imports the
+    command line."""
+    import subprocess
+    import sys
+    child = (
+        "import builtins, os, signal, sys\n"
+        "from crane_sym.cli import start\n"
+        "real = builtins.__import__\n"
+        "def importing(name, *args, **kwargs):\n"
+        "    if name == 'crane_sym.cli.main':\n"
+        "        os.kill(os.getpid(), signal.SIGTERM)\n"
+        "    return real(name, *args, **kwargs)\n"
+        "builtins.__import__ = importing\n"
+        "sys.exit(start.main(['audit', '000', '-q']))\n")
+    done = subprocess.run([sys.executable, "-c", child], capture_output=True, text=True,
+                          timeout=120, cwd=tmp_path,
+                          env={**os.environ, "PYTHONPATH": str(Path(__file__).parents[1])})
+    assert done.returncode == 143, done.stderr
+    assert done.stderr == "crane-sym: terminated (SIGTERM); nothing half-written is left\n"
+    assert done.stdout == "" and list(tmp_path.iterdir()) == []

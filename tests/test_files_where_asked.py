@@ -6,6 +6,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import pytest
+
 from crane_sym.cli.main import main
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"
@@ -50,6 +52,25 @@ def test_bench_without_out_prints_and_writes_nothing(tmp_path, monkeypatch, caps
     assert list(tmp_path.iterdir()) == []
     assert "| hoist_fig9 |" in out and "wrote" not in out
     assert out.strip().splitlines()[-1].startswith("no files written: add --out DIR")
+
+
+@pytest.mark.harm("one-line")      # it ended in nothing at all, not in its result
+def test_bench_components_json_prints_the_rows_and_writes_nothing(tmp_path, monkeypatch,
+                                                                   capsys):
+    """`bench --components FILE --format json`: stdout is the JSON of the model's
+    stages and targets (it was empty), the hint on stderr, no file."""
+    monkeypatch.chdir(tmp_path)
+    assert main(["bench", "--components", str(EXAMPLES / "hoist_fig9.toml"), "--format",
+                 "json", "-q"]) == 0
+    captured = capsys.readouterr()
+    (row,) = json.loads(captured.out)
+    assert row["model"] == "hoist_fig9" and row["phases"] >= 30
+    assert row["stages_seconds"] and all(s >= 0 for s in row["stages_seconds"].values())
+    assert [t["target"] for t in row["targets"]] == ["derive and solve (s)",
+                                                      "run of >= 30 phases (s)"]
+    assert list(tmp_path.iterdir()) == []
+    assert captured.err.strip() == ("no files written: add --out DIR to write the Markdown "
+                                    "and PNG files")
 
 
 def test_walkthrough_without_o_prints_and_writes_nothing(tmp_path, monkeypatch, capsys):

@@ -18,6 +18,9 @@ from crane_sym.docs.safe_mathml import ATTRIBUTES, ELEMENTS
 
 from test_handout_page import _chromium, _run
 
+#: The harm these cases guard against (tests/fault_counts.py counts them).
+pytestmark = pytest.mark.harm("pages")
+
 EXAMPLE = Path(__file__).parents[1] / "examples" / "drive_trains" / "travel_braking_000.toml"
 #: What a script that runs does: it marks the page, which the dumped DOM shows.
 CANARY = "document.documentElement.setAttribute('data-canary','ran')"

@@ -12,7 +12,7 @@ nbformat = pytest.importorskip("nbformat")
 from crane_sym import registry  # noqa: E402
 from crane_sym.audit.verdicts import audit  # noqa: E402
 from crane_sym.docs.notebook import render_notebook  # noqa: E402
-from crane_sym.docs.walkthrough import handout_words, relation_tex  # noqa: E402
+from crane_sym.docs.walkthrough import handout_words, relation_tex, table_steps  # noqa: E402
 
 
 #: What raw SymPy output looks like in a cell: its repr, its default LaTeX.
@@ -30,13 +30,21 @@ def test_notebook_executes_and_each_step_cell_shows_the_step_once(paper, tmp_pat
     nbformat.validate(nb)
     nbclient.NotebookClient(nb, timeout=600, kernel_name="python3",
                             resources={"metadata": {"path": str(tmp_path)}}).execute()
-    checked = 0
+    tables, in_table = table_steps(d)
+    checked, shown_tables = 0, []
     for cell in nb.cells:
         for out in cell.get("outputs", []):
             assert out.output_type != "error", (paper, out.get("evalue"))
             shown = json.dumps(out.get("data", {})) + out.get("text", "")
             for raw in RAW:
                 assert raw not in shown, (paper, cell.metadata.get("crane_sym_step"), raw)
+        table = cell.metadata.get("crane_sym_table")
+        if table is not None:                  # a printed table: one cell, a row a cell
+            kinds = [o.metadata.get("crane_sym") for o in cell.outputs]
+            assert kinds == ["table"], (table, kinds)
+            rows = cell.outputs[0].data["text/markdown"].splitlines()[2:]
+            assert len(rows) == len(tables[table]), table
+            shown_tables.append(table)
         label = cell.metadata.get("crane_sym_step")
         if label is None:
             continue
@@ -47,7 +55,27 @@ def test_notebook_executes_and_each_step_cell_shows_the_step_once(paper, tmp_pat
         assert main in cell.outputs[kinds.index("relation")].data["text/latex"], label
         assert kinds.count("named") == len(defs), label
         checked += 1
-    assert checked == len(d.steps)
+    assert checked == len([s for s in d.steps if s.label not in in_table])
+    assert shown_tables == list(tables)
+
+
+def test_a_printed_table_is_one_cell_of_decimals():
+    """002's Tables 1 and 2 (95 printed cells, 177 steps) are two tables, each one
+    Markdown cell and one code cell, not one step a cell; a derived value that
+    keeps τ_0 shows its numbers as decimals, not as exact fractions."""
+    d = registry.get("002")
+    nb = json.loads(render_notebook(d, audit(d)))
+    sources = ["".join(c["source"]) for c in nb["cells"]]
+    tables, in_table = table_steps(d)
+    assert list(tables) == ["Table 1", "Table 2"] and len(in_table) == 175
+    assert [s.split("\n")[0] for s in sources if s.startswith("### Table")] == [
+        "### Table 1", "### Table 2"]
+    assert [c["metadata"].get("crane_sym_table") for c in nb["cells"]
+            if "crane_sym_table" in c["metadata"]] == ["Table 1", "Table 2"]
+    assert not any("Table 2, k" in s for s in sources if s.startswith("### Step"))
+    assert len(nb["cells"]) == 3 + 2 * (len(d.steps) - len(in_table)) + 2 * len(tables)
+    table2 = next(s for s in sources if s.startswith("### Table 2"))
+    assert r"1 + \frac{9.8067}{\tau_{0}}" in table2 and "196133" not in table2
 
 
 def test_a_changed_value_reaches_the_numbers(tmp_path):

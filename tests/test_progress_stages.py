@@ -57,3 +57,28 @@ def test_a_sweep_says_its_stages(tmp_path, capsys, monkeypatch):
         assert stage in captured.err
     assert captured.out.lstrip().startswith("{")               # stdout: the JSON only
 
+
+
+def test_a_batched_bench_case_says_each_stage():
+    """`bench --sweep`'s batched rows: the first call, each run of the block, the
+    per-design sample and the breakdown each say a line before they start, so a
+    case of 25 s on a loaded machine is no silence (a small grid of the first
+    declared case here)."""
+    from dataclasses import replace
+
+    from crane_sym.bench.batched import REPEATS, bench_batched
+    from crane_sym.bench.cases import batched_cases
+    paper, case = batched_cases()[0]
+    case = replace(case, n=2, sample=2)
+    stream = io.StringIO()
+    with progress.reporting(progress.Progress(True, stream)):
+        row = bench_batched(paper, case)
+    said = stream.getvalue()
+    stages = ["the first call (imports, the derivation) ...",
+              *[f"{row['designs']} designs as one block, run {k} of {REPEATS} ..."
+                for k in range(1, REPEATS + 1)],
+              "the per-design loop on a sample of 2 ..."]
+    if case.breakdown is not None:
+        stages.append("where the batched time went (a second run) ...")
+    places = [said.find(f"  {case.output}: {stage}") for stage in stages]
+    assert -1 not in places and places == sorted(places), (stages, said)

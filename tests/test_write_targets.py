@@ -16,6 +16,9 @@ import pytest
 from crane_sym.cli.main import main
 from crane_sym.output_files import OutputError, check_target, inputs, staged
 
+#: The harm these cases guard against (tests/fault_counts.py counts them).
+pytestmark = pytest.mark.harm("writes")
+
 FILE = Path(__file__).parents[1] / "examples" / "drive_trains" / "travel_braking_000.toml"
 
 

@@ -45,10 +45,14 @@ def bench_batched(paper: str, case: BatchedBenchCase, seed: int = 28) -> dict[st
     chosen, spec, names, axes = _grid(case, case.n)
     call = (chosen.derivation, case.output, spec.kind, spec.args, names, dict(chosen.fixed),
             dict(chosen.options))
+    say = progress.current()                  # a stage line each, so no stage is silent
+    say.step(f"  {case.output}: the first call (imports, the derivation) ...")
     evaluate_block(*call, *[a[:2] for a in axes])            # imports, first call
     # the least of REPEATS runs: on a shared machine others only ever add time
     runs = []
-    for _ in range(REPEATS):
+    for k in range(REPEATS):
+        say.step(f"  {case.output}: {int(np.prod([a.size for a in axes]))} designs as one "
+                 f"block, run {k + 1} of {REPEATS} ...")
         start, cpu = time.perf_counter(), time.process_time()
         batched = evaluate_block(*call, *axes)
         runs.append((time.perf_counter() - start, time.process_time() - cpu))
@@ -58,6 +62,7 @@ def bench_batched(paper: str, case: BatchedBenchCase, seed: int = 28) -> dict[st
     values = {a: np.full(len(picks), v) for a, v in chosen.fixed.items() if a in spec.args}
     for k, name in enumerate(names):
         values[name] = np.array([axes[k][p[k]] for p in picks])
+    say.step(f"  {case.output}: the per-design loop on a sample of {len(picks)} ...")
     start, cpu = time.perf_counter(), time.process_time()
     loop = np.asarray(case.per_design(values, dict(chosen.options)), dtype=float)
     loop_seconds = time.perf_counter() - start
@@ -79,6 +84,7 @@ def bench_batched(paper: str, case: BatchedBenchCase, seed: int = 28) -> dict[st
            "max_rel_difference": float(rel.max())}
     breakdown = getattr(case, "breakdown", None)
     if breakdown is not None:                     # where the batched time went
+        say.step(f"  {case.output}: where the batched time went (a second run) ...")
         row["breakdown"] = breakdown(chosen, axes)
     return row
 

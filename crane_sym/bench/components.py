@@ -37,7 +37,8 @@ from crane_sym.components.topology import assemble
 from crane_sym.mechanics.closed_forms import clear_cache as clear_forms
 from crane_sym.markdown import markdown_table
 
-__all__ = ["BY_SIZE", "ComponentTiming", "DERIVE_AND_SOLVE", "RUN", "as_markdown", "goals", "time_model"]
+__all__ = ["BY_SIZE", "ComponentTiming", "DERIVE_AND_SOLVE", "RUN", "as_dicts", "as_markdown",
+           "goals", "time_model"]
 
 #: Limits of item 7, in seconds.
 DERIVE_AND_SOLVE, RUN = 2.0, 0.2
@@ -156,6 +157,28 @@ def goals(timings: Sequence[ComponentTiming]) -> list[Goal]:
         out.append(Goal(t.name, "derive and solve (s)", t.derive_and_solve, limit, what))
         if t.phases >= PHASES:
             out.append(Goal(t.name, f"run of >= {PHASES} phases (s)", t.run, RUN, what))
+    return out
+
+
+def as_dicts(timings: Sequence[ComponentTiming]) -> list[dict]:
+    """JSON-ready rows, one a model: its size, each stage in seconds, the run,
+    the first run's split, and its targets met or not (``bench --components
+    FILE --format json``).
+
+    Parameters
+    ----------
+    timings : sequence of ComponentTiming
+        Rows of :func:`time_model`.
+    """
+    out = []
+    for t in timings:
+        out.append({"model": t.name, "bodies": t.bodies, "groups": t.groups,
+                    "backlash": t.backlash, "brakes": t.brakes, "phases": t.phases,
+                    "stages_seconds": dict(t.stages), "run_seconds": t.run,
+                    "first_run_split": dict(t.split),
+                    "derive_and_solve_seconds": t.derive_and_solve,
+                    "targets": [{"target": g.target, "measured": g.measured,
+                                 "limit": g.limit, "met": g.met} for g in goals([t])]})
     return out
 
 

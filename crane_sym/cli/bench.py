@@ -111,7 +111,7 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
         if not args.ids and not getattr(args, "components", None):
             return 0                       # `bench --sweep` alone: the sweep bench only
     if getattr(args, "components", None):
-        _wrote([_bench_components(args.components, out_dir, args.format == "table")],
+        _wrote([_bench_components(args.components, out_dir, args.format)],
                keep and args.format == "table")
         if not args.ids:                   # `bench --components FILE` alone: only that
             return 0
@@ -252,10 +252,11 @@ def _bench_piecewise(i: str, out_dir: Path, points: int, show: bool) -> Path:
     return path
 
 
-def _bench_components(files: Sequence[str], out_dir: Path, show: bool) -> Path:
-    """Component models from file to run, stage by stage, against item 7's targets."""
+def _bench_components(files: Sequence[str], out_dir: Path, form: str) -> Path:
+    """Component models from file to run, stage by stage, against item 7's
+    targets; the table printed, or with ``form`` "json" the rows as JSON."""
     # imported on use: see the module docstring
-    from crane_sym.bench.components import as_markdown, time_model
+    from crane_sym.bench.components import as_dicts, as_markdown, time_model
     from crane_sym.components.reading import read_parts
     for f in files:                    # a bad file fails before the folder is made
         read_parts(f)
@@ -266,7 +267,9 @@ def _bench_components(files: Sequence[str], out_dir: Path, show: bool) -> Path:
                       f"Absolute times are this machine's ({_machine()}), from this one run "
                       f"({time.perf_counter() - start:.0f} s); SymPy's cache and the closed "
                       "forms' cleared before each stage.", "", as_markdown(timings)])
-    return _write_section(text, out_dir / "bench_components.md", show)
+    if form == "json":
+        print(json.dumps(as_dicts(timings), indent=2))
+    return _write_section(text, out_dir / "bench_components.md", form == "table")
 
 
 def _bench_sampled(out_dir: Path, show: bool) -> Path:

@@ -20,6 +20,7 @@ from crane_sym import __version__, output_files, progress, registry
 from crane_sym.cli import sweep as cli_sweep
 from crane_sym.escapes import terminal_text
 from crane_sym.cli.bench import cmd_bench
+from crane_sym.cli.sigterm import TERMINATED, TERMINATED_CODE, Terminated, terminate
 from crane_sym.cli.unasked import say_no_files
 
 DESCRIPTION = """\
@@ -383,15 +384,6 @@ def parser() -> argparse.ArgumentParser:
     return top
 
 
-class Terminated(BaseException):
-    """SIGTERM, raised in the main thread so that every ``finally`` runs (the
-    temporaries of :mod:`crane_sym.output_files` are removed)."""
-
-
-def _terminate(signum, frame) -> None:
-    raise Terminated()
-
-
 def _os_message(err: OSError) -> str:
     """One line for an operating-system error: the path and why."""
     if isinstance(err, output_files.OutputError):
@@ -420,11 +412,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     argv : sequence of str, optional
         The arguments after ``crane-sym`` (default: ``sys.argv[1:]``).
     """
-    args = parser().parse_args(argv)
     previous = None
     if threading.current_thread() is threading.main_thread():
-        previous = signal.signal(signal.SIGTERM, _terminate)
+        previous = signal.signal(signal.SIGTERM, terminate)
     try:
+        args = parser().parse_args(argv)
         with output_files.inputs(_input_names(args)):
             return args.func(args)
     except (KeyError, ValueError) as err:
@@ -438,8 +430,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("crane-sym: interrupted (SIGINT); nothing half-written is left", file=sys.stderr)
         return 130
     except Terminated:
-        print("crane-sym: terminated (SIGTERM); nothing half-written is left", file=sys.stderr)
-        return 143
+        print(TERMINATED, file=sys.stderr)
+        return TERMINATED_CODE
     finally:
         if previous is not None:
             signal.signal(signal.SIGTERM, previous)

@@ -47,15 +47,15 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     check_grid(chosen, out, chunk_bytes)
     if not args.time_limit > 0:
         raise SweepError(f"--time-limit {args.time_limit:g}: must be > 0 s")
+    certify = None
+    if args.certify:                  # refuses before the estimate's pilot and any write
+        from crane_sym.sweep.certify import prepare
+        certify = prepare(chosen, args.certify_tol)
     from crane_sym.sweep.estimate import check_estimate, estimate
     cost = estimate(chosen, chunk_bytes)
     if not getattr(args, "quiet", False):     # a refusal names the estimate anyway
         print(cost.line(), file=sys.stderr, flush=True)
     check_estimate(cost, args.time_limit)
-    certify = None
-    if args.certify:
-        from crane_sym.sweep.certify import prepare
-        certify = prepare(chosen, args.certify_tol)   # refuses before anything is written
     say = progress.Progress(progress.wanted(getattr(args, "quiet", False)))
     with _distributed_quiet(), sweep_stage(out) as stage, progress.reporting(say):
         with say.task(f"computing {chosen.points} designs"):   # Dask's bar inside

@@ -324,8 +324,8 @@ _SOLVED: dict[tuple, np.ndarray] = {}
 SOLVED_BLOCKS = 16
 
 
-def evaluate_block(path: str, digest: str, output: str, values: Mapping[str, np.ndarray]
-                   ) -> np.ndarray:
+def evaluate_block(path: str, digest: str, output: str, values: Mapping[str, np.ndarray],
+                   cached: bool = True) -> np.ndarray:
     """One block of a sweep of a component file: ``output`` at every design
     of ``values`` (field name -> SI array), solved together. A sweep that
     writes its dataset asks for each block three times (its summary, the
@@ -344,8 +344,14 @@ def evaluate_block(path: str, digest: str, output: str, values: Mapping[str, np.
         ``<link>.peak`` or ``<link>.factor``.
     values : mapping
         Each varied field's SI values, of one shape.
+    cached : bool, optional
+        False: solve the block afresh, neither reading nor keeping a result
+        (a timed pilot must time the solve, not a look-up of a block a
+        sweep before it solved).
     """
     arrays = {n: np.asarray(v, dtype=float) for n, v in values.items()}
+    if not cached:
+        return designs(path, digest).largest(output, arrays)
     key = (str(path), digest, output,
            tuple((n, a.shape, a.tobytes()) for n, a in sorted(arrays.items())))
     if key not in _SOLVED:

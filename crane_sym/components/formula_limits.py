@@ -15,7 +15,8 @@ refused for another reason, "cannot be checked", with the reason):
    factorials;
 2. the parsed expression (:func:`bounded`): powers, factorials and
    iterated sums and products that would be too large to evaluate, a limit
-   (not checked), a value imaginary for the file's positive values;
+   (not checked), a value imaginary for the file's positive values, or
+   infinite or undefined (a division by zero);
 3. time (:func:`budget`): reading a formula and checking it each have a
    budget of seconds, enforced by ``SIGALRM`` in the main thread (elsewhere,
    on a thread that cannot take a signal, only 1 and 2 hold).
@@ -160,7 +161,7 @@ def bounded(expr: sp.Basic) -> sp.Basic:
     out (the checks cannot take them whole), if it may be checked;
     :class:`TooLarge` naming the bound otherwise (see the module docstring,
     item 2); :class:`Refused` for a limit, an iterated operator with a bound
-    that is no number, or an imaginary value.
+    that is no number, an imaginary value, or one infinite or undefined.
 
     Parameters
     ----------
@@ -197,7 +198,10 @@ def bounded(expr: sp.Basic) -> sp.Basic:
                                    f"most {MAX_TERMS})")
     if expr.has(sp.I):
         raise Refused("it is imaginary for the file's positive values")
-    return expr.replace(lambda e: isinstance(e, (sp.Sum, sp.Product)), lambda e: e.doit())
+    expr = expr.replace(lambda e: isinstance(e, (sp.Sum, sp.Product)), lambda e: e.doit())
+    if expr.has(sp.zoo, sp.oo, -sp.oo, sp.nan):
+        raise Refused("it is infinite or undefined (a division by zero, a logarithm of 0)")
+    return expr
 
 
 class _Overrun(BaseException):

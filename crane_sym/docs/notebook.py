@@ -21,13 +21,14 @@ from crane_sym import registry
 from crane_sym.audit.verdicts import AuditRecord, audit
 from crane_sym.derivation import Derivation, Step
 from crane_sym.docs.verdicts import Voice
-from crane_sym.docs.walkthrough import (_model, handout_words, printed_blocks, relation_tex,
-                                        step_head)
+from crane_sym.docs.walkthrough import (_model, handout_words, printed_blocks, printed_table,
+                                        relation_tex, step_head, table_row, table_steps)
 from crane_sym.latex import latex
+from crane_sym.markdown import markdown_table
 from crane_sym.scenes.reading import load_scene, scenes_directory
 from crane_sym.symbols import PARAMETER
 
-__all__ = ["notebook", "numbers_tex", "render_notebook", "show"]
+__all__ = ["notebook", "numbers_tex", "render_notebook", "show", "show_table"]
 
 #: Significant digits of the numbers line.
 DIGITS = 6
@@ -85,6 +86,32 @@ def show(step: Step, values: dict[str, float] | None = None,
     numbers = numbers_tex(step.statement, dict(values or {}), names)
     if numbers:
         display(Math(numbers), metadata={"crane_sym": "numbers"})
+
+
+def show_table(d: Derivation, name: str) -> None:
+    """Display a printed table of the paper once: each cell as printed beside the
+    value the rebuilt derivation gives it, as a decimal to one digit more than
+    printed (the handout's table, without the verdicts the audit gives).
+
+    Parameters
+    ----------
+    d : Derivation
+        A built derivation.
+    name : str
+        The table's name as its steps give it ("Table 2").
+
+    Returns
+    -------
+    None
+        Nothing, so that Jupyter adds no raw result to the cell.
+    """
+    from IPython.display import Markdown, display  # only inside a notebook
+
+    tables, _ = table_steps(d)
+    voice = Voice(d, handout_words(d.id))
+    rows = [table_row(name, f, d, voice) for f in tables[name]]
+    display(Markdown(markdown_table(["cell", "printed", "derived"], rows)),
+            metadata={"crane_sym": "table"})
 
 
 def _id(k: int) -> str:
@@ -150,11 +177,25 @@ def render_notebook(d: Derivation, records: list[AuditRecord] | None = None,
 
     add(_markdown, f"# {d.title}\n\nPaper: {d.citation}\n\n"
         f"## The model\n\n{_model(d.model, voice)}")
-    add(_code, "from crane_sym import registry\nfrom crane_sym.docs.notebook import show\n\n"
+    add(_code, "from crane_sym import registry\n"
+        "from crane_sym.docs.notebook import show, show_table\n\n"
         f"d = registry.get({d.id!r})   # rebuilds every step from the physics\n"
         f"names = d.latex_names | getattr(registry.module({d.id!r}), 'LATEX_NAMES', {{}})")
     add(_code, _parameters(d))
-    for k, step in enumerate(d.steps, start=1):
+    tables, in_table = table_steps(d)
+    shown: set[str] = set()
+    k = 0
+    for step in d.steps:
+        if step.label in in_table:     # a printed table's cell: one table for all
+            name = in_table[step.label]
+            if name not in shown:
+                shown.add(name)
+                add(_markdown, "\n\n".join(
+                    printed_table(name, tables[name], d, by_label, voice)))
+                cell = add(_code, f"show_table(d, {name!r})")
+                cell["metadata"]["crane_sym_table"] = name
+            continue
+        k += 1
         text = step_head(k, step, voice) + printed_blocks(
             [f for f in d.published if f.target == step.label], by_label, names, voice,
             step)

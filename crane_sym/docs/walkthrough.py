@@ -190,17 +190,45 @@ def _table_groups(d: Derivation) -> dict[str, list]:
     return groups
 
 
-def _number(step: Step, f) -> str:
-    """A table cell's derived value, to the digits of its print."""
+def table_steps(d: Derivation) -> tuple[dict[str, list], dict[str, str]]:
+    """The printed tables and the steps they take in: table name -> its printed
+    cells, and step label -> table name (the steps a cell is checked against,
+    as printed or as read). A handout shows such steps as one table, not one
+    step a cell (walkthrough and notebook)."""
+    tables = _table_groups(d)
+    in_table = {c.target: name for name, cells in tables.items() for c in cells}
+    in_table |= {v.compare_to: name for name, cells in tables.items()
+                 for c in cells for v in c.conventions if v.compare_to}
+    return tables, in_table
+
+
+#: Significant digits of the numbers in a table cell's derived value that keeps
+#: a symbol (a cell read "as headed", τ_0 not given: 1 + 9.8067/τ_0).
+_CELL_DIGITS = 5
+
+
+def table_number(step: Step, f) -> str:
+    """A table cell's derived value, to the digits of its print; one that keeps a
+    symbol with its numbers as decimals, not as exact fractions."""
     value = step.statement.rhs
     if not is_number(value):
-        return f"${latex(value)}$"
+        return "$" + latex(value.xreplace({r: sp.Float(r, _CELL_DIGITS)
+                                           for r in value.atoms(sp.Rational)
+                                           if not r.is_Integer})) + "$"
     places = printed_digits(f.printed.rhs, f.tolerance) if is_number(f.printed.rhs) else None
     return f"${decimal(value, None if places is None else places + 1)}$"
 
 
-def _table(name: str, cells: list, d: Derivation, by_label: dict[str, AuditRecord],
-           voice: Voice) -> list[str]:
+def table_row(name: str, f, d: Derivation, voice: Voice) -> list[str]:
+    """A printed table's cell as a row: the cell's name, its print, its derived
+    value (``table_number``)."""
+    return [_cell(voice.say(f.label.removeprefix(name + ", "))),
+            _cell(f.latex) if f.verbatim else _math_cell(escape_specials(f.latex)),
+            table_number(d.step(f.target), f)]
+
+
+def printed_table(name: str, cells: list, d: Derivation, by_label: dict[str, AuditRecord],
+                  voice: Voice) -> list[str]:
     """A printed table as one table: each cell beside its derived value (one digit
     more than printed) and verdict."""
     readings = any(f.conventions for f in cells)
@@ -209,11 +237,9 @@ def _table(name: str, cells: list, d: Derivation, by_label: dict[str, AuditRecor
     rows = []
     for f in cells:
         r = by_label.get(f.label)
-        row = [_cell(voice.say(f.label.removeprefix(name + ", "))),
-               _cell(f.latex) if f.verbatim else _math_cell(escape_specials(f.latex)),
-               _number(d.step(f.target), f)]
+        row = table_row(name, f, d, voice)
         if readings:
-            row.append(_number(d.step(f.conventions[0].compare_to or f.target), f)
+            row.append(table_number(d.step(f.conventions[0].compare_to or f.target), f)
                        if f.conventions else "—")
         row += [verdict_name(r.verdict) if r else "not audited",
                 voice.letter(r) if r and r.cause else "—"]
@@ -253,10 +279,7 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
     names = dict(d.latex_names) | dict(latex_names or {})
     voice = Voice(d, dict(words or {}))
     by_label = {r.label: r for r in records or []}
-    tables = _table_groups(d)
-    in_table = {c.target: name for name, cells in tables.items() for c in cells}
-    in_table |= {v.compare_to: name for name, cells in tables.items()
-                 for c in cells for v in c.conventions if v.compare_to}
+    tables, in_table = table_steps(d)
     shown: set[str] = set()
     parts = [f"# {d.title}", f"Paper: {d.citation}",
              "## The model", _model(d.model, voice),
@@ -268,7 +291,7 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
             name = in_table[step.label]
             if name not in shown:
                 shown.add(name)
-                parts += _table(name, tables[name], d, by_label, voice)
+                parts += printed_table(name, tables[name], d, by_label, voice)
             continue
         k += 1
         parts += step_head(k, step, voice)

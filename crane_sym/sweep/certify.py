@@ -89,12 +89,15 @@ def prepare(plan: SweepPlan, rel_tol: float) -> CertifyTask:
     name = plan.limit.output if plan.limit else plan.outputs[0].name
     spec = plan.output(name)
     if spec.kind != "closed":
-        batched = getattr(registry.sweep_outputs(plan.derivation).get(name), "batched", False)
+        own = "component_file" in plan.options    # a drive train's outputs: its hybrid run's
+        batched = own or getattr(registry.sweep_outputs(plan.derivation).get(name), "batched",
+                                 False)
         if batched:                               # a hybrid run: phases ending at events
             raise SweepError(f"--certify: {name} is a hybrid run (phases that end at events "
                              "found numerically): no interval enclosure of its event times "
                              "is tight enough to bound its maximum over the box; certify a "
-                             "closed-form output")
+                             + ("paper's closed-form output (a component file's outputs "
+                                "are all hybrid)" if own else "closed-form output"))
         raise SweepError(f"--certify: {name} is a simulated response, it has no interval "
                          "enclosure; certify a closed-form output")
     output = registry.get(plan.derivation).output(name)

@@ -8,7 +8,10 @@ the grid (:data:`PILOT_DESIGNS` designs, strided along the axes) by the same
 function the sweep's blocks run, once to warm up (a component file derives
 its template, a paper's module is imported) and once timed; the time per
 design, times the designs, over the workers that will share them, plus the
-warm-up each worker pays once, is the time printed. Memory: the results held
+warm-up each worker pays once, is the time printed. The pilot solves its
+blocks afresh (``cached=False``): a block a sweep before it solved in the
+process would be a look-up, and the estimate a fraction of the sweep's time.
+Memory: the results held
 (8 bytes a design and output; a simulated output's blocks are kept for the
 summary, the PNG and the store) and one block of values per worker.
 """
@@ -83,7 +86,8 @@ def estimate(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES) -> Estimate:
     warmup = per_design = 0.0
     for o in plan.outputs:
         run = lambda bs: evaluate_block(plan.derivation, o.name, o.kind, o.args,  # noqa: E731
-                                        names, dict(plan.fixed), dict(plan.options), *bs)
+                                        names, dict(plan.fixed), dict(plan.options), *bs,
+                                        cached=False)         # timed, never looked up
         start = time.perf_counter()
         run([b[:1] for b in blocks])
         warmup += time.perf_counter() - start

@@ -79,7 +79,8 @@ _RESERVE = 64 * 2**20
 
 def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...],
                    axis_names: tuple[str, ...], fixed: dict[str, float],
-                   options: dict[str, float], *blocks: np.ndarray) -> np.ndarray:
+                   options: dict[str, float], *blocks: np.ndarray,
+                   cached: bool = True) -> np.ndarray:
     """One block of the grid: ``output`` at the outer product of the axis
     blocks (SI), every other argument from ``fixed``. Looks the function up by
     name, so a worker process needs nothing but the installed package.
@@ -104,6 +105,9 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
         The scene's settings a simulated output reads (``duration``, ...).
     *blocks : ndarray
         One block of values per axis (SI).
+    cached : bool, optional
+        False: a component file's block is solved afresh, not handed out from
+        the blocks solved before in the process (the estimate's timed pilot).
     """
     n = len(blocks)
     shape = tuple(len(b) for b in blocks)
@@ -115,7 +119,7 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
         from crane_sym.components.designs import evaluate_block as component_block
         with cycles_collected_after():
             result = component_block(options["component_file"], options["digest"], output,
-                                     grid)
+                                     grid, cached)
     elif kind == "closed":
         func = getattr(importlib.import_module(f"crane_sym.generated.{derivation}"), output)
         result = func(*[values[a] for a in args])
