@@ -172,6 +172,14 @@ def test_targets_classify_and_judge():
     assert bt.goals_table(goals).count("NOT MET") == 4
 
 
+def test_memory_goal_is_the_worst_peak_over_its_limit():
+    from crane_sym.bench.memory import MemoryRow, goals
+    rows = [MemoryRow("f", 10**6, 8, 8, 9), MemoryRow("g", 10**6, 8, 8, 28)]
+    (goal,) = goals("p", rows)
+    assert (goal.measured, goal.met, goal.worst) == (28 / 24, False, "g at 1e+06")
+    assert goals("p", rows[:1])[0].met and goals("p", []) == []
+
+
 def test_hand_written_ramp_hold_is_the_generated_function():
     """The hand-written floor of the piecewise target computes what the
     generated function does, to a few ulps (the exact phase at long times, the
