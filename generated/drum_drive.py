@@ -113,6 +113,23 @@ def _cube(x):
     return x * (x * x)
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def branch_effective_mass(q, L, *, out=None):
     """Effective mass q*L/3 of a span moved at one point (linear speed (6)). Eq (7).
 
@@ -582,30 +599,33 @@ def pulsating_force(t, F1_t, F2_t, F3_t, F4_t, K1, K2, K3, K4, t_3, *, out=None)
     shape = _broadcast(t=t, F1_t=F1_t, F2_t=F2_t, F3_t=F3_t, F4_t=F4_t, K1=K1, K2=K2, K3=K3, K4=K4,
                        t_3=t_3)
     k0 = 3.141592653589793/t_3
-    x0 = np.sin(k0*t)
     k1 = -K2
     k2 = -K4
     k3 = (1/4)*F1_t
     k4 = (1/4)*F3_t
     k5 = (1/4)*K1 + (1/4)*K3
     if out is None and not shape:
+        x0 = np.sin(k0*t)
         return k3*x0 + k4*x0 + k5 - 1/4*abs(F2_t*x0 + k1) - 1/4*abs(F4_t*x0 + k2)
     out = _out(out, shape)
-    np.multiply(x0, F2_t, out=out)
-    np.add(out, k1, out=out)
-    np.abs(out, out=out)
-    np.divide(out, -4, out=out)
-    _w0 = np.empty_like(out)
-    np.multiply(x0, F4_t, out=_w0)
-    np.add(_w0, k2, out=_w0)
-    np.abs(_w0, out=_w0)
-    np.divide(_w0, -4, out=_w0)
-    np.add(out, _w0, out=out)
-    np.multiply(x0, k3, out=_w0)
-    np.add(out, _w0, out=out)
-    np.multiply(x0, k4, out=_w0)
-    np.add(out, _w0, out=out)
-    np.add(out, k5, out=out)
+    for _o, (t, F2_t, F4_t, k0, k1, k2, k3, k4, k5) in _spans(
+            out, shape, t, F2_t, F4_t, k0, k1, k2, k3, k4, k5):
+        x0 = np.sin(k0*t)
+        np.multiply(x0, F2_t, out=_o)
+        np.add(_o, k1, out=_o)
+        np.abs(_o, out=_o)
+        np.divide(_o, -4, out=_o)
+        _w0 = np.empty_like(_o)
+        np.multiply(x0, F4_t, out=_w0)
+        np.add(_w0, k2, out=_w0)
+        np.abs(_w0, out=_w0)
+        np.divide(_w0, -4, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.multiply(x0, k3, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.multiply(x0, k4, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.add(_o, k5, out=_o)
     return out
 
 

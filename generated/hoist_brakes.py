@@ -165,6 +165,23 @@ def _blocks(where, size=16384):
     return [where[i:i + size] for i in range(0, where.size, size)]
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def relative_gearbox_torque_hoisting(MF, LF, BF_SB, *, out=None):
     """Rigid drive, hoisting: gearbox-input torque over the rated static torque after the safety brakes act (motor torque lost). Eq (2), (4).
 
@@ -835,18 +852,23 @@ def rigid_hook_speed_hoisting(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x9 = M_SB*x0*x4
     x10 = -t_BB
     x11 = M_BB*x2*x3
-    x13 = np.less_equal(t, t_SB)
-    x15 = np.less_equal(t, t_BB)
-    x16 = -omega1 + t*x6 + t*x7
-    x17 = x16 + x9*(t + x8)
     k0 = -x6
     k1 = -x7
-    x12 = k0*t + k1*t + omega1
     k3 = -x9
-    x14 = k3*(t + x8) + x12
     k5 = -x11
     k6 = r/(i_g*i_t)
-    return _into(out, shape, np.select([np.logical_or.reduce((np.logical_and.reduce((x13,np.less(x16, 0))),np.logical_and.reduce((x15,np.logical_not(x13),np.less(x17, 0))),np.logical_and.reduce((np.logical_not(x13),np.logical_not(x15),np.less(x11*(t + x10) + x17, 0))))),True], [k6*np.select([x13,x15,True], [x12,x14,k5*(t + x10) + x14], default=np.nan),0], default=np.nan))
+    _one = out is None and not shape
+    out = _out(out, shape)
+    for _o, (t, omega1, t_SB, t_BB, x6, x7, x8, x9, x10, x11, k0, k1, k3, k5, k6) in _spans(
+            out, shape, t, omega1, t_SB, t_BB, x6, x7, x8, x9, x10, x11, k0, k1, k3, k5, k6):
+        x13 = np.less_equal(t, t_SB)
+        x15 = np.less_equal(t, t_BB)
+        x16 = -omega1 + t*x6 + t*x7
+        x17 = x16 + x9*(t + x8)
+        x12 = k0*t + k1*t + omega1
+        x14 = k3*(t + x8) + x12
+        _o[...] = np.select([np.logical_or.reduce((np.logical_and.reduce((x13,np.less(x16, 0))),np.logical_and.reduce((x15,np.logical_not(x13),np.less(x17, 0))),np.logical_and.reduce((np.logical_not(x13),np.logical_not(x15),np.less(x11*(t + x10) + x17, 0))))),True], [k6*np.select([x13,x15,True], [x12,x14,k5*(t + x10) + x14], default=np.nan),0], default=np.nan)
+    return out[()] if _one else out
 
 
 def rigid_stopping_time_hoisting(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):
@@ -1071,15 +1093,20 @@ def rigid_hook_speed_lowering(t, m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB,
     x9 = M_SB*x0*x4
     x10 = -t_BB
     x11 = M_BB*x2*x3
-    x12 = omega1 + t*x6 + t*x7
-    x13 = np.less_equal(t, t_SB)
-    x15 = np.less_equal(t, t_BB)
-    x16 = omega1 + t*x6 + t*x7 - x9*(t + x8)
     k3 = -x9
-    x14 = k3*(t + x8) + x12
     k5 = -x11
     k6 = r/(i_g*i_t)
-    return _into(out, shape, np.select([np.logical_and.reduce((np.logical_or.reduce((x13,np.logical_not(x15),np.greater(x16, 0))),np.logical_or.reduce((x13,x15,np.less(x11*(t + x10) - x16, 0))))),True], [k6*np.select([x13,x15,True], [x12,x14,k5*(t + x10) + x14], default=np.nan),0], default=np.nan))
+    _one = out is None and not shape
+    out = _out(out, shape)
+    for _o, (t, omega1, t_SB, t_BB, x6, x7, x8, x9, x10, x11, k3, k5, k6) in _spans(
+            out, shape, t, omega1, t_SB, t_BB, x6, x7, x8, x9, x10, x11, k3, k5, k6):
+        x12 = omega1 + t*x6 + t*x7
+        x13 = np.less_equal(t, t_SB)
+        x15 = np.less_equal(t, t_BB)
+        x16 = omega1 + t*x6 + t*x7 - x9*(t + x8)
+        x14 = k3*(t + x8) + x12
+        _o[...] = np.select([np.logical_and.reduce((np.logical_or.reduce((x13,np.logical_not(x15),np.greater(x16, 0))),np.logical_or.reduce((x13,x15,np.less(x11*(t + x10) - x16, 0))))),True], [k6*np.select([x13,x15,True], [x12,x14,k5*(t + x10) + x14], default=np.nan),0], default=np.nan)
+    return out[()] if _one else out
 
 
 def rigid_stopping_time_lowering(m_p, J1, J2, m_h, r, i_g, i_t, g, omega1, M_SB, M_BB, t_SB, t_BB, *, out=None):

@@ -416,6 +416,23 @@ def _blocks(where, size=16384):
     return [where[i:i + size] for i in range(0, where.size, size)]
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def _entire_1(z):
     """1 - 4*sin(z/2)**2/z**2:
     entire, ~z**2 at 0; its Taylor series where |z| < 4.0.
@@ -760,10 +777,11 @@ def dynamic_coefficient_instant(t, Omega, *, out=None):
     if out is None and not shape:
         return 2*np.sin(k0*t)**2
     out = _out(out, shape)
-    np.multiply(t, k0, out=out)
-    np.sin(out, out=out)
-    np.square(out, out=out)
-    np.multiply(out, 2, out=out)
+    for _o, (t, k0) in _spans(out, shape, t, k0):
+        np.multiply(t, k0, out=_o)
+        np.sin(_o, out=_o)
+        np.square(_o, out=_o)
+        np.multiply(_o, 2, out=_o)
     return out
 
 
@@ -801,7 +819,11 @@ def dynamic_coefficient_ramp(t, Omega, t_n, *, out=None):
     t_n   = _checked('t_n', t_n, 'positive', 'duration of the start (transient) t_п, s', (1e-17, 1e7))
     shape = _broadcast(t=t, Omega=Omega, t_n=t_n)
     k0 = -1/(Omega*t_n)
-    return _into(out, shape, k0*_sin_remainder(Omega*t, 1))
+    _one = out is None and not shape
+    out = _out(out, shape)
+    for _o, (t, Omega, k0) in _spans(out, shape, t, Omega, k0):
+        _o[...] = k0*_sin_remainder(Omega*t, 1)
+    return out[()] if _one else out
 
 
 def dynamic_coefficient_pulse(t, Omega, theta, *, out=None):
@@ -1760,8 +1782,9 @@ def optimal_coefficient_from_weight_a2(t, t_n, *, out=None):
     if out is None and not shape:
         return k1*(k0 + t)
     out = _out(out, shape)
-    np.add(t, k0, out=out)
-    np.multiply(out, k1, out=out)
+    for _o, (t, k0, k1) in _spans(out, shape, t, k0, k1):
+        np.add(t, k0, out=_o)
+        np.multiply(_o, k1, out=_o)
     return out
 
 
@@ -1845,11 +1868,12 @@ def optimal_coefficient_from_weight_a3(t, t_n, *, out=None):
     if out is None and not shape:
         return k1*t*(k0 + t)**2
     out = _out(out, shape)
-    _w0 = np.empty_like(out)
-    np.add(t, k0, out=_w0)
-    np.square(_w0, out=_w0)
-    np.multiply(t, _w0, out=out)
-    np.multiply(out, k1, out=out)
+    for _o, (t, k0, k1) in _spans(out, shape, t, k0, k1):
+        _w0 = np.empty_like(_o)
+        np.add(t, k0, out=_w0)
+        np.square(_w0, out=_w0)
+        np.multiply(t, _w0, out=_o)
+        np.multiply(_o, k1, out=_o)
     return out
 
 
@@ -1933,14 +1957,15 @@ def optimal_coefficient_from_weight_a4(t, t_n, *, out=None):
     if out is None and not shape:
         return k1*t**2*_cube(k0 + t)
     out = _out(out, shape)
-    np.square(t, out=out)
-    _w0 = np.empty_like(out)
-    np.add(t, k0, out=_w0)
-    _w1 = np.empty_like(out)
-    np.square(_w0, out=_w1)
-    np.multiply(_w0, _w1, out=_w0)
-    np.multiply(out, _w0, out=out)
-    np.multiply(out, k1, out=out)
+    for _o, (t, k0, k1) in _spans(out, shape, t, k0, k1):
+        np.square(t, out=_o)
+        _w0 = np.empty_like(_o)
+        np.add(t, k0, out=_w0)
+        _w1 = np.empty_like(_o)
+        np.square(_w0, out=_w1)
+        np.multiply(_w0, _w1, out=_w0)
+        np.multiply(_o, _w0, out=_o)
+        np.multiply(_o, k1, out=_o)
     return out
 
 

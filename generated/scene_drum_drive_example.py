@@ -81,6 +81,23 @@ def _out(out, shape):
     return out
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def pulsating_force(t, *, out=None):
     """Pulsating load F'(t) of (21), as printed. Specialized to scene 'drum_drive_example'. Eq (21).
 
@@ -106,16 +123,18 @@ def pulsating_force(t, *, out=None):
                 pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 2e7))
     shape = _broadcast(t=t)
-    x0 = np.sin(1.0471975511965979*t)
     if out is None and not shape:
+        x0 = np.sin(1.0471975511965979*t)
         return 450*x0 - 150*abs(3*x0 - 2) + 300
     out = _out(out, shape)
-    np.multiply(x0, 3, out=out)
-    np.add(out, -2, out=out)
-    np.abs(out, out=out)
-    np.multiply(out, -150, out=out)
-    _w0 = np.empty_like(out)
-    np.multiply(x0, 450, out=_w0)
-    np.add(out, _w0, out=out)
-    np.add(out, 300, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        x0 = np.sin(1.0471975511965979*t)
+        np.multiply(x0, 3, out=_o)
+        np.add(_o, -2, out=_o)
+        np.abs(_o, out=_o)
+        np.multiply(_o, -150, out=_o)
+        _w0 = np.empty_like(_o)
+        np.multiply(x0, 450, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.add(_o, 300, out=_o)
     return out

@@ -288,6 +288,23 @@ def _blocks(where, size=16384):
     return [where[i:i + size] for i in range(0, where.size, size)]
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def _entire_1(z):
     """z - sin(z):
     entire, ~z**3 at 0; its Taylor series where |z| < 2.378414230005442.
@@ -784,8 +801,9 @@ def optimal_coefficient_from_weight_a2(t, *, out=None):
     if out is None and not shape:
         return 1 - t
     out = _out(out, shape)
-    np.negative(t, out=out)
-    np.add(out, 1, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        np.negative(t, out=_o)
+        np.add(_o, 1, out=_o)
     return out
 
 
@@ -816,11 +834,12 @@ def optimal_coefficient_from_weight_a3(t, *, out=None):
     if out is None and not shape:
         return 12*t*(t - 1)**2
     out = _out(out, shape)
-    _w0 = np.empty_like(out)
-    np.add(t, -1, out=_w0)
-    np.square(_w0, out=_w0)
-    np.multiply(t, _w0, out=out)
-    np.multiply(out, 12, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        _w0 = np.empty_like(_o)
+        np.add(t, -1, out=_w0)
+        np.square(_w0, out=_w0)
+        np.multiply(t, _w0, out=_o)
+        np.multiply(_o, 12, out=_o)
     return out
 
 
@@ -851,12 +870,13 @@ def optimal_coefficient_from_weight_a4(t, *, out=None):
     if out is None and not shape:
         return -60*t**2*_cube(t - 1)
     out = _out(out, shape)
-    np.square(t, out=out)
-    _w0 = np.empty_like(out)
-    np.add(t, -1, out=_w0)
-    _w1 = np.empty_like(out)
-    np.square(_w0, out=_w1)
-    np.multiply(_w0, _w1, out=_w0)
-    np.multiply(out, _w0, out=out)
-    np.multiply(out, -60, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        np.square(t, out=_o)
+        _w0 = np.empty_like(_o)
+        np.add(t, -1, out=_w0)
+        _w1 = np.empty_like(_o)
+        np.square(_w0, out=_w1)
+        np.multiply(_w0, _w1, out=_w0)
+        np.multiply(_o, _w0, out=_o)
+        np.multiply(_o, -60, out=_o)
     return out

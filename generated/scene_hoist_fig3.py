@@ -81,6 +81,23 @@ def _out(out, shape):
     return out
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def dynamic_coefficient_instant(t, *, out=None):
     """K_din(t) under a suddenly applied constant load. Specialized to scene 'hoist_fig3'. Eq (38).
 
@@ -108,9 +125,10 @@ def dynamic_coefficient_instant(t, *, out=None):
     if out is None and not shape:
         return 2*np.sin((25/2)*t)**2
     out = _out(out, shape)
-    np.multiply(t, 25, out=out)
-    np.divide(out, 2, out=out)
-    np.sin(out, out=out)
-    np.square(out, out=out)
-    np.multiply(out, 2, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        np.multiply(t, 25, out=_o)
+        np.divide(_o, 2, out=_o)
+        np.sin(_o, out=_o)
+        np.square(_o, out=_o)
+        np.multiply(_o, 2, out=_o)
     return out

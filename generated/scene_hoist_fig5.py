@@ -81,15 +81,6 @@ def _out(out, shape):
     return out
 
 
-def _into(out, shape, result):
-    """``result``, or copied into ``out`` when the caller gives a buffer."""
-    if out is None:
-        return result
-    out = _out(out, shape)
-    np.copyto(out, result)
-    return out
-
-
 def _taylor_tail(x, n, odd):
     """The Taylor series of cos(x) (odd=0) or sin(x) (odd=1) from the term
     x**(2n+odd) on, summed for |x| < 2n + 2 until the terms fall below 1e-17
@@ -167,6 +158,23 @@ def _remainder_float(x, n, odd):
     return total
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def dynamic_coefficient_ramp(t, *, out=None):
     """K_din(t) under a linearly growing load, over the static deflection at t_n. Specialized to scene 'hoist_fig5'. Eq (42).
 
@@ -191,4 +199,8 @@ def dynamic_coefficient_ramp(t, *, out=None):
                 pass
     t = _checked('t', t, 'nonnegative', 'time from the start of the drive, s', (0.0, 1e7))
     shape = _broadcast(t=t)
-    return _into(out, shape, -1/25*_sin_remainder(25*t, 1))
+    _one = out is None and not shape
+    out = _out(out, shape)
+    for _o, (t,) in _spans(out, shape, t):
+        _o[...] = -1/25*_sin_remainder(25*t, 1)
+    return out[()] if _one else out

@@ -83,6 +83,23 @@ def _out(out, shape):
     return out
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def elastic_force(t, *, out=None):
     """Force F(t) in the elastic link. Specialized to scene 'overhead_crane_50t'. Eq (14).
 
@@ -110,11 +127,12 @@ def elastic_force(t, *, out=None):
     if out is None and not shape:
         return (589000/13)*np.sin(13.314380468978918*t)**2
     out = _out(out, shape)
-    np.multiply(t, 13.314380468978918, out=out)
-    np.sin(out, out=out)
-    np.square(out, out=out)
-    np.multiply(out, 589000, out=out)
-    np.divide(out, 13, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        np.multiply(t, 13.314380468978918, out=_o)
+        np.sin(_o, out=_o)
+        np.square(_o, out=_o)
+        np.multiply(_o, 589000, out=_o)
+        np.divide(_o, 13, out=_o)
     return out
 
 
@@ -145,14 +163,15 @@ def velocity_m1(t, *, out=None):
     if out is None and not shape:
         return -175/572*t - 0.1933473889602708*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
     out = _out(out, shape)
-    np.multiply(t, -175, out=out)
-    np.divide(out, 572, out=out)
-    _w0 = np.empty_like(out)
-    np.multiply(t, 26.628760937957836, out=_w0)
-    np.sin(_w0, out=_w0)
-    np.multiply(_w0, -0.1933473889602708, out=_w0)
-    np.add(out, _w0, out=out)
-    np.add(out, 6004799503160661/4503599627370496, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        np.multiply(t, -175, out=_o)
+        np.divide(_o, 572, out=_o)
+        _w0 = np.empty_like(_o)
+        np.multiply(t, 26.628760937957836, out=_w0)
+        np.sin(_w0, out=_w0)
+        np.multiply(_w0, -0.1933473889602708, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.add(_o, 6004799503160661/4503599627370496, out=_o)
     return out
 
 
@@ -183,12 +202,13 @@ def velocity_m2(t, *, out=None):
     if out is None and not shape:
         return -175/572*t + 0.007733895558410831*np.sin(26.628760937957836*t) + 6004799503160661/4503599627370496
     out = _out(out, shape)
-    np.multiply(t, -175, out=out)
-    np.divide(out, 572, out=out)
-    _w0 = np.empty_like(out)
-    np.multiply(t, 26.628760937957836, out=_w0)
-    np.sin(_w0, out=_w0)
-    np.multiply(_w0, 0.007733895558410831, out=_w0)
-    np.add(out, _w0, out=out)
-    np.add(out, 6004799503160661/4503599627370496, out=out)
+    for _o, (t,) in _spans(out, shape, t):
+        np.multiply(t, -175, out=_o)
+        np.divide(_o, 572, out=_o)
+        _w0 = np.empty_like(_o)
+        np.multiply(t, 26.628760937957836, out=_w0)
+        np.sin(_w0, out=_w0)
+        np.multiply(_w0, 0.007733895558410831, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.add(_o, 6004799503160661/4503599627370496, out=_o)
     return out

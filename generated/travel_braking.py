@@ -111,6 +111,23 @@ def _diff_of_products(a, b, c, d):
     return (p - q) + (p_err - q_err)
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def natural_frequency(m1, m2, c, *, out=None):
     """Natural frequency p of the relative motion. Eq (6).
 
@@ -200,10 +217,11 @@ def relative_displacement(t, m1, m2, c, P_t, W, *, out=None):
     if out is None and not shape:
         return k1*np.sin(k0*t)**2
     out = _out(out, shape)
-    np.multiply(t, k0, out=out)
-    np.sin(out, out=out)
-    np.square(out, out=out)
-    np.multiply(out, k1, out=out)
+    for _o, (t, k0, k1) in _spans(out, shape, t, k0, k1):
+        np.multiply(t, k0, out=_o)
+        np.sin(_o, out=_o)
+        np.square(_o, out=_o)
+        np.multiply(_o, k1, out=_o)
     return out
 
 
@@ -261,10 +279,11 @@ def elastic_force(t, m1, m2, c, P_t, W, *, out=None):
     if out is None and not shape:
         return k1*np.sin(k0*t)**2
     out = _out(out, shape)
-    np.multiply(t, k0, out=out)
-    np.sin(out, out=out)
-    np.square(out, out=out)
-    np.multiply(out, k1, out=out)
+    for _o, (t, k0, k1) in _spans(out, shape, t, k0, k1):
+        np.multiply(t, k0, out=_o)
+        np.sin(_o, out=_o)
+        np.square(_o, out=_o)
+        np.multiply(_o, k1, out=_o)
     return out
 
 
@@ -445,13 +464,14 @@ def velocity_m1(t, m1, m2, c, P_t, W, v0, *, out=None):
     if out is None and not shape:
         return k0*t + k2*np.sin(k1*t) + v0
     out = _out(out, shape)
-    np.multiply(t, k0, out=out)
-    _w0 = np.empty_like(out)
-    np.multiply(t, k1, out=_w0)
-    np.sin(_w0, out=_w0)
-    np.multiply(_w0, k2, out=_w0)
-    np.add(out, _w0, out=out)
-    np.add(out, v0, out=out)
+    for _o, (t, v0, k0, k1, k2) in _spans(out, shape, t, v0, k0, k1, k2):
+        np.multiply(t, k0, out=_o)
+        _w0 = np.empty_like(_o)
+        np.multiply(t, k1, out=_w0)
+        np.sin(_w0, out=_w0)
+        np.multiply(_w0, k2, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.add(_o, v0, out=_o)
     return out
 
 
@@ -517,11 +537,12 @@ def velocity_m2(t, m1, m2, c, P_t, W, v0, *, out=None):
     if out is None and not shape:
         return k0*t + k2*np.sin(k1*t) + v0
     out = _out(out, shape)
-    np.multiply(t, k0, out=out)
-    _w0 = np.empty_like(out)
-    np.multiply(t, k1, out=_w0)
-    np.sin(_w0, out=_w0)
-    np.multiply(_w0, k2, out=_w0)
-    np.add(out, _w0, out=out)
-    np.add(out, v0, out=out)
+    for _o, (t, v0, k0, k1, k2) in _spans(out, shape, t, v0, k0, k1, k2):
+        np.multiply(t, k0, out=_o)
+        _w0 = np.empty_like(_o)
+        np.multiply(t, k1, out=_w0)
+        np.sin(_w0, out=_w0)
+        np.multiply(_w0, k2, out=_w0)
+        np.add(_o, _w0, out=_o)
+        np.add(_o, v0, out=_o)
     return out

@@ -1,10 +1,14 @@
 """Window-by-window evaluation: the kernels that partition the points, and a
 generated piecewise function against np.select on sorted, unsorted,
-broadcast, scalar and out= inputs."""
+broadcast, scalar and out= inputs; block-by-block evaluation (``_spans``) of
+the functions without windows, against the whole-array formula, and their
+peak memory."""
 import numpy as np
 import pytest
 
-from crane_sym.kernels.cells import _at, _cells, _put, _selector
+from crane_sym.bench.memory import peak_bytes
+from crane_sym.kernels.cells import _at, _cells, _put, _selector, _spans
+from crane_sym.generated import drum_drive
 from crane_sym.generated import hoist_startup as gen
 
 
@@ -68,3 +72,42 @@ def test_piecewise_function_broadcasts_window_edges():
     got = gen.dynamic_coefficient_ramp_hold(t, 7.0, theta)
     assert got.shape == (31, 3)
     assert np.array_equal(got, _reference(t, 7.0, theta))
+
+
+def test_spans_blocks_full_contiguous_arrays_and_keeps_the_rest_whole():
+    out, t, k = np.empty(40000), np.arange(40000.0), np.float64(2.0)
+    spans = _spans(out, out.shape, t, k, size=16384)
+    assert [o.size for o, _ in spans] == [16384, 16384, 7232]
+    assert all(np.shares_memory(o, out) and v[1] is k for o, v in spans)
+    assert spans[2][1][0][0] == 32768.0                # the values sliced with the piece
+    grid = np.empty((200, 300))
+    for values in ((np.arange(300.0),), (np.empty((300, 200)).T,)):   # broadcast, strided
+        (whole,) = _spans(grid, grid.shape, *values)
+        assert whole[0] is grid and whole[1][0] is values[0]
+
+
+@pytest.mark.parametrize("size", [1, 16384, 40001])
+def test_blocked_functions_equal_the_formula_on_the_whole_array(size):
+    t = np.linspace(0.0, 5.0, size)
+    whole = -1 / (25.0 * 1.0) * gen._sin_remainder(25.0 * t, 1)
+    assert np.array_equal(gen.dynamic_coefficient_ramp(t, 25.0, 1.0), whole)
+    buffer = np.empty((size, 2))[:, 1]                 # a strided out=: one piece
+    assert gen.dynamic_coefficient_ramp(t, 25.0, 1.0, out=buffer) is buffer
+    assert np.array_equal(buffer, whole)
+    a4 = -60 / 1.5**5 * t**2 * (t - 1.5)**3
+    np.testing.assert_allclose(gen.optimal_coefficient_from_weight_a4(t, 1.5), a4,
+                               rtol=1e-13, atol=1e-13 * np.abs(a4).max())
+    assert np.ndim(gen.dynamic_coefficient_ramp(np.float64(0.3), 25.0, 1.0)) == 0
+
+
+def test_in_place_chains_need_their_input_and_output_only():
+    """Peak traced memory of the three chains the fast-path targets name: at
+    most twice the input plus the output (bench.memory's limit)."""
+    t = np.linspace(0.0, 5.0, 200_000)
+    calls = {"ramp": lambda: gen.dynamic_coefficient_ramp(t, 25.0, 1.0),
+             "a4": lambda: gen.optimal_coefficient_from_weight_a4(t, 1.5),
+             "pulsating": lambda: drum_drive.pulsating_force(
+                 t, 1200.0, 1200.0, 600.0, 600.0, 800.0, 800.0, 400.0, 400.0, 3.0)}
+    for name, call in calls.items():
+        peak, output = peak_bytes(call)
+        assert output == t.nbytes and peak <= 2 * t.nbytes + output, (name, peak)

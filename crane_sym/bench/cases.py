@@ -6,9 +6,13 @@ values in ``SWEEP_BENCH_CASES``; one with a response a sampled load can
 reproduce declares :class:`SampledBenchCase` values in ``SAMPLED_BENCH_CASES``
 (both in the paper's ``bench_cases.py``, re-exported by its package, as
 ``hard_cases``). A paper with a hybrid sweep output solved a block at a time
-declares :class:`BatchedBenchCase` values in ``BATCHED_BENCH_CASES``.
-:func:`sweep_cases`, :func:`sampled_cases` and :func:`batched_cases` collect
-them through the registry.
+declares :class:`BatchedBenchCase` values in ``BATCHED_BENCH_CASES``. A
+paper may give a generated time function a hand-written NumPy version in
+``HAND_WRITTEN`` (function name -> callable with the same arguments): the
+floor a careful hand would reach, which the targets against ``np.cos`` time
+in the same run. :func:`sweep_cases`, :func:`sampled_cases`,
+:func:`batched_cases` and :func:`hand_written` collect them through the
+registry.
 """
 from __future__ import annotations
 
@@ -18,7 +22,7 @@ from typing import Callable, Mapping, Sequence
 from crane_sym import registry
 
 __all__ = ["BatchedBenchCase", "SampledBenchCase", "SweepBenchCase", "batched_cases",
-           "sampled_cases", "sweep_cases"]
+           "hand_written", "sampled_cases", "sweep_cases"]
 
 
 @dataclass(frozen=True)
@@ -142,6 +146,18 @@ def sampled_cases() -> list[tuple[str, SampledBenchCase]]:
     """(paper id, case) of every paper that declares ``SAMPLED_BENCH_CASES``."""
     return [(i, c) for i in registry.ids()
             for c in _call(getattr(registry.module(i), "SAMPLED_BENCH_CASES", ()))]
+
+
+def hand_written(paper: str) -> Mapping[str, Callable]:
+    """The hand-written NumPy versions paper ``paper`` declares
+    (``HAND_WRITTEN``), by generated function name.
+
+    Parameters
+    ----------
+    paper : str
+        The derivation id.
+    """
+    return dict(getattr(registry.module(paper), "HAND_WRITTEN", {}))
 
 
 def _call(cases) -> Sequence:

@@ -16,12 +16,13 @@ from typing import Callable
 
 import numpy as np
 
-from crane_sym.bench.targets import time_functions
+from crane_sym.bench.targets import Goal, time_functions
 from crane_sym.derivation import Derivation
 from crane_sym.markdown import markdown_table
 from crane_sym.mechanics.sampled_load import sampled_response, sampled_response_uniform
 
-__all__ = ["MemoryRow", "as_markdown", "function_memory", "peak_bytes", "sampled_memory"]
+__all__ = ["MemoryRow", "as_markdown", "function_memory", "goals", "peak_bytes",
+           "sampled_memory"]
 
 @dataclass(frozen=True)
 class MemoryRow:
@@ -99,6 +100,24 @@ def sampled_memory(points: int = 10**7) -> list[MemoryRow]:
     timed = peak_bytes(lambda: sampled_response(t, S, 25.0))
     return [MemoryRow("sampled_response_uniform", points, S.nbytes, uniform[1], uniform[0]),
             MemoryRow("sampled_response", points, S.nbytes + t.nbytes, timed[1], timed[0])]
+
+
+def goals(paper: str, rows: list[MemoryRow]) -> list[Goal]:
+    """The memory target of one paper as a row of the targets table: the
+    worst peak over its limit (1 or less: met).
+
+    Parameters
+    ----------
+    paper : str
+        The derivation id, for the row.
+    rows : list of MemoryRow
+        Rows of :func:`function_memory`.
+    """
+    if not rows:
+        return []
+    worst = max(rows, key=lambda r: r.peak_bytes / r.limit)
+    return [Goal(paper, "peak memory of one call (x its limit, 2 input + output)",
+                 worst.peak_bytes / worst.limit, 1.0, f"{worst.function} at {worst.points:.0e}")]
 
 
 def as_markdown(rows: list[MemoryRow]) -> str:

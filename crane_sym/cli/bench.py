@@ -146,6 +146,7 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
         memory_points = 10**6 if args.quick else 10**7
         with say.task(f"{i}: peak memory on {memory_points:.0e} points"):
             memory = bench_memory.function_memory(d, values, duration, memory_points)
+        goals += bench_memory.goals(i, memory)
         with say.task(f"{i}: scene modules against the general module"):
             sized = [line for s in chosen
                      for line in bench.scene_comparison(

@@ -7,7 +7,10 @@ evaluated instead in the output buffer, one ufunc pass per node, with
 ``out=``: a chain (each node with one array operand) needs no other array;
 where two array operands meet, the second is made in a work array, one per
 nesting depth, allocated once and reused. Expressions with other nodes (a
-Piecewise, a kernel call) are left to the plain printer.
+Piecewise, a kernel call) are left to the plain printer. Either way a
+function of time is evaluated a block of points at a time (:func:`blocked`):
+its array temporaries, the work arrays included, are then block-sized, so a
+call's peak memory is its input and output and a few blocks.
 """
 from __future__ import annotations
 
@@ -15,7 +18,7 @@ from typing import Callable
 
 import sympy as sp
 
-__all__ = ["chain"]
+__all__ = ["blocked", "chain"]
 
 #: SymPy function -> NumPy ufunc applied in place.
 UNARY = {sp.sin: "np.sin", sp.cos: "np.cos", sp.tan: "np.tan", sp.exp: "np.exp",
@@ -139,3 +142,42 @@ def chain(expr: sp.Expr, heavy: set[sp.Symbol], print_: Callable[[sp.Basic], str
     if where != buffer:                            # expr was a bare array symbol
         lines.append(f"np.copyto({buffer}, {where})")
     return lines
+
+
+def blocked(expr: sp.Expr, temporaries: list[tuple[sp.Symbol, sp.Expr]],
+            names: list[str], heavy: set[sp.Symbol],
+            print_: Callable[[sp.Basic], str]) -> list[str]:
+    """Statements that fill ``out`` with ``expr`` a block of points at a time
+    (the kernel ``_spans``): the array temporaries of the CSE computed per
+    block, then ``expr`` by :func:`chain` into the block, or printed whole
+    where it is not a chain (once: one point with no buffer gets the number
+    back, where a chain prints it on its own).
+
+    Parameters
+    ----------
+    expr : sympy.Expr
+        The array part of a function (parameters already hoisted).
+    temporaries : list of (Symbol, Expr)
+        The CSE's array temporaries, in the order they are computed.
+    names : list of str
+        The names ``expr`` and the temporaries read, in a fixed order: the
+        blocks slice those that are arrays.
+    heavy : set of Symbol
+        Symbols that stand for full-size arrays (as for :func:`chain`).
+    print_ : callable
+        The printer.
+    """
+    made = [f"{s} = {print_(v)}" for s, v in temporaries]
+    steps = chain(expr, heavy, print_, buffer="_o")
+    listed = ", ".join(names) + ("," if len(names) == 1 else "")
+    loop = f"for _o, ({listed}) in _spans(out, shape, {', '.join(names)}):"
+    if len(loop) > 90:                             # the values on a line of their own
+        loop = f"for _o, ({listed}) in _spans(\n        out, shape, {', '.join(names)}):"
+    if steps is None:                              # printed once: a number for one point
+        return (["_one = out is None and not shape", "out = _out(out, shape)",
+                 *loop.split("\n"), *[f"    {line}" for line in made],
+                 f"    _o[...] = {print_(expr)}", "return out[()] if _one else out"])
+    return (["if out is None and not shape:",
+             *[f"    {line}" for line in made], f"    return {print_(expr)}",
+             "out = _out(out, shape)", *loop.split("\n")]
+            + [f"    {line}" for line in made + steps] + ["return out"])

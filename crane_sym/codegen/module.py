@@ -21,7 +21,7 @@ from crane_sym.kernels import arithmetic as kernels
 from crane_sym.kernels import phase as phase_kernels
 from crane_sym.codegen.cells import pieces, statements
 from crane_sym.derivation import Derivation, Output, TabulatedOutput
-from crane_sym.codegen.inplace import chain
+from crane_sym.codegen.inplace import blocked, chain
 from crane_sym.mechanics.phase_table import PhaseTable
 from crane_sym.codegen.printers import DoubleDoublePrinter, TernaryPrinter, printer_for, render_helper
 from crane_sym.codegen.rewriting import Rule, cos_phase, optimize, rules_for, sin_phase
@@ -222,17 +222,29 @@ def render_function(out: Output, table: SymbolTable,
     lines += [f"    _required({printer.doprint(e)}, {what!r})" for e, what in out.requires]
     for sym, value in phases:
         lines.append(f"    {sym} = {DoubleDoublePrinter().doprint(value)}")
-    for sym, value in named:
-        lines.append(f"    {sym} = {printer.doprint(value)}")
+    heavy = set(varying)
+    for sym, value in subs:                      # array temporaries of the CSE
+        if value.free_symbols & heavy:
+            heavy.add(sym)
+    block = (shape is None and not split and not phases    # a block of points at a time
+             and bool(reduced[-1].free_symbols & heavy))
+    for sym, value in named:                     # a block's temporaries in its loop
+        if not (block and sym in heavy):
+            lines.append(f"    {sym} = {printer.doprint(value)}")
     if shape is not None:
         elements = ", ".join(printer.doprint(e) for e in reduced)
         lines.append(f"    return _matrix({tuple(shape)}, [{elements}])")
+    elif block:
+        final = reduced[-1].xreplace(alias)
+        temporaries = [(sym, value) for sym, value in named if sym in heavy]
+        read = final.free_symbols.union(*[v.free_symbols for _, v in temporaries])
+        read = {str(r) for r in read}
+        names = [n for n in [e.name for e in entries] + [str(s) for s, _ in named
+                                                         if s not in heavy] if n in read]
+        lines += [f"    {s}" for s in blocked(final, temporaries, names, heavy,
+                                              printer.doprint)]
     else:
         final = reduced[-1].xreplace(alias)
-        heavy = set(varying)
-        for sym, value in subs:                  # array temporaries of the CSE
-            if value.free_symbols & heavy:
-                heavy.add(sym)
         taken = {e.name for e in entries} | {str(s) for s, _ in subs} | {
             str(k) for k, _ in assignments}
         merge = ((lambda cell: merge_waves(cell, next(iter(varying))))

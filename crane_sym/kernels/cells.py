@@ -4,7 +4,8 @@ The generated function marks once which points fall in which window (one
 boolean pass per condition), then evaluates each window's formula on its own
 points only and writes it into the output buffer. Where the points of a window
 are contiguous (a sorted time array, windows with scalar edges) a window is a
-slice: a view, no gather and no scatter. Ordinary functions, tested in
+slice: a view, no gather and no scatter. A function without windows is
+evaluated block by block the same way (``_spans``). Ordinary functions, tested in
 ``tests/test_cell_kernels.py``; the code generator copies the ones a module
 calls (``DEPENDS``), so generated modules need NumPy alone.
 """
@@ -72,6 +73,23 @@ def _blocks(where, size=16384):
     return [where[i:i + size] for i in range(0, where.size, size)]
 
 
+def _spans(out, shape, *values, size=16384):
+    """(a piece of ``out``, ``values`` on it) for each block of at most
+    ``size`` points of the flat ``out``, when ``out`` and every array among
+    ``values`` are C-contiguous of the full ``shape``: an expression's
+    temporaries then stay block-sized and in the cache, so a call needs no
+    full-size work array. Else one piece, the whole (broadcasting as is)."""
+    full = tuple(shape)
+    flat = out.flags.c_contiguous and all(
+        np.ndim(v) == 0 or (v.shape == full and v.flags.c_contiguous) for v in values)
+    if not flat or out.size <= size:
+        return [(out, values)]
+    o = out.reshape(-1)
+    arrays = [v if np.ndim(v) == 0 else v.reshape(-1) for v in values]
+    return [(o[i:i + size], tuple(v if np.ndim(v) == 0 else v[i:i + size] for v in arrays))
+            for i in range(0, o.size, size)]
+
+
 def _cancelled(value, bound):
     """A selector of the points of the 1-D ``value`` below half its error
     scale ``bound``, where a fast sum cancels and the cell's own formula is
@@ -81,4 +99,4 @@ def _cancelled(value, bound):
 
 #: kernel -> kernels it calls, so a module carries only what it uses.
 DEPENDS = {"_selector": (), "_cells": ("_selector",), "_at": (), "_put": (),
-           "_cancelled": ("_selector",), "_blocks": ()}
+           "_cancelled": ("_selector",), "_blocks": (), "_spans": ()}

@@ -26,7 +26,8 @@ nothing on import; ``build()`` returns the ``Derivation``.
   (32)–(53); ``published_optimum.py``: (54)–(66) and the maxima after (66).
 - ``tables.py``: Tables 1–2, derived and printed.
 - ``outputs.py``: generated functions, ODE systems, bench parameters.
-- ``bench_cases.py``: the cases the sweep and sampled-load benches run.
+- ``bench_cases.py``: the cases the sweep and sampled-load benches run, and the
+  hand-written NumPy floor of the piecewise target.
 - ``hard_cases.py``: seeded hard cases for ``crane-sym accuracy``.
 - ``report.py``: ``scene_report(scene)`` for ``crane-sym run``.
 """
@@ -35,7 +36,7 @@ from __future__ import annotations
 from crane_sym.derivation import Derivation
 from crane_sym.published import PublishedFormula
 
-from .bench_cases import SAMPLED_BENCH_CASES, SWEEP_BENCH_CASES
+from .bench_cases import HAND_WRITTEN, SAMPLED_BENCH_CASES, SWEEP_BENCH_CASES
 from .hard_cases import hard_cases
 from .model import AUTHORS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .drive_law_scene import DRIVE_LAW
@@ -49,7 +50,8 @@ from .steps_optimum import optimum
 #: Loads a scene may give as data (crane_sym.derivation.SceneLoad).
 SCENE_LOADS = {DRIVE_LAW.table: DRIVE_LAW}
 
-__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "LATEX_NAMES", "SAMPLED_BENCH_CASES",
+__all__ = ["ID", "PAPER", "TITLE", "AUTHORS", "HAND_WRITTEN", "LATEX_NAMES",
+           "SAMPLED_BENCH_CASES",
            "SCENE_CHECKS", "SCENE_LOADS", "SCENE_OPTIONS", "SWEEP_BENCH_CASES", "build",
            "hard_cases", "published_formulas", "scene_report", "VALUE_UNITS"]
 
