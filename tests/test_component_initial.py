@@ -180,3 +180,22 @@ def test_a_braked_wheel_given_a_speed_slides_to_rest(tmp_path):
     assert event == "wheel rests"
     assert abs(t_rest - J * w0 / M) <= 1e-12 * J * w0 / M
     assert abs(angle - (math.pi / 2 + J * w0 ** 2 / (2 * M))) <= 1e-12 * angle
+
+
+def test_a_sweep_varies_the_initial_displacement():
+    """``lifted.displacement`` is a field of a sweep (by its declaration): the
+    designs, solved together, peak at m g + c |lift|."""
+    from crane_sym.components.designs import Designs
+    designs = Designs(EXAMPLE)
+    lifts = np.array([-0.2, -0.1, -0.05])
+    assert designs.fields["lifted.displacement"].key == "displacement"
+    peaks = designs.largest("rope.peak", {"lifted.displacement": lifts})
+    closed = 10e3 * 9.81 + 5e5 * np.abs(lifts)
+    print(f"peaks {peaks!r} N, m g + c |lift| = {closed!r} N")
+    assert np.all(np.abs(peaks - closed) <= 1e-9 * closed)
+
+
+def test_the_walkthrough_names_the_initial_state(tmp_path):
+    page = tmp_path / "page.md"
+    assert main(["walkthrough", str(EXAMPLE), "-o", str(page)]) == 0
+    assert "then given its initial states (hook displacement -0.1 m)" in page.read_text()
