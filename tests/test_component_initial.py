@@ -199,3 +199,24 @@ def test_the_walkthrough_names_the_initial_state(tmp_path):
     page = tmp_path / "page.md"
     assert main(["walkthrough", str(EXAMPLE), "-o", str(page)]) == 0
     assert "then given its initial states (hook displacement -0.1 m)" in page.read_text()
+
+
+def test_a_displacement_past_a_flank_closes_the_gap(tmp_path):
+    """With a gap −s < u < 0, a start at u0 > 0 is on the upper flank: the
+    load c u0 cos ωt until u = 0 at π/(2ω), where the gap opens; the bodies
+    then part at u0 ω and close on the lower flank s/(u0 ω) later."""
+    u0, s = 0.004, 0.001
+    path = tmp_path / "free_pair.toml"
+    text = FREE.format(m1=M1, m2=M2, c=C, initial=f'displacement = "{u0} m"',
+                       start='start = "rest"', duration=1)
+    path.write_text(text.replace(f'stiffness = "{C} N/m"',
+                                 f'stiffness = "{C} N/m"\nbacklash = "{s} m"'))
+    read = read_component_file(path)
+    run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
+    opened, closed = run.events[:2]
+    expected = (math.pi / (2 * OMEGA), math.pi / (2 * OMEGA) + s / (u0 * OMEGA))
+    print(f"events {opened}, {closed}; expected at {expected}; peak {run.peaks[0].value!r} N")
+    assert (opened[1], closed[1]) == ("spring opens", "spring closes -")
+    assert abs(opened[0] - expected[0]) <= 1e-12 * expected[1]
+    assert abs(closed[0] - expected[1]) <= 1e-12 * expected[1]
+    assert abs(run.peaks[0].value - C * u0) <= 1e-9 * C * u0 and run.peaks[0].time == 0.0
