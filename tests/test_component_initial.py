@@ -220,3 +220,17 @@ def test_a_displacement_past_a_flank_closes_the_gap(tmp_path):
     assert abs(opened[0] - expected[0]) <= 1e-12 * expected[1]
     assert abs(closed[0] - expected[1]) <= 1e-12 * expected[1]
     assert abs(run.peaks[0].value - C * u0) <= 1e-9 * C * u0 and run.peaks[0].time == 0.0
+
+
+def test_a_velocity_of_a_body_a_speed_law_moves_is_refused(tmp_path, capsys):
+    path = tmp_path / "free_pair.toml"
+    text = FREE.format(m1=M1, m2=M2, c=C, initial='velocity = "1 m/s"',
+                       start='start = "rest"', duration=1)
+    path.write_text(text.replace("[run]", '[[motor_law]]\nname = "control"\nbody = "right"\n'
+                                          'law = "speed"\nunit = "m/s"\n'
+                                          'breakpoints = [0.0, 5.0]\ncoefficients = [[0.5]]\n\n'
+                                          '[run]'))
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "-q"]) == 2
+    assert capsys.readouterr().err == (
+        "crane-sym: error: initial state 'pushed': motor law 'control' sets the speed of "
+        "'right'; give no velocity\n")
