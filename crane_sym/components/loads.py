@@ -1,6 +1,7 @@
 """What acts on one body of a drive train: brakes, motors (constant, steady or
 a speed characteristic), gravity and constant resistances (a law in time:
-:mod:`crane_sym.components.laws`).
+:mod:`crane_sym.components.laws`); and a body's given state at t = 0
+(:class:`Initial`, applied by :mod:`crane_sym.components.initial`).
 
 Values are text with a unit or numbers in SI (:func:`crane_sym.components.parts.value`);
 a torque on a rotating body is a force on a translating one, checked when the
@@ -16,8 +17,8 @@ from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import (Component, ComponentError, Given, Value, _at_least,
                                         _name, value)
 
-__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "Gravity", "Motor", "Resistance",
-           "STEADY"]
+__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "Gravity", "Initial", "Motor",
+           "Resistance", "STEADY"]
 
 #: A motor torque that holds the drive in its steady motion at the start.
 STEADY = "steady"
@@ -157,6 +158,33 @@ class Characteristic(Component):
             _at_least(owner, "hold", x, 0.0, True)
         for key, v in (("name", name), ("body", body), ("speed", value(owner, "speed", speed)),
                        ("slopes", k), ("holds", tuple(x.si for x in h))):
+            object.__setattr__(self, key, v)
+
+
+@dataclass(frozen=True)
+class Initial(Component):
+    """The state of ``body`` at t = 0 beside the run's start: moved by
+    ``displacement`` along its coordinate from where the start puts it, and
+    moving at ``velocity`` (None: as the start has it). No force: it is not
+    among :data:`ACTING`."""
+
+    name: str
+    body: str
+    displacement: Value | None = None
+    velocity: Value | None = None
+    kind = "initial state"
+
+    def __init__(self, name: str, body: str, displacement: Given | None = None,
+                 velocity: Given | None = None) -> None:
+        name = _name("initial state", name)
+        owner = f"initial state {name!r}"
+        if displacement is None and velocity is None:
+            raise ComponentError(f"{owner}: give a displacement, a velocity or both")
+        for key, v in (("name", name), ("body", body),
+                       ("displacement", None if displacement is None else
+                        value(owner, "displacement", displacement)),
+                       ("velocity", None if velocity is None else
+                        value(owner, "velocity", velocity))):
             object.__setattr__(self, key, v)
 
 

@@ -36,6 +36,7 @@ import numpy as np
 
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, HELD, ComponentSystem, Mode
+from crane_sym.components.initial import apply, shifts
 from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.model_limits import MAX_PHASES, check_cycles
@@ -152,6 +153,7 @@ class Model:
         self.name, self.title = name, title
         self.scope = scope
         self.assembly: Assembly = assemble(self.components)
+        self.initial = shifts(self.components, self.assembly)
         self.equations: Equations = derive(self.assembly)
 
     @classmethod
@@ -198,6 +200,8 @@ class Model:
         motor then holds the drive against the other loads). ``rest``:
         everything at rest at zero twist, every gap open (a link with backlash
         at the end of its gap where its twist is zero), whatever the loads.
+        Then each ``[[initial]]`` state moves its body and sets its speed
+        (:func:`~crane_sym.components.initial.apply`).
         """
         a = self.assembly
         if rest:
@@ -253,7 +257,7 @@ class Model:
                     tuple(False for _ in probe.brakes), driven,
                     tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
                     tuple(0 for _ in probe.laws))
-        return mode, x, extra
+        return (*apply(self.initial, probe, mode, x, v), extra)
 
     def _at_once(self) -> tuple[bool, ...]:
         """Which brakes act at rest from t = 0 (a step without delay)."""
@@ -264,7 +268,7 @@ class Model:
     def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
         """At rest, every gap open; a brake without delay engaged from the
         start, its body held while the loads at rest are within its capacity
-        (decided here, where the state is exactly zero, not at an event)."""
+        (decided here, not at an event), sliding if an initial state moves it."""
         if self.steady_motor is not None:
             raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
                                  "hold; give its torque")
@@ -277,11 +281,14 @@ class Model:
         x = np.zeros(probe.size)
         for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
             x[probe.v(g)] = probe.laws[k].part.value_at(0.0) / kappa
+        mode, x = apply(self.initial, probe, mode, x)
         for g in sorted({probe.brake_group[i] for i, on in enumerate(engaged) if on}):
             held = replace(mode, motion=tuple(HELD if j == g else m
                                               for j, m in enumerate(motion)))
             (wn, kn), (wc, kc) = probe.net_load(held, g), probe.capacity(held, g)
             net, cap = float(wn @ x + kn), float(wc @ x + kc)
+            if x[probe.v(g)] != 0:           # given a velocity: it slides that way
+                net, cap = float(x[probe.v(g)]), -1.0
             motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
         return replace(mode, motion=tuple(motion)), x, {}
 
@@ -327,6 +334,7 @@ class Model:
         model.components = tuple(components)
         model.name, model.title, model.scope = self.name, self.title, self.scope
         model.assembly = assemble(model.components)
+        model.initial = shifts(model.components, model.assembly)
         model.equations = self.equations.for_design(model.assembly)
         return model
 

@@ -48,6 +48,7 @@ VALUE_KINDS: dict[str, dict[str, tuple[Dimension, str]]] = {
     "damping": {ROTATING: (force * length * time, "N*m*s/rad"),
                 TRANSLATING: (force * time / length, "N*s/m")},
     "backlash": {ROTATING: (_ONE, "rad"), TRANSLATING: (length, "m")},
+    "displacement": {ROTATING: (_ONE, "rad"), TRANSLATING: (length, "m")},
     "load": {ROTATING: (force * length, "N*m"), TRANSLATING: (force, "N")},
     "speed": {ROTATING: (1 / time, "rad/s"), TRANSLATING: (length / time, "m/s")},
     "acceleration": {ROTATING: (1 / time**2, "rad/s^2"), TRANSLATING: (length / time**2, "m/s^2")},

@@ -76,6 +76,12 @@
     slopes = ["1.7e5 N*s/m", "3.4e5 N*s/m"]
     holds = ["0.4 s"]           # one fewer than slopes
 
+    [[initial]]                 # a body's state at t = 0 (components.initial)
+    name = "lifted"
+    body = "hook"
+    displacement = "-0.1 m"     # from where the start puts it; and/or
+    velocity = "0.5 m/s"        # its velocity (no [run] speed beside it)
+
     [[formula]]                 # a formula of your source, for `crane-sym audit FILE`
     name = "(12)"               # (crane_sym.components.formulas)
     latex = "M_{st} = \\frac{m g r}{n i}"

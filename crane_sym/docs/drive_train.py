@@ -307,6 +307,11 @@ def _phases(read: ComponentFile, run: ComponentRun) -> list[str]:
     start = ("at rest, every link at zero twist and every gap open" if read.rest
              else f"in its steady motion ({body} at {read.speed}, every group at the speed "
                   "that implies, every link at the twist that balances the loads)")
+    given = ["; ".join(f"{s.part.body} {k} {getattr(s.part, k).text}" for k in
+                       ("displacement", "velocity") if getattr(s.part, k) is not None)
+             for s in read.model.initial]
+    if given:
+        start += markdown_text(f", then given its initial states ({'; '.join(given)})")
     instants = [k for k, seg in enumerate(run.result.segments, start=1) if seg.t1 == seg.t0]
     note = ("" if not instants else
             f" A phase of zero length ({', '.join(map(str, instants))}) is an instant at "
