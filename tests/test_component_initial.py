@@ -117,6 +117,17 @@ def test_hook_released_example_peaks_at_weight_plus_c_lift():
     assert abs(peak.factor - (m * g + c * lift) / 98.1e3) <= 1e-9
 
 
+def test_a_displaced_start_gives_no_dynamic_factor_without_a_reference(tmp_path):
+    """The load at a displaced start is no static load: without a given
+    reference the factor is left out, not peak over that load (3.08 here)."""
+    text = EXAMPLE.read_text().replace('reference = "98.1 kN"', "")
+    (tmp_path / "hook.toml").write_text(text)
+    read = read_component_file(tmp_path / "hook.toml")
+    peak = read.model.run(read.duration, read.body, read.speed, rest=read.rest).peaks[0]
+    assert peak.reference is None and peak.factor is None
+    assert abs(peak.static - (10e3 * 9.81 - 5e5 * 0.1)) <= 1e-9 * 10e3 * 9.81
+
+
 #: What replaces the right mass's initial keys (and the [run] start), and the
 #: line expected after "crane-sym: error: ".
 FAULTS = {

@@ -94,7 +94,8 @@ class ComponentRun:
         for i, link in enumerate(self.system.assembly.links):
             affine = self.system.link_load(i)
             when, peak = _largest(self.result, self.system, affine)
-            static, reference = start_load(self.system, self.mode, self.x0, i)
+            static, reference = start_load(self.system, self.mode, self.x0, i,
+                                           displaced=bool(self.model.initial))
             motion = self.system.assembly.bodies[link.part.first].motion
             out.append(LinkPeak(link.part.name, when, peak,
                                 "N*m" if motion == ROTATING else "N", static, reference,
@@ -111,11 +112,12 @@ class ComponentRun:
                          self.system.link_load(names.index(link)))
 
 
-def start_load(system: ComponentSystem, mode: Mode, x0: np.ndarray,
-               index: int) -> tuple[float, float | None]:
+def start_load(system: ComponentSystem, mode: Mode, x0: np.ndarray, index: int,
+               displaced: bool = False) -> tuple[float, float | None]:
     """(load at the start, reference) of elastic link ``index``: the reference
     the dynamic factor divides by is the link's given ``reference``, else its
-    load at the start (None where that is zero).
+    load at the start (None where that is zero, or where an initial state
+    displaced the start: a load at a displaced start is no static load).
 
     Parameters
     ----------
@@ -125,11 +127,15 @@ def start_load(system: ComponentSystem, mode: Mode, x0: np.ndarray,
         The run's first mode and state.
     index : int
         The link's position among the model's elastic links.
+    displaced : bool
+        Whether ``[[initial]]`` states moved the start.
     """
     w, k = system.link_load(index)(mode)
     static = float(np.asarray(w) @ x0 + k)
     given = system.assembly.links[index].reference
-    return static, given if given is not None else (static or None)
+    if given is not None or displaced:
+        return static, given
+    return static, static or None
 
 
 def _nothing(size: int, mode: Mode) -> tuple[np.ndarray, float]:
