@@ -121,6 +121,9 @@ def cmd_audit(args: argparse.Namespace) -> int:
     with progress.reporting(_progress(args)):
         audited = audit_papers(ids, processes)
     print(FORMATS[args.format]([r for a in audited for r in a.records]))
+    recall = "\n".join(a.recall.text() for a in audited)
+    print(f"\nRecall of the print (every numbered equation, table cell and number "
+          f"stated as a result):\n{recall}", file=sys.stderr if args.format == "json" else None)
     fresh = sum(a.parsed_fresh for a in audited)
     if fresh:
         print(f"machine reading: {fresh} printed sides parsed afresh, not from the committed "
