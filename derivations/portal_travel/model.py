@@ -215,8 +215,8 @@ _startup = [
                    "a side is on (β_1 on the first)", sample_range=(1e5, 5e6)),
     PhysicalSymbol(F_1, force, "N", "load of the left link in the first stage (text: F)",
                    sign="real", sample_range=(1e3, 6e4)),
-    PhysicalSymbol(t, time, "s", "time of the start-up in (1)-(2) (not a scene's clock: the "
-                   "start-up runs phase by phase, startup.py)", sign="nonnegative",
+    PhysicalSymbol(t, time, "s", "time of the start-up in (1)-(2), phase by phase (not a "
+                   "scene's clock)", sign="nonnegative",
                    sample_range=(1e-3, 5.0)),
     PhysicalSymbol(x_1, length, "m", "left motor masses' coordinate at the rim", COORDINATE,
                    "real"),
@@ -268,7 +268,7 @@ HANDOUT_WORDS = {
     "eps": r"$\varepsilon_\alpha$", "xp": "the shift of the pointed tip", "psi": r"$\psi$",
     "2pi": r"$2\pi$", "pi": r"$\pi$",
     "the three-mass start-up of startup.py": "the three-mass start-up of the model text",
-    " (startup.PLAUSIBLE)": ""}
+    " (startup.PLAUSIBLE)": "", "(startup.py, model text)": "(from the model text)"}
 
 MODEL = r"""
 Form 1 and Fig. 10: a pair of involute spur gears cut by generating with a
