@@ -125,7 +125,7 @@ def test_fig9_peak_is_judged_by_its_sensitivity(derivation, records):
     step = derivation.step("Fig. 9 peak, hook only")
     low, high = step.sensitivity.band
     assert low < 8.9 < high and abs(step.sensitivity.value - 9.13) < 0.01
-    assert {s.parameter.key for s in step.sensitivity.swings} == {"zeta", "t_M"}
+    assert {p.key for p in step.sensitivity.parameters} == {"zeta", "t_M"}
     r = records["Fig. 9 peak 8.9"]
     assert r.verdict == "consistent" and "inside the band" in r.detail
     assert records["conclusions 890 %"].duplicate_of == "Fig. 9 peak 8.9"

@@ -160,12 +160,13 @@ def _sensitivity_dict(s: Sensitivity | None) -> dict | None:
     if s is None:
         return None
     low, high = s.band
+    ends = {f"{end}_at": {"value": e.value, "by": e.by,
+                          "parameters": {p.key: v for p, v in zip(s.parameters, e.at)}}
+            for end, e in zip(("lowest", "highest"), s.extremes)}
     return {"value": s.value, "band": [low, high], "tolerance": s.spread, "how": s.how,
-            "parameters": [{"name": w.parameter.name, "unit": w.parameter.unit,
-                            "chosen": w.parameter.chosen,
-                            "plausible": [w.parameter.low, w.parameter.high],
-                            "why": w.parameter.why, "at_low": w.at_low,
-                            "at_high": w.at_high} for w in s.swings]}
+            "parameters": [{"name": p.name, "key": p.key, "unit": p.unit,
+                            "chosen": p.chosen, "plausible": [p.low, p.high], "why": p.why}
+                           for p in s.parameters], **ends}
 
 
 def _check_dict(c: CheckOutcome) -> dict:
