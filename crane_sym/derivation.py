@@ -12,7 +12,7 @@ from typing import Any, Callable, Mapping
 import sympy as sp
 
 from crane_sym import progress
-from crane_sym.published import PublishedFormula
+from crane_sym.published import PrintedItem, PublishedFormula
 from crane_sym.sensitivity import Sensitivity
 from crane_sym.symbols import PhysicalSymbol, SymbolTable
 
@@ -252,6 +252,10 @@ class Derivation:
         In the paper's order.
     published : list of PublishedFormula
         The paper's formulas, transcribed as printed.
+    printed_items : list of PrintedItem
+        The inventory of the print (numbered equations, table cells, numbers
+        stated as results), each naming the records that judge it: the audit's
+        recall counts these.
     outputs : list of Output
         What ``crane-sym generate`` emits.
     tabulated : list of TabulatedOutput
@@ -276,6 +280,7 @@ class Derivation:
     symbols: SymbolTable
     steps: list[Step] = field(default_factory=list)
     published: list[PublishedFormula] = field(default_factory=list)
+    printed_items: list[PrintedItem] = field(default_factory=list)
     outputs: list[Output] = field(default_factory=list)
     tabulated: list[TabulatedOutput] = field(default_factory=list)
     ode_systems: list[ODESystem] = field(default_factory=list)

@@ -94,12 +94,17 @@ class PaperReading:
         Why: the printed numbers that decide between the readings.
     rejected : str
         The other reading, e.g. "values of each train (counted twice)".
+    fixed_by : tuple of str
+        Labels of the records whose prints are that evidence. Such a record
+        matches under the reading it chose and fails under the other, so it is
+        ``consistent`` with the reading, never a confirmation of it.
     """
 
     subject: str
     reading: str
     evidence: str
     rejected: str
+    fixed_by: tuple[str, ...] = ()
 
     @property
     def text(self) -> str:
@@ -280,6 +285,57 @@ class PublishedFormula:
     def target(self) -> str:
         """Label of the derived step this formula is checked against."""
         return self.compare_to or self.label
+
+
+@dataclass(frozen=True)
+class PrintedItem:
+    """One item of a paper's print that the audit owes a verdict: a numbered
+    equation, a table cell, a number its text states as a result, or an
+    unnumbered formula of its text. A paper lists its items from the print
+    (``PRINTED_ITEMS`` beside its records), so the audit's recall counts the
+    print, not the records.
+
+    Parameters
+    ----------
+    item : str
+        The item as the paper places it: ``"(13)"``, ``"Table 2, wind load, %"``.
+    kind : str
+        One of ``ITEM_KINDS``.
+    records : tuple of str
+        Labels of the records that judge it; a label judges the item when it is
+        the label or begins with it and a comma (``"(28), P(0)"`` judges ``"(28)"``).
+    """
+
+    item: str
+    kind: str
+    records: tuple[str, ...]
+
+    def __post_init__(self) -> None:
+        if self.kind not in ITEM_KINDS:
+            raise ValueError(f"printed item {self.item}: kind must be one of {ITEM_KINDS}")
+        if not self.records:
+            raise ValueError(f"printed item {self.item}: name the records that judge it")
+
+    def judged_by(self, label: str) -> bool:
+        """True when the record labelled ``label`` judges this item."""
+        return any(label == r or label.startswith(r + ", ") for r in self.records)
+
+
+#: What a printed item is.
+ITEM_KINDS = ("numbered equation", "table cell", "number in the text", "unnumbered formula")
+
+
+def numbered(first: int, last: int) -> list[PrintedItem]:
+    """Items ``(first)`` … ``(last)`` of the print, each judged by the records of
+    its number (an equation the OCR lost is still an item: the print had it).
+
+    Parameters
+    ----------
+    first, last : int
+        The first and last equation number printed.
+    """
+    return [PrintedItem(f"({n})", "numbered equation", (f"({n})",))
+            for n in range(first, last + 1)]
 
 
 def printed(paper: str, label: str, latex: str, relation: sp.Eq | None,

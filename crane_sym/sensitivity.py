@@ -4,24 +4,36 @@ A model the paper does not fully state needs values the paper never gives
 (a stiffness, a damping ratio, a crane mass). A printed number the model
 reproduces with those values is reproduced *through* them: it neither confirms
 nor refutes the paper until one knows how far the number moves when the
-chosen values go over their plausible ranges. :func:`sweep` measures that:
-each parameter alone to both ends of its range, the others at their chosen
-values (the swing shown per parameter). The band is the swings stacked: the
-chosen value plus every parameter's largest rise, minus every parameter's
-largest fall, as a worst-case tolerance stack-up adds them. Running the
-corners of the ranges instead costs 2**n runs and reaches combinations no
-one would choose (a stiff, undamped, weakly started crane at once); the
-stack-up needs 2n runs and is exact for effects that add. A
-:class:`Sensitivity` carries the result into the step that derives the
-number, where the audit reads it (``crane_sym.audit.verdicts``): the band is the
-tolerance that decides the record.
+chosen values go over their plausible ranges together. The band is the
+number's range over the whole box of those ranges: every corner of the box
+evaluated, then, from the best corner toward each end, a bounded optimiser
+(L-BFGS-B inside the box), the lowest and highest values met being the band.
+Moving one parameter at a time and stacking the swings is no range: effects
+that do not add (a stiff link with little damping) reach past it, and a
+print outside such a stack may still lie inside the box's range.
+
+The box is studied lazily, once per evaluator and process, when a band is
+first asked for (``Sensitivity.band``): building a derivation costs one run,
+its audit the 2**n corners and the optimiser's runs. A :class:`Sensitivity`
+carries the result into the step that derives the number, where the audit
+reads it (``crane_sym.audit.verdicts``): the band is the tolerance that
+decides the record.
 """
 from __future__ import annotations
 
+import itertools
 from dataclasses import dataclass
 from typing import Callable, Mapping
 
-__all__ = ["Chosen", "Sensitivity", "Swing", "sweep"]
+import numpy as np
+from scipy.optimize import minimize
+
+__all__ = ["BoxStudy", "Chosen", "Extreme", "Sensitivity", "sweep"]
+
+#: Most runs of the optimiser per number and direction (past the corners).
+OPTIMISER_RUNS = 40
+#: Finite-difference step of the optimiser, as a share of each range.
+STEP = 1e-3
 
 
 @dataclass(frozen=True)
@@ -58,48 +70,108 @@ class Chosen:
             raise ValueError(f"{self.key}: the chosen value {self.chosen} is outside its "
                              f"plausible range [{self.low}, {self.high}]")
 
+    def at(self, share: float) -> float:
+        """The value (in ``unit``) a share 0 … 1 of the way from ``low`` to ``high``."""
+        return self.low + float(share) * (self.high - self.low)
+
 
 @dataclass(frozen=True)
-class Swing:
-    """The number at both ends of one parameter's plausible range."""
+class Extreme:
+    """The lowest or highest value of a number met in the box, and where."""
 
-    parameter: Chosen
-    at_low: float
-    at_high: float
+    value: float
+    at: tuple[float, ...]        # each parameter's value there, in its unit
+    by: str                      # "a corner" or "the optimiser"
 
-    def text(self, digits: int = 3) -> str:
-        """``"link stiffness c 2–10 MN/m (chosen 5): 231–251"``."""
-        p = self.parameter
-        unit = f" {p.unit}" if p.unit else ""
-        return (f"{p.name} {p.low:g}–{p.high:g}{unit} (chosen {p.chosen:g}): "
-                f"{self.at_low:.{digits}g}–{self.at_high:.{digits}g}")
+    def text(self, parameters: tuple[Chosen, ...], digits: int = 3) -> str:
+        """``"231 (a corner: link stiffness C 2 MN/m, ...)"``."""
+        where = ", ".join(f"{p.name} {v:.3g}{' ' + p.unit if p.unit else ''}"
+                          for p, v in zip(parameters, self.at))
+        return f"{self.value:.{digits}g} ({self.by}: {where})"
+
+
+class BoxStudy:
+    """The numbers an evaluator returns, over the box of its chosen parameters.
+
+    Every run is kept by its point, so the corners are run once for all the
+    numbers and the optimiser of one number never repeats a corner."""
+
+    def __init__(self, evaluate: Callable[[Mapping[str, float]], Mapping[str, float]],
+                 parameters: tuple[Chosen, ...], fixed: Mapping[str, float] | None = None
+                 ) -> None:
+        self.evaluate, self.parameters = evaluate, tuple(parameters)
+        self.fixed = dict(fixed or {})
+        self._runs: dict[tuple[float, ...], dict[str, float]] = {}
+        self._extremes: dict[str, tuple[Extreme, Extreme]] = {}
+
+    def run(self, shares: tuple[float, ...]) -> dict[str, float]:
+        """The evaluator's numbers at ``shares`` (0 … 1 along each range)."""
+        key = tuple(float(s) for s in shares)
+        if key not in self._runs:
+            values = self.fixed | {p.key: p.at(s) * p.scale
+                                   for p, s in zip(self.parameters, key)}
+            self._runs[key] = dict(self.evaluate(values))
+        return self._runs[key]
+
+    def _point(self, shares) -> tuple[float, ...]:
+        return tuple(p.at(s) for p, s in zip(self.parameters, shares))
+
+    def extremes(self, name: str) -> tuple[Extreme, Extreme]:
+        """The lowest and highest ``name`` over the box: the corners, then the
+        optimiser from the lowest and from the highest corner."""
+        if name not in self._extremes:
+            corners = list(itertools.product((0.0, 1.0), repeat=len(self.parameters)))
+            values = [self.run(c)[name] for c in corners]
+            found = []
+            for sign, pick in ((1.0, int(np.argmin(values))), (-1.0, int(np.argmax(values)))):
+                best = (values[pick], corners[pick], "a corner")
+                result = minimize(lambda x, s=sign: s * self.run(tuple(x))[name],
+                                  np.array(corners[pick]), method="L-BFGS-B",
+                                  bounds=[(0.0, 1.0)] * len(corners[pick]),
+                                  options={"maxfun": OPTIMISER_RUNS, "eps": STEP})
+                if result.fun < sign * best[0]:          # result.fun is sign × value
+                    best = (sign * float(result.fun), tuple(result.x), "the optimiser")
+                found.append(Extreme(best[0], self._point(best[1]), best[2]))
+            self._extremes[name] = (found[0], found[1])
+        return self._extremes[name]
 
 
 @dataclass(frozen=True)
 class Sensitivity:
-    """A derived number at the chosen parameters and its swing with each of them.
+    """A derived number at the chosen parameters and its range over their box.
 
     Parameters
     ----------
     value : float
         The number with every parameter at its chosen value.
-    swings : tuple of Swing
-        One per chosen parameter, each moved alone over its plausible range.
+    study : BoxStudy
+        The box of the chosen parameters, studied when the band is first asked for.
+    name : str
+        The number's name among the study's.
     """
 
     value: float
-    swings: tuple[Swing, ...]
-    how: str = ("each chosen parameter alone to both ends of its plausible range, "
-                "the rises and the falls stacked")
+    study: BoxStudy
+    name: str
+    how: str = ("the range over the whole box of the plausible ranges: all corners, then "
+                "a bounded optimiser (L-BFGS-B) from the lowest and the highest corner")
+
+    @property
+    def parameters(self) -> tuple[Chosen, ...]:
+        """The chosen parameters whose box the band spans."""
+        return self.study.parameters
+
+    @property
+    def extremes(self) -> tuple[Extreme, Extreme]:
+        """The lowest and the highest value over the box, with where."""
+        return self.study.extremes(self.name)
 
     @property
     def band(self) -> tuple[float, float]:
-        """The chosen value minus every parameter's largest fall, plus every
-        parameter's largest rise (a worst-case stack-up of the swings)."""
-        v = self.value
-        fall = sum(max(0.0, v - min(s.at_low, s.at_high)) for s in self.swings)
-        rise = sum(max(0.0, max(s.at_low, s.at_high) - v) for s in self.swings)
-        return v - fall, v + rise
+        """The number's lowest and highest value over the box (the chosen
+        value included)."""
+        low, high = self.extremes
+        return min(low.value, self.value), max(high.value, self.value)
 
     @property
     def spread(self) -> float:
@@ -109,12 +181,15 @@ class Sensitivity:
         return (high - low) / (2 * abs(self.value)) if self.value else float("inf")
 
     def text(self, digits: int = 3) -> str:
-        """One paragraph: the band, then each parameter's swing, largest first."""
+        """One paragraph: the band, where its ends are reached, the ranges."""
         low, high = self.band
-        swings = sorted(self.swings, key=lambda s: -abs(s.at_high - s.at_low))
+        lowest, highest = self.extremes
+        ranges = "; ".join(f"{p.name} {p.low:g}–{p.high:g}{' ' + p.unit if p.unit else ''}"
+                           f" (chosen {p.chosen:g})" for p in self.parameters)
         return (f"{self.value:.{digits}g} at the chosen parameters, {low:.{digits}g}–"
-                f"{high:.{digits}g} over their plausible ranges ({self.how}): "
-                + "; ".join(s.text(digits) for s in swings))
+                f"{high:.{digits}g} over their plausible ranges ({self.how}); lowest "
+                f"{lowest.text(self.parameters, digits)}, highest "
+                f"{highest.text(self.parameters, digits)}; ranges: {ranges}")
 
 
 def sweep(evaluate: Callable[[Mapping[str, float]], Mapping[str, float]],
@@ -128,19 +203,24 @@ def sweep(evaluate: Callable[[Mapping[str, float]], Mapping[str, float]],
         ``evaluate(values) -> {number name: value}``; ``values`` maps every
         ``Chosen.key`` (in the evaluator's unit) and every key of ``fixed``.
     parameters : tuple of Chosen
-        The chosen parameters, each moved alone to ``low`` and ``high``.
+        The chosen parameters, whose box of plausible ranges the bands span.
     fixed : mapping, optional
         Further inputs of ``evaluate`` that stay as they are.
 
     Returns
     -------
     dict of str to Sensitivity
-        One per number ``evaluate`` returns, in its order (1 + 2n runs).
+        One per number ``evaluate`` returns, in its order: one run now (the
+        chosen values), the box's when a band is first asked for.
+
+    Examples
+    --------
+    >>> p = (Chosen("a", "a", "", 1.0, 0.0, 2.0, ""), Chosen("b", "b", "", 1.0, 0.0, 2.0, ""))
+    >>> s = sweep(lambda v: {"ab": v["a"] * v["b"]}, p)["ab"]
+    >>> s.value, s.band
+    (1.0, (0.0, 4.0))
     """
     base = dict(fixed or {}) | {p.key: p.chosen * p.scale for p in parameters}
-    at_chosen = dict(evaluate(base))
-    ends = {p.key: (evaluate(base | {p.key: p.low * p.scale}),
-                    evaluate(base | {p.key: p.high * p.scale})) for p in parameters}
-    return {name: Sensitivity(value, tuple(Swing(p, ends[p.key][0][name], ends[p.key][1][name])
-                                           for p in parameters))
-            for name, value in at_chosen.items()}
+    study = BoxStudy(evaluate, parameters, fixed)
+    return {name: Sensitivity(float(value), study, name)
+            for name, value in evaluate(base).items()}

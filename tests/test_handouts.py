@@ -102,8 +102,10 @@ def test_the_printer_writes_as_a_person_does():
 #: What each walkthrough may reach: lines, and the longest line (prose paragraphs
 #: and table rows; a line of math is held to ``LIMIT`` apart). Before the handouts:
 #: 000 436 / 331, 001 1030 / 1284, 002 2780 / 600, 003 1811 / 1842, 004 1113 / 1423.
-LIMITS = {"travel_braking": (450, 340), "hoist_brakes": (960, 1250),
-          "hoist_startup": (2900, 430), "portal_travel": (1600, 1150),
+#: Lines and longest line; hoist_brakes and portal_travel grew by the printed items
+#: with nothing to check (issue 37), now one row each in their table and in the verdicts.
+LIMITS = {"travel_braking": (450, 340), "hoist_brakes": (1000, 1250),
+          "hoist_startup": (2900, 430), "portal_travel": (1680, 1150),
           "drum_drive": (1250, 1450)}
 
 

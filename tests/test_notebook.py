@@ -5,13 +5,14 @@ from __future__ import annotations
 import json
 
 import pytest
+import sympy as sp
 
 nbclient = pytest.importorskip("nbclient")
 nbformat = pytest.importorskip("nbformat")
 
 from crane_sym import registry  # noqa: E402
 from crane_sym.audit.verdicts import audit  # noqa: E402
-from crane_sym.docs.notebook import render_notebook  # noqa: E402
+from crane_sym.docs.notebook import numbers_tex, render_notebook  # noqa: E402
 from crane_sym.docs.walkthrough import handout_words, relation_tex, table_steps  # noqa: E402
 
 
@@ -90,6 +91,17 @@ def test_a_changed_value_reaches_the_numbers(tmp_path):
                for o in c.outputs if o.output_type == "display_data"]
     omega2 = 3e6 * (1234.5 + 110e3) / (1234.5 * 110e3)        # c (m1 + m2)/(m1 m2)
     assert len(numbers) == 2 and f"{omega2:.6g}" in numbers[1]
+
+
+def test_the_variable_of_a_derivative_keeps_its_letter():
+    """A value given for t is not put into x(t) and its derivatives (003's t of
+    (1)-(2) is in the parameter table); the other values are."""
+    t, m, b = sp.symbols("t m b")
+    x = sp.Function("x")(t)
+    values = {"t": 0.07, "m": 2.0, "b": 3.0}
+    assert numbers_tex(sp.Eq(m * x.diff(t, 2), -b * x.diff(t)), values, {}) \
+        == r"2.0 \ddot{x} = - 3.0 \dot{x}"
+    assert numbers_tex(sp.Eq(m * t, b), values, {}) == "0.14 = 3.0"
 
 
 def test_an_exact_number_is_shown_evaluated(tmp_path):

@@ -132,21 +132,30 @@ def test_causes_state_the_models_numbers():
         assert all(abs(r[f"a{k}"] - float(printed)) <= 0.01 for r in res.values()), k
 
 
+#: The start-up cells whose band tells the print from twice, half, ten times and a
+#: tenth of it: the only ones the band can judge (the others are not checkable).
+DISCRIMINATING = {"F_max, backlash 0", "psi against the model, backlash 0",
+                  "acceleration 2, backlash 0"}
+
+
 def test_each_startup_verdict(records):
     """Results of the chosen parameters are never confirmed nor remarks: consistent
-    inside the band those parameters span, a discrepancy outside it."""
+    inside a band that discriminates, not checkable where the band would hold a
+    print off by a factor 2 or a decimal point too."""
     for gap in ("0", "pi", "2pi"):
         f_max = records[f"Table 1, F_max, backlash {gap}"]
-        assert f_max.verdict == "consistent" and f_max.basis == "reconstructed model"
+        assert f_max.basis == "reconstructed model"
         assert f_max.cause.id == "003-startup-unstated-parameters"
         low, high = f_max.sensitivity.band
         assert low < float(f_max.printed) < high
-        assert records[f"Table 1, psi against the model, backlash {gap}"].verdict \
-            == "consistent"
-        for k in (1, 2, 3):
-            acc = records[f"Table 1, acceleration {k}, backlash {gap}"]
-            assert acc.cause.id == "003-startup-accelerations"
-            assert acc.verdict == ("discrepancy" if (k, gap) == (2, "2pi") else "consistent")
+        for what in ("F_max", "psi against the model", "acceleration 1", "acceleration 2",
+                     "acceleration 3"):
+            r = records[f"Table 1, {what}, backlash {gap}"]
+            judged = f"{what}, backlash {gap}" in DISCRIMINATING
+            assert r.verdict == ("consistent" if judged else "not_checkable"), r.label
+            assert judged or r.detail.startswith("the band does not discriminate"), r.label
+            if what.startswith("acceleration"):
+                assert r.cause.id == "003-startup-accelerations"
 
 
 def test_fig12_scene_runs_and_agrees_with_the_derivation(tmp_path):

@@ -41,9 +41,13 @@ def confirmations(records: Sequence[AuditRecord]) -> dict[str, int]:
     return {k: found.get(k, 0) for k in RESTS_ON}
 
 
-def machine_read_coverage(records: Sequence[AuditRecord]) -> dict[str, int]:
-    """Machine reading -> number of records (agrees, differs, unreadable)."""
-    found = Counter(r.machine_read.status for r in records if r.machine_read is not None)
+def machine_read_coverage(records: Sequence[AuditRecord],
+                          subject: str | None = None) -> dict[str, int]:
+    """Machine reading -> number of records (agrees, differs, unreadable), of
+    every record or of those whose transcription is ``subject`` (``number`` or
+    ``formula``: a bare number read is no evidence that a formula was)."""
+    found = Counter(r.machine_read.status for r in records if r.machine_read is not None
+                    and subject in (None, r.machine_read.subject))
     return {k: found.get(k, 0) for k in ("agrees", "differs", "unreadable")}
 
 
@@ -74,8 +78,8 @@ def summary(records: Sequence[AuditRecord]) -> str:
              f"counted once): {sum(on.values())} confirmations ("
              + ", ".join(f"{n} {k}" for k, n in on.items()) + "; "
              f"{c['confirmed_with_convention']} records under a named reading), "
-             f"{c[CONSISTENT]} consistent with a reconstruction only through chosen "
-             f"parameters (not counted as confirmations), "
+             f"{c[CONSISTENT]} consistent (with a reconstruction only through chosen "
+             f"parameters, or under one of two readings; not counted as confirmations), "
              f"{c['restated']} restated definitions (not counted as confirmations), "
              f"{len(found)} findings from {len(causes)} causes"]
     for verdict in VERDICTS:
@@ -85,9 +89,11 @@ def summary(records: Sequence[AuditRecord]) -> str:
             extra = " (definitions whose print needed a reading)" if verdict in AGREEMENTS else ""
             parts.append(f"{len(rs)} {verdict} record{'s' if len(rs) > 1 else ''}{extra} "
                          f"from {n} cause{'s' if n > 1 else ''}")
-    read = machine_read_coverage(records)
-    if sum(read.values()):
-        parts.append("machine-read prints: " + ", ".join(f"{n} {k}" for k, n in read.items()))
+    for subject in ("formula", "number"):
+        read = machine_read_coverage(records, subject)
+        if sum(read.values()):
+            parts.append(f"machine-read prints of {subject}s: "
+                         + ", ".join(f"{n} {k}" for k, n in read.items()))
     return "\n".join(parts)
 
 

@@ -19,7 +19,7 @@ compared with the hand transcription symbolically. The record gets one of:
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import sympy as sp
 
@@ -32,12 +32,15 @@ from crane_sym.audit.latex_parse import (Parsed, Unreadable, bound_variables, ca
 from crane_sym.audit.parse_table import render
 from crane_sym.audit.print_names import (BOUND_SYMBOL, cached_vocabulary, calls_pass, map_symbols,
                                          names_pass)
-from crane_sym.published import PublishedFormula
+from crane_sym.published import FITTED_VALUE, PublishedFormula
 
-__all__ = ["AGREES", "DIFFERS", "UNREADABLE", "MachineRead", "machine_read",
-           "parse_table_text", "table_entries"]
+__all__ = ["AGREES", "DIFFERS", "FORMULA", "NOTHING", "NUMBER", "UNREADABLE", "MachineRead",
+           "machine_read", "parse_table_text", "subject", "table_entries"]
 
 AGREES, DIFFERS, UNREADABLE = "agrees", "differs", "unreadable"
+#: What a transcription is, for the coverage: a number (a bare number, or a name
+#: equal to one) or a formula; none when nothing was transcribed.
+NUMBER, FORMULA, NOTHING = "number", "formula", "nothing transcribed"
 _WRAPPERS = re.compile(r"\\(?:text|mathrm|mathit|mathtt|operatorname)\s*")
 
 
@@ -49,6 +52,7 @@ class MachineRead:
     detail: str
     parsed: str = ""           # LaTeX of the relation compared
     explained_by: str = ""     # of a difference: the reconstruction or the reading
+    subject: str = FORMULA     # what was transcribed: NUMBER, FORMULA or NOTHING
 
     def text(self) -> str:
         """One line for the reports."""
@@ -58,7 +62,7 @@ class MachineRead:
     def as_dict(self) -> dict:
         """JSON-ready form."""
         return {"status": self.status, "detail": self.detail, "parsed": self.parsed,
-                "explained_by": self.explained_by or None}
+                "explained_by": self.explained_by or None, "subject": self.subject}
 
 
 def _relation(p: Parsed, vocab, tokens) -> sp.Eq | sp.Basic:
@@ -139,8 +143,25 @@ def _difference(parsed, hand: sp.Eq, names: dict) -> str:
     return latex(diff, symbol_names=names) if sp.count_ops(diff) < 200 else "(long)"
 
 
+def subject(f: PublishedFormula) -> str:
+    """What ``f`` transcribes: ``number`` (a number, or a name equal to one),
+    ``formula``, or ``nothing transcribed``.
+
+    Parameters
+    ----------
+    f : PublishedFormula
+        A published formula.
+    """
+    if f.printed is None:
+        return NOTHING
+    sides = (f.printed.lhs, f.printed.rhs)
+    numeric = [s for s in sides if s.is_number]
+    return NUMBER if numeric and all(s.is_number or s.is_Symbol for s in sides) else FORMULA
+
+
 def machine_read(d: Derivation, f: PublishedFormula) -> MachineRead:
-    """The print of ``f`` read by machine against its hand transcription.
+    """The print of ``f`` read by machine against its hand transcription, with
+    what the transcription is (:func:`subject`).
 
     Parameters
     ----------
@@ -149,6 +170,11 @@ def machine_read(d: Derivation, f: PublishedFormula) -> MachineRead:
     f : PublishedFormula
         One of its published formulas.
     """
+    return replace(_compared(d, f), subject=subject(f))
+
+
+def _compared(d: Derivation, f: PublishedFormula) -> MachineRead:
+    """The print of ``f`` parsed and compared with its transcription."""
     if f.printed is None:
         return MachineRead(UNREADABLE, "no transcription to compare: " + f.not_checkable)
     if "\\div" in f.latex:
@@ -231,6 +257,8 @@ def _explained(d: Derivation, f: PublishedFormula, parsed: list) -> str:
     """What explains a difference: the record's reconstruction, or a reading it names
     that one of the parsed relations is; "" when nothing does (a defect)."""
     for c in f.conventions:
+        if c.kind == FITTED_VALUE:     # changes what is compared, not how the print reads
+            continue
         if any(_same(rel, c.reading, d) for rel in parsed):
             return f"the parse is the record's {c.kind} reading: {c.note}"
     if f.reconstructed:

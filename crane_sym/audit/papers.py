@@ -20,6 +20,7 @@ from typing import Callable, TypeVar
 
 from crane_sym import progress, registry
 from crane_sym.audit.latex_parse import parse_table
+from crane_sym.audit.recall import Recall, recall
 from crane_sym.audit.verdicts import AuditRecord, audit
 
 __all__ = ["PaperAudit", "audit_paper", "audit_papers", "in_processes", "workers"]
@@ -30,8 +31,9 @@ T = TypeVar("T")
 @dataclass(frozen=True)
 class PaperAudit:
     """One paper's records, with its build and audit times [s], its five
-    slowest steps (seconds, label), and how many sides of its prints the
-    parser read afresh, not from the committed table."""
+    slowest steps (seconds, label), how many sides of its prints the parser
+    read afresh, not from the committed table, and the recall of its print
+    (its printed items with a record)."""
 
     paper: str
     records: list[AuditRecord]
@@ -39,6 +41,7 @@ class PaperAudit:
     audit: float
     slowest: tuple[tuple[float, str], ...]
     parsed_fresh: int
+    recall: Recall
 
 
 def audit_paper(paper: str) -> PaperAudit:
@@ -59,7 +62,7 @@ def audit_paper(paper: str) -> PaperAudit:
         records = audit(d)
     slowest = tuple((s.seconds, s.label) for s in sorted(d.steps, key=lambda s: -s.seconds)[:5])
     return PaperAudit(paper, records, built - start, time.perf_counter() - built, slowest,
-                      parse_table().fresh - fresh)
+                      parse_table().fresh - fresh, recall(d, records))
 
 
 class _Relay(progress.Progress):

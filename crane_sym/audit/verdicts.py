@@ -20,7 +20,7 @@ from crane_sym.audit.checks import (FAIL, INCONCLUSIVE, PASS, CheckOutcome, diff
 from crane_sym.derivation import Derivation
 from crane_sym.audit.fits import fit_of
 from crane_sym.latex import latex
-from crane_sym.audit.machine_read import MachineRead, machine_read
+from crane_sym.audit.machine_read import DIFFERS, MachineRead, machine_read
 from crane_sym.published import (ASSUMPTION, CHOSEN, DEFINITION, INTERNAL, READINGS,
                                  RECONSTRUCTED, Cause, Convention, PublishedFormula)
 from crane_sym.audit.sampling import physical_definitions
@@ -34,8 +34,10 @@ DISCREPANCY = "discrepancy"
 DIMENSION_ERROR = "dimension_error"
 NOT_CHECKABLE = "not_checkable"
 REMARK = "remark"
+#: The print read by machine differs from the transcription checked, unexplained.
+NOT_THE_PRINT = "not_the_print"
 VERDICTS = (CONFIRMED, CONFIRMED_WITH_CONVENTION, RESTATED, CONSISTENT, DISCREPANCY,
-            DIMENSION_ERROR, NOT_CHECKABLE, REMARK)
+            DIMENSION_ERROR, NOT_CHECKABLE, REMARK, NOT_THE_PRINT)
 #: Verdicts that hold nothing to report: no cause.
 AGREEMENTS = (CONFIRMED, RESTATED)
 #: Verdicts that count as confirmations (never a ``definition`` record, never a
@@ -158,12 +160,13 @@ def _sensitivity_dict(s: Sensitivity | None) -> dict | None:
     if s is None:
         return None
     low, high = s.band
+    ends = {f"{end}_at": {"value": e.value, "by": e.by,
+                          "parameters": {p.key: v for p, v in zip(s.parameters, e.at)}}
+            for end, e in zip(("lowest", "highest"), s.extremes)}
     return {"value": s.value, "band": [low, high], "tolerance": s.spread, "how": s.how,
-            "parameters": [{"name": w.parameter.name, "unit": w.parameter.unit,
-                            "chosen": w.parameter.chosen,
-                            "plausible": [w.parameter.low, w.parameter.high],
-                            "why": w.parameter.why, "at_low": w.at_low,
-                            "at_high": w.at_high} for w in s.swings]}
+            "parameters": [{"name": p.name, "key": p.key, "unit": p.unit,
+                            "chosen": p.chosen, "plausible": [p.low, p.high], "why": p.why}
+                           for p in s.parameters], **ends}
 
 
 def _check_dict(c: CheckOutcome) -> dict:
@@ -242,17 +245,34 @@ def _convention_note(d: Derivation, f: PublishedFormula, conv: Convention) -> st
     return f"{conv.note} ({fit_of(d, conv.fit, f).text(f.label)})"
 
 
+#: The slips a band must tell from the print to be evidence: a factor 2 either way
+#: and a decimal point shifted either way.
+SLIPS = ((2.0, "twice"), (0.5, "half"), (10.0, "ten times"), (0.1, "a tenth"))
+
+
+def _undiscriminated(value: float, inside) -> list[str]:
+    """The slips of ``value`` that would still lie inside the band (``inside``)."""
+    return [f"{name} it ({factor * value:.4g})" for factor, name in SLIPS
+            if inside(factor * value)]
+
+
 def _band(d: Derivation, f: PublishedFormula, literal: Attempt,
           how: str) -> tuple[str, Attempt, str]:
     """A result of chosen parameters against the band they span: ``consistent``
-    inside it, ``discrepancy`` outside; the band's half-width is the tolerance."""
+    inside it, ``discrepancy`` outside; the band's half-width is the tolerance.
+    A band is evidence only if it discriminates: when a print off by a factor 2
+    or by a shifted decimal point would lie inside it too, the verdict is
+    ``not_checkable`` (the band is stated, and says which slips it holds)."""
     sens = d.step(f.target).sensitivity
     if sens is None or f.printed is None or not f.printed.rhs.is_number:
         raise ValueError(f"{d.id} {f.label}: a result of chosen parameters is a printed "
                          f"number whose derived step ({f.target}) carries a sensitivity")
     value, (low, high) = float(f.printed.rhs), sens.band
     slack = f.tolerance
-    inside = low - slack * abs(low) <= value <= high + slack * abs(high)
+
+    def holds(x: float) -> bool:
+        return low - slack * abs(low) <= x <= high + slack * abs(high)
+    inside = holds(value)
     check = CheckOutcome(
         "numeric", PASS if inside else FAIL,
         f"the printed {value:g} is {'inside' if inside else 'outside'} the band "
@@ -263,6 +283,11 @@ def _band(d: Derivation, f: PublishedFormula, literal: Attempt,
                       f"{low:.4g} \\ldots {high:.4g}", "", (check,))
     detail = (f"{how}: {literal.summary} at the chosen parameters; {check.detail}. "
               f"Sensitivity: {sens.text()}.")
+    slips = _undiscriminated(value, holds)
+    if slips:
+        return NOT_CHECKABLE, attempt, (
+            f"the band does not discriminate: a print of {', '.join(slips)} would lie "
+            f"inside it too, so it is no evidence either way. {detail}")
     return (CONSISTENT if inside else DISCREPANCY), attempt, detail
 
 
@@ -299,10 +324,21 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
         else "the print as printed", f.printed, f.target)
     if f.kind == CHOSEN:
         verdict, band, detail = _band(d, f, literal, how)
-        return record(verdict, "numeric", detail, (literal, band))
+        return record(verdict, "numeric" if verdict != NOT_CHECKABLE else "none", detail,
+                      (literal, band))
     on = f" (on the paper's reading: {f.paper_reading.text})" if f.paper_reading else ""
     if literal.matches:
         verdict = RESTATED if f.basis == DEFINITION else CONFIRMED
+        if verdict == CONFIRMED and _evidence_of_its_reading(f):
+            other, _, _ = _attempt(d, f, REJECTED, f.paper_reading.rejected, f.printed,
+                                   f.rejected_target)
+            if not other.matches:
+                return record(CONSISTENT, comp.method, f"{how}, {literal.summary}{on}; "
+                              f"{dim.detail}. Under the other reading ("
+                              f"{f.paper_reading.rejected}): {other.summary}. A match "
+                              "under one of two readings, the one this print is evidence "
+                              "for, is consistent with it, not a confirmation",
+                              (literal, other))
         return record(verdict, comp.method, f"{how}, {literal.summary}{on}; "
                       f"{dim.detail}", (literal,))
     attempts = [literal]
@@ -343,6 +379,13 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
                   + "; ".join(c.detail for c in literal.checks), tuple(attempts))
 
 
+def _evidence_of_its_reading(f: PublishedFormula) -> bool:
+    """``f`` is among the prints that fix its paper's reading, and the other
+    reading can be tried on it."""
+    return bool(f.paper_reading and f.rejected_target
+                and f.label in f.paper_reading.fixed_by)
+
+
 def _why_not(comp: _Comparison, dim: CheckOutcome) -> str:
     parts = []
     if not comp.same:
@@ -363,10 +406,38 @@ def _check_key(f: PublishedFormula) -> tuple | None:
     return (f.target, sp.srepr(f.printed), f.kind, f.rejected_target)
 
 
+#: The cause of a record whose transcription is not what is printed.
+NOT_THE_PRINT_CAUSE = Cause(
+    "transcription-not-the-print", "the transcription checked is not the print: read by "
+    "machine, the printed LaTeX differs from the transcription, and no labelled "
+    "reconstruction or named reading explains the difference")
+
+
+def tied_to_print(r: AuditRecord) -> AuditRecord:
+    """``r`` unless its print, read by machine, differs from its transcription
+    without a labelled reconstruction or a named reading to explain it: then a
+    ``not_the_print`` finding, whatever the transcription's own check gave (a
+    verdict rests on the print; the check of the transcription is kept in the
+    detail and the attempts).
+
+    Parameters
+    ----------
+    r : AuditRecord
+        A record with its ``machine_read``.
+    """
+    read = r.machine_read
+    if read is None or read.status != DIFFERS or read.explained_by:
+        return r
+    return replace(r, verdict=NOT_THE_PRINT, method="machine reading",
+                   cause=NOT_THE_PRINT_CAUSE,
+                   detail=f"the transcription checked is not the print ({read.detail}); "
+                          f"on the transcription the audit gave {r.verdict}: {r.detail}")
+
+
 def audit(d: Derivation) -> list[AuditRecord]:
     """Verdicts on every published formula of ``d``, in the paper's order, each with
-    its print read by machine against the transcription (``machine_read``); a
-    record that repeats an earlier one's check (the same number printed twice, 8.9
+    its print read by machine against the transcription (``machine_read``) and
+    tied to it (``tied_to_print``); a record that repeats an earlier one's check (the same number printed twice, 8.9
     and 890 %) names that record in ``duplicate_of`` and is counted once.
 
     Parameters
@@ -377,7 +448,7 @@ def audit(d: Derivation) -> list[AuditRecord]:
     records, seen = [], {}
     for f in d.published:
         progress.current().step(f"{d.id}: checking printed formula {f.label}")
-        r = replace(audit_formula(d, f), machine_read=machine_read(d, f))
+        r = tied_to_print(replace(audit_formula(d, f), machine_read=machine_read(d, f)))
         key = _check_key(f)
         if key is not None and key in seen:
             r = replace(r, duplicate_of=seen[key])
@@ -388,7 +459,8 @@ def audit(d: Derivation) -> list[AuditRecord]:
 
 
 __all__ = ["AGREEMENTS", "CONFIRMATIONS", "CONFIRMED", "CONFIRMED_WITH_CONVENTION",
-           "CONSISTENT", "DIMENSION_ERROR", "DISCREPANCY", "NOT_CHECKABLE", "ON_MODEL",
+           "CONSISTENT", "DIMENSION_ERROR", "DISCREPANCY", "NOT_CHECKABLE", "NOT_THE_PRINT",
+           "NOT_THE_PRINT_CAUSE", "ON_MODEL",
            "ON_PAPER", "ON_READING", "ON_RECONSTRUCTION", "REMARK", "RESTATED", "RESTS_ON",
            "UNEXPLAINED", "VERDICTS", "Attempt", "AuditRecord", "Convention",
-           "audit", "audit_formula"]
+           "audit", "audit_formula", "tied_to_print"]

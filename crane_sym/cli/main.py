@@ -119,9 +119,17 @@ def cmd_audit(args: argparse.Namespace) -> int:
     from crane_sym.audit.papers import audit_papers, workers
     ids = _ids(args.ids)
     processes = args.processes or workers(len(ids))
-    with progress.reporting(_progress(args)):
+    reporter = _progress(args)
+    with progress.reporting(reporter):
         audited = audit_papers(ids, processes)
     print(FORMATS[args.format]([r for a in audited for r in a.records]))
+    recall = "\n".join(a.recall.text() for a in audited)
+    recall = (f"\nRecall of the print (every numbered equation, table cell and number "
+              f"stated as a result):\n{recall}")
+    if args.format == "json":       # stdout stays the record list; recall is progress
+        reporter.say(recall)
+    else:
+        print(recall)
     fresh = sum(a.parsed_fresh for a in audited)
     if fresh:
         print(f"machine reading: {fresh} printed sides parsed afresh, not from the committed "

@@ -16,6 +16,7 @@ import json
 from typing import Any
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from crane_sym import registry
 from crane_sym.audit.verdicts import AuditRecord, audit
@@ -36,9 +37,15 @@ DIGITS = 6
 
 def numbers_tex(statement: sp.Basic, values: dict[str, float], names: dict) -> str:
     """The relation with ``values`` (SI, by symbol name) put in and evaluated to
-    ``DIGITS`` significant digits; "" when no symbol of it has a value."""
+    ``DIGITS`` significant digits; "" when no symbol of it has a value.
+
+    A symbol the relation differentiates by, or that an unknown function takes
+    (the t of x(t)), keeps its letter: the relation holds at every value of it,
+    and x(0.07) with ẋ by 0.07 is no relation at all."""
+    running = {v for d in statement.atoms(sp.Derivative) for v in d.variables} | {
+        s for f in statement.atoms(AppliedUndef) for s in f.free_symbols}
     subs = {s: sp.Float(values[s.name]) for s in statement.free_symbols
-            if s.name in values}
+            if s.name in values and s not in running}
     if not subs:
         return ""
 

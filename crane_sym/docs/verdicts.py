@@ -17,7 +17,8 @@ from dataclasses import dataclass, field
 import sympy as sp
 
 from crane_sym.audit.verdicts import (CONFIRMED, CONFIRMED_WITH_CONVENTION, CONSISTENT, DIMENSION_ERROR,
-                                      DISCREPANCY, NOT_CHECKABLE, REMARK, RESTATED, AuditRecord)
+                                      DISCREPANCY, NOT_CHECKABLE, NOT_THE_PRINT, REMARK, RESTATED,
+                                      AuditRecord)
 from crane_sym.derivation import Derivation
 from crane_sym.docs.numbers import LIMIT, decimal, is_value, printed_digits
 from crane_sym.markdown import markdown_table
@@ -37,6 +38,8 @@ _SAYS = {
     DIMENSION_ERROR: "a term of the print has the wrong dimension",
     NOT_CHECKABLE: "nothing checkable was printed",
     REMARK: "a modelling choice the paper states that differs from what the model implies",
+    NOT_THE_PRINT: "the transcription checked is not the print: read by machine, the "
+                   "printed formula differs from it",
 }
 #: What a verdict says of a transcription reconstructed from OCR damage.
 _SAYS_RECONSTRUCTED = {
@@ -48,7 +51,8 @@ _SAYS_RECONSTRUCTED = {
 #: How each check decides, in words.
 _DECIDED = {"symbolic": "decided by the symbolic check", "numeric": "decided by the "
             "numeric check", "dimension": "decided by the dimension check",
-            "none": "no check could decide"}
+            "none": "no check could decide", "machine reading": "decided by the print "
+            "read by machine"}
 _TOKEN = re.compile(r"\s*Token\([^)]*\)")
 #: A quote of the paper in a note: 'ZJ7', 'Form 1 value'.
 _QUOTE = re.compile(r"((?<![\w'])'[^'\n]*'(?![\w']))")

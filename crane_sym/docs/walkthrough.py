@@ -76,8 +76,10 @@ def _model(model: str, voice: Voice | None = None) -> str:
 
 
 def _symbols(d: Derivation, latex_names: dict) -> str:
-    """Table of the symbols the student meets (unused defined ones skipped)."""
-    rows = []
+    """Table of the symbols the student meets (unused defined ones skipped); two
+    symbols a paper writes alike, in one unit, share a row with both meanings."""
+    rows: list[list[str]] = []
+    by_tex: dict[tuple[str, str], list[str]] = {}
     for entry in d.symbols:
         used = entry.role in _LISTED_ROLES or (
             entry.role == DEFINED and any(s.statement.has(entry.expr) for s in d.steps))
@@ -85,7 +87,12 @@ def _symbols(d: Derivation, latex_names: dict) -> str:
             tex = _tex(entry.expr, latex_names)
             if isinstance(entry.expr, sp.core.function.AppliedUndef):
                 tex += r"(" + ", ".join(latex(a) for a in entry.expr.args) + ")"
-            rows.append([_math_cell(tex), _cell(entry.description), _cell(entry.unit)])
+            key = (_math_cell(tex), _cell(entry.unit))
+            if key in by_tex:
+                by_tex[key][1] += "; " + _cell(entry.description)
+                continue
+            by_tex[key] = [key[0], _cell(entry.description), key[1]]
+            rows.append(by_tex[key])
     return markdown_table(["Symbol", "Meaning", "Unit"], rows)
 
 
@@ -245,12 +252,28 @@ def printed_table(name: str, cells: list, d: Derivation, by_label: dict[str, Aud
                 voice.letter(r) if r and r.cause else "—"]
         rows.append(row)
     notes = {f.conventions[0].note for f in cells if f.conventions}
-    causes = {r.cause.id: r for f in cells if (r := by_label.get(f.label)) and r.cause}
     out = [f"### {name}", markdown_table(header, rows)]
     out += [f"*Read as noted:* {voice.say(n)}." for n in sorted(notes)]
-    out += [f"*Cause {voice.causes[k]}:* {voice.say(r.cause.sentence)}"
-            for k, r in causes.items() if voice.cause_first[k] == r.label]
-    return out
+    return out + _first_causes([r for f in cells if (r := by_label.get(f.label))], voice)
+
+
+def _not_checkable(formulas: list, by_label: dict[str, AuditRecord],
+                   voice: Voice) -> list[str]:
+    """Printed items with nothing to check (inputs, claims in general) as one
+    table: the item, its print and its cause; each cause said once below."""
+    rows = [[_cell(voice.say(f.label)),
+             _cell(" ".join(f.latex.split())) if f.verbatim
+             else _math_cell(escape_specials(f.latex.strip())),
+             voice.letter(r) if (r := by_label[f.label]).cause else "—"] for f in formulas]
+    return (["### Printed items with nothing to check",
+             markdown_table(["item", "printed", "cause"], rows)]
+            + _first_causes([by_label[f.label] for f in formulas], voice))
+
+
+def _first_causes(records: list[AuditRecord], voice: Voice) -> list[str]:
+    """The sentence of each cause whose first record is among ``records``."""
+    return [f"*Cause {voice.causes[r.cause.id]}:* {voice.say(r.cause.sentence)}"
+            for r in records if r.cause and voice.cause_first.get(r.cause.id) == r.label]
 
 
 def render(d: Derivation, records: list[AuditRecord] | None = None,
@@ -300,9 +323,12 @@ def render(d: Derivation, records: list[AuditRecord] | None = None,
                                  and f.target not in in_table], by_label, names, voice, step)
     labels = {s.label for s in d.steps}
     orphans = [f for f in d.published if f.target not in labels]
-    if orphans:
+    idle = [f for f in orphans if (r := by_label.get(f.label)) and r.verdict == "not_checkable"]
+    if len(idle) < len(orphans):
         parts.append("### Printed formulas without a derived step")
-        parts += printed_blocks(orphans, by_label, names, voice)
+        parts += printed_blocks([f for f in orphans if f not in idle], by_label, names, voice)
+    if idle:
+        parts += _not_checkable(idle, by_label, voice)
     parts += ["## Verdicts"] + voice.table(records)
     return "\n\n".join(parts) + "\n"
 

@@ -24,6 +24,7 @@ Files:
   and the model's energies T, Π, Φ and generalized forces.
 - ``steps.py``: the derivation steps (1)–(21), in the paper's order.
 - ``published.py``: the printed formulas, transcribed with their LaTeX.
+- ``printed_items.py``: ``PRINTED_ITEMS``, the inventory of the print the audit's recall counts.
 - ``outputs.py``: generated functions, state derivative and Jacobian, the
   "damping" switch, bench parameters and the ODE system the bench integrates.
 - ``hard_cases.py``: seeded hard cases for ``crane-sym accuracy``.
@@ -39,6 +40,7 @@ from __future__ import annotations
 from crane_sym.derivation import Derivation
 from crane_sym.symbols import SymbolTable
 
+from .printed_items import PRINTED_ITEMS
 from . import published as pub
 from .print_notation import PRINT_LATEX_NAMES, PRINT_SYMBOLS
 from . import steps
@@ -74,6 +76,7 @@ def build() -> Derivation:
     steps.torque_traction_load(d, e)          # (17)–(21)
     steps.initial_state(d, rest)
     d.published.extend(pub.published(e))
+    d.printed_items.extend(PRINTED_ITEMS)
     d.outputs.extend(outputs(d))
     d.switches["damping"] = damping_switch()
     d.ode_systems.append(load_response(d))

@@ -118,8 +118,13 @@ C_ZERO_STATE = Cause(
     "2·F0·(C_t + C_z)/(C_t·C_y + 4·C_t·C_z + C_y·C_z) and the zero state is not at "
     "rest.")
 #: Every cause of paper 004, by id.
+C_EXAMPLE_UNSTATED = Cause(
+    "004-example-unstated-parameters",
+    "The example prints the motor, drum and stiffness data but takes its other parameters "
+    "'by the recommendations of [2,3]' without printing them, so the amplitude it reads "
+    "off Fig. 3 cannot be recomputed.")
 CAUSES = {c.id: c for c in (
     C_COORDINATES, C_RAYLEIGH_DOT, C_KINETIC, C_MOMENTUM, C_ROOT, C_VELOCITY_POTENTIAL,
     C_NOTHING, C_CONTINUUM, C_ARM, C_DRUM_PULL, C_RUN_FORCE, C_Q1_MOMENT, C_Q2_NOT_FROM_9,
     C_UNDEFINED_RATES, C_MIXED_12, C_STIFFNESS_ON_VELOCITY, C_K_THREE_MASSES, C_DROPS_C3,
-    C_BARE_SECOND, C_SAFETY, C_TRACTION_F1, C_ZERO_STATE)}
+    C_BARE_SECOND, C_SAFETY, C_TRACTION_F1, C_ZERO_STATE, C_EXAMPLE_UNSTATED)}

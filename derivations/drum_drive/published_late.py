@@ -13,7 +13,7 @@ from .model import (alpha, D, F1, F1_lim, F1_t, F2, F2_t, F3_t, F4_t, F_pulse, g
                     M0, m3, M_d, m_sum, mu, mu_op, r, t, t_3, y, y0)
 from .print_notation import (a17, a_ph, A_y, b17, C3, C_ekv, DIMENSIONS, dot, k, m1, m2, record, w,
                              x_ax, y_h, y_p)
-from .causes import (C_BARE_SECOND, C_CONTINUUM, C_DROPS_C3, C_K_THREE_MASSES, C_NOTHING, C_SAFETY,
+from .causes import (C_EXAMPLE_UNSTATED, C_BARE_SECOND, C_CONTINUUM, C_DROPS_C3, C_K_THREE_MASSES, C_NOTHING, C_SAFETY,
                      C_STIFFNESS_ON_VELOCITY, C_TRACTION_F1, C_ZERO_STATE, FIG1)
 
 
@@ -120,4 +120,10 @@ def late_rows() -> list[PublishedFormula]:
                  '0; φ(0) = 0; ..." ("taken as the initial conditions"), before Fig. 3',
                  basis=RECONSTRUCTED, basis_note=FIG1 + "; the "
                  "pretension F0 of both branches is the model's", cause=C_ZERO_STATE),
+        record("Fig. 3, amplitude at most 10 mm", "амплітуда коливань вала барабана не "
+               "перевищує 10 мм", None, "the text after Fig. 3, the example's one result",
+               not_checkable="the example's other parameters are taken 'by the "
+               "recommendations of [2,3]' and not printed (the traction element's masses "
+               "and stiffness, the drum's mass and shaft stiffness), so no model of the "
+               "printed data gives the amplitude", verbatim=True, cause=C_EXAMPLE_UNSTATED),
     ]

@@ -23,6 +23,8 @@ Files:
   designs (the batched solver); its per-design route the reduced model as components.
 - ``hybrid.py``: ``HYBRID_MODELS``, that run as scenes, sweeps and the bench reach it.
 - ``published.py``: the printed formulas and numbers (``PUBLISHED``).
+- ``printed_items.py``: ``PRINTED_ITEMS``, the inventory of the print the audit's recall
+  counts, and Table 1's cells as printed.
 - ``outputs.py``: the Outputs for code generation (and the tabulated Fig. 9 response).
 - ``hard_cases.py``: the seeded hard cases for ``crane-sym accuracy``.
 - ``options.py``: ``SCENE_OPTIONS``, ``SCENE_CHECKS``.
@@ -46,6 +48,7 @@ from .model import (AUTHORS, BF_SB, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, LF
                     TITLE, phi5)
 from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .outputs import outputs, physical, tabulated
+from .printed_items import PRINTED_ITEMS
 from .published import PUBLISHED
 from .report import VALUE_UNITS, scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
@@ -66,6 +69,7 @@ def build() -> Derivation:
     steps_numbers.numbers(d)             # Table 1, after (5), Figs 8, 11, 12
     elastic.fig9_steps(d)                # Fig. 9
     d.published.extend(PUBLISHED)
+    d.printed_items.extend(PRINTED_ITEMS)
     d.outputs.extend(outputs(d))
     d.tabulated.extend(tabulated())
     # The bench's values of the factors: Table 1's own (from the scene's data), φ5 = 1.5.

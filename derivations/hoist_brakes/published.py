@@ -20,6 +20,7 @@ from crane_sym.published import (CHOSEN, DEFINITION, FITTED_VALUE, INTERNAL, REC
 
 from .model import (BF_BB, BF_SB, LF, MF, PAPER, J, M_BB, M_L, M_M, M_SB, M_rel, M_rel_max,
                     M_st, N, alpha, d_omega, d_t, i_g, phi5)
+from .printed_items import TABLE1_CELLS, table1_label
 
 #: The one reading of Table 1 every record of this paper uses.
 TABLE1_COUNTING = PaperReading(
@@ -28,13 +29,22 @@ TABLE1_COUNTING = PaperReading(
     "Fig. 8's legend prints 'MF = 0,90...0,95', the inertia factor over the payload: "
     "0.903…0.954 with J1 and J2 as totals, 0.933…0.960 counted per train; the text's "
     "'BF_SB = 1,7' is 130 kN·m as the total (1.71), 3.42 per drum",
-    "values of each train (J1, J2 and M_SB counted once per motor and once per drum)")
-BF33 = Cause("001-bf-3.3", "the second brake factor BF_SB = 3.3 after (5) follows from "
-             "neither reading of Table 1 (1.71 with 130 kN·m in total, 3.42 on each drum); "
-             "the text gives it as an input without data")
-CASE44 = Cause("001-4.4-case", "the 4.4 'in some cases' is not (4) at the text's "
-               "BF_SB = 3.3 (4.10 with Table 1's MF); only the reading of Table 1 this paper "
-               "rejects reproduces it, as (5) with 130 kN·m on each drum (BF_SB = 3.42)")
+    "values of each train (J1, J2 and M_SB counted once per motor and once per drum)",
+    ("Fig. 8 legend, MF = 0.90", "Fig. 8 legend, MF = 0.95", "after (5), BF_SB = 1.7"))
+ONE_READING = Cause("001-one-reading-evidence", "Fig. 8's MF = 0,90...0,95 and the text's "
+                    "BF_SB = 1,7 are the prints that fix the reading of Table 1 (totals); "
+                    "each matches under that reading and fails under the other, so it is "
+                    "consistent with the reading, not a confirmation of it")
+BF33 = Cause("001-bf-3.3", "the second brake factor BF_SB = 3.3 after (5) is an input "
+             "the text puts into (5) («для FBt6 = 3,3 получаем …») without its source; it "
+             "follows from neither reading of Table 1 (1.71 with 130 kN·m in total, 3.42 on "
+             "each drum), so it is not a result to check")
+CASE44 = Cause("001-4.4-case", "the 4.4 'in some cases' is a claim about hoists in "
+               "general («в некоторых случаях»), not about Table 1's hoist, so one example "
+               "cannot decide it (for the record: (4) at the text's BF_SB = 3.3 gives 4.10 "
+               "with Table 1's MF; (5) with 130 kN·m on each drum gives 4.42)")
+TABLE1_INPUTS = Cause("001-table1-inputs", "Table 1's cells other than the hoist speed are "
+                      "the reference hoist's data: inputs of every check, not results")
 BRAKING_TIME = Cause("001-unstated-braking-time", "(6)–(7) need the braking time Δt, which "
                      "the paper never states; fitted to the eight percentages of Figs 11–12 "
                      "it lies in [0.999, 1.005] s, and Δt = 1 s reproduces all of them")
@@ -133,13 +143,16 @@ PUBLISHED = [
             "Table 1's hoist speed (m/min) against n1, r, i_g, i_t",
             basis=INTERNAL, basis_note="Table 1 against itself (kinematics)"),
     _counted("Fig. 8 legend, MF = 0.90", "0,90", "MF rated load",
-             "the lower end of Fig. 8's 'MF = 0,90...0,95'"),
+             "the lower end of Fig. 8's 'MF = 0,90...0,95'", cause=ONE_READING),
     _counted("Fig. 8 legend, MF = 0.95", "0,95", "MF hook only",
-             "the upper end of Fig. 8's 'MF = 0,90...0,95'"),
+             "the upper end of Fig. 8's 'MF = 0,90...0,95'", cause=ONE_READING),
     _counted("after (5), BF_SB = 1.7", "1,7", "BF_SB of Table 1",
-             "the text's first brake factor against Table 1"),
-    _counted("after (5), BF_SB = 3.3", "3,3", "BF_SB of Table 1",
-             "the text's second brake factor against Table 1", cause=BF33),
+             "the text's first brake factor against Table 1", cause=ONE_READING),
+    _printed("after (5), BF_SB = 3.3", "3,3", None, "the text's second brake factor, "
+             "an input of (5) («для FBt6 = 3,3 получаем»)",
+             not_checkable="an input, not a result: the text puts it into (5) without "
+             "saying where it comes from", basis=INTERNAL,
+             basis_note="the text's input, nothing derived", cause=BF33),
     _counted("after (5), 2.4", "2,4", "after (5), BF_SB = 17/10, lower",
              "'2,4 ... 4,2' for BF_SB = 1.7: (3) at φ5 = 1 and the smallest MF",
              basis=RECONSTRUCTED, basis_note=RANGE_NOTE),
@@ -153,12 +166,18 @@ PUBLISHED = [
     _counted("typical 2.6", "2,6", "rigid, (4), BF_SB = 17/10",
              "'typical for all hoists': the rigid body (4) without φ5",
              basis_note="a printed number against (4) with Table 1's MF"),
-    _number("in some cases 4.4", "4,4", "rigid, (4), BF_SB = 33/10, totals",
-            "'may reach 4,4' with the rigid body: (4) at the text's larger BF_SB",
-            basis=INTERNAL, basis_note="a printed number against (4) with Table 1's data",
-            cause=CASE44, paper_reading=TABLE1_COUNTING,
-            rejected_target="(5) at Table 1, per drum"),
+    _printed("in some cases 4.4", "4,4", None, "'may reach 4,4' «в некоторых случаях»: "
+             "a claim about hoists in general",
+             not_checkable="a general claim is not checked against one example (Table 1's "
+             "hoist)", basis=INTERNAL, basis_note="a claim about hoists in general",
+             cause=CASE44),
 ]
+PUBLISHED += [_printed(
+    table1_label(name), cell, None, f"Table 1's cell {name}, as the OCR prints it",
+    not_checkable="an input: Table 1 gives the reference hoist's data, which the model "
+    "takes as given and nothing in the paper derives", basis=INTERNAL,
+    basis_note="the table's inputs, nothing derived", cause=TABLE1_INPUTS, verbatim=True)
+    for name, cell in TABLE1_CELLS.items() if name != "v"]
 PUBLISHED.append(_number(
     "Fig. 9 peak 8.9", "8,9", "Fig. 9 peak, hook only", "the text: 'M_rel,max = 8,9 (Fig. 9)' "
     "while lowering the hook ('спуск грузозахватного механизма'), and '890 %' in the "

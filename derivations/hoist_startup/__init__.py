@@ -24,6 +24,8 @@ nothing on import; ``build()`` returns the ``Derivation``.
   ``steps_optimum.py``: (54)–(66).
 - ``published.py``: printed formulas (1)–(31); ``published_load_cases.py``:
   (32)–(53); ``published_optimum.py``: (54)–(66) and the maxima after (66).
+- ``printed_items.py``: ``PRINTED_ITEMS``, the inventory of the print the audit's recall
+  counts.
 - ``tables.py``: Tables 1–2, derived and printed.
 - ``outputs.py``: generated functions, ODE systems, bench parameters.
 - ``bench_cases.py``: the cases the sweep and sampled-load benches run, and the
@@ -41,6 +43,7 @@ from .hard_cases import hard_cases
 from .model import AUTHORS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .drive_law_scene import DRIVE_LAW
 from .options import SCENE_CHECKS, SCENE_OPTIONS
+from .printed_items import PRINTED_ITEMS
 from .report import VALUE_UNITS, scene_report
 from .steps import (drive_laws, duhamel_integral, dynamic_coefficients,
                     equations_of_motion, initial_conditions)
@@ -79,6 +82,7 @@ def build() -> Derivation:
     from . import outputs, tables
     tables.derive_tables(d)
     d.published.extend(published_formulas())
+    d.printed_items.extend(PRINTED_ITEMS)
     d.outputs.extend(outputs.code_outputs(d, loads))
     outputs.attach(d)   # ODE systems and bench parameters for `crane-sym bench`
     return d

@@ -31,6 +31,10 @@ Files:
 - ``bench_cases.py``: ``BATCHED_BENCH_CASES``, that peak's batched bench.
 - ``published.py``: Form 1 as printed; ``published_loads.py``: Fig. 10's z = 10
   value, (3)–(4), Table 1.
+- ``published_measured.py``: (1)–(2), lost in the OCR, reconstructed and labelled;
+  Tables 2–3 (measurements, nothing derives them).
+- ``printed_items.py``: ``PRINTED_ITEMS``, the inventory of the print the audit's recall
+  counts.
 - ``tables.py``: Tables 1–3 as data.
 - ``outputs.py``: generated functions; ``hard_cases.py``: hard cases.
 - ``options.py``: ``SCENE_OPTIONS``, ``SCENE_CHECKS``.
@@ -49,8 +53,10 @@ from .hybrid import HYBRID_MODELS
 from .model import AUTHORS, CITATION, HANDOUT_WORDS, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .options import SCENE_CHECKS, SCENE_OPTIONS
 from .outputs import outputs, tabulated
+from .printed_items import PRINTED_ITEMS
 from .published import PUBLISHED
 from .published_loads import PUBLISHED_LOADS
+from .published_measured import PUBLISHED_MEASURED
 from .report import VALUE_UNITS, scene_report
 from .sweep_outputs import SWEEP_OUTPUTS
 
@@ -73,7 +79,8 @@ def build() -> Derivation:
     steps_startup.equations_of_motion(d)
     steps_startup.reduction(d)
     steps_startup.table1_model(d)
-    d.published.extend(PUBLISHED + PUBLISHED_LOADS)
+    d.published.extend(PUBLISHED + PUBLISHED_LOADS + PUBLISHED_MEASURED)
+    d.printed_items.extend(PRINTED_ITEMS)
     d.outputs.extend(outputs(d))
     d.tabulated.extend(tabulated())
     return d

@@ -8,7 +8,7 @@ from __future__ import annotations
 import sympy as sp
 from sympy.physics.units import energy, force, length, mass, time, velocity
 
-from crane_sym.symbols import DEFINED, PhysicalSymbol, SymbolTable
+from crane_sym.symbols import COORDINATE, DEFINED, PhysicalSymbol, SymbolTable
 
 # --- The paper ---------------------------------------------------------------
 ID = "portal_travel"
@@ -165,6 +165,10 @@ v_gap = sp.Symbol("v_gap", real=True)
 m_d, P_nom, v_0, beta_1, q_step, s_b, b_l, a_0 = sp.symbols(
     "m_d P_nom v_0 beta_1 q_step s_b b_l a_0", real=True)
 F_peak = sp.Symbol("F_peak", real=True)              # a model's F_max over 1 kN
+beta_k = sp.Symbol("beta_k", positive=True)          # slope of the characteristic in use
+t = sp.Symbol("t", nonnegative=True)                  # time of the start-up
+x_1, x_2, x_k = (sp.Function(n)(t) for n in ("x_1", "x_2", "x_k"))
+F_1 = sp.Symbol("F_1")                               # load of the left link, first stage
 a_cell = sp.Symbol("a_cell", real=True)              # an acceleration over 1 m/s²
 _startup = [
     PhysicalSymbol(J_r, mass * length ** 2, "kg*m^2", "moment of inertia of one motor "
@@ -207,6 +211,18 @@ _startup = [
                    DEFINED, "real"),
     PhysicalSymbol(a_0, velocity / time, "m/s^2", "acceleration of the rigid drive at "
                    "break-away on the first characteristic", DEFINED, "real"),
+    PhysicalSymbol(beta_k, force / velocity, "N*s/m", "slope of the start characteristic "
+                   "a side is on (β_1 on the first)", sample_range=(1e5, 5e6)),
+    PhysicalSymbol(F_1, force, "N", "load of the left link in the first stage (text: F)",
+                   sign="real", sample_range=(1e3, 6e4)),
+    PhysicalSymbol(t, time, "s", "time of the start-up in (1)-(2), phase by phase (not a "
+                   "scene's clock)", sign="nonnegative",
+                   sample_range=(1e-3, 5.0)),
+    PhysicalSymbol(x_1, length, "m", "left motor masses' coordinate at the rim", COORDINATE,
+                   "real"),
+    PhysicalSymbol(x_2, length, "m", "right motor masses' coordinate at the rim", COORDINATE,
+                   "real"),
+    PhysicalSymbol(x_k, length, "m", "the crane's coordinate", COORDINATE, "real"),
     PhysicalSymbol(F_peak, ONE, "1", "the model's largest F1 + F2 in kN", DEFINED, "real"),
     PhysicalSymbol(a_cell, ONE, "1", "a crane acceleration of Table 1 in m/s^2", DEFINED,
                    "real"),
@@ -252,7 +268,7 @@ HANDOUT_WORDS = {
     "eps": r"$\varepsilon_\alpha$", "xp": "the shift of the pointed tip", "psi": r"$\psi$",
     "2pi": r"$2\pi$", "pi": r"$\pi$",
     "the three-mass start-up of startup.py": "the three-mass start-up of the model text",
-    " (startup.PLAUSIBLE)": ""}
+    " (startup.PLAUSIBLE)": "", "(startup.py, model text)": "(from the model text)"}
 
 MODEL = r"""
 Form 1 and Fig. 10: a pair of involute spur gears cut by generating with a

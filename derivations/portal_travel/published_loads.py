@@ -30,8 +30,9 @@ INPUTS = Cause("003-table1-inputs", "the hold times per start step are settings 
 STARTUP_MODEL = ("the three-mass start-up of startup.py (Fig. 11), built from the text's "
                  "definitions because (1)–(2) are lost in the OCR; the rotor inertia, travel "
                  "speed, λ, stiffness, damping and crane mass are not printed and were chosen, "
-                 "not fitted (model text); each is moved over its plausible range "
-                 "(startup.PLAUSIBLE) and the band it spans decides")
+                 "not fitted (model text); the band they span over the whole box of their "
+                 "plausible ranges (startup.PLAUSIBLE), every corner and an optimiser inside "
+                 "it, decides")
 STARTUP = Cause("003-startup-unstated-parameters", "the start-up model needs six parameters "
                 "the paper does not state (rotor inertia, travel speed, λ, stiffness, damping, "
                 "crane mass); with the chosen ones it gives F_max = 242, 269, 288 kN (ψ = "

@@ -8,17 +8,17 @@ import sympy as sp
 from crane_sym.derivation import Derivation
 from crane_sym.mechanics.lagrange import lagrange_equations
 
-from .model import (F_peak, J_r, a_cell, t_s, v_gap, P_m, P_nom, W_f, W_w, a_0, b_l, beta_1, c_l, lam, m_d, m_k,
-                    n_m, omega_0, omega_n, phi_b, psi_cell, q_step, s_b, v_0, v_n, zeta)
+from .model import (F_1, F_peak, beta_k, t, x_1, x_2, x_k, J_r, a_cell, t_s, v_gap, P_m,
+                    P_nom, W_f, W_w, a_0, b_l, beta_1, c_l, lam, m_d, m_k, n_m, omega_0,
+                    omega_n, phi_b, psi_cell, q_step, s_b, v_0, v_n, zeta)
 from .startup import table1_results, table1_sensitivities
 
-t = sp.Symbol("t", nonnegative=True)
 
 
 def equations_of_motion(d: Derivation) -> None:
     """Newton/Lagrange for the two motor masses and the crane, both stages."""
-    x1, x2, xk = (sp.Function(n)(t) for n in ("x_1", "x_2", "x_k"))
-    beta = sp.Symbol("beta_k", positive=True)
+    x1, x2, xk = x_1, x_2, x_k
+    beta = beta_k
     T = m_d * (x1.diff(t) ** 2 + x2.diff(t) ** 2) / 2 + m_k * xk.diff(t) ** 2 / 2
     V = c_l * ((x1 - xk - s_b) ** 2 + (x2 - xk - s_b) ** 2) / 2
     R = b_l * ((x1 - xk).diff(t) ** 2 + (x2 - xk).diff(t) ** 2) / 2
@@ -36,7 +36,7 @@ def equations_of_motion(d: Derivation) -> None:
               if i == 2 else "",
               "Start-up with backlash (Fig. 11)" if i == 0 else "")
     d.add("start-up, first stage", sp.Eq(m_d * x1.diff(t, 2),
-                                         beta * (v_0 - x1.diff(t)) - sp.Symbol("F_1")),
+                                         beta * (v_0 - x1.diff(t)) - F_1),
           "While the crane stands (W_w − W_f ≤ F_1 + F_2 ≤ W_w + W_f) only the motors move; "
           "F_1 = 0 in the gap (0 < x_1 − x_к < s), c(x_1 − x_к − s) + b(ẋ_1 − ẋ_к) once the "
           "flank closes: the first stage, 'taking up the backlash until the link load "

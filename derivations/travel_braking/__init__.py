@@ -16,6 +16,8 @@ Files:
 - ``model.py``: the paper's identity, symbols, symbol table, LaTeX names, model text.
 - ``steps.py``: the derivation steps (1)–(14) and beyond, in the paper's order.
 - ``published.py``: the published formulas as printed (``PUBLISHED``).
+- ``printed_items.py``: ``PRINTED_ITEMS``, the inventory of the print the audit's recall
+  counts.
 - ``outputs.py``: the Outputs for code generation and the ODE systems.
 - ``bench_cases.py``: the cases the sweep and sampled-load benches run.
 - ``hard_cases.py``: the seeded hard cases for ``crane-sym accuracy``.
@@ -34,6 +36,7 @@ from .bench_cases import SAMPLED_BENCH_CASES, SWEEP_BENCH_CASES
 from .hard_cases import hard_cases
 from .model import AUTHORS, CITATION, ID, LATEX_NAMES, MODEL, PAPER, SYMBOLS, TITLE
 from .outputs import ode_systems, outputs
+from .printed_items import PRINTED_ITEMS
 from .published import PUBLISHED
 from .report import VALUE_UNITS, scene_report
 
@@ -56,6 +59,7 @@ def build() -> Derivation:
     steps.velocities(d, eq1, eq2, stretch)
 
     d.published.extend(PUBLISHED)
+    d.printed_items.extend(PRINTED_ITEMS)
     d.outputs.extend(outputs(d, sp.sqrt(rel.omega2)))
     d.ode_systems.extend(ode_systems(eq1, eq2, rel))
     return d
