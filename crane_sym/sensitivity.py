@@ -14,7 +14,10 @@ print outside such a stack may still lie inside the box's range.
 
 The box is studied lazily, once per evaluator and process, when a band is
 first asked for (``Sensitivity.band``): building a derivation costs one run,
-its audit the 2**n corners and the optimiser's runs. A :class:`Sensitivity`
+its audit the 2**n corners and the optimiser's runs. A paper whose runs are
+slow keeps the extremes found as a committed table (:func:`extremes_table`)
+and hands them back (``sweep(..., known=...)``); a test studies the box
+again and compares. A :class:`Sensitivity`
 carries the result into the step that derives the number, where the audit
 reads it (``crane_sym.audit.verdicts``): the band is the tolerance that
 decides the record.
@@ -28,7 +31,7 @@ from typing import Callable, Mapping
 import numpy as np
 from scipy.optimize import minimize
 
-__all__ = ["BoxStudy", "Chosen", "Extreme", "Sensitivity", "sweep"]
+__all__ = ["BoxStudy", "Chosen", "Extreme", "Sensitivity", "extremes_table", "sweep"]
 
 #: Most runs of the optimiser per number and direction (past the corners).
 OPTIMISER_RUNS = 40
@@ -97,12 +100,12 @@ class BoxStudy:
     numbers and the optimiser of one number never repeats a corner."""
 
     def __init__(self, evaluate: Callable[[Mapping[str, float]], Mapping[str, float]],
-                 parameters: tuple[Chosen, ...], fixed: Mapping[str, float] | None = None
-                 ) -> None:
+                 parameters: tuple[Chosen, ...], fixed: Mapping[str, float] | None = None,
+                 known: Mapping[str, tuple[Extreme, Extreme]] | None = None) -> None:
         self.evaluate, self.parameters = evaluate, tuple(parameters)
         self.fixed = dict(fixed or {})
         self._runs: dict[tuple[float, ...], dict[str, float]] = {}
-        self._extremes: dict[str, tuple[Extreme, Extreme]] = {}
+        self._extremes: dict[str, tuple[Extreme, Extreme]] = dict(known or {})
 
     def run(self, shares: tuple[float, ...]) -> dict[str, float]:
         """The evaluator's numbers at ``shares`` (0 … 1 along each range)."""
@@ -194,7 +197,9 @@ class Sensitivity:
 
 def sweep(evaluate: Callable[[Mapping[str, float]], Mapping[str, float]],
           parameters: tuple[Chosen, ...],
-          fixed: Mapping[str, float] | None = None) -> dict[str, Sensitivity]:
+          fixed: Mapping[str, float] | None = None,
+          known: Mapping[str, tuple[Extreme, Extreme]] | None = None
+          ) -> dict[str, Sensitivity]:
     """The sensitivity of every number ``evaluate`` returns to the chosen parameters.
 
     Parameters
@@ -206,6 +211,9 @@ def sweep(evaluate: Callable[[Mapping[str, float]], Mapping[str, float]],
         The chosen parameters, whose box of plausible ranges the bands span.
     fixed : mapping, optional
         Further inputs of ``evaluate`` that stay as they are.
+    known : mapping, optional
+        Extremes already found by name (a committed table); the box is studied
+        only for the numbers not in it.
 
     Returns
     -------
@@ -221,6 +229,21 @@ def sweep(evaluate: Callable[[Mapping[str, float]], Mapping[str, float]],
     (1.0, (0.0, 4.0))
     """
     base = dict(fixed or {}) | {p.key: p.chosen * p.scale for p in parameters}
-    study = BoxStudy(evaluate, parameters, fixed)
+    study = BoxStudy(evaluate, parameters, fixed, known)
     return {name: Sensitivity(float(value), study, name)
             for name, value in evaluate(base).items()}
+
+
+def extremes_table(sensitivities: Mapping[str, Sensitivity]) -> dict[str, tuple]:
+    """The extremes of every number as plain tuples, ``name -> ((value, at, by),
+    (value, at, by))``: what a committed table holds (``repr`` of it is a
+    Python literal), each box studied now where it was not.
+
+    Parameters
+    ----------
+    sensitivities : mapping of str to Sensitivity
+        The numbers by name, as :func:`sweep` gives them.
+    """
+    return {name: tuple((float(e.value), tuple(map(float, e.at)), e.by)
+                        for e in s.extremes)
+            for name, s in sensitivities.items()}

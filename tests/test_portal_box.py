@@ -1,0 +1,35 @@
+"""003's committed box extremes are what studying the boxes again finds."""
+import math
+
+from crane_sym import registry
+from crane_sym.sensitivity import extremes_table
+
+registry.module("003")                    # the clone's package paths
+from crane_sym.derivations.portal_travel import box_extremes, startup  # noqa: E402
+
+
+def test_the_committed_extremes_are_found_for_todays_inputs():
+    assert box_extremes.INPUTS == startup.box_inputs()
+
+
+def test_the_committed_extremes_are_what_the_boxes_give():
+    """About 700 start-ups: every corner and the optimiser's runs, compared
+    with the table the audit reads (values to 1e-9, places to 1e-6 of a range)."""
+    fresh = extremes_table(startup.table1_sensitivities(committed=False))
+    assert list(fresh) == list(box_extremes.EXTREMES)
+    ranges = [p.high - p.low for p in startup.PLAUSIBLE]
+    for name, ends in fresh.items():
+        for (value, at, by), (kept, kept_at, kept_by) in zip(ends, box_extremes.EXTREMES[name]):
+            assert by == kept_by, name
+            assert math.isclose(value, kept, rel_tol=1e-9, abs_tol=1e-12), (name, value, kept)
+            assert all(abs(a - b) <= 1e-6 * r for a, b, r in zip(at, kept_at, ranges)), name
+
+
+def test_a_changed_input_is_studied_afresh(monkeypatch):
+    """A table found for other inputs is not read: the box is studied again."""
+    monkeypatch.setattr(box_extremes, "INPUTS", "other inputs")
+    ran = []
+    monkeypatch.setattr(startup, "_numbers", lambda gap, p: ran.append(gap) or {
+        f"F_max, {gap}": p["c_l"]})
+    bands = startup.table1_sensitivities()
+    assert bands["F_max, 0"].band == (2e6, 10e6) and len(ran) > 2 ** 6   # the corners run
