@@ -38,3 +38,10 @@ def test_the_mutants_change_the_relation():
     swapped = mutants(sp.Eq(u, m1 / m2), d.symbols)["swapped symbols"]
     assert swapped.rhs == m2 / m1 and set(MUTATIONS) >= set(found)
     assert mutants(sp.Eq(u, sp.Integer(0), evaluate=False), d.symbols) == {}
+
+
+def test_a_symbol_for_another_reading_takes_the_transcribed_number():
+    # 002's max k̃4 is printed as k̃_дин3 = 2.0736 and read as k̃_дин4: the reading's
+    # number is the transcription's, so a sign, a factor 2 or a decimal point is caught
+    table = kills(registry.get("002"), labels=("max k̃4 (after (66))",))
+    assert sum(table.tried.values()) == 3 and table.survivors == ()
