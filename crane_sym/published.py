@@ -18,6 +18,8 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from crane_sym.readings import Reinterpretation
+
 EQUATION = "equation"      # a claim that must follow from the model
 ASSUMPTION = "assumption"  # a modelling choice the paper states; a difference is a remark
 #: A number a reconstructed model gives only through parameters the paper does not
@@ -150,8 +152,11 @@ class Convention:
     ----------
     note : str
         What the convention is, e.g. "P in (6) is the frequency p of (5)".
-    reading : sympy.Eq
-        The printed formula read under the convention.
+    reading : sympy.Eq or Reinterpretation
+        The printed formula read under the convention: best the operation
+        (``crane_sym.readings``) that makes it from the transcription, so the
+        reading checks what is transcribed; a relation typed beside the
+        transcription only where no operation states the reading.
     kind : str
         Which reading of the policy (a key of ``READINGS``).
     compare_to : str
@@ -163,7 +168,7 @@ class Convention:
     """
 
     note: str
-    reading: sp.Eq
+    reading: sp.Eq | Reinterpretation
     kind: str
     compare_to: str = ""
     fit: Fit | None = None
@@ -275,7 +280,7 @@ class PublishedFormula:
             raise ValueError(f"{self.label}: tolerance must be in [0, 1)")
         if self.printed is None and not self.not_checkable:
             raise ValueError(f"{self.label}: no transcription and no reason why")
-        for relation in [self.printed] + [c.reading for c in self.conventions]:
+        for relation in [self.printed] + [self.reading(c) for c in self.conventions]:
             if relation is not None and not isinstance(relation, sp.Equality):
                 raise TypeError(
                     f"{self.label}: a transcription must be a sympy.Eq built in "
@@ -285,6 +290,21 @@ class PublishedFormula:
     def target(self) -> str:
         """Label of the derived step this formula is checked against."""
         return self.compare_to or self.label
+
+    def reading(self, conv: Convention) -> sp.Basic:
+        """``conv``'s relation, made from the transcription where ``conv`` names
+        the operation (``crane_sym.readings``), else as typed; a ``symbol for
+        another`` reading of a number takes the transcription's number (the
+        reading of ``k̃_дин3 = 2.0736`` as ``k̃_дин4 = 2.0736``), so the number
+        transcribed, not a second copy typed beside it, is what is checked."""
+        reading = conv.reading
+        if isinstance(reading, Reinterpretation):
+            return reading.applied(self.printed) if self.printed is not None else None
+        if (conv.kind == SYMBOL_FOR_ANOTHER and isinstance(reading, sp.Equality)
+                and self.printed is not None and reading.rhs.is_number
+                and self.printed.rhs.is_number):
+            return sp.Eq(reading.lhs, self.printed.rhs, evaluate=False)
+        return reading
 
 
 @dataclass(frozen=True)

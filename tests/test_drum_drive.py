@@ -165,11 +165,12 @@ def test_readings_keep_the_literal_print(records):
 
 
 def _scaled(f):
-    """``f`` with one term of its printed relation, and the same term of every reading,
-    multiplied by 3/2; ``None`` when no term is shared by the print and all readings."""
+    """``f`` with one term of its printed relation, and the same term of every reading
+    typed beside it, multiplied by 3/2 (a reading made from the transcription follows
+    it); ``None`` when no term is shared by the print and all readings."""
     for side in ("rhs", "lhs"):
         for term in sp.Add.make_args(getattr(f.printed, side)):
-            relations = [f.printed] + [c.reading for c in f.conventions]
+            relations = [f.printed] + [f.reading(c) for c in f.conventions]
             if term == 0 or not all(term in sp.Add.make_args(getattr(rel, side))
                                     for rel in relations):
                 continue
@@ -183,6 +184,7 @@ def _scaled(f):
             return dataclasses.replace(
                 f, printed=scale(f.printed),
                 conventions=tuple(dataclasses.replace(c, reading=scale(c.reading))
+                                  if isinstance(c.reading, sp.Equality) else c
                                   for c in f.conventions))
     return None
 

@@ -14,6 +14,7 @@ from crane_sym import registry  # noqa: E402
 from crane_sym.audit.latex_parse import (bound_variables, candidates, layout, parse,  # noqa: E402
                                          placeholder, split, wrap_calls)
 from crane_sym.audit.machine_read import AGREES, DIFFERS, UNREADABLE, machine_read  # noqa: E402
+from crane_sym.audit.verdicts import NOT_THE_PRINT, audit_formula, tied_to_print  # noqa: E402
 
 
 def _formula(paper: str, label: str):
@@ -74,6 +75,30 @@ def test_a_quiet_fix_is_an_unexplained_difference():
     read = machine_read(d, fixed)
     assert read.status == DIFFERS and read.explained_by == ""
     assert machine_read(d, f).status == AGREES
+
+
+def test_a_partly_read_print_compares_every_part_it_reads():
+    """(28) prints P(t), P(0) and Q(t) in one system, P(0) not read by the parser:
+    a sign slipped into the transcription of P(t) differs from the part read, the
+    part not read is named, and the record is the finding."""
+    d, f = _formula("hoist_startup", "(28)")
+    assert machine_read(d, f).status == AGREES
+    slip = replace(f, printed=sp.Eq(f.printed.lhs, -f.printed.rhs, evaluate=False))
+    read = machine_read(d, slip)
+    assert read.status == DIFFERS and read.explained_by == "", read.detail
+    assert "the parts not read" in read.detail and "P(0)" in read.detail
+    judged = tied_to_print(replace(audit_formula(d, slip), machine_read=read))
+    assert judged.verdict == NOT_THE_PRINT
+
+
+@pytest.mark.parametrize("label", ["(8), middle", "(23)"])
+def test_a_part_read_that_is_not_this_records_stays_unread(label):
+    """Another record's part of the same print ((8)'s outer members beside its
+    middle member), or a member written in names the transcription writes out
+    ((23)'s x_*(t)), is no difference: this record's own part is not read."""
+    d, f = _formula("hoist_startup", label)
+    read = machine_read(d, f)
+    assert read.status == UNREADABLE and read.detail.startswith("part of the print"), label
 
 
 def test_ocr_debris_is_unreadable_with_its_reason():

@@ -22,6 +22,7 @@ import re
 from dataclasses import dataclass, replace
 
 import sympy as sp
+from sympy.core.function import AppliedUndef
 
 from crane_sym.audit.checks import numeric_equivalence, symbolic_equivalence
 from crane_sym.derivation import Derivation
@@ -190,8 +191,10 @@ def _compared(d: Derivation, f: PublishedFormula) -> MachineRead:
     if len(relations) == 1 and not reasons:
         ours = relations       # the print's one relation, rearranged or not
     if reasons and ours:       # a relation not read may be the one transcribed
-        ours, reasons = [], ["part of the print was not read, and what was read is not "
-                             "the transcription: " + reasons[0]]
+        ours = _comparable(d, f, ours)
+        if not ours:
+            reasons = ["part of the print was not read, and what was read is not "
+                       "the transcription: " + reasons[0]]
     if not ours:
         why = reasons[0] if reasons else (
             "the relation this record transcribes is not among those read: "
@@ -201,9 +204,31 @@ def _compared(d: Derivation, f: PublishedFormula) -> MachineRead:
             why = "OCR debris: " + why
         return MachineRead(UNREADABLE, _tokens_back(why, tokens, d.latex_names))
     rel = ours[0]
+    unread = "; ".join(dict.fromkeys(reasons))
+    unread = f"; the parts not read: {unread}" if unread else ""
     return MachineRead(DIFFERS, "printed − transcribed: $" +
-                       _difference(rel, f.printed, d.latex_names) + "$",
+                       _difference(rel, f.printed, d.latex_names) + "$"
+                       + _tokens_back(unread, tokens, d.latex_names),
                        _tex(rel, d.latex_names), _explained(d, f, [r for _, r in read]))
+
+
+def _comparable(d: Derivation, f: PublishedFormula, ours: list) -> list:
+    """The parts read of a print, part of which is not read, that can only be
+    the part ``f`` transcribes: not another record's part of the same print
+    (the outer members of (8) beside its middle member), and in no name the
+    transcription does not hold (a middle member written with x_*(t) or Y_2(t),
+    which the transcription writes out). Each of them that is not ``f``'s
+    transcription is a difference from the print, read by machine."""
+    others = [g.printed for g in d.published
+              if g.latex == f.latex and g.label != f.label and g.printed is not None]
+    own = _names(f.printed)
+    return [r for r in ours if _names(r) <= own
+            and not any(_same(r, other, d) for other in others)]
+
+
+def _names(expr: sp.Basic) -> set:
+    """The symbols and the undefined functions ``expr`` is written in."""
+    return expr.free_symbols | {type(a) for a in expr.atoms(AppliedUndef)}
 
 
 def _read(d: Derivation, f: PublishedFormula) -> tuple[list, list[str], dict]:
@@ -259,7 +284,7 @@ def _explained(d: Derivation, f: PublishedFormula, parsed: list) -> str:
     for c in f.conventions:
         if c.kind == FITTED_VALUE:     # changes what is compared, not how the print reads
             continue
-        if any(_same(rel, c.reading, d) for rel in parsed):
+        if any(_same(rel, f.reading(c), d) for rel in parsed):
             return f"the parse is the record's {c.kind} reading: {c.note}"
     if f.reconstructed:
         return "a labelled reconstruction from OCR damage"

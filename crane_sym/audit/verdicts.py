@@ -22,7 +22,7 @@ from crane_sym.audit.fits import fit_of
 from crane_sym.latex import latex
 from crane_sym.audit.machine_read import DIFFERS, MachineRead, machine_read
 from crane_sym.published import (ASSUMPTION, CHOSEN, DEFINITION, INTERNAL, READINGS,
-                                 RECONSTRUCTED, SYMBOL_FOR_ANOTHER, Cause, Convention,
+                                 RECONSTRUCTED, Cause, Convention,
                                  PublishedFormula)
 from crane_sym.audit.sampling import physical_definitions
 from crane_sym.sensitivity import Sensitivity
@@ -345,7 +345,7 @@ def audit_formula(d: Derivation, f: PublishedFormula) -> AuditRecord:
     attempts = [literal]
     for conv in f.conventions:
         again, comp_r, _ = _attempt(d, f, conv.kind, _convention_note(d, f, conv),
-                                    _reading(f, conv), conv.compare_to or f.target)
+                                    f.reading(conv), conv.compare_to or f.target)
         attempts.append(again)
         if again.matches:
             verdict = RESTATED if f.basis == DEFINITION else CONFIRMED_WITH_CONVENTION
@@ -412,18 +412,6 @@ NOT_THE_PRINT_CAUSE = Cause(
     "transcription-not-the-print", "the transcription checked is not the print: read by "
     "machine, the printed LaTeX differs from the transcription, and no labelled "
     "reconstruction or named reading explains the difference")
-
-
-def _reading(f: PublishedFormula, conv: Convention) -> sp.Basic:
-    """``conv``'s relation, with a printed number's own value where the reading
-    only names a symbol for another: the reading of ``k̃_дин3 = 2.0736`` as
-    ``k̃_дин4 = 2.0736`` takes its number from the transcription, so that the
-    number transcribed, not a second copy typed beside it, is what is checked."""
-    reading = conv.reading
-    if (conv.kind == SYMBOL_FOR_ANOTHER and isinstance(reading, sp.Equality)
-            and f.printed is not None and reading.rhs.is_number and f.printed.rhs.is_number):
-        return sp.Eq(reading.lhs, f.printed.rhs, evaluate=False)
-    return reading
 
 
 def tied_to_print(r: AuditRecord) -> AuditRecord:

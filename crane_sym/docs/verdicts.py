@@ -183,7 +183,7 @@ class Voice:
             out.append(f"- Derived, to the print's digits: {literal}.")
         for conv in f.conventions:
             if record.reading is not None and conv.note in record.reading.note:
-                under = value_of(conv.compare_to or f.target, conv.reading, f.tolerance)
+                under = value_of(conv.compare_to or f.target, f.reading(conv), f.tolerance)
                 if under and (conv.compare_to or under != literal):
                     out.append(f"- Derived with the reading ({self.say(conv.note)}): "
                                f"{under}.")

@@ -30,6 +30,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from crane_sym.readings import Meaning
+
 from crane_sym.published import (
     ASSUMPTION, DEFINITION, INTERNAL, LOST_MARK, RECONSTRUCTED, SYMBOL_FOR_ANOTHER,
     Convention, PublishedFormula)
@@ -262,10 +264,8 @@ def _motion_rows(e: dict) -> list[PublishedFormula]:
     eleven = (half * _sum(n * (dot(phis[i]) - dot(phis[i + 1]))**2 for i, n in enumerate(nus))
               + half * nu_y * (dot(yp[0]) - dot(yp[1]))**2
               + half * nu_z * (dot(zp[0]) - dot(zp[1]))**2 + half * nu_t * dot(z)**2)
-    read = (half * _sum(n * (dot(p) - dot(p2))**2 for n, p, p2 in
-                        zip(nus, (phi1, phi2, phi3), (phi2, phi3, phi3)))
-            + half * nu_y * dot(y)**2 + half * nu_z * dot(e["e2"])**2
-            + half * nu_t * dot(z)**2)
+    # the undefined names given the model's meaning: the reading made from (11)
+    read = Meaning(((phi4, phi3), (yp[0], y + yp[1]), (zp[0], e["e2"] + zp[1])))
     acc = [dot(p, 2) for p in phis]
     row1 = sp.Eq(_sum(ms[i] * acc[i] - ms[i] * dot(yp[i], 2) for i in range(3))
                  + _chain(acc, Cs) - m3 * dot(y, 2) + _chain([dot(p) for p in phis], nus),
@@ -284,7 +284,7 @@ def _motion_rows(e: dict) -> list[PublishedFormula]:
                  conventions=(Convention(
                      "φ4 ≡ φ3 (no fourth body), y1 − y2 ≡ y (the drum against its "
                      "bearing), z1 − z2 ≡ the slack branch's stretch z − y − r·φ3",
-                     sp.Eq(Phi_, read), SYMBOL_FOR_ANOTHER),),
+                     read, SYMBOL_FOR_ANOTHER),),
                  basis=RECONSTRUCTED, basis_note=FIG1 + "; the reading gives the undefined "
                  "φ4, y1 − y2, z1 − z2 the meaning they have in that reconstruction",
                  cause=C_UNDEFINED_RATES),

@@ -6,6 +6,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from crane_sym.readings import Meaning
+
 from crane_sym.published import (ASSUMPTION, DEFINITION, INTERNAL, RECONSTRUCTED,
                                  SYMBOL_FOR_ANOTHER, Convention, PublishedFormula)
 
@@ -99,7 +101,7 @@ def late_rows() -> list[PublishedFormula]:
                  "(18)–(19) use it as the tight branch's force",
                  conventions=(Convention(
                      "F1 in (20) is the traction force F1 − F2 (one name for two forces)",
-                     sp.Eq(F1 - F2, m_sum * g * mu_op), SYMBOL_FOR_ANOTHER),),
+                     Meaning(((F1, F1 - F2),)), SYMBOL_FOR_ANOTHER),),
                  basis=RECONSTRUCTED, basis_note=FIG1 + "; the derived F1 is the run's "
                  "equation (12) in steady running, with the running resistance ν_t·ż of "
                  "(11)", cause=C_TRACTION_F1),

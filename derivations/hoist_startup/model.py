@@ -99,7 +99,6 @@ INT_S_COS = convolution(S_f(vt) * COS)                       # (18)
 INT_P = convolution(Pbar_f(vt) * SIN)                        # (33)
 INT_P_REV = convolution(Pbar_f(t - vt) * sp.sin(Omega * vt))  # (34)
 INT_P_Y16 = convolution(Pbar_f(t - vt) * sp.sin(Omega * vt) / Omega)       # (34), Y of (16)
-INT_P_YF = convolution(Pbar_f(t - vt) * sp.sin(Omega * vt) / (m * Omega))  # (34), Y per force
 
 stiffness = force / length
 frequency = 1 / time

@@ -23,6 +23,8 @@ from decimal import Decimal
 
 import sympy as sp
 
+from crane_sym.readings import Meaning, SignOnce
+
 from crane_sym.published import (ASSUMPTION, DEFINITION, INTERNAL, LINE_BREAK_SIGN, LOST_MARK,
                                  RECONSTRUCTED, Cause, Convention, PublishedFormula, printed)
 
@@ -166,18 +168,18 @@ PUBLISHED = [
     _printed("(8), C2", L8, sp.Eq(C2, -x_s0_dot / _W), "second line, outer members"),
     _printed("(9)", L9, sp.Eq(x, x_s - x_s0 * _cos - (-(x_s0_dot * _sin / _W))),
              _LINE_BREAK, conventions=(Convention(
-                 _ONE_MINUS, sp.Eq(x, x_s - x_s0 * _cos - x_s0_dot * _sin / _W),
-                 LINE_BREAK_SIGN),), cause=MINUS_AT_LINE_BREAK),
+                 _ONE_MINUS, SignOnce(x_s0_dot * _sin / _W), LINE_BREAK_SIGN),),
+             cause=MINUS_AT_LINE_BREAK),
     _printed("(10)", L10, sp.Eq(P_d, C * x_s - C * x_s0 * _cos - (-(C / _W * x_s0_dot * _sin))),
              _LINE_BREAK, conventions=(Convention(
-                 _ONE_MINUS, sp.Eq(P_d, C * x_s - C * x_s0 * _cos - C / _W * x_s0_dot * _sin),
-                 LINE_BREAK_SIGN),), cause=MINUS_AT_LINE_BREAK),
+                 _ONE_MINUS, SignOnce(C / _W * x_s0_dot * _sin), LINE_BREAK_SIGN),),
+             cause=MINUS_AT_LINE_BREAK),
     _printed("(11)", L11, sp.Eq(x0_dot, Q_at0 / C),
              "the first condition is printed on ẋ(0), dimensionally impossible "
              "(m/s against m); (12) uses x(0) = Q(0)/C",
              conventions=(Convention("the first condition of (11) is on x(t)|_{t=0}; "
                                      "its dot is a slip (of print or OCR)",
-                                     sp.Eq(x0, Q_at0 / C), LOST_MARK),),
+                                     Meaning(((x0_dot, x0),)), LOST_MARK),),
              cause=Cause("002-dot-on-x0", "(11) puts a dot on the initial displacement "
                          "x(0): a velocity equated to a length")),
     _printed("(11), velocity", L11, sp.Eq(x0_dot, 0), "second condition",
@@ -188,8 +190,7 @@ PUBLISHED = [
     _printed("(13)", L13, sp.Eq(x, x_s - x_s0 * _cos + Q_at0 / C * _cos
                                 - (-(x_s0_dot * _sin / _W))),
              _LINE_BREAK, conventions=(Convention(
-                 _ONE_MINUS, sp.Eq(x, x_s - x_s0 * _cos + Q_at0 / C * _cos
-                                   - x_s0_dot * _sin / _W), LINE_BREAK_SIGN),),
+                 _ONE_MINUS, SignOnce(x_s0_dot * _sin / _W), LINE_BREAK_SIGN),),
              cause=MINUS_AT_LINE_BREAK),
     _printed("(14)", L14, sp.Eq(P_d, C * x_s - C * x_s0 * _cos + Q_at0 * _cos
                                 - C / _W * x_s0_dot * _sin)),

@@ -6,10 +6,12 @@ from __future__ import annotations
 
 import sympy as sp
 
+from crane_sym.readings import Scaled
+
 from crane_sym.published import (ASSUMPTION, DEFINITION, SYMBOL_FOR_ANOTHER, Cause, Convention,
                                  PublishedFormula)
 
-from .model import (INT_P, INT_P_REV, INT_P_Y16, INT_P_YF, K, Pbar, Pbar0, S, C, Y, Y2,
+from .model import (INT_P, INT_P_REV, INT_P_Y16, K, Pbar, Pbar0, S, C, Y, Y2,
                     d_max, k, m, m1, m2, t, t_n, theta, theta_half, vt, x, x0, x0_dot,
                     x_max, x_s, x_st)
 from .published import L16, _W, _cos, _printed, _sin
@@ -77,13 +79,16 @@ Y_TWO_MEANINGS = Cause("002-Y-two-meanings", "from (33) on the paper uses the na
 _Y_OUT = "Y(θ) of (16) written out under the integral, and the integral evaluated"
 
 
-def _via_y(label: str, latex: str, printed_with_16, reading_per_force, target: str,
+#: Y per unit force is Y of (16) over m, and a member written with Y, Y_1 or Y_2
+#: is linear in it: the reading is the transcription over m.
+_PER_FORCE = Convention(_FORCE_Y, Scaled(1 / m), SYMBOL_FOR_ANOTHER)
+
+
+def _via_y(label: str, latex: str, printed_with_16, target: str,
            note: str, read_as: str = "") -> PublishedFormula:
     """A member written with Y, Y_1 or Y_2: as printed Y is that of (16)."""
     return _printed(label, latex, sp.Eq(x, printed_with_16), note,
-                    compare_to=target, read_as=read_as,
-                    conventions=(Convention(_FORCE_Y, sp.Eq(x, reading_per_force),
-                                            SYMBOL_FOR_ANOTHER),),
+                    compare_to=target, read_as=read_as, conventions=(_PER_FORCE,),
                     cause=Y_TWO_MEANINGS)
 
 
@@ -96,7 +101,6 @@ def _y_integrals(scale):
 
 
 _Y1, _Y2 = _y_integrals(1)            # Y of (16)
-_Y1m, _Y2m = _y_integrals(m)          # Y per unit force
 
 PUBLISHED = [
     _printed("(32)", L32, sp.Eq(x.diff(t, 2) + _W ** 2 * x, Pbar / m)),
@@ -110,7 +114,7 @@ PUBLISHED = [
     _printed("(34)", L34, sp.Eq(x_s, INT_P_REV / (_W * m)), "outer members"),
     _printed("(34), via Y", L34, sp.Eq(x_s, INT_P_Y16),
              "first equality, with Y of (16)", compare_to="(34)",
-             conventions=(Convention(_FORCE_Y, sp.Eq(x_s, INT_P_YF), SYMBOL_FOR_ANOTHER),),
+             conventions=(_PER_FORCE,),
              cause=Y_TWO_MEANINGS),
     _printed("Y in (33)–(49)", L16, sp.Eq(Y, _sin / _W),
              "whole-paper remark: (16) defines Y as the response to a unit impulse of "
@@ -133,7 +137,7 @@ PUBLISHED = [
              "unnumbered line repeating (37)", compare_to="(37)",
              basis=DEFINITION, basis_note="(37) defines K_дин of the load cases"),
     _printed("(38)", L38, sp.Eq(K, 2 * sp.sin(_W * t / 2) ** 2), "Ω(t) read as Ωt"),
-    _via_y("(39)", L39a, k * _Y2, k * _Y2m, "(39)",
+    _via_y("(39)", L39a, k * _Y2, "(39)",
            "x = ∫ k(t − θ) Y(θ) dθ = k Y_2(t) with Y_2 of the next line; the "
            "integral evaluated by SymPy", read_as=_Y_OUT),
     _printed("(39), Y_2", L39b, sp.Eq(Y2, sp.integrate((t - vt) * sp.sin(_W * vt) / _W,
@@ -149,14 +153,13 @@ PUBLISHED = [
              "deflection under the load reached at t_п"),
     _printed("(42)", L42, sp.Eq(K, t / t_n * (1 - _sin / (_W * t)))),
     _printed("(43)", L43, sp.Eq(x, Pbar0 / C * (1 - _cos)), "outer members"),
-    _via_y("(43), via Y_1", L43, Pbar0 * _Y1, Pbar0 * _Y1m, "(43), in m and Ω",
+    _via_y("(43), via Y_1", L43, Pbar0 * _Y1, "(43), in m and Ω",
            "first equality"),
     _printed("(44)", L44, sp.Eq(x, 2 * Pbar0 / C * _half
                                 * sp.sin(_W * (t - theta / 2))), "last member"),
     _printed("(44), middle", L44, sp.Eq(x, Pbar0 / C * (sp.cos(_W * (t - theta)) - _cos)),
              "second member", compare_to="(44)"),
-    _via_y("(44), via Y_1", L44, Pbar0 * (_Y1 - _Y1.subs(t, t - theta)),
-           Pbar0 * (_Y1m - _Y1m.subs(t, t - theta)), "(44), in m and Ω",
+    _via_y("(44), via Y_1", L44, Pbar0 * (_Y1 - _Y1.subs(t, t - theta)), "(44), in m and Ω",
            "first member"),
     _printed("x_ст (before (45))", r"x_{ст} = \frac{\bar{P}_0}{C}",
              sp.Eq(x_st, Pbar0 / C), "text before (45)"),
@@ -178,12 +181,12 @@ PUBLISHED = [
              "second member; θ < π/Ω"),
     _printed("(48)", L48, sp.Eq(x, Pbar0 / (m * _W ** 3 * theta) * (_W * t - _sin)),
              "outer members"),
-    _via_y("(48), via Y_2", L48, Pbar0 / theta * _Y2, Pbar0 / theta * _Y2m, "(48)",
+    _via_y("(48), via Y_2", L48, Pbar0 / theta * _Y2, "(48)",
            "first equality"),
     _printed("(49)", L49, sp.Eq(x, Pbar0 / (m * _W ** 3 * theta) * (
         _W * theta - _sin + sp.sin(_W * (t - theta)))), "outer members"),
-    _via_y("(49), via Y_2", L49, Pbar0 / theta * (_Y2 - _Y2.subs(t, t - theta)),
-           Pbar0 / theta * (_Y2m - _Y2m.subs(t, t - theta)), "(49)", "first equality"),
+    _via_y("(49), via Y_2", L49, Pbar0 / theta * (_Y2 - _Y2.subs(t, t - theta)), "(49)",
+           "first equality"),
     _printed("(50)", L50, sp.Eq(x, x_st * (1 - 2 * sp.cos(_W * (t - theta / 2)) * _half
                                            / (_W * theta))),
              "reconstructed: the OCR's x_{cr} is x_ст", reconstructed=True),

@@ -10,6 +10,8 @@ from decimal import Decimal
 
 import sympy as sp
 
+from crane_sym.readings import Meaning, Scaled
+
 from crane_sym.published import (DEFINITION, INTERNAL, LOST_MARK, SYMBOL_FOR_ANOTHER,
                                  Cause, Convention, PublishedFormula, printed)
 
@@ -128,13 +130,13 @@ PART2 = [
     _printed(f"{FORM}, d_a1", "da1 := m z^ + 2 (ha + x1 + ki) m",
              sp.Eq(d_a1, _tip(z1, x1, k1)), "the OCR reads z1 as 'z^' and k1 as 'ki'",
              reconstructed=True, conventions=(Convention(
-                 "k1 is the signed change of the tip height, −Δy1", sp.Eq(
-                     d_a1, _tip(z1, x1, -dy1)), SYMBOL_FOR_ANOTHER),), cause=K_SIGN),
+                 "k1 is the signed change of the tip height, −Δy1",
+                 Meaning(((k1, -dy1),)), SYMBOL_FOR_ANOTHER),), cause=K_SIGN),
     _value(f"{FORM}, d_a1 = 280.536", "da1 = 280.536", V_da1, "280.536", "mm"),
     _printed(f"{FORM}, d_a2", "da2 := mz2 + 2-(ha + x2 + k2)-m",
              sp.Eq(d_a2, _tip(z2, x2, k2)), "'-' is the OCR's multiplication dot",
              conventions=(Convention("k2 is the signed change of the tip height, −Δy2",
-                                     sp.Eq(d_a2, _tip(z2, x2, -dy2)), SYMBOL_FOR_ANOTHER),),
+                                     Meaning(((k2, -dy2),)), SYMBOL_FOR_ANOTHER),),
              cause=K_SIGN, reconstructed=True),
     _value(f"{FORM}, d_a2 = 440", "da2 = 440", V_da2, "440", "mm"),
 ]
@@ -175,8 +177,9 @@ PART3 = [
              "ε_α as printed (the OCR reads ε as 's')", tolerance=_number("154")[1],
              reconstructed=True,
              compare_to="Form 1 value, eps",
-             conventions=(Convention("a decimal comma lost: ε_α = 1,54", sp.Eq(
-                 V_eps, sp.Rational(154, 100)), LOST_MARK),), cause=EPS_COMMA),
+             conventions=(Convention("a decimal comma lost: ε_α = 1,54",
+                                     Scaled(sp.Rational(1, 100)), LOST_MARK),),
+             cause=EPS_COMMA),
 ]
 
 APPENDIX = [
@@ -198,7 +201,7 @@ APPENDIX = [
              sp.Eq(Fo, _Fo), "rebuilt: Fo(x) := z·c/(z + 2·(1 + x + k)), c := cos α",
              reconstructed=True, conventions=(Convention(
                  "k is the signed change of the tip height, −Δy",
-                 sp.Eq(Fo, _Fo.subs(k, -dy)), SYMBOL_FOR_ANOTHER),), cause=K_SIGN),
+                 Meaning(((k, -dy),)), SYMBOL_FOR_ANOTHER),), cause=K_SIGN),
     _printed(f"{FORM} appendix, equation", "Решаемое уравнение a + 2 x11 + b + "
              "acos(Fo(x1)) - tan(acos (Fo(x1))) = 0 z",
              sp.Eq(_root_eq, 0),
@@ -207,7 +210,7 @@ APPENDIX = [
              reconstructed=True,
              compare_to="pointed tip, h_a = 1", conventions=(Convention(
                  "k is the signed change of the tip height, −Δy",
-                 sp.Eq(_root_eq.subs(k, -dy), 0), SYMBOL_FOR_ANOTHER),), cause=K_SIGN),
+                 Meaning(((k, -dy),)), SYMBOL_FOR_ANOTHER),), cause=K_SIGN),
     _value(f"{FORM} appendix, Find(x1) = 0.7", "Find(x1)=0.7", V_xp, "0.7",
            "the appendix's root at z = 10"),
 ]

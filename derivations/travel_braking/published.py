@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import sympy as sp
 
+from crane_sym.readings import Meaning, Scaled
+
 from crane_sym.published import (ASSUMPTION, DEFINITION, OPERATOR_SCOPE, SYMBOL_FOR_ANOTHER, Cause,
                                  Convention, PublishedFormula, printed)
 
@@ -46,7 +48,7 @@ PUBLISHED = [
              "printed with a capital P, while (5), (9), (10), (13), (14) use p",
              conventions=(Convention(
                  "P in (6) is the frequency p of (5); it is not the braking force P_t",
-                 sp.Eq(p, sp.sqrt((m1 + m2) / (m1 * m2) * c)), SYMBOL_FOR_ANOTHER),),
+                 Meaning(((P, p),)), SYMBOL_FOR_ANOTHER),),
              cause=Cause("000-capital-P", "(6) prints the frequency p of (5) as a capital P, "
                          "the letter of no quantity in the paper")),
     _printed("(7)", r"(x_2 - x_1)^* = \left( \frac{P_t}{m_1} - \frac{W}{m_2} \right) "
@@ -57,8 +59,8 @@ PUBLISHED = [
              "the divisor after ÷ is a fraction followed by the factor c",
              conventions=(Convention(
                  "÷ divides by the whole product (m1 + m2)/(m1·m2)·c that follows it",
-                 sp.Eq(x_p, (P_t / m1 - W / m2) / ((m1 + m2) / (m1 * m2) * c)),
-                 OPERATOR_SCOPE),),
+                 # read left to right c multiplies; over the whole product it divides
+                 Scaled(c ** -2), OPERATOR_SCOPE),),
              cause=Cause("000-divide-scope", "(7) writes ÷ before a product; taken left "
                          "to right, c multiplies instead of divides")),
     _printed("(8)", r"\text{или } (x_2 - x_1)^* = \frac{P_t m_2 - W m_1}{c(m_1 + m_2)}, \quad (8)",
