@@ -203,7 +203,7 @@ class Designs:
         """Output name -> (link index, ``peak`` or ``factor``, SI unit)."""
         out = {}
         for i, link in enumerate(self.model.assembly.links):
-            motion = self.model.assembly.bodies[link.part.first].motion
+            motion = self.model.assembly.motion(link)
             for kind in OUTPUTS:
                 unit = UNITS["load"][motion] if kind == "peak" else "1"
                 out[f"{link.part.name}.{kind}"] = (i, kind, unit)

@@ -286,8 +286,7 @@ def derive(assembly: Assembly) -> Equations:
     twists, stretches, contact, flank = [], [], [], []
     for link in assembly.links:
         name = link.part.name
-        (ka, qa), (kb, qb) = (where[e] for e in link.part.ends)
-        u = kb * qb - ka * qa
+        u = assembly.twist(link, coords)
         c, d = _p(f"c_{name}"), sp.Symbol(f"d_{name}", nonnegative=True)
         chi, delta = sp.Integer(1), sp.Integer(0)
         if link.backlash > 0:
@@ -350,11 +349,11 @@ def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], 
     while todo:
         here = todo.pop(0)
         for link in assembly.links:
-            a, b = link.part.ends
-            for near, far in ((a, b), (b, a)):
-                if place[near][0] == here and place[far][0] not in rho:
-                    rho[place[far][0]] = rho[here] * where[near][0] / where[far][0]
-                    todo.append(place[far][0])
+            ends = assembly.ends(link)
+            for near, far in (ends, ends[::-1]):
+                if near.group == here and far.group is not None and far.group not in rho:
+                    rho[far.group] = rho[here] * near.factor / far.factor
+                    todo.append(far.group)
     J = sp.Integer(0)
     for g, group in enumerate(assembly.groups):
         for (member, _), kappa in zip(group.members, group.factors):

@@ -130,9 +130,8 @@ class ComponentSystem:
         of its rate)."""
         if link.part.name not in self._twists:
             w = np.zeros(self.size)
-            (ga, ka, _), (gb, kb, _) = (self.assembly.place[e] for e in link.part.ends)
-            w[self.q(ga)] -= ka
-            w[self.q(gb)] += kb
+            for g, weight in self.assembly.weights(link):
+                w[self.q(g)] += weight
             self._twists[link.part.name] = w
         return self._twists[link.part.name].copy()
 

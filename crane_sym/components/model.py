@@ -96,7 +96,7 @@ class ComponentRun:
             when, peak = _largest(self.result, self.system, affine)
             static, reference = start_load(self.system, self.mode, self.x0, i,
                                            displaced=bool(self.model.initial))
-            motion = self.system.assembly.bodies[link.part.first].motion
+            motion = self.system.assembly.motion(link)
             out.append(LinkPeak(link.part.name, when, peak,
                                 "N*m" if motion == ROTATING else "N", static, reference,
                                 link.part.positive))
@@ -225,11 +225,15 @@ class Model:
         while changed:
             changed = False
             for link in a.links:
-                (ga, ka, _), (gb, kb, _) = (a.place[e] for e in link.part.ends)
-                if rates[ga] is not None and rates[gb] is None:
-                    rates[gb], changed = rates[ga] * ka / kb, True
-                elif rates[gb] is not None and rates[ga] is None:
-                    rates[ga], changed = rates[gb] * kb / ka, True
+                for near, far in (ends := a.ends(link), ends[::-1]):
+                    here = 0.0 if near.group is None else rates[near.group]
+                    if here is not None and far.group is not None and rates[far.group] is None:
+                        rates[far.group], changed = here * near.kappa / far.kappa, True
+        for link in a.links:
+            if sum(w * rates[g] for g, w in a.weights(link)) != 0:
+                raise ComponentError(f"start: {link.part.label} holds a body to the ground, "
+                                     f"which cannot move at the steady speed {v:g} of "
+                                     f"{a.bodies[body].label}; start at speed 0")
         steady = self.steady_motor
         probe = ComponentSystem(self.equations, {steady: 0.0} if steady is not None else {})
         unit = ComponentSystem(self.equations, {steady: 1.0}) if steady is not None else None
@@ -300,12 +304,14 @@ class Model:
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
-        """Positions (the first group's at 0) and the steady motor's torque that
-        make K q = f − D q̇ (but on a group a speed law moves: its motor gives what
-        the balance takes); ComponentError if no motor torque balances the loads."""
+        """Positions (the first group's at 0, unless a link holds the drive to
+        the ground) and the steady motor's torque that make K q = f − D q̇ (but on
+        a group a speed law moves: its motor gives what the balance takes);
+        ComponentError if no motor torque balances the loads."""
         _, D, K, f0 = probe._linear(contacts, driven)[:4]
         f = f0 - D @ rates
-        columns = [K[:, 1:]]
+        pinned = 0 if self.assembly.grounded else 1
+        columns = [K[:, pinned:]]
         if unit is not None:
             columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
         matrix = np.hstack(columns)
@@ -321,7 +327,7 @@ class Model:
             raise ComponentError("the drive is not in a steady state at the start: its "
                                  "constant loads do not balance; give one motor the torque "
                                  "'steady'")
-        positions = np.concatenate([[0.0], z[:K.shape[1] - 1]])
+        positions = np.concatenate([[0.0] * pinned, z[:K.shape[1] - pinned]])
         torque = float(z[-1]) if unit is not None else 0.0
         return positions, torque
 

@@ -96,9 +96,8 @@ def frequencies(assembly: Assembly) -> np.ndarray:
     K, M = np.zeros((n, n)), np.diag([g.inertia for g in assembly.groups])
     for link in assembly.links:
         b = np.zeros(n)
-        (ga, ka), (gb, kb) = (assembly.place[e][:2] for e in link.part.ends)
-        b[ga] -= ka
-        b[gb] += kb
+        for g, weight in assembly.weights(link):
+            b[g] += weight
         K += link.stiffness * np.outer(b, b)
     if not assembly.links:
         return np.zeros(0)

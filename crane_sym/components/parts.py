@@ -29,8 +29,8 @@ from sympy.physics.units import Dimension, force, length, mass, time
 
 from crane_sym import units
 
-__all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "ElasticLink", "Gear",
-           "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "UNITS", "VALUE_KINDS",
+__all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "ElasticLink", "GROUND",
+           "Gear", "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "UNITS", "VALUE_KINDS",
            "Value", "value"]
 
 ROTATING, TRANSLATING = "rotating", "translating"
@@ -127,6 +127,19 @@ def _name(kind: str, name: object) -> str:
     return name
 
 
+#: The fixed end a link may name in ``between``: the ground or the structure,
+#: its coordinate ≡ 0; no body may take the name.
+GROUND = "ground"
+
+
+def _body_name(kind: str, name: object) -> str:
+    name = _name(kind, name)
+    if name == GROUND:
+        raise ComponentError(f"{kind} name {GROUND!r} is reserved for the fixed end a link "
+                             "may name in 'between'; call the body something else")
+    return name
+
+
 def _at_least(owner: str, what: str, v: Value, low: float, strict: bool) -> None:
     if (v.si <= low) if strict else (v.si < low):
         raise ComponentError(f"{owner}: {what} must be {'>' if strict else '>='} {low:g}, "
@@ -171,7 +184,7 @@ def Inertia(name: str, inertia: Given) -> Body:
         Its moment of inertia, text with a unit or kg·m²; zero for a shaft
         end joined rigidly to bodies that have inertia.
     """
-    name = _name("inertia", name)
+    name = _body_name("inertia", name)
     v = value(f"inertia {name!r}", "inertia", inertia, DIMENSIONS["inertia"][ROTATING])
     _at_least(f"inertia {name!r}", "inertia", v, 0.0, False)
     return Body(name, v.si, ROTATING)
@@ -187,7 +200,7 @@ def Mass(name: str, mass_: Given) -> Body:
     mass_ : str or float
         Its mass, text with a unit or kg.
     """
-    name = _name("mass", name)
+    name = _body_name("mass", name)
     v = value(f"mass {name!r}", "mass", mass_, DIMENSIONS["mass"][TRANSLATING])
     _at_least(f"mass {name!r}", "mass", v, 0.0, False)
     return Body(name, v.si, TRANSLATING)
