@@ -18,6 +18,7 @@ from crane_sym.cli.main import main
 EXAMPLES = Path(__file__).parents[1] / "examples" / "drive_trains"
 TRAVEL, HOIST = "travel_braking_000.toml", "hoist_rope_stretch.toml"
 FIG9 = "hoist_fig9.toml"
+SLACK = "slack_rope.toml"
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
 PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
@@ -78,6 +79,15 @@ ROWS = {
                                    + "\n\n[run]",
                                    r"(\S+/)?x\.toml: not valid TOML: arrays or tables nested too "
                                    r"deep \(the reader's limit is below \d+\)"),
+    "slack -0.2 m": Fault(SLACK, 'slack = "0.2 m"', 'slack = "-0.2 m"',
+                          r"elastic link 'rope': slack must be >= 0, got '-0\.2 m'"),
+    "slack 3 deg": Fault(SLACK, 'slack = "0.2 m"', 'slack = "3 deg"',
+                         r"component model 'slack_rope': elastic link 'rope': slack '3 deg' is "
+                         r"dimensionless, expected length \(e\.g\. m\)"),
+    "slack and backlash": Fault(SLACK, 'slack = "0.2 m"', 'slack = "0.2 m"\nbacklash = "1 mm"',
+                                r"component model 'slack_rope': \[\[elastic\]\] 'rope': slack "
+                                r"'0\.2 m' makes a rope that only pulls; it takes no backlash "
+                                r"\(got backlash = '1 mm'\)"),
     # the model's bounds (crane_sym.components.model_limits), before it is derived
     "duration 1e5 s": Fault(TRAVEL, 'duration = "1.5 s"', 'duration = "1e5 s"',
                             r"component model 'travel_braking_000': "

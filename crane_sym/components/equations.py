@@ -197,8 +197,8 @@ class Equations:
         """
         values = parameter_values(assembly)
         if list(values) != list(self.values) or \
-                [l.backlash > 0 for l in assembly.links] != \
-                [l.backlash > 0 for l in self.assembly.links]:
+                [l.gapped for l in assembly.links] != \
+                [l.gapped for l in self.assembly.links]:
             raise ValueError("for_design: the design's parts differ from the model's in "
                              "more than their values")
         design = replace(self, assembly=assembly, values=values, shared=True)
@@ -287,9 +287,11 @@ def derive(assembly: Assembly) -> Equations:
     for link in assembly.links:
         name = link.part.name
         u = assembly.twist(link, coords)
-        c, d = _p(f"c_{name}"), sp.Symbol(f"d_{name}", nonnegative=True)
+        spring = kinds.of(link.part).stiffness
+        c = _p(f"c_{name}") if spring is None else spring(link.part)
+        d = sp.Symbol(f"d_{name}", nonnegative=True)
         chi, delta = sp.Integer(1), sp.Integer(0)
-        if link.backlash > 0:
+        if link.gapped:
             chi, delta = _r(f"chi_{name}"), _r(f"delta_{name}")
             contact.append(chi)
             flank.append(delta)

@@ -32,7 +32,7 @@ import numpy as np
 from crane_sym.components.equations import Equations
 from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
-from crane_sym.components.parts import ComponentError
+from crane_sym.components.parts import ComponentError, ElasticLink
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["ComponentSystem", "Mode"]
@@ -52,6 +52,16 @@ class Mode:
     ramping: tuple[bool, ...]
     steps: tuple[int, ...] = ()
     pieces: tuple[int, ...] = ()
+
+
+def _contact_events(part: ElasticLink) -> dict[str, str]:
+    """The names of a gapped link's contact events by kind: a backlash link
+    ``opens`` and ``closes +``/``-``; a slack rope ``snaps taut`` and ``goes
+    slack`` (it has no lower flank)."""
+    if part.slack is not None:
+        return {"open": f"{part.name} goes slack", "close+": f"{part.name} snaps taut"}
+    return {"open": f"{part.name} opens", "close+": f"{part.name} closes +",
+            "close-": f"{part.name} closes -"}
 
 
 def _memo(func: Callable) -> Callable:
@@ -80,7 +90,7 @@ class ComponentSystem:
         self.extra = dict(extra or {})
         self._numeric = equations.numeric(self.extra)
         self.n = len(a.groups)
-        self.backlash = [l for l in a.links if l.backlash > 0]
+        self.backlash = [l for l in a.links if l.gapped]
         self.brakes = [l for l in a.loads if isinstance(l.part, Brake)]
         self.motors = [l for l in a.loads if isinstance(l.part, Motor)]
         self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
@@ -95,9 +105,8 @@ class ComponentSystem:
         self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
         self.events: dict[str, tuple[str, int]] = {}
         for j, l in enumerate(self.backlash):
-            for suffix, kind in ((" opens", "open"), (" closes +", "close+"),
-                                 (" closes -", "close-")):
-                self.events[l.part.name + suffix] = (kind, j)
+            for kind, name in _contact_events(l.part).items():
+                self.events[name] = (kind, j)
         for g, group in enumerate(a.groups):
             for suffix, kind in ((" rests", "rest"), (" slips +", "slip+"),
                                  (" slips -", "slip-")):
@@ -241,13 +250,15 @@ class ComponentSystem:
         for l, c in zip(self.backlash, mode.contacts):
             u = tuple(self.twist(l))
             lo, hi = l.part.flanks
-            name = l.part.name
+            name = _contact_events(l.part)
             if c > 0:
-                out.append(Guard(f"{name} opens", u, -hi, -1))
+                out.append(Guard(name["open"], u, -hi, -1))
             elif c < 0:
-                out.append(Guard(f"{name} opens", u, -lo, 1))
+                out.append(Guard(name["open"], u, -lo, 1))
             else:
-                out += [Guard(f"{name} closes +", u, -hi, 1), Guard(f"{name} closes -", u, -lo, -1)]
+                out.append(Guard(name["close+"], u, -hi, 1))
+                if np.isfinite(lo):                 # a slack link has no lower flank
+                    out.append(Guard(name["close-"], u, -lo, -1))
         for g, state in enumerate(mode.motion):
             name = self.assembly.groups[g].name
             if state in (FORWARD, BACKWARD):

@@ -64,6 +64,7 @@ class LinkPeak:
     static: float
     reference: float | None
     positive: str | None = None       # what a positive load is: "tension", "compression"
+    angle: bool = False               # its factor is a sway angle in rad (a pendulum's)
 
     @property
     def factor(self) -> float | None:
@@ -99,7 +100,7 @@ class ComponentRun:
             motion = self.system.assembly.motion(link)
             out.append(LinkPeak(link.part.name, when, peak,
                                 "N*m" if motion == ROTATING else "N", static, reference,
-                                link.part.positive))
+                                link.part.positive, link.part.reports_angle))
         return out
 
     def hybrid_run(self, link: str) -> HybridRun:
@@ -248,6 +249,10 @@ class Model:
             for link, c in zip(probe.backlash, contacts):
                 u = float(probe.twist(link) @ x)
                 lo, hi = link.part.flanks
+                if c > 0 and u < hi and not np.isfinite(lo):
+                    raise ComponentError(f"start: {link.part.label} is slack in the steady "
+                                         f"state (twist {u:.6g} below its slack {hi:g}); "
+                                         "start = \"rest\"")
                 turned.append(c if (u >= hi if c > 0 else u <= lo) else -c)
             if tuple(turned) == contacts:
                 break

@@ -76,7 +76,7 @@ def check_counts(parts: Sequence[Component], where: str) -> None:
         n = sum(p.kind in kinds for p in parts)
         if n > bound:
             raise ComponentError(f"{where}: {n} {what}, at most {bound}")
-    gaps = sum(p.kind == "elastic link" and p.backlash.si != 0 for p in parts)
+    gaps = sum(p.kind == "elastic link" and p.gapped for p in parts)
     if gaps > MAX_GAPS:
         raise ComponentError(f"{where}: {gaps} elastic links with backlash, at most {MAX_GAPS}")
 

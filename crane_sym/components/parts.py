@@ -286,7 +286,10 @@ class ElasticLink(Component):
     (default: the link's load at the start). ``positive`` (``"tension"`` or
     ``"compression"``, a translating link only) says what a positive F is,
     so that a report states the load in words: a rope listed from its upper
-    end down, with x downwards, is in tension when F > 0.
+    end down, with x downwards, is in tension when F > 0. ``slack`` h (≥ 0,
+    instead of a backlash) makes it a rope that only pulls: F = c·(u − h) +
+    d·u̇ while u ≥ h (taut), 0 below (slack), never a push; it snaps taut where
+    u reaches h and goes slack where u falls back to h.
     """
 
     name: str
@@ -298,11 +301,16 @@ class ElasticLink(Component):
     contact: str = "positive"
     reference: Value | None = None
     positive: str | None = None
+    slack: Value | None = None
     kind = "elastic link"
+    #: Whether its dynamic factor is an angle in rad that a run reports (a
+    #: pendulum's: its pull m g θ over the load's weight m g).
+    reports_angle = False
 
     def __init__(self, name: str, first: str, second: str, stiffness: Given,
                  damping: Given = 0.0, backlash: Given = 0.0, contact: str = "positive",
-                 reference: Given | None = None, positive: str | None = None) -> None:
+                 reference: Given | None = None, positive: str | None = None,
+                 slack: Given | None = None) -> None:
         name = _name("elastic link", name)
         owner = f"elastic link {name!r}"
         c, d = value(owner, "stiffness", stiffness), value(owner, "damping", damping)
@@ -316,21 +324,47 @@ class ElasticLink(Component):
         if positive not in (None, *SENSES):
             raise ComponentError(f"{owner}: positive must be 'tension' or 'compression', "
                                  f"got {positive!r}")
+        h = None if slack is None else value(owner, "slack", slack)
+        if h is not None:
+            _at_least(owner, "slack", h, 0.0, False)
+            if s.si != 0:
+                raise ComponentError(f"{owner}: a slack link has no backlash (its gap is "
+                                     f"below the slack), got backlash {s.text!r}")
         ref = None if reference is None else value(owner, "reference", reference)
         if ref is not None and ref.si == 0:
             raise ComponentError(f"{owner}: reference must not be 0")
         for key, v in (("name", name), ("first", first), ("second", second),
                        ("stiffness", c), ("damping", d), ("backlash", s),
-                       ("contact", contact), ("reference", ref), ("positive", positive)):
+                       ("contact", contact), ("reference", ref), ("positive", positive),
+                       ("slack", h)):
             object.__setattr__(self, key, v)
 
     @property
     def ends(self) -> tuple[str, str]:
         return self.first, self.second
 
+    def assembled(self, bodies: dict[str, Body]) -> tuple[Value, Value | None]:
+        """Its stiffness and reference load, given the bodies it joins (as
+        written; a pendulum's follow from its load's mass)."""
+        return self.stiffness, self.reference
+
+    @property
+    def gapped(self) -> bool:
+        """Whether the link has a gap: a backlash, or a slack (one-sided) link."""
+        return self.backlash.si > 0 or self.slack is not None
+
+    @property
+    def contacts(self) -> tuple[str, ...]:
+        """Its contacts in words, from the upper flank down."""
+        return ("taut", "slack") if self.slack is not None else \
+            ("upper flank", "gap", "lower flank")
+
     @property
     def flanks(self) -> tuple[float, float]:
-        """(lower, upper) ends of the gap in the twist u."""
+        """(lower, upper) ends of the gap in the twist u; a slack link's gap
+        runs from −∞ to its slack (it pulls only, once u passes the slack)."""
+        if self.slack is not None:
+            return -math.inf, self.slack.si
         s = self.backlash.si
         return (-s, 0.0) if self.contact == "positive" else (0.0, s)
 

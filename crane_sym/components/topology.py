@@ -69,6 +69,12 @@ class Link:
     backlash: float
     reference: float | None
 
+    @property
+    def gapped(self) -> bool:
+        """Whether it has a gap (a backlash, or a slack link's): its contact
+        switches."""
+        return self.part.gapped
+
 
 @dataclass(frozen=True)
 class Load:
@@ -331,9 +337,12 @@ def _link(part: ElasticLink, bodies: dict[str, Body],
                              "which gears and drums already join rigidly: it could never twist")
     motion = bodies[b if a == GROUND else a].motion
     check = lambda what, v: v.check(part.label, what, DIMENSIONS[what][motion])  # noqa: E731
-    reference = (None if part.reference is None else
-                 part.reference.check(part.label, "reference", DIMENSIONS["load"][motion]))
-    return Link(part, check("stiffness", part.stiffness), check("damping", part.damping),
+    stiffness, given = part.assembled(bodies)
+    reference = (None if given is None else
+                 given.check(part.label, "reference", DIMENSIONS["load"][motion]))
+    if part.slack is not None:
+        part.slack.check(part.label, "slack", DIMENSIONS["backlash"][motion])  # m, or rad
+    return Link(part, check("stiffness", stiffness), check("damping", part.damping),
                 check("backlash", part.backlash), reference)
 
 

@@ -183,6 +183,9 @@ class Kind:
     acts: Acts | None = None
     #: The values that switch the model rather than enter its equations.
     switching: Switching | None = None
+    #: A link's stiffness in the parts' symbols, given the part (None: its
+    #: own ``c_<name>``; a pendulum's m g/L).
+    stiffness: Callable[[Component], sp.Expr] | None = None
 
     @property
     def part_kind(self) -> str:
