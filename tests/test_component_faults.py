@@ -19,6 +19,7 @@ EXAMPLES = Path(__file__).parents[1] / "examples" / "drive_trains"
 TRAVEL, HOIST = "travel_braking_000.toml", "hoist_rope_stretch.toml"
 FIG9 = "hoist_fig9.toml"
 SLACK = "slack_rope.toml"
+SWAY = "trolley_sway.toml"
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
 PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
@@ -88,6 +89,19 @@ ROWS = {
                                 r"component model 'slack_rope': \[\[elastic\]\] 'rope': slack "
                                 r"'0\.2 m' makes a rope that only pulls; it takes no backlash "
                                 r"\(got backlash = '1 mm'\)"),
+    "pendulum length -10 m": Fault(SWAY, 'length = "10 m"', 'length = "-10 m"',
+                                   r"pendulum 'sway': length must be > 0, got '-10 m'"),
+    "pendulum length 10 s": Fault(SWAY, 'length = "10 m"', 'length = "10 s"',
+                                  r"pendulum 'sway': length '10 s' is time, expected length "
+                                  r"\(e\.g\. m\)"),
+    "pendulum from the ground up": Fault(SWAY, 'between = ["trolley", "load"]',
+                                         'between = ["trolley", "ground"]',
+                                         r"pendulum 'sway': the load hangs at the second end "
+                                         r"of between; it cannot be the ground"),
+    "pendulum stiffness": Fault(SWAY, 'length = "10 m"', 'length = "10 m"\nstiffness = "1 N/m"',
+                                r"component model 'trolley_sway': \[\[pendulum\]\] 'sway': "
+                                r"unknown key 'stiffness'; expected name, between, length, g, "
+                                r"damping"),
     # the model's bounds (crane_sym.components.model_limits), before it is derived
     "duration 1e5 s": Fault(TRAVEL, 'duration = "1.5 s"', 'duration = "1e5 s"',
                             r"component model 'travel_braking_000': "
