@@ -20,6 +20,7 @@ TRAVEL, HOIST = "travel_braking_000.toml", "hoist_rope_stretch.toml"
 FIG9 = "hoist_fig9.toml"
 SLACK = "slack_rope.toml"
 SWAY = "trolley_sway.toml"
+JIB = "jib_reeve_failure.toml"
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
 PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
@@ -102,6 +103,16 @@ ROWS = {
                                 r"component model 'trolley_sway': \[\[pendulum\]\] 'sway': "
                                 r"unknown key 'stiffness'; expected name, between, length, g, "
                                 r"damping"),
+    "fails_at -1 s": Fault(JIB, 'fails_at = "0.5 s"', 'fails_at = "-1 s"',
+                           r"elastic link 'reeve_b': fails_at must be > 0, got '-1 s'"),
+    "fails_at 0.5 m": Fault(JIB, 'fails_at = "0.5 s"', 'fails_at = "0.5 m"',
+                            r"elastic link 'reeve_b': fails_at '0\.5 m' is length, expected "
+                            r"time \(e\.g\. s\)"),
+    "brake fails before it engages": Fault(FIG9, 'delay = "0.4 s"',
+                                           'delay = "0.4 s"\nfails_at = "0.2 s"',
+                                           r"brake 'service_brakes': fails_at must be > its "
+                                           r"delay 0\.4 s \(it releases once engaged\), got "
+                                           r"'0\.2 s'"),
     # the model's bounds (crane_sym.components.model_limits), before it is derived
     "duration 1e5 s": Fault(TRAVEL, 'duration = "1.5 s"', 'duration = "1e5 s"',
                             r"component model 'travel_braking_000': "

@@ -12,7 +12,7 @@ import pytest
 
 from crane_sym.cli.main import main
 from crane_sym.components.reading import read_component_file
-from component_sweeps import swept
+from component_commands import swept, walkthrough
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "slack_rope.toml"
 M, C, H, G = 2000.0, 2e6, 0.2, 9.81           # kg, N/m, m, m/s^2 (the example's)
@@ -93,9 +93,7 @@ def test_the_example_audits_its_shock_formula(capsys):
 
 
 def test_the_walkthrough_names_the_slack_and_the_contacts(tmp_path):
-    page = tmp_path / "page.md"
-    assert main(["walkthrough", str(EXAMPLE), "-o", str(page), "-q"]) == 0
-    text = page.read_text(encoding="utf-8")
+    text = walkthrough(EXAMPLE, tmp_path)
     assert "slack = 0.2 m" in text
     assert "rope: taut, slack" in text
     assert "rope snaps taut" in text and "rope goes slack" in text

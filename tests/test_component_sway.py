@@ -13,7 +13,7 @@ import pytest
 
 from crane_sym.cli.main import main
 from crane_sym.components.reading import read_component_file
-from component_sweeps import swept
+from component_commands import swept, walkthrough
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "trolley_sway.toml"
 V, L, G, M = 1.0, 10.0, 9.81, 10e3             # m/s, m, m/s^2, kg (the example's)
@@ -141,9 +141,7 @@ def test_the_run_reports_the_angle_and_the_audit_confirms_the_residual(tmp_path,
 
 
 def test_the_walkthrough_derives_the_pendulums_energy(tmp_path):
-    page = tmp_path / "page.md"
-    assert main(["walkthrough", str(EXAMPLE), "-o", str(page), "-q"]) == 0
-    text = page.read_text(encoding="utf-8")
+    text = walkthrough(EXAMPLE, tmp_path)
     assert "| sway | pendulum | trolley – load | length = 10 m; g = 9.81 m/s^2 |" in text
     assert (r"\Pi = \frac{g_{\mathrm{sway}} m_{\mathrm{load}} \left(x_{\mathrm{load}} - "
             r"x_{\mathrm{trolley}}\right)^{2}}{2 L_{\mathrm{sway}}}") in text

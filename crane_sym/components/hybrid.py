@@ -52,6 +52,8 @@ class Mode:
     ramping: tuple[bool, ...]
     steps: tuple[int, ...] = ()
     pieces: tuple[int, ...] = ()
+    #: The gapped links cut for good (their places in ``contacts``; contact 0).
+    cut: tuple[int, ...] = ()
 
 
 def _contact_events(part: ElasticLink) -> dict[str, str]:
@@ -107,6 +109,7 @@ class ComponentSystem:
         for j, l in enumerate(self.backlash):
             for kind, name in _contact_events(l.part).items():
                 self.events[name] = (kind, j)
+            self.events[f"{l.part.name} breaks"] = ("break", j)
         for g, group in enumerate(a.groups):
             for suffix, kind in ((" rests", "rest"), (" slips +", "slip+"),
                                  (" slips -", "slip-")):
@@ -114,6 +117,7 @@ class ComponentSystem:
         for k, b in enumerate(self.brakes):
             self.events[f"{b.part.name} engages"] = ("engage", k)
             self.events[f"{b.part.name} ramp done"] = ("ramped", k)
+            self.events[f"{b.part.name} releases"] = ("release", k)
         for m, motor in enumerate(self.motors):
             self.events[f"{motor.part.name} off"] = ("off", m)
         for m, law in enumerate(self.characteristics):
@@ -247,7 +251,9 @@ class ComponentSystem:
 
     def _guards_uncached(self, mode: Mode) -> tuple[Guard, ...]:
         out = []
-        for l, c in zip(self.backlash, mode.contacts):
+        for j, (l, c) in enumerate(zip(self.backlash, mode.contacts)):
+            if j in mode.cut or not l.part.opens:      # cut, or a gap of width 0
+                continue
             u = tuple(self.twist(l))
             lo, hi = l.part.flanks
             name = _contact_events(l.part)
@@ -276,10 +282,11 @@ class ComponentSystem:
         """The next mode and state after a guard or a scheduled event."""
         kind, i = self.events[event]
         x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
-        if kind in ("open", "close+", "close-"):
+        if kind in ("open", "close+", "close-", "break"):
             contacts = list(mode.contacts)
-            contacts[i] = {"open": 0, "close+": 1, "close-": -1}[kind]
-            return replace(mode, contacts=tuple(contacts)), x
+            contacts[i] = {"open": 0, "close+": 1, "close-": -1, "break": 0}[kind]
+            cut = tuple(sorted({*mode.cut, i})) if kind == "break" else mode.cut
+            return replace(mode, contacts=tuple(contacts), cut=cut), x
         if kind == "step":
             steps = list(mode.steps)
             steps[i] += 1
@@ -302,6 +309,8 @@ class ComponentSystem:
             x[self.beta[i]] = 1.0
             return replace(mode, ramping=tuple(ramping)), x
         motion, g = list(mode.motion), i
+        if kind == "release":
+            return self._release(mode, i, x), x
         if kind == "engage":
             engaged, ramping = list(mode.engaged), list(mode.ramping)
             engaged[i] = True
@@ -326,6 +335,21 @@ class ComponentSystem:
             net, cap = float(wn @ x + kn), float(wc @ x + kc)
             motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
         return replace(mode, motion=tuple(motion)), x
+
+    def _release(self, mode: Mode, i: int, x: np.ndarray) -> Mode:
+        """Brake i released for good: its group free if no other brake is
+        engaged on it, else held only while the rest still hold its load."""
+        engaged, ramping = list(mode.engaged), list(mode.ramping)
+        engaged[i] = ramping[i] = False
+        mode = replace(mode, engaged=tuple(engaged), ramping=tuple(ramping))
+        g, motion = self.brake_group[i], list(mode.motion)
+        if not any(on and self.brake_group[k] == g for k, on in enumerate(engaged)):
+            motion[g] = FREE
+        elif motion[g] == HELD:
+            (wn, kn), (wc, kc) = self.net_load(mode, g), self.capacity(mode, g)
+            net, cap = float(wn @ x + kn), float(wc @ x + kc)
+            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
+        return replace(mode, motion=tuple(motion))
 
     # --- outputs ------------------------------------------------------------------
     def link_load(self, index: int):

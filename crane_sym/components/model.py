@@ -357,18 +357,23 @@ class Model:
 
     def schedule(self) -> tuple[tuple[float, str], ...]:
         """The events known in advance: brakes engaging and their ramps ending,
-        motors switched off, characteristics' steps and motor laws' pieces."""
+        brakes released and links cut (``fails_at``), motors switched off,
+        characteristics' steps and motor laws' pieces."""
         out = []
         for load in self.assembly.loads:
             part = load.part
             if isinstance(part, Brake):
                 out.append((part.delay, f"{part.name} engages"))
+                if part.fails_at is not None:
+                    out.append((part.fails_at, f"{part.name} releases"))
                 if part.build_up == "ramp":
                     out.append((part.delay + part.time, f"{part.name} ramp done"))
             elif isinstance(part, Motor) and part.off_at is not None:
                 out.append((part.off_at, f"{part.name} off"))
             elif isinstance(part, Characteristic):
                 out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
+        out += [(l.part.fails_at, f"{l.part.name} breaks") for l in self.assembly.links
+                if l.part.fails_at is not None]
         out += LawClock([l.part for l in self.assembly.loads if isinstance(l.part, MotorLaw)],
                         0).schedule()
         return tuple(sorted(out))

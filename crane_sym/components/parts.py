@@ -286,7 +286,8 @@ class ElasticLink(Component):
     (default: the link's load at the start). ``positive`` (``"tension"`` or
     ``"compression"``, a translating link only) says what a positive F is,
     so that a report states the load in words: a rope listed from its upper
-    end down, with x downwards, is in tension when F > 0. ``slack`` h (≥ 0,
+    end down, with x downwards, is in tension when F > 0. ``fails_at`` (s)
+    cuts it at that instant (a reeve breaks): F = 0 from then on. ``slack`` h (≥ 0,
     instead of a backlash) makes it a rope that only pulls: F = c·(u − h) +
     d·u̇ while u ≥ h (taut), 0 below (slack), never a push; it snaps taut where
     u reaches h and goes slack where u falls back to h.
@@ -302,6 +303,7 @@ class ElasticLink(Component):
     reference: Value | None = None
     positive: str | None = None
     slack: Value | None = None
+    fails_at: float | None = None
     kind = "elastic link"
     #: Whether its dynamic factor is an angle in rad that a run reports (a
     #: pendulum's: its pull m g θ over the load's weight m g).
@@ -310,7 +312,7 @@ class ElasticLink(Component):
     def __init__(self, name: str, first: str, second: str, stiffness: Given,
                  damping: Given = 0.0, backlash: Given = 0.0, contact: str = "positive",
                  reference: Given | None = None, positive: str | None = None,
-                 slack: Given | None = None) -> None:
+                 slack: Given | None = None, fails_at: Given | None = None) -> None:
         name = _name("elastic link", name)
         owner = f"elastic link {name!r}"
         c, d = value(owner, "stiffness", stiffness), value(owner, "damping", damping)
@@ -330,13 +332,16 @@ class ElasticLink(Component):
             if s.si != 0:
                 raise ComponentError(f"{owner}: a slack link has no backlash (its gap is "
                                      f"below the slack), got backlash {s.text!r}")
+        broken = None if fails_at is None else value(owner, "fails_at", fails_at, time)
+        if broken is not None:
+            _at_least(owner, "fails_at", broken, 0.0, True)
         ref = None if reference is None else value(owner, "reference", reference)
         if ref is not None and ref.si == 0:
             raise ComponentError(f"{owner}: reference must not be 0")
         for key, v in (("name", name), ("first", first), ("second", second),
                        ("stiffness", c), ("damping", d), ("backlash", s),
                        ("contact", contact), ("reference", ref), ("positive", positive),
-                       ("slack", h)):
+                       ("slack", h), ("fails_at", None if broken is None else broken.si)):
             object.__setattr__(self, key, v)
 
     @property
@@ -350,14 +355,24 @@ class ElasticLink(Component):
 
     @property
     def gapped(self) -> bool:
-        """Whether the link has a gap: a backlash, or a slack (one-sided) link."""
-        return self.backlash.si > 0 or self.slack is not None
+        """Whether its contact switches: a backlash, a slack (one-sided) link,
+        or a link that fails (cut at ``fails_at``: its contact 0 from then on)."""
+        return self.backlash.si > 0 or self.slack is not None or self.fails_at is not None
+
+    @property
+    def opens(self) -> bool:
+        """Whether it opens and closes as it twists (a backlash or a slack; a
+        link that only fails has a gap of width 0 and never opens)."""
+        lo, hi = self.flanks
+        return lo < hi
 
     @property
     def contacts(self) -> tuple[str, ...]:
-        """Its contacts in words, from the upper flank down."""
-        return ("taut", "slack") if self.slack is not None else \
-            ("upper flank", "gap", "lower flank")
+        """Its contacts in words, from the upper flank down (then ``cut``,
+        where it fails)."""
+        words = (("taut", "slack") if self.slack is not None else
+                 ("upper flank", "gap", "lower flank") if self.opens else ("intact",))
+        return words + (("cut",) if self.fails_at is not None else ())
 
     @property
     def flanks(self) -> tuple[float, float]:

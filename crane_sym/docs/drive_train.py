@@ -180,8 +180,10 @@ def describe_mode(system: ComponentSystem, mode: Mode) -> str:
     """A mode in words: the gaps, the brakes, the groups held or sliding, the motors."""
     a = system.assembly
     words = []
-    for link, c in zip(system.backlash, mode.contacts):
-        if link.part.slack is not None:
+    for j, (link, c) in enumerate(zip(system.backlash, mode.contacts)):
+        if j in mode.cut or not link.part.opens:
+            words.append(f"{link.part.name} " + ("cut" if j in mode.cut else "intact"))
+        elif link.part.slack is not None:
             words.append(f"{link.part.name} " + ("taut" if c > 0 else "slack"))
         else:
             words.append(f"{link.part.name} " + ("on its upper flank" if c > 0 else

@@ -1,5 +1,5 @@
-"""A component file's sweep through the command line, its stored grid read
-back: what the tests of a new kind compare with a closed form."""
+"""A component file through the command line, as the tests of a new kind use
+it: its sweep, the stored grid read back, and its walkthrough's text."""
 from __future__ import annotations
 
 import json
@@ -23,3 +23,10 @@ def swept(path: Path, axis: str, output: str, out: Path, capsys) -> tuple[dict, 
     data = json.loads(text)
     stored = xr.open_zarr(data["dataset"]).load()
     return data, stored[axis.split("=")[0]].values, stored[output].values
+
+
+def walkthrough(path: Path, out: Path) -> str:
+    """``crane-sym walkthrough path -o out/page.md``: the page's text."""
+    page = out / "page.md"
+    assert main(["walkthrough", str(path), "-o", str(page), "-q"]) == 0
+    return page.read_text(encoding="utf-8")
