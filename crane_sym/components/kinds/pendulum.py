@@ -23,6 +23,8 @@ load swinging from a fixed point).
 """
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import sympy as sp
 from sympy.physics.units import force, length, time
 
@@ -31,14 +33,15 @@ from crane_sym.components.parts import (GROUND, TRANSLATING, Body, ComponentErro
                                         Value, value)
 
 
+@dataclass(frozen=True, init=False)
 class Pendulum(ElasticLink):
     """A load ``second`` hanging at ``length`` below ``first`` (a trolley, or
     the ground) under gravity ``g``: an elastic link of stiffness m g/L."""
 
+    length: float = 0.0
+    g: float = 0.0
     kind = "pendulum"
     reports_angle = True
-    length: float
-    g: float
 
     def __init__(self, name: str, first: str, second: str, length_: str | float,
                  g: str | float = "9.81 m/s^2", damping: str | float = 0.0) -> None:
