@@ -80,6 +80,23 @@ def test_the_remaining_reeve_takes_static_plus_twice_the_jump(tmp_path):
     assert abs(b.value - (m * G - share)) <= 1e-9 * m * G       # its load until it broke
 
 
+def test_a_link_that_only_fails_carries_its_load_from_a_start_at_rest(tmp_path):
+    """From rest at the ropes' unstretched length both reeves pull before the
+    break: the load swings about m g/(ca + cb), reeve b peaks at twice its
+    share, 2 cb m g/(ca + cb), at π/ω, ω² = (ca + cb)/m (the run ends before
+    the break)."""
+    m, ca, cb = 8e3, 2e6, 1e6
+    omega = math.sqrt((ca + cb) / m)
+    path = tmp_path / "two_reeves.toml"
+    path.write_text(TWO_REEVES.format(m=m, ca=ca, cb=cb, t0=10.0, t1=1.5 * math.pi / omega)
+                    + 'start = "rest"\n')
+    b = _peak(_run(path), "reeve_b")
+    expected = 2 * cb * m * G / (ca + cb)
+    print(f"reeve_b {b.value!r} N at {b.time!r} s; twice its share {expected!r} N")
+    assert abs(b.value - expected) <= 1e-9 * expected
+    assert abs(b.time - math.pi / omega) <= 1e-6 / omega
+
+
 def _jib_after_break():
     """The tip and the load after the break, x = (x_tip, x_load) from the
     unloaded ropes: M ẍ + K x = f, from the old balance at rest; modes by

@@ -17,8 +17,9 @@ run from the file's start (N·m, or N between translating bodies), and
 ``L.factor``, that peak over |reference| (the link's given ``reference``,
 else its load at the start): the magnitude of what ``crane-sym run`` prints
 as its dynamic factor; of a pendulum also ``L.angle``, its largest sway angle
-in rad (its factor: its pull over the load's weight). A block of designs is solved together by the batched
-solver (:func:`crane_sym.mechanics.batched_runs.largest_of_runs`: one
+in rad (its factor: its pull over the load's weight). A block of designs is
+solved together by the batched solver
+(:func:`crane_sym.mechanics.batched_runs.largest_of_runs`: one
 :class:`~crane_sym.components.hybrid.ComponentSystem` per design, the closed
 forms, events and extrema batched); :meth:`Designs.per_design` is the same
 numbers one design at a time by ``Model.run``, each model derived from
@@ -60,6 +61,8 @@ OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
                     "the load's weight"}
 #: The unit of each output but the peak (a load, by the link's motion).
 _UNITS = {"factor": "1", "angle": "rad"}
+
+
 @dataclass(frozen=True)
 class Field:
     """A value of one component that a sweep may vary: ``<component>.<key>``,

@@ -206,7 +206,8 @@ class Model:
         law at its value just before t = 0 (0; an acceleration law's a = 0: its
         motor then holds the drive against the other loads). ``rest``:
         everything at rest at zero twist, every gap open (a link with backlash
-        at the end of its gap where its twist is zero), whatever the loads.
+        at the end of its gap where its twist is zero; a link that only fails,
+        its gap of width 0, on its flank), whatever the loads.
         Then each ``[[initial]]`` state moves its body and sets its speed
         (:func:`~crane_sym.components.initial.apply`).
         """
@@ -290,7 +291,8 @@ class Model:
         probe = ComponentSystem(self.equations)
         engaged = self._at_once()
         motion = [FREE for _ in self.assembly.groups]
-        mode = Mode(tuple(0 for _ in probe.backlash), tuple(motion), engaged,
+        mode = Mode(tuple(0 if l.part.opens else 1 for l in probe.backlash), tuple(motion),
+                    engaged,
                     tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
                     tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws))
         x = np.zeros(probe.size)
