@@ -18,6 +18,9 @@ from crane_sym.cli.main import main
 EXAMPLES = Path(__file__).parents[1] / "examples" / "drive_trains"
 TRAVEL, HOIST = "travel_braking_000.toml", "hoist_rope_stretch.toml"
 FIG9 = "hoist_fig9.toml"
+SLACK = "slack_rope.toml"
+SWAY = "trolley_sway.toml"
+JIB = "jib_reeve_failure.toml"
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
 PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
@@ -78,6 +81,38 @@ ROWS = {
                                    + "\n\n[run]",
                                    r"(\S+/)?x\.toml: not valid TOML: arrays or tables nested too "
                                    r"deep \(the reader's limit is below \d+\)"),
+    "slack -0.2 m": Fault(SLACK, 'slack = "0.2 m"', 'slack = "-0.2 m"',
+                          r"elastic link 'rope': slack must be >= 0, got '-0\.2 m'"),
+    "slack 3 deg": Fault(SLACK, 'slack = "0.2 m"', 'slack = "3 deg"',
+                         r"component model 'slack_rope': elastic link 'rope': slack '3 deg' is "
+                         r"dimensionless, expected length \(e\.g\. m\)"),
+    "slack and backlash": Fault(SLACK, 'slack = "0.2 m"', 'slack = "0.2 m"\nbacklash = "1 mm"',
+                                r"component model 'slack_rope': \[\[elastic\]\] 'rope': slack "
+                                r"'0\.2 m' makes a rope that only pulls; it takes no backlash "
+                                r"\(got backlash = '1 mm'\)"),
+    "pendulum length -10 m": Fault(SWAY, 'length = "10 m"', 'length = "-10 m"',
+                                   r"pendulum 'sway': length must be > 0, got '-10 m'"),
+    "pendulum length 10 s": Fault(SWAY, 'length = "10 m"', 'length = "10 s"',
+                                  r"pendulum 'sway': length '10 s' is time, expected length "
+                                  r"\(e\.g\. m\)"),
+    "pendulum from the ground up": Fault(SWAY, 'between = ["trolley", "load"]',
+                                         'between = ["trolley", "ground"]',
+                                         r"pendulum 'sway': the load hangs at the second end "
+                                         r"of between; it cannot be the ground"),
+    "pendulum stiffness": Fault(SWAY, 'length = "10 m"', 'length = "10 m"\nstiffness = "1 N/m"',
+                                r"component model 'trolley_sway': \[\[pendulum\]\] 'sway': "
+                                r"unknown key 'stiffness'; expected name, between, length, g, "
+                                r"damping"),
+    "fails_at -1 s": Fault(JIB, 'fails_at = "0.5 s"', 'fails_at = "-1 s"',
+                           r"elastic link 'reeve_b': fails_at must be > 0, got '-1 s'"),
+    "fails_at 0.5 m": Fault(JIB, 'fails_at = "0.5 s"', 'fails_at = "0.5 m"',
+                            r"elastic link 'reeve_b': fails_at '0\.5 m' is length, expected "
+                            r"time \(e\.g\. s\)"),
+    "brake fails before it engages": Fault(FIG9, 'delay = "0.4 s"',
+                                           'delay = "0.4 s"\nfails_at = "0.2 s"',
+                                           r"brake 'service_brakes': fails_at must be > its "
+                                           r"delay 0\.4 s \(it releases once engaged\), got "
+                                           r"'0\.2 s'"),
     # the model's bounds (crane_sym.components.model_limits), before it is derived
     "duration 1e5 s": Fault(TRAVEL, 'duration = "1.5 s"', 'duration = "1e5 s"',
                             r"component model 'travel_braking_000': "

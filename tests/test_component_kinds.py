@@ -121,7 +121,7 @@ def test_the_key_tables_come_from_the_declarations():
     assert set(DIMENSIONS) == set(UNITS) == set(VALUE_KINDS)
     assert UNITS["backlash"][ROTATING] == "rad" and DIMENSIONS["inertia"][ROTATING] == mass * length**2
     tables = [k.table for k in kinds.KINDS]
-    assert len(tables) == len(set(tables)) == 12
+    assert len(tables) == len(set(tables)) == 13
     for kind in kinds.KINDS:
         names = [k.name for k in kind.keys]
         assert len(names) == len(set(names)) and names[0] == "name", kind.table
@@ -139,12 +139,14 @@ def test_a_links_load_is_the_one_its_energies_give(path):
     for k, link in enumerate(model.assembly.links):
         name = link.part.name
         c, d = sp.Symbol(f"c_{name}", positive=True), sp.Symbol(f"d_{name}", nonnegative=True)
+        spring = kinds.of(link.part).stiffness          # a pendulum's m g/L
+        c = c if spring is None else spring(link.part)
         chi, delta = ((sp.Symbol(f"chi_{name}", real=True), sp.Symbol(f"delta_{name}", real=True))
-                      if link.backlash > 0 else (1, 0))
+                      if link.gapped else (1, 0))
         u = eq.twists[k]
         assert sp.expand(eq.link_loads[k] - chi * (c * (u - delta) + d * u.diff(eq.t))) == 0
         assert eq.link_coefficients(k) == (link.stiffness, link.damping,
-                                           -link.stiffness if link.backlash > 0 else 0.0)
+                                           -link.stiffness if link.gapped else 0.0)
 
 
 def test_every_declared_symbol_names_a_key_and_every_part_finds_its_kind():

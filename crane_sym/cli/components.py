@@ -62,7 +62,7 @@ def model_text(path: str) -> str:
     lines += [f"  {text}" for text in eq.latex()]
     system = ComponentSystem(eq)
     lines += ["", "modes:"]
-    lines += [f"  {l.part.label}: upper flank, gap, lower flank" for l in system.backlash]
+    lines += [f"  {l.part.label}: {', '.join(l.part.contacts)}" for l in system.backlash]
     lines += [f"  {b.part.label} on {b.part.body}: off, engaged" for b in system.brakes]
     lines += [f"  {m.part.label}: on, off" for m in system.motors if m.part.off_at is not None]
     lines += [f"  {c.part.label}: {len(c.part.slopes)} steps" for c in system.characteristics]

@@ -16,8 +16,10 @@ The outputs, per elastic link ``L``: ``L.peak``, the largest |load| over the
 run from the file's start (N·m, or N between translating bodies), and
 ``L.factor``, that peak over |reference| (the link's given ``reference``,
 else its load at the start): the magnitude of what ``crane-sym run`` prints
-as its dynamic factor. A block of designs is solved together by the batched
-solver (:func:`crane_sym.mechanics.batched_runs.largest_of_runs`: one
+as its dynamic factor; of a pendulum also ``L.angle``, its largest sway angle
+in rad (its factor: its pull over the load's weight). A block of designs is
+solved together by the batched solver
+(:func:`crane_sym.mechanics.batched_runs.largest_of_runs`: one
 :class:`~crane_sym.components.hybrid.ComponentSystem` per design, the closed
 forms, events and extrema batched); :meth:`Designs.per_design` is the same
 numbers one design at a time by ``Model.run``, each model derived from
@@ -54,7 +56,13 @@ __all__ = ["OUTPUTS", "Designs", "Field", "Templates", "designs", "evaluate_bloc
 #: The outputs of each elastic link: suffix -> what it is.
 OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
            "factor": "dynamic factor of the elastic link {link}: its largest |load| over "
-                     "|{reference}|"}
+                     "|{reference}|",
+           "angle": "largest sway angle of the pendulum {link}: its largest |pull| over "
+                    "the load's weight"}
+#: The unit of each output but the peak (a load, by the link's motion).
+_UNITS = {"factor": "1", "angle": "rad"}
+
+
 @dataclass(frozen=True)
 class Field:
     """A value of one component that a sweep may vary: ``<component>.<key>``,
@@ -203,9 +211,11 @@ class Designs:
         """Output name -> (link index, ``peak`` or ``factor``, SI unit)."""
         out = {}
         for i, link in enumerate(self.model.assembly.links):
-            motion = self.model.assembly.bodies[link.part.first].motion
+            motion = self.model.assembly.motion(link)
             for kind in OUTPUTS:
-                unit = UNITS["load"][motion] if kind == "peak" else "1"
+                if kind == "angle" and not link.part.reports_angle:
+                    continue
+                unit = UNITS["load"][motion] if kind == "peak" else _UNITS[kind]
                 out[f"{link.part.name}.{kind}"] = (i, kind, unit)
         return out
 

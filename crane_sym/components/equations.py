@@ -197,8 +197,8 @@ class Equations:
         """
         values = parameter_values(assembly)
         if list(values) != list(self.values) or \
-                [l.backlash > 0 for l in assembly.links] != \
-                [l.backlash > 0 for l in self.assembly.links]:
+                [l.gapped for l in assembly.links] != \
+                [l.gapped for l in self.assembly.links]:
             raise ValueError("for_design: the design's parts differ from the model's in "
                              "more than their values")
         design = replace(self, assembly=assembly, values=values, shared=True)
@@ -286,11 +286,12 @@ def derive(assembly: Assembly) -> Equations:
     twists, stretches, contact, flank = [], [], [], []
     for link in assembly.links:
         name = link.part.name
-        (ka, qa), (kb, qb) = (where[e] for e in link.part.ends)
-        u = kb * qb - ka * qa
-        c, d = _p(f"c_{name}"), sp.Symbol(f"d_{name}", nonnegative=True)
+        u = assembly.twist(link, coords)
+        spring = kinds.of(link.part).stiffness
+        c = _p(f"c_{name}") if spring is None else spring(link.part)
+        d = sp.Symbol(f"d_{name}", nonnegative=True)
         chi, delta = sp.Integer(1), sp.Integer(0)
-        if link.backlash > 0:
+        if link.gapped:
             chi, delta = _r(f"chi_{name}"), _r(f"delta_{name}")
             contact.append(chi)
             flank.append(delta)
@@ -350,11 +351,11 @@ def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], 
     while todo:
         here = todo.pop(0)
         for link in assembly.links:
-            a, b = link.part.ends
-            for near, far in ((a, b), (b, a)):
-                if place[near][0] == here and place[far][0] not in rho:
-                    rho[place[far][0]] = rho[here] * where[near][0] / where[far][0]
-                    todo.append(place[far][0])
+            ends = assembly.ends(link)
+            for near, far in (ends, ends[::-1]):
+                if near.group == here and far.group is not None and far.group not in rho:
+                    rho[far.group] = rho[here] * near.factor / far.factor
+                    todo.append(far.group)
     J = sp.Integer(0)
     for g, group in enumerate(assembly.groups):
         for (member, _), kappa in zip(group.members, group.factors):

@@ -32,7 +32,7 @@ import numpy as np
 from crane_sym.components.equations import Equations
 from crane_sym.components.laws import LawClock, MotorLaw
 from crane_sym.components.loads import Brake, Characteristic, Motor
-from crane_sym.components.parts import ComponentError
+from crane_sym.components.parts import ComponentError, ElasticLink
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["ComponentSystem", "Mode"]
@@ -52,6 +52,18 @@ class Mode:
     ramping: tuple[bool, ...]
     steps: tuple[int, ...] = ()
     pieces: tuple[int, ...] = ()
+    #: The gapped links cut for good (their places in ``contacts``; contact 0).
+    cut: tuple[int, ...] = ()
+
+
+def _contact_events(part: ElasticLink) -> dict[str, str]:
+    """The names of a gapped link's contact events by kind: a backlash link
+    ``opens`` and ``closes +``/``-``; a slack rope ``snaps taut`` and ``goes
+    slack`` (it has no lower flank)."""
+    if part.slack is not None:
+        return {"open": f"{part.name} goes slack", "close+": f"{part.name} snaps taut"}
+    return {"open": f"{part.name} opens", "close+": f"{part.name} closes +",
+            "close-": f"{part.name} closes -"}
 
 
 def _memo(func: Callable) -> Callable:
@@ -80,7 +92,7 @@ class ComponentSystem:
         self.extra = dict(extra or {})
         self._numeric = equations.numeric(self.extra)
         self.n = len(a.groups)
-        self.backlash = [l for l in a.links if l.backlash > 0]
+        self.backlash = [l for l in a.links if l.gapped]
         self.brakes = [l for l in a.loads if isinstance(l.part, Brake)]
         self.motors = [l for l in a.loads if isinstance(l.part, Motor)]
         self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
@@ -95,9 +107,9 @@ class ComponentSystem:
         self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
         self.events: dict[str, tuple[str, int]] = {}
         for j, l in enumerate(self.backlash):
-            for suffix, kind in ((" opens", "open"), (" closes +", "close+"),
-                                 (" closes -", "close-")):
-                self.events[l.part.name + suffix] = (kind, j)
+            for kind, name in _contact_events(l.part).items():
+                self.events[name] = (kind, j)
+            self.events[f"{l.part.name} breaks"] = ("break", j)
         for g, group in enumerate(a.groups):
             for suffix, kind in ((" rests", "rest"), (" slips +", "slip+"),
                                  (" slips -", "slip-")):
@@ -105,6 +117,7 @@ class ComponentSystem:
         for k, b in enumerate(self.brakes):
             self.events[f"{b.part.name} engages"] = ("engage", k)
             self.events[f"{b.part.name} ramp done"] = ("ramped", k)
+            self.events[f"{b.part.name} releases"] = ("release", k)
         for m, motor in enumerate(self.motors):
             self.events[f"{motor.part.name} off"] = ("off", m)
         for m, law in enumerate(self.characteristics):
@@ -130,9 +143,8 @@ class ComponentSystem:
         of its rate)."""
         if link.part.name not in self._twists:
             w = np.zeros(self.size)
-            (ga, ka, _), (gb, kb, _) = (self.assembly.place[e] for e in link.part.ends)
-            w[self.q(ga)] -= ka
-            w[self.q(gb)] += kb
+            for g, weight in self.assembly.weights(link):
+                w[self.q(g)] += weight
             self._twists[link.part.name] = w
         return self._twists[link.part.name].copy()
 
@@ -239,16 +251,20 @@ class ComponentSystem:
 
     def _guards_uncached(self, mode: Mode) -> tuple[Guard, ...]:
         out = []
-        for l, c in zip(self.backlash, mode.contacts):
+        for j, (l, c) in enumerate(zip(self.backlash, mode.contacts)):
+            if j in mode.cut or not l.part.opens:      # cut, or a gap of width 0
+                continue
             u = tuple(self.twist(l))
             lo, hi = l.part.flanks
-            name = l.part.name
+            name = _contact_events(l.part)
             if c > 0:
-                out.append(Guard(f"{name} opens", u, -hi, -1))
+                out.append(Guard(name["open"], u, -hi, -1))
             elif c < 0:
-                out.append(Guard(f"{name} opens", u, -lo, 1))
+                out.append(Guard(name["open"], u, -lo, 1))
             else:
-                out += [Guard(f"{name} closes +", u, -hi, 1), Guard(f"{name} closes -", u, -lo, -1)]
+                out.append(Guard(name["close+"], u, -hi, 1))
+                if np.isfinite(lo):                 # a slack link has no lower flank
+                    out.append(Guard(name["close-"], u, -lo, -1))
         for g, state in enumerate(mode.motion):
             name = self.assembly.groups[g].name
             if state in (FORWARD, BACKWARD):
@@ -266,10 +282,11 @@ class ComponentSystem:
         """The next mode and state after a guard or a scheduled event."""
         kind, i = self.events[event]
         x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
-        if kind in ("open", "close+", "close-"):
+        if kind in ("open", "close+", "close-", "break"):
             contacts = list(mode.contacts)
-            contacts[i] = {"open": 0, "close+": 1, "close-": -1}[kind]
-            return replace(mode, contacts=tuple(contacts)), x
+            contacts[i] = {"open": 0, "close+": 1, "close-": -1, "break": 0}[kind]
+            cut = tuple(sorted({*mode.cut, i})) if kind == "break" else mode.cut
+            return replace(mode, contacts=tuple(contacts), cut=cut), x
         if kind == "step":
             steps = list(mode.steps)
             steps[i] += 1
@@ -292,6 +309,8 @@ class ComponentSystem:
             x[self.beta[i]] = 1.0
             return replace(mode, ramping=tuple(ramping)), x
         motion, g = list(mode.motion), i
+        if kind == "release":
+            return self._release(mode, i, x), x
         if kind == "engage":
             engaged, ramping = list(mode.engaged), list(mode.ramping)
             engaged[i] = True
@@ -316,6 +335,21 @@ class ComponentSystem:
             net, cap = float(wn @ x + kn), float(wc @ x + kc)
             motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
         return replace(mode, motion=tuple(motion)), x
+
+    def _release(self, mode: Mode, i: int, x: np.ndarray) -> Mode:
+        """Brake i released for good: its group free if no other brake is
+        engaged on it, else held only while the rest still hold its load."""
+        engaged, ramping = list(mode.engaged), list(mode.ramping)
+        engaged[i] = ramping[i] = False
+        mode = replace(mode, engaged=tuple(engaged), ramping=tuple(ramping))
+        g, motion = self.brake_group[i], list(mode.motion)
+        if not any(on and self.brake_group[k] == g for k, on in enumerate(engaged)):
+            motion[g] = FREE
+        elif motion[g] == HELD:
+            (wn, kn), (wc, kc) = self.net_load(mode, g), self.capacity(mode, g)
+            net, cap = float(wn @ x + kn), float(wc @ x + kc)
+            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
+        return replace(mode, motion=tuple(motion))
 
     # --- outputs ------------------------------------------------------------------
     def link_load(self, index: int):

@@ -32,7 +32,8 @@ class Brake(Component):
     body) builds up to ``load`` as a step, a linear ``ramp`` over ``time``, or
     an ``exponential`` 1 − e^(−τ/time); it opposes the motion while the body
     slides and holds the body once it comes to rest while the rest of the load
-    stays within what it can hold."""
+    stays within what it can hold; it releases for good at ``fails_at`` (s,
+    after its delay; None: never)."""
 
     name: str
     body: str
@@ -40,10 +41,12 @@ class Brake(Component):
     delay: float = 0.0
     build_up: str = "step"
     time: float = 0.0
+    fails_at: float | None = None
     kind = "brake"
 
     def __init__(self, name: str, body: str, load: Given, delay: Given = 0.0,
-                 build_up: str = "step", time_: Given = 0.0) -> None:
+                 build_up: str = "step", time_: Given = 0.0,
+                 fails_at: Given | None = None) -> None:
         name = _name("brake", name)
         owner = f"brake {name!r}"
         m = value(owner, "torque", load)
@@ -58,8 +61,13 @@ class Brake(Component):
             _at_least(owner, "time", tt, 0.0, False)
         else:
             _at_least(owner, f"time of its {build_up}", tt, 0.0, True)
+        broken = None if fails_at is None else value(owner, "fails_at", fails_at, time)
+        if broken is not None and broken.si <= dt.si:
+            raise ComponentError(f"{owner}: fails_at must be > its delay {dt.si:g} s (it "
+                                 f"releases once engaged), got {broken.text!r}")
         for key, v in (("name", name), ("body", body), ("load", m), ("delay", dt.si),
-                       ("build_up", build_up), ("time", tt.si)):
+                       ("build_up", build_up), ("time", tt.si),
+                       ("fails_at", None if broken is None else broken.si)):
             object.__setattr__(self, key, v)
 
 

@@ -64,6 +64,7 @@ class LinkPeak:
     static: float
     reference: float | None
     positive: str | None = None       # what a positive load is: "tension", "compression"
+    angle: bool = False               # its factor is a sway angle in rad (a pendulum's)
 
     @property
     def factor(self) -> float | None:
@@ -96,10 +97,10 @@ class ComponentRun:
             when, peak = _largest(self.result, self.system, affine)
             static, reference = start_load(self.system, self.mode, self.x0, i,
                                            displaced=bool(self.model.initial))
-            motion = self.system.assembly.bodies[link.part.first].motion
+            motion = self.system.assembly.motion(link)
             out.append(LinkPeak(link.part.name, when, peak,
                                 "N*m" if motion == ROTATING else "N", static, reference,
-                                link.part.positive))
+                                link.part.positive, link.part.reports_angle))
         return out
 
     def hybrid_run(self, link: str) -> HybridRun:
@@ -205,7 +206,8 @@ class Model:
         law at its value just before t = 0 (0; an acceleration law's a = 0: its
         motor then holds the drive against the other loads). ``rest``:
         everything at rest at zero twist, every gap open (a link with backlash
-        at the end of its gap where its twist is zero), whatever the loads.
+        at the end of its gap where its twist is zero; a link that only fails,
+        its gap of width 0, on its flank), whatever the loads.
         Then each ``[[initial]]`` state moves its body and sets its speed
         (:func:`~crane_sym.components.initial.apply`).
         """
@@ -225,11 +227,15 @@ class Model:
         while changed:
             changed = False
             for link in a.links:
-                (ga, ka, _), (gb, kb, _) = (a.place[e] for e in link.part.ends)
-                if rates[ga] is not None and rates[gb] is None:
-                    rates[gb], changed = rates[ga] * ka / kb, True
-                elif rates[gb] is not None and rates[ga] is None:
-                    rates[ga], changed = rates[gb] * kb / ka, True
+                for near, far in (ends := a.ends(link), ends[::-1]):
+                    here = 0.0 if near.group is None else rates[near.group]
+                    if here is not None and far.group is not None and rates[far.group] is None:
+                        rates[far.group], changed = here * near.kappa / far.kappa, True
+        for link in a.links:
+            if sum(w * rates[g] for g, w in a.weights(link)) != 0:
+                raise ComponentError(f"start: {link.part.label} holds a body to the ground, "
+                                     f"which cannot move at the steady speed {v:g} of "
+                                     f"{a.bodies[body].label}; start at speed 0")
         steady = self.steady_motor
         probe = ComponentSystem(self.equations, {steady: 0.0} if steady is not None else {})
         unit = ComponentSystem(self.equations, {steady: 1.0}) if steady is not None else None
@@ -244,6 +250,10 @@ class Model:
             for link, c in zip(probe.backlash, contacts):
                 u = float(probe.twist(link) @ x)
                 lo, hi = link.part.flanks
+                if c > 0 and u < hi and not np.isfinite(lo):
+                    raise ComponentError(f"start: {link.part.label} is slack in the steady "
+                                         f"state (twist {u:.6g} below its slack {hi:g}); "
+                                         "start = \"rest\"")
                 turned.append(c if (u >= hi if c > 0 else u <= lo) else -c)
             if tuple(turned) == contacts:
                 break
@@ -281,7 +291,8 @@ class Model:
         probe = ComponentSystem(self.equations)
         engaged = self._at_once()
         motion = [FREE for _ in self.assembly.groups]
-        mode = Mode(tuple(0 for _ in probe.backlash), tuple(motion), engaged,
+        mode = Mode(tuple(0 if l.part.opens else 1 for l in probe.backlash), tuple(motion),
+                    engaged,
                     tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
                     tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws))
         x = np.zeros(probe.size)
@@ -300,12 +311,14 @@ class Model:
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
-        """Positions (the first group's at 0) and the steady motor's torque that
-        make K q = f − D q̇ (but on a group a speed law moves: its motor gives what
-        the balance takes); ComponentError if no motor torque balances the loads."""
+        """Positions (the first group's at 0, unless a link holds the drive to
+        the ground) and the steady motor's torque that make K q = f − D q̇ (but on
+        a group a speed law moves: its motor gives what the balance takes);
+        ComponentError if no motor torque balances the loads."""
         _, D, K, f0 = probe._linear(contacts, driven)[:4]
         f = f0 - D @ rates
-        columns = [K[:, 1:]]
+        pinned = 0 if self.assembly.grounded else 1
+        columns = [K[:, pinned:]]
         if unit is not None:
             columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
         matrix = np.hstack(columns)
@@ -321,7 +334,7 @@ class Model:
             raise ComponentError("the drive is not in a steady state at the start: its "
                                  "constant loads do not balance; give one motor the torque "
                                  "'steady'")
-        positions = np.concatenate([[0.0], z[:K.shape[1] - 1]])
+        positions = np.concatenate([[0.0] * pinned, z[:K.shape[1] - pinned]])
         torque = float(z[-1]) if unit is not None else 0.0
         return positions, torque
 
@@ -346,18 +359,23 @@ class Model:
 
     def schedule(self) -> tuple[tuple[float, str], ...]:
         """The events known in advance: brakes engaging and their ramps ending,
-        motors switched off, characteristics' steps and motor laws' pieces."""
+        brakes released and links cut (``fails_at``), motors switched off,
+        characteristics' steps and motor laws' pieces."""
         out = []
         for load in self.assembly.loads:
             part = load.part
             if isinstance(part, Brake):
                 out.append((part.delay, f"{part.name} engages"))
+                if part.fails_at is not None:
+                    out.append((part.fails_at, f"{part.name} releases"))
                 if part.build_up == "ramp":
                     out.append((part.delay + part.time, f"{part.name} ramp done"))
             elif isinstance(part, Motor) and part.off_at is not None:
                 out.append((part.off_at, f"{part.name} off"))
             elif isinstance(part, Characteristic):
                 out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
+        out += [(l.part.fails_at, f"{l.part.name} breaks") for l in self.assembly.links
+                if l.part.fails_at is not None]
         out += LawClock([l.part for l in self.assembly.loads if isinstance(l.part, MotorLaw)],
                         0).schedule()
         return tuple(sorted(out))

@@ -76,7 +76,7 @@ def check_counts(parts: Sequence[Component], where: str) -> None:
         n = sum(p.kind in kinds for p in parts)
         if n > bound:
             raise ComponentError(f"{where}: {n} {what}, at most {bound}")
-    gaps = sum(p.kind == "elastic link" and p.backlash.si != 0 for p in parts)
+    gaps = sum(p.kind == "elastic link" and p.gapped for p in parts)
     if gaps > MAX_GAPS:
         raise ComponentError(f"{where}: {gaps} elastic links with backlash, at most {MAX_GAPS}")
 
@@ -96,9 +96,8 @@ def frequencies(assembly: Assembly) -> np.ndarray:
     K, M = np.zeros((n, n)), np.diag([g.inertia for g in assembly.groups])
     for link in assembly.links:
         b = np.zeros(n)
-        (ga, ka), (gb, kb) = (assembly.place[e][:2] for e in link.part.ends)
-        b[ga] -= ka
-        b[gb] += kb
+        for g, weight in assembly.weights(link):
+            b[g] += weight
         K += link.stiffness * np.outer(b, b)
     if not assembly.links:
         return np.zeros(0)

@@ -29,8 +29,8 @@ from sympy.physics.units import Dimension, force, length, mass, time
 
 from crane_sym import units
 
-__all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "ElasticLink", "Gear",
-           "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "UNITS", "VALUE_KINDS",
+__all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "ElasticLink", "GROUND",
+           "Gear", "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "UNITS", "VALUE_KINDS",
            "Value", "value"]
 
 ROTATING, TRANSLATING = "rotating", "translating"
@@ -127,6 +127,19 @@ def _name(kind: str, name: object) -> str:
     return name
 
 
+#: The fixed end a link may name in ``between``: the ground or the structure,
+#: its coordinate ≡ 0; no body may take the name.
+GROUND = "ground"
+
+
+def _body_name(kind: str, name: object) -> str:
+    name = _name(kind, name)
+    if name == GROUND:
+        raise ComponentError(f"{kind} name {GROUND!r} is reserved for the fixed end a link "
+                             "may name in 'between'; call the body something else")
+    return name
+
+
 def _at_least(owner: str, what: str, v: Value, low: float, strict: bool) -> None:
     if (v.si <= low) if strict else (v.si < low):
         raise ComponentError(f"{owner}: {what} must be {'>' if strict else '>='} {low:g}, "
@@ -171,7 +184,7 @@ def Inertia(name: str, inertia: Given) -> Body:
         Its moment of inertia, text with a unit or kg·m²; zero for a shaft
         end joined rigidly to bodies that have inertia.
     """
-    name = _name("inertia", name)
+    name = _body_name("inertia", name)
     v = value(f"inertia {name!r}", "inertia", inertia, DIMENSIONS["inertia"][ROTATING])
     _at_least(f"inertia {name!r}", "inertia", v, 0.0, False)
     return Body(name, v.si, ROTATING)
@@ -187,7 +200,7 @@ def Mass(name: str, mass_: Given) -> Body:
     mass_ : str or float
         Its mass, text with a unit or kg.
     """
-    name = _name("mass", name)
+    name = _body_name("mass", name)
     v = value(f"mass {name!r}", "mass", mass_, DIMENSIONS["mass"][TRANSLATING])
     _at_least(f"mass {name!r}", "mass", v, 0.0, False)
     return Body(name, v.si, TRANSLATING)
@@ -273,7 +286,11 @@ class ElasticLink(Component):
     (default: the link's load at the start). ``positive`` (``"tension"`` or
     ``"compression"``, a translating link only) says what a positive F is,
     so that a report states the load in words: a rope listed from its upper
-    end down, with x downwards, is in tension when F > 0.
+    end down, with x downwards, is in tension when F > 0. ``fails_at`` (s)
+    cuts it at that instant (a reeve breaks): F = 0 from then on. ``slack`` h (≥ 0,
+    instead of a backlash) makes it a rope that only pulls: F = c·(u − h) +
+    d·u̇ while u ≥ h (taut), 0 below (slack), never a push; it snaps taut where
+    u reaches h and goes slack where u falls back to h.
     """
 
     name: str
@@ -285,11 +302,17 @@ class ElasticLink(Component):
     contact: str = "positive"
     reference: Value | None = None
     positive: str | None = None
+    slack: Value | None = None
+    fails_at: float | None = None
     kind = "elastic link"
+    #: Whether its dynamic factor is an angle in rad that a run reports (a
+    #: pendulum's: its pull m g θ over the load's weight m g).
+    reports_angle = False
 
     def __init__(self, name: str, first: str, second: str, stiffness: Given,
                  damping: Given = 0.0, backlash: Given = 0.0, contact: str = "positive",
-                 reference: Given | None = None, positive: str | None = None) -> None:
+                 reference: Given | None = None, positive: str | None = None,
+                 slack: Given | None = None, fails_at: Given | None = None) -> None:
         name = _name("elastic link", name)
         owner = f"elastic link {name!r}"
         c, d = value(owner, "stiffness", stiffness), value(owner, "damping", damping)
@@ -303,21 +326,60 @@ class ElasticLink(Component):
         if positive not in (None, *SENSES):
             raise ComponentError(f"{owner}: positive must be 'tension' or 'compression', "
                                  f"got {positive!r}")
+        h = None if slack is None else value(owner, "slack", slack)
+        if h is not None:
+            _at_least(owner, "slack", h, 0.0, False)
+            if s.si != 0:
+                raise ComponentError(f"{owner}: a slack link has no backlash (its gap is "
+                                     f"below the slack), got backlash {s.text!r}")
+        broken = None if fails_at is None else value(owner, "fails_at", fails_at, time)
+        if broken is not None:
+            _at_least(owner, "fails_at", broken, 0.0, True)
         ref = None if reference is None else value(owner, "reference", reference)
         if ref is not None and ref.si == 0:
             raise ComponentError(f"{owner}: reference must not be 0")
         for key, v in (("name", name), ("first", first), ("second", second),
                        ("stiffness", c), ("damping", d), ("backlash", s),
-                       ("contact", contact), ("reference", ref), ("positive", positive)):
+                       ("contact", contact), ("reference", ref), ("positive", positive),
+                       ("slack", h), ("fails_at", None if broken is None else broken.si)):
             object.__setattr__(self, key, v)
 
     @property
     def ends(self) -> tuple[str, str]:
         return self.first, self.second
 
+    def assembled(self, bodies: dict[str, Body]) -> tuple[Value, Value | None]:
+        """Its stiffness and reference load, given the bodies it joins (as
+        written; a pendulum's follow from its load's mass)."""
+        return self.stiffness, self.reference
+
+    @property
+    def gapped(self) -> bool:
+        """Whether its contact switches: a backlash, a slack (one-sided) link,
+        or a link that fails (cut at ``fails_at``: its contact 0 from then on)."""
+        return self.backlash.si > 0 or self.slack is not None or self.fails_at is not None
+
+    @property
+    def opens(self) -> bool:
+        """Whether it opens and closes as it twists (a backlash or a slack; a
+        link that only fails has a gap of width 0 and never opens)."""
+        lo, hi = self.flanks
+        return lo < hi
+
+    @property
+    def contacts(self) -> tuple[str, ...]:
+        """Its contacts in words, from the upper flank down (then ``cut``,
+        where it fails)."""
+        words = (("taut", "slack") if self.slack is not None else
+                 ("upper flank", "gap", "lower flank") if self.opens else ("intact",))
+        return words + (("cut",) if self.fails_at is not None else ())
+
     @property
     def flanks(self) -> tuple[float, float]:
-        """(lower, upper) ends of the gap in the twist u."""
+        """(lower, upper) ends of the gap in the twist u; a slack link's gap
+        runs from −∞ to its slack (it pulls only, once u passes the slack)."""
+        if self.slack is not None:
+            return -math.inf, self.slack.si
         s = self.backlash.si
         return (-s, 0.0) if self.contact == "positive" else (0.0, s)
 

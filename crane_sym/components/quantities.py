@@ -45,7 +45,8 @@ from crane_sym.components import kinds
 from crane_sym.components.kinds.base import FIXED_UNITS, Key
 from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model
-from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS, ComponentError, value
+from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, UNITS, ComponentError,
+                                        ElasticLink, value)
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
@@ -135,6 +136,8 @@ def _dimension(a, key: Key, part) -> tuple[Dimension, str, str]:
 
 def _motion(a, part) -> str:
     """The motion of the body a part is, acts on, or (a link) starts at."""
+    if isinstance(part, ElasticLink):
+        return next(a.bodies[e].motion for e in part.ends if e != GROUND)
     body = part.name if part.name in a.bodies else getattr(part, "body", None) or part.ends[0]
     return a.bodies[body].motion
 
@@ -195,7 +198,7 @@ def _zeros(model: Model) -> dict[sp.Symbol, int]:
 
 
 def _load_dimension(model: Model, link) -> tuple[Dimension, str]:
-    motion = model.assembly.bodies[link.part.first].motion
+    motion = model.assembly.motion(link)
     return DIMENSIONS["load"][motion], UNITS["load"][motion]
 
 

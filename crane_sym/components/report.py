@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import io
 import json
+import math
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -91,6 +92,10 @@ def report_lines(run: ComponentRun) -> list[str]:
         lines.append(f"peak load of {p.link}: {load_text(p.value, p.unit, p.positive, *scale)}"
                      f" at t = {format_quantity(p.time, 's')} (at the start "
                      f"{load_text(p.static, p.unit, p.positive, *scale)}{factor})")
+        if p.angle:
+            lines.append(f"peak sway angle of {p.link}: {format_quantity(p.factor)} rad "
+                         f"({format_quantity(math.degrees(p.factor))} deg) at t = "
+                         f"{format_quantity(p.time, 's')} (its pull over the load's weight)")
     for t, event in run.events:
         lines.append(f"event at t = {format_quantity(t, 's', 6)}: {event}")
     return lines
@@ -119,6 +124,8 @@ def results(report: ComponentReport) -> dict:
                       f"{p.link}.start_load": {"value": number(p.static), "unit": p.unit},
                       f"{p.link}.factor": {"value": None if p.factor is None
                                            else number(p.factor), "unit": "1"}})
+        if p.angle:
+            found[f"{p.link}.angle"] = {"value": number(p.factor), "unit": "rad"}
     return {"scene": model.name, "title": model.title, "model": model.name,
             "results": found,
             "sign_convention": SIGNS.removeprefix("signs: "),

@@ -3,8 +3,10 @@ gears and drums merged into rigid groups, each with one coordinate.
 
 Within a group every body's coordinate is a fixed multiple κ of the group's
 coordinate, the coordinate of its first body in the order the components were
-given (κ = 1 there). Elastic links join groups; brakes, motors and loads act
-on a body and reach its group through κ.
+given (κ = 1 there). Elastic links join groups, or a group and the fixed
+ground (``"ground"`` as one end of ``between``: x ≡ 0, no group, κ = 0, which
+:meth:`Assembly.ends` gives in this one place); brakes, motors and loads act on
+a body and reach its group through κ.
 
 What cannot be a drive train is refused here, in one line naming the
 component: two components of one name, a link or a load on an unknown body,
@@ -26,10 +28,10 @@ import sympy as sp
 from crane_sym import units
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.loads import ACTING, Brake, Characteristic, Gravity, Motor
-from crane_sym.components.parts import (DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body, Component,
-                                        ComponentError, Drum, ElasticLink, Gear)
+from crane_sym.components.parts import (DIMENSIONS, GROUND, RIGID, ROTATING, TRANSLATING, Body,
+                                        Component, ComponentError, Drum, ElasticLink, Gear)
 
-__all__ = ["Assembly", "Group", "Link", "Load", "assemble"]
+__all__ = ["Assembly", "End", "Group", "Link", "Load", "assemble"]
 
 #: Relative tolerance of a loop of rigid ratios.
 LOOP_TOLERANCE = 1e-12
@@ -67,6 +69,12 @@ class Link:
     backlash: float
     reference: float | None
 
+    @property
+    def gapped(self) -> bool:
+        """Whether it has a gap (a backlash, or a slack link's): its contact
+        switches."""
+        return self.part.gapped
+
 
 @dataclass(frozen=True)
 class Load:
@@ -76,6 +84,21 @@ class Load:
     part: Component
     load: float | None
     values: tuple[float, ...] = ()
+
+
+@dataclass(frozen=True)
+class End:
+    """Where an end of a link sits: its rigid group (None at the ground), and
+    κ, its coordinate per unit of the group's, as a number and in the parts'
+    symbols (0 at the ground, whose coordinate is 0 whatever the groups do)."""
+
+    group: int | None
+    kappa: float
+    factor: sp.Expr
+
+
+#: The fixed end: no group, κ = 0.
+_FIXED = End(None, 0.0, sp.Integer(0))
 
 
 @dataclass(frozen=True)
@@ -92,6 +115,37 @@ class Assembly:
 
     def loads_of(self, kind: type) -> list[Load]:
         return [l for l in self.loads if isinstance(l.part, kind)]
+
+    def ends(self, link: Link) -> tuple[End, End]:
+        """The two ends of ``link`` in the order of ``between``; the ground
+        is the fixed end (no group, κ = 0), so every sum over a link's ends
+        that skips ``group is None`` reads the ground as x ≡ 0."""
+        return tuple(_FIXED if e == GROUND else End(*self.place[e])
+                     for e in link.part.ends)  # type: ignore[return-value]
+
+    def weights(self, link: Link) -> list[tuple[int, float]]:
+        """The twist u = x(second) − x(first) as (group, weight) pairs, u =
+        Σ weight·q_group, the ground left out."""
+        first, second = self.ends(link)
+        return [(e.group, sign * e.kappa) for e, sign in ((first, -1.0), (second, 1.0))
+                if e.group is not None]
+
+    def twist(self, link: Link, coordinates: Sequence[sp.Expr]) -> sp.Expr:
+        """The twist u = κ_second q_second − κ_first q_first in the parts'
+        symbols (the ground's term 0)."""
+        first, second = self.ends(link)
+        at = lambda e: 0 if e.group is None else e.factor * coordinates[e.group]  # noqa: E731
+        return at(second) - at(first)
+
+    @property
+    def grounded(self) -> bool:
+        """Whether a link holds the drive to the ground (its positions then
+        absolute, none free to be set at 0)."""
+        return any(GROUND in l.part.ends for l in self.links)
+
+    def motion(self, link: Link) -> str:
+        """The motion (rotating or translating) of the bodies ``link`` joins."""
+        return next(self.bodies[e].motion for e in link.part.ends if e != GROUND)
 
 
 def _unknown(owner: str, name: object, known: Sequence[str]) -> ComponentError:
@@ -128,7 +182,7 @@ def assemble(components: Sequence[Component]) -> Assembly:
     elastic = [p for p in components if isinstance(p, ElasticLink)]
     for part in [*rigid, *elastic, *(p for p in components if isinstance(p, ACTING))]:
         for end in (part.ends if isinstance(part, (*RIGID, ElasticLink)) else (part.body,)):
-            if end not in bodies:
+            if end not in bodies and not (end == GROUND and isinstance(part, ElasticLink)):
                 raise _unknown(part.label, end, list(bodies))
     _kinds(bodies, rigid, elastic)
     _connected(bodies, rigid, elastic)
@@ -175,12 +229,15 @@ def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
             raise ComponentError(f"{part.label} {what}; {a.label} is {a.motion}, "
                                  f"{b.label} is {b.motion}")
     for part in elastic:
-        a, b = (bodies[e] for e in part.ends)
+        if part.ends == (GROUND, GROUND):
+            raise ComponentError(f"{part.label} joins the ground to itself")
+        named = [bodies[e] for e in part.ends if e != GROUND]
+        a, b = named * (3 - len(named))          # a link to the ground: its one body
         if a.motion != b.motion:
             raise ComponentError(f"{part.label} joins {a.label} ({a.motion}) and {b.label} "
                                  f"({b.motion}); a link joins bodies of one kind (through a "
                                  "drum between them)")
-        if a.name == b.name:
+        if a.name == b.name and len(named) == 2:
             raise ComponentError(f"{part.label} joins {a.label} to itself")
         if part.positive is not None and a.motion == ROTATING:
             raise ComponentError(f"{part.label}: positive = {part.positive!r} is for a "
@@ -190,8 +247,8 @@ def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
 
 def _connected(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
     """Every body in a link, and all of them one connected drive."""
-    edges = [p.ends for p in [*rigid, *elastic]]
-    touched = {e for pair in edges for e in pair}
+    edges = [p.ends for p in [*rigid, *elastic] if GROUND not in p.ends]
+    touched = {e for p in [*rigid, *elastic] for e in p.ends}
     if len(bodies) > 1:
         for name, body in bodies.items():
             if name not in touched:
@@ -275,14 +332,17 @@ def _groups(bodies: dict[str, Body], rigid: list) -> tuple[tuple[Group, ...],
 def _link(part: ElasticLink, bodies: dict[str, Body],
           place: dict[str, tuple[int, float]]) -> Link:
     a, b = part.ends
-    if place[a][0] == place[b][0]:
+    if GROUND not in part.ends and place[a][0] == place[b][0]:
         raise ComponentError(f"{part.label} joins {bodies[a].label} and {bodies[b].label}, "
                              "which gears and drums already join rigidly: it could never twist")
-    motion = bodies[a].motion
+    motion = bodies[b if a == GROUND else a].motion
     check = lambda what, v: v.check(part.label, what, DIMENSIONS[what][motion])  # noqa: E731
-    reference = (None if part.reference is None else
-                 part.reference.check(part.label, "reference", DIMENSIONS["load"][motion]))
-    return Link(part, check("stiffness", part.stiffness), check("damping", part.damping),
+    stiffness, given = part.assembled(bodies)
+    reference = (None if given is None else
+                 given.check(part.label, "reference", DIMENSIONS["load"][motion]))
+    if part.slack is not None:
+        part.slack.check(part.label, "slack", DIMENSIONS["backlash"][motion])  # m, or rad
+    return Link(part, check("stiffness", stiffness), check("damping", part.damping),
                 check("backlash", part.backlash), reference)
 
 

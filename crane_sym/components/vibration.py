@@ -161,8 +161,8 @@ def _by_link(model: Model, link: str, moving: list[int], M: sp.Matrix, K: sp.Mat
     names = [l.part.name for l in a.links]
     i = names.index(link)
     part = a.links[i]
-    if part.backlash > 0 and state is not None and \
-            state.contacts[[l for l in a.links if l.backlash > 0].index(part)] == 0:
+    if part.gapped and state is not None and \
+            state.contacts[[l for l in a.links if l.gapped].index(part)] == 0:
         raise ComponentError(f"the link {link!r} is in its gap in this mode; no mode loads it")
     weights = np.array([float(sp.diff(eq.twists[i], eq.coordinates[g]).xreplace(eq.values))
                         for g in moving])

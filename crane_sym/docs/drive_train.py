@@ -180,9 +180,14 @@ def describe_mode(system: ComponentSystem, mode: Mode) -> str:
     """A mode in words: the gaps, the brakes, the groups held or sliding, the motors."""
     a = system.assembly
     words = []
-    for link, c in zip(system.backlash, mode.contacts):
-        words.append(f"{link.part.name} " + ("on its upper flank" if c > 0 else
-                                             "on its lower flank" if c < 0 else "in its gap"))
+    for j, (link, c) in enumerate(zip(system.backlash, mode.contacts)):
+        if j in mode.cut or not link.part.opens:
+            words.append(f"{link.part.name} " + ("cut" if j in mode.cut else "intact"))
+        elif link.part.slack is not None:
+            words.append(f"{link.part.name} " + ("taut" if c > 0 else "slack"))
+        else:
+            words.append(f"{link.part.name} " + ("on its upper flank" if c > 0 else
+                                                 "on its lower flank" if c < 0 else "in its gap"))
     for brake, on, ramp in zip(system.brakes, mode.engaged, mode.ramping):
         words.append(f"{brake.part.name} " + (("building up" if ramp or
                                                brake.part.build_up == "exponential"
@@ -245,7 +250,7 @@ def _state(system: ComponentSystem) -> str:
 def _modes(run: ComponentRun) -> list[str]:
     system = run.system
     out: list[str] = []
-    lines = [f"{l.part.name}: upper flank, gap, lower flank" for l in system.backlash]
+    lines = [f"{l.part.name}: {', '.join(l.part.contacts)}" for l in system.backlash]
     lines += [f"{b.part.name} on {b.part.body}: off, then engaged"
               + ("" if b.part.build_up == "step" else f", building up ({b.part.build_up})")
               for b in system.brakes]

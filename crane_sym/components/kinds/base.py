@@ -29,8 +29,8 @@ from sympy.physics.units import Dimension, length, time
 
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
-__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Key", "Kind", "Symbolic", "load_key",
-           "run_end"]
+__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Key", "Kind", "Symbolic", "failure",
+           "load_key", "run_end"]
 
 FORMS = ("quantity", "number", "word", "body", "list", "law", "ends")
 #: The signs a swept value may be bound to keep ("": either).
@@ -183,6 +183,9 @@ class Kind:
     acts: Acts | None = None
     #: The values that switch the model rather than enter its equations.
     switching: Switching | None = None
+    #: A link's stiffness in the parts' symbols, given the part (None: its
+    #: own ``c_<name>``; a pendulum's m g/L).
+    stiffness: Callable[[Component], sp.Expr] | None = None
 
     @property
     def part_kind(self) -> str:
@@ -240,6 +243,12 @@ def load_key(entry: dict, where: str, optional: bool = False) -> str | None:
         raise ComponentError(f"{where}: lacks 'torque' (on a rotating body) or 'force' "
                              "(on a translating one)")
     return given[0] if given else None
+
+
+def failure(part: Component, what: str) -> tuple:
+    """The switching value of a part that fails (``fails_at``, s), or none."""
+    t = getattr(part, "fails_at", None)
+    return () if t is None else (("fails_at", t, time, "s", f"instant {what} fails"),)
 
 
 def run_end(duration: float) -> str:

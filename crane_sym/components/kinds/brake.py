@@ -3,7 +3,7 @@ built up after a delay as a step, a ramp or an exponential."""
 import sympy as sp
 from sympy.physics.units import time
 
-from crane_sym.components.kinds.base import Acting, Key, Kind, load_key, run_end
+from crane_sym.components.kinds.base import Acting, Key, Kind, failure, load_key, run_end
 from crane_sym.components.loads import Brake
 from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS
 
@@ -25,7 +25,8 @@ def _switching(part: Brake, motion: str) -> tuple:
     word = "torque" if motion == ROTATING else "force"
     return ((word, part.load.si, DIMENSIONS["load"][motion], UNITS["load"][motion],
              f"{word} of the brake {part.name}"),
-            ("delay", part.delay, time, "s", f"delay of the brake {part.name}"))
+            ("delay", part.delay, time, "s", f"delay of the brake {part.name}"),
+            *failure(part, f"the brake {part.name}"))
 
 
 KIND = Kind("brake", (Key("name", "word"), Key("body", "body"),
@@ -34,7 +35,8 @@ KIND = Kind("brake", (Key("name", "word"), Key("body", "body"),
                       Key("delay", value=time, sign="nonnegative", required=False, default=0.0),
                       Key("build_up", "word", required=False, default="step"),
                       Key("time", value=time, sign="positive", required=False, default=0.0,
-                          when=lambda entry: entry.get("build_up", "step") != "step")),
+                          when=lambda entry: entry.get("build_up", "step") != "step"),
+                      Key("fails_at", value=time, sign="positive", required=False)),
             lambda g, entry, where: Brake(g["name"], g["body"], g[load_key(entry, where)],
-                                          g["delay"], g["build_up"], g["time"]),
+                                          g["delay"], g["build_up"], g["time"], g["fails_at"]),
             "a brake on a body", idle=_idle, acts=_acts, switching=_switching)
