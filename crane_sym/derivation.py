@@ -215,6 +215,14 @@ class SweepOutput:
         True where ``evaluate`` solves all the designs of a block together
         (a batched hybrid solver), so a sweep gives it blocks as large as its
         workers allow instead of many small ones.
+    threads : bool
+        True where such a block spends its time in NumPy calls on whole
+        arrays (which release the GIL), not in Python per design: a sweep
+        runs its blocks on threads, each of at least
+        ``crane_sym.sweep.grid.THREAD_DESIGNS`` designs (fewer, larger
+        blocks: a block's Python per phase is paid once for more designs).
+        False (a block that assembles or switches each design in Python):
+        processes, as for any simulated output.
     cap : int or None
         The most phases a design's run may take (a chattering contact):
         ``evaluate`` gives NaN for a design stopped there, and the sweep
@@ -229,6 +237,7 @@ class SweepOutput:
     options: tuple[str, ...]
     evaluate: Callable[[Mapping[str, Any], Mapping[str, Any]], Any]
     batched: bool = False
+    threads: bool = False
     cap: int | None = None
 
 

@@ -215,18 +215,44 @@ def test_bench_row_states_n_rates_and_the_difference():
     assert "max rel. difference" in text
 
 
-def test_a_batched_output_gets_one_block_per_worker_at_most_batch_designs():
+def test_a_numpy_bound_batched_output_gets_few_large_blocks_on_threads():
+    """001's peaks (``threads=True``): a grid below 2·THREAD_DESIGNS is one
+    block; larger ones are cut into blocks of THREAD_DESIGNS to
+    THREAD_MAX_DESIGNS designs, one per worker at least, run on threads."""
     from crane_sym.scenes.reading import load_scene
-    from crane_sym.sweep.grid import BATCH_DESIGNS, chunks_for
+    from crane_sym.sweep.blocks import (THREAD_DESIGNS, THREAD_MAX_DESIGNS, chunks_for,
+                                        local_scheduler)
     from crane_sym.sweep.spec import plan
     scene = load_scene("hoist_table1")
     small = plan(scene, ["c=1e4:1e5:40:log", "delta=0.5:3:40"], ["peak_elastic_gearbox_torque"])
+    assert [len(c) for c in chunks_for(small, workers=2)] == [1, 1]
+    for n, count in ((300, 2), (1000, 20)):
+        big = plan(scene, [f"c=1e4:1e5:{n}:log", f"delta=0.5:3:{n}"],
+                   ["peak_elastic_gearbox_torque"])
+        chunks = chunks_for(big, workers=2)
+        blocks = [a * b for a in chunks[0] for b in chunks[1]]
+        assert len(blocks) == count and sum(blocks) == n * n
+        assert THREAD_DESIGNS <= min(blocks) and max(blocks) <= THREAD_MAX_DESIGNS
+        assert local_scheduler(big, chunks) == "threads"
+
+
+def test_a_python_bound_batched_output_gets_one_block_per_worker_on_processes():
+    """003's start-up (``threads=False``): blocks of at most BATCH_DESIGNS,
+    one per worker, run on processes."""
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep.blocks import BATCH_DESIGNS, chunks_for, local_scheduler
+    from crane_sym.sweep.spec import plan
+    scene = load_scene("fig12_startup_backlash")
+    small = plan(scene, ["c_l=2:8:40", "zeta=0.02:0.1:40"], ["peak_startup_link_force"],
+                 ["phi_b=3.14159"])
     chunks = chunks_for(small, workers=2)
     blocks = [a * b for a in chunks[0] for b in chunks[1]]
     assert max(blocks) >= 1600 // 4 and len(blocks) <= 6
-    big = plan(scene, ["c=1e4:1e5:300:log", "delta=0.5:3:300"], ["peak_elastic_gearbox_torque"])
+    big = plan(scene, ["c_l=2:8:300", "zeta=0.02:0.1:300"], ["peak_startup_link_force"],
+               ["phi_b=3.14159"])
     chunks = chunks_for(big, workers=2)
     assert max(a * b for a in chunks[0] for b in chunks[1]) <= BATCH_DESIGNS
+    assert local_scheduler(big, chunks) == "processes"
 
 
 def test_any_hybrid_run_goes_through_the_batched_solver():
@@ -287,17 +313,19 @@ def test_a_batched_sweep_on_a_local_cluster_is_bit_for_bit_the_local_one(tmp_pat
     """A design gives the same bits wherever it runs and whichever designs
     share its block (each distinct A is decomposed alone, b enters per
     design, no design finishes by the per-design route): the grid is one
-    block in this process and four on the cluster's two workers."""
+    block in this process and three on the cluster's two workers."""
     distributed = pytest.importorskip("distributed")
     xr = pytest.importorskip("xarray")
     from crane_sym.scenes.reading import load_scene
-    from crane_sym.sweep import grid
+    from crane_sym.sweep import blocks
     from crane_sym.sweep.grid import run_sweep
-    monkeypatch.setattr(grid.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(blocks.os, "cpu_count", lambda: 2)
     from crane_sym.sweep.spec import plan
     chosen = plan(load_scene("hoist_table1"), ["c=1e4:1e5:12:log", "delta=0.5:3:10"],
                   ["peak_elastic_gearbox_torque"])
     local = run_sweep(chosen, tmp_path / "local")
+    monkeypatch.setattr(blocks, "THREAD_DESIGNS", 40)    # blocks of 40 on the cluster
+    monkeypatch.setattr(blocks, "THREAD_MAX_DESIGNS", 40)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=":0") as cluster:
         remote = run_sweep(chosen, tmp_path / "cluster", scheduler=cluster.scheduler_address)
@@ -323,7 +351,9 @@ def test_with_out_each_simulated_block_is_computed_once(tmp_path, monkeypatch):
             calls.append(tuple(len(b) for b in args[7:]))
         return evaluate(*args)
     monkeypatch.setattr(grid, "evaluate_block", counting)
-    monkeypatch.setattr(grid, "BATCH_DESIGNS", 40)   # several blocks of a small grid
+    from crane_sym.sweep import blocks
+    monkeypatch.setattr(blocks, "THREAD_DESIGNS", 40)   # several blocks of a small grid
+    monkeypatch.setattr(blocks, "THREAD_MAX_DESIGNS", 40)
     chosen = plan(load_scene("hoist_table1"), ["c=1e4:1e5:12:log", "delta=0.5:3:10"],
                   ["peak_elastic_gearbox_torque"])
     result = grid.run_sweep(chosen, tmp_path / "out", scheduler="synchronous")

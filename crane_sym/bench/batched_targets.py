@@ -4,7 +4,8 @@
 - 10⁴ designs in one block on one core in at most 1 s (the least of
   three runs, each printed), at least 500× the per-design loop (from
   :func:`crane_sym.bench.batched.bench_batched`);
-- 10⁶ designs as a sweep (blocks on Dask's local processes, nothing written)
+- 10⁶ designs as a sweep (blocks on Dask's local scheduler, nothing written:
+  threads for a NumPy-bound output, :mod:`crane_sym.sweep.blocks`)
   in at most 2 minutes and 1 GiB: run in a child process, its time and the
   largest summed resident memory of it and its workers, sampled every 50 ms
   (:func:`large_row`);
@@ -14,18 +15,18 @@
   integrator run whose output is within 1e-6 and 1e-9 of the peak; its mean
   time a design is extrapolated to the grid (stated) and set against the
   batched time of the grid, targets 100× and 1000× (:func:`ivp_rows`);
-- parallel efficiency on 2 cores: the grid's blocks by Dask's processes
-  against the same blocks computed one after the other in this process
-  without Dask (:func:`parallel_row`), no target;
+- parallel efficiency on 2 cores: 9·10⁴ designs by Dask's threads in the
+  blocks a local sweep makes against the same blocks one after the other
+  in this process without Dask, target 70 %, with an np.sin control
+  (:func:`crane_sym.bench.thread_blocks.thread_row`; it replaces the row of
+  10⁴ designs on processes, which a sweep now solves as one block);
 - the worst case of the grid against the per-design solver: the designs
   whose batched value is within 1 % of the worst, and a seeded sample, run
   by the per-design solver (:func:`worst_row`).
 """
 from __future__ import annotations
 
-import itertools
 import json
-import math
 import subprocess
 import sys
 import threading
@@ -37,9 +38,11 @@ import numpy as np
 from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
-from crane_sym.sweep.grid import chunks_for, evaluate_block, run_sweep
+from crane_sym.bench.thread_blocks import markdown_row as thread_markdown_row
+from crane_sym.bench.thread_blocks import thread_row
+from crane_sym.sweep.grid import evaluate_block, run_sweep
 
-__all__ = ["large_row", "ivp_rows", "parallel_row", "worst_row", "markdown_rows"]
+__all__ = ["large_row", "ivp_rows", "worst_row", "markdown_rows"]
 
 #: The targets: seconds for 10⁴ designs, the speed-up over the per-design
 #: loop, seconds and bytes for 10⁶, speed-ups over solve_ivp at 1e-6 and 1e-9.
@@ -149,57 +152,6 @@ def _family(case: BatchedBenchCase, sample: int, seed: int):
     return (lambda i: case.run(q, dict(chosen.options), i)), picks
 
 
-def parallel_row(case: BatchedBenchCase) -> dict[str, Any]:
-    """The 10⁴-design grid in the blocks a 2-worker sweep makes: by Dask's
-    processes (the sweep) against the same blocks one after the other here."""
-    chosen, call, axes = _call(case, case.n)
-    chunks = chunks_for(chosen, workers=2)
-    starts = [np.cumsum((0,) + c) for c in chunks]
-    evaluate_block(*call, *[a[:2] for a in axes])
-    start, cpu = time.perf_counter(), time.process_time()
-    blocks = []
-    for ix in np.ndindex(*[len(c) for c in chunks]):
-        parts = [a[s[i]:s[i + 1]] for a, s, i in zip(axes, starts, ix)]
-        blocks.append(evaluate_block(*call, *parts))
-    alone = time.perf_counter() - start
-    alone_cpu = time.process_time() - cpu
-    start = time.perf_counter()
-    # the same blocks (a local sweep of this grid would make it one block)
-    size = max(math.prod(parts) for parts in itertools.product(*chunks))
-    result = run_sweep(chosen, None, scheduler="processes", chunk_bytes=8 * size)
-    dask_seconds = time.perf_counter() - start
-    assert result.blocks == len(blocks), (result.blocks, len(blocks))
-    warm = _warm_pool_seconds(chosen, chunks, case.output, (*call, *[a[:2] for a in axes]))
-    worst = max(float(np.nanmax(b)) for b in blocks)
-    return {"designs": chosen.points, "blocks": len(blocks), "workers": 2,
-            "no_dask_seconds": alone, "no_dask_cpu_seconds": alone_cpu,
-            "dask_seconds": dask_seconds, "dask_compute_seconds": result.seconds,
-            "efficiency": alone / (2 * dask_seconds),
-            "warm_seconds": warm, "warm_efficiency": alone / (2 * warm),
-            "same_worst": worst == result.worst[case.output][0]}
-
-
-def _warm_pool_seconds(chosen, chunks, output: str, tiny: tuple) -> float:
-    """The same blocks by Dask's process scheduler on a pool of two workers
-    started, and made to import the package (``tiny``: the arguments of a
-    block of a few designs), before the clock."""
-    import dask
-    from concurrent.futures import ProcessPoolExecutor
-
-    from dask.multiprocessing import get_context, initialize_worker_process
-
-    from crane_sym.sweep.grid import grid_arrays
-    with ProcessPoolExecutor(2, mp_context=get_context(),
-                             initializer=initialize_worker_process) as pool:
-        lazy = grid_arrays(chosen, chunks)[output]
-        # each worker imports the package on a tiny block (both busy at once)
-        for done in [pool.submit(evaluate_block, *tiny) for _ in "ab"]:
-            done.result()
-        start = time.perf_counter()
-        dask.compute(lazy, scheduler="processes", pool=pool)
-        return time.perf_counter() - start
-
-
 def worst_row(case: BatchedBenchCase, sample: int = 40, seed: int = 28) -> dict[str, Any]:
     """The grid's worst case by the batched solver against the per-design
     solver at every design within 1 % of it and at a seeded sample."""
@@ -255,6 +207,8 @@ def markdown_rows(r: dict[str, Any]) -> list[str]:
                      f"sampled designs, extrapolated to {v['designs']}: "
                      f"{v['extrapolated_seconds']:.0f} s) | {v['speedup']:.0f}× | "
                      f"≥ {v['target']:g}× | {met(v['met'])} |")
+    if "threads" in r:
+        lines.append(thread_markdown_row(r["threads"]))
     if "worst" in r:
         w = r["worst"]
         lines.append(f"| worst case of the {w['designs']} designs against the per-design "
@@ -263,17 +217,6 @@ def markdown_rows(r: dict[str, Any]) -> list[str]:
                      f"{abs(w['batched_worst'] - w['per_design_worst']) / w['per_design_worst']:.1e}"
                      f" (largest on the checked {w['max_rel_difference']:.1e}) | ≤ 1e-9 | "
                      f"{met(w['met'])} |")
-    if "parallel" in r:
-        p = r["parallel"]
-        lines += ["", f"Parallel efficiency on 2 cores: {p['designs']} designs in {p['blocks']} "
-                  f"blocks, Dask's processes {p['dask_seconds']:.2f} s (pool start included; "
-                  f"compute {p['dask_compute_seconds']:.2f} s) against the same blocks one after "
-                  f"the other in one process without Dask {p['no_dask_seconds']:.2f} s "
-                  f"({p['no_dask_cpu_seconds']:.2f} s CPU): efficiency "
-                  f"{100 * p['efficiency']:.0f} %; on a pool of two processes started (and "
-                  f"importing the package) before the clock {p['warm_seconds']:.2f} s: "
-                  f"{100 * p['warm_efficiency']:.0f} % (no target; same worst: "
-                  f"{p['same_worst']})."]
     ivp = r.get("ivp", [])
     if ivp:
         lines += ["", "Fastest integrator settings per sampled design: " + "; ".join(
@@ -303,8 +246,8 @@ def run_targets(rows: list[dict[str, Any]], designs: int = 10**6) -> dict[str, A
     one = next(r for r in rows if r["paper"] == paper and r["output"] == case.output)
     say = progress.current()
     out: dict[str, Any] = {"one_block": one}
-    with say.task("  blocks in parallel"):
-        out["parallel"] = parallel_row(case)
+    with say.task("  9·10⁴ designs on two threads"):
+        out["threads"] = thread_row(case)
     with say.task("  the worst design"):
         out["worst"] = worst_row(case)
     with say.task(f"  {designs:.0e} designs"):

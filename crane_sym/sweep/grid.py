@@ -29,7 +29,8 @@ measurement did not favour them (Martyntsiv et al.'s drum, 24 designs: threads 1
 14.1 s, synchronous 11.1 s at load ≈ 3 on 2 cores): starting two worker
 processes costs ~3 s and the second core was busy; they are kept for large
 simulated sweeps on a machine with free cores, the case they serve. A
-component file's outputs run synchronously: a block asked for three times is
+NumPy-bound batched output (``SweepOutput.threads``) runs on threads, in few
+large blocks (:mod:`crane_sym.sweep.blocks`). A component file's outputs run synchronously: a block asked for three times is
 solved once in the process (:mod:`crane_sym.components.designs`). With
 ``scheduler=ADDRESS`` a ``dask.distributed`` scheduler runs the same graph
 (its workers must see ``out``: a shared file system, or one machine).
@@ -40,7 +41,6 @@ import contextlib
 import functools
 import importlib
 import math
-import os
 import shutil
 import time
 import warnings
@@ -52,6 +52,7 @@ import numpy as np
 
 from crane_sym import registry
 from crane_sym.output_files import Stage
+from crane_sym.sweep.blocks import BATCH_DESIGNS, CHUNK_BYTES, chunks_for, local_scheduler
 from crane_sym.sweep.compute import (compute_local, compute_remote, connect,
                                      cycles_collected_after, scheduler_lost)
 from crane_sym.sweep.dataset import dataset, sweep_id
@@ -63,11 +64,6 @@ __all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "MAX_BLOCKS", "MAX_PLOT", "SweepResul
            "chunks_for", "connect", "evaluate_block", "grid_arrays", "plotted", "run_sweep",
            "scheduler_lost", "strided", "sweep_id"]
 
-#: Bytes of float64 output per block of the grid (closed forms).
-CHUNK_BYTES = 8 * 2**20
-#: The most designs in a block of an output solved a block at a time
-#: (``SweepOutput.batched``): its memory grows with the designs of a block.
-BATCH_DESIGNS = 10_000
 #: The most blocks (all outputs together) a sweep plans: Dask keeps a few
 #: tasks per block in memory and spends ~0.1 ms a task.
 MAX_BLOCKS = 100_000
@@ -134,44 +130,6 @@ def evaluate_block(derivation: str, output: str, kind: str, args: tuple[str, ...
         with cycles_collected_after() if spec.batched else contextlib.nullcontext():
             result = spec.evaluate(values, options)
     return np.ascontiguousarray(np.broadcast_to(np.asarray(result, dtype=float), shape))
-
-
-def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
-               workers: int | None = None) -> tuple[tuple[int, ...], ...]:
-    """Chunks of the grid: by bytes for closed forms; for simulated outputs
-    small enough to give every worker several blocks (one design costs ms);
-    for outputs that solve a block's designs together (``SweepOutput.batched``)
-    one block per worker, at most :data:`BATCH_DESIGNS` designs (a batched
-    solver pays its per-round overhead once per block); on the local machine
-    (``workers`` not given) a grid of at most :data:`BATCH_DESIGNS` designs is
-    one block, which :func:`run_sweep` solves in this process unless a
-    scheduler is named: worker processes take ~3 s to start, more than such
-    a block (10⁴ designs of 001's emergency stop: ~1 s).
-
-    Parameters
-    ----------
-    plan : SweepPlan
-        The checked sweep.
-    chunk_bytes : int, optional
-        Size of a block of a closed form.
-    workers : int, optional
-        Workers to share the blocks (default: the cores).
-    """
-    from dask.array.core import normalize_chunks
-    simulated = [o for o in plan.outputs if o.kind != "closed"]
-    if simulated:
-        local = workers is None
-        workers = workers or os.cpu_count() or 1
-        specs = ({} if all(o.kind == "component" for o in simulated)
-                 else registry.sweep_outputs(plan.derivation))
-        if all(o.kind == "component" or getattr(specs.get(o.name), "batched", False)
-               for o in simulated):
-            designs = (plan.points if local and plan.points <= BATCH_DESIGNS
-                       else min(BATCH_DESIGNS, math.ceil(plan.points / workers)))
-        else:
-            designs = math.ceil(plan.points / (4 * workers))
-        chunk_bytes = max(8, min(chunk_bytes, 8 * designs))
-    return normalize_chunks("auto", plan.shape, limit=chunk_bytes, dtype=np.float64)
 
 
 def grid_arrays(plan: SweepPlan, chunks) -> dict[str, Any]:
@@ -303,9 +261,10 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
     the designs within the limit and the PNG's data, in one pass over the
     blocks.
 
-    ``scheduler``: None for Dask's local scheduler (threads for closed forms,
-    processes for simulated responses, synchronous for a component file's or
-    a grid of one block), ``"synchronous"``, ``"threads"``, ``"processes"``,
+    ``scheduler``: None for Dask's local scheduler
+    (:func:`crane_sym.sweep.blocks.local_scheduler`: threads for closed forms
+    and NumPy-bound batched outputs, processes for other simulated responses,
+    synchronous for a component file's or a grid of one block), ``"synchronous"``, ``"threads"``, ``"processes"``,
     or the address of a ``dask.distributed`` scheduler.
     On a failure or signal, the tasks that write are stopped (local pools) or
     cancelled and waited for (a live scheduler) before the partial dataset is
@@ -360,10 +319,7 @@ def run_sweep(plan: SweepPlan, out: Path | Stage | None, *, scheduler: str | Non
         once = lazy if simulated and tmp is not None else None
         local = scheduler if client is None else None
         if client is None and local is None:
-            kinds = {o.kind for o in plan.outputs}
-            one_block = all(len(c) == 1 for c in chunks)
-            local = ("threads" if kinds == {"closed"} else
-                     "synchronous" if kinds == {"component"} or one_block else "processes")
+            local = local_scheduler(plan, chunks)
         # imported before the clock (Dask looks for a distributed client on its
         # first compute): the time printed is the sweep's, not the imports'
         for module in ("distributed",) + (("xarray", "zarr") if tmp is not None else ()):

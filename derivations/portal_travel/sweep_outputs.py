@@ -10,7 +10,9 @@ forms, events and extrema batched; the two equal sides' repeated eigenvalues
 clustered). It agrees with the per-design run of each design to 1e-9
 (``tests/test_batched.py``). The backlash φ_b is no scene parameter (the
 scene's report runs each value of its options): give it with ``--at`` or
-``--vary``.
+``--vary``. Its block is Python-bound (each design assembled and switched in
+Python, ``threads`` not set): a sweep runs its blocks on processes, a grid of
+at most 10⁴ designs as one block in this process (``crane_sym.sweep.blocks``).
 """
 from __future__ import annotations
 
