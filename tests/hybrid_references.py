@@ -1,7 +1,9 @@
 """Independent references for the papers' hybrid models: their equations of
 motion written out by hand from the papers (001: the two-mass hoist of Fig. 9;
-003: the three-mass travel drive of Fig. 11), integrated by SciPy's DOP853 with
-events at rtol 1e-12. No crane_sym code: the closed forms' route is what they check."""
+003: the three-mass travel drive of Fig. 11), and for the component examples
+that stand on the ground (a load lifted from a girder), integrated by SciPy's
+DOP853 with events at rtol 1e-12. No crane_sym code: the closed forms' route
+is what they check."""
 from __future__ import annotations
 
 import numpy as np
@@ -168,3 +170,26 @@ def _sampled(pieces, load):
                 out[inside] = load(sol(times[inside]))
         return out
     return output
+
+
+def girder_reference(m_g, c_g, m, c, v, duration):
+    """A load m lifted at the constant speed v through a rope c from a girder
+    m_g on its stiffness c_g, in the ground's frame, x down, from the instant
+    of lift-off (deviations from it): F = m g + c (x_l − x_g + v t),
+    m_g ẍ_g = −c_g x_g + (F − m g), m ẍ_l = m g − F, all at rest at 0.
+    Returns (times, F − m g) of the rope's local maxima (the events Ḟ = 0
+    falling) and at the run's two ends."""
+    def dynamic(t, y):
+        return c * (y[2] - y[0] + v * t)
+
+    def rhs(t, y):
+        extra = dynamic(t, y)
+        return np.array([y[1], (-c_g * y[0] + extra) / m_g, y[3], -extra / m])
+
+    rate = _event(lambda t, y: y[3] - y[1] + v, -1)
+    rate.terminal = False
+    sol = solve_ivp(rhs, (0.0, duration), np.zeros(4), method="DOP853", rtol=RTOL,
+                    atol=ATOL * 1e-3, events=[rate])
+    times = np.concatenate([[0.0], sol.t_events[0], [duration]])
+    states = np.vstack([np.zeros(4), sol.y_events[0], sol.y[:, -1]])
+    return times, np.array([dynamic(t, y) for t, y in zip(times, states)])
