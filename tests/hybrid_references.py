@@ -193,3 +193,50 @@ def girder_reference(m_g, c_g, m, c, v, duration):
     times = np.concatenate([[0.0], sol.t_events[0], [duration]])
     states = np.vstack([np.zeros(4), sol.y_events[0], sol.y[:, -1]])
     return times, np.array([dynamic(t, y) for t, y in zip(times, states)])
+
+
+def lift_off_reference(m, c, g, speeds, breakpoints, duration):
+    """A load m on the ground lifted through a rope c by a drive that moves at
+    ``speeds[k]`` (x down) from ``breakpoints[k]``, from rest with the rope just
+    taut: y the load's position (down, the ground at 0), s(t) the drive's,
+    F = c (y − s). Resting (y = ẏ = 0) while R = m g − F ≥ 0, lifting off as
+    R falls through 0; off the ground m ÿ = m g − F, set down at rest (held
+    if R ≥ 0) as y rises through 0. Returns (events [(time, name)], F(times))."""
+    edges = list(breakpoints) + [duration]
+
+    def drive(t):
+        k = max(i for i in range(len(speeds)) if breakpoints[i] <= t)
+        return sum(v * (min(t, edges[i + 1]) - edges[i]) for i, v in enumerate(speeds[:k + 1])
+                   if edges[i] < t)
+
+    mode = {"resting": True}
+
+    def force(t, y):
+        return c * (y[0] - drive(t))
+
+    def rhs(t, y):
+        if mode["resting"]:
+            return np.zeros(2)
+        return np.array([y[1], g - force(t, y) / m])
+
+    def events():
+        if mode["resting"]:
+            return [_event(lambda t, y: m * g - force(t, y), -1)]
+        return [_event(lambda t, y: y[0], 1)]
+
+    found = []
+
+    def on_event(i, t, y):
+        name = "lifts off" if mode["resting"] else "sets down"
+        found.append((t, name))
+        if name == "sets down":
+            y = np.zeros(2)
+            mode["resting"] = m * g - force(t, y) >= 0
+        else:
+            mode["resting"] = False
+        return y
+
+    pieces, t, y = [], 0.0, np.zeros(2)
+    for until in edges[1:]:
+        t, y = _integrate(rhs, events, on_event, t, min(until, duration), y, pieces, 1e-3)
+    return found, _sampled(pieces, lambda y: y[0]), drive
