@@ -48,13 +48,15 @@ from crane_sym.components.reading import read_component_file
 from crane_sym.mechanics.phase_table import HybridRun
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
-__all__ = ["OUTPUTS", "Designs", "Field", "Templates", "designs", "evaluate_block",
+__all__ = ["OUTPUTS", "REACTION", "Designs", "Field", "Templates", "designs", "evaluate_block",
            "structure"]
 
 #: The outputs of each elastic link: suffix -> what it is.
 OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
            "factor": "dynamic factor of the elastic link {link}: its largest |load| over "
                      "|{reference}|"}
+#: The output of each ground contact, ``<contact>.reaction``.
+REACTION = "largest reaction of the ground contact {contact} over the run"
 @dataclass(frozen=True)
 class Field:
     """A value of one component that a sweep may vary: ``<component>.<key>``,
@@ -200,13 +202,17 @@ class Designs:
         return out
 
     def outputs(self) -> dict[str, tuple[int, str, str]]:
-        """Output name -> (link index, ``peak`` or ``factor``, SI unit)."""
+        """Output name -> (link index, ``peak`` or ``factor``, SI unit), and
+        (contact index, ``reaction``, SI unit) for each ground contact."""
         out = {}
         for i, link in enumerate(self.model.assembly.links):
             motion = self.model.assembly.motion(link)
             for kind in OUTPUTS:
                 unit = UNITS["load"][motion] if kind == "peak" else "1"
                 out[f"{link.part.name}.{kind}"] = (i, kind, unit)
+        for j, contact in enumerate(self.model.assembly.contacts):
+            motion = self.model.assembly.bodies[contact.part.body].motion
+            out[f"{contact.part.name}.reaction"] = (j, "reaction", UNITS["load"][motion])
         return out
 
     def depends(self, output: str) -> tuple[str, ...]:
@@ -260,6 +266,10 @@ class Designs:
         for k, at in enumerate(np.ndindex(shape)):
             model = self.design({n: float(a[at]) for n, a in zip(names, arrays)})
             mode, x0, system = self.start(model)
+            if kind == "reaction":
+                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
+                                      system.contact_load(index)))
+                continue
             runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
                                   system.link_load(index)))
             ref = start_load(system, mode, x0, index)[1]
@@ -270,7 +280,7 @@ class Designs:
             raise RuntimeError(f"{output}: more than {MAX_PHASES} phases in the run of design {k} "
                                "of a block")
         peak = np.abs(result.value)
-        return (peak if kind == "peak" else peak / reference).reshape(shape)
+        return (peak if kind in ("peak", "reaction") else peak / reference).reshape(shape)
 
     def per_design(self, output: str, values: Mapping[str, np.ndarray],
                    exact: bool | None = None) -> np.ndarray:
@@ -288,6 +298,9 @@ class Designs:
             parts = self.parts({n: float(a[at]) for n, a in zip(names, arrays)})
             run = Model(parts, self.model.name).run(f.duration, f.body, f.speed, exact=exact,
                                                     rest=f.rest)
+            if kind == "reaction":
+                out[at] = abs(run.reactions[index].value)
+                continue
             peak = run.peaks[index]
             out[at] = abs(peak.value) if kind == "peak" else (
                 abs(peak.factor) if peak.factor is not None else math.nan)
