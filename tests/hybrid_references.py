@@ -1,7 +1,9 @@
 """Independent references for the papers' hybrid models: their equations of
 motion written out by hand from the papers (001: the two-mass hoist of Fig. 9;
-003: the three-mass travel drive of Fig. 11), integrated by SciPy's DOP853 with
-events at rtol 1e-12. No crane_sym code: the closed forms' route is what they check."""
+003: the three-mass travel drive of Fig. 11), and for the component examples
+that stand on the ground (a load lifted from a girder), integrated by SciPy's
+DOP853 with events at rtol 1e-12. No crane_sym code: the closed forms' route
+is what they check."""
 from __future__ import annotations
 
 import numpy as np
@@ -168,3 +170,73 @@ def _sampled(pieces, load):
                 out[inside] = load(sol(times[inside]))
         return out
     return output
+
+
+def girder_reference(m_g, c_g, m, c, v, duration):
+    """A load m lifted at the constant speed v through a rope c from a girder
+    m_g on its stiffness c_g, in the ground's frame, x down, from the instant
+    of lift-off (deviations from it): F = m g + c (x_l − x_g + v t),
+    m_g ẍ_g = −c_g x_g + (F − m g), m ẍ_l = m g − F, all at rest at 0.
+    Returns (times, F − m g) of the rope's local maxima (the events Ḟ = 0
+    falling) and at the run's two ends."""
+    def dynamic(t, y):
+        return c * (y[2] - y[0] + v * t)
+
+    def rhs(t, y):
+        extra = dynamic(t, y)
+        return np.array([y[1], (-c_g * y[0] + extra) / m_g, y[3], -extra / m])
+
+    rate = _event(lambda t, y: y[3] - y[1] + v, -1)
+    rate.terminal = False
+    sol = solve_ivp(rhs, (0.0, duration), np.zeros(4), method="DOP853", rtol=RTOL,
+                    atol=ATOL * 1e-3, events=[rate])
+    times = np.concatenate([[0.0], sol.t_events[0], [duration]])
+    states = np.vstack([np.zeros(4), sol.y_events[0], sol.y[:, -1]])
+    return times, np.array([dynamic(t, y) for t, y in zip(times, states)])
+
+
+def lift_off_reference(m, c, g, speeds, breakpoints, duration):
+    """A load m on the ground lifted through a rope c by a drive that moves at
+    ``speeds[k]`` (x down) from ``breakpoints[k]``, from rest with the rope just
+    taut: y the load's position (down, the ground at 0), s(t) the drive's,
+    F = c (y − s). Resting (y = ẏ = 0) while R = m g − F ≥ 0, lifting off as
+    R falls through 0; off the ground m ÿ = m g − F, set down at rest (held
+    if R ≥ 0) as y rises through 0. Returns (events [(time, name)], F(times))."""
+    edges = list(breakpoints) + [duration]
+
+    def drive(t):
+        k = max(i for i in range(len(speeds)) if breakpoints[i] <= t)
+        return sum(v * (min(t, edges[i + 1]) - edges[i]) for i, v in enumerate(speeds[:k + 1])
+                   if edges[i] < t)
+
+    mode = {"resting": True}
+
+    def force(t, y):
+        return c * (y[0] - drive(t))
+
+    def rhs(t, y):
+        if mode["resting"]:
+            return np.zeros(2)
+        return np.array([y[1], g - force(t, y) / m])
+
+    def events():
+        if mode["resting"]:
+            return [_event(lambda t, y: m * g - force(t, y), -1)]
+        return [_event(lambda t, y: y[0], 1)]
+
+    found = []
+
+    def on_event(i, t, y):
+        name = "lifts off" if mode["resting"] else "sets down"
+        found.append((t, name))
+        if name == "sets down":
+            y = np.zeros(2)
+            mode["resting"] = m * g - force(t, y) >= 0
+        else:
+            mode["resting"] = False
+        return y
+
+    pieces, t, y = [], 0.0, np.zeros(2)
+    for until in edges[1:]:
+        t, y = _integrate(rhs, events, on_event, t, min(until, duration), y, pieces, 1e-3)
+    return found, _sampled(pieces, lambda y: y[0]), drive

@@ -21,6 +21,7 @@ FIG9 = "hoist_fig9.toml"
 SLACK = "slack_rope.toml"
 SWAY = "trolley_sway.toml"
 JIB = "jib_reeve_failure.toml"
+GIRDER, LIFT = "girder_hoist.toml", "lift_off.toml"
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
 PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
@@ -113,6 +114,32 @@ ROWS = {
                                            r"brake 'service_brakes': fails_at must be > its "
                                            r"delay 0\.4 s \(it releases once engaged\), got "
                                            r"'0\.2 s'"),
+    # the fixed ground as a link's end, and a body's contact with it
+    "ground to itself": Fault(GIRDER, 'between = ["ground", "girder"]',
+                              'between = ["ground", "ground"]',
+                              r"component model 'girder_hoist': elastic link 'structure' joins "
+                              r"the ground to itself"),
+    "a body named ground": Fault(GIRDER, 'name = "girder"', 'name = "ground"',
+                                 r"mass name 'ground' is reserved for the fixed end a link may "
+                                 r"name in 'between'; call the body something else"),
+    "contact direction up": Fault(LIFT, 'direction = "+"', 'direction = "up"',
+                                  r"ground contact 'ground_support': direction must be '\+' or "
+                                  r"'-', got 'up'"),
+    "contact on an unknown body": Fault(LIFT, 'body = "load"\ndirection',
+                                        'body = "lode"\ndirection',
+                                        r"component model 'lift_off': ground contact "
+                                        r"'ground_support' names unknown body 'lode'; did you "
+                                        r"mean 'load'\?"),
+    "contact with a steady start": Fault(LIFT, 'start = "rest"\n', 'start = "steady"\n',
+                                         r"(component model 'lift_off': )?ground contact "
+                                         r"'ground_support': a body on the ground starts at "
+                                         r"rest; give \[run\] start = \"rest\""),
+    "two contacts on one body": Fault(LIFT, "[run]",
+                                      '[[ground_contact]]\nname = "floor"\nbody = "load"\n\n'
+                                      "[run]",
+                                      r"component model 'lift_off': ground contact 'floor': "
+                                      r"ground contact 'ground_support' rests the same rigid "
+                                      r"group on the ground already"),
     # the model's bounds (crane_sym.components.model_limits), before it is derived
     "duration 1e5 s": Fault(TRAVEL, 'duration = "1.5 s"', 'duration = "1e5 s"',
                             r"component model 'travel_braking_000': "
@@ -142,12 +169,13 @@ COMMANDS = {"run": ["run", "{file}", "--out", "{out}"],
 #: others are values that were tracebacks, warnings or anonymous messages.
 BOUNDS = {"duration 1e5 s", "stiffness 1e20 N/m", "20 backlash links", "25 elastic links",
           "50 ramp brakes", "200 geared inertias"}
-#: `model show` reads no [run] table: the run's speed is not its input, and
-#: it solves no run.
+#: `model show` reads no [run] table: the run's speed and start are not its
+#: input, and it solves no run.
 PAIRS = [pytest.param(case, command, marks=pytest.mark.harm(
              "bounds" if case in BOUNDS else "one-line"))
          for case in ROWS for command in COMMANDS
-         if command != "model show" or case != "speed 1e308 rpm"]
+         if command != "model show" or case not in ("speed 1e308 rpm",
+                                                    "contact with a steady start")]
 
 
 @pytest.mark.parametrize("case,command", PAIRS)

@@ -50,7 +50,7 @@ from crane_sym.components.reading import read_component_file
 from crane_sym.mechanics.phase_table import HybridRun
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
-__all__ = ["OUTPUTS", "Designs", "Field", "Templates", "designs", "evaluate_block",
+__all__ = ["OUTPUTS", "REACTION", "Designs", "Field", "Templates", "designs", "evaluate_block",
            "structure"]
 
 #: The outputs of each elastic link: suffix -> what it is.
@@ -61,6 +61,8 @@ OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
                     "the load's weight"}
 #: The unit of each output but the peak (a load, by the link's motion).
 _UNITS = {"factor": "1", "angle": "rad"}
+#: The output of each ground contact, ``<contact>.reaction``.
+REACTION = "largest reaction of the ground contact {contact} over the run"
 
 
 @dataclass(frozen=True)
@@ -208,7 +210,8 @@ class Designs:
         return out
 
     def outputs(self) -> dict[str, tuple[int, str, str]]:
-        """Output name -> (link index, ``peak`` or ``factor``, SI unit)."""
+        """Output name -> (link index, ``peak`` or ``factor``, SI unit), and
+        (contact index, ``reaction``, SI unit) for each ground contact."""
         out = {}
         for i, link in enumerate(self.model.assembly.links):
             motion = self.model.assembly.motion(link)
@@ -217,6 +220,9 @@ class Designs:
                     continue
                 unit = UNITS["load"][motion] if kind == "peak" else _UNITS[kind]
                 out[f"{link.part.name}.{kind}"] = (i, kind, unit)
+        for j, contact in enumerate(self.model.assembly.contacts):
+            motion = self.model.assembly.bodies[contact.part.body].motion
+            out[f"{contact.part.name}.reaction"] = (j, "reaction", UNITS["load"][motion])
         return out
 
     def depends(self, output: str) -> tuple[str, ...]:
@@ -270,6 +276,10 @@ class Designs:
         for k, at in enumerate(np.ndindex(shape)):
             model = self.design({n: float(a[at]) for n, a in zip(names, arrays)})
             mode, x0, system = self.start(model)
+            if kind == "reaction":
+                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
+                                      system.contact_load(index)))
+                continue
             runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
                                   system.link_load(index)))
             ref = start_load(system, mode, x0, index)[1]
@@ -280,7 +290,7 @@ class Designs:
             raise RuntimeError(f"{output}: more than {MAX_PHASES} phases in the run of design {k} "
                                "of a block")
         peak = np.abs(result.value)
-        return (peak if kind == "peak" else peak / reference).reshape(shape)
+        return (peak if kind in ("peak", "reaction") else peak / reference).reshape(shape)
 
     def per_design(self, output: str, values: Mapping[str, np.ndarray],
                    exact: bool | None = None) -> np.ndarray:
@@ -298,6 +308,9 @@ class Designs:
             parts = self.parts({n: float(a[at]) for n, a in zip(names, arrays)})
             run = Model(parts, self.model.name).run(f.duration, f.body, f.speed, exact=exact,
                                                     rest=f.rest)
+            if kind == "reaction":
+                out[at] = abs(run.reactions[index].value)
+                continue
             peak = run.peaks[index]
             out[at] = abs(peak.value) if kind == "peak" else (
                 abs(peak.factor) if peak.factor is not None else math.nan)

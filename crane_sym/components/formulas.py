@@ -77,9 +77,10 @@ def _quantity_names(model: Model) -> dict[str, str]:
     """Every quantity the model's components have a name for -> its kind."""
     a = model.assembly
     out = {}
+    owners = {"body": list(a.bodies), "link": [l.part.name for l in a.links],
+              "contact": [c.part.name for c in a.contacts]}
     for what, (owner, _) in KINDS.items():
-        names = list(a.bodies) if owner == "body" else [l.part.name for l in a.links]
-        out |= {f"{n}.{what}": what for n in names}
+        out |= {f"{n}.{what}": what for n in owners[owner]}
     return out
 
 
@@ -92,7 +93,9 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
         raise ComponentError(f"{where}: unknown quantity {path!r}; "
                              f"{did_you_mean(path, list(known))}a quantity is "
                              f"<body>.reduced_inertia or <link>."
-                             f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'link')}}}")
+                             f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'link')}}} "
+                             f"or <ground contact>."
+                             f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'contact')}}}")
     return path
 
 

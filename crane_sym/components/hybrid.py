@@ -15,6 +15,10 @@ makes the equations of :mod:`crane_sym.components.equations` linear:
   brakes (friction −sign(q̇)·Σ |κ| M β), or held ``0`` (q̇ = 0): a sliding group
   is held when its speed reaches zero while the rest of its load N stays
   within the brakes' capacity Σ |κ| M β, and slides again when N reaches it;
+  a group a ground contact holds is held at x = 0 while the reaction
+  R = s N/κ the rest needs is ≥ 0 (s = ±1, the side the ground is on), lifts
+  off (``free``) where R falls through 0, and is set down (held, at rest:
+  an inelastic touch) where its body returns to x = 0;
 - each brake engaged or not (at its delay), each ramp under way or done,
   each motor on or off (at its instant), each characteristic on its step,
   each motor law on its piece (at its breakpoints).
@@ -105,7 +109,11 @@ class ComponentSystem:
                       if l.part.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
+        self.contacts = list(a.contacts)
         self.events: dict[str, tuple[str, int]] = {}
+        for j, contact in enumerate(self.contacts):
+            self.events[f"{contact.part.name} lifts off"] = ("lift", j)
+            self.events[f"{contact.part.name} sets down"] = ("land", j)
         for j, l in enumerate(self.backlash):
             for kind, name in _contact_events(l.part).items():
                 self.events[name] = (kind, j)
@@ -207,6 +215,16 @@ class ComponentSystem:
                     k += size
         return w, k
 
+    def reaction(self, mode: Mode, j: int) -> tuple[np.ndarray, float]:
+        """The ground's reaction on the body of contact ``j`` as w·x + k: what
+        holds its group at rest, R = s N/κ (0 off the ground)."""
+        contact = self.contacts[j]
+        if mode.motion[contact.group] != HELD:
+            return np.zeros(self.size), 0.0
+        w, k = self.net_load(mode, contact.group)
+        scale = contact.part.sign / contact.kappa
+        return scale * w, scale * k
+
     def matrices(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(A, b) of a mode."""
         A, b = self._matrices(mode)
@@ -265,8 +283,20 @@ class ComponentSystem:
                 out.append(Guard(name["close+"], u, -hi, 1))
                 if np.isfinite(lo):                 # a slack link has no lower flank
                     out.append(Guard(name["close-"], u, -lo, -1))
+        grounded = {c.group for c in self.contacts}
+        for j, contact in enumerate(self.contacts):
+            name, g = contact.part.name, contact.group
+            if mode.motion[g] == HELD:
+                w, k = self.reaction(mode, j)
+                out.append(Guard(f"{name} lifts off", tuple(w), k, -1))
+            else:                               # the body's way towards the ground
+                w = np.zeros(self.size)
+                w[self.q(g)] = contact.part.sign * contact.kappa
+                out.append(Guard(f"{name} sets down", tuple(w), 0.0, 1))
         for g, state in enumerate(mode.motion):
             name = self.assembly.groups[g].name
+            if g in grounded:
+                continue
             if state in (FORWARD, BACKWARD):
                 out.append(Guard(f"{name} rests", tuple(np.eye(self.size)[self.v(g)]), 0.0,
                                  -1 if state == FORWARD else 1))
@@ -303,6 +333,19 @@ class ComponentSystem:
             driven = list(mode.driven)
             driven[i] = False
             return replace(mode, driven=tuple(driven)), x
+        if kind in ("lift", "land"):
+            g = self.contacts[i].group
+            held = HELD
+            if kind == "land":                  # set down at rest, exactly on the ground
+                x[self.q(g)] = x[self.v(g)] = 0.0
+                down = replace(mode, motion=tuple(HELD if j == g else m
+                                                  for j, m in enumerate(mode.motion)))
+                w, k = self.reaction(down, i)
+                held = HELD if float(w @ x + k) >= 0 else FREE
+            else:
+                held = FREE
+            return replace(mode, motion=tuple(held if j == g else m
+                                              for j, m in enumerate(mode.motion))), x
         if kind == "ramped":
             ramping = list(mode.ramping)
             ramping[i] = False
@@ -352,6 +395,11 @@ class ComponentSystem:
         return replace(mode, motion=tuple(motion))
 
     # --- outputs ------------------------------------------------------------------
+    def contact_load(self, j: int):
+        """The reaction of ground contact ``j`` per mode, as (w, k), the
+        output :func:`crane_sym.mechanics.phase_table.largest` takes."""
+        return lambda mode: self.reaction(mode, j)
+
     def link_load(self, index: int):
         """The load of elastic link ``index`` per mode, as (w, k): the output of
         a run that :func:`crane_sym.mechanics.phase_table.largest` and

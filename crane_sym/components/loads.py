@@ -1,7 +1,9 @@
 """What acts on one body of a drive train: brakes, motors (constant, steady or
 a speed characteristic), gravity and constant resistances (a law in time:
-:mod:`crane_sym.components.laws`); and a body's given state at t = 0
-(:class:`Initial`, applied by :mod:`crane_sym.components.initial`).
+:mod:`crane_sym.components.laws`); a body's given state at t = 0
+(:class:`Initial`, applied by :mod:`crane_sym.components.initial`); and a
+one-sided contact of a body with the ground (:class:`GroundContact`, a mode
+of :mod:`crane_sym.components.hybrid`).
 
 Values are text with a unit or numbers in SI (:func:`crane_sym.components.parts.value`);
 a torque on a rotating body is a force on a translating one, checked when the
@@ -17,8 +19,8 @@ from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import (Component, ComponentError, Given, Value, _at_least,
                                         _name, value)
 
-__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "Gravity", "Initial", "Motor",
-           "Resistance", "STEADY"]
+__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "Gravity", "GroundContact",
+           "Initial", "Motor", "Resistance", "STEADY"]
 
 #: A motor torque that holds the drive in its steady motion at the start.
 STEADY = "steady"
@@ -194,6 +196,34 @@ class Initial(Component):
                        ("velocity", None if velocity is None else
                         value(owner, "velocity", velocity))):
             object.__setattr__(self, key, v)
+
+
+@dataclass(frozen=True)
+class GroundContact(Component):
+    """A body resting on the ground, which can push it but never pull: the
+    ground lies on the ``direction`` side of the body ("+": along its
+    coordinate, where a weight of direction "+" pushes it). Resting, the body
+    is held at x = 0 by the reaction R ≥ 0; it lifts off where the R its rest
+    needs would turn negative and is set down (at rest, an inelastic touch)
+    where it comes back to x = 0. No force in Q: it is not among :data:`ACTING`."""
+
+    name: str
+    body: str
+    direction: str = "+"
+    kind = "ground contact"
+
+    def __init__(self, name: str, body: str, direction: str = "+") -> None:
+        name = _name("ground contact", name)
+        if direction not in ("+", "-"):
+            raise ComponentError(f"ground contact {name!r}: direction must be '+' or '-', "
+                                 f"got {direction!r}")
+        for key, val in (("name", name), ("body", body), ("direction", direction)):
+            object.__setattr__(self, key, val)
+
+    @property
+    def sign(self) -> float:
+        """+1 where the ground lies along the body's coordinate, else −1."""
+        return 1.0 if self.direction == "+" else -1.0
 
 
 #: The things that act on one body.

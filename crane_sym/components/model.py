@@ -34,6 +34,7 @@ from typing import Sequence
 
 import numpy as np
 
+from crane_sym.components.contacts import ContactPeak, contact_peaks, resting
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, HELD, ComponentSystem, Mode
 from crane_sym.components.initial import apply, shifts
@@ -102,6 +103,11 @@ class ComponentRun:
                                 "N*m" if motion == ROTATING else "N", static, reference,
                                 link.part.positive, link.part.reports_angle))
         return out
+
+    @cached_property
+    def reactions(self) -> list[ContactPeak]:
+        """The peak reaction of every ground contact, in the order given."""
+        return contact_peaks(self.result, self.system, self.mode, self.x0)
 
     def hybrid_run(self, link: str) -> HybridRun:
         """The run with the load of ``link`` as its output (what a scene's module
@@ -214,6 +220,9 @@ class Model:
         a = self.assembly
         if rest:
             return self._rest_start()
+        if a.contacts:
+            raise ComponentError(f"{a.contacts[0].part.label}: a body on the ground starts at "
+                                 "rest; give [run] start = \"rest\"")
         body = body or next(iter(a.bodies))
         if body not in a.bodies:
             raise ComponentError(f"start: unknown body {body!r}; bodies: {', '.join(a.bodies)}")
@@ -307,7 +316,7 @@ class Model:
             if x[probe.v(g)] != 0:           # given a velocity: it slides that way
                 net, cap = float(x[probe.v(g)]), -1.0
             motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
-        return replace(mode, motion=tuple(motion)), x, {}
+        return resting(probe, replace(mode, motion=tuple(motion)), x), x, {}
 
     def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
                  contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:

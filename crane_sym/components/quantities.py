@@ -25,6 +25,10 @@ A parameter is named ``<component>.<key>`` as the component file writes it
                            a model that never switches)
 ``<link>.peak``            the largest load of the link over the file's run, a number
 ``<link>.factor``          its dynamic factor (peak over the reference or static load)
+``<contact>.reaction``     a ground contact's reaction at rest at the start, every link
+                           unstretched: R = s Q/κ of its body's group (s = ±1, the
+                           ground's side)
+``<contact>.reaction_peak`` its largest reaction over the file's run, a number
 ========================== ===========================================================
 
 A parameter whose value is zero (a shaft without inertia, an undamped link)
@@ -59,9 +63,12 @@ KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to
          **{what: ("link", text) for what, text in MODAL.items()},
          "response": ("link", "its load F(t) in closed form after a start at rest"),
          "peak": ("link", "its largest load over the file's run"),
-         "factor": ("link", "its dynamic factor: peak over reference or static load")}
+         "factor": ("link", "its dynamic factor: peak over reference or static load"),
+         "reaction": ("contact", "the ground's reaction at rest at the start, the links "
+                                 "unstretched"),
+         "reaction_peak": ("contact", "the ground's largest reaction over the file's run")}
 #: Quantities that are numbers of the file's run, not symbolic.
-NUMERIC = ("peak", "factor")
+NUMERIC = ("peak", "factor", "reaction_peak")
 
 
 @dataclass(frozen=True)
@@ -280,6 +287,8 @@ def derived_quantity(model: Model, path: str, run=None,
         return Quantity(path, inertia, DIMENSIONS[key][body.motion], UNITS[key][body.motion],
                         f"∂²T/∂q̇² of the rigid group of {body.label}, referred to it "
                         "(divided by its κ²)")
+    if KINDS[what][0] == "contact":
+        return _contact_quantity(model, path, run)
     link = _link(model, name) if name in [l.part.name for l in a.links] else None
     if link is None:
         raise ComponentError(f"quantity {path!r}: no elastic link {name!r}; links: "
@@ -324,3 +333,35 @@ def derived_quantity(model: Model, path: str, run=None,
                     f"the peak {peak.value:.6g} {peak.unit} over {peak.reference:.6g} "
                     f"{peak.unit}", numeric=True)
 
+
+
+def _contact_quantity(model: Model, path: str, run) -> Quantity:
+    """``<contact>.reaction`` in the symbols, or ``<contact>.reaction_peak`` of
+    the run (see the module docstring)."""
+    a, eq = model.assembly, model.equations
+    name, _, what = path.partition(".")
+    found = [c for c in a.contacts if c.part.name == name]
+    if not found:
+        raise ComponentError(f"quantity {path!r}: no ground contact {name!r}; contacts: "
+                             f"{', '.join(c.part.name for c in a.contacts) or 'none'}")
+    contact = found[0]
+    motion = a.bodies[contact.part.body].motion
+    unit = (DIMENSIONS["load"][motion], UNITS["load"][motion])
+    if what == "reaction_peak":
+        if run is None:
+            raise ComponentError(f"quantity {path!r} needs the file's run")
+        peak = next(r for r in run.reactions if r.contact == name)
+        return Quantity(path, sp.Float(peak.value, 17), *unit,
+                        f"the largest reaction over the run, at t = {peak.time:.6g} s",
+                        numeric=True)
+    q = eq.coordinates[contact.group]
+    load = eq.forces[q].xreplace({on: 1 for on in eq.switches} | {B: 0 for B in eq.friction})
+    load = load.subs({c.diff(eq.t): 0 for c in eq.coordinates})
+    if load.free_symbols & set(eq.signals):
+        raise ComponentError(f"quantity {path!r}: a motor law acts on the body's group, so "
+                             "its reaction at rest is no expression of the parts")
+    kappa = a.place[contact.part.body][2]
+    reaction = contact.part.sign * load / kappa
+    return Quantity(path, sp.simplify(reaction.xreplace(_zeros(model)).xreplace(signed(model))),
+                    *unit, "the group at rest, every link unstretched: R = s Q/κ, motors on, "
+                    "brakes off")

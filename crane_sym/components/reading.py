@@ -29,7 +29,7 @@
 
     [[elastic]]                 # F = c (u - flank) + d u', u = x(second) - x(first)
     name = "coupling"
-    between = ["motor", "shaft"]
+    between = ["motor", "shaft"]   # or ["ground", "girder"]: "ground" is the fixed end
     stiffness = "4e4 N*m/rad"
     damping = "0 N*m*s/rad"     # optional
     backlash = "78.6 deg"       # optional; contact = "positive" (gap below 0) or "negative"

@@ -96,6 +96,11 @@ def report_lines(run: ComponentRun) -> list[str]:
             lines.append(f"peak sway angle of {p.link}: {format_quantity(p.factor)} rad "
                          f"({format_quantity(math.degrees(p.factor))} deg) at t = "
                          f"{format_quantity(p.time, 's')} (its pull over the load's weight)")
+    for r in run.reactions:
+        scale = engineering(max(abs(r.value), abs(r.start)), r.unit)
+        lines.append(f"peak reaction of {r.contact}: {load_text(r.value, r.unit, None, *scale)}"
+                     f" at t = {format_quantity(r.time, 's')} (at the start "
+                     f"{load_text(r.start, r.unit, None, *scale)})")
     for t, event in run.events:
         lines.append(f"event at t = {format_quantity(t, 's', 6)}: {event}")
     return lines
@@ -126,6 +131,11 @@ def results(report: ComponentReport) -> dict:
                                            else number(p.factor), "unit": "1"}})
         if p.angle:
             found[f"{p.link}.angle"] = {"value": number(p.factor), "unit": "rad"}
+    for r in report.run.reactions:
+        found.update({f"{r.contact}.reaction_peak": {"value": number(r.value), "unit": r.unit},
+                      f"{r.contact}.reaction_peak_time": {"value": number(r.time), "unit": "s"},
+                      f"{r.contact}.reaction_start": {"value": number(r.start),
+                                                      "unit": r.unit}})
     return {"scene": model.name, "title": model.title, "model": model.name,
             "results": found,
             "sign_convention": SIGNS.removeprefix("signs: "),
@@ -144,6 +154,8 @@ def _json(run: ComponentRun, name: str) -> str:
                    "static": p.static, "reference": p.reference, "dynamic_factor": p.factor,
                    "positive": p.positive}
                   for p in run.peaks],
+        "reactions": [{"contact": r.contact, "time_s": r.time, "value": r.value,
+                       "unit": r.unit, "start": r.start} for r in run.reactions],
         "events": [{"time_s": float(t), "event": e} for t, e in run.events],
     }, indent=2)
 
@@ -172,6 +184,13 @@ def load_figures(run: ComponentRun, title: str) -> list:
                             [(p.link, times, values(run.result, times,
                                                     run.system.link_load(i)) / factor)],
                             group="elastic links", xlabel="time [s]"))
+    for j, r in enumerate(run.reactions):
+        factor, unit = engineering(max(abs(r.value), abs(r.start)), r.unit)
+        panels.append(Panel(f"reaction of the ground contact {r.contact}",
+                            f"reaction [{unit}]",
+                            [(r.contact, times, values(run.result, times,
+                                                       run.system.contact_load(j)) / factor)],
+                            group="ground contacts", xlabel="time [s]"))
     return figures(panels, title) if panels else []
 
 

@@ -27,11 +27,12 @@ import sympy as sp
 
 from crane_sym import units
 from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import ACTING, Brake, Characteristic, Gravity, Motor
+from crane_sym.components.loads import (ACTING, Brake, Characteristic, Gravity, GroundContact,
+                                        Motor)
 from crane_sym.components.parts import (DIMENSIONS, GROUND, RIGID, ROTATING, TRANSLATING, Body,
                                         Component, ComponentError, Drum, ElasticLink, Gear)
 
-__all__ = ["Assembly", "End", "Group", "Link", "Load", "assemble"]
+__all__ = ["Assembly", "Contact", "End", "Group", "Link", "Load", "assemble"]
 
 #: Relative tolerance of a loop of rigid ratios.
 LOOP_TOLERANCE = 1e-12
@@ -87,6 +88,15 @@ class Load:
 
 
 @dataclass(frozen=True)
+class Contact:
+    """A body's one-sided contact with the ground: its rigid group and κ."""
+
+    part: GroundContact
+    group: int
+    kappa: float
+
+
+@dataclass(frozen=True)
 class End:
     """Where an end of a link sits: its rigid group (None at the ground), and
     κ, its coordinate per unit of the group's, as a number and in the parts'
@@ -112,6 +122,7 @@ class Assembly:
     links: tuple[Link, ...]
     loads: tuple[Load, ...]
     rigid: tuple[Gear | Drum, ...] = ()
+    contacts: tuple[Contact, ...] = ()
 
     def loads_of(self, kind: type) -> list[Load]:
         return [l for l in self.loads if isinstance(l.part, kind)]
@@ -193,12 +204,40 @@ def assemble(components: Sequence[Component]) -> Assembly:
     if len(steady) > 1:
         raise ComponentError(f"{steady[1]}: only one motor may be 'steady' ({steady[0]} is)")
     _speed_laws(loads, groups, place)
+    contacts = _contacts([p for p in components if isinstance(p, GroundContact)], bodies,
+                         place, loads)
     balancing = steady + [l.part.label for l in loads
                           if isinstance(l.part, MotorLaw) and l.part.law == "acceleration"]
     if len(balancing) > 1:
         raise ComponentError(f"{balancing[1]}: only one motor may balance the others "
                              f"({balancing[0]} does: a 'steady' torque or an acceleration law)")
-    return Assembly(bodies, groups, place, links, loads, tuple(rigid))
+    return Assembly(bodies, groups, place, links, loads, tuple(rigid), contacts)
+
+
+def _contacts(parts: list[GroundContact], bodies: dict[str, Body],
+              place: dict[str, tuple[int, float, sp.Expr]],
+              loads: tuple[Load, ...]) -> tuple[Contact, ...]:
+    """Each ground contact on a known body, one a rigid group, on a group that
+    no brake holds and no speed law moves (the contact alone holds it)."""
+    out: list[Contact] = []
+    for part in parts:
+        if part.body not in bodies:
+            raise _unknown(part.label, part.body, list(bodies))
+        g, kappa, _ = place[part.body]
+        for other in out:
+            if other.group == g:
+                raise ComponentError(f"{part.label}: {other.part.label} rests the same rigid "
+                                     "group on the ground already")
+        for load in loads:
+            holds = isinstance(load.part, Brake) or (isinstance(load.part, MotorLaw)
+                                                    and load.part.law == "speed")
+            if holds and place[load.part.body][0] == g:
+                raise ComponentError(f"{part.label}: {load.part.label} acts on the rigid group "
+                                     f"of {bodies[part.body].label}, which the ground holds "
+                                     "while it rests; a contact takes a group without brakes "
+                                     "or speed laws")
+        out.append(Contact(part, g, kappa))
+    return tuple(out)
 
 
 def _speed_laws(loads: tuple[Load, ...], groups: tuple[Group, ...],

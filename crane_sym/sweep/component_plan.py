@@ -20,7 +20,7 @@ from functools import partial
 from pathlib import Path
 
 from crane_sym import units
-from crane_sym.components.designs import OUTPUTS, Designs, designs
+from crane_sym.components.designs import OUTPUTS, REACTION, Designs, designs
 from crane_sym.components.model import start_load
 from crane_sym.components.parts import ComponentError
 from crane_sym.scenes.options import did_you_mean
@@ -75,6 +75,10 @@ def _outputs(found: Designs, names: list[str]) -> tuple[OutputSpec, ...]:
             raise SweepError(f"--output {name!r}: not an output of component model "
                              f"{found.model.name!r}; known: {', '.join(known)}")
         index, kind, unit = known[name]
+        if kind == "reaction":
+            specs.append(OutputSpec(name, "component", found.depends(name), unit,
+                                    REACTION.format(contact=name.rsplit(".", 1)[0])))
+            continue
         link = found.links[index]
         reference = "its reference" if found.model.assembly.links[index].reference \
             is not None else "its load at the start"

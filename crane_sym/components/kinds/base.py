@@ -11,7 +11,7 @@ A key's ``form`` says how the file writes it:
 ``body``     text: the name of a body the part joins or acts on
 ``list``     a list of quantities as text (``["0.4 s", "0.8 s"]``)
 ``law``      numbers only, never text, checked by the law's own reader
-``ends``     the two body names a link joins
+``ends``     the two body names a link joins (one may be ``"ground"``, fixed)
 ============ ==============================================================
 
 A key's ``value`` is a kind of value (a key of
