@@ -96,6 +96,10 @@ class Equations:
     signals: tuple[sp.Symbol, ...] = ()
     link_laws: tuple[sp.Expr, ...] = ()
     stretches: tuple[tuple[sp.Symbol, sp.Symbol], ...] = ()
+    #: The parts' first-order states s (a DC motor's current i) and their
+    #: rates ds/dt, affine in q̇, the states and the signals.
+    states: tuple[sp.Symbol, ...] = ()
+    rates: tuple[sp.Expr, ...] = ()
     #: True for a design of a sweep (:meth:`for_design`): :meth:`numeric`
     #: evaluates the lambdified form shared by every design of the model.
     shared: bool = False
@@ -124,9 +128,37 @@ class Equations:
         f = -rows.subs(zero)
         return M, D, K, sp.expand(f)
 
+    @cached_property
+    def first_order(self) -> tuple[sp.Matrix, ...]:
+        """(∂r/∂q, ∂r/∂q̇, ∂r/∂s, ∂r/∂L, r at 0) of the rates r = ds/dt of the
+        first-order states: r = R_q q + R_v q̇ + R_s s + R_L L + r_0, with L the
+        signals (shared by every design of the model)."""
+        t, qs, n = T_SYMBOL, self.coordinates, len(self.coordinates)
+        plain = [sp.Dummy(f"q{i}") for i in range(n)]
+        speeds = [sp.Dummy(f"v{i}") for i in range(n)]
+        swap = {q.diff(t): v for q, v in zip(qs, speeds)}
+        rows = sp.Matrix(len(self.rates), 1, [r.subs(swap).subs(dict(zip(qs, plain)))
+                                              for r in self.rates])
+        zero = {x: 0 for x in [*plain, *speeds, *self.states, *self.signals]}
+        return tuple(rows.jacobian(x) if rows.rows else sp.zeros(0, len(x))
+                     for x in (plain, speeds, self.states, self.signals)) + (rows.subs(zero),)
+
+    def first_order_numeric(self, extra: dict[sp.Symbol, float] | None = None
+                            ) -> tuple[np.ndarray, ...]:
+        """:attr:`first_order` as arrays, the parameters' values put in (and ``extra``).
+
+        Parameters
+        ----------
+        extra : dict, optional
+            Values solved later (a steady motor's torque).
+        """
+        values = {**self.values, **(extra or {})}
+        return tuple(np.array(m.xreplace(values), dtype=float).reshape(m.shape)
+                     for m in self.first_order)
+
     def _mode_arguments(self) -> list[list[sp.Symbol]]:
         return [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
-                list(self.slopes), list(self.signals)]
+                list(self.slopes), list(self.signals), list(self.states)]
 
     @cached_property
     def _lambdified(self) -> tuple[tuple[sp.Symbol, ...], Callable]:
@@ -162,9 +194,11 @@ class Equations:
             M, D, K, f = (m.xreplace(values) for m in self.linear)
             fn = sp.lambdify(self._mode_arguments(), (M, D, K, f), "numpy")
 
-        def evaluate(chi, delta, on, friction, slopes=(), signals=()):
+        def evaluate(chi, delta, on, friction, slopes=(), signals=(), states=()):
             signals = list(signals) or [0.0] * len(self.signals)
-            out = fn(list(chi), list(delta), list(on), list(friction), list(slopes), signals)
+            states = list(states) or [0.0] * len(self.states)
+            out = fn(list(chi), list(delta), list(on), list(friction), list(slopes), signals,
+                     states)
             return tuple(np.array(m, dtype=float) for m in out[:3]) + \
                 (np.array(out[3], dtype=float).reshape(-1),)
         return evaluate
@@ -175,7 +209,8 @@ class Equations:
         upright as its subscript (``c_{\\mathrm{gearbox\\_mesh}}``)."""
         names: dict[sp.Basic, str] = {}
         symbols = [*self.values, *self.contact, *self.flank, *self.switches,
-                   *self.friction, *self.motor_loads, *self.slopes, *self.signals]
+                   *self.friction, *self.motor_loads, *self.slopes, *self.signals,
+                   *self.states]
         for s in [*symbols, *self.coordinates]:
             text = s.name if isinstance(s, sp.Symbol) else type(s).__name__
             head, _, rest = text.partition("_")
@@ -203,6 +238,7 @@ class Equations:
                              "more than their values")
         design = replace(self, assembly=assembly, values=values, shared=True)
         design.__dict__["linear"] = self.linear              # cached_property: shared
+        design.__dict__["first_order"] = self.first_order
         design.__dict__["_lambdified"] = self._lambdified
         return design
 
@@ -309,6 +345,7 @@ def derive(assembly: Assembly) -> Equations:
     forces = {q: sp.Integer(0) for q in coords}
     joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}
     acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
+    states: list[tuple[sp.Symbol, sp.Expr]] = []     # (s, ds/dt) of the first-order states
     balancing = None
     for load in assembly.loads:
         part = load.part
@@ -316,6 +353,7 @@ def derive(assembly: Assembly) -> Equations:
         acts = kinds.of(part).acts(part, kappa, q)
         for role, symbol in acts.joins:
             joined[role].append(symbol)
+        states += acts.states
         if acts.force is None:                  # an acceleration law: see _rigid_drive
             balancing = (part, acts.joins[-1][1])
             continue
@@ -332,7 +370,7 @@ def derive(assembly: Assembly) -> Equations:
                      tuple(loads), tuple(contact), tuple(flank), tuple(joined["switches"]),
                      tuple(joined["friction"]), tuple(joined["motor_loads"]), values,
                      tuple(joined["slopes"]), tuple(joined["signals"]), tuple(laws),
-                     tuple(stretches))
+                     tuple(stretches), tuple(s for s, _ in states), tuple(r for _, r in states))
 
 
 def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,

@@ -1,11 +1,14 @@
 """The piecewise-linear system of a component model: its modes, their
 x' = A x + b, the events between them, and a run solved phase by phase.
 
-The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…, w…): each rigid group's
+The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…, w…, s…): each rigid group's
 coordinate and speed, then the build-up 0 ≤ β ≤ 1 of each brake whose torque
 ramps or rises exponentially (a step brake has β = 1 once engaged), then the
-clock states w_j = τ^j of each motor law
-(:class:`crane_sym.components.laws.LawClock`). A :class:`Mode` fixes what
+clock states w_j = τ^j of each law in time
+(:class:`crane_sym.components.laws.LawClock`), then the parts' first-order
+states s (a DC motor's current), whose rates the equations give
+(:attr:`crane_sym.components.equations.Equations.first_order`) and which
+enter the generalized forces linearly. A :class:`Mode` fixes what
 makes the equations of :mod:`crane_sym.components.equations` linear:
 
 - each link with backlash: on its upper flank (+1), in its gap (0) or on its
@@ -30,7 +33,7 @@ from typing import Callable
 import numpy as np
 
 from crane_sym.components.equations import Equations
-from crane_sym.components.laws import LawClock, MotorLaw
+from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import ComponentError
 from crane_sym.mechanics.piecewise_linear import Guard
@@ -86,11 +89,13 @@ class ComponentSystem:
         self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
         built = [i for i, b in enumerate(self.brakes) if b.part.build_up != "step"]
         self.beta = {i: 2 * self.n + j for j, i in enumerate(built)}
-        self.laws = [l for l in a.loads if isinstance(l.part, MotorLaw)]
-        self.clock = LawClock([l.part for l in self.laws], 2 * self.n + len(built))
-        self.size = 2 * self.n + len(built) + self.clock.size
-        self.moved = {k: a.place[l.part.body][:2] for k, l in enumerate(self.laws)
-                      if l.part.law == "speed"}          # law -> (group, κ of its body)
+        self.laws = clocked([l.part for l in a.loads])
+        self.clock = LawClock(self.laws, 2 * self.n + len(built))
+        self.first = 2 * self.n + len(built) + self.clock.size
+        self.size = self.first + len(equations.states)
+        self._rates = equations.first_order_numeric(self.extra)
+        self.moved = {k: a.place[law.body][:2] for k, law in enumerate(self.laws)
+                      if law.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
         self.events: dict[str, tuple[str, int]] = {}
@@ -110,7 +115,7 @@ class ComponentSystem:
         for m, law in enumerate(self.characteristics):
             self.events[f"{law.part.name} next step"] = ("step", m)
         for m, law in enumerate(self.laws):
-            self.events[f"{law.part.name} next piece"] = ("piece", m)
+            self.events[f"{law.name} next piece"] = ("piece", m)
         self._linear = _memo(self._linear_uncached)
         # a mode's matrices and guards, kept: a batched sweep asks each design
         # for them once a phase (the copies handed out may be changed)
@@ -147,8 +152,9 @@ class ComponentSystem:
 
     def _linear_uncached(self, contacts: tuple[int, ...], driven: tuple[bool, ...],
                          steps: tuple[int, ...] = ()):
-        """(M, D, K, f without friction and laws, ∂f/∂B per brake, ∂f/∂L per law) of
-        the contacts, the motors and the characteristics' steps."""
+        """(M, D, K, f without friction, laws and states, ∂f/∂B per brake, ∂f/∂L per
+        law, ∂f/∂s per first-order state) of the contacts, the motors and the
+        characteristics' steps."""
         chi, delta = self._flanks(contacts)
         on = [1.0 if d else 0.0 for d in driven]
         slopes = [law.values[1 + min(k, len(law.values) - 2)]
@@ -164,9 +170,12 @@ class ComponentSystem:
         for k in range(len(self.laws)):
             unit = np.eye(len(self.laws))[k]
             G[:, k] = self._numeric(chi, delta, on, zero, slopes, unit)[3] - f
+        S = np.zeros((self.n, self.size - self.first))
+        for k in range(S.shape[1]):
+            S[:, k] = self._numeric(chi, delta, on, zero, slopes, (), np.eye(S.shape[1])[k])[3] - f
         if np.count_nonzero(M - np.diag(np.diag(M))):
             raise ComponentError("the mass matrix is not diagonal")     # rigid groups make it so
-        return np.diag(M).copy(), D, K, f, E, G
+        return np.diag(M).copy(), D, K, f, E, G, S
 
     def law_forcing(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(F, c): the laws' generalized forces on the groups as F x + c."""
@@ -179,6 +188,7 @@ class ComponentSystem:
         M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
         F, c = self.law_forcing(mode)
         w = F[g].copy()
+        w[self.first:] += self._linear(mode.contacts, mode.driven, mode.steps)[6][g]
         w[0:2 * self.n:2] -= K[g]
         w[1:2 * self.n:2] -= D[g]
         return w, float(f[g] + c[g])
@@ -201,10 +211,11 @@ class ComponentSystem:
         return A.copy(), b.copy()
 
     def _matrices_uncached(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
-        M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
+        M, D, K, f, _, _, S = self._linear(mode.contacts, mode.driven, mode.steps)
         F, c = self.law_forcing(mode)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
         self.clock.fill(A, b, mode.pieces)
+        self._first_order(A, b, mode)
         for g in range(self.n):
             if mode.motion[g] == HELD:
                 continue
@@ -213,6 +224,7 @@ class ComponentSystem:
             A[row] = F[g] / M[g]
             A[row, 0:2 * self.n:2] -= K[g] / M[g]
             A[row, 1:2 * self.n:2] -= D[g] / M[g]
+            A[row, self.first:] += S[g] / M[g]
             b[row] = (f[g] + c[g]) / M[g]
             if mode.motion[g] in (FORWARD, BACKWARD):
                 sign = 1.0 if mode.motion[g] == FORWARD else -1.0
@@ -231,6 +243,17 @@ class ComponentSystem:
             elif part.build_up == "exponential":
                 A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
         return A, b
+
+    def _first_order(self, A: np.ndarray, b: np.ndarray, mode: Mode) -> None:
+        """The rows of the first-order states: s' = R_q q + R_v q̇ + R_s s + R_L L + r_0,
+        the signals L from the laws' clocks."""
+        Rq, Rv, Rs, RL, r0 = self._rates
+        rows = slice(self.first, self.size)
+        A[rows, 0:2 * self.n:2], A[rows, 1:2 * self.n:2] = Rq, Rv
+        A[rows, self.first:] = Rs
+        W, c = self.clock.signals(mode.pieces, self.size)
+        A[rows] += RL @ W
+        b[rows] = RL @ c + r0.reshape(-1)
 
     def guards(self, mode: Mode) -> list[Guard]:
         """Contacts that change, sliding groups that come to rest, held groups

@@ -11,14 +11,18 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from sympy.physics.units import length, time
+from sympy.physics.units import current, force, length, time
 
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import (Component, ComponentError, Given, Value, _at_least,
                                         _name, value)
 
-__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "Gravity", "Initial", "Motor",
-           "Resistance", "STEADY"]
+__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "DCMotor", "Gravity", "Initial",
+           "Motor", "Resistance", "STEADY"]
+
+#: Dimensions of an armature's resistance (V/A) and inductance (V·s/A).
+OHM = force * length / (time * current**2)
+HENRY = force * length / current**2
 
 #: A motor torque that holds the drive in its steady motion at the start.
 STEADY = "steady"
@@ -188,5 +192,45 @@ class Initial(Component):
             object.__setattr__(self, key, v)
 
 
+@dataclass(frozen=True)
+class DCMotor(Component):
+    """A DC motor's armature on ``body``: resistance ``resistance`` (Ω),
+    inductance ``inductance`` (H), torque constant ``constant`` (N·m/A; equal
+    to its back-emf per rad/s; N/A on a translating body) and the voltage
+    ``voltage``, a law in time (:class:`~crane_sym.components.laws.MotorLaw`
+    of kind ``voltage``). Its current i is a first-order state,
+
+    .. math:: L\\,\\frac{di}{dt} = V(t) - R\\,i - k\\,\\omega,
+
+    ω the body's speed, and it pushes the body with k i along its coordinate
+    (positive V drives the body the positive way)."""
+
+    name: str
+    body: str
+    resistance: Value
+    inductance: Value
+    constant: Value
+    voltage: MotorLaw
+    kind = "dc motor"
+
+    def __init__(self, name: str, body: str, resistance: Given, inductance: Given,
+                 constant: Given, voltage: MotorLaw) -> None:
+        name = _name("dc motor", name)
+        owner = f"dc motor {name!r}"
+        r = value(owner, "resistance", resistance, OHM)
+        ell = value(owner, "inductance", inductance, HENRY)
+        k = value(owner, "constant", constant)
+        for what, v in (("resistance", r), ("inductance", ell), ("constant", k)):
+            _at_least(owner, what, v, 0.0, True)
+        for key, v in (("name", name), ("body", body), ("resistance", r), ("inductance", ell),
+                       ("constant", k), ("voltage", voltage)):
+            object.__setattr__(self, key, v)
+
+    @property
+    def laws(self) -> tuple[MotorLaw, ...]:
+        """The laws in time it carries: its voltage."""
+        return (self.voltage,)
+
+
 #: The things that act on one body.
-ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw)
+ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw, DCMotor)

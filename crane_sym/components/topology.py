@@ -25,7 +25,7 @@ import sympy as sp
 
 from crane_sym import units
 from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import ACTING, Brake, Characteristic, Gravity, Motor
+from crane_sym.components.loads import ACTING, Brake, Characteristic, DCMotor, Gravity, Motor
 from crane_sym.components.parts import (DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body, Component,
                                         ComponentError, Drum, ElasticLink, Gear)
 
@@ -303,6 +303,14 @@ def _load(part: Component, bodies: dict[str, Body]) -> Load:
                                  f"{units.format_dimension(part.dimension)}, expected "
                                  f"{units.describe_dimension(expected)}")
         return Load(part, None)
+    if isinstance(part, DCMotor):
+        where = f"{part.label} on {body.label}"
+        if not units.same_dimension(part.voltage.dimension, units.UNITS["V"][1]):
+            raise ComponentError(f"{where}: its voltage unit {part.voltage.unit!r} is "
+                                 f"{units.format_dimension(part.voltage.dimension)}, expected "
+                                 f"a voltage (e.g. V)")
+        k = part.constant.check(where, "constant", DIMENSIONS["motor constant"][body.motion])
+        return Load(part, None, (part.resistance.si, part.inductance.si, k))
     if isinstance(part, Characteristic):
         where = f"{part.label} on {body.label}"
         speed = part.speed.check(where, "speed", DIMENSIONS["speed"][body.motion])
