@@ -32,6 +32,7 @@ import numpy as np
 import sympy as sp
 
 from crane_sym.components import kinds
+from crane_sym.components.first_order import rate_matrices
 from crane_sym.components.kinds.base import ROLES
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
@@ -100,6 +101,9 @@ class Equations:
     #: rates ds/dt, affine in q̇, the states and the signals.
     states: tuple[sp.Symbol, ...] = ()
     rates: tuple[sp.Expr, ...] = ()
+    #: (part, s, bound, z) of each limit on a first-order state, z its
+    #: tracking state (:mod:`crane_sym.components.first_order`).
+    limits: tuple[tuple[str, sp.Symbol, sp.Expr, sp.Symbol], ...] = ()
     #: True for a design of a sweep (:meth:`for_design`): :meth:`numeric`
     #: evaluates the lambdified form shared by every design of the model.
     shared: bool = False
@@ -130,31 +134,10 @@ class Equations:
 
     @cached_property
     def first_order(self) -> tuple[sp.Matrix, ...]:
-        """(∂r/∂q, ∂r/∂q̇, ∂r/∂s, ∂r/∂L, r at 0) of the rates r = ds/dt of the
-        first-order states: r = R_q q + R_v q̇ + R_s s + R_L L + r_0, with L the
-        signals (shared by every design of the model)."""
-        t, qs, n = T_SYMBOL, self.coordinates, len(self.coordinates)
-        plain = [sp.Dummy(f"q{i}") for i in range(n)]
-        speeds = [sp.Dummy(f"v{i}") for i in range(n)]
-        swap = {q.diff(t): v for q, v in zip(qs, speeds)}
-        rows = sp.Matrix(len(self.rates), 1, [r.subs(swap).subs(dict(zip(qs, plain)))
-                                              for r in self.rates])
-        zero = {x: 0 for x in [*plain, *speeds, *self.states, *self.signals]}
-        return tuple(rows.jacobian(x) if rows.rows else sp.zeros(0, len(x))
-                     for x in (plain, speeds, self.states, self.signals)) + (rows.subs(zero),)
-
-    def first_order_numeric(self, extra: dict[sp.Symbol, float] | None = None
-                            ) -> tuple[np.ndarray, ...]:
-        """:attr:`first_order` as arrays, the parameters' values put in (and ``extra``).
-
-        Parameters
-        ----------
-        extra : dict, optional
-            Values solved later (a steady motor's torque).
-        """
-        values = {**self.values, **(extra or {})}
-        return tuple(np.array(m.xreplace(values), dtype=float).reshape(m.shape)
-                     for m in self.first_order)
+        """(R_q, R_v, R_s, R_L, r_0) of the first-order states' rates
+        (:func:`crane_sym.components.first_order.rate_matrices`), shared by
+        every design of the model."""
+        return rate_matrices(self.coordinates, T_SYMBOL, self.states, self.rates, self.signals)
 
     def _mode_arguments(self) -> list[list[sp.Symbol]]:
         return [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
@@ -345,7 +328,8 @@ def derive(assembly: Assembly) -> Equations:
     forces = {q: sp.Integer(0) for q in coords}
     joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}
     acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
-    states: list[tuple[sp.Symbol, sp.Expr]] = []     # (s, ds/dt) of the first-order states
+    states: dict[sp.Symbol, sp.Expr] = {}           # s -> ds/dt, summed over the parts
+    limits = []
     balancing = None
     for load in assembly.loads:
         part = load.part
@@ -353,7 +337,9 @@ def derive(assembly: Assembly) -> Equations:
         acts = kinds.of(part).acts(part, kappa, q)
         for role, symbol in acts.joins:
             joined[role].append(symbol)
-        states += acts.states
+        for s, rate in acts.states:
+            states[s] = states.get(s, sp.Integer(0)) + rate
+        limits += [(part.name, *limit) for limit in acts.limits]
         if acts.force is None:                  # an acceleration law: see _rigid_drive
             balancing = (part, acts.joins[-1][1])
             continue
@@ -370,7 +356,7 @@ def derive(assembly: Assembly) -> Equations:
                      tuple(loads), tuple(contact), tuple(flank), tuple(joined["switches"]),
                      tuple(joined["friction"]), tuple(joined["motor_loads"]), values,
                      tuple(joined["slopes"]), tuple(joined["signals"]), tuple(laws),
-                     tuple(stretches), tuple(s for s, _ in states), tuple(r for _, r in states))
+                     tuple(stretches), tuple(states), tuple(states.values()), tuple(limits))
 
 
 def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,

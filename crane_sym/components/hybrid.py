@@ -20,7 +20,10 @@ makes the equations of :mod:`crane_sym.components.equations` linear:
   within the brakes' capacity Σ |κ| M β, and slides again when N reaches it;
 - each brake engaged or not (at its delay), each ramp under way or done,
   each motor on or off (at its instant), each characteristic on its step,
-  each motor law on its piece (at its breakpoints).
+  each motor law on its piece (at its breakpoints);
+- each limit on a first-order state free (0) or at its bound (±1, ±2 once
+  its tracking state slides): a controller's torque limit
+  (:mod:`crane_sym.components.first_order`).
 
 Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
 solves each phase in closed form and finds the events on those closed forms.
@@ -33,6 +36,7 @@ from typing import Callable
 import numpy as np
 
 from crane_sym.components.equations import Equations
+from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import ComponentError
@@ -55,6 +59,7 @@ class Mode:
     ramping: tuple[bool, ...]
     steps: tuple[int, ...] = ()
     pieces: tuple[int, ...] = ()
+    limits: tuple[int, ...] = ()
 
 
 def _memo(func: Callable) -> Callable:
@@ -93,7 +98,8 @@ class ComponentSystem:
         self.clock = LawClock(self.laws, 2 * self.n + len(built))
         self.first = 2 * self.n + len(built) + self.clock.size
         self.size = self.first + len(equations.states)
-        self._rates = equations.first_order_numeric(self.extra)
+        self.first_order = FirstOrder(equations, self.n, self.first, self.size, self.extra)
+        self.limits = self.first_order.limits
         self.moved = {k: a.place[law.body][:2] for k, law in enumerate(self.laws)
                       if law.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
@@ -116,6 +122,7 @@ class ComponentSystem:
             self.events[f"{law.part.name} next step"] = ("step", m)
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
+        self.events.update(self.first_order.events())
         self._linear = _memo(self._linear_uncached)
         # a mode's matrices and guards, kept: a batched sweep asks each design
         # for them once a phase (the copies handed out may be changed)
@@ -215,7 +222,7 @@ class ComponentSystem:
         F, c = self.law_forcing(mode)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
         self.clock.fill(A, b, mode.pieces)
-        self._first_order(A, b, mode)
+        self.first_order.fill(A, b, *self.clock.signals(mode.pieces, self.size))
         for g in range(self.n):
             if mode.motion[g] == HELD:
                 continue
@@ -242,18 +249,8 @@ class ComponentSystem:
                 b[col] = 1.0 / part.time
             elif part.build_up == "exponential":
                 A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
+        self.first_order.hold(A, b, mode.limits)
         return A, b
-
-    def _first_order(self, A: np.ndarray, b: np.ndarray, mode: Mode) -> None:
-        """The rows of the first-order states: s' = R_q q + R_v q̇ + R_s s + R_L L + r_0,
-        the signals L from the laws' clocks."""
-        Rq, Rv, Rs, RL, r0 = self._rates
-        rows = slice(self.first, self.size)
-        A[rows, 0:2 * self.n:2], A[rows, 1:2 * self.n:2] = Rq, Rv
-        A[rows, self.first:] = Rs
-        W, c = self.clock.signals(mode.pieces, self.size)
-        A[rows] += RL @ W
-        b[rows] = RL @ c + r0.reshape(-1)
 
     def guards(self, mode: Mode) -> list[Guard]:
         """Contacts that change, sliding groups that come to rest, held groups
@@ -283,12 +280,17 @@ class ComponentSystem:
                     out.append(Guard(f"{name} slips +", tuple(wn - wc), kn - kc, 1))
                 if (wn + wc).any():
                     out.append(Guard(f"{name} slips -", tuple(wn + wc), kn + kc, -1))
-        return tuple(out)
+        free = replace(mode, limits=tuple(0 for _ in mode.limits))
+        return tuple(out) + tuple(self.first_order.guards(mode.limits, self._matrices(free)))
 
     def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
         """The next mode and state after a guard or a scheduled event."""
         kind, i = self.events[event]
         x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
+        if kind in ("limit+", "limit-", "within", "release"):
+            free = self._matrices(replace(mode, limits=tuple(0 for _ in mode.limits)))
+            return replace(mode, limits=self.first_order.switch(kind, i, mode.limits, x,
+                                                                free)), x
         if kind in ("open", "close+", "close-"):
             contacts = list(mode.contacts)
             contacts[i] = {"open": 0, "close+": 1, "close-": -1}[kind]

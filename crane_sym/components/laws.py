@@ -53,8 +53,9 @@ __all__ = ["KINDS", "LIMITS", "SIGNALS", "LawClock", "MotorLaw", "clocked"]
 #: What a law gives.
 KINDS = ("torque", "acceleration", "speed")
 #: What a law a part carries inside it gives: no load, a signal its own
-#: first-order states read (a DC motor's armature voltage).
-SIGNALS = ("voltage",)
+#: first-order states read (a DC motor's armature voltage, a controller's
+#: speed reference).
+SIGNALS = ("voltage", "reference")
 #: The largest law a component takes: its pieces and degree set the size of the
 #: state (one state per degree) and the number of scheduled events.
 LIMITS = LawLimits(pieces=50, degree=6, end=1e4, shortest=1e-6, value=1e12, unit="SI")

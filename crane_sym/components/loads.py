@@ -18,7 +18,7 @@ from crane_sym.components.parts import (Component, ComponentError, Given, Value,
                                         _name, value)
 
 __all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "DCMotor", "Gravity", "Initial",
-           "Motor", "Resistance", "STEADY"]
+           "Motor", "Resistance", "STEADY", "SpeedController"]
 
 #: Dimensions of an armature's resistance (V/A) and inductance (V·s/A).
 OHM = force * length / (time * current**2)
@@ -232,5 +232,50 @@ class DCMotor(Component):
         return (self.voltage,)
 
 
+@dataclass(frozen=True)
+class SpeedController(Component):
+    """A PI speed loop setting the armature voltage of the DC motor ``motor``
+    from the speed ω of ``body`` and the reference ``reference`` (a law in
+    time of kind ``reference``):
+
+    .. math:: V_c = k_p\\,(\\omega_{ref} - \\omega) + k_i\\,z, \\qquad
+              \\dot z = \\omega_{ref} - \\omega,
+
+    added to the motor's own voltage law. ``limit`` (None: none) bounds the
+    motor's torque k i: at ±limit the drive holds the current and z tracks
+    the value at which the loop's demand just holds it (anti-windup by
+    tracking, :mod:`crane_sym.components.first_order`) until the loop would
+    lower the current."""
+
+    name: str
+    body: str
+    motor: str
+    proportional: Value
+    integral: Value
+    reference: MotorLaw
+    limit: Value | None = None
+    kind = "speed controller"
+
+    def __init__(self, name: str, body: str, motor: str, proportional: Given,
+                 integral: Given, reference: MotorLaw, limit: Given | None = None) -> None:
+        name = _name("speed controller", name)
+        owner = f"speed controller {name!r}"
+        kp, ki = value(owner, "proportional", proportional), value(owner, "integral", integral)
+        _at_least(owner, "proportional", kp, 0.0, False)
+        _at_least(owner, "integral", ki, 0.0, False)
+        cap = None if limit is None else value(owner, "limit", limit)
+        if cap is not None:
+            _at_least(owner, "limit", cap, 0.0, True)
+            _at_least(owner, "integral (a limit's integral tracks it)", ki, 0.0, True)
+        for key, v in (("name", name), ("body", body), ("motor", motor), ("proportional", kp),
+                       ("integral", ki), ("reference", reference), ("limit", cap)):
+            object.__setattr__(self, key, v)
+
+    @property
+    def laws(self) -> tuple[MotorLaw, ...]:
+        """The laws in time it carries: its speed reference."""
+        return (self.reference,)
+
+
 #: The things that act on one body.
-ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw, DCMotor)
+ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw, DCMotor, SpeedController)

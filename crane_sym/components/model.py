@@ -262,7 +262,7 @@ class Model:
         mode = Mode(contacts, tuple(FREE for _ in range(n)),
                     tuple(False for _ in probe.brakes), driven,
                     tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
-                    tuple(0 for _ in probe.laws))
+                    tuple(0 for _ in probe.laws), tuple(0 for _ in probe.limits))
         return (*apply(self.initial, probe, mode, x, v), extra)
 
     def _at_once(self) -> tuple[bool, ...]:
@@ -283,7 +283,8 @@ class Model:
         motion = [FREE for _ in self.assembly.groups]
         mode = Mode(tuple(0 for _ in probe.backlash), tuple(motion), engaged,
                     tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
-                    tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws))
+                    tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws),
+                    tuple(0 for _ in probe.limits))
         x = np.zeros(probe.size)
         for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
             x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa

@@ -9,7 +9,7 @@ May import: the rest of ``components`` below the reader (``parts``,
 """
 from crane_sym.components.kinds import (brake, characteristic, dc_motor, drum, elastic, gear,
                                         gravity, inertia, initial, mass, motor, motor_law,
-                                        resistance)
+                                        resistance, speed_controller)
 from crane_sym.components.kinds.base import Key, Kind
 
 from crane_sym.components.parts import Component
@@ -18,8 +18,8 @@ __all__ = ["KINDS", "Key", "Kind", "by_table", "of"]
 
 #: Every kind, in the order a component file's tables are read.
 KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, brake, motor,
-                                      characteristic, motor_law, dc_motor, gravity,
-                                      resistance, initial)]
+                                      characteristic, motor_law, dc_motor, speed_controller,
+                                      gravity, resistance, initial)]
 
 
 def by_table() -> dict[str, Kind]:

@@ -133,8 +133,9 @@ class Acting:
     drives the rigid drive instead), the mode's symbols it brings as
     ``(role, symbol)`` (a role of :data:`ROLES`), whether the force is
     ``constant`` in time (a weight, a resistance, a motor: what an
-    acceleration law's rigid drive balances), and its first-order ``states``
-    with their rates (the force may hold them)."""
+    acceleration law's rigid drive balances), its first-order ``states``
+    with their rates (the force may hold them; a state two parts declare
+    takes the sum of their rates) and the ``limits`` on them."""
 
     force: sp.Expr | None
     joins: tuple[tuple[str, sp.Symbol], ...] = ()
@@ -142,6 +143,11 @@ class Acting:
     #: The part's first-order states, (s, ds/dt) each: the rate affine in the
     #: bodies' speeds q̇, the states and the signals (a DC motor's current).
     states: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
+    #: Its limits, (s, bound, z) each: the state s kept within ±bound (an
+    #: expression in the parameters); at a bound, the state z tracks
+    #: (:mod:`crane_sym.components.first_order`: a torque limit holds the
+    #: current, the controller's integral follows).
+    limits: tuple[tuple[sp.Symbol, sp.Expr, sp.Symbol], ...] = ()
 
 
 #: The :class:`Acting` of a part on its body, given the body's κ and its
