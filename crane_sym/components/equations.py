@@ -104,6 +104,8 @@ class Equations:
     #: (part, s, bound, z) of each limit on a first-order state, z its
     #: tracking state (:mod:`crane_sym.components.first_order`).
     limits: tuple[tuple[str, sp.Symbol, sp.Expr, sp.Symbol], ...] = ()
+    #: (part, what, unit, value) of each value a part reports (``Acting.outputs``).
+    outputs: tuple[tuple[str, str, str, sp.Expr], ...] = ()
     #: True for a design of a sweep (:meth:`for_design`): :meth:`numeric`
     #: evaluates the lambdified form shared by every design of the model.
     shared: bool = False
@@ -329,7 +331,7 @@ def derive(assembly: Assembly) -> Equations:
     joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}
     acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
     states: dict[sp.Symbol, sp.Expr] = {}           # s -> ds/dt, summed over the parts
-    limits = []
+    limits, outputs = [], []
     balancing = None
     for load in assembly.loads:
         part = load.part
@@ -340,6 +342,7 @@ def derive(assembly: Assembly) -> Equations:
         for s, rate in acts.states:
             states[s] = states.get(s, sp.Integer(0)) + rate
         limits += [(part.name, *limit) for limit in acts.limits]
+        outputs += [(part.name, *out) for out in acts.outputs]
         if acts.force is None:                  # an acceleration law: see _rigid_drive
             balancing = (part, acts.joins[-1][1])
             continue
@@ -356,7 +359,8 @@ def derive(assembly: Assembly) -> Equations:
                      tuple(loads), tuple(contact), tuple(flank), tuple(joined["switches"]),
                      tuple(joined["friction"]), tuple(joined["motor_loads"]), values,
                      tuple(joined["slopes"]), tuple(joined["signals"]), tuple(laws),
-                     tuple(stretches), tuple(states), tuple(states.values()), tuple(limits))
+                     tuple(stretches), tuple(states), tuple(states.values()), tuple(limits),
+                     tuple(outputs))
 
 
 def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,

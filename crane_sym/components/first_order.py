@@ -79,8 +79,29 @@ class FirstOrder:
         self.rates = tuple(np.array(m.xreplace(values), dtype=float).reshape(m.shape)
                            for m in equations.first_order)
         index = {s: first + j for j, s in enumerate(equations.states)}
+        self._values, self._index = values, index
+        self._coordinates = equations.coordinates
         self.limits = [Limit(name, index[s], float(bound.xreplace(values)), index[z])
                        for name, s, bound, z in equations.limits]
+
+    def weights(self, value: sp.Expr) -> np.ndarray:
+        """w of ``value`` = w·x, ``value`` linear in the groups' coordinates q,
+        speeds q̇ and the first-order states (an output a part reports).
+
+        Parameters
+        ----------
+        value : sympy expression
+            In the coordinates q_g(t), their derivatives and the states.
+        """
+        w = np.zeros(self.size)
+        for g, q in enumerate(self._coordinates):
+            speed = sp.Dummy("v")
+            plain = value.subs(q.diff(q.args[0]), speed)
+            w[2 * g + 1] = float(sp.diff(plain, speed).xreplace(self._values))
+            w[2 * g] = float(sp.diff(plain.subs(speed, 0), q).xreplace(self._values))
+        for s, at in self._index.items():
+            w[at] = float(sp.diff(value, s).xreplace(self._values))
+        return w
 
     def fill(self, A: np.ndarray, b: np.ndarray, W: np.ndarray, c: np.ndarray) -> None:
         """The states' rows, free (the signals L = W x + c)."""

@@ -148,6 +148,11 @@ class Acting:
     #: (:mod:`crane_sym.components.first_order`: a torque limit holds the
     #: current, the controller's integral follows).
     limits: tuple[tuple[sp.Symbol, sp.Expr, sp.Symbol], ...] = ()
+    #: What a run reports of it, (what, unit, value) each: the unit a row of
+    #: :data:`~crane_sym.components.parts.UNITS` (by its body's motion) or a
+    #: unit's text; the value affine in q, q̇ and the states (a DC motor's
+    #: current, torque and speed), its peak printed.
+    outputs: tuple[tuple[str, str, sp.Expr], ...] = ()
 
 
 #: The :class:`Acting` of a part on its body, given the body's κ and its

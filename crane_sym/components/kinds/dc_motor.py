@@ -19,7 +19,9 @@ def _acts(part: DCMotor, kappa: sp.Expr, q: sp.Expr) -> Acting:
     i, V = sp.Symbol(f"i_{part.name}", real=True), sp.Symbol(f"V_{part.name}", real=True)
     R, L, k = (s.symbol(part.name) for s in (RESISTANCE, INDUCTANCE, CONSTANT))
     omega = kappa * q.diff(q.args[0])
-    return Acting(k * i, (("signals", V),), states=((i, (V - R * i - k * omega) / L),))
+    return Acting(k * i, (("signals", V),), states=((i, (V - R * i - k * omega) / L),),
+                  outputs=(("current", "A", i), ("torque", "load", k * i),
+                           ("speed", "speed", omega)))
 
 
 def _build(g: dict, entry: dict, where: str) -> DCMotor:
