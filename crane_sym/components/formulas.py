@@ -78,7 +78,9 @@ def _quantity_names(model: Model) -> dict[str, str]:
     a = model.assembly
     out = {}
     for what, (owner, _) in KINDS.items():
-        names = list(a.bodies) if owner == "body" else [l.part.name for l in a.links]
+        names = (list(a.bodies) if owner == "body" else
+                 [l.part.name for l in a.links] if owner == "link" else
+                 [l.part.name for l in a.loads if l.part.kind == owner])
         out |= {f"{n}.{what}": what for n in names}
     return out
 
@@ -91,7 +93,7 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
     if path not in known:
         raise ComponentError(f"{where}: unknown quantity {path!r}; "
                              f"{did_you_mean(path, list(known))}a quantity is "
-                             f"<body>.reduced_inertia or <link>."
+                             f"<body>.reduced_inertia, <dc motor>.time_constant or <link>."
                              f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'link')}}}")
     return path
 
