@@ -28,7 +28,7 @@ import numbers
 import re
 from dataclasses import dataclass
 
-from sympy.physics.units import Dimension, force, length, mass, time
+from sympy.physics.units import Dimension, current, force, length, mass, time
 from sympy.physics.units.systems.si import dimsys_SI
 
 __all__ = ["UNITS", "Quantity", "UnitError", "convert", "describe_dimension",
@@ -59,6 +59,11 @@ UNITS: dict[str, tuple[float, Dimension]] = {
     # angles (dimensionless) and rotational speed / frequency
     "rad": (1.0, _ONE), "deg": (_PI / 180.0, _ONE), "rev": (2.0 * _PI, _ONE),
     "rpm": (2.0 * _PI / 60.0, 1 / time), "Hz": (1.0, 1 / time),
+    # electrical (a DC motor's armature): current, voltage, resistance, inductance
+    "A": (1.0, current), "V": (1.0, force * length / (time * current)),
+    "kV": (1e3, force * length / (time * current)),
+    "ohm": (1.0, force * length / (time * current**2)),
+    "H": (1.0, force * length / current**2), "mH": (1e-3, force * length / current**2),
 }
 
 

@@ -22,6 +22,8 @@ SLACK = "slack_rope.toml"
 SWAY = "trolley_sway.toml"
 JIB = "jib_reeve_failure.toml"
 GIRDER, LIFT = "girder_hoist.toml", "lift_off.toml"
+DC = "dc_hoist_pi.toml"
+MODEL_DC = r"component model 'dc_hoist_pi': "
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
 PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
@@ -140,6 +142,39 @@ ROWS = {
                                       r"component model 'lift_off': ground contact 'floor': "
                                       r"ground contact 'ground_support' rests the same rigid "
                                       r"group on the ground already"),
+    # a DC motor's armature and its speed loop
+    "armature resistance < 0": Fault(DC, 'resistance = "0.1 ohm"', 'resistance = "-0.1 ohm"',
+                                     r"dc motor 'armature': resistance must be > 0, "
+                                     r"got '-0.1 ohm'"),
+    "armature inductance in s": Fault(DC, 'inductance = "5 mH"', 'inductance = "5 ms"',
+                                      r"dc motor 'armature': inductance '5 ms' is time, "
+                                      r"expected mass\*length\*\*2/\(time\*\*2\*current\*\*2\)"),
+    "motor constant in N*m": Fault(DC, 'constant = "4 N*m/A"', 'constant = "4 N*m"',
+                                   MODEL_DC + r"dc motor 'armature' on inertia 'motor': constant "
+                                   r"'4 N\*m' is mass\*length\*\*2/time\*\*2, expected "
+                                   r"mass\*length\*\*2/\(time\*\*2\*current\)"),
+    "voltage law in A": Fault(DC, 'unit = "V"', 'unit = "A"',
+                              MODEL_DC + r"dc motor 'armature' on inertia 'motor': its voltage "
+                              r"unit 'A' is current, expected a voltage \(e\.g\. V\)"),
+    "voltage 1e20 V": Fault(DC, "coefficients = [[0.0]]", "coefficients = [[1e20]]",
+                            r"motor law 'armature': coefficients\[0\]\[0\] = 1e\+20 \(SI\) is "
+                            r"too large: \|c\| = 1e\+20 SI, more than 1e\+12 SI"),
+    "controller of no motor": Fault(DC, 'motor = "armature"', 'motor = "armatur"',
+                                    MODEL_DC + r"speed controller 'speed_loop' on inertia 'motor': "
+                                    r"motor 'armatur' is no dc_motor; dc motors: armature"),
+    "torque limit 0": Fault(DC, 'limit = "1000 N*m"', 'limit = "0 N*m"',
+                            r"speed controller 'speed_loop': limit must be > 0, got '0 N\*m'"),
+    "limit without integral": Fault(DC, 'integral = "200 V/rad"', 'integral = "0 V/rad"',
+                                    r"speed controller 'speed_loop': integral \(a limit's "
+                                    r"integral tracks it\) must be > 0, got '0 V/rad'"),
+    "gain in V/rad": Fault(DC, 'proportional = "20 V*s/rad"', 'proportional = "20 V/rad"',
+                           MODEL_DC + r"speed controller 'speed_loop' on inertia 'motor': "
+                           r"proportional '20 V/rad' is mass\*length\*\*2/\(time\*\*3\*current\), "
+                           r"expected mass\*length\*\*2/\(time\*\*2\*current\)"),
+    "reference in m/s": Fault(DC, 'unit = "rad/s"', 'unit = "m/s"',
+                              MODEL_DC + r"speed controller 'speed_loop' on inertia 'motor': its "
+                              r"reference unit 'm/s' is length/time, expected 1/time \(e\.g\. "
+                              r"rad/s, rpm or Hz\)"),
     # the model's bounds (crane_sym.components.model_limits), before it is derived
     "duration 1e5 s": Fault(TRAVEL, 'duration = "1.5 s"', 'duration = "1e5 s"',
                             r"component model 'travel_braking_000': "

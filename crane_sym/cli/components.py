@@ -66,8 +66,13 @@ def model_text(path: str) -> str:
     lines += [f"  {b.part.label} on {b.part.body}: off, engaged" for b in system.brakes]
     lines += [f"  {m.part.label}: on, off" for m in system.motors if m.part.off_at is not None]
     lines += [f"  {c.part.label}: {len(c.part.slopes)} steps" for c in system.characteristics]
-    lines += [f"  {l.part.label}: {len(l.part.pieces())} pieces ({l.part.law} law)"
-              for l in system.laws]
+    lines += [f"  {law.label}: {len(law.pieces())} pieces ({law.law} law)"
+              for law in system.laws]
+    lines += [f"  {limit.name}: within its limit, at + limit, at - limit"
+              for limit in system.limits]
+    if eq.states:
+        lines += ["", "first-order states (d/dt):"]
+        lines += [f"  {sp.sstr(s)}' = {sp.sstr(r)}" for s, r in zip(eq.states, eq.rates)]
     braked = sorted({a.groups[g].name for g in system.brake_group})
     lines += [f"  group {name}: free, sliding +/-, held" for name in braked]
     return "\n".join(lines)

@@ -97,10 +97,10 @@ def si_unit(dimension: Dimension) -> str:
     Parameters
     ----------
     dimension : Dimension
-        A dimension of mass, length and time.
+        A dimension of mass, length, time and current.
     """
     deps = dimsys_SI.get_dimensional_dependencies(dimension)
-    names = {"mass": "kg", "length": "m", "time": "s"}
+    names = {"mass": "kg", "length": "m", "time": "s", "current": "A"}
     parts = [f"{names[str(k.name)]}" + ("" if p == 1 else f"^{int(p)}")
              for k, p in deps.items() if p]
     return "*".join(parts) or "1"

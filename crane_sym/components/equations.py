@@ -32,6 +32,7 @@ import numpy as np
 import sympy as sp
 
 from crane_sym.components import kinds
+from crane_sym.components.first_order import rate_matrices
 from crane_sym.components.kinds.base import ROLES
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
@@ -96,6 +97,15 @@ class Equations:
     signals: tuple[sp.Symbol, ...] = ()
     link_laws: tuple[sp.Expr, ...] = ()
     stretches: tuple[tuple[sp.Symbol, sp.Symbol], ...] = ()
+    #: The parts' first-order states s (a DC motor's current i) and their
+    #: rates ds/dt, affine in q̇, the states and the signals.
+    states: tuple[sp.Symbol, ...] = ()
+    rates: tuple[sp.Expr, ...] = ()
+    #: (part, s, bound, z) of each limit on a first-order state, z its
+    #: tracking state (:mod:`crane_sym.components.first_order`).
+    limits: tuple[tuple[str, sp.Symbol, sp.Expr, sp.Symbol], ...] = ()
+    #: (part, what, unit, value) of each value a part reports (``Acting.outputs``).
+    outputs: tuple[tuple[str, str, str, sp.Expr], ...] = ()
     #: True for a design of a sweep (:meth:`for_design`): :meth:`numeric`
     #: evaluates the lambdified form shared by every design of the model.
     shared: bool = False
@@ -124,9 +134,16 @@ class Equations:
         f = -rows.subs(zero)
         return M, D, K, sp.expand(f)
 
+    @cached_property
+    def first_order(self) -> tuple[sp.Matrix, ...]:
+        """(R_q, R_v, R_s, R_L, r_0) of the first-order states' rates
+        (:func:`crane_sym.components.first_order.rate_matrices`), shared by
+        every design of the model."""
+        return rate_matrices(self.coordinates, T_SYMBOL, self.states, self.rates, self.signals)
+
     def _mode_arguments(self) -> list[list[sp.Symbol]]:
         return [list(self.contact), list(self.flank), list(self.switches), list(self.friction),
-                list(self.slopes), list(self.signals)]
+                list(self.slopes), list(self.signals), list(self.states)]
 
     @cached_property
     def _lambdified(self) -> tuple[tuple[sp.Symbol, ...], Callable]:
@@ -162,9 +179,11 @@ class Equations:
             M, D, K, f = (m.xreplace(values) for m in self.linear)
             fn = sp.lambdify(self._mode_arguments(), (M, D, K, f), "numpy")
 
-        def evaluate(chi, delta, on, friction, slopes=(), signals=()):
+        def evaluate(chi, delta, on, friction, slopes=(), signals=(), states=()):
             signals = list(signals) or [0.0] * len(self.signals)
-            out = fn(list(chi), list(delta), list(on), list(friction), list(slopes), signals)
+            states = list(states) or [0.0] * len(self.states)
+            out = fn(list(chi), list(delta), list(on), list(friction), list(slopes), signals,
+                     states)
             return tuple(np.array(m, dtype=float) for m in out[:3]) + \
                 (np.array(out[3], dtype=float).reshape(-1),)
         return evaluate
@@ -175,7 +194,8 @@ class Equations:
         upright as its subscript (``c_{\\mathrm{gearbox\\_mesh}}``)."""
         names: dict[sp.Basic, str] = {}
         symbols = [*self.values, *self.contact, *self.flank, *self.switches,
-                   *self.friction, *self.motor_loads, *self.slopes, *self.signals]
+                   *self.friction, *self.motor_loads, *self.slopes, *self.signals,
+                   *self.states]
         for s in [*symbols, *self.coordinates]:
             text = s.name if isinstance(s, sp.Symbol) else type(s).__name__
             head, _, rest = text.partition("_")
@@ -203,6 +223,7 @@ class Equations:
                              "more than their values")
         design = replace(self, assembly=assembly, values=values, shared=True)
         design.__dict__["linear"] = self.linear              # cached_property: shared
+        design.__dict__["first_order"] = self.first_order
         design.__dict__["_lambdified"] = self._lambdified
         return design
 
@@ -310,6 +331,8 @@ def derive(assembly: Assembly) -> Equations:
     forces = {q: sp.Integer(0) for q in coords}
     joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}
     acting: list[tuple[str, sp.Expr]] = []          # (body, F) the rigid drive feels
+    states: dict[sp.Symbol, sp.Expr] = {}           # s -> ds/dt, summed over the parts
+    limits, outputs = [], []
     balancing = None
     for load in assembly.loads:
         part = load.part
@@ -317,6 +340,10 @@ def derive(assembly: Assembly) -> Equations:
         acts = kinds.of(part).acts(part, kappa, q)
         for role, symbol in acts.joins:
             joined[role].append(symbol)
+        for s, rate in acts.states:
+            states[s] = states.get(s, sp.Integer(0)) + rate
+        limits += [(part.name, *limit) for limit in acts.limits]
+        outputs += [(part.name, *out) for out in acts.outputs]
         if acts.force is None:                  # an acceleration law: see _rigid_drive
             balancing = (part, acts.joins[-1][1])
             continue
@@ -333,7 +360,8 @@ def derive(assembly: Assembly) -> Equations:
                      tuple(loads), tuple(contact), tuple(flank), tuple(joined["switches"]),
                      tuple(joined["friction"]), tuple(joined["motor_loads"]), values,
                      tuple(joined["slopes"]), tuple(joined["signals"]), tuple(laws),
-                     tuple(stretches))
+                     tuple(stretches), tuple(states), tuple(states.values()), tuple(limits),
+                     tuple(outputs))
 
 
 def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,

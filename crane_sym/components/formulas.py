@@ -80,7 +80,8 @@ def _quantity_names(model: Model) -> dict[str, str]:
     owners = {"body": list(a.bodies), "link": [l.part.name for l in a.links],
               "contact": [c.part.name for c in a.contacts]}
     for what, (owner, _) in KINDS.items():
-        out |= {f"{n}.{what}": what for n in owners[owner]}
+        names = owners.get(owner) or [l.part.name for l in a.loads if l.part.kind == owner]
+        out |= {f"{n}.{what}": what for n in names}
     return out
 
 
@@ -92,7 +93,7 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
     if path not in known:
         raise ComponentError(f"{where}: unknown quantity {path!r}; "
                              f"{did_you_mean(path, list(known))}a quantity is "
-                             f"<body>.reduced_inertia or <link>."
+                             f"<body>.reduced_inertia, <dc motor>.time_constant, <link>."
                              f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'link')}}} "
                              f"or <ground contact>."
                              f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'contact')}}}")

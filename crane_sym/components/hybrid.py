@@ -1,11 +1,14 @@
 """The piecewise-linear system of a component model: its modes, their
 x' = A x + b, the events between them, and a run solved phase by phase.
 
-The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…, w…): each rigid group's
+The state is x = (q_1, q̇_1, …, q_n, q̇_n, β…, w…, s…): each rigid group's
 coordinate and speed, then the build-up 0 ≤ β ≤ 1 of each brake whose torque
 ramps or rises exponentially (a step brake has β = 1 once engaged), then the
-clock states w_j = τ^j of each motor law
-(:class:`crane_sym.components.laws.LawClock`). A :class:`Mode` fixes what
+clock states w_j = τ^j of each law in time
+(:class:`crane_sym.components.laws.LawClock`), then the parts' first-order
+states s (a DC motor's current), whose rates the equations give
+(:attr:`crane_sym.components.equations.Equations.first_order`) and which
+enter the generalized forces linearly. A :class:`Mode` fixes what
 makes the equations of :mod:`crane_sym.components.equations` linear:
 
 - each link with backlash: on its upper flank (+1), in its gap (0) or on its
@@ -21,7 +24,10 @@ makes the equations of :mod:`crane_sym.components.equations` linear:
   an inelastic touch) where its body returns to x = 0;
 - each brake engaged or not (at its delay), each ramp under way or done,
   each motor on or off (at its instant), each characteristic on its step,
-  each motor law on its piece (at its breakpoints).
+  each motor law on its piece (at its breakpoints);
+- each limit on a first-order state free (0) or at its bound (±1, ±2 once
+  its tracking state slides): a controller's torque limit
+  (:mod:`crane_sym.components.first_order`).
 
 Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
 solves each phase in closed form and finds the events on those closed forms.
@@ -34,7 +40,8 @@ from typing import Callable
 import numpy as np
 
 from crane_sym.components.equations import Equations
-from crane_sym.components.laws import LawClock, MotorLaw
+from crane_sym.components.first_order import FirstOrder
+from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.parts import ComponentError, ElasticLink
 from crane_sym.mechanics.piecewise_linear import Guard
@@ -58,6 +65,8 @@ class Mode:
     pieces: tuple[int, ...] = ()
     #: The gapped links cut for good (their places in ``contacts``; contact 0).
     cut: tuple[int, ...] = ()
+    #: Each first-order limit free (0) or at its bound (see the module docstring).
+    limits: tuple[int, ...] = ()
 
 
 def _contact_events(part: ElasticLink) -> dict[str, str]:
@@ -102,11 +111,14 @@ class ComponentSystem:
         self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
         built = [i for i, b in enumerate(self.brakes) if b.part.build_up != "step"]
         self.beta = {i: 2 * self.n + j for j, i in enumerate(built)}
-        self.laws = [l for l in a.loads if isinstance(l.part, MotorLaw)]
-        self.clock = LawClock([l.part for l in self.laws], 2 * self.n + len(built))
-        self.size = 2 * self.n + len(built) + self.clock.size
-        self.moved = {k: a.place[l.part.body][:2] for k, l in enumerate(self.laws)
-                      if l.part.law == "speed"}          # law -> (group, κ of its body)
+        self.laws = clocked([l.part for l in a.loads])
+        self.clock = LawClock(self.laws, 2 * self.n + len(built))
+        self.first = 2 * self.n + len(built) + self.clock.size
+        self.size = self.first + len(equations.states)
+        self.first_order = FirstOrder(equations, self.n, self.first, self.size, self.extra)
+        self.limits = self.first_order.limits
+        self.moved = {k: a.place[law.body][:2] for k, law in enumerate(self.laws)
+                      if law.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
         self.contacts = list(a.contacts)
@@ -131,7 +143,8 @@ class ComponentSystem:
         for m, law in enumerate(self.characteristics):
             self.events[f"{law.part.name} next step"] = ("step", m)
         for m, law in enumerate(self.laws):
-            self.events[f"{law.part.name} next piece"] = ("piece", m)
+            self.events[f"{law.name} next piece"] = ("piece", m)
+        self.events.update(self.first_order.events())
         self._linear = _memo(self._linear_uncached)
         # a mode's matrices and guards, kept: a batched sweep asks each design
         # for them once a phase (the copies handed out may be changed)
@@ -167,8 +180,9 @@ class ComponentSystem:
 
     def _linear_uncached(self, contacts: tuple[int, ...], driven: tuple[bool, ...],
                          steps: tuple[int, ...] = ()):
-        """(M, D, K, f without friction and laws, ∂f/∂B per brake, ∂f/∂L per law) of
-        the contacts, the motors and the characteristics' steps."""
+        """(M, D, K, f without friction, laws and states, ∂f/∂B per brake, ∂f/∂L per
+        law, ∂f/∂s per first-order state) of the contacts, the motors and the
+        characteristics' steps."""
         chi, delta = self._flanks(contacts)
         on = [1.0 if d else 0.0 for d in driven]
         slopes = [law.values[1 + min(k, len(law.values) - 2)]
@@ -184,9 +198,12 @@ class ComponentSystem:
         for k in range(len(self.laws)):
             unit = np.eye(len(self.laws))[k]
             G[:, k] = self._numeric(chi, delta, on, zero, slopes, unit)[3] - f
+        S = np.zeros((self.n, self.size - self.first))
+        for k in range(S.shape[1]):
+            S[:, k] = self._numeric(chi, delta, on, zero, slopes, (), np.eye(S.shape[1])[k])[3] - f
         if np.count_nonzero(M - np.diag(np.diag(M))):
             raise ComponentError("the mass matrix is not diagonal")     # rigid groups make it so
-        return np.diag(M).copy(), D, K, f, E, G
+        return np.diag(M).copy(), D, K, f, E, G, S
 
     def law_forcing(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(F, c): the laws' generalized forces on the groups as F x + c."""
@@ -199,6 +216,7 @@ class ComponentSystem:
         M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
         F, c = self.law_forcing(mode)
         w = F[g].copy()
+        w[self.first:] += self._linear(mode.contacts, mode.driven, mode.steps)[6][g]
         w[0:2 * self.n:2] -= K[g]
         w[1:2 * self.n:2] -= D[g]
         return w, float(f[g] + c[g])
@@ -231,10 +249,11 @@ class ComponentSystem:
         return A.copy(), b.copy()
 
     def _matrices_uncached(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
-        M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
+        M, D, K, f, _, _, S = self._linear(mode.contacts, mode.driven, mode.steps)
         F, c = self.law_forcing(mode)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
         self.clock.fill(A, b, mode.pieces)
+        self.first_order.fill(A, b, *self.clock.signals(mode.pieces, self.size))
         for g in range(self.n):
             if mode.motion[g] == HELD:
                 continue
@@ -243,6 +262,7 @@ class ComponentSystem:
             A[row] = F[g] / M[g]
             A[row, 0:2 * self.n:2] -= K[g] / M[g]
             A[row, 1:2 * self.n:2] -= D[g] / M[g]
+            A[row, self.first:] += S[g] / M[g]
             b[row] = (f[g] + c[g]) / M[g]
             if mode.motion[g] in (FORWARD, BACKWARD):
                 sign = 1.0 if mode.motion[g] == FORWARD else -1.0
@@ -260,6 +280,7 @@ class ComponentSystem:
                 b[col] = 1.0 / part.time
             elif part.build_up == "exponential":
                 A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
+        self.first_order.hold(A, b, mode.limits)
         return A, b
 
     def guards(self, mode: Mode) -> list[Guard]:
@@ -306,12 +327,17 @@ class ComponentSystem:
                     out.append(Guard(f"{name} slips +", tuple(wn - wc), kn - kc, 1))
                 if (wn + wc).any():
                     out.append(Guard(f"{name} slips -", tuple(wn + wc), kn + kc, -1))
-        return tuple(out)
+        free = replace(mode, limits=tuple(0 for _ in mode.limits))
+        return tuple(out) + tuple(self.first_order.guards(mode.limits, self._matrices(free)))
 
     def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
         """The next mode and state after a guard or a scheduled event."""
         kind, i = self.events[event]
         x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
+        if kind in ("limit+", "limit-", "within", "release"):
+            free = self._matrices(replace(mode, limits=tuple(0 for _ in mode.limits)))
+            return replace(mode, limits=self.first_order.switch(kind, i, mode.limits, x,
+                                                                free)), x
         if kind in ("open", "close+", "close-", "break"):
             contacts = list(mode.contacts)
             contacts[i] = {"open": 0, "close+": 1, "close-": -1, "break": 0}[kind]

@@ -108,7 +108,7 @@ def apply(given: Sequence[Shift], system: ComponentSystem, mode: Mode, x: np.nda
         if s.velocity is not None:
             for k, (g, _) in system.moved.items():
                 if g == s.group:
-                    raise ComponentError(f"{s.part.label}: {system.laws[k].part.label} sets "
+                    raise ComponentError(f"{s.part.label}: {system.laws[k].label} sets "
                                          f"the speed of {s.part.body!r}; give no velocity")
             if speed != 0:
                 raise ComponentError(f"{s.part.label}: a velocity and the steady start's "

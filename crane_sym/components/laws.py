@@ -48,10 +48,14 @@ from crane_sym.components.parts import Component, ComponentError, _name
 from crane_sym.mechanics.loads import PiecewiseLoad
 from crane_sym.scenes.law_tables import LawLimits, piecewise_law, read_law_table
 
-__all__ = ["KINDS", "LIMITS", "LawClock", "MotorLaw"]
+__all__ = ["KINDS", "LIMITS", "SIGNALS", "LawClock", "MotorLaw", "clocked"]
 
 #: What a law gives.
 KINDS = ("torque", "acceleration", "speed")
+#: What a law a part carries inside it gives: no load, a signal its own
+#: first-order states read (a DC motor's armature voltage, a controller's
+#: speed reference).
+SIGNALS = ("voltage", "reference")
 #: The largest law a component takes: its pieces and degree set the size of the
 #: state (one state per degree) and the number of scheduled events.
 LIMITS = LawLimits(pieces=50, degree=6, end=1e4, shortest=1e-6, value=1e12, unit="SI")
@@ -77,7 +81,7 @@ class MotorLaw(Component):
                  time_unit: str = "s") -> None:
         name = _name("motor law", name)
         owner = f"motor law {name!r}"
-        if law not in KINDS:
+        if law not in KINDS + SIGNALS:
             raise ComponentError(f"{owner}: law must be one of {', '.join(KINDS)}, got {law!r}")
         if not isinstance(unit, str):
             raise ComponentError(f"{owner}: unit must be a unit text like 'N*m', got {unit!r}")
@@ -113,6 +117,20 @@ class MotorLaw(Component):
         """The law's value [SI] at ``t`` [s] (the piece holding there)."""
         start, row = [p for p in self.pieces() if p[0] <= t][-1]
         return float(sum(c * (t - start) ** j for j, c in enumerate(row)))
+
+
+def clocked(parts: Sequence[Component]) -> list[MotorLaw]:
+    """The laws in time of ``parts``, in their order: a motor law itself, and
+    the laws a part carries (its ``laws``: a DC motor's voltage); the order of
+    the signals the equations join and of the :class:`LawClock`'s states.
+
+    Parameters
+    ----------
+    parts : sequence of Component
+        The parts acting on bodies, in the assembly's order.
+    """
+    return [law for part in parts
+            for law in ((part,) if isinstance(part, MotorLaw) else getattr(part, "laws", ()))]
 
 
 class LawClock:

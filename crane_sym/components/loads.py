@@ -13,14 +13,18 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from sympy.physics.units import length, time
+from sympy.physics.units import current, force, length, time
 
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import (Component, ComponentError, Given, Value, _at_least,
                                         _name, value)
 
-__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "Gravity", "GroundContact",
-           "Initial", "Motor", "Resistance", "STEADY"]
+__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "DCMotor", "Gravity",
+           "GroundContact", "Initial", "Motor", "Resistance", "STEADY", "SpeedController"]
+
+#: Dimensions of an armature's resistance (V/A) and inductance (V·s/A).
+OHM = force * length / (time * current**2)
+HENRY = force * length / current**2
 
 #: A motor torque that holds the drive in its steady motion at the start.
 STEADY = "steady"
@@ -226,5 +230,90 @@ class GroundContact(Component):
         return 1.0 if self.direction == "+" else -1.0
 
 
+@dataclass(frozen=True)
+class DCMotor(Component):
+    """A DC motor's armature on ``body``: resistance ``resistance`` (Ω),
+    inductance ``inductance`` (H), torque constant ``constant`` (N·m/A; equal
+    to its back-emf per rad/s; N/A on a translating body) and the voltage
+    ``voltage``, a law in time (:class:`~crane_sym.components.laws.MotorLaw`
+    of kind ``voltage``). Its current i is a first-order state,
+
+    .. math:: L\\,\\frac{di}{dt} = V(t) - R\\,i - k\\,\\omega,
+
+    ω the body's speed, and it pushes the body with k i along its coordinate
+    (positive V drives the body the positive way)."""
+
+    name: str
+    body: str
+    resistance: Value
+    inductance: Value
+    constant: Value
+    voltage: MotorLaw
+    kind = "dc motor"
+
+    def __init__(self, name: str, body: str, resistance: Given, inductance: Given,
+                 constant: Given, voltage: MotorLaw) -> None:
+        name = _name("dc motor", name)
+        owner = f"dc motor {name!r}"
+        r = value(owner, "resistance", resistance, OHM)
+        ell = value(owner, "inductance", inductance, HENRY)
+        k = value(owner, "constant", constant)
+        for what, v in (("resistance", r), ("inductance", ell), ("constant", k)):
+            _at_least(owner, what, v, 0.0, True)
+        for key, v in (("name", name), ("body", body), ("resistance", r), ("inductance", ell),
+                       ("constant", k), ("voltage", voltage)):
+            object.__setattr__(self, key, v)
+
+    @property
+    def laws(self) -> tuple[MotorLaw, ...]:
+        """The laws in time it carries: its voltage."""
+        return (self.voltage,)
+
+
+@dataclass(frozen=True)
+class SpeedController(Component):
+    """A PI speed loop setting the armature voltage of the DC motor ``motor``
+    from the speed ω of ``body`` and the reference ``reference`` (a law in
+    time of kind ``reference``):
+
+    .. math:: V_c = k_p\\,(\\omega_{ref} - \\omega) + k_i\\,z, \\qquad
+              \\dot z = \\omega_{ref} - \\omega,
+
+    added to the motor's own voltage law. ``limit`` (None: none) bounds the
+    motor's torque k i: at ±limit the drive holds the current and z tracks
+    the value at which the loop's demand just holds it (anti-windup by
+    tracking, :mod:`crane_sym.components.first_order`) until the loop would
+    lower the current."""
+
+    name: str
+    body: str
+    motor: str
+    proportional: Value
+    integral: Value
+    reference: MotorLaw
+    limit: Value | None = None
+    kind = "speed controller"
+
+    def __init__(self, name: str, body: str, motor: str, proportional: Given,
+                 integral: Given, reference: MotorLaw, limit: Given | None = None) -> None:
+        name = _name("speed controller", name)
+        owner = f"speed controller {name!r}"
+        kp, ki = value(owner, "proportional", proportional), value(owner, "integral", integral)
+        _at_least(owner, "proportional", kp, 0.0, False)
+        _at_least(owner, "integral", ki, 0.0, False)
+        cap = None if limit is None else value(owner, "limit", limit)
+        if cap is not None:
+            _at_least(owner, "limit", cap, 0.0, True)
+            _at_least(owner, "integral (a limit's integral tracks it)", ki, 0.0, True)
+        for key, v in (("name", name), ("body", body), ("motor", motor), ("proportional", kp),
+                       ("integral", ki), ("reference", reference), ("limit", cap)):
+            object.__setattr__(self, key, v)
+
+    @property
+    def laws(self) -> tuple[MotorLaw, ...]:
+        """The laws in time it carries: its speed reference."""
+        return (self.reference,)
+
+
 #: The things that act on one body.
-ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw)
+ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw, DCMotor, SpeedController)

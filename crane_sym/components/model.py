@@ -38,7 +38,7 @@ from crane_sym.components.contacts import ContactPeak, contact_peaks, resting
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, HELD, ComponentSystem, Mode
 from crane_sym.components.initial import apply, shifts
-from crane_sym.components.laws import LawClock, MotorLaw
+from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.model_limits import MAX_PHASES, check_cycles
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
@@ -272,7 +272,7 @@ class Model:
                                  "cannot all rest on a flank")
         extra = {steady: torque} if steady is not None else {}
         for k, (g, kappa) in probe.moved.items():
-            law = probe.laws[k].part
+            law = probe.laws[k]
             if abs(law.value_at(0.0) - rates[g] * kappa) > 1e-9 * max(abs(law.value_at(0.0)),
                                                                       abs(rates[g] * kappa)):
                 raise ComponentError(f"{law.label}: its speed at t = 0 is "
@@ -281,7 +281,7 @@ class Model:
         mode = Mode(contacts, tuple(FREE for _ in range(n)),
                     tuple(False for _ in probe.brakes), driven,
                     tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
-                    tuple(0 for _ in probe.laws))
+                    tuple(0 for _ in probe.laws), tuple(0 for _ in probe.limits))
         return (*apply(self.initial, probe, mode, x, v), extra)
 
     def _at_once(self) -> tuple[bool, ...]:
@@ -303,10 +303,11 @@ class Model:
         mode = Mode(tuple(0 if l.part.opens else 1 for l in probe.backlash), tuple(motion),
                     engaged,
                     tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
-                    tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws))
+                    tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws),
+                    tuple(0 for _ in probe.limits))
         x = np.zeros(probe.size)
         for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
-            x[probe.v(g)] = probe.laws[k].part.value_at(0.0) / kappa
+            x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa
         mode, x = apply(self.initial, probe, mode, x)
         for g in sorted({probe.brake_group[i] for i, on in enumerate(engaged) if on}):
             held = replace(mode, motion=tuple(HELD if j == g else m
@@ -385,8 +386,7 @@ class Model:
                 out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
         out += [(l.part.fails_at, f"{l.part.name} breaks") for l in self.assembly.links
                 if l.part.fails_at is not None]
-        out += LawClock([l.part for l in self.assembly.loads if isinstance(l.part, MotorLaw)],
-                        0).schedule()
+        out += LawClock(clocked([l.part for l in self.assembly.loads]), 0).schedule()
         return tuple(sorted(out))
 
     def hybrid_run(self, duration: Given, link: str | None = None,

@@ -25,7 +25,7 @@ import re
 from dataclasses import dataclass
 from typing import Union
 
-from sympy.physics.units import Dimension, force, length, mass, time
+from sympy.physics.units import Dimension, current, force, length, mass, time
 
 from crane_sym import units
 
@@ -36,6 +36,7 @@ __all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "Elastic
 ROTATING, TRANSLATING = "rotating", "translating"
 _NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]{0,39}")
 _ONE = Dimension(1)
+_VOLT = force * length / (time * current)
 
 #: Each kind of value a component holds: its dimension and SI unit by the kind
 #: of body it acts on. The one table of them: :data:`DIMENSIONS` and
@@ -52,6 +53,13 @@ VALUE_KINDS: dict[str, dict[str, tuple[Dimension, str]]] = {
     "load": {ROTATING: (force * length, "N*m"), TRANSLATING: (force, "N")},
     "speed": {ROTATING: (1 / time, "rad/s"), TRANSLATING: (length / time, "m/s")},
     "acceleration": {ROTATING: (1 / time**2, "rad/s^2"), TRANSLATING: (length / time**2, "m/s^2")},
+    # a DC motor's torque per ampere (= its back-emf per unit of speed)
+    "motor constant": {ROTATING: (force * length / current, "N*m/A"),
+                       TRANSLATING: (force / current, "N/A")},
+    # a speed controller's gains, its output an armature voltage
+    "voltage per speed": {ROTATING: (_VOLT * time, "V*s/rad"),
+                          TRANSLATING: (_VOLT * time / length, "V*s/m")},
+    "voltage per displacement": {ROTATING: (_VOLT, "V/rad"), TRANSLATING: (_VOLT / length, "V/m")},
 }
 #: Dimension of each kind of value, by the kind of body it acts on.
 DIMENSIONS = {k: {motion: d for motion, (d, _) in by.items()} for k, by in VALUE_KINDS.items()}

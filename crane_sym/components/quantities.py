@@ -29,6 +29,9 @@ A parameter is named ``<component>.<key>`` as the component file writes it
                            unstretched: R = s Q/κ of its body's group (s = ±1, the
                            ground's side)
 ``<contact>.reaction_peak`` its largest reaction over the file's run, a number
+``<motor>.time_constant``  a DC motor's mechanical time constant τ = J_red / (−∂F/∂ω),
+                           F its force with the armature's current at rest
+                           (L di/dt = 0 solved for i): J_red R / k²
 ========================== ===========================================================
 
 A parameter whose value is zero (a shaft without inertia, an undamped link)
@@ -66,7 +69,10 @@ KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to
          "factor": ("link", "its dynamic factor: peak over reference or static load"),
          "reaction": ("contact", "the ground's reaction at rest at the start, the links "
                                  "unstretched"),
-         "reaction_peak": ("contact", "the ground's largest reaction over the file's run")}
+         "reaction_peak": ("contact", "the ground's largest reaction over the file's run"),
+         "time_constant": ("dc motor", "its mechanical time constant: the reduced inertia "
+                                       "over the slope of its torque against speed, the "
+                                       "armature's inductance neglected")}
 #: Quantities that are numbers of the file's run, not symbolic.
 NUMERIC = ("peak", "factor", "reaction_peak")
 
@@ -289,6 +295,8 @@ def derived_quantity(model: Model, path: str, run=None,
                         "(divided by its κ²)")
     if KINDS[what][0] == "contact":
         return _contact_quantity(model, path, run)
+    if KINDS[what][0] == "dc motor":
+        return _time_constant(model, path, name)
     link = _link(model, name) if name in [l.part.name for l in a.links] else None
     if link is None:
         raise ComponentError(f"quantity {path!r}: no elastic link {name!r}; links: "
@@ -365,3 +373,26 @@ def _contact_quantity(model: Model, path: str, run) -> Quantity:
     return Quantity(path, sp.simplify(reaction.xreplace(_zeros(model)).xreplace(signed(model))),
                     *unit, "the group at rest, every link unstretched: R = s Q/κ, motors on, "
                     "brakes off")
+
+
+def _time_constant(model: Model, path: str, name: str) -> Quantity:
+    """τ of the DC motor ``name``: its group's inertia referred to its body over
+    −∂F/∂ω, F its force on the body with its current where its own rate is 0."""
+    a, eq = model.assembly, model.equations
+    load = next((l for l in a.loads if l.part.name == name and l.part.kind == "dc motor"), None)
+    if load is None:
+        raise ComponentError(f"quantity {path!r}: no dc motor {name!r}")
+    part = load.part
+    g, _, kappa = a.place[part.body]
+    q = eq.coordinates[g]
+    acts = kinds.of(part).acts(part, kappa, q)
+    (current, rate), = acts.states
+    speed = sp.Dummy("omega")
+    force = acts.force.subs(current, sp.solve(rate, current)[0])
+    force = force.subs(q.diff(eq.t), speed / kappa)
+    inertia = eq.linear[0][g, g] / kappa**2
+    tau = sp.simplify((inertia / -sp.diff(force, speed)).xreplace(_zeros(model))
+                      .xreplace(signed(model)))
+    return Quantity(path, tau, time, "s",
+                    "the reduced inertia of its body over −∂F/∂ω, F = k i with "
+                    "L di/dt = 0 (i = (V − k ω)/R)")

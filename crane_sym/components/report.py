@@ -19,11 +19,13 @@ from crane_sym.components.generate import module_name, render_component_module
 from crane_sym.components.model import ComponentRun
 from crane_sym.components.reading import ComponentFile, read_component_file
 from crane_sym.mechanics.phase_table import values
-from crane_sym.components.parts import SENSES
+from crane_sym.components.parts import SENSES, UNITS
+from crane_sym.mechanics.phase_table import largest
 from crane_sym.scenes.panels import Panel, engineering, format_quantity
 from crane_sym.scenes.results import number
 
-__all__ = ["ComponentReport", "load_figures", "report_lines", "results", "run_component_file"]
+__all__ = ["ComponentReport", "PartPeak", "load_figures", "part_peaks", "report_lines", "results",
+           "run_component_file"]
 
 #: Points of the plotted curves.
 POINTS = 2001
@@ -36,6 +38,37 @@ class ComponentReport:
     run: ComponentRun
     lines: list[str]
     files: list[Path]
+
+
+@dataclass(frozen=True)
+class PartPeak:
+    """The largest value (signed, by magnitude) of what a part reports over a
+    run (a DC motor's current, torque, speed) and when it occurs."""
+
+    part: str
+    what: str
+    unit: str
+    time: float
+    value: float
+
+
+def part_peaks(run: ComponentRun) -> list[PartPeak]:
+    """The peak of every value the run's parts report (``Acting.outputs``), in
+    the order the parts were given.
+
+    Parameters
+    ----------
+    run : ComponentRun
+        The run.
+    """
+    a, out = run.system.assembly, []
+    bodies = {l.part.name: a.bodies[l.part.body] for l in a.loads}
+    for part, what, unit, value in run.model.equations.outputs:
+        w = run.system.first_order.weights(value)
+        when, peak = largest(run.result, run.system, lambda mode, w=w: (w, 0.0), magnitude=True)
+        si = UNITS[unit][bodies[part].motion] if unit in UNITS else unit
+        out.append(PartPeak(part, what, si, when, peak))
+    return out
 
 
 #: How the sign of a link's load reads, said once above the loads.
@@ -101,6 +134,9 @@ def report_lines(run: ComponentRun) -> list[str]:
         lines.append(f"peak reaction of {r.contact}: {load_text(r.value, r.unit, None, *scale)}"
                      f" at t = {format_quantity(r.time, 's')} (at the start "
                      f"{load_text(r.start, r.unit, None, *scale)})")
+    for p in part_peaks(run):
+        lines.append(f"peak {p.what} of {p.part}: {format_quantity(p.value, p.unit)} at "
+                     f"t = {format_quantity(p.time, 's')}")
     for t, event in run.events:
         lines.append(f"event at t = {format_quantity(t, 's', 6)}: {event}")
     return lines
@@ -136,6 +172,9 @@ def results(report: ComponentReport) -> dict:
                       f"{r.contact}.reaction_peak_time": {"value": number(r.time), "unit": "s"},
                       f"{r.contact}.reaction_start": {"value": number(r.start),
                                                       "unit": r.unit}})
+    for p in part_peaks(report.run):
+        found.update({f"{p.part}.{p.what}.peak": {"value": number(p.value), "unit": p.unit},
+                      f"{p.part}.{p.what}.peak_time": {"value": number(p.time), "unit": "s"}})
     return {"scene": model.name, "title": model.title, "model": model.name,
             "results": found,
             "sign_convention": SIGNS.removeprefix("signs: "),

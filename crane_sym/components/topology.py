@@ -27,8 +27,8 @@ import sympy as sp
 
 from crane_sym import units
 from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import (ACTING, Brake, Characteristic, Gravity, GroundContact,
-                                        Motor)
+from crane_sym.components.loads import (ACTING, Brake, Characteristic, DCMotor, Gravity,
+                                        GroundContact, Motor, SpeedController)
 from crane_sym.components.parts import (DIMENSIONS, GROUND, RIGID, ROTATING, TRANSLATING, Body,
                                         Component, ComponentError, Drum, ElasticLink, Gear)
 
@@ -199,7 +199,7 @@ def assemble(components: Sequence[Component]) -> Assembly:
     _connected(bodies, rigid, elastic)
     groups, place = _groups(bodies, rigid)
     links = tuple(_link(p, bodies, place) for p in elastic)
-    loads = tuple(_load(p, bodies) for p in components if isinstance(p, ACTING))
+    loads = tuple(_load(p, bodies, components) for p in components if isinstance(p, ACTING))
     steady = [l.part.label for l in loads if isinstance(l.part, Motor) and l.load is None]
     if len(steady) > 1:
         raise ComponentError(f"{steady[1]}: only one motor may be 'steady' ({steady[0]} is)")
@@ -385,7 +385,7 @@ def _link(part: ElasticLink, bodies: dict[str, Body],
                 check("backlash", part.backlash), reference)
 
 
-def _load(part: Component, bodies: dict[str, Body]) -> Load:
+def _load(part: Component, bodies: dict[str, Body], components: Sequence[Component]) -> Load:
     body = bodies[part.body]
     if isinstance(part, Gravity):
         if body.motion != TRANSLATING:
@@ -402,6 +402,16 @@ def _load(part: Component, bodies: dict[str, Body]) -> Load:
                                  f"{units.format_dimension(part.dimension)}, expected "
                                  f"{units.describe_dimension(expected)}")
         return Load(part, None)
+    if isinstance(part, DCMotor):
+        where = f"{part.label} on {body.label}"
+        if not units.same_dimension(part.voltage.dimension, units.UNITS["V"][1]):
+            raise ComponentError(f"{where}: its voltage unit {part.voltage.unit!r} is "
+                                 f"{units.format_dimension(part.voltage.dimension)}, expected "
+                                 f"a voltage (e.g. V)")
+        k = part.constant.check(where, "constant", DIMENSIONS["motor constant"][body.motion])
+        return Load(part, None, (part.resistance.si, part.inductance.si, k))
+    if isinstance(part, SpeedController):
+        return _controller(part, bodies, components)
     if isinstance(part, Characteristic):
         where = f"{part.label} on {body.label}"
         speed = part.speed.check(where, "speed", DIMENSIONS["speed"][body.motion])
@@ -411,3 +421,27 @@ def _load(part: Component, bodies: dict[str, Body]) -> Load:
     return Load(part, part.load.check(f"{part.label} on {body.label}", word,
                                       DIMENSIONS["load"][body.motion]))
 
+
+def _controller(part: SpeedController, bodies: dict[str, Body],
+                components: Sequence[Component]) -> Load:
+    """A speed controller's gains (volts per speed, per displacement) and torque
+    limit in SI, checked by the motion of its body and of its DC motor's."""
+    body = bodies[part.body]
+    where = f"{part.label} on {body.label}"
+    motors = {p.name: p for p in components if isinstance(p, DCMotor)}
+    if part.motor not in motors:
+        raise ComponentError(f"{where}: motor {part.motor!r} is no dc_motor; dc motors: "
+                             f"{', '.join(motors) or 'none'}")
+    if not units.same_dimension(part.reference.dimension, DIMENSIONS["speed"][body.motion]):
+        raise ComponentError(f"{where}: its reference unit {part.reference.unit!r} is "
+                             f"{units.format_dimension(part.reference.dimension)}, expected "
+                             f"{units.describe_dimension(DIMENSIONS['speed'][body.motion])}")
+    gains = (part.proportional.check(where, "proportional",
+                                     DIMENSIONS["voltage per speed"][body.motion]),
+             part.integral.check(where, "integral",
+                                 DIMENSIONS["voltage per displacement"][body.motion]))
+    if part.limit is None:
+        return Load(part, None, (*gains, None))
+    motion = bodies[motors[part.motor].body].motion
+    return Load(part, None, (*gains, part.limit.check(where, "limit",
+                                                      DIMENSIONS["load"][motion])))

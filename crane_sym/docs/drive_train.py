@@ -25,6 +25,7 @@ from crane_sym.components.model import ComponentRun
 from crane_sym.components.parts import ComponentError
 from crane_sym.components.quantities import derived_quantity, parameters, static_loads
 from crane_sym.components.reading import ComponentFile, read_component_file
+from crane_sym.docs.drive_train_states import limit_words, state_names, states_section
 from crane_sym.docs.numbers import math_errors
 from crane_sym.docs.rows import aligned_rows, column_blocks, sum_terms
 from crane_sym.docs.walkthrough import _display, _math_cell
@@ -201,7 +202,7 @@ def describe_mode(system: ComponentSystem, mode: Mode) -> str:
         words.append(f"{motor.part.name} {'on' if on else 'off'}")
     for law, k in zip(system.characteristics, mode.steps):
         words.append(f"{law.part.name} on step {k + 1}")
-    return "; ".join(words) or "one mode"
+    return "; ".join(words + limit_words(system, mode)) or "one mode"
 
 
 def _number(x: float) -> str:
@@ -244,6 +245,7 @@ def _state(system: ComponentSystem) -> str:
     for law in system.clock.laws:        # w_j = τ^j of the law's current piece
         upright = "\\mathrm{" + law.name.replace("_", "\\_") + "}"
         names += [f"w_{{{upright},{j}}}" for j in range(1, law.degree + 1)]
+    names += state_names(system)
     return ", ".join(f"$x_{{{k}}} = {n}$" for k, n in enumerate(names, start=1))
 
 
@@ -258,16 +260,19 @@ def _modes(run: ComponentRun) -> list[str]:
     lines += [f"{c.part.name}: {len(c.part.slopes)} steps" for c in system.characteristics]
     braked = sorted({system.assembly.groups[g].name for g in system.brake_group})
     lines += [f"group {name}: free, sliding against its brakes, held" for name in braked]
+    lines += [f"{limit.name}: within its limit, at it (integral frozen, then tracking)"
+              for limit in system.limits]
     out.append("What switches: " + ("; ".join(lines) if lines else "nothing (one mode)")
                + ". A group held by its brakes has $\\dot q = 0$ until its load exceeds "
                "what they hold; a sliding group feels their friction against its motion.")
+    first = "; then the parts' first-order states" if system.equations.states else ""
     out.append(f"The state is $x$: {_state(system)} (each group's coordinate and speed, "
                "then the build-up $0 \\le \\beta \\le 1$ of each brake that does not act at "
                "once, then for each law in time of degree $K$ the clock states "
                "$w_j = \\tau^j$, $j = 1 \\ldots K$, of the time $\\tau$ since its piece began: "
                "$w_j' = j\\,w_{j-1}$, restarted at every breakpoint, so the law stays "
-               f"linear in the state). Each mode the run passes through, with $x' = A x + b$ in SI units "
-               f"({MATRIX_DIGITS} significant digits):")
+               f"linear in the state{first}). Each mode the run passes through, with "
+               f"$x' = A x + b$ in SI units ({MATRIX_DIGITS} significant digits):")
     seen = []
     for seg in run.result.segments:
         if seg.mode in seen:
@@ -408,7 +413,7 @@ def render(read: ComponentFile, run: ComponentRun, records=()) -> str:
              "## Symbols", *_symbols(read, run),
              "## Rigid groups", *_groups(read),
              "## Energies and forces", *_energies(read),
-             "## Lagrange's equations", *_lagrange(read),
+             "## Lagrange's equations", *_lagrange(read), *states_section(model),
              "## Modes", *_modes(run),
              "## The run", *_phases(read, run),
              "## Results", *_results(run)]

@@ -7,9 +7,9 @@ May import: the rest of ``components`` below the reader (``parts``,
 ``loads``, ``laws``) and the top-level vocabulary; never ``reading``,
 ``designs`` or what imports them.
 """
-from crane_sym.components.kinds import (brake, characteristic, drum, elastic, gear, gravity,
-                                        ground_contact, inertia, initial, mass, motor,
-                                        motor_law, pendulum, resistance)
+from crane_sym.components.kinds import (brake, characteristic, dc_motor, drum, elastic, gear,
+                                        gravity, ground_contact, inertia, initial, mass, motor,
+                                        motor_law, pendulum, resistance, speed_controller)
 from crane_sym.components.kinds.base import Key, Kind
 
 from crane_sym.components.parts import Component
@@ -18,8 +18,9 @@ __all__ = ["KINDS", "Key", "Kind", "by_table", "of"]
 
 #: Every kind, in the order a component file's tables are read.
 KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, pendulum, brake,
-                                      motor, characteristic, motor_law, gravity, resistance,
-                                      initial, ground_contact)]
+                                      motor, characteristic, motor_law, dc_motor,
+                                      speed_controller, gravity, resistance, initial,
+                                      ground_contact)]
 
 
 def by_table() -> dict[str, Kind]:

@@ -27,6 +27,7 @@ from typing import Any, Callable
 import sympy as sp
 from sympy.physics.units import Dimension, length, time
 
+from crane_sym.components.loads import HENRY, OHM
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
 __all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Key", "Kind", "Symbolic", "failure",
@@ -94,7 +95,8 @@ class Key:
 
 
 #: The SI unit of each fixed dimension a key may hold.
-FIXED_UNITS = {Dimension(1): "1", length: "m", time: "s", length / time**2: "m/s^2"}
+FIXED_UNITS = {Dimension(1): "1", length: "m", time: "s", length / time**2: "m/s^2",
+               OHM: "ohm", HENRY: "H"}
 
 
 @dataclass(frozen=True)
@@ -129,13 +131,28 @@ class Acting:
     """What a part acting on one body adds to the generalized force: its force
     ``force`` along the body's coordinate (None: an acceleration law, which
     drives the rigid drive instead), the mode's symbols it brings as
-    ``(role, symbol)`` (a role of :data:`ROLES`), and whether the force is
+    ``(role, symbol)`` (a role of :data:`ROLES`), whether the force is
     ``constant`` in time (a weight, a resistance, a motor: what an
-    acceleration law's rigid drive balances)."""
+    acceleration law's rigid drive balances), its first-order ``states``
+    with their rates (the force may hold them; a state two parts declare
+    takes the sum of their rates) and the ``limits`` on them."""
 
     force: sp.Expr | None
     joins: tuple[tuple[str, sp.Symbol], ...] = ()
     constant: bool = False
+    #: The part's first-order states, (s, ds/dt) each: the rate affine in the
+    #: bodies' speeds q̇, the states and the signals (a DC motor's current).
+    states: tuple[tuple[sp.Symbol, sp.Expr], ...] = ()
+    #: Its limits, (s, bound, z) each: the state s kept within ±bound (an
+    #: expression in the parameters); at a bound, the state z tracks
+    #: (:mod:`crane_sym.components.first_order`: a torque limit holds the
+    #: current, the controller's integral follows).
+    limits: tuple[tuple[sp.Symbol, sp.Expr, sp.Symbol], ...] = ()
+    #: What a run reports of it, (what, unit, value) each: the unit a row of
+    #: :data:`~crane_sym.components.parts.UNITS` (by its body's motion) or a
+    #: unit's text; the value affine in q, q̇ and the states (a DC motor's
+    #: current, torque and speed), its peak printed.
+    outputs: tuple[tuple[str, str, sp.Expr], ...] = ()
 
 
 #: The :class:`Acting` of a part on its body, given the body's κ and its

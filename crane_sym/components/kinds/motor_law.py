@@ -4,8 +4,8 @@ import sympy as sp
 from sympy.physics.units import time
 
 from crane_sym.components.kinds.base import Acting, Key, Kind, run_end
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.parts import UNITS
+from crane_sym.components.laws import KINDS, SIGNALS, MotorLaw
+from crane_sym.components.parts import UNITS, ComponentError
 
 
 
@@ -45,12 +45,17 @@ def _switching(part: MotorLaw, motion: str) -> tuple:
                          for k, row in enumerate(part.coefficients, start=1))
 
 
+def _build(g: dict, entry: dict, where: str) -> MotorLaw:
+    """The law; a law that gives no load (a voltage) belongs to its part's own table."""
+    if g["law"] in SIGNALS:
+        raise ComponentError(f"{where}: law must be one of {', '.join(KINDS)}, got {g['law']!r}")
+    return MotorLaw(g["name"], g["body"], g["breakpoints"], g["coefficients"], g["unit"],
+                    g["law"], g["time_unit"])
+
+
 KIND = Kind("motor_law", (Key("name", "word"), Key("body", "body"), Key("law", "word"),
                           Key("unit", "word"), Key("breakpoints", "law"),
                           Key("coefficients", "law"),
                           Key("time_unit", "word", required=False, default="s")),
-            lambda g, entry, where: MotorLaw(g["name"], g["body"], g["breakpoints"],
-                                             g["coefficients"], g["unit"], g["law"],
-                                             g["time_unit"]),
-            "a law in time on a body", "motor law", _idle, acts=_acts,
+            _build, "a law in time on a body", "motor law", _idle, acts=_acts,
             switching=_switching)
