@@ -137,7 +137,7 @@ class ComponentSystem:
         for k, b in enumerate(self.brakes):
             self.events[f"{b.part.name} engages"] = ("engage", k)
             self.events[f"{b.part.name} ramp done"] = ("ramped", k)
-            self.events[f"{b.part.name} releases"] = ("release", k)
+            self.events[f"{b.part.name} releases"] = ("let go", k)
         for m, motor in enumerate(self.motors):
             self.events[f"{motor.part.name} off"] = ("off", m)
         for m, law in enumerate(self.characteristics):
@@ -378,7 +378,7 @@ class ComponentSystem:
             x[self.beta[i]] = 1.0
             return replace(mode, ramping=tuple(ramping)), x
         motion, g = list(mode.motion), i
-        if kind == "release":
+        if kind == "let go":
             return self._release(mode, i, x), x
         if kind == "engage":
             engaged, ramping = list(mode.engaged), list(mode.ramping)

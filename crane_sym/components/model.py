@@ -281,7 +281,7 @@ class Model:
         mode = Mode(contacts, tuple(FREE for _ in range(n)),
                     tuple(False for _ in probe.brakes), driven,
                     tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
-                    tuple(0 for _ in probe.laws), tuple(0 for _ in probe.limits))
+                    tuple(0 for _ in probe.laws), limits=tuple(0 for _ in probe.limits))
         return (*apply(self.initial, probe, mode, x, v), extra)
 
     def _at_once(self) -> tuple[bool, ...]:
@@ -304,7 +304,7 @@ class Model:
                     engaged,
                     tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
                     tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws),
-                    tuple(0 for _ in probe.limits))
+                    limits=tuple(0 for _ in probe.limits))
         x = np.zeros(probe.size)
         for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
             x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa
