@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
+from crane_sym.cli.main import main
 from crane_sym.components.reading import read_component_file
 from hybrid_references import lift_off_reference
 
@@ -92,3 +93,12 @@ def _at(run, affine, t: float) -> float:
     seg = next(s for s in run.result.segments if s.t0 <= t <= s.t1)
     w, k = affine(seg.mode)
     return float(np.asarray(w) @ run.result.state(np.array(t)) + k)
+
+
+def test_the_walkthrough_shows_the_contact(tmp_path):
+    page = tmp_path / "page.md"
+    assert main(["walkthrough", str(EXAMPLE), "--out", str(page), "-q"]) == 0
+    text = page.read_text(encoding="utf-8")
+    assert "| ground_support | ground_contact | load | direction = + |" in text
+    assert "ground_support lifts off" in text and "ground_support sets down" in text
+    assert "| ground_support | 98100.0 N | 0.00000 s | 98100.0 N |" in text

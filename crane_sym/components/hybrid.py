@@ -309,7 +309,8 @@ class ComponentSystem:
             name, g = contact.part.name, contact.group
             if mode.motion[g] == HELD:
                 w, k = self.reaction(mode, j)
-                out.append(Guard(f"{name} lifts off", tuple(w), k, -1))
+                if w.any():                     # a constant reaction never turns negative
+                    out.append(Guard(f"{name} lifts off", tuple(w), k, -1))
             else:                               # the body's way towards the ground
                 w = np.zeros(self.size)
                 w[self.q(g)] = contact.part.sign * contact.kappa

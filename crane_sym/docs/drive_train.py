@@ -329,7 +329,8 @@ def _phases(read: ComponentFile, run: ComponentRun) -> list[str]:
     return [f"The run starts {start} and is solved phase by phase in closed form: in "
             "each phase the mode is fixed and $x(t)$ is the exact solution of "
             "$x' = A x + b$; a phase ends at the first event (a gap closing or opening, a "
-            "group coming to rest or slipping, a brake engaging, a motor switched off), "
+            "group coming to rest or slipping, a body lifting off the ground or set down "
+            "on it, a brake engaging, a motor switched off), "
             f"found on that closed form.{note}",
             _table(["phase", "from", "to", "mode", "ended by"], rows)]
 
@@ -346,7 +347,17 @@ def _results(run: ComponentRun) -> list[str]:
             "peak over reference (EN 13001-2's φ5 for drive forces); a negative factor is a "
             "peak that acts against the load at the start.",
             _table(["link", "peak", "at", "at the start", "reference",
-                            "dynamic factor"], rows)] + _static(run)
+                            "dynamic factor"], rows)] + _reactions(run) + _static(run)
+
+
+def _reactions(run: ComponentRun) -> list[str]:
+    """Each ground contact's largest reaction, when, and its reaction at the start."""
+    rows = [[r.contact, format_quantity(r.value, r.unit, 6), format_quantity(r.time, "s", 6),
+             format_quantity(r.start, r.unit, 6)] for r in run.reactions]
+    return ["For every ground contact: the ground's largest reaction over the run, when it "
+            "occurs, and its reaction at the start (0 while the body is off the ground).",
+            _table(["ground contact", "peak reaction", "at", "at the start"], rows)] \
+        if rows else []
 
 
 def _static(run: ComponentRun) -> list[str]:
