@@ -212,6 +212,9 @@ class Model:
         a = self.assembly
         if rest:
             return self._rest_start()
+        if a.couplings:
+            raise ComponentError(f"start: a steady start sets the speeds through the elastic "
+                                 f"links, not through {a.couplings[0].label}; start at rest")
         body = body or next(iter(a.bodies))
         if body not in a.bodies:
             raise ComponentError(f"start: unknown body {body!r}; bodies: {', '.join(a.bodies)}")

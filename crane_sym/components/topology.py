@@ -24,6 +24,7 @@ from typing import Sequence
 import sympy as sp
 
 from crane_sym import units
+from crane_sym.components import kinds
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.loads import ACTING, Brake, Characteristic, Gravity, Motor
 from crane_sym.components.parts import (DIMENSIONS, RIGID, ROTATING, TRANSLATING, Body, Component,
@@ -89,6 +90,9 @@ class Assembly:
     links: tuple[Link, ...]
     loads: tuple[Load, ...]
     rigid: tuple[Gear | Drum, ...] = ()
+    #: The parts that join several coordinates by their own energies (spans:
+    #: ``Kind.couples``), in the order given.
+    couplings: tuple[Component, ...] = ()
 
     def loads_of(self, kind: type) -> list[Load]:
         return [l for l in self.loads if isinstance(l.part, kind)]
@@ -130,8 +134,18 @@ def assemble(components: Sequence[Component]) -> Assembly:
         for end in (part.ends if isinstance(part, (*RIGID, ElasticLink)) else (part.body,)):
             if end not in bodies:
                 raise _unknown(part.label, end, list(bodies))
+    couplings = [p for p in components if kinds.of(p).couples is not None]
+    joined = []
+    for part in couplings:
+        couples = kinds.of(part).couples
+        names = couples.bodies(part)
+        for end in names:
+            if end not in bodies:
+                raise _unknown(part.label, end, list(bodies))
+        couples.check(part, bodies)
+        joined.append(names)
     _kinds(bodies, rigid, elastic)
-    _connected(bodies, rigid, elastic)
+    _connected(bodies, rigid, elastic, joined)
     groups, place = _groups(bodies, rigid)
     links = tuple(_link(p, bodies, place) for p in elastic)
     loads = tuple(_load(p, bodies) for p in components if isinstance(p, ACTING))
@@ -144,7 +158,7 @@ def assemble(components: Sequence[Component]) -> Assembly:
     if len(balancing) > 1:
         raise ComponentError(f"{balancing[1]}: only one motor may balance the others "
                              f"({balancing[0]} does: a 'steady' torque or an acceleration law)")
-    return Assembly(bodies, groups, place, links, loads, tuple(rigid))
+    return Assembly(bodies, groups, place, links, loads, tuple(rigid), tuple(couplings))
 
 
 def _speed_laws(loads: tuple[Load, ...], groups: tuple[Group, ...],
@@ -188,15 +202,18 @@ def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
                                  "keeps its sign")
 
 
-def _connected(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
-    """Every body in a link, and all of them one connected drive."""
+def _connected(bodies: dict[str, Body], rigid: list, elastic: list,
+               joined: list[tuple[str, ...]]) -> None:
+    """Every body in a link, and all of them one connected drive (a span joins
+    the bodies it names, ``joined``)."""
     edges = [p.ends for p in [*rigid, *elastic]]
-    touched = {e for pair in edges for e in pair}
+    edges += [pair for names in joined for pair in zip(names, names[1:])]
+    touched = {e for pair in edges for e in pair} | {e for names in joined for e in names}
     if len(bodies) > 1:
         for name, body in bodies.items():
             if name not in touched:
-                raise ComponentError(f"{body.label} is connected to nothing (no gear, drum "
-                                     "or elastic link names it)")
+                raise ComponentError(f"{body.label} is connected to nothing (no gear, drum, "
+                                     "elastic link or span names it)")
     first = next(iter(bodies))
     reached, todo = {first}, [first]
     while todo:
@@ -209,7 +226,8 @@ def _connected(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
     for name, body in bodies.items():
         if name not in reached:
             raise ComponentError(f"{body.label} is not connected to {bodies[first].label}: "
-                                 "no chain of gears, drums and elastic links joins them")
+                                 "no chain of gears, drums, elastic links and spans joins "
+                                 "them")
 
 
 def rigid_factor(part: Gear | Drum) -> sp.Expr:

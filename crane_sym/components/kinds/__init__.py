@@ -8,7 +8,8 @@ May import: the rest of ``components`` below the reader (``parts``,
 ``designs`` or what imports them.
 """
 from crane_sym.components.kinds import (brake, characteristic, drum, elastic, gear, gravity,
-                                        inertia, initial, mass, motor, motor_law, resistance)
+                                        inertia, initial, mass, motor, motor_law, resistance,
+                                        span)
 from crane_sym.components.kinds.base import Key, Kind
 
 from crane_sym.components.parts import Component
@@ -18,7 +19,7 @@ __all__ = ["KINDS", "Key", "Kind", "by_table", "of"]
 #: Every kind, in the order a component file's tables are read.
 KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, brake, motor,
                                       characteristic, motor_law, gravity, resistance,
-                                      initial)]
+                                      initial, span)]
 
 
 def by_table() -> dict[str, Kind]:

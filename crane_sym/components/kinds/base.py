@@ -12,6 +12,9 @@ A key's ``form`` says how the file writes it:
 ``list``     a list of quantities as text (``["0.4 s", "0.8 s"]``)
 ``law``      numbers only, never text, checked by the law's own reader
 ``ends``     the two body names a link joins
+``terms``    a table of body names, each with its factor (a number, or text
+             with a unit): a point that moves as a linear combination of the
+             bodies' coordinates (a span's end, ``{ drum = "250 mm", hub = -1 }``)
 ============ ==============================================================
 
 A key's ``value`` is a kind of value (a key of
@@ -29,10 +32,10 @@ from sympy.physics.units import Dimension, length, time
 
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
-__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Key", "Kind", "Symbolic", "load_key",
-           "run_end"]
+__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Coupling", "Key", "Kind", "Symbolic",
+           "load_key", "run_end"]
 
-FORMS = ("quantity", "number", "word", "body", "list", "law", "ends")
+FORMS = ("quantity", "number", "word", "body", "list", "law", "ends", "terms")
 #: The signs a swept value may be bound to keep ("": either).
 SIGNS = ("positive", "nonnegative", "nonzero", "")
 
@@ -74,6 +77,14 @@ class Key:
         if self.form == "ends":
             if not (isinstance(v, list) and len(v) == 2 and all(isinstance(e, str) for e in v)):
                 raise ComponentError(f"{where}: {self.name} must be two body names, got {v!r}")
+            return v
+        if self.form == "terms":
+            if not (isinstance(v, dict) and all(
+                    isinstance(f, str) or (isinstance(f, (int, float)) and not isinstance(f, bool))
+                    for f in v.values())):
+                raise ComponentError(f"{where}: {self.name} must be a table of body names and "
+                                     f"factors, e.g. {self.name} = {{ drum = \"250 mm\", "
+                                     f"hub = -1 }}, got {v!r}")
             return v
         if self.form == "list":
             if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
@@ -159,6 +170,23 @@ Builder = Callable[[dict[str, Any], dict, str], Component]
 
 
 @dataclass(frozen=True)
+class Coupling:
+    """What a part that joins several coordinates by its own energies (a
+    span: :mod:`crane_sym.components.kinds.span`) gives the toolkit:
+    ``bodies(part)``, the names of the bodies it joins; ``check(part,
+    bodies)``, its values against those bodies (their motion, its factors'
+    dimensions; ComponentError, one line); ``energies(part, where)``, its
+    share (T, Π, Φ) of the energies, given each body's (κ, q(t));
+    ``values(part)``, each symbol of that share that is not a
+    :class:`Symbolic` of its kind (a factor), with its SI value."""
+
+    bodies: Callable[[Component], tuple[str, ...]]
+    check: Callable[[Component, dict], None]
+    energies: Callable[[Component, dict], tuple[sp.Expr, sp.Expr, sp.Expr]]
+    values: Callable[[Component], dict]
+
+
+@dataclass(frozen=True)
 class Kind:
     """A kind of component: its ``table`` (``[[table]]`` in a component file),
     its ``keys`` (the required ones first), how its part is built, one line
@@ -166,8 +194,9 @@ class Kind:
     table: ``Component.kind``), when a run may drop one (``idle``; None:
     never), the values its equations hold as symbols (``symbols``), what
     its derivation rests on beside them (``shape``), for a part acting on
-    one body its share of Q (``acts``), and the values that switch the model
-    (``switching``)."""
+    one body its share of Q (``acts``), the values that switch the model
+    (``switching``), and for a part that joins several coordinates by its
+    own energies its :class:`Coupling` (``couples``)."""
 
     table: str
     keys: tuple[Key, ...]
@@ -183,6 +212,8 @@ class Kind:
     acts: Acts | None = None
     #: The values that switch the model rather than enter its equations.
     switching: Switching | None = None
+    #: For a part that joins several coordinates by its own T, Π and Φ.
+    couples: Coupling | None = None
 
     @property
     def part_kind(self) -> str:
