@@ -61,8 +61,8 @@ def _renaming(eq, p):
             s["c_shaft2"]: p.C2, s["d_shaft2"]: p.nu2, s["c_bending"]: p.C_y,
             s["d_bending"]: p.nu_y, s["m_bending"]: 0, s["c_tight"]: p.C_t, s["d_tight"]: 0,
             s["m_tight"]: p.q * p.L, s["c_slack"]: p.C_z, s["d_slack"]: p.nu_z,
-            s["m_slack"]: p.q * p.L, s["a_tight_end_drum"]: p.r,
-            s["a_slack_start_drum"]: p.r, s["R_pretension"]: 2 * p.F0, s["R_load"]: -p.W,
+            s["m_slack"]: p.q * p.L, s["a_drum_250_mm"]: p.r,
+            s["R_pretension"]: 2 * p.F0, s["R_load"]: -p.W,
             s["beta_running"]: p.nu_t, s["v0_running"]: 0, s["M_drive"]: p.M0,
             s["on_drive"]: 1}
 
@@ -211,3 +211,21 @@ def test_a_steady_start_with_a_span_is_refused_in_one_line():
     with pytest.raises(ComponentError, match=r"^start: a steady start sets the speeds through "
                        r"the elastic links, not through span 'rope'; start at rest$"):
         model.start(None, 0.0, False)
+
+
+def test_the_natural_frequency_of_a_full_mass_matrix(read):
+    """ω1 and ζ1 of the drum drive (M full, one rigid-body root) from the
+    vibration module's mpmath route (L⁻¹ K L⁻ᵀ, M = L Lᵀ) against SciPy's
+    generalized eigenproblem K φ = ω² M φ and φᵀDφ / (2 ω φᵀMφ)."""
+    import scipy.linalg
+    from crane_sym.components.vibration import ModeChoice, natural_frequency
+    eq = read.model.equations
+    f = natural_frequency(read.model, ModeChoice())
+    assert "1 rigid-body root(s) dropped, 4 elastic" in f.how
+    M, D, K, _ = eq.numeric()([], [], [1.0], [], [DRUM["nu_t"]])
+    lam, phi = scipy.linalg.eigh(K, M)
+    shape = phi[:, 1]
+    omega = np.sqrt(lam[1])
+    zeta = shape @ D @ shape / (2 * omega * (shape @ M @ shape))
+    assert float(f.omega.xreplace(eq.values)) == pytest.approx(omega, rel=1e-10)
+    assert float(f.zeta.xreplace(eq.values)) == pytest.approx(zeta, rel=1e-8)

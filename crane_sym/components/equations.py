@@ -271,7 +271,8 @@ def parameter_values(assembly: Assembly) -> dict[sp.Symbol, float]:
             if v is not None:                   # a steady motor's, solved at the start
                 values[declared.symbol(part.name)] = v
         if kind.couples is not None:            # a span's factors
-            values.update(kind.couples.values(part))
+            values.update((f.symbol, f.value) for f in kind.couples.factors(part,
+                                                                             assembly.bodies))
     return values
 
 

@@ -259,10 +259,18 @@ class ComponentSystem:
                 r = r - coupling @ b[known]
             mass = M[np.ix_(free, free)]
             A[rows], b[rows] = _solved(mass, R, r)
-            if S.any():
+            if S.any() or s.any():
                 friction = _solved(mass, S[free], s[free])
                 A[rows] -= friction[0]
                 b[rows] -= friction[1]
+        for i, col in self.beta.items():
+            part = self.brakes[i].part
+            if not mode.engaged[i]:
+                continue
+            if part.build_up == "ramp" and mode.ramping[i]:
+                b[col] = 1.0 / part.time
+            elif part.build_up == "exponential":
+                A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
         return A, b
 
     def guards(self, mode: Mode) -> list[Guard]:

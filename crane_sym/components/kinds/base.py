@@ -32,8 +32,8 @@ from sympy.physics.units import Dimension, length, time
 
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
-__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Coupling", "Key", "Kind", "Symbolic",
-           "load_key", "run_end"]
+__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Coupling", "Factor", "Key", "Kind",
+           "Symbolic", "load_key", "run_end"]
 
 FORMS = ("quantity", "number", "word", "body", "list", "law", "ends", "terms")
 #: The signs a swept value may be bound to keep ("": either).
@@ -170,6 +170,20 @@ Builder = Callable[[dict[str, Any], dict, str], Component]
 
 
 @dataclass(frozen=True)
+class Factor:
+    """A value of a coupling's share of the energies that is not a
+    :class:`Symbolic` of its kind (a span's factor): its parameter's name
+    after the part's (``end.drum``), its symbol, its SI value, its dimension
+    and what it is."""
+
+    key: str
+    symbol: sp.Symbol
+    value: float
+    dimension: Dimension
+    what: str
+
+
+@dataclass(frozen=True)
 class Coupling:
     """What a part that joins several coordinates by its own energies (a
     span: :mod:`crane_sym.components.kinds.span`) gives the toolkit:
@@ -177,13 +191,12 @@ class Coupling:
     bodies)``, its values against those bodies (their motion, its factors'
     dimensions; ComponentError, one line); ``energies(part, where)``, its
     share (T, Π, Φ) of the energies, given each body's (κ, q(t));
-    ``values(part)``, each symbol of that share that is not a
-    :class:`Symbolic` of its kind (a factor), with its SI value."""
+    ``factors(part, bodies)``, each :class:`Factor` of that share."""
 
     bodies: Callable[[Component], tuple[str, ...]]
     check: Callable[[Component, dict], None]
     energies: Callable[[Component, dict], tuple[sp.Expr, sp.Expr, sp.Expr]]
-    values: Callable[[Component], dict]
+    factors: Callable[[Component, dict], "tuple[Factor, ...]"]
 
 
 @dataclass(frozen=True)
@@ -230,8 +243,9 @@ class Kind:
 
     @property
     def places(self) -> tuple[Key, ...]:
-        """The keys that name the bodies a part joins or acts on."""
-        return tuple(k for k in self.keys if k.form in ("body", "ends"))
+        """The keys that name the bodies a part joins or acts on (a span's
+        points)."""
+        return tuple(k for k in self.keys if k.form in ("body", "ends", "terms"))
 
     def key(self, name: str) -> Key:
         """The key called ``name``; KeyError if the kind has none."""

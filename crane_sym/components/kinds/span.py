@@ -22,16 +22,18 @@ a quadratic form in several coordinates' speeds: the mass matrix is no
 longer diagonal. A factor is the point's displacement per unit of the
 body's coordinate (m/rad for a rotating body, a number for a translating
 one); a bare integer enters the equations as that
-integer, any other factor as a symbol ``a_<span>_<start|end>_<body>`` with
-its SI value. A span with one point on the frame is a spring to the ground.
+integer, any other factor as its sign times a symbol ``a_<body>_<text>`` of
+its magnitude (``a_drum_250_mm``: spans that write a radius alike share it),
+the parameter ``<span>.<start|end>.<body>`` of a [[formula]]. A span with one point on the frame is a spring to the ground.
 """
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 import sympy as sp
 
-from crane_sym.components.kinds.base import Coupling, Key, Kind, Symbolic
+from crane_sym.components.kinds.base import Coupling, Factor, Key, Kind, Symbolic
 from crane_sym.components.parts import (DIMENSIONS, TRANSLATING, Body, Component,
                                         ComponentError, Given, Value, _at_least, _name, value)
 
@@ -87,13 +89,18 @@ def _exact(f: Value) -> bool:
         "e" not in f.text.lower()
 
 
-def factor_symbol(span: Span, side: str, body: str) -> sp.Symbol:
-    """The symbol of a factor that is not a bare integer."""
-    return sp.Symbol(f"a_{span.name}_{side}_{body}", real=True)
+def factor_symbol(body: str, f: Value) -> sp.Symbol:
+    """The symbol of a factor that is not a bare integer: its magnitude, named
+    after the body and the text, so that spans writing one radius alike share
+    it (a drum's r in both branches: the drive's rigid motion stays exact)."""
+    text = re.sub(r"[^A-Za-z0-9]+", "_", f.text.strip().lstrip("+-")).strip("_")
+    return sp.Symbol(f"a_{body}_{text}", positive=True)
 
 
-def _factor(span: Span, side: str, body: str, f: Value) -> sp.Expr:
-    return sp.Integer(int(f.si)) if _exact(f) else factor_symbol(span, side, body)
+def _factor(body: str, f: Value) -> sp.Expr:
+    if _exact(f):
+        return sp.Integer(int(f.si))
+    return (1 if f.si > 0 else -1) * factor_symbol(body, f)
 
 
 def _bodies(span: Span) -> tuple[str, ...]:
@@ -116,9 +123,9 @@ def _check(span: Span, bodies: dict[str, Body]) -> None:
 def _energies(span: Span, where: dict) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """(T, Π, Φ) of the span, given each body's (κ, q(t))."""
     points = []
-    for side, terms in zip(SIDES, (span.start, span.end)):
-        points.append(sum((_factor(span, side, b, f) * where[b][0] * where[b][1]
-                           for b, f in terms), sp.Integer(0)))
+    for terms in (span.start, span.end):
+        points.append(sum((_factor(b, f) * where[b][0] * where[b][1] for b, f in terms),
+                          sp.Integer(0)))
     (xa, xb), t = points, next(iter(where.values()))[1].args[0]
     va, vb = xa.diff(t), xb.diff(t)
     c, d, m = (s.symbol(span.name) for s in SYMBOLS)
@@ -126,10 +133,14 @@ def _energies(span: Span, where: dict) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     return (m * (va**2 + va * vb + vb**2) / 6, c * u**2 / 2, d * u.diff(t)**2 / 2)
 
 
-def _values(span: Span) -> dict[sp.Symbol, float]:
-    return {factor_symbol(span, side, b): f.si
-            for side, terms in zip(SIDES, (span.start, span.end)) for b, f in terms
-            if not _exact(f)}
+def _factors(span: Span, bodies: dict[str, Body]) -> tuple[Factor, ...]:
+    """Its factors that are symbols, each a parameter ``<span>.<side>.<body>``."""
+    own = DIMENSIONS["displacement"][TRANSLATING]
+    return tuple(Factor(f"{side}.{b}", factor_symbol(b, f), abs(f.si),
+                        own / DIMENSIONS["displacement"][bodies[b].motion],
+                        f"factor of {b} in the {side} point of the span {span.name}")
+                 for side, terms in zip(SIDES, (span.start, span.end)) for b, f in terms
+                 if not _exact(f))
 
 
 SYMBOLS = (Symbolic("stiffness", "c", "positive", lambda span: span.stiffness.si,
@@ -149,4 +160,4 @@ KIND = Kind("span", (Key("name", "word"), Key("stiffness", value="stiffness", si
                                          g["damping"], g["mass"]),
             "an elastic element of its own mass between two points, each a linear "
             "combination of bodies' coordinates (or the frame)",
-            symbols=SYMBOLS, couples=Coupling(_bodies, _check, _energies, _values))
+            symbols=SYMBOLS, couples=Coupling(_bodies, _check, _energies, _factors))
