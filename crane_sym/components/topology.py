@@ -3,8 +3,10 @@ gears and drums merged into rigid groups, each with one coordinate.
 
 Within a group every body's coordinate is a fixed multiple κ of the group's
 coordinate, the coordinate of its first body in the order the components were
-given (κ = 1 there). Elastic links join groups; brakes, motors and loads act
-on a body and reach its group through κ.
+given (κ = 1 there). Elastic links join groups, and so do spans (a part
+whose kind ``couples`` several coordinates by its own energies:
+``Assembly.couplings``); brakes, motors and loads act on a body and reach
+its group through κ.
 
 What cannot be a drive train is refused here, in one line naming the
 component: two components of one name, a link or a load on an unknown body,
