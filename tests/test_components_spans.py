@@ -229,3 +229,32 @@ def test_the_natural_frequency_of_a_full_mass_matrix(read):
     zeta = shape @ D @ shape / (2 * omega * (shape @ M @ shape))
     assert float(f.omega.xreplace(eq.values)) == pytest.approx(omega, rel=1e-10)
     assert float(f.zeta.xreplace(eq.values)) == pytest.approx(zeta, rel=1e-8)
+
+
+def test_a_held_body_feels_its_neighbours_acceleration_through_a_full_m():
+    """A brake holds mass a; a span with a mass of its own joins it to mass b,
+    which a force pushes. The load the brake must hold (net_load) is the
+    reaction of the constraint q̈_a = 0 solved with a Lagrange multiplier,
+    [[M, e_a], [e_aᵀ, 0]] [q̈; λ] = [R x + r; 0] (λ = R_a x + r_a − M_ab q̈_b: the
+    load the brake takes), at a state where the span is stretched and moving;
+    its −M_ab q̈_b is 0 only with a massless span."""
+    from crane_sym.components import Brake
+    from crane_sym.components.hybrid import HELD, ComponentSystem
+    model = Model([Mass("a", 10.0), Mass("b", 30.0),
+                   Span("rope", {"a": 1}, {"b": 1}, 1e4, 20.0, 6.0),
+                   Motor("push", "b", 50.0), Brake("hold", "a", 1e3)])
+    mode, x, extra = model.start(None, 0.0, True)
+    assert mode.motion[0] == HELD
+    system = ComponentSystem(model.equations, extra)
+    x = np.array(x, dtype=float)
+    x[system.q(1)], x[system.v(1)] = 0.003, -0.2
+    M, D, K, f = model.equations.numeric()([], [], [1.0], [0.0])
+    push = f - K @ x[0:4:2] - D @ x[1:4:2]
+    kkt = np.block([[M, np.array([[1.0], [0.0]])], [np.array([[1.0, 0.0, 0.0]])]])
+    acc_b, lam = np.linalg.solve(kkt, [*push, 0.0])[1:]
+    w, k = system.net_load(mode, 0)
+    assert float(w @ x + k) == pytest.approx(lam, rel=1e-12)
+    assert abs(M[0, 1] * acc_b) > 0.5                  # the coupling is felt, not rounding
+    A, b = system.matrices(mode)
+    assert float(A[system.v(1)] @ x + b[system.v(1)]) == pytest.approx(acc_b, rel=1e-12)
+    assert not A[system.v(0)].any() and b[system.v(0)] == 0.0
