@@ -258,3 +258,19 @@ def test_a_held_body_feels_its_neighbours_acceleration_through_a_full_m():
     A, b = system.matrices(mode)
     assert float(A[system.v(1)] @ x + b[system.v(1)]) == pytest.approx(acc_b, rel=1e-12)
     assert not A[system.v(0)].any() and b[system.v(0)] == 0.0
+
+
+def test_a_phase_form_solving_its_equations_from_another_start_is_refused(tmp_path):
+    """The drum drive with C1 doubled over 0.5 s: its closed form in doubles
+    misses the 1e-8 residual, and the mpmath fallback's solves the equations
+    but its x(0) missed x0 by ~3e13 (the run printed shaft1's peak −841.5 N·m
+    where solve_ivp gives −769.5): now refused by name, not run."""
+    text = FILE.read_text(encoding="utf-8")
+    text = text.replace('stiffness = "20 kN*m/rad"', 'stiffness = "40 kN*m/rad"', 1)
+    text = text.replace('duration = "0.4 s"', 'duration = "0.5 s"', 1)
+    path = tmp_path / "doubled.toml"
+    path.write_text(text, encoding="utf-8")
+    doubled = read_component_file(path)
+    with pytest.raises(ComponentError, match=r"^run: a phase of 0\.5 s: its closed form does "
+                       r"not solve its equations to 1e-08"):
+        doubled.model.run(doubled.duration, rest=True)
