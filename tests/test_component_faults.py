@@ -24,6 +24,7 @@ JIB = "jib_reeve_failure.toml"
 GIRDER, LIFT = "girder_hoist.toml", "lift_off.toml"
 DC = "dc_hoist_pi.toml"
 MODEL_DC = r"component model 'dc_hoist_pi': "
+DRUM = "drum_drive_004.toml"
 MAGNITUDE = r"must be 0 or of magnitude 1e-30 to 1e\+30 in SI units, got "
 PERIODS = r"run: duration {} s spans {} periods of the slowest mode \({} s\), at most 10000; "
 
@@ -175,6 +176,26 @@ ROWS = {
                               MODEL_DC + r"speed controller 'speed_loop' on inertia 'motor': its "
                               r"reference unit 'm/s' is length/time, expected 1/time \(e\.g\. "
                               r"rad/s, rpm or Hz\)"),
+    # a span's points and values (crane_sym.components.kinds.span)
+    "span on an unknown body": Fault(DRUM, "start = { run = 1 }", "start = { rum = 1 }",
+                                     r"component model 'drum_drive_004': span 'tight' names "
+                                     r"unknown body 'rum'; did you mean 'drum' or 'run'\?"),
+    "span factor in N": Fault(DRUM, 'end = { drum = "250 mm", centre = -1 }',
+                              'end = { drum = "250 N", centre = -1 }',
+                              r"component model 'drum_drive_004': span 'tight': end factor of "
+                              r"'drum' '250 N' is mass\*length/time\*\*2, expected length "
+                              r"\(e\.g\. m\)"),
+    "span factor 0": Fault(DRUM, "end = { centre = 1 }", "end = { centre = 0 }",
+                           r"span 'bending': end factor of 'centre' is 0; leave the body out"),
+    "span point as text": Fault(DRUM, "end = { centre = 1 }", 'end = "centre"',
+                                r"component model 'drum_drive_004': \[\[span\]\] 'bending': "
+                                r"end must be a table of body names and factors, e\.g\. end = "
+                                r"\{ drum = \"250 mm\", hub = -1 \}, got 'centre'"),
+    "span between frame and frame": Fault(DRUM, "end = { centre = 1 }", "end = {}",
+                                          r"span 'bending': both its start and its end are the "
+                                          r"frame; name a body in start or end"),
+    "span mass -5 kg": Fault(DRUM, 'mass = "1440 kg"', 'mass = "-5 kg"',
+                             r"span 'tight': mass must be >= 0, got '-5 kg'"),
     # the model's bounds (crane_sym.components.model_limits), before it is derived
     "duration 1e5 s": Fault(TRAVEL, 'duration = "1.5 s"', 'duration = "1e5 s"',
                             r"component model 'travel_braking_000': "

@@ -121,7 +121,7 @@ def test_the_key_tables_come_from_the_declarations():
     assert set(DIMENSIONS) == set(UNITS) == set(VALUE_KINDS)
     assert UNITS["backlash"][ROTATING] == "rad" and DIMENSIONS["inertia"][ROTATING] == mass * length**2
     tables = [k.table for k in kinds.KINDS]
-    assert len(tables) == len(set(tables)) == 16
+    assert len(tables) == len(set(tables)) == 17
     for kind in kinds.KINDS:
         names = [k.name for k in kind.keys]
         assert len(names) == len(set(names)) and names[0] == "name", kind.table

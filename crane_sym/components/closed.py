@@ -42,9 +42,9 @@ def link_response(model: Model, u0: sp.Expr = sp.Integer(0)) -> LinkResponse:
     """F(t) of the model's one elastic link from twist ``u0`` at rest relative
     to each other (u̇(0) = 0); ComponentError for a model that switches."""
     a, eq = model.assembly, model.equations
-    if len(a.groups) != 2 or len(a.links) != 1 or a.links[0].gapped:
+    if len(a.groups) != 2 or len(a.links) != 1 or a.links[0].gapped or a.couplings:
         raise ComponentError("a closed form in the symbols needs two rigid groups joined "
-                             "by one elastic link without backlash")
+                             "by one elastic link without backlash (and no span)")
     switching = [l.part.label for l in a.loads
                  if isinstance(l.part, (Brake, Characteristic, Motor, MotorLaw))]
     if switching:

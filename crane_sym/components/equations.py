@@ -6,9 +6,9 @@ body b of group g at κ_b·q_g. From the components:
 
 .. math::
 
-    T = \\tfrac12 \\sum_b J_b (\\kappa_b \\dot q_{g(b)})^2, \\qquad
-    \\Pi = \\tfrac12 \\sum_k \\chi_k c_k (u_k - \\delta_k)^2, \\qquad
-    \\Phi = \\tfrac12 \\sum_k \\chi_k d_k \\dot u_k^2,
+    T = \\tfrac12 \\sum_b J_b (\\kappa_b \\dot q_{g(b)})^2 + \\sum_s T_s, \\qquad
+    \\Pi = \\tfrac12 \\sum_k \\chi_k c_k (u_k - \\delta_k)^2 + \\sum_s \\Pi_s, \\qquad
+    \\Phi = \\tfrac12 \\sum_k \\chi_k d_k \\dot u_k^2 + \\sum_s \\Phi_s,
 
     Q_g = \\sum_{\\text{loads on } b \\in g} \\kappa_b\\, F,
 
@@ -19,7 +19,10 @@ characteristic's β (v0 − v), a weight m g, a resistance, a brake's signed
 friction B, or a law's value L(t) (:mod:`crane_sym.components.laws`; an
 acceleration law's J_red a(t) − Σ ρ F of the weights, resistances and motors). Lagrange's equations with Rayleigh
 dissipation (:func:`crane_sym.mechanics.lagrange.lagrange_equations`) give
-M q̈ + D q̇ + K q = f, linear in the state: χ, δ, ``on`` and B are what a mode
+M q̈ + D q̇ + K q = f, linear in the state. T is a general quadratic form in
+the speeds: T_s, Π_s and Φ_s are the shares of a part that joins several
+coordinates (a span, :mod:`crane_sym.components.kinds.span`: its element's
+mass couples the speeds of its ends), so M, D and K are full matrices: χ, δ, ``on`` and B are what a mode
 of the hybrid system fixes (:mod:`crane_sym.components.hybrid`).
 """
 from __future__ import annotations
@@ -280,12 +283,17 @@ def parameter_values(assembly: Assembly) -> dict[sp.Symbol, float]:
     """
     values: dict[sp.Symbol, float] = {}
     members = [body for g in assembly.groups for body, _ in g.members]
-    for item in (*members, *assembly.rigid, *assembly.links, *assembly.loads):
+    for item in (*members, *assembly.rigid, *assembly.links, *assembly.loads,
+                 *assembly.couplings):
         part = getattr(item, "part", item)
-        for declared in kinds.of(part).symbols:
+        kind = kinds.of(part)
+        for declared in kind.symbols:
             v = declared.value(item)
             if v is not None:                   # a steady motor's, solved at the start
                 values[declared.symbol(part.name)] = v
+        if kind.couples is not None:            # a span's factors
+            values.update((f.symbol, f.value) for f in kind.couples.factors(part,
+                                                                             assembly.bodies))
     return values
 
 
@@ -327,6 +335,9 @@ def derive(assembly: Assembly) -> Equations:
     for (s, rate), u in zip(stretches, twists):
         back.update({s: u, rate: u.diff(t)})
     V, D = V.xreplace(back), D.xreplace(back)
+    for part in assembly.couplings:         # a span: its own T, Π, Φ in several coordinates
+        shares = kinds.of(part).couples.energies(part, where)
+        T, V, D = T + shares[0], V + shares[1], D + shares[2]
     loads = [F.xreplace(back) for F in laws]
     forces = {q: sp.Integer(0) for q in coords}
     joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}

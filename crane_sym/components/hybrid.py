@@ -93,6 +93,20 @@ def _memo(func: Callable) -> Callable:
     return cached
 
 
+def _solved(M: np.ndarray, R: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """(M⁻¹ R, M⁻¹ r): divided row by row where M is diagonal (rigid groups
+    without a coupling of several coordinates: a division is exact to the
+    last bit, where LAPACK may multiply by a reciprocal), else solved."""
+    if not np.count_nonzero(M - np.diag(np.diag(M))):
+        m = np.diag(M)
+        return R / m[:, None], r / m
+    if np.linalg.matrix_rank(M) < len(M):
+        raise ComponentError("the mass matrix of the moving groups is singular: a coupling "
+                             "leaves a coordinate without inertia")
+    both = np.linalg.solve(M, np.hstack([R, r[:, None]]))
+    return both[:, :-1], both[:, -1]
+
+
 class ComponentSystem:
     """A :class:`crane_sym.mechanics.piecewise_linear.HybridSystem` built from
     the equations of a component model; ``extra`` gives values solved later
@@ -201,9 +215,7 @@ class ComponentSystem:
         S = np.zeros((self.n, self.size - self.first))
         for k in range(S.shape[1]):
             S[:, k] = self._numeric(chi, delta, on, zero, slopes, (), np.eye(S.shape[1])[k])[3] - f
-        if np.count_nonzero(M - np.diag(np.diag(M))):
-            raise ComponentError("the mass matrix is not diagonal")     # rigid groups make it so
-        return np.diag(M).copy(), D, K, f, E, G, S
+        return M, D, K, f, E, G, S
 
     def law_forcing(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(F, c): the laws' generalized forces on the groups as F x + c."""
@@ -213,13 +225,27 @@ class ComponentSystem:
 
     def net_load(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """The generalized load on group g but its brakes' friction, as w·x + k."""
-        M, D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[:4]
+        M = self._linear(mode.contacts, mode.driven, mode.steps)[0]
+        R, r = self._pushes(mode)
+        w, k = R[g].copy(), float(r[g])
+        coupled = [j for j in range(self.n) if j != g and M[g, j] != 0]
+        if coupled:          # a full M: the others' accelerations load g through M[g, j]
+            A, b = self._matrices(mode)
+            rows = [self.v(j) for j in coupled]
+            w -= M[g, coupled] @ A[rows]
+            k -= float(M[g, coupled] @ b[rows])
+        return w, k
+
+    def _pushes(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
+        """(R, r): the generalized forces on the groups, but the brakes' friction,
+        as R x + r: the right-hand side of M q̈ = R x + r."""
+        D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[1:4]
         F, c = self.law_forcing(mode)
-        w = F[g].copy()
-        w[self.first:] += self._linear(mode.contacts, mode.driven, mode.steps)[6][g]
-        w[0:2 * self.n:2] -= K[g]
-        w[1:2 * self.n:2] -= D[g]
-        return w, float(f[g] + c[g])
+        R = F.copy()
+        R[:, 0:2 * self.n:2] -= K
+        R[:, 1:2 * self.n:2] -= D
+        R[:, self.first:] += self._linear(mode.contacts, mode.driven, mode.steps)[6]
+        return R, f + c
 
     def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """What the engaged brakes of group g can hold, Σ |κ| M β, as w·x + k."""
@@ -249,29 +275,43 @@ class ComponentSystem:
         return A.copy(), b.copy()
 
     def _matrices_uncached(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
-        M, D, K, f, _, _, S = self._linear(mode.contacts, mode.driven, mode.steps)
-        F, c = self.law_forcing(mode)
+        """M q̈ = R x + r (:meth:`_pushes`) less each sliding group's friction,
+        solved for the accelerations of the groups that move freely; a held
+        group's is 0, a speed law's group's the law's (they enter the others'
+        rows through a full M's off-diagonal entries)."""
+        M = self._linear(mode.contacts, mode.driven, mode.steps)[0]
+        R, r = self._pushes(mode)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
         self.clock.fill(A, b, mode.pieces)
         self.first_order.fill(A, b, *self.clock.signals(mode.pieces, self.size))
+        S, s = np.zeros_like(R), np.zeros_like(r)      # the sliding groups' friction
         for g in range(self.n):
-            if mode.motion[g] == HELD:
-                continue
-            A[self.q(g), self.v(g)] = 1.0
-            row = self.v(g)
-            A[row] = F[g] / M[g]
-            A[row, 0:2 * self.n:2] -= K[g] / M[g]
-            A[row, 1:2 * self.n:2] -= D[g] / M[g]
-            A[row, self.first:] += S[g] / M[g]
-            b[row] = (f[g] + c[g]) / M[g]
             if mode.motion[g] in (FORWARD, BACKWARD):
                 sign = 1.0 if mode.motion[g] == FORWARD else -1.0
                 w, k = self.capacity(mode, g)
-                A[row] -= sign * w / M[g]
-                b[row] -= sign * k / M[g]
+                S[g], s[g] = sign * w, sign * k
+            if mode.motion[g] != HELD:
+                A[self.q(g), self.v(g)] = 1.0
         for k, (g, kappa) in self.moved.items():          # the speed law's motion
             w, c = self.clock.derivative(mode.pieces, k, self.size)
             A[self.v(g)], b[self.v(g)] = w / kappa, c / kappa
+        fixed = [g for g in range(self.n) if mode.motion[g] == HELD or
+                 g in {h for h, _ in self.moved.values()}]
+        free = [g for g in range(self.n) if g not in fixed]
+        if free:
+            rows = [self.v(g) for g in free]
+            known = [self.v(g) for g in fixed]
+            R, r = R[free], r[free]
+            coupling = M[np.ix_(free, fixed)]
+            if coupling.any():                # a known acceleration pushes through M
+                R = R - coupling @ A[known]
+                r = r - coupling @ b[known]
+            mass = M[np.ix_(free, free)]
+            A[rows], b[rows] = _solved(mass, R, r)
+            if S.any() or s.any():
+                friction = _solved(mass, S[free], s[free])
+                A[rows] -= friction[0]
+                b[rows] -= friction[1]
         for i, col in self.beta.items():
             part = self.brakes[i].part
             if not mode.engaged[i]:

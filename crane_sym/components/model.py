@@ -223,6 +223,9 @@ class Model:
         if a.contacts:
             raise ComponentError(f"{a.contacts[0].part.label}: a body on the ground starts at "
                                  "rest; give [run] start = \"rest\"")
+        if a.couplings:
+            raise ComponentError(f"start: a steady start sets the speeds through the elastic "
+                                 f"links, not through {a.couplings[0].label}; start at rest")
         body = body or next(iter(a.bodies))
         if body not in a.bodies:
             raise ComponentError(f"start: unknown body {body!r}; bodies: {', '.join(a.bodies)}")

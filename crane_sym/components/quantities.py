@@ -52,8 +52,8 @@ from crane_sym.components import kinds
 from crane_sym.components.kinds.base import FIXED_UNITS, Key
 from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model
-from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, UNITS, ComponentError,
-                                        ElasticLink, value)
+from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, TRANSLATING, UNITS,
+                                        ComponentError, ElasticLink, value)
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
@@ -125,7 +125,7 @@ def parameters(model: Model, start: tuple[str | None, Any] | None = None
         if s is not None:
             out[path] = Parameter(path, twins.get(s, s), float(eq.values.get(s, float("nan"))),
                                   dimension, unit, what)
-    for item in (*a.bodies.values(), *a.rigid, *a.links, *a.loads):
+    for item in (*a.bodies.values(), *a.rigid, *a.links, *a.loads, *a.couplings):
         part = getattr(item, "part", item)
         kind = kinds.of(part)
         for declared in kind.symbols:
@@ -133,6 +133,9 @@ def parameters(model: Model, start: tuple[str | None, Any] | None = None
             what = declared.what.format(name=part.name, body=getattr(part, "body", ""), key=key)
             add(f"{part.name}.{key}", declared.symbol(part.name).name, dimension, unit,
                 what + (" (steady: solved at the start)" if declared.value(item) is None else ""))
+        for factor in (kind.couples.factors(part, a.bodies) if kind.couples else ()):
+            add(f"{part.name}.{factor.key}", factor.symbol.name, factor.dimension,
+                FIXED_UNITS[factor.dimension], factor.what)
     return out | switching_values(model) | (_run_speed(model, *start) if start else {})
 
 
@@ -148,7 +151,10 @@ def _dimension(a, key: Key, part) -> tuple[Dimension, str, str]:
 
 
 def _motion(a, part) -> str:
-    """The motion of the body a part is, acts on, or (a link) starts at."""
+    """The motion of the body a part is, acts on, or (a link) starts at; a
+    span's stretch is a length."""
+    if kinds.of(part).couples is not None:
+        return TRANSLATING
     if isinstance(part, ElasticLink):
         return next(a.bodies[e].motion for e in part.ends if e != GROUND)
     body = part.name if part.name in a.bodies else getattr(part, "body", None) or part.ends[0]

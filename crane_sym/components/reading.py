@@ -76,6 +76,14 @@
     slopes = ["1.7e5 N*s/m", "3.4e5 N*s/m"]
     holds = ["0.4 s"]           # one fewer than slopes
 
+    [[span]]                    # an elastic element of its own mass between two points,
+    name = "tight"              # each a linear combination of coordinates (kinds.span)
+    start = { run = 1 }         # omitted or {}: the frame
+    end = { drum = "250 mm", hub = -1 }   # x_end = r phi_drum - x_hub
+    stiffness = "5e4 N/m"       # Pi = c u^2/2, u = x_end - x_start
+    damping = "0 N*s/m"         # optional
+    mass = "1440 kg"            # optional: T = m (v_start^2 + v_start v_end + v_end^2)/6
+
     [[initial]]                 # a body's state at t = 0 (components.initial)
     name = "lifted"
     body = "hook"

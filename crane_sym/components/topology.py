@@ -5,8 +5,10 @@ Within a group every body's coordinate is a fixed multiple κ of the group's
 coordinate, the coordinate of its first body in the order the components were
 given (κ = 1 there). Elastic links join groups, or a group and the fixed
 ground (``"ground"`` as one end of ``between``: x ≡ 0, no group, κ = 0, which
-:meth:`Assembly.ends` gives in this one place); brakes, motors and loads act on
-a body and reach its group through κ.
+:meth:`Assembly.ends` gives in this one place), and so do spans (a part whose
+kind ``couples`` several coordinates by its own energies:
+``Assembly.couplings``); brakes, motors and loads act on a body and reach its
+group through κ.
 
 What cannot be a drive train is refused here, in one line naming the
 component: two components of one name, a link or a load on an unknown body,
@@ -26,6 +28,7 @@ from typing import Sequence
 import sympy as sp
 
 from crane_sym import units
+from crane_sym.components import kinds
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.loads import (ACTING, Brake, Characteristic, DCMotor, Gravity,
                                         GroundContact, Motor, SpeedController)
@@ -123,6 +126,9 @@ class Assembly:
     loads: tuple[Load, ...]
     rigid: tuple[Gear | Drum, ...] = ()
     contacts: tuple[Contact, ...] = ()
+    #: The parts that join several coordinates by their own energies (spans:
+    #: ``Kind.couples``), in the order given.
+    couplings: tuple[Component, ...] = ()
 
     def loads_of(self, kind: type) -> list[Load]:
         return [l for l in self.loads if isinstance(l.part, kind)]
@@ -195,8 +201,18 @@ def assemble(components: Sequence[Component]) -> Assembly:
         for end in (part.ends if isinstance(part, (*RIGID, ElasticLink)) else (part.body,)):
             if end not in bodies and not (end == GROUND and isinstance(part, ElasticLink)):
                 raise _unknown(part.label, end, list(bodies))
+    couplings = [p for p in components if kinds.of(p).couples is not None]
+    joined = []
+    for part in couplings:
+        couples = kinds.of(part).couples
+        names = couples.bodies(part)
+        for end in names:
+            if end not in bodies:
+                raise _unknown(part.label, end, list(bodies))
+        couples.check(part, bodies)
+        joined.append(names)
     _kinds(bodies, rigid, elastic)
-    _connected(bodies, rigid, elastic)
+    _connected(bodies, rigid, elastic, joined)
     groups, place = _groups(bodies, rigid)
     links = tuple(_link(p, bodies, place) for p in elastic)
     loads = tuple(_load(p, bodies, components) for p in components if isinstance(p, ACTING))
@@ -211,7 +227,8 @@ def assemble(components: Sequence[Component]) -> Assembly:
     if len(balancing) > 1:
         raise ComponentError(f"{balancing[1]}: only one motor may balance the others "
                              f"({balancing[0]} does: a 'steady' torque or an acceleration law)")
-    return Assembly(bodies, groups, place, links, loads, tuple(rigid), contacts)
+    return Assembly(bodies, groups, place, links, loads, tuple(rigid), contacts,
+                    tuple(couplings))
 
 
 def _contacts(parts: list[GroundContact], bodies: dict[str, Body],
@@ -284,15 +301,19 @@ def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
                                  "keeps its sign")
 
 
-def _connected(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
-    """Every body in a link, and all of them one connected drive."""
+def _connected(bodies: dict[str, Body], rigid: list, elastic: list,
+               joined: list[tuple[str, ...]]) -> None:
+    """Every body in a link, and all of them one connected drive (a span joins
+    the bodies it names, ``joined``)."""
     edges = [p.ends for p in [*rigid, *elastic] if GROUND not in p.ends]
-    touched = {e for p in [*rigid, *elastic] for e in p.ends}
+    edges += [pair for names in joined for pair in zip(names, names[1:])]
+    touched = {e for p in [*rigid, *elastic] for e in p.ends} | {e for names in joined
+                                                                  for e in names}
     if len(bodies) > 1:
         for name, body in bodies.items():
             if name not in touched:
-                raise ComponentError(f"{body.label} is connected to nothing (no gear, drum "
-                                     "or elastic link names it)")
+                raise ComponentError(f"{body.label} is connected to nothing (no gear, drum, "
+                                     "elastic link or span names it)")
     first = next(iter(bodies))
     reached, todo = {first}, [first]
     while todo:
@@ -305,7 +326,8 @@ def _connected(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
     for name, body in bodies.items():
         if name not in reached:
             raise ComponentError(f"{body.label} is not connected to {bodies[first].label}: "
-                                 "no chain of gears, drums and elastic links joins them")
+                                 "no chain of gears, drums, elastic links and spans joins "
+                                 "them")
 
 
 def rigid_factor(part: Gear | Drum) -> sp.Expr:

@@ -86,19 +86,48 @@ def _upper(A: sp.Matrix) -> list[sp.Expr]:
     return [A[i, j] for i in range(A.rows) for j in range(i, A.cols)]
 
 
-def _eigen(k, rigid, n, entries) -> tuple[mpmath.mpf, list]:
-    """The (rigid + k)-th smallest λ of det(λ M − K) = 0 and its shape φ (φᵀ M φ = 1)
-    from diag(M) and K's upper triangle, in mpmath."""
-    k, rigid, n = int(k), int(rigid), int(n)
-    values = [mpmath.mpf(v) for v in entries]
-    scale = [1 / mpmath.sqrt(m) for m in values[:n]]
-    A, upper = mpmath.matrix(n, n), iter(values[n:])
+def _mass(n: int, values: list) -> tuple[mpmath.matrix, int]:
+    """M from the entries (diag(M) when they are n + n(n+1)/2, its upper
+    triangle when n(n+1): a coupling of several coordinates makes it full)
+    and how many entries it took."""
+    M = mpmath.matrix(n, n)
+    if len(values) == n + n * (n + 1) // 2:
+        for i in range(n):
+            M[i, i] = values[i]
+        return M, n
+    upper = iter(values)
     for i in range(n):
         for j in range(i, n):
-            A[i, j] = A[j, i] = next(upper) * scale[i] * scale[j]
-    E, Q = mpmath.eigsy(A)
+            M[i, j] = M[j, i] = next(upper)
+    return M, n * (n + 1) // 2
+
+
+def _eigen(k, rigid, n, entries) -> tuple[mpmath.mpf, list]:
+    """The (rigid + k)-th smallest λ of det(λ M − K) = 0 and its shape φ (φᵀ M φ = 1)
+    from M's entries (:func:`_mass`) and K's upper triangle, in mpmath: the
+    eigenvalues of L⁻¹ K L⁻ᵀ, M = L Lᵀ (L = diag(√m) for a diagonal M)."""
+    k, rigid, n = int(k), int(rigid), int(n)
+    values = [mpmath.mpf(v) for v in entries]
+    M, used = _mass(n, values)
+    upper = iter(values[used:])
+    A = mpmath.matrix(n, n)
+    if all(M[i, j] == 0 for i in range(n) for j in range(n) if i != j):
+        scale = [1 / mpmath.sqrt(M[i, i]) for i in range(n)]
+        for i in range(n):
+            for j in range(i, n):
+                A[i, j] = A[j, i] = next(upper) * scale[i] * scale[j]
+        E, Q = mpmath.eigsy(A)
+        j = sorted(range(n), key=lambda i: E[i])[rigid + k - 1]
+        return E[j], [Q[i, j] * scale[i] for i in range(n)]
+    for i in range(n):
+        for j in range(i, n):
+            A[i, j] = A[j, i] = next(upper)
+    back = mpmath.cholesky(M) ** -1
+    A = back * A * back.T
+    E, Q = mpmath.eigsy((A + A.T) / 2)
     j = sorted(range(n), key=lambda i: E[i])[rigid + k - 1]
-    return E[j], [Q[i, j] * scale[i] for i in range(n)]
+    phi = back.T * Q[:, j]
+    return E[j], [phi[i] for i in range(n)]
 
 
 def _omega(k, rigid, n, *entries):
@@ -107,7 +136,7 @@ def _omega(k, rigid, n, *entries):
 
 def _zeta(k, rigid, n, *entries):
     n = int(n)
-    size = n + n * (n + 1) // 2
+    size = len(entries) - n * (n + 1) // 2
     lam, phi = _eigen(k, rigid, n, entries[:size])
     D, upper = mpmath.matrix(n, n), iter(mpmath.mpf(v) for v in entries[size:])
     for i in range(n):
@@ -119,7 +148,8 @@ def _zeta(k, rigid, n, *entries):
 
 #: ω_k and ζ_k of the mode's matrices, evaluated by mpmath (lambdify finds the
 #: implementation): ``natural_frequency(k, rigid, n, diag M, upper K)``,
-#: ``modal_damping(k, rigid, n, diag M, upper K, upper D)``.
+#: ``modal_damping(k, rigid, n, diag M, upper K, upper D)``; with the upper
+#: triangle of M in place of its diagonal where M is full.
 NATURAL_FREQUENCY = implemented_function("natural_frequency", _omega)
 MODAL_DAMPING = implemented_function("modal_damping", _zeta)
 
@@ -169,11 +199,16 @@ def _by_link(model: Model, link: str, moving: list[int], M: sp.Matrix, K: sp.Mat
     if not weights.any():
         raise ComponentError(f"the link {link!r} joins bodies the mode holds still")
     values = dict(eq.values) | {twin: eq.values[s] for s, twin in signed.items()}
-    m = np.array(M.xreplace(values), dtype=float).diagonal()
+    m = np.array(M.xreplace(values), dtype=float)
     k = np.array(K.xreplace(values), dtype=float)
-    scale = 1 / np.sqrt(m)
-    lam, psi = np.linalg.eigh(k * scale[:, None] * scale[None, :])
-    shapes = psi * scale[:, None]
+    if np.count_nonzero(m - np.diag(np.diag(m))):      # full: M = L Lᵀ
+        back = np.linalg.inv(np.linalg.cholesky(m))
+        lam, psi = np.linalg.eigh(back @ k @ back.T)
+        shapes = back.T @ psi
+    else:
+        scale = 1 / np.sqrt(m.diagonal())
+        lam, psi = np.linalg.eigh(k * scale[:, None] * scale[None, :])
+        shapes = psi * scale[:, None]
     share = [part.stiffness * (weights @ shapes[:, j]) ** 2 / (shapes[:, j] @ k @ shapes[:, j])
              for j in range(rigid, len(lam))]
     return int(np.argmax(share)) + 1
@@ -223,7 +258,8 @@ def natural_frequency(model: Model, choice: ModeChoice,
     else:
         square = None
     n = len(moving)
-    entries = [M[i, i] for i in range(n)] + _upper(K)
+    diagonal = M.is_diagonal()
+    entries = ([M[i, i] for i in range(n)] if diagonal else _upper(M)) + _upper(K)
     omega = (sp.sqrt(sp.factor(sp.simplify(square))) if square is not None else
              NATURAL_FREQUENCY(k, rigid, n, *entries))
     if count == 1:            # K = λ M φ φᵀ M: φ is M⁻¹ times a column of K

@@ -78,10 +78,19 @@ def _symbol(p, model) -> str:
     return "\\mathrm{" + p.path.replace("_", "\\_") + "}"
 
 
+def _point(terms: dict) -> str:
+    """A span's point as written: ``250 mm · drum − centre``, or the frame."""
+    if not terms:
+        return "frame"
+    return " + ".join(f"{f} · {b}" for b, f in terms.items()).replace("+ -", "− ")
+
+
 def _connects(kind: str, entry: dict) -> str:
     keys = by_table()[kind].places
     if not keys:
         return "—"
+    if keys[0].form == "terms":
+        return " → ".join(_point(entry.get(k.name) or {}) for k in keys)
     if keys[0].form == "ends":
         return " – ".join(entry.get(keys[0].name, []))
     if len(keys) == 2:
@@ -135,12 +144,14 @@ def _groups(read: ComponentFile) -> list[str]:
            "no inertia (zero) is kept as a point of the group. The inertia of a group "
            "referred to its coordinate is $\\partial^2 T / \\partial \\dot q^2$."]
     rows = []
-    for g, q in zip(a.groups, eq.coordinates):
+    M = eq.linear[0]
+    for index, (g, q) in enumerate(zip(a.groups, eq.coordinates)):
         members = ", ".join(f"{b.name}: $\\kappa = {_tex(k, model)}$" for (b, _), k in
                             zip(g.members, g.factors))
         reduced = derived_quantity(model, f"{g.name}.reduced_inertia")
         rows.append([_math(_tex(q, model)), _Markup(members), _math(_tex(reduced.expr, model)),
-                     format_quantity(g.inertia, reduced.unit, 6)])
+                     format_quantity(float(M[index, index].xreplace(eq.values)),
+                                     reduced.unit, 6)])      # a span's mass counts
     out.append(_table(["coordinate", "bodies", "reduced inertia", "value"], rows))
     return out
 

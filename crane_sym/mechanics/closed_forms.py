@@ -97,6 +97,21 @@ class ClosedForm:
             ratio = np.where(scale > 0, miss / scale, np.where(miss > 0, np.inf, 0.0))
         return float(ratio.max(initial=0.0))
 
+    def start_miss(self, t: float, x0: np.ndarray, A: np.ndarray, b: np.ndarray) -> float:
+        """The largest |x(0) − x0| of the form, each row relative to what it
+        moves over a phase of length ``t``, |x0_i| + t (Σ_j |A_ij x0_j| + |b_i|):
+        a form can solve its equations (a small :meth:`residual`) from another
+        start, where a term's coefficients ~1/λ of an eigenvalue that is the
+        rounding of a zero cancel to nothing in x(0)."""
+        x0 = np.asarray(x0, dtype=float)
+        A, b = np.asarray(A, float), np.asarray(b, float)
+        miss = np.abs(self.state(0.0, x0) - x0)
+        scale = np.abs(x0) + t * (np.abs(A) @ np.abs(x0) + np.abs(b))
+        scale = np.maximum(scale, 1e-6 * float(scale.max(initial=0.0)))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ratio = np.where(scale > 0, miss / scale, np.where(miss > 0, np.inf, 0.0))
+        return float(ratio.max(initial=0.0))
+
     def scalar_terms(self, weights: np.ndarray, constant: float,
                      x0: np.ndarray) -> tuple[np.ndarray, float]:
         """Coefficients a_j of g(t) = w·x(t) + k = Σ a_j β_j(t) + k."""

@@ -61,9 +61,10 @@ def use_precise_forms(provider: Callable[[np.ndarray, np.ndarray], ClosedForm]) 
 def precise_form(A: np.ndarray, b: np.ndarray, length: float, x0: np.ndarray) -> ClosedForm:
     """The phase's closed form from the precise provider, where the double one
     does not solve its equations to :data:`RESIDUAL` over ``length``; refused
-    by name where none is registered or it does not either."""
+    by name where none is registered or it does not either, or not from x0."""
     form = _PRECISE[0](A, b) if _PRECISE else None
-    if form is None or form.residual(length, x0, A, b) > RESIDUAL:
+    if form is None or max(form.residual(length, x0, A, b),
+                           form.start_miss(length, x0, A, b)) > RESIDUAL:
         raise PhaseFormError(f"a phase of {length:g} s: its closed form does not solve its"
                              f" equations to {RESIDUAL:g} (time scales too far apart for"
                              " double precision)")

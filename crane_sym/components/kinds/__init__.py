@@ -9,7 +9,7 @@ May import: the rest of ``components`` below the reader (``parts``,
 """
 from crane_sym.components.kinds import (brake, characteristic, dc_motor, drum, elastic, gear,
                                         gravity, ground_contact, inertia, initial, mass, motor,
-                                        motor_law, pendulum, resistance, speed_controller)
+                                        motor_law, pendulum, resistance, span, speed_controller)
 from crane_sym.components.kinds.base import Key, Kind
 
 from crane_sym.components.parts import Component
@@ -20,7 +20,7 @@ __all__ = ["KINDS", "Key", "Kind", "by_table", "of"]
 KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, pendulum, brake,
                                       motor, characteristic, motor_law, dc_motor,
                                       speed_controller, gravity, resistance, initial,
-                                      ground_contact)]
+                                      ground_contact, span)]
 
 
 def by_table() -> dict[str, Kind]:

@@ -12,6 +12,9 @@ A key's ``form`` says how the file writes it:
 ``list``     a list of quantities as text (``["0.4 s", "0.8 s"]``)
 ``law``      numbers only, never text, checked by the law's own reader
 ``ends``     the two body names a link joins (one may be ``"ground"``, fixed)
+``terms``    a table of body names, each with its factor (a number, or text
+             with a unit): a point that moves as a linear combination of the
+             bodies' coordinates (a span's end, ``{ drum = "250 mm", hub = -1 }``)
 ============ ==============================================================
 
 A key's ``value`` is a kind of value (a key of
@@ -30,10 +33,10 @@ from sympy.physics.units import Dimension, length, time
 from crane_sym.components.loads import HENRY, OHM
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
-__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Key", "Kind", "Symbolic", "failure",
-           "load_key", "run_end"]
+__all__ = ["FIXED_UNITS", "FORMS", "ROLES", "Acting", "Coupling", "Factor", "Key", "Kind",
+           "Symbolic", "failure", "load_key", "run_end"]
 
-FORMS = ("quantity", "number", "word", "body", "list", "law", "ends")
+FORMS = ("quantity", "number", "word", "body", "list", "law", "ends", "terms")
 #: The signs a swept value may be bound to keep ("": either).
 SIGNS = ("positive", "nonnegative", "nonzero", "")
 
@@ -75,6 +78,14 @@ class Key:
         if self.form == "ends":
             if not (isinstance(v, list) and len(v) == 2 and all(isinstance(e, str) for e in v)):
                 raise ComponentError(f"{where}: {self.name} must be two body names, got {v!r}")
+            return v
+        if self.form == "terms":
+            if not (isinstance(v, dict) and all(
+                    isinstance(f, str) or (isinstance(f, (int, float)) and not isinstance(f, bool))
+                    for f in v.values())):
+                raise ComponentError(f"{where}: {self.name} must be a table of body names and "
+                                     f"factors, e.g. {self.name} = {{ drum = \"250 mm\", "
+                                     f"hub = -1 }}, got {v!r}")
             return v
         if self.form == "list":
             if not isinstance(v, list) or not all(isinstance(x, str) for x in v):
@@ -176,6 +187,36 @@ Builder = Callable[[dict[str, Any], dict, str], Component]
 
 
 @dataclass(frozen=True)
+class Factor:
+    """A value of a coupling's share of the energies that is not a
+    :class:`Symbolic` of its kind (a span's factor): its parameter's name
+    after the part's (``end.drum``), its symbol, its SI value, its dimension
+    and what it is."""
+
+    key: str
+    symbol: sp.Symbol
+    value: float
+    dimension: Dimension
+    what: str
+
+
+@dataclass(frozen=True)
+class Coupling:
+    """What a part that joins several coordinates by its own energies (a
+    span: :mod:`crane_sym.components.kinds.span`) gives the toolkit:
+    ``bodies(part)``, the names of the bodies it joins; ``check(part,
+    bodies)``, its values against those bodies (their motion, its factors'
+    dimensions; ComponentError, one line); ``energies(part, where)``, its
+    share (T, Π, Φ) of the energies, given each body's (κ, q(t));
+    ``factors(part, bodies)``, each :class:`Factor` of that share."""
+
+    bodies: Callable[[Component], tuple[str, ...]]
+    check: Callable[[Component, dict], None]
+    energies: Callable[[Component, dict], tuple[sp.Expr, sp.Expr, sp.Expr]]
+    factors: Callable[[Component, dict], "tuple[Factor, ...]"]
+
+
+@dataclass(frozen=True)
 class Kind:
     """A kind of component: its ``table`` (``[[table]]`` in a component file),
     its ``keys`` (the required ones first), how its part is built, one line
@@ -183,8 +224,9 @@ class Kind:
     table: ``Component.kind``), when a run may drop one (``idle``; None:
     never), the values its equations hold as symbols (``symbols``), what
     its derivation rests on beside them (``shape``), for a part acting on
-    one body its share of Q (``acts``), and the values that switch the model
-    (``switching``)."""
+    one body its share of Q (``acts``), the values that switch the model
+    (``switching``), and for a part that joins several coordinates by its
+    own energies its :class:`Coupling` (``couples``)."""
 
     table: str
     keys: tuple[Key, ...]
@@ -203,6 +245,8 @@ class Kind:
     #: A link's stiffness in the parts' symbols, given the part (None: its
     #: own ``c_<name>``; a pendulum's m g/L).
     stiffness: Callable[[Component], sp.Expr] | None = None
+    #: For a part that joins several coordinates by its own T, Π and Φ.
+    couples: Coupling | None = None
 
     @property
     def part_kind(self) -> str:
@@ -219,8 +263,9 @@ class Kind:
 
     @property
     def places(self) -> tuple[Key, ...]:
-        """The keys that name the bodies a part joins or acts on."""
-        return tuple(k for k in self.keys if k.form in ("body", "ends"))
+        """The keys that name the bodies a part joins or acts on (a span's
+        points)."""
+        return tuple(k for k in self.keys if k.form in ("body", "ends", "terms"))
 
     def key(self, name: str) -> Key:
         """The key called ``name``; KeyError if the kind has none."""
