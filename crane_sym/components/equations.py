@@ -20,7 +20,10 @@ friction B, or a law's value L(t) (:mod:`crane_sym.components.laws`; an
 acceleration law's J_red a(t) − Σ ρ F of the weights, resistances and motors). Lagrange's equations with Rayleigh
 dissipation (:func:`crane_sym.mechanics.lagrange.lagrange_equations`) give
 M q̈ + D q̇ + K q = f, linear in the state: χ, δ, ``on`` and B are what a mode
-of the hybrid system fixes (:mod:`crane_sym.components.hybrid`).
+of the hybrid system fixes (:mod:`crane_sym.components.hybrid`). A part may
+bring states of first order (a DC motor's current i, its force k i in Q),
+each with its rate (L di/dt = V − R i − k ω): f holds them linearly, and their
+rates are :attr:`Equations.first_order` (:mod:`crane_sym.components.first_order`).
 """
 from __future__ import annotations
 
