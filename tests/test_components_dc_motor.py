@@ -214,19 +214,21 @@ def test_the_example_audits_the_motors_time_constant():
 
 
 def test_a_sweep_of_the_armature_is_the_run_of_each_design(tmp_path, capsys):
-    """The rope's peak over R and the torque limit, each design against the
-    file's run with those values written in, to 1e-9."""
+    """The rope's and the armature current's peaks over R and the torque limit,
+    each design against the file's run with those values written in, to 1e-9."""
     import json
     xr = pytest.importorskip("xarray")
     from crane_sym.cli.main import main
     from crane_sym.components.reading import read_component_file
+    from crane_sym.components.report import part_peaks
     argv = ["sweep", str(EXAMPLE), "--vary", "armature.resistance=0.05:0.2:2",
             "--vary", "speed_loop.limit=800:1200:2", "--output", "rope.peak",
+            "--output", "armature.current.peak",
             "--out", str(tmp_path / "out"), "--format", "json", "--quiet",
             "--scheduler", "synchronous"]
     assert main(argv) == 0
     stored = xr.open_zarr(json.loads(capsys.readouterr().out)["dataset"]).load()
-    swept = stored["rope.peak"].values
+    swept, current = stored["rope.peak"].values, stored["armature.current.peak"].values
     text = EXAMPLE.read_text()
     for i, r in enumerate((0.05, 0.2)):
         for j, cap in enumerate((800, 1200)):
@@ -235,6 +237,9 @@ def test_a_sweep_of_the_armature_is_the_run_of_each_design(tmp_path, capsys):
                             .replace('limit = "1000 N*m"', f'limit = "{cap} N*m"'))
             run = read_component_file(str(path)).model.run(2.0)
             assert abs(swept[i, j] - abs(run.peaks[0].value)) <= 1e-9 * abs(run.peaks[0].value)
+            peak = part_peaks(run)[0]
+            assert (peak.part, peak.what, peak.unit) == ("armature", "current", "A")
+            assert abs(current[i, j] - abs(peak.value)) <= 1e-9 * abs(peak.value)
 
 
 def test_the_walkthrough_shows_the_first_order_equations():

@@ -16,7 +16,8 @@ The outputs, per elastic link ``L``: ``L.peak``, the largest |load| over the
 run from the file's start (N·m, or N between translating bodies), and
 ``L.factor``, that peak over |reference| (the link's given ``reference``,
 else its load at the start): the magnitude of what ``crane-sym run`` prints
-as its dynamic factor. A block of designs is solved together by the batched
+as its dynamic factor; per value a part reports (``Acting.outputs``: a DC
+motor's current, torque, speed), ``<part>.<what>.peak``, its largest |value|. A block of designs is solved together by the batched
 solver (:func:`crane_sym.mechanics.batched_runs.largest_of_runs`: one
 :class:`~crane_sym.components.hybrid.ComponentSystem` per design, the closed
 forms, events and extrema batched); :meth:`Designs.per_design` is the same
@@ -45,7 +46,7 @@ from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, Component, 
                                         value)
 from crane_sym.components.pruning import Scope
 from crane_sym.components.reading import read_component_file
-from crane_sym.mechanics.phase_table import HybridRun
+from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
 __all__ = ["OUTPUTS", "Designs", "Field", "Templates", "designs", "evaluate_block",
@@ -200,13 +201,20 @@ class Designs:
         return out
 
     def outputs(self) -> dict[str, tuple[int, str, str]]:
-        """Output name -> (link index, ``peak`` or ``factor``, SI unit)."""
+        """Output name -> (link index, ``peak`` or ``factor``, SI unit); and each
+        value a part reports, ``<part>.<what>.peak`` -> (its index among
+        ``Equations.outputs``, ``part``, SI unit)."""
         out = {}
-        for i, link in enumerate(self.model.assembly.links):
-            motion = self.model.assembly.bodies[link.part.first].motion
+        a = self.model.assembly
+        for i, link in enumerate(a.links):
+            motion = a.bodies[link.part.first].motion
             for kind in OUTPUTS:
                 unit = UNITS["load"][motion] if kind == "peak" else "1"
                 out[f"{link.part.name}.{kind}"] = (i, kind, unit)
+        bodies = {l.part.name: a.bodies[l.part.body] for l in a.loads}
+        for i, (part, what, unit, _) in enumerate(self.model.equations.outputs):
+            si = UNITS[unit][bodies[part].motion] if unit in UNITS else unit
+            out[f"{part}.{what}.peak"] = (i, "part", si)
         return out
 
     def depends(self, output: str) -> tuple[str, ...]:
@@ -260,6 +268,10 @@ class Designs:
         for k, at in enumerate(np.ndindex(shape)):
             model = self.design({n: float(a[at]) for n, a in zip(names, arrays)})
             mode, x0, system = self.start(model)
+            if kind == "part":
+                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
+                                      _reported(system, model, index)))
+                continue
             runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
                                   system.link_load(index)))
             ref = start_load(system, mode, x0, index)[1]
@@ -270,7 +282,7 @@ class Designs:
             raise RuntimeError(f"{output}: more than {MAX_PHASES} phases in the run of design {k} "
                                "of a block")
         peak = np.abs(result.value)
-        return (peak if kind == "peak" else peak / reference).reshape(shape)
+        return (peak if kind in ("peak", "part") else peak / reference).reshape(shape)
 
     def per_design(self, output: str, values: Mapping[str, np.ndarray],
                    exact: bool | None = None) -> np.ndarray:
@@ -288,10 +300,20 @@ class Designs:
             parts = self.parts({n: float(a[at]) for n, a in zip(names, arrays)})
             run = Model(parts, self.model.name).run(f.duration, f.body, f.speed, exact=exact,
                                                     rest=f.rest)
+            if kind == "part":
+                affine = _reported(run.system, run.model, index)
+                out[at] = abs(largest(run.result, run.system, affine, magnitude=True)[1])
+                continue
             peak = run.peaks[index]
             out[at] = abs(peak.value) if kind == "peak" else (
                 abs(peak.factor) if peak.factor is not None else math.nan)
         return out
+
+
+def _reported(system: ComponentSystem, model: Model, index: int):
+    """The affine map (w, 0) of value ``index`` that a part reports."""
+    w = system.first_order.weights(model.equations.outputs[index][3])
+    return lambda mode: (w, 0.0)
 
 
 _CACHE: dict[tuple[str, str], Designs] = {}

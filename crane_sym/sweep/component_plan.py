@@ -75,6 +75,11 @@ def _outputs(found: Designs, names: list[str]) -> tuple[OutputSpec, ...]:
             raise SweepError(f"--output {name!r}: not an output of component model "
                              f"{found.model.name!r}; known: {', '.join(known)}")
         index, kind, unit = known[name]
+        if kind == "part":                  # a value a part reports: <part>.<what>.peak
+            part, what, _ = name.split(".")
+            specs.append(OutputSpec(name, "component", found.depends(name), unit,
+                                    f"largest |{what}| of {part} over the run"))
+            continue
         link = found.links[index]
         reference = "its reference" if found.model.assembly.links[index].reference \
             is not None else "its load at the start"
