@@ -7,6 +7,7 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
+import pytest
 import sympy as sp
 
 from crane_sym.components import Inertia, Model
@@ -195,3 +196,56 @@ def test_dc_hoist_with_its_limit_against_solve_ivp_with_events():
     current = state(run, run.system.first, times)
     assert current.max() <= T_MAX / K_A * (1 + 1e-12)
     assert np.max(np.abs(current - theirs(times)[:, 4])) <= 1e-7 * T_MAX / K_A
+
+
+def test_the_example_audits_the_motors_time_constant():
+    """J R / k² against the quantity armature.time_constant: confirmed
+    symbolically; J R / k (k for k²) a dimension error."""
+    from crane_sym.components.file_audit import audit_file
+    from crane_sym.components.quantities import derived_quantity
+    from crane_sym.components.reading import read_component_file
+    read = read_component_file(str(EXAMPLE))
+    right, slip = audit_file(read)
+    assert (right.label, right.verdict, right.method) == ("tau_m", "confirmed", "symbolic")
+    assert slip.verdict == "dimension_error"
+    tau = derived_quantity(read.model, "armature.time_constant")
+    assert tau.unit == "s"
+    assert float(tau.expr.xreplace(read.model.equations.values)) == pytest.approx(J_RED * R_A / K_A**2, rel=1e-12)
+
+
+def test_a_sweep_of_the_armature_is_the_run_of_each_design(tmp_path, capsys):
+    """The rope's and the armature current's peaks over R and the torque limit,
+    each design against the file's run with those values written in, to 1e-9."""
+    import json
+    xr = pytest.importorskip("xarray")
+    from crane_sym.cli.main import main
+    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.report import part_peaks
+    argv = ["sweep", str(EXAMPLE), "--vary", "armature.resistance=0.05:0.2:2",
+            "--vary", "speed_loop.limit=800:1200:2", "--output", "rope.peak",
+            "--output", "armature.current.peak",
+            "--out", str(tmp_path / "out"), "--format", "json", "--quiet",
+            "--scheduler", "synchronous"]
+    assert main(argv) == 0
+    stored = xr.open_zarr(json.loads(capsys.readouterr().out)["dataset"]).load()
+    swept, current = stored["rope.peak"].values, stored["armature.current.peak"].values
+    text = EXAMPLE.read_text()
+    for i, r in enumerate((0.05, 0.2)):
+        for j, cap in enumerate((800, 1200)):
+            path = tmp_path / f"d{i}{j}.toml"
+            path.write_text(text.replace('resistance = "0.1 ohm"', f'resistance = "{r} ohm"')
+                            .replace('limit = "1000 N*m"', f'limit = "{cap} N*m"'))
+            run = read_component_file(str(path)).model.run(2.0)
+            assert abs(swept[i, j] - abs(run.peaks[0].value)) <= 1e-9 * abs(run.peaks[0].value)
+            peak = part_peaks(run)[0]
+            assert (peak.part, peak.what, peak.unit) == ("armature", "current", "A")
+            assert abs(current[i, j] - abs(peak.value)) <= 1e-9 * abs(peak.value)
+
+
+def test_the_walkthrough_shows_the_first_order_equations():
+    from crane_sym.docs.drive_train import drive_train_walkthrough
+    page = drive_train_walkthrough(EXAMPLE)
+    assert "\\frac{d i_{\\mathrm{armature}}}{dt} = " in page
+    assert "\\frac{d z_{\\mathrm{speed\\_loop}}}{dt} = " in page
+    assert "speed_loop at + limit, integral frozen" in page
+    assert "$x_{6} = i_{\\mathrm{armature}}$" in page

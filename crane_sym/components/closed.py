@@ -50,6 +50,9 @@ def link_response(model: Model, u0: sp.Expr = sp.Integer(0)) -> LinkResponse:
     if switching:
         raise ComponentError(f"a closed form in the symbols needs constant loads; "
                              f"{switching[0]} switches or depends on the speed")
+    if eq.states:
+        raise ComponentError("a closed form in the symbols needs constant loads; the "
+                             f"state {eq.states[0]} of a part is of first order")
     t = eq.t
     link = a.links[0]
     (_, _, ka), (_, _, kb) = (a.place[e] for e in link.part.ends)

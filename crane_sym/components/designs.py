@@ -17,8 +17,10 @@ run from the file's start (N·m, or N between translating bodies), and
 ``L.factor``, that peak over |reference| (the link's given ``reference``,
 else its load at the start): the magnitude of what ``crane-sym run`` prints
 as its dynamic factor; of a pendulum also ``L.angle``, its largest sway angle
-in rad (its factor: its pull over the load's weight). A block of designs is
-solved together by the batched solver
+in rad (its factor: its pull over the load's weight); per value a part reports
+(``Acting.outputs``: a DC motor's current, torque, speed),
+``<part>.<what>.peak``, its largest |value|. A block of designs is solved
+together by the batched solver
 (:func:`crane_sym.mechanics.batched_runs.largest_of_runs`: one
 :class:`~crane_sym.components.hybrid.ComponentSystem` per design, the closed
 forms, events and extrema batched); :meth:`Designs.per_design` is the same
@@ -47,7 +49,7 @@ from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, Component, 
                                         value)
 from crane_sym.components.pruning import Scope
 from crane_sym.components.reading import read_component_file
-from crane_sym.mechanics.phase_table import HybridRun
+from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
 __all__ = ["OUTPUTS", "REACTION", "Designs", "Field", "Templates", "designs", "evaluate_block",
@@ -210,11 +212,14 @@ class Designs:
         return out
 
     def outputs(self) -> dict[str, tuple[int, str, str]]:
-        """Output name -> (link index, ``peak`` or ``factor``, SI unit), and
-        (contact index, ``reaction``, SI unit) for each ground contact."""
+        """Output name -> (link index, ``peak`` or ``factor``, SI unit),
+        (contact index, ``reaction``, SI unit) for each ground contact, and for
+        each value a part reports, ``<part>.<what>.peak`` -> (its index among
+        ``Equations.outputs``, ``part``, SI unit)."""
         out = {}
-        for i, link in enumerate(self.model.assembly.links):
-            motion = self.model.assembly.motion(link)
+        a = self.model.assembly
+        for i, link in enumerate(a.links):
+            motion = a.motion(link)
             for kind in OUTPUTS:
                 if kind == "angle" and not link.part.reports_angle:
                     continue
@@ -223,6 +228,10 @@ class Designs:
         for j, contact in enumerate(self.model.assembly.contacts):
             motion = self.model.assembly.bodies[contact.part.body].motion
             out[f"{contact.part.name}.reaction"] = (j, "reaction", UNITS["load"][motion])
+        bodies = {l.part.name: a.bodies[l.part.body] for l in a.loads}
+        for i, (part, what, unit, _) in enumerate(self.model.equations.outputs):
+            si = UNITS[unit][bodies[part].motion] if unit in UNITS else unit
+            out[f"{part}.{what}.peak"] = (i, "part", si)
         return out
 
     def depends(self, output: str) -> tuple[str, ...]:
@@ -279,6 +288,9 @@ class Designs:
             if kind == "reaction":
                 runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
                                       system.contact_load(index)))
+            elif kind == "part":
+                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
+                                      _reported(system, model, index)))
                 continue
             runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
                                   system.link_load(index)))
@@ -290,7 +302,7 @@ class Designs:
             raise RuntimeError(f"{output}: more than {MAX_PHASES} phases in the run of design {k} "
                                "of a block")
         peak = np.abs(result.value)
-        return (peak if kind in ("peak", "reaction") else peak / reference).reshape(shape)
+        return (peak if kind in ("peak", "reaction", "part") else peak / reference).reshape(shape)
 
     def per_design(self, output: str, values: Mapping[str, np.ndarray],
                    exact: bool | None = None) -> np.ndarray:
@@ -310,11 +322,20 @@ class Designs:
                                                     rest=f.rest)
             if kind == "reaction":
                 out[at] = abs(run.reactions[index].value)
+            elif kind == "part":
+                affine = _reported(run.system, run.model, index)
+                out[at] = abs(largest(run.result, run.system, affine, magnitude=True)[1])
                 continue
             peak = run.peaks[index]
             out[at] = abs(peak.value) if kind == "peak" else (
                 abs(peak.factor) if peak.factor is not None else math.nan)
         return out
+
+
+def _reported(system: ComponentSystem, model: Model, index: int):
+    """The affine map (w, 0) of value ``index`` that a part reports."""
+    w = system.first_order.weights(model.equations.outputs[index][3])
+    return lambda mode: (w, 0.0)
 
 
 _CACHE: dict[tuple[str, str], Designs] = {}

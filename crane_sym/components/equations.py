@@ -22,8 +22,11 @@ dissipation (:func:`crane_sym.mechanics.lagrange.lagrange_equations`) give
 M q̈ + D q̇ + K q = f, linear in the state. T is a general quadratic form in
 the speeds: T_s, Π_s and Φ_s are the shares of a part that joins several
 coordinates (a span, :mod:`crane_sym.components.kinds.span`: its element's
-mass couples the speeds of its ends), so M, D and K are full matrices: χ, δ, ``on`` and B are what a mode
-of the hybrid system fixes (:mod:`crane_sym.components.hybrid`).
+mass couples the speeds of its ends), so M, D and K are full matrices: χ, δ,
+``on`` and B are what a mode of the hybrid system fixes (:mod:`crane_sym.components.hybrid`). A part may bring
+states of first order (a DC motor's current i, its force k i in Q), each with
+its rate (L di/dt = V − R i − k ω): f holds them linearly, and their rates are
+:attr:`Equations.first_order` (:mod:`crane_sym.components.first_order`).
 """
 from __future__ import annotations
 

@@ -290,6 +290,10 @@ def modal_quantity(model: Model, what: str, choice: ModeChoice,
     signed : dict, optional
         As :func:`natural_frequency` takes it.
     """
+    if model.equations.states:
+        raise ComponentError("the modes of M, D and K leave out the parts' first-order "
+                             f"states ({', '.join(map(str, model.equations.states))}): "
+                             "no modal quantity of this model")
     f = natural_frequency(model, choice, signed)
     if what == "frequency":
         return f.omega, f.how

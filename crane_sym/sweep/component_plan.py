@@ -78,6 +78,10 @@ def _outputs(found: Designs, names: list[str]) -> tuple[OutputSpec, ...]:
         if kind == "reaction":
             specs.append(OutputSpec(name, "component", found.depends(name), unit,
                                     REACTION.format(contact=name.rsplit(".", 1)[0])))
+        elif kind == "part":                  # a value a part reports: <part>.<what>.peak
+            part, what, _ = name.split(".")
+            specs.append(OutputSpec(name, "component", found.depends(name), unit,
+                                    f"largest |{what}| of {part} over the run"))
             continue
         link = found.links[index]
         reference = "its reference" if found.model.assembly.links[index].reference \
