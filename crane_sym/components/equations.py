@@ -204,6 +204,8 @@ class Equations:
         design = replace(self, assembly=assembly, values=values, shared=True)
         design.__dict__["linear"] = self.linear              # cached_property: shared
         design.__dict__["_lambdified"] = self._lambdified
+        # the links' symbolic loads too (SymPy's diff: a quarter of a design's assembly)
+        design.__dict__["_link_coefficients"] = self._link_coefficients
         return design
 
     @cached_property
