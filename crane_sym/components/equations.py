@@ -231,6 +231,8 @@ class Equations:
         design.__dict__["linear"] = self.linear              # cached_property: shared
         design.__dict__["first_order"] = self.first_order
         design.__dict__["_lambdified"] = self._lambdified
+        # the links' symbolic loads too (SymPy's diff: a quarter of a design's assembly)
+        design.__dict__["_link_coefficients"] = self._link_coefficients
         return design
 
     @cached_property

@@ -164,6 +164,7 @@ class ComponentSystem:
         # for them once a phase (the copies handed out may be changed)
         self._matrices = _memo(self._matrices_uncached)
         self._guards = _memo(self._guards_uncached)
+        self._link_loads = _memo(self._link_load_uncached)
         self._twists: dict[str, np.ndarray] = {}
 
     # --- positions in the state -------------------------------------------------
@@ -470,7 +471,10 @@ class ComponentSystem:
     def link_load(self, index: int):
         """The load of elastic link ``index`` per mode, as (w, k): the output of
         a run that :func:`crane_sym.mechanics.phase_table.largest` and
-        ``tabulate`` take."""
+        ``tabulate`` take (made once a link: an output asks for it per mode)."""
+        return self._link_loads(index)
+
+    def _link_load_uncached(self, index: int):
         link = self.assembly.links[index]
         u = self.twist(link)
         rate = np.roll(u, 1)                     # q̇ sits right after q

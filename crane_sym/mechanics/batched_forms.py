@@ -16,10 +16,17 @@ sin ωt terms.
 
 Equal nonzero eigenvalues (equal to 10⁻¹² of the spectrum's scale: two
 equal drives) form a cluster with one projector C = R (Lᵀ R)⁻¹ Lᵀ from its
-right and left eigenvectors. A design is refused (for the per-design route,
+right and left eigenvectors. Two nearly equal ones (within ``CLUSTER`` of
+each other but not equal: two sides equal but for a little) are twins, two
+terms whose projectors come from their pair's (:func:`_twins`): within
+1e-14 of mpmath at gaps 0 to 5e-4 (``tests/test_batched.py``), where
+projectors one by one from the vectors were off by rounding over the gap
+(4e-10 at a gap of 1e-5) and were refused below 10⁻⁶ (about one design in
+eleven of 003's start-up, sent to the per-design route). A design is refused (for the per-design route,
 which resolves nearly equal and defective eigenvalues,
 :mod:`crane_sym.mechanics.spectral_clusters`) where this is not safe:
-eigenvalues closer than 10⁻⁶ of the scale but not equal, a cluster's
+three or more nearly equal eigenvalues, twins beside a cluster, nearly
+defective twins (a condition number above ``NEAR_COND``), a cluster's
 condition number ‖(L̂ᵀ R̂)⁻¹‖ above ``cond_limit`` (for a simple eigenvalue
 1/|ŵᵀv̂|; a defective eigenvalue makes it huge), a complex pair closer to the
 real axis than 10⁻⁵ of the scale, or spectra of M and Mᵀ that do not match.
@@ -129,11 +136,11 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     (:func:`_spectra`); b enters each design's last column algebraically.
     """
     k, n = b.shape
-    first, inverse, lam, vr, mu, vl, cat, bad = _spectra(A)
+    first, inverse, lam, vr, mu, vl, cat, bad, twin = _spectra(A)
     live = cat < 3
     # clusters: equal nonzero eigenvalues (two equal drives), each one projector
     scale = np.maximum(np.abs(lam).max(axis=1, initial=0.0), 1.0)[:, None]
-    step = np.abs(np.diff(lam, axis=1)) >= 1e-6 * scale
+    step = np.abs(np.diff(lam, axis=1)) > 1e-12 * scale
     starts = np.concatenate([np.ones((first.size, 1), bool),
                              step | (np.diff(cat, axis=1) != 0)], axis=1)
     pattern = np.where(live, cat * 2 + starts, 7)
@@ -150,7 +157,7 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
             slot = np.full(first.size, -1)
             slot[d] = np.arange(d.size)
             form, fine = _form(A[where], b[where], slot[inverse[where]], lam[d], vr[d],
-                               mu[d], vl[d], kind, cond_limit)
+                               mu[d], vl[d], twin[d], kind, cond_limit)
             refused.extend(where[~fine])
             if form is not None:
                 parts.append((where[fine], form))
@@ -163,9 +170,11 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     their transposes, each A decomposed alone, so a design's bits do not
     depend on its neighbours), both spectra in one order (:func:`_ordered`):
     ``first`` (the first design of each distinct A), ``inverse`` (per design,
-    its A), λ, V, μ, W, the categories, and ``bad``: spectra of A and Aᵀ that
+    its A), λ, V, μ, W, the categories, ``bad``: spectra of A and Aᵀ that
     do not match, a complex pair closer to the real axis than 10⁻⁵ of the
-    scale, or a value not finite."""
+    scale, a value not finite, three nearly equal eigenvalues, or a nearly
+    defective one (see the module docstring); and ``twin``: True at the
+    first of two nearly equal eigenvalues (not equal to rounding)."""
     k = A.shape[0]
     first, inverse = first_of_equal(np.ascontiguousarray(A.reshape(k, -1)))
     lam, vr = np.linalg.eig(A[first])
@@ -179,12 +188,17 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     im = np.abs(lam.imag)
     bad |= np.any(live & (im > 0) & (im < 1e-5 * scale), axis=1)
     bad |= ~np.all(np.isfinite(lam), axis=1) | ~np.all(np.isfinite(mu), axis=1)
-    # a cluster is one eigenvalue with one projector: only where its members are
-    # equal to rounding (equal drives); nearly equal ones go to the per-design
-    # route, whose clusters resolve them (spectral_clusters)
+    # a cluster is one eigenvalue with one projector where its members are equal
+    # to rounding (equal drives); two nearly equal ones (two sides equal but for
+    # a little) are twins: two terms whose projectors come from their pair's
+    # (_twins); three or more nearly equal, or twins beside a cluster, go to
+    # the per-design route, whose clusters resolve them (spectral_clusters)
     gap = np.abs(np.diff(lam, axis=1))
     same = live[:, 1:] & live[:, :-1] & (cat[:, 1:] == cat[:, :-1])
-    bad |= np.any(same & (gap < tol) & (gap > 1e-12 * scale), axis=1)
+    equal = same & (gap <= 1e-12 * scale)
+    twin = same & (gap <= CLUSTER * np.abs(lam[:, :-1])) & ~equal
+    bad |= np.any(twin[:, 1:] & (twin[:, :-1] | equal[:, :-1]), axis=1)
+    bad |= np.any(twin[:, :-1] & equal[:, 1:], axis=1)
     # nearly defective: a neighbour within CLUSTER (a pair's conjugate included)
     # and a condition number above NEAR_COND
     with np.errstate(divide="ignore"):
@@ -196,7 +210,8 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
         d[d <= 1e-12 * scale] = np.inf                # equal: one cluster, one projector
         near[:, j] = d.min(axis=1) <= CLUSTER * np.abs(lam[:, j])
     bad |= np.any(live & near & (kappa > NEAR_COND), axis=1)
-    return first, inverse, lam, vr, mu, vl, cat, bad
+    first_twin = np.concatenate([twin, np.zeros((twin.shape[0], 1), bool)], axis=1)
+    return first, inverse, lam, vr, mu, vl, cat, bad, first_twin
 
 
 #: Odd multipliers of :func:`first_of_equal`'s hash, per row width (fixed:
@@ -255,12 +270,58 @@ def _ordered(values, vectors, tol):
             np.take_along_axis(cat, order, axis=1))
 
 
-def _form(A, b, slot, lam, vr, mu, vl, kind, cond_limit: float) -> tuple[BatchForm | None,
-                                                                            np.ndarray]:
+def _projector(A, b, slot, mu, R, L) -> tuple[np.ndarray, np.ndarray]:
+    """The projector C = V G⁻¹ [Wᵀ | s] of M = [[A, b], [0, 0]] onto the
+    eigenvalues of the columns R, L (right and left vectors of the distinct
+    A, ``mu`` their eigenvalues), per design, and its condition number (see
+    :func:`_form`)."""
+    k, n = b.shape
+    m = R.shape[2]
+    gram = np.einsum("dim,din->dmn", L, R)
+    with np.errstate(all="ignore"):
+        inv = np.linalg.inv(gram) if np.all(np.isfinite(gram)) else gram * np.nan
+    block = np.einsum("dim,dmn,djn->dij", R, np.nan_to_num(inv), L)
+    with np.errstate(all="ignore"):
+        s_ = np.einsum("ki,kim->km", b.astype(complex), L[slot]) / mu[slot]
+        norm = np.sqrt(1.0 + np.abs(s_) ** 2)
+        scaled = inv[slot] * norm[:, None, :]
+        cond = (np.linalg.norm(scaled, ord=2, axis=(1, 2)) if m > 1
+                else np.abs(scaled[:, 0, 0]))
+    C = np.zeros((k, n + 1, n + 1), dtype=complex)
+    C[:, :n, :n] = block[slot]
+    C[:, :n, n] = np.einsum("kim,kmn,kn->ki", R[slot], np.nan_to_num(inv)[slot],
+                            np.nan_to_num(s_))
+    return C, cond
+
+
+def _twins(A, b, slot, lam, vr, mu, vl, j: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The projectors C, C' of twins j, j + 1 (two nearly equal eigenvalues
+    λ, λ') per design, and their condition number: the pair's projector P
+    (from both columns: whichever vectors of the nearly shared plane ``eig``
+    returns, P is the same), then C = (M − λ' I) P / (λ − λ') and C' = P − C.
+    Computed one by one from the vectors, they would be wrong in the plane
+    by rounding over the gap, and the left and right vectors might not be
+    each other's. Here the error of (M − λ' I) P, over the gap, enters
+    e^{λt} C + e^{λ't} C' times (e^{λt} − e^{λ't}) / (λ − λ') ≈ t e^{λt}:
+    no worse than the rounding of P."""
+    n = b.shape[1]
+    P, cond = _projector(A, b, slot, mu[:, j:j + 2], vr[:, :, j:j + 2], vl[:, :, j:j + 2])
+    M = np.zeros_like(P)
+    M[:, :n, :n] = A
+    M[:, :n, n] = b
+    other = lam[slot, j + 1][:, None, None]
+    with np.errstate(all="ignore"):
+        C = (M @ P - other * P) / (lam[slot, j] - lam[slot, j + 1])[:, None, None]
+    return C, P - C, cond
+
+
+def _form(A, b, slot, lam, vr, mu, vl, twin, kind, cond_limit: float) -> tuple[
+        BatchForm | None, np.ndarray]:
     """The :class:`BatchForm` of designs of one cluster pattern ``kind`` (per
     eigenvalue: 2·category + starts-a-cluster, 7 for the kernel), and which
     designs it holds. ``lam``, ``vr``, ``mu``, ``vl`` belong to the designs'
-    distinct A, design i to ``slot[i]``.
+    distinct A, design i to ``slot[i]``; ``twin`` marks the first of two
+    nearly equal eigenvalues (:func:`_twins`).
 
     A cluster's projector of M = [[A, b], [0, 0]] is C = V G⁻¹ [Wᵀ | s]
     (G = WᵀV, s_j = w_jᵀb/μ_j: the left vector of M is (w, s)): its A-block
@@ -277,25 +338,19 @@ def _form(A, b, slot, lam, vr, mu, vl, kind, cond_limit: float) -> tuple[BatchFo
     fine = np.ones(k, dtype=bool)
     projector = np.zeros((k, size, size))
     real, pairs = [], []
+    made = {j: _projector(A, b, slot, mu[:, j:j + m], vr[:, :, j:j + m], vl[:, :, j:j + m])
+            for j, m, cat in clusters if cat != 2}
+    for j in range(live - 1):                       # twins: their pair's projector
+        rows = np.flatnonzero(twin[slot, j])
+        if rows.size and j in made and j + 1 in made:
+            C, C_next, cond = _twins(A[rows], b[rows], slot[rows], lam, vr, mu, vl, j)
+            for c, part in ((j, C), (j + 1, C_next)):
+                made[c][0][rows], made[c][1][rows] = part, cond
     for j, m, cat in clusters:
         if cat == 2:
             continue                                  # the conjugates of the upper half
-        R, L = vr[:, :, j:j + m], vl[:, :, j:j + m]
-        gram = np.einsum("dim,din->dmn", L, R)
-        with np.errstate(all="ignore"):
-            inv = np.linalg.inv(gram) if np.all(np.isfinite(gram)) else gram * np.nan
-        block = np.einsum("dim,dmn,djn->dij", R, np.nan_to_num(inv), L)
-        with np.errstate(all="ignore"):
-            s_ = np.einsum("ki,kim->km", b.astype(complex), L[slot]) / mu[slot, j:j + m]
-            norm = np.sqrt(1.0 + np.abs(s_) ** 2)
-            scaled = inv[slot] * norm[:, None, :]
-            cond = (np.linalg.norm(scaled, ord=2, axis=(1, 2)) if m > 1
-                    else np.abs(scaled[:, 0, 0]))
+        C, cond = made[j]
         fine &= cond <= cond_limit
-        C = np.zeros((k, size, size), dtype=complex)
-        C[:, :n, :n] = block[slot]
-        C[:, :n, n] = np.einsum("kim,kmn,kn->ki", R[slot], np.nan_to_num(inv)[slot],
-                                np.nan_to_num(s_))
         value = lam[slot, j:j + m].mean(axis=1)
         if cat == 0:
             real.append((value.real, C.real))
