@@ -288,7 +288,8 @@ class Designs:
             if kind == "reaction":
                 runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
                                       system.contact_load(index)))
-            elif kind == "part":
+                continue
+            if kind == "part":
                 runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
                                       _reported(system, model, index)))
                 continue
@@ -322,7 +323,8 @@ class Designs:
                                                     rest=f.rest)
             if kind == "reaction":
                 out[at] = abs(run.reactions[index].value)
-            elif kind == "part":
+                continue
+            if kind == "part":
                 affine = _reported(run.system, run.model, index)
                 out[at] = abs(largest(run.result, run.system, affine, magnitude=True)[1])
                 continue

@@ -78,7 +78,8 @@ def _outputs(found: Designs, names: list[str]) -> tuple[OutputSpec, ...]:
         if kind == "reaction":
             specs.append(OutputSpec(name, "component", found.depends(name), unit,
                                     REACTION.format(contact=name.rsplit(".", 1)[0])))
-        elif kind == "part":                  # a value a part reports: <part>.<what>.peak
+            continue
+        if kind == "part":                  # a value a part reports: <part>.<what>.peak
             part, what, _ = name.split(".")
             specs.append(OutputSpec(name, "component", found.depends(name), unit,
                                     f"largest |{what}| of {part} over the run"))
