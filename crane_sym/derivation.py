@@ -219,7 +219,7 @@ class SweepOutput:
         True where such a block spends its time in NumPy calls on whole
         arrays (which release the GIL), not in Python per design: a sweep
         runs its blocks on threads, each of at least
-        ``crane_sym.sweep.grid.THREAD_DESIGNS`` designs (fewer, larger
+        ``crane_sym.sweep.blocks.THREAD_DESIGNS`` designs (fewer, larger
         blocks: a block's Python per phase is paid once for more designs).
         False (a block that assembles or switches each design in Python):
         processes, as for any simulated output.
