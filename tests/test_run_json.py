@@ -41,10 +41,18 @@ def test_every_example_component_file_prints_its_results_with_units(path, tmp_pa
     assert main(["run", str(path), "--out", str(tmp_path), "--format", "json", "--quiet"]) == 0
     data = json.loads(capsys.readouterr().out)
     _checked(data, data["model"])
-    links = {k.rsplit(".", 1)[0] for k in data["results"]}
-    for link in links:
-        assert data["results"][f"{link}.peak_time"]["unit"] == "s"
-        assert data["results"][f"{link}.peak"]["unit"] in ("N", "N*m")
+    timed = {k.removesuffix(".peak_time") for k in data["results"] if k.endswith(".peak_time")}
+    assert timed, "no peak with its time"
+    for name in timed:
+        assert data["results"][f"{name}.peak_time"]["unit"] == "s"
+        if "." not in name:            # a link's load; a part's value (<part>.<what>) has its own
+            assert data["results"][f"{name}.peak"]["unit"] in ("N", "N*m")
+        else:
+            assert data["results"][f"{name}.peak"]["unit"] in ("A", "N", "N*m", "rad/s", "m/s")
+    for name in {k.removesuffix(".reaction_peak") for k in data["results"]
+                 if k.endswith(".reaction_peak")}:
+        assert data["results"][f"{name}.reaction_peak"]["unit"] in ("N", "N*m")
+        assert data["results"][f"{name}.reaction_peak_time"]["unit"] == "s"
     assert all(e["time"]["unit"] == "s" for e in data["events"])
 
 
