@@ -27,11 +27,10 @@ from typing import Sequence
 
 import sympy as sp
 
-from crane_sym import units
 from crane_sym.components import kinds
 from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import (ACTING, Brake, Characteristic, DCMotor, Gravity,
-                                        GroundContact, Motor, SpeedController)
+from crane_sym.components.acting import Load, checked_load
+from crane_sym.components.loads import ACTING, Brake, GroundContact, Motor
 from crane_sym.components.parts import (DIMENSIONS, GROUND, RIGID, ROTATING, TRANSLATING, Body,
                                         Component, ComponentError, Drum, ElasticLink, Gear)
 
@@ -78,16 +77,6 @@ class Link:
         """Whether it has a gap (a backlash, or a slack link's): its contact
         switches."""
         return self.part.gapped
-
-
-@dataclass(frozen=True)
-class Load:
-    """A brake, motor, gravity or resistance with its torque or force in SI
-    (None: a steady motor, solved at the start)."""
-
-    part: Component
-    load: float | None
-    values: tuple[float, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -215,7 +204,7 @@ def assemble(components: Sequence[Component]) -> Assembly:
     _connected(bodies, rigid, elastic, joined)
     groups, place = _groups(bodies, rigid)
     links = tuple(_link(p, bodies, place) for p in elastic)
-    loads = tuple(_load(p, bodies, components) for p in components if isinstance(p, ACTING))
+    loads = tuple(checked_load(p, bodies, components) for p in components if isinstance(p, ACTING))
     steady = [l.part.label for l in loads if isinstance(l.part, Motor) and l.load is None]
     if len(steady) > 1:
         raise ComponentError(f"{steady[1]}: only one motor may be 'steady' ({steady[0]} is)")
@@ -405,65 +394,3 @@ def _link(part: ElasticLink, bodies: dict[str, Body],
         part.slack.check(part.label, "slack", DIMENSIONS["backlash"][motion])  # m, or rad
     return Link(part, check("stiffness", stiffness), check("damping", part.damping),
                 check("backlash", part.backlash), reference)
-
-
-def _load(part: Component, bodies: dict[str, Body], components: Sequence[Component]) -> Load:
-    body = bodies[part.body]
-    if isinstance(part, Gravity):
-        if body.motion != TRANSLATING:
-            raise ComponentError(f"{part.label} acts on {body.label}, which rotates; gravity "
-                                 "acts on a mass")
-        return Load(part, body.inertia * part.g * (1.0 if part.direction == "+" else -1.0))
-    if isinstance(part, Motor) and part.load is None:
-        return Load(part, None)
-    if isinstance(part, MotorLaw):
-        what = ("load" if part.law == "torque" else part.law)
-        expected = DIMENSIONS[what][body.motion]
-        if not units.same_dimension(part.dimension, expected):
-            raise ComponentError(f"{part.label} on {body.label}: its unit {part.unit!r} is "
-                                 f"{units.format_dimension(part.dimension)}, expected "
-                                 f"{units.describe_dimension(expected)}")
-        return Load(part, None)
-    if isinstance(part, DCMotor):
-        where = f"{part.label} on {body.label}"
-        if not units.same_dimension(part.voltage.dimension, units.UNITS["V"][1]):
-            raise ComponentError(f"{where}: its voltage unit {part.voltage.unit!r} is "
-                                 f"{units.format_dimension(part.voltage.dimension)}, expected "
-                                 f"a voltage (e.g. V)")
-        k = part.constant.check(where, "constant", DIMENSIONS["motor constant"][body.motion])
-        return Load(part, None, (part.resistance.si, part.inductance.si, k))
-    if isinstance(part, SpeedController):
-        return _controller(part, bodies, components)
-    if isinstance(part, Characteristic):
-        where = f"{part.label} on {body.label}"
-        speed = part.speed.check(where, "speed", DIMENSIONS["speed"][body.motion])
-        return Load(part, None, (speed, *(k.check(where, "slope", DIMENSIONS["damping"][body.motion])
-                                          for k in part.slopes)))
-    word = "torque" if body.motion == ROTATING else "force"
-    return Load(part, part.load.check(f"{part.label} on {body.label}", word,
-                                      DIMENSIONS["load"][body.motion]))
-
-
-def _controller(part: SpeedController, bodies: dict[str, Body],
-                components: Sequence[Component]) -> Load:
-    """A speed controller's gains (volts per speed, per displacement) and torque
-    limit in SI, checked by the motion of its body and of its DC motor's."""
-    body = bodies[part.body]
-    where = f"{part.label} on {body.label}"
-    motors = {p.name: p for p in components if isinstance(p, DCMotor)}
-    if part.motor not in motors:
-        raise ComponentError(f"{where}: motor {part.motor!r} is no dc_motor; dc motors: "
-                             f"{', '.join(motors) or 'none'}")
-    if not units.same_dimension(part.reference.dimension, DIMENSIONS["speed"][body.motion]):
-        raise ComponentError(f"{where}: its reference unit {part.reference.unit!r} is "
-                             f"{units.format_dimension(part.reference.dimension)}, expected "
-                             f"{units.describe_dimension(DIMENSIONS['speed'][body.motion])}")
-    gains = (part.proportional.check(where, "proportional",
-                                     DIMENSIONS["voltage per speed"][body.motion]),
-             part.integral.check(where, "integral",
-                                 DIMENSIONS["voltage per displacement"][body.motion]))
-    if part.limit is None:
-        return Load(part, None, (*gains, None))
-    motion = bodies[motors[part.motor].body].motion
-    return Load(part, None, (*gains, part.limit.check(where, "limit",
-                                                      DIMENSIONS["load"][motion])))
