@@ -145,3 +145,12 @@ def test_the_walkthrough_derives_the_pendulums_energy(tmp_path):
     assert "| sway | pendulum | trolley – load | length = 10 m; g = 9.81 m/s^2 |" in text
     assert (r"\Pi = \frac{g_{\mathrm{sway}} m_{\mathrm{load}} \left(x_{\mathrm{load}} - "
             r"x_{\mathrm{trolley}}\right)^{2}}{2 L_{\mathrm{sway}}}") in text
+
+
+def test_the_run_line_gives_the_angle_once_not_as_a_dynamic_factor(tmp_path, capsys):
+    assert main(["run", str(EXAMPLE), "--out", str(tmp_path / "run")]) == 0
+    out = capsys.readouterr().out
+    load = next(line for line in out.splitlines() if "peak load of sway" in line)
+    assert "dynamic factor" not in load
+    assert "peak sway angle of sway: 0.08525 rad (4.884 deg)" in out
+

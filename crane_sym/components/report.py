@@ -120,7 +120,8 @@ def report_lines(run: ComponentRun) -> list[str]:
     if any(p.positive is None for p in run.peaks):
         lines.append(SIGNS)
     for p in run.peaks:
-        factor = "" if p.factor is None else f", dynamic factor {format_quantity(p.factor)}"
+        factor = "" if p.factor is None or p.angle else \
+            f", dynamic factor {format_quantity(p.factor)}"   # a pendulum's is its angle, below
         scale = engineering(max(abs(p.value), abs(p.static)), p.unit)
         lines.append(f"peak load of {p.link}: {load_text(p.value, p.unit, p.positive, *scale)}"
                      f" at t = {format_quantity(p.time, 's')} (at the start "
