@@ -39,7 +39,7 @@ from sympy.physics.units import time
 
 from crane_sym.components.model import Model
 from crane_sym.components.parts import ComponentError, value
-from crane_sym.components.quantities import KINDS, parameters
+from crane_sym.components.quantities import QUANTITIES, parameters
 from crane_sym.components.vibration import LOWEST, MODAL
 from crane_sym.scenes.options import did_you_mean
 
@@ -79,10 +79,15 @@ def _quantity_names(model: Model) -> dict[str, str]:
     out = {}
     owners = {"body": list(a.bodies), "link": [l.part.name for l in a.links],
               "contact": [c.part.name for c in a.contacts]}
-    for what, (owner, _) in KINDS.items():
+    for what, (owner, _) in QUANTITIES.items():
         names = owners.get(owner) or [l.part.name for l in a.loads if l.part.kind == owner]
         out |= {f"{n}.{what}": what for n in names}
     return out
+
+
+def _of(owner: str) -> list[str]:
+    """The quantities a component of ``owner``'s kind has (``link``, ``contact``)."""
+    return [what for what, (kind, _) in QUANTITIES.items() if kind == owner]
 
 
 def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
@@ -94,9 +99,8 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
         raise ComponentError(f"{where}: unknown quantity {path!r}; "
                              f"{did_you_mean(path, list(known))}a quantity is "
                              f"<body>.reduced_inertia, <dc motor>.time_constant, <link>."
-                             f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'link')}}} "
-                             f"or <ground contact>."
-                             f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'contact')}}}")
+                             f"{{{', '.join(_of('link'))}}} or <ground contact>."
+                             f"{{{', '.join(_of('contact'))}}}")
     return path
 
 
@@ -115,7 +119,7 @@ def _check_symbols(table: object, model: Model, where: str,
                                  f"name as text, got {target!r}")
         if target != TIME and target not in known:
             name, _, what = target.partition(".")
-            if what in KINDS:
+            if what in QUANTITIES:
                 _check_quantity(target, model, f"{where}: symbols: {printed!r}", "it")
             else:
                 raise ComponentError(

@@ -56,23 +56,23 @@ from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, TRANSLATIN
                                         ComponentError, ElasticLink, value)
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
-__all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
-           "signed", "static_loads", "switching_values"]
+__all__ = ["NUMERIC", "QUANTITIES", "Parameter", "Quantity", "UNITS", "derived_quantity",
+           "parameters", "signed", "static_loads", "switching_values"]
 
 _ONE = Dimension(1)
-#: What a quantity of each name is, and the kind of component it belongs to.
-KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
-         "static": ("link", "its load in the steady motion at the start"),
-         **{what: ("link", text) for what, text in MODAL.items()},
-         "response": ("link", "its load F(t) in closed form after a start at rest"),
-         "peak": ("link", "its largest load over the file's run"),
-         "factor": ("link", "its dynamic factor: peak over reference or static load"),
-         "reaction": ("contact", "the ground's reaction at rest at the start, the links "
-                                 "unstretched"),
-         "reaction_peak": ("contact", "the ground's largest reaction over the file's run"),
-         "time_constant": ("dc motor", "its mechanical time constant: the reduced inertia "
-                                       "over the slope of its torque against speed, the "
-                                       "armature's inductance neglected")}
+#: Each quantity by its name: the kind of component it belongs to, and what it is.
+QUANTITIES = {"reduced_inertia": ("body", "the inertia of its rigid group referred to it"),
+              "static": ("link", "its load in the steady motion at the start"),
+              **{what: ("link", text) for what, text in MODAL.items()},
+              "response": ("link", "its load F(t) in closed form after a start at rest"),
+              "peak": ("link", "its largest load over the file's run"),
+              "factor": ("link", "its dynamic factor: peak over reference or static load"),
+              "reaction": ("contact", "the ground's reaction at rest at the start, the links "
+                                      "unstretched"),
+              "reaction_peak": ("contact", "the ground's largest reaction over the file's run"),
+              "time_constant": ("dc motor", "its mechanical time constant: the reduced inertia "
+                                            "over the slope of its torque against speed, the "
+                                            "armature's inductance neglected")}
 #: Quantities that are numbers of the file's run, not symbolic.
 NUMERIC = ("peak", "factor", "reaction_peak")
 
@@ -282,12 +282,12 @@ def derived_quantity(model: Model, path: str, run=None,
         every gap closed, no brake holding).
     """
     name, _, what = path.partition(".")
-    if what not in KINDS:
+    if what not in QUANTITIES:
         raise ComponentError(f"unknown quantity {path!r}; a quantity is <component>."
-                             f"{{{', '.join(KINDS)}}}")
+                             f"{{{', '.join(QUANTITIES)}}}")
     a, eq = model.assembly, model.equations
     zero, twins = _zeros(model), signed(model)
-    if KINDS[what][0] == "body":
+    if QUANTITIES[what][0] == "body":
         if name not in a.bodies:
             raise ComponentError(f"quantity {path!r}: no body {name!r}; bodies: "
                                  f"{', '.join(a.bodies)}")
@@ -299,9 +299,9 @@ def derived_quantity(model: Model, path: str, run=None,
         return Quantity(path, inertia, DIMENSIONS[key][body.motion], UNITS[key][body.motion],
                         f"∂²T/∂q̇² of the rigid group of {body.label}, referred to it "
                         "(divided by its κ²)")
-    if KINDS[what][0] == "contact":
+    if QUANTITIES[what][0] == "contact":
         return _contact_quantity(model, path, run)
-    if KINDS[what][0] == "dc motor":
+    if QUANTITIES[what][0] == "dc motor":
         return _time_constant(model, path, name)
     link = _link(model, name) if name in [l.part.name for l in a.links] else None
     if link is None:
