@@ -11,7 +11,7 @@ from pathlib import Path
 
 from crane_sym.cli.main import main
 from crane_sym.components.quantities import parameters, static_loads
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 #: A gantry hoist no paper has: motor, coupling with backlash, drum, a block on
 #: the drum's rope and the hook below it on two ropes in parallel (a loop of

@@ -15,7 +15,7 @@ from scipy.optimize import minimize_scalar
 
 from component_commands import swept, walkthrough
 from crane_sym.components.quantities import parameters
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 EXAMPLE = (Path(__file__).resolve().parents[1] / "examples" / "drive_trains"
            / "jib_reeve_failure.toml")

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 import sympy as sp
 
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from hybrid_references import girder_reference
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "girder_hoist.toml"

@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 from crane_sym.cli.main import main
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 M, C, G, LIFT = 2500.0, 4.0e6, 9.81, 0.02        # kg, N/m, m/s^2, m
 OMEGA = math.sqrt(C / M)

@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from crane_sym.cli.main import main
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "hook_released.toml"
 M1, M2, C = 1200.0, 800.0, 3.0e5              # kg, kg, N/m

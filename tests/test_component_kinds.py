@@ -14,7 +14,7 @@ from crane_sym.components import ComponentError, Inertia, kinds
 from crane_sym.components.designs import Designs
 from crane_sym.components.kinds import Key, Kind
 from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS, VALUE_KINDS, value
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 EXAMPLES = sorted((Path(__file__).resolve().parents[1] / "examples" / "drive_trains")
                   .glob("*.toml"))

@@ -13,7 +13,7 @@ import pytest
 import sympy as sp
 
 from crane_sym.cli.main import main
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from hybrid_references import lift_off_reference
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "lift_off.toml"

@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 from crane_sym.cli.main import main
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from component_commands import swept, walkthrough
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "trolley_sway.toml"

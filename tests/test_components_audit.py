@@ -16,7 +16,7 @@ from crane_sym.cli.main import main
 from crane_sym.components import ComponentError
 from crane_sym.components.file_audit import audit_file
 from crane_sym.components.quantities import derived_quantity
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"
 ROPE = EXAMPLES / "hoist_rope_stretch.toml"

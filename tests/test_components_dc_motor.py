@@ -153,7 +153,7 @@ def hoist_reference(t_end: float, limited: bool) -> tuple[list[tuple[float, str]
 
 def example_run(limited: bool):
     """The example file run, with or without its limit line."""
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     text = EXAMPLE.read_text()
     if not limited:
         text = "\n".join(l for l in text.splitlines() if not l.startswith("limit ="))
@@ -203,7 +203,7 @@ def test_the_example_audits_the_motors_time_constant():
     symbolically; J R / k (k for k²) a dimension error."""
     from crane_sym.components.file_audit import audit_file
     from crane_sym.components.quantities import derived_quantity
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     read = read_component_file(str(EXAMPLE))
     right, slip = audit_file(read)
     assert (right.label, right.verdict, right.method) == ("tau_m", "confirmed", "symbolic")
@@ -219,7 +219,7 @@ def test_a_sweep_of_the_armature_is_the_run_of_each_design(tmp_path, capsys):
     import json
     xr = pytest.importorskip("xarray")
     from crane_sym.cli.main import main
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     from crane_sym.components.report import part_peaks
     argv = ["sweep", str(EXAMPLE), "--vary", "armature.resistance=0.05:0.2:2",
             "--vary", "speed_loop.limit=800:1200:2", "--output", "rope.peak",

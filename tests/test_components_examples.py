@@ -19,7 +19,7 @@ import sympy as sp
 from scipy.optimize import minimize_scalar
 
 import hand_hybrid
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from crane_sym.mechanics.phase_table import values
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"

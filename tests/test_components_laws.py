@@ -107,7 +107,7 @@ def test_acceleration_law_drives_the_referred_momentum_of_a_geared_hoist():
 
 
 def test_a_motor_law_in_a_file_refuses_text_for_numbers(tmp_path):
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     file = tmp_path / "law.toml"
     file.write_text('[model]\nname = "law"\n[[mass]]\nname = "a"\nmass = "1 kg"\n'
                     '[[mass]]\nname = "b"\nmass = "1 kg"\n'

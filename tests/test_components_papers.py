@@ -17,7 +17,7 @@ import sympy as sp
 from crane_sym import registry
 from crane_sym.components import Model, MotorLaw
 from crane_sym.components.compare import compare_equations
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from crane_sym.mechanics.exact_phases import exact_table
 
 from test_components_laws import (BREAKS, EXAMPLES, G, M1, M2, ROWS, generated, hoist,

@@ -12,7 +12,7 @@ import pytest
 from crane_sym.cli.main import main
 from crane_sym.components import (Brake, ComponentError, ElasticLink, Gravity, Mass, Model,
                                   Motor, MotorLaw, Resistance)
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from crane_sym.mechanics.phase_table import values
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"

@@ -18,7 +18,7 @@ from crane_sym import registry
 from crane_sym.components import Inertia, Mass, Model, Motor
 from crane_sym.components.kinds.span import Span
 from crane_sym.components.parts import ComponentError
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from crane_sym.mechanics.exact_phases import exact_table
 from crane_sym.mechanics.phase_table import values
 

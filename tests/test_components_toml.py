@@ -10,7 +10,8 @@ import pytest
 
 from crane_sym.cli.main import main
 from crane_sym.components import ComponentError
-from crane_sym.components.reading import is_component_file, read_component_file
+from crane_sym.components.reading import is_component_file
+from crane_sym.components.component_file import read_component_file
 
 EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml"
 

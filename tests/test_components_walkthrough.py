@@ -12,7 +12,7 @@ import pytest
 
 from crane_sym.cli.main import main
 from crane_sym.components.file_audit import audit_file
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from crane_sym.docs.drive_train import drive_train_walkthrough
 from crane_sym.docs.numbers import math_errors
 from crane_sym.docs.page import math_pieces

@@ -113,7 +113,7 @@ def test_each_bomb_is_not_checkable_with_its_bound(case, bombed):
 
 def test_a_check_over_its_budget_is_not_checkable(tmp_path, monkeypatch):
     from crane_sym.components.file_audit import audit_file
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     monkeypatch.setattr(limits, "CHECK_SECONDS", 1.0)
     source = bomb_file(tmp_path, {"slow": (r"p = e^{e^{c}}", "")})
     start = time.perf_counter()

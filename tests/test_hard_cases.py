@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from crane_sym.components.designs import designs
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 K, M_LOAD, A_RAMP = 490.5, 500.0, 0.1           # the trolley, load and ramp
 RTOL = 1e-9

@@ -12,7 +12,7 @@ import pytest
 from crane_sym.cli.main import main
 from crane_sym.components.model import LinkPeak
 from crane_sym.components.parts import ComponentError
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from crane_sym.components.report import load_figures, load_text, report_lines
 from crane_sym.scenes.panels import engineering
 

@@ -42,7 +42,7 @@ def model_text(path: str) -> str:
     """What ``crane-sym model show FILE`` prints: the components, the rigid
     groups with their referred inertia, the energies, the equations of motion
     in LaTeX, what the modes switch."""
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     from crane_sym.components.hybrid import ComponentSystem
     import sympy as sp
     model = read_component_file(path).model
@@ -96,7 +96,7 @@ def cmd_audit_components(args: argparse.Namespace) -> int:
     component files, in the papers' formats."""
     from crane_sym.audit.formats import FORMATS
     from crane_sym.components.file_audit import audit_file
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     papers = [n for n in args.ids if not is_file_argument(n)]
     if papers:
         raise ValueError(f"audit: give paper ids or component files, not both "

@@ -10,7 +10,8 @@ piecewise polynomial law in time, paper 002's drive laws); gravity on masses;
 constant resistances. From them: topology checks
 with one-line errors naming the component, T, Π, Φ and Q, Lagrange's
 equations in the components' symbols, the piecewise-linear system of its
-modes, a run solved phase by phase in closed form, and the component TOML;
+modes, a run solved phase by phase in closed form, and the component TOML
+(``reading`` reads its parts, ``component_file`` derives its run's model);
 quantities a reviewer checks (reduced inertia, static load, frequency, closed
 form, peak) and verdicts on the formulas a file lists (``file_audit``).
 Each kind of component is declared once, in its module of ``kinds``: its
@@ -27,6 +28,8 @@ from crane_sym.components.loads import (STEADY, Brake, Characteristic, Gravity, 
 from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import ComponentError, Drum, ElasticLink, Gear, Inertia, Mass
 from crane_sym.components.model import ComponentRun, LinkPeak, Model
+from crane_sym.components.component_file import ComponentFile, read_component_file
 
-__all__ = ["Brake", "Characteristic", "ComponentError", "ComponentRun", "Drum", "ElasticLink", "Gear", "Gravity",
-           "Inertia", "LinkPeak", "Mass", "Model", "Motor", "MotorLaw", "Resistance", "STEADY"]
+__all__ = ["Brake", "Characteristic", "ComponentError", "ComponentFile", "ComponentRun", "Drum",
+           "ElasticLink", "Gear", "Gravity", "Inertia", "LinkPeak", "Mass", "Model", "Motor",
+           "MotorLaw", "Resistance", "STEADY", "read_component_file"]

@@ -48,7 +48,7 @@ from crane_sym.components.model import Model, start_load
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, Component, ComponentError,
                                         value)
 from crane_sym.components.pruning import Scope
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 

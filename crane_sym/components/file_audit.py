@@ -37,7 +37,7 @@ from crane_sym.components.formula_limits import Refused, TooLarge, bounded, chec
 from crane_sym.components.formulas import TIME, FileFormula
 from crane_sym.components.parts import ComponentError, value
 from crane_sym.components.quantities import NUMERIC, QUANTITIES, derived_quantity, parameters
-from crane_sym.components.reading import ComponentFile
+from crane_sym.components.component_file import ComponentFile
 from crane_sym.components.vibration import ModeChoice, mode_at
 from crane_sym.derivation import Derivation, Step
 from crane_sym.latex import latex
@@ -261,7 +261,7 @@ def audit_file(read: ComponentFile) -> list[AuditRecord]:
     Parameters
     ----------
     read : ComponentFile
-        The file (:func:`crane_sym.components.reading.read_component_file`).
+        The file (:func:`crane_sym.components.component_file.read_component_file`).
     """
     if not read.formulas:
         raise ComponentError(f"{read.path.name}: no [[formula]] to audit (README, "

@@ -106,9 +106,9 @@
 Every value with a dimension is text with its unit, read by
 :mod:`crane_sym.units` (parsed, never evaluated); ratios and reevings may be
 bare numbers. An unknown table or key is an error naming the closest known
-one, as in scenes; every error is one line. The model is built for the file's
-run: components that cannot act over it are dropped before the derivation
-(:mod:`crane_sym.components.pruning`), and the model names them.
+one, as in scenes; every error is one line. Reading builds the parts and
+checks their tables; it derives nothing: the model of the file's run is
+:func:`crane_sym.components.component_file.read_component_file`'s.
 """
 from __future__ import annotations
 
@@ -118,39 +118,17 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from crane_sym.components.formulas import read_formulas
 from crane_sym.components.kinds import Key, by_table
-from crane_sym.components.model import Model
 from crane_sym.components.model_limits import check_counts
 from crane_sym.components.parts import ComponentError
 from crane_sym.scenes.fields import toml_reason
 from crane_sym.scenes.options import did_you_mean
 
-__all__ = ["ComponentFile", "ComponentParts", "is_component_file", "read_component_file",
-           "read_parts"]
+__all__ = ["ComponentParts", "is_component_file", "read_parts"]
 
 MODEL_KEYS, RUN_KEYS = ("name", "title"), ("duration", "start", "body", "speed")
 _RUN_BODY = Key("body", "word")
 _SAFE_NAME = re.compile(r"[A-Za-z0-9_][A-Za-z0-9_-]{0,63}")
-
-
-@dataclass(frozen=True)
-class ComponentFile:
-    """A read component file: the model (of what its run needs), its run's
-    settings, where it came from, its [[formula]] tables
-    (:class:`~crane_sym.components.formulas.FileFormula`), its component tables
-    as written (kind -> list of tables) and every component as built (``parts``:
-    a sweep that changes a value builds its model again from these)."""
-
-    model: Model
-    duration: str
-    body: str | None
-    speed: Any
-    path: Path
-    rest: bool = False
-    formulas: tuple = ()
-    tables: dict = field(default_factory=dict)
-    parts: tuple = ()
 
 
 def is_component_file(path: str | Path) -> bool:
@@ -191,28 +169,6 @@ class ComponentParts:
     path: Path
     rest: bool = False
     data: dict = field(default_factory=dict)       # the file's tables, as read
-
-
-def read_component_file(path: str | Path) -> ComponentFile:
-    """Read, check and derive the model of a component file (see the module
-    docstring); ComponentError, one line, for anything it cannot take.
-
-    Parameters
-    ----------
-    path : str or Path
-        The component TOML file.
-    """
-    read = read_parts(path)
-    where_file = f"component model {read.name!r}"
-    try:
-        model = Model.for_run(read.parts, read.duration, read.rest, read.name, read.title)
-    except ComponentError as exc:
-        raise ComponentError(f"{where_file}: {exc}") from None
-    formulas = read_formulas(read.data.get("formula", []), model, where_file,
-                             (read.body, read.speed))
-    return ComponentFile(model, read.duration, read.body, read.speed, read.path, read.rest,
-                         formulas, {k: read.data.get(k, []) for k in by_table()},
-                         tuple(read.parts))
 
 
 def read_parts(path: str | Path) -> ComponentParts:

@@ -17,7 +17,7 @@ import numpy as np
 from crane_sym import output_files
 from crane_sym.components.generate import module_name, render_component_module
 from crane_sym.components.model import ComponentRun
-from crane_sym.components.reading import ComponentFile, read_component_file
+from crane_sym.components.component_file import ComponentFile, read_component_file
 from crane_sym.mechanics.phase_table import values
 from crane_sym.components.parts import SENSES, UNITS
 from crane_sym.mechanics.phase_table import largest

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from crane_sym.components.hybrid import BACKWARD, FORWARD, HELD, ComponentSystem, Mode
 from crane_sym.components.model import ComponentRun
-from crane_sym.components.reading import ComponentFile
+from crane_sym.components.component_file import ComponentFile
 from crane_sym.docs.drive_train_states import limit_words, state_names
 from crane_sym.docs.rows import column_blocks
 from crane_sym.docs.walkthrough import _display, _math_cell
