@@ -1,99 +1,87 @@
-"""What acts on one body, checked against the body's motion: each brake,
-motor, law in time, gravity, resistance, characteristic, DC motor and speed
-controller as a :class:`Load` with its values in SI (a torque on a shaft, a
-force on a mass), or a one-line ComponentError naming the part, its unit and
-the one expected. :func:`crane_sym.components.topology.assemble` calls it for
-each such part.
+"""What acts on one body, checked against the body's motion: a part's values
+in SI as a :class:`Load` (a torque on a shaft, a force on a mass), and the
+checks its kind's ``check`` is made of (each kind of
+:mod:`crane_sym.components.kinds` declares its own;
+:func:`crane_sym.components.topology.assemble` calls it for each part that
+acts on a body). A wrong unit is a one-line ComponentError naming the part,
+its unit and the one expected.
 
 May import: ``parts``, ``loads``, ``laws`` and the top-level vocabulary.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+
+from sympy.physics.units import Dimension
 
 from crane_sym import units
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import (Characteristic, DCMotor, Gravity, Motor,
-                                        SpeedController)
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, Body, Component,
-                                        ComponentError)
+from crane_sym.components.parts import DIMENSIONS, ROTATING, Body, Component, ComponentError
 
-__all__ = ["Load", "checked_load"]
+__all__ = ["Load", "body_of", "force_load", "same_unit"]
 
 
 @dataclass(frozen=True)
 class Load:
-    """A brake, motor, gravity or resistance with its torque or force in SI
-    (None: a steady motor, solved at the start)."""
+    """A part acting on one body with its torque or force in SI (None: a steady
+    motor, solved at the start, or a part whose force is no constant) and its
+    other values in SI (``values``, in the order its kind declares)."""
 
     part: Component
     load: float | None
     values: tuple[float, ...] = ()
 
 
+def body_of(part: Component, bodies: dict[str, Body]) -> tuple[Body, str]:
+    """The body ``part`` acts on, and how messages name the pair (``brake 'b'
+    on inertia 'drum'``).
 
-def checked_load(part: Component, bodies: dict[str, Body],
-                 components: Sequence[Component]) -> Load:
-    """``part`` (a brake, motor, law, gravity, resistance, characteristic, DC
-    motor or speed controller) as a :class:`Load`: its values in SI, each
-    checked against the motion of the body it acts on."""
+    Parameters
+    ----------
+    part : Component
+        A part acting on one body (its ``body`` names it).
+    bodies : dict
+        The model's bodies by name.
+    """
     body = bodies[part.body]
-    if isinstance(part, Gravity):
-        if body.motion != TRANSLATING:
-            raise ComponentError(f"{part.label} acts on {body.label}, which rotates; gravity "
-                                 "acts on a mass")
-        return Load(part, body.inertia * part.g * (1.0 if part.direction == "+" else -1.0))
-    if isinstance(part, Motor) and part.load is None:
-        return Load(part, None)
-    if isinstance(part, MotorLaw):
-        what = ("load" if part.law == "torque" else part.law)
-        expected = DIMENSIONS[what][body.motion]
-        if not units.same_dimension(part.dimension, expected):
-            raise ComponentError(f"{part.label} on {body.label}: its unit {part.unit!r} is "
-                                 f"{units.format_dimension(part.dimension)}, expected "
-                                 f"{units.describe_dimension(expected)}")
-        return Load(part, None)
-    if isinstance(part, DCMotor):
-        where = f"{part.label} on {body.label}"
-        if not units.same_dimension(part.voltage.dimension, units.UNITS["V"][1]):
-            raise ComponentError(f"{where}: its voltage unit {part.voltage.unit!r} is "
-                                 f"{units.format_dimension(part.voltage.dimension)}, expected "
-                                 f"a voltage (e.g. V)")
-        k = part.constant.check(where, "constant", DIMENSIONS["motor constant"][body.motion])
-        return Load(part, None, (part.resistance.si, part.inductance.si, k))
-    if isinstance(part, SpeedController):
-        return _controller(part, bodies, components)
-    if isinstance(part, Characteristic):
-        where = f"{part.label} on {body.label}"
-        speed = part.speed.check(where, "speed", DIMENSIONS["speed"][body.motion])
-        return Load(part, None, (speed, *(k.check(where, "slope", DIMENSIONS["damping"][body.motion])
-                                          for k in part.slopes)))
+    return body, f"{part.label} on {body.label}"
+
+
+def force_load(part: Component, bodies: dict[str, Body]) -> Load:
+    """A part's ``load`` (a brake's, a motor's, a resistance's) as a torque on a
+    rotating body or a force on a translating one, in SI.
+
+    Parameters
+    ----------
+    part : Component
+        A part with a ``load`` and the ``body`` it acts on.
+    bodies : dict
+        The model's bodies by name.
+    """
+    body, where = body_of(part, bodies)
     word = "torque" if body.motion == ROTATING else "force"
-    return Load(part, part.load.check(f"{part.label} on {body.label}", word,
-                                      DIMENSIONS["load"][body.motion]))
+    return Load(part, part.load.check(where, word, DIMENSIONS["load"][body.motion]))
 
 
-def _controller(part: SpeedController, bodies: dict[str, Body],
-                components: Sequence[Component]) -> Load:
-    """A speed controller's gains (volts per speed, per displacement) and torque
-    limit in SI, checked by the motion of its body and of its DC motor's."""
-    body = bodies[part.body]
-    where = f"{part.label} on {body.label}"
-    motors = {p.name: p for p in components if isinstance(p, DCMotor)}
-    if part.motor not in motors:
-        raise ComponentError(f"{where}: motor {part.motor!r} is no dc_motor; dc motors: "
-                             f"{', '.join(motors) or 'none'}")
-    if not units.same_dimension(part.reference.dimension, DIMENSIONS["speed"][body.motion]):
-        raise ComponentError(f"{where}: its reference unit {part.reference.unit!r} is "
-                             f"{units.format_dimension(part.reference.dimension)}, expected "
-                             f"{units.describe_dimension(DIMENSIONS['speed'][body.motion])}")
-    gains = (part.proportional.check(where, "proportional",
-                                     DIMENSIONS["voltage per speed"][body.motion]),
-             part.integral.check(where, "integral",
-                                 DIMENSIONS["voltage per displacement"][body.motion]))
-    if part.limit is None:
-        return Load(part, None, (*gains, None))
-    motion = bodies[motors[part.motor].body].motion
-    return Load(part, None, (*gains, part.limit.check(where, "limit",
-                                                      DIMENSIONS["load"][motion])))
+def same_unit(where: str, what: str, unit: str, dimension: Dimension,
+              expected: Dimension, example: str = "") -> None:
+    """Refuse a unit ``unit`` of ``dimension`` where ``expected`` is due, in
+    one line (``<where>: its <what> unit 'kN' is force, expected a speed``);
+    ``example`` names the expected dimension instead (``a voltage (e.g. V)``).
+
+    Parameters
+    ----------
+    where : str
+        The part on its body, as messages name it.
+    what : str
+        What the unit belongs to (``voltage``, ``reference``; "" for the part's own).
+    unit : str
+        The unit as the file gives it.
+    dimension, expected : Dimension
+        Its dimension and the one expected.
+    example : str
+        How the message names the expected dimension (default: described).
+    """
+    if not units.same_dimension(dimension, expected):
+        own = f"its {what} unit" if what else "its unit"
+        raise ComponentError(f"{where}: {own} {unit!r} is {units.format_dimension(dimension)}"
+                             f", expected {example or units.describe_dimension(expected)}")

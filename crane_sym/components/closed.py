@@ -19,14 +19,14 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from crane_sym.components import kinds
+from crane_sym.components.kinds.base import Acting
 from crane_sym.components.model import Model
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Brake, Characteristic, Motor
-from crane_sym.components.parts import ComponentError
+from crane_sym.components.parts import Component, ComponentError
 from crane_sym.mechanics.elimination import RelativeEquation, relative_coordinate
 from crane_sym.mechanics.odes import solve_constant_coefficient
 
-__all__ = ["LinkResponse", "link_response"]
+__all__ = ["LinkResponse", "actings", "link_response"]
 
 
 @dataclass(frozen=True)
@@ -38,6 +38,23 @@ class LinkResponse:
     force: sp.Expr
 
 
+def actings(model: Model) -> list[tuple[Component, Acting]]:
+    """Each part acting on one body with what its kind says it adds to Q
+    (``Kind.acts``), in the assembly's order.
+
+    Parameters
+    ----------
+    model : Model
+        The assembled and derived model.
+    """
+    a, eq = model.assembly, model.equations
+    out = []
+    for load in a.loads:
+        g, _, kappa = a.place[load.part.body]
+        out.append((load.part, kinds.of(load.part).acts(load.part, kappa, eq.coordinates[g])))
+    return out
+
+
 def link_response(model: Model, u0: sp.Expr = sp.Integer(0)) -> LinkResponse:
     """F(t) of the model's one elastic link from twist ``u0`` at rest relative
     to each other (u̇(0) = 0); ComponentError for a model that switches."""
@@ -45,8 +62,10 @@ def link_response(model: Model, u0: sp.Expr = sp.Integer(0)) -> LinkResponse:
     if len(a.groups) != 2 or len(a.links) != 1 or a.links[0].gapped or a.couplings:
         raise ComponentError("a closed form in the symbols needs two rigid groups joined "
                              "by one elastic link without backlash (and no span)")
-    switching = [l.part.label for l in a.loads
-                 if isinstance(l.part, (Brake, Characteristic, Motor, MotorLaw))]
+    # a load that switches (it joins a mode's symbols) or is no constant, but
+    # not a part of first order (its states are refused next, by name)
+    switching = [part.label for part, acts in actings(model)
+                 if (acts.joins or not acts.constant) and not acts.states]
     if switching:
         raise ComponentError(f"a closed form in the symbols needs constant loads; "
                              f"{switching[0]} switches or depends on the speed")

@@ -45,8 +45,8 @@ from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.components.kinds import by_table
 from crane_sym.components.model import Model, start_load
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, UNITS, Component, ComponentError,
-                                        value)
+from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, Component,
+                                        ComponentError, value)
 from crane_sym.components.pruning import Scope
 from crane_sym.components.component_file import read_component_file
 from crane_sym.mechanics.phase_table import HybridRun, largest
@@ -200,10 +200,10 @@ class Designs:
                 raw = entry.get(key)
                 if (isinstance(raw, str) and raw == "steady") or not declared.acts(entry):
                     continue                 # solved at the start, or without effect
-                if isinstance(declared.value, str):
-                    body = entry.get("body") or (entry.get("between") or [None])[0]
-                    motion = a.bodies[body].motion if body in a.bodies else (
-                        ROTATING if kind == "inertia" else "translating")
+                if isinstance(declared.value, str):     # by the motion of its body
+                    body = entry.get("body") or next(
+                        (e for e in entry.get("between") or () if e != GROUND), name)
+                    motion = a.bodies[body].motion if body in a.bodies else TRANSLATING
                     dimension = DIMENSIONS[declared.value][motion]
                 else:
                     dimension = declared.value

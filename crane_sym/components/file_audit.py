@@ -36,7 +36,8 @@ from crane_sym.components import formula_limits as limits
 from crane_sym.components.formula_limits import Refused, TooLarge, bounded, check_print
 from crane_sym.components.formulas import TIME, FileFormula
 from crane_sym.components.parts import ComponentError, value
-from crane_sym.components.quantities import NUMERIC, QUANTITIES, derived_quantity, parameters
+from crane_sym.components.quantities import (NUMERIC, derived_quantity, parameters,
+                                             quantity_table)
 from crane_sym.components.component_file import ComponentFile
 from crane_sym.components.vibration import ModeChoice, mode_at
 from crane_sym.derivation import Derivation, Step
@@ -125,7 +126,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
             entry(symbol)          # a zero value too: its name is read, then put to 0
         else:
             inner = derived_quantity(model, target, run, choice)
-            what = f"{target}: {QUANTITIES[target.partition('.')[2]][1]}"
+            what = f"{target}: {quantity_table()[target.partition('.')[2]][1]}"
             if inner.numeric:        # a number of the run: a parameter at its magnitude
                 symbol = sp.Symbol(f"quantity_{len(names)}", positive=True)
                 size = abs(float(inner.expr))
@@ -151,12 +152,12 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
                                     (end / 100, end))
     lhs = sp.Symbol("Q_" + re.sub(r"\W", "_", f.quantity), real=True)
     lhs_entry = PhysicalSymbol(lhs, quantity.dimension, quantity.unit,
-                               f"{f.quantity}: {QUANTITIES[f.quantity.partition('.')[2]][1]}",
+                               f"{f.quantity}: {quantity_table()[f.quantity.partition('.')[2]][1]}",
                                DEFINED, "real")
     d = Derivation(model.name, read.path.name, model.title or model.name, str(read.path),
                    "", SymbolTable([*entries.values(), lhs_entry]), latex_names=names)
     d.steps.append(Step(f.quantity, sp.Eq(lhs, quantity.expr), quantity.how,
-                        title=QUANTITIES[f.quantity.partition(".")[2]][1]))
+                        title=quantity_table()[f.quantity.partition(".")[2]][1]))
     where_printed, cause = _printed_where(read, f), _cause(read, f)
     tolerance = max(f.tolerance, NUMERIC_TOLERANCE) if exact else f.tolerance
     try:

@@ -39,7 +39,7 @@ from sympy.physics.units import time
 
 from crane_sym.components.model import Model
 from crane_sym.components.parts import ComponentError, value
-from crane_sym.components.quantities import QUANTITIES, parameters
+from crane_sym.components.quantities import QUANTITIES, parameters, quantity_table
 from crane_sym.components.vibration import LOWEST, MODAL
 from crane_sym.scenes.options import did_you_mean
 
@@ -79,7 +79,7 @@ def _quantity_names(model: Model) -> dict[str, str]:
     out = {}
     owners = {"body": list(a.bodies), "link": [l.part.name for l in a.links],
               "contact": [c.part.name for c in a.contacts]}
-    for what, (owner, _) in QUANTITIES.items():
+    for what, (owner, _) in quantity_table().items():
         names = owners.get(owner) or [l.part.name for l in a.loads if l.part.kind == owner]
         out |= {f"{n}.{what}": what for n in names}
     return out
@@ -90,6 +90,13 @@ def _of(owner: str) -> list[str]:
     return [what for what, (kind, _) in QUANTITIES.items() if kind == owner]
 
 
+def _declared() -> str:
+    """The quantities the kinds declare, as a message lists them
+    (``<dc motor>.time_constant, ``)."""
+    return "".join(f"<{owner}>.{what}, " for what, (owner, _) in quantity_table().items()
+                   if what not in QUANTITIES)
+
+
 def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
     if not isinstance(path, str):
         raise ComponentError(f"{where}: {key} must be text like \"coupling.static\", "
@@ -98,7 +105,7 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
     if path not in known:
         raise ComponentError(f"{where}: unknown quantity {path!r}; "
                              f"{did_you_mean(path, list(known))}a quantity is "
-                             f"<body>.reduced_inertia, <dc motor>.time_constant, <link>."
+                             f"<body>.reduced_inertia, {_declared()}<link>."
                              f"{{{', '.join(_of('link'))}}} or <ground contact>."
                              f"{{{', '.join(_of('contact'))}}}")
     return path
@@ -119,7 +126,7 @@ def _check_symbols(table: object, model: Model, where: str,
                                  f"name as text, got {target!r}")
         if target != TIME and target not in known:
             name, _, what = target.partition(".")
-            if what in QUANTITIES:
+            if what in quantity_table():
                 _check_quantity(target, model, f"{where}: symbols: {printed!r}", "it")
             else:
                 raise ComponentError(

@@ -97,6 +97,11 @@ class MotorLaw(Component):
             object.__setattr__(self, key, v)
 
     @property
+    def laws(self) -> tuple["MotorLaw", ...]:
+        """The laws in time it carries: itself."""
+        return (self,)
+
+    @property
     def degree(self) -> int:
         """The highest degree of a piece."""
         return max(len(row) for row in self.coefficients) - 1
@@ -120,8 +125,8 @@ class MotorLaw(Component):
 
 
 def clocked(parts: Sequence[Component]) -> list[MotorLaw]:
-    """The laws in time of ``parts``, in their order: a motor law itself, and
-    the laws a part carries (its ``laws``: a DC motor's voltage); the order of
+    """The laws in time of ``parts``, in their order: the laws each part
+    carries (its ``laws``: a motor law itself, a DC motor's voltage); the order of
     the signals the equations join and of the :class:`LawClock`'s states.
 
     Parameters
@@ -129,8 +134,7 @@ def clocked(parts: Sequence[Component]) -> list[MotorLaw]:
     parts : sequence of Component
         The parts acting on bodies, in the assembly's order.
     """
-    return [law for part in parts
-            for law in ((part,) if isinstance(part, MotorLaw) else getattr(part, "laws", ()))]
+    return [law for part in parts for law in getattr(part, "laws", ())]
 
 
 class LawClock:

@@ -19,8 +19,8 @@ from crane_sym.components.laws import MotorLaw
 from crane_sym.components.parts import (Component, ComponentError, Given, Value, _at_least,
                                         _name, value)
 
-__all__ = ["ACTING", "BUILD_UPS", "Brake", "Characteristic", "DCMotor", "Gravity",
-           "GroundContact", "Initial", "Motor", "Resistance", "STEADY", "SpeedController"]
+__all__ = ["BUILD_UPS", "Brake", "Characteristic", "DCMotor", "Gravity", "GroundContact",
+           "Initial", "Motor", "Resistance", "STEADY", "SpeedController"]
 
 #: Dimensions of an armature's resistance (V/A) and inductance (V·s/A).
 OHM = force * length / (time * current**2)
@@ -179,8 +179,8 @@ class Characteristic(Component):
 class Initial(Component):
     """The state of ``body`` at t = 0 beside the run's start: moved by
     ``displacement`` along its coordinate from where the start puts it, and
-    moving at ``velocity`` (None: as the start has it). No force: it is not
-    among :data:`ACTING`."""
+    moving at ``velocity`` (None: as the start has it). No force: its kind
+    declares no ``acts``."""
 
     name: str
     body: str
@@ -209,7 +209,7 @@ class GroundContact(Component):
     coordinate, where a weight of direction "+" pushes it). Resting, the body
     is held at x = 0 by the reaction R ≥ 0; it lifts off where the R its rest
     needs would turn negative and is set down (at rest, an inelastic touch)
-    where it comes back to x = 0. No force in Q: it is not among :data:`ACTING`."""
+    where it comes back to x = 0. No force in Q: its kind declares no ``acts``."""
 
     name: str
     body: str
@@ -313,7 +313,3 @@ class SpeedController(Component):
     def laws(self) -> tuple[MotorLaw, ...]:
         """The laws in time it carries: its speed reference."""
         return (self.reference,)
-
-
-#: The things that act on one body.
-ACTING = (Brake, Motor, Characteristic, Gravity, Resistance, MotorLaw, DCMotor, SpeedController)

@@ -37,11 +37,12 @@ from typing import Sequence
 import numpy as np
 import scipy.linalg
 
+from crane_sym.components import kinds
 from crane_sym.components.parts import Component, ComponentError
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
-__all__ = ["MAX_BODIES", "MAX_BRAKES", "MAX_CYCLES", "MAX_GAPS", "MAX_LINKS", "MAX_PHASES",
+__all__ = ["COUNTS", "MAX_BODIES", "MAX_BRAKES", "MAX_CYCLES", "MAX_GAPS", "MAX_LINKS", "MAX_PHASES",
            "check_counts", "check_cycles", "frequencies"]
 
 #: The most bodies (inertias and masses) a model may declare.
@@ -55,10 +56,11 @@ MAX_BRAKES = 8
 #: The most oscillations of the fastest mode a run may span.
 MAX_CYCLES = 10_000
 
-#: What each count covers: (kinds of component, its bound, how a message names it).
-_COUNTS = ((("inertia", "mass"), MAX_BODIES, "bodies (inertias and masses)"),
-           (("elastic link",), MAX_LINKS, "elastic links"),
-           (("brake",), MAX_BRAKES, "brakes"))
+#: Each count a kind's parts may join (``Kind.counted``): its bound, and how a
+#: message names it.
+COUNTS = {"bodies": (MAX_BODIES, "bodies (inertias and masses)"),
+          "links": (MAX_LINKS, "elastic links"),
+          "brakes": (MAX_BRAKES, "brakes")}
 
 
 def check_counts(parts: Sequence[Component], where: str) -> None:
@@ -72,11 +74,12 @@ def check_counts(parts: Sequence[Component], where: str) -> None:
     where : str
         How the message names the model (``component model 'x'``).
     """
-    for kinds, bound, what in _COUNTS:
-        n = sum(p.kind in kinds for p in parts)
+    counted = [kinds.of(p).counted for p in parts]
+    for count, (bound, what) in COUNTS.items():
+        n = counted.count(count)
         if n > bound:
             raise ComponentError(f"{where}: {n} {what}, at most {bound}")
-    gaps = sum(p.kind == "elastic link" and p.gapped for p in parts)
+    gaps = sum(c == "links" and p.gapped for p, c in zip(parts, counted))
     if gaps > MAX_GAPS:
         raise ComponentError(f"{where}: {gaps} elastic links with backlash, at most {MAX_GAPS}")
 

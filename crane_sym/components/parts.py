@@ -30,7 +30,7 @@ from sympy.physics.units import Dimension, current, force, length, mass, time
 from crane_sym import units
 
 __all__ = ["Body", "Component", "ComponentError", "DIMENSIONS", "Drum", "ElasticLink", "GROUND",
-           "Gear", "Given", "Inertia", "Mass", "RIGID", "ROTATING", "TRANSLATING", "UNITS", "VALUE_KINDS",
+           "Gear", "Given", "Inertia", "Mass", "ROTATING", "TRANSLATING", "UNITS", "VALUE_KINDS",
            "Value", "value"]
 
 ROTATING, TRANSLATING = "rotating", "translating"
@@ -391,6 +391,3 @@ class ElasticLink(Component):
         s = self.backlash.si
         return (-s, 0.0) if self.contact == "positive" else (0.0, s)
 
-
-#: The rigid links.
-RIGID = (Gear, Drum)

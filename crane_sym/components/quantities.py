@@ -50,10 +50,10 @@ from sympy.physics.units import Dimension, time
 
 from crane_sym.components import kinds
 from crane_sym.components.kinds.base import FIXED_UNITS, Key
-from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model
+from crane_sym.components.closed import actings, link_response
 from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, TRANSLATING, UNITS,
-                                        ComponentError, ElasticLink, value)
+                                        ComponentError, value)
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["NUMERIC", "QUANTITIES", "Parameter", "Quantity", "UNITS", "derived_quantity",
@@ -69,10 +69,17 @@ QUANTITIES = {"reduced_inertia": ("body", "the inertia of its rigid group referr
               "factor": ("link", "its dynamic factor: peak over reference or static load"),
               "reaction": ("contact", "the ground's reaction at rest at the start, the links "
                                       "unstretched"),
-              "reaction_peak": ("contact", "the ground's largest reaction over the file's run"),
-              "time_constant": ("dc motor", "its mechanical time constant: the reduced inertia "
-                                            "over the slope of its torque against speed, the "
-                                            "armature's inductance neglected")}
+              "reaction_peak": ("contact", "the ground's largest reaction over the file's run")}
+
+
+def quantity_table() -> dict[str, tuple[str, str]]:
+    """:data:`QUANTITIES`, then each quantity a kind declares for its parts
+    (``Kind.quantities``: a DC motor's ``time_constant``), by name: the kind
+    of component it belongs to, and what it is."""
+    return QUANTITIES | {q.name: (kind.part_kind, q.text) for kind in kinds.KINDS
+                         for q in kind.quantities}
+
+
 #: Quantities that are numbers of the file's run, not symbolic.
 NUMERIC = ("peak", "factor", "reaction_peak")
 
@@ -155,9 +162,8 @@ def _motion(a, part) -> str:
     span's stretch is a length."""
     if kinds.of(part).couples is not None:
         return TRANSLATING
-    if isinstance(part, ElasticLink):
-        return next(a.bodies[e].motion for e in part.ends if e != GROUND)
-    body = part.name if part.name in a.bodies else getattr(part, "body", None) or part.ends[0]
+    body = part.name if part.name in a.bodies else getattr(part, "body", None) or next(
+        e for e in part.ends if e != GROUND)
     return a.bodies[body].motion
 
 
@@ -234,9 +240,11 @@ def static_loads(model: Model) -> dict[str, sp.Expr | None]:
         on the speed or do not balance in the symbols.
     """
     a, eq = model.assembly, model.equations
-    if a.loads_of(Characteristic):
-        raise ComponentError(f"a static load needs loads that do not depend on the speed; "
-                             f"{a.loads_of(Characteristic)[0].part.label} does")
+    speeds = {q.diff(eq.t) for q in eq.coordinates}
+    for part, acts in actings(model):
+        if acts.force is not None and acts.force.atoms(sp.Derivative) & speeds:
+            raise ComponentError(f"a static load needs loads that do not depend on the "
+                                 f"speed; {part.label} does")
     F = [sp.Symbol(f"F_{l.part.name}", real=True) for l in a.links]
     steady = model.steady_motor
     unknowns = F + ([steady] if steady is not None else [])
@@ -282,12 +290,13 @@ def derived_quantity(model: Model, path: str, run=None,
         every gap closed, no brake holding).
     """
     name, _, what = path.partition(".")
-    if what not in QUANTITIES:
+    table = quantity_table()
+    if what not in table:
         raise ComponentError(f"unknown quantity {path!r}; a quantity is <component>."
-                             f"{{{', '.join(QUANTITIES)}}}")
+                             f"{{{', '.join(table)}}}")
     a, eq = model.assembly, model.equations
     zero, twins = _zeros(model), signed(model)
-    if QUANTITIES[what][0] == "body":
+    if table[what][0] == "body":
         if name not in a.bodies:
             raise ComponentError(f"quantity {path!r}: no body {name!r}; bodies: "
                                  f"{', '.join(a.bodies)}")
@@ -299,10 +308,10 @@ def derived_quantity(model: Model, path: str, run=None,
         return Quantity(path, inertia, DIMENSIONS[key][body.motion], UNITS[key][body.motion],
                         f"∂²T/∂q̇² of the rigid group of {body.label}, referred to it "
                         "(divided by its κ²)")
-    if QUANTITIES[what][0] == "contact":
+    if table[what][0] == "contact":
         return _contact_quantity(model, path, run)
-    if QUANTITIES[what][0] == "dc motor":
-        return _time_constant(model, path, name)
+    if what not in QUANTITIES:
+        return _part_quantity(model, path, table[what][0])
     link = _link(model, name) if name in [l.part.name for l in a.links] else None
     if link is None:
         raise ComponentError(f"quantity {path!r}: no elastic link {name!r}; links: "
@@ -325,7 +334,6 @@ def derived_quantity(model: Model, path: str, run=None,
             what, (1 / time, "rad/s"))
         return Quantity(path, expr, dimension, unit, how)
     if what == "response":
-        from crane_sym.components.closed import link_response
         try:
             force_t = link_response(model).force
         except ComponentError as exc:
@@ -381,24 +389,19 @@ def _contact_quantity(model: Model, path: str, run) -> Quantity:
                     "brakes off")
 
 
-def _time_constant(model: Model, path: str, name: str) -> Quantity:
-    """τ of the DC motor ``name``: its group's inertia referred to its body over
-    −∂F/∂ω, F its force on the body with its current where its own rate is 0."""
+def _part_quantity(model: Model, path: str, owner: str) -> Quantity:
+    """A quantity a kind declares for its parts (``Kind.quantities``), of the
+    part ``path`` names: derived from its body's κ, its group's coordinate and
+    that group's inertia referred to the body (∂²T/∂q̇² over κ²)."""
     a, eq = model.assembly, model.equations
-    load = next((l for l in a.loads if l.part.name == name and l.part.kind == "dc motor"), None)
+    name, _, what = path.partition(".")
+    load = next((l for l in a.loads if l.part.name == name and l.part.kind == owner), None)
     if load is None:
-        raise ComponentError(f"quantity {path!r}: no dc motor {name!r}")
+        raise ComponentError(f"quantity {path!r}: no {owner} {name!r}")
     part = load.part
+    declared = next(q for q in kinds.of(part).quantities if q.name == what)
     g, _, kappa = a.place[part.body]
-    q = eq.coordinates[g]
-    acts = kinds.of(part).acts(part, kappa, q)
-    (current, rate), = acts.states
-    speed = sp.Dummy("omega")
-    force = acts.force.subs(current, sp.solve(rate, current)[0])
-    force = force.subs(q.diff(eq.t), speed / kappa)
     inertia = eq.linear[0][g, g] / kappa**2
-    tau = sp.simplify((inertia / -sp.diff(force, speed)).xreplace(_zeros(model))
-                      .xreplace(signed(model)))
-    return Quantity(path, tau, time, "s",
-                    "the reduced inertia of its body over −∂F/∂ω, F = k i with "
-                    "L di/dt = 0 (i = (V − k ω)/R)")
+    expr = declared.derive(part, kappa, eq.coordinates[g], inertia)
+    return Quantity(path, sp.simplify(expr.xreplace(_zeros(model)).xreplace(signed(model))),
+                    declared.dimension, declared.unit, declared.how)

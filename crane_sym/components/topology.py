@@ -28,11 +28,9 @@ from typing import Sequence
 import sympy as sp
 
 from crane_sym.components import kinds
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.acting import Load, checked_load
-from crane_sym.components.loads import ACTING, Brake, GroundContact, Motor
-from crane_sym.components.parts import (DIMENSIONS, GROUND, RIGID, ROTATING, TRANSLATING, Body,
-                                        Component, ComponentError, Drum, ElasticLink, Gear)
+from crane_sym.components.acting import Load
+from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, Body, Component,
+                                        ComponentError, ElasticLink)
 
 __all__ = ["Assembly", "Contact", "End", "Group", "Link", "Load", "assemble"]
 
@@ -113,7 +111,7 @@ class Assembly:
     place: dict[str, tuple[int, float, sp.Expr]]
     links: tuple[Link, ...]
     loads: tuple[Load, ...]
-    rigid: tuple[Gear | Drum, ...] = ()
+    rigid: tuple[Component, ...] = ()
     contacts: tuple[Contact, ...] = ()
     #: The parts that join several coordinates by their own energies (spans:
     #: ``Kind.couples``), in the order given.
@@ -181,13 +179,17 @@ def assemble(components: Sequence[Component]) -> Assembly:
         if part.name in seen:
             raise ComponentError(f"{part.label}: the name is taken by {seen[part.name].label}")
         seen[part.name] = part
+    # Bodies and elastic links are the parts' two base types (a pendulum is an
+    # ElasticLink), not kinds: the assembly is built of them.
     bodies = {p.name: p for p in components if isinstance(p, Body)}
     if not bodies:
         raise ComponentError("the model has no body (inertia or mass)")
-    rigid = [p for p in components if isinstance(p, RIGID)]
+    rigid = [p for p in components if kinds.of(p).rigid is not None]
     elastic = [p for p in components if isinstance(p, ElasticLink)]
-    for part in [*rigid, *elastic, *(p for p in components if isinstance(p, ACTING))]:
-        for end in (part.ends if isinstance(part, (*RIGID, ElasticLink)) else (part.body,)):
+    acting = [p for p in components if kinds.of(p).acts is not None]
+    for part, ends in [*((p, p.ends) for p in [*rigid, *elastic]),
+                       *((p, (p.body,)) for p in acting)]:
+        for end in ends:
             if end not in bodies and not (end == GROUND and isinstance(part, ElasticLink)):
                 raise _unknown(part.label, end, list(bodies))
     couplings = [p for p in components if kinds.of(p).couples is not None]
@@ -204,15 +206,14 @@ def assemble(components: Sequence[Component]) -> Assembly:
     _connected(bodies, rigid, elastic, joined)
     groups, place = _groups(bodies, rigid)
     links = tuple(_link(p, bodies, place) for p in elastic)
-    loads = tuple(checked_load(p, bodies, components) for p in components if isinstance(p, ACTING))
-    steady = [l.part.label for l in loads if isinstance(l.part, Motor) and l.load is None]
+    loads = tuple(kinds.of(p).check(p, bodies, components) for p in acting)
+    steady = [l.part.label for l in loads if kinds.plays(l.part, "steady")]
     if len(steady) > 1:
         raise ComponentError(f"{steady[1]}: only one motor may be 'steady' ({steady[0]} is)")
     _speed_laws(loads, groups, place)
-    contacts = _contacts([p for p in components if isinstance(p, GroundContact)], bodies,
+    contacts = _contacts([p for p in components if kinds.plays(p, "rests")], bodies,
                          place, loads)
-    balancing = steady + [l.part.label for l in loads
-                          if isinstance(l.part, MotorLaw) and l.part.law == "acceleration"]
+    balancing = steady + [l.part.label for l in loads if kinds.plays(l.part, "balances")]
     if len(balancing) > 1:
         raise ComponentError(f"{balancing[1]}: only one motor may balance the others "
                              f"({balancing[0]} does: a 'steady' torque or an acceleration law)")
@@ -220,7 +221,7 @@ def assemble(components: Sequence[Component]) -> Assembly:
                     tuple(couplings))
 
 
-def _contacts(parts: list[GroundContact], bodies: dict[str, Body],
+def _contacts(parts: list[Component], bodies: dict[str, Body],
               place: dict[str, tuple[int, float, sp.Expr]],
               loads: tuple[Load, ...]) -> tuple[Contact, ...]:
     """Each ground contact on a known body, one a rigid group, on a group that
@@ -235,9 +236,7 @@ def _contacts(parts: list[GroundContact], bodies: dict[str, Body],
                 raise ComponentError(f"{part.label}: {other.part.label} rests the same rigid "
                                      "group on the ground already")
         for load in loads:
-            holds = isinstance(load.part, Brake) or (isinstance(load.part, MotorLaw)
-                                                    and load.part.law == "speed")
-            if holds and place[load.part.body][0] == g:
+            if kinds.plays(load.part, "holds") and place[load.part.body][0] == g:
                 raise ComponentError(f"{part.label}: {load.part.label} acts on the rigid group "
                                      f"of {bodies[part.body].label}, which the ground holds "
                                      "while it rests; a contact takes a group without brakes "
@@ -251,7 +250,7 @@ def _speed_laws(loads: tuple[Load, ...], groups: tuple[Group, ...],
     """A group that a speed law moves takes no brake and no second speed law."""
     moved: dict[int, Component] = {}
     for load in loads:
-        if isinstance(load.part, MotorLaw) and load.part.law == "speed":
+        if kinds.plays(load.part, "sets speed"):
             g = place[load.part.body][0]
             if g in moved:
                 raise ComponentError(f"{load.part.label}: {moved[g].label} sets the speed of "
@@ -259,20 +258,14 @@ def _speed_laws(loads: tuple[Load, ...], groups: tuple[Group, ...],
             moved[g] = load.part
     for load in loads:
         g = place[load.part.body][0]
-        if isinstance(load.part, Brake) and g in moved:
+        if kinds.plays(load.part, "slides") and g in moved:
             raise ComponentError(f"{load.part.label} acts on a body whose speed "
                                  f"{moved[g].label} sets: it could never slide")
 
 
 def _kinds(bodies: dict[str, Body], rigid: list, elastic: list) -> None:
     for part in rigid:
-        a, b = (bodies[e] for e in part.ends)
-        want = (ROTATING, ROTATING) if isinstance(part, Gear) else (ROTATING, TRANSLATING)
-        if (a.motion, b.motion) != want:
-            what = ("joins two rotating bodies" if isinstance(part, Gear) else
-                    "turns with a rotating drum and moves a translating load")
-            raise ComponentError(f"{part.label} {what}; {a.label} is {a.motion}, "
-                                 f"{b.label} is {b.motion}")
+        kinds.of(part).check(part, bodies, ())     # its ends' motions, as its kind says
     for part in elastic:
         if part.ends == (GROUND, GROUND):
             raise ComponentError(f"{part.label} joins the ground to itself")
@@ -319,13 +312,10 @@ def _connected(bodies: dict[str, Body], rigid: list, elastic: list,
                                  "them")
 
 
-def rigid_factor(part: Gear | Drum) -> sp.Expr:
-    """κ of a rigid link's second end per unit of its first, in its symbols:
-    1/i for a gear, r/n for a drum."""
-    if isinstance(part, Gear):
-        return 1 / sp.Symbol(f"i_{part.name}", positive=True)
-    return sp.Symbol(f"r_{part.name}", positive=True) / sp.Symbol(f"n_{part.name}",
-                                                                   positive=True)
+def rigid_factor(part: Component) -> sp.Expr:
+    """κ of a rigid link's second end per unit of its first, in its symbols, as
+    its kind declares (``Kind.rigid``: 1/i for a gear, r/n for a drum)."""
+    return kinds.of(part).rigid(part)
 
 
 def _groups(bodies: dict[str, Body], rigid: list) -> tuple[tuple[Group, ...],

@@ -36,9 +36,8 @@ import numpy as np
 import sympy as sp
 from sympy.utilities.lambdify import implemented_function
 
+from crane_sym.components import kinds
 from crane_sym.components.hybrid import HELD, Mode
-from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model
 from crane_sym.components.parts import ComponentError
 
@@ -157,8 +156,7 @@ MODAL_DAMPING = implemented_function("modal_damping", _zeta)
 def _fixed(model: Model, state: Mode | None) -> set[int]:
     """The groups the mode holds still or a speed law moves."""
     a = model.assembly
-    fixed = {a.place[l.part.body][0] for l in a.loads
-             if isinstance(l.part, MotorLaw) and l.part.law == "speed"}
+    fixed = {a.place[l.part.body][0] for l in a.loads if kinds.plays(l.part, "sets speed")}
     if state is not None:
         fixed |= {g for g, m in enumerate(state.motion) if m == HELD}
     return fixed
@@ -172,10 +170,11 @@ def _matrices(model: Model, state: Mode | None, signed: dict) -> tuple[list[int]
     M, D, K, _ = eq.linear
     contacts = state.contacts if state is not None else (1,) * len(eq.contact)
     put = {chi: (0 if c == 0 else 1) for chi, c in zip(eq.contact, contacts)}
-    laws = [l for l in model.assembly.loads if isinstance(l.part, Characteristic)]
-    steps = state.steps if state is not None else (0,) * len(laws)
-    for beta, law, step in zip(eq.slopes, laws, steps):
-        put[beta] = sp.Float(law.values[1 + min(step, len(law.values) - 2)])
+    stepped = [kinds.of(l.part).steps(l) for l in model.assembly.loads
+               if kinds.of(l.part).steps is not None]
+    steps = state.steps if state is not None else (0,) * len(stepped)
+    for beta, slopes, step in zip(eq.slopes, stepped, steps):
+        put[beta] = sp.Float(slopes[min(step, len(slopes) - 1)])
     put |= {s: 0 for s, v in eq.values.items() if v == 0}
     moving = [g for g in range(len(eq.coordinates)) if g not in _fixed(model, state)]
     pick = [(m.extract(moving, moving)).xreplace(put).xreplace(signed) for m in (M, D, K)]

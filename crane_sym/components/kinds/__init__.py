@@ -1,20 +1,22 @@
 """The kinds of component, each declared once in its own module: its TOML
-table, its keys (form, kind of value, sign, default) and how its part is
-built. Reading a component file, the fields a design sweep varies and the
-walkthrough's table of components loop over :data:`KINDS`.
+table, its keys (form, kind of value, sign, default), how its part is built,
+its check against its bodies' motion, its roles and its share of the
+equations. Reading a component file, the assembly, the equations, the fields
+a design sweep varies, the quantities and the walkthrough's table of
+components loop over :data:`KINDS`.
 
 May import: the rest of ``components`` below the reader (``parts``,
-``loads``, ``laws``) and the top-level vocabulary; never ``reading``,
-``designs`` or what imports them.
+``loads``, ``laws``, ``acting``) and the top-level vocabulary; never
+``reading``, ``designs`` or what imports them.
 """
 from crane_sym.components.kinds import (brake, characteristic, dc_motor, drum, elastic, gear,
                                         gravity, ground_contact, inertia, initial, mass, motor,
                                         motor_law, pendulum, resistance, span, speed_controller)
-from crane_sym.components.kinds.base import Key, Kind
+from crane_sym.components.kinds.base import Key, Kind, has_role
 
 from crane_sym.components.parts import Component
 
-__all__ = ["KINDS", "Key", "Kind", "by_table", "of"]
+__all__ = ["KINDS", "Key", "Kind", "by_table", "of", "plays"]
 
 #: Every kind, in the order a component file's tables are read.
 KINDS: list[Kind] = [k.KIND for k in (inertia, mass, gear, drum, elastic, pendulum, brake,
@@ -40,3 +42,17 @@ def of(part: Component) -> Kind:
         if kind.part_kind == part.kind:
             return kind
     raise KeyError(f"no kind declares parts of kind {part.kind!r}")
+
+
+def plays(part: Component, role: str) -> bool:
+    """Whether ``part`` declares ``role`` (``Kind.roles``: a key of
+    :data:`crane_sym.components.kinds.base.ROLE_FLAGS`, e.g. ``holds``).
+
+    Parameters
+    ----------
+    part : Component
+        A part of a model.
+    role : str
+        The role asked for.
+    """
+    return has_role(of(part), part, role)

@@ -3,10 +3,10 @@ built up after a delay as a step, a ramp or an exponential."""
 import sympy as sp
 from sympy.physics.units import time
 
+from crane_sym.components.acting import force_load
 from crane_sym.components.kinds.base import Acting, Key, Kind, failure, load_key, run_end
 from crane_sym.components.loads import Brake
 from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS
-
 
 
 def _idle(part: Brake, duration: float, rest: bool) -> str | None:
@@ -39,4 +39,6 @@ KIND = Kind("brake", (Key("name", "word"), Key("body", "body"),
                       Key("fails_at", value=time, sign="positive", required=False)),
             lambda g, entry, where: Brake(g["name"], g["body"], g[load_key(entry, where)],
                                           g["delay"], g["build_up"], g["time"], g["fails_at"]),
-            "a brake on a body", idle=_idle, acts=_acts, switching=_switching)
+            "a brake on a body", idle=_idle, acts=_acts, switching=_switching,
+            check=lambda part, bodies, components: force_load(part, bodies),
+            roles=lambda part: frozenset({"holds", "slides"}), counted="brakes")

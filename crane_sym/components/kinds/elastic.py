@@ -46,4 +46,4 @@ KIND = Kind("elastic", (Key("name", "word"), Key("between", "ends"),
                               "stiffness of the elastic link {name}"),
                      Symbolic("damping", "d", "nonnegative", lambda link: link.damping,
                               "damping of the elastic link {name}")),
-            shape=lambda link: link.gapped, switching=_switching)
+            shape=lambda link: link.gapped, switching=_switching, counted="links")

@@ -9,4 +9,4 @@ KIND = Kind("ground_contact", (Key("name", "word"), Key("body", "body"),
                                Key("direction", "word", required=False, default="+")),
             lambda g, entry, where: GroundContact(g["name"], g["body"], g["direction"]),
             "a body resting on the ground: it lifts off and is set down again",
-            "ground contact")
+            "ground contact", roles=lambda part: frozenset({"rests"}))

@@ -6,4 +6,5 @@ KIND = Kind("inertia", (Key("name", "word"), Key("inertia", value="inertia", sig
             lambda g, entry, where: Inertia(g["name"], g["inertia"]),
             "a rotating body",
             symbols=(Symbolic("inertia", "J", "positive", lambda body: body.inertia,
-                              "moment of inertia of {name}"),))
+                              "moment of inertia of {name}"),),
+            counted="bodies")

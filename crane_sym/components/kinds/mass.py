@@ -6,4 +6,5 @@ KIND = Kind("mass", (Key("name", "word"), Key("mass", value="mass", sign="nonneg
             lambda g, entry, where: Mass(g["name"], g["mass"]),
             "a translating body",
             symbols=(Symbolic("mass", "m", "positive", lambda body: body.inertia,
-                              "mass of {name}"),))
+                              "mass of {name}"),),
+            counted="bodies")

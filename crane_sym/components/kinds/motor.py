@@ -2,6 +2,7 @@
 import sympy as sp
 from sympy.physics.units import time
 
+from crane_sym.components.acting import Load, force_load
 from crane_sym.components.kinds.base import Acting, Key, Kind, Symbolic, load_key
 from crane_sym.components.loads import Motor
 
@@ -25,6 +26,11 @@ def _acts(part: Motor, kappa: sp.Expr, q: sp.Expr) -> Acting:
     return Acting(on * M, (("switches", on), ("motor_loads", M)), constant=True)
 
 
+def _check(part: Motor, bodies: dict, components: tuple) -> Load:
+    """Its torque in SI; a steady motor's is solved at the start."""
+    return Load(part, None) if part.load is None else force_load(part, bodies)
+
+
 KIND = Kind("motor", (Key("name", "word"), Key("body", "body"),
                       Key("torque", value="load", sign="positive", required=False),
                       Key("force", value="load", sign="positive", required=False),
@@ -32,4 +38,5 @@ KIND = Kind("motor", (Key("name", "word"), Key("body", "body"),
             lambda g, entry, where: Motor(g["name"], g["body"], g[load_key(entry, where)],
                                           g["off_at"]),
             "a motor's constant or steady torque on a body", idle=_idle,
-            symbols=(TORQUE,), acts=_acts)
+            symbols=(TORQUE,), acts=_acts, check=_check,
+            roles=lambda part: frozenset({"steady"} if part.load is None else ()))

@@ -3,9 +3,10 @@
 import sympy as sp
 from sympy.physics.units import time
 
+from crane_sym.components.acting import Load, body_of, same_unit
 from crane_sym.components.kinds.base import Acting, Key, Kind, run_end
 from crane_sym.components.laws import KINDS, SIGNALS, MotorLaw
-from crane_sym.components.parts import UNITS, ComponentError
+from crane_sym.components.parts import DIMENSIONS, UNITS, ComponentError
 
 
 
@@ -45,6 +46,20 @@ def _switching(part: MotorLaw, motion: str) -> tuple:
                          for k, row in enumerate(part.coefficients, start=1))
 
 
+def _check(part: MotorLaw, bodies: dict, components: tuple) -> Load:
+    """Its unit against its body's motion: a torque law's a load, an
+    acceleration or speed law's its own."""
+    body, where = body_of(part, bodies)
+    expected = DIMENSIONS["load" if part.law == "torque" else part.law][body.motion]
+    same_unit(where, "", part.unit, part.dimension, expected)
+    return Load(part, None)
+
+
+#: What a law of each kind is to the assembly (``Kind.roles``).
+ROLES = {"speed": frozenset({"holds", "sets speed"}), "acceleration": frozenset({"balances"}),
+         "torque": frozenset()}
+
+
 def _build(g: dict, entry: dict, where: str) -> MotorLaw:
     """The law; a law that gives no load (a voltage) belongs to its part's own table."""
     if g["law"] in SIGNALS:
@@ -58,4 +73,4 @@ KIND = Kind("motor_law", (Key("name", "word"), Key("body", "body"), Key("law", "
                           Key("coefficients", "law"),
                           Key("time_unit", "word", required=False, default="s")),
             _build, "a law in time on a body", "motor law", _idle, acts=_acts,
-            switching=_switching)
+            switching=_switching, check=_check, roles=lambda part: ROLES[part.law])

@@ -1,4 +1,5 @@
 """``[[resistance]]``: a constant torque (a force on a translating body), either sign."""
+from crane_sym.components.acting import force_load
 from crane_sym.components.kinds.base import Acting, Key, Kind, Symbolic, load_key
 from crane_sym.components.loads import Resistance
 
@@ -12,4 +13,5 @@ KIND = Kind("resistance", (Key("name", "word"), Key("body", "body"),
             "a constant resistance on a body",
             idle=lambda part, duration, rest: "its load is 0" if part.load.si == 0 else None,
             symbols=(LOAD,),
-            acts=lambda part, kappa, q: Acting(LOAD.symbol(part.name), constant=True))
+            acts=lambda part, kappa, q: Acting(LOAD.symbol(part.name), constant=True),
+            check=lambda part, bodies, components: force_load(part, bodies))

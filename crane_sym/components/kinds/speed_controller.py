@@ -3,9 +3,11 @@ armature voltage, its integral a first-order state, with an optional torque
 limit as a mode (conditional integration while at the limit)."""
 import sympy as sp
 
+from crane_sym.components.acting import Load, body_of, same_unit
 from crane_sym.components.kinds.base import Acting, Key, Kind, Symbolic
 from crane_sym.components.laws import MotorLaw
-from crane_sym.components.loads import SpeedController
+from crane_sym.components.loads import DCMotor, SpeedController
+from crane_sym.components.parts import DIMENSIONS, ComponentError
 
 PROPORTIONAL = Symbolic("proportional", "kp", "nonnegative", lambda load: load.values[0],
                         "proportional gain of the speed controller {name}")
@@ -28,6 +30,27 @@ def _acts(part: SpeedController, kappa: sp.Expr, q: sp.Expr) -> Acting:
                   states=((z, error), (i, (kp * error + ki * z) / L)), limits=limits)
 
 
+def _check(part: SpeedController, bodies: dict, components: tuple) -> Load:
+    """Its gains (volts per speed, per displacement) and torque limit in SI,
+    checked by the motion of its body and of its DC motor's."""
+    body, where = body_of(part, bodies)
+    motors = {p.name: p for p in components if isinstance(p, DCMotor)}
+    if part.motor not in motors:
+        raise ComponentError(f"{where}: motor {part.motor!r} is no dc_motor; dc motors: "
+                             f"{', '.join(motors) or 'none'}")
+    same_unit(where, "reference", part.reference.unit, part.reference.dimension,
+              DIMENSIONS["speed"][body.motion])
+    gains = (part.proportional.check(where, "proportional",
+                                     DIMENSIONS["voltage per speed"][body.motion]),
+             part.integral.check(where, "integral",
+                                 DIMENSIONS["voltage per displacement"][body.motion]))
+    if part.limit is None:
+        return Load(part, None, (*gains, None))
+    motion = bodies[motors[part.motor].body].motion
+    return Load(part, None, (*gains, part.limit.check(where, "limit",
+                                                      DIMENSIONS["load"][motion])))
+
+
 def _build(g: dict, entry: dict, where: str) -> SpeedController:
     reference = MotorLaw(g["name"], g["body"], g["breakpoints"], g["coefficients"], g["unit"],
                          "reference", g["time_unit"])
@@ -43,4 +66,5 @@ KIND = Kind("speed_controller",
              Key("time_unit", "word", required=False, default="s"),
              Key("limit", value="load", sign="positive", required=False)),
             _build, "a PI speed loop setting a DC motor's voltage, with a torque limit",
-            "speed controller", symbols=(PROPORTIONAL, INTEGRAL, LIMIT), acts=_acts)
+            "speed controller", symbols=(PROPORTIONAL, INTEGRAL, LIMIT), acts=_acts,
+            check=_check)
