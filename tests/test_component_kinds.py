@@ -1,9 +1,12 @@
 """Component kinds declared once (``crane_sym.components.kinds``): the reader,
 a sweep's fields and the walkthrough loop over ``KINDS``; a kind added from one
-module (here a toy flywheel, registered for the test only) is read, checked,
-swept and run; a link's load is the one its energies give."""
+module (here a toy flywheel, and a toy damper to the ground with physics of its
+own, each registered for the test only) is read, checked, swept and run; a
+link's load is the one its energies give."""
 from __future__ import annotations
 
+import math
+from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
@@ -11,9 +14,12 @@ import sympy as sp
 from sympy.physics.units import length, mass
 
 from crane_sym.components import ComponentError, Inertia, kinds
+from crane_sym.components.acting import Load, body_of
 from crane_sym.components.designs import Designs
 from crane_sym.components.kinds import Key, Kind
-from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS, VALUE_KINDS, value
+from crane_sym.components.kinds.base import Acting, Symbolic
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, UNITS, VALUE_KINDS,
+                                        Component, Value, value)
 from crane_sym.components.component_file import read_component_file
 
 EXAMPLES = sorted((Path(__file__).resolve().parents[1] / "examples" / "drive_trains")
@@ -35,6 +41,39 @@ def _flywheel(g: dict, entry: dict, where: str):
 FLYWHEEL = Kind("flywheel", (Key("name", "word"), Key("mass", value=mass, sign="nonnegative"),
                              Key("radius", value=length, sign="positive")),
                 _flywheel, "a solid disc, a rotating body of inertia m r²/2")
+# -------------------------------------------------------------------------------------
+
+
+
+# --- a toy kind with new physics, one module's worth: a viscous damper from a body to
+# the ground, F = −d v along the body's coordinate (v = κ q̇ its speed) ---------------
+@dataclass(frozen=True)
+class Dashpot(Component):
+    """A linear viscous damper between ``body`` and the ground."""
+
+    name: str
+    body: str
+    damping: Value
+    kind = "dashpot"
+
+
+def _dashpot_check(part: Dashpot, bodies: dict, components) -> Load:
+    """d in SI, a damping of its body's motion (N·s/m on a mass, N·m·s/rad on a shaft)."""
+    body, where = body_of(part, bodies)
+    return Load(part, None, (part.damping.check(where, "damping",
+                                                DIMENSIONS["damping"][body.motion]),))
+
+
+DAMPING = Symbolic("damping", "d", "nonnegative", lambda load: load.values[0],
+                   "damping of the dashpot {name} to the ground")
+DASHPOT = Kind("dashpot", (Key("name", "word"), Key("body", "body"),
+                           Key("damping", value="damping", sign="nonnegative")),
+               lambda g, entry, where: Dashpot(g["name"], g["body"],
+                                               value(where, "damping", g["damping"])),
+               "a viscous damper from a body to the ground", symbols=(DAMPING,),
+               acts=lambda part, kappa, q: Acting(
+                   -DAMPING.symbol(part.name) * kappa * q.diff(q.args[0])),
+               check=_dashpot_check)
 # -------------------------------------------------------------------------------------
 
 DRIVE = """
@@ -164,3 +203,63 @@ def test_every_declared_symbol_names_a_key_and_every_part_finds_its_kind():
                 assert kinds.of(part).table == table
                 seen.add(table)
     assert seen == {k.table for k in kinds.KINDS}      # the examples hold every kind
+
+
+SPRING_MASS = """
+[model]
+name = "damped"
+
+[[mass]]
+name = "cart"
+mass = "{m} kg"
+
+[[elastic]]
+name = "spring"
+between = ["ground", "cart"]
+stiffness = "{c} N/m"
+
+[[resistance]]
+name = "push"
+body = "cart"
+force = "{F} N"
+
+[[dashpot]]
+name = "dash"
+body = "cart"
+damping = "{d}"
+
+[run]
+duration = "{T} s"
+start = "rest"
+"""
+
+
+def test_a_kind_with_new_physics_from_one_module_runs_against_its_closed_form(
+        tmp_path, monkeypatch):
+    """m ẍ + d ẋ + c x = F from rest (the damper the toy kind's only physics):
+    the spring's load c x peaks first at t = π/ω_d with F (1 + e^(−ζπ/√(1−ζ²)))."""
+    monkeypatch.setattr(kinds, "KINDS", [*kinds.KINDS, DASHPOT])
+    m, c, F, d = 500.0, 2.0e5, 1.0e3, 1.2e3
+    omega, zeta = math.sqrt(c / m), d / (2 * math.sqrt(c * m))
+    damped = omega * math.sqrt(1 - zeta**2)
+    path = tmp_path / "damped.toml"
+    path.write_text(SPRING_MASS.format(m=m, c=c, F=F, d=f"{d} N*s/m", T=1.2 * math.pi / damped),
+                    encoding="utf-8")
+    read = read_component_file(path)
+    assert read.model.equations.values[sp.Symbol("d_dash", nonnegative=True)] == d
+    peak = read.model.run(read.duration, read.body, read.speed, rest=read.rest).peaks[0]
+    want = F * (1 + math.exp(-zeta * math.pi / math.sqrt(1 - zeta**2)))
+    assert abs(peak.value - want) <= 1e-9 * want
+    assert abs(peak.time - math.pi / damped) <= 1e-9 * (math.pi / damped)
+    # a sweep varies its damping as declared: a damping of the mass it acts on
+    field = Designs(path).fields["dash.damping"]
+    assert (field.table, field.dimension, field.sign) == (
+        "dashpot", DIMENSIONS["damping"][TRANSLATING], "nonnegative")
+    # its own check: d against the body's motion, in one line naming the part and the bound
+    path.write_text(SPRING_MASS.format(m=m, c=c, F=F, d=f"{d} N*m*s/rad", T=1.0),
+                    encoding="utf-8")
+    with pytest.raises(ComponentError) as err:
+        read_component_file(path)
+    assert str(err.value) == ("component model 'damped': dashpot 'dash' on mass 'cart': damping "
+                              "'1200.0 N*m*s/rad' is mass*length**2/time, expected "
+                              "force*time/length (e.g. N*s/m)")
