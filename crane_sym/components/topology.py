@@ -3,12 +3,15 @@ gears and drums merged into rigid groups, each with one coordinate.
 
 Within a group every body's coordinate is a fixed multiple κ of the group's
 coordinate, the coordinate of its first body in the order the components were
-given (κ = 1 there). Elastic links join groups, or a group and the fixed
+given (κ = 1 there); a rigid link is a part whose kind declares ``rigid`` (its
+κ in its symbols). Elastic links join groups, or a group and the fixed
 ground (``"ground"`` as one end of ``between``: x ≡ 0, no group, κ = 0, which
 :meth:`Assembly.ends` gives in this one place), and so do spans (a part whose
 kind ``couples`` several coordinates by its own energies:
-``Assembly.couplings``); brakes, motors and loads act on a body and reach its
-group through κ.
+``Assembly.couplings``); brakes, motors and loads (a part whose kind ``acts``)
+act on a body and reach its group through κ, each checked by its kind's
+``check``; what else the assembly asks of a part (it holds a group, sets a
+speed, is steady) its kind's ``roles`` say.
 
 What cannot be a drive train is refused here, in one line naming the
 component: two components of one name, a link or a load on an unknown body,
@@ -116,9 +119,6 @@ class Assembly:
     #: The parts that join several coordinates by their own energies (spans:
     #: ``Kind.couples``), in the order given.
     couplings: tuple[Component, ...] = ()
-
-    def loads_of(self, kind: type) -> list[Load]:
-        return [l for l in self.loads if isinstance(l.part, kind)]
 
     def ends(self, link: Link) -> tuple[End, End]:
         """The two ends of ``link`` in the order of ``between``; the ground

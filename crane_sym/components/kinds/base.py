@@ -1,6 +1,7 @@
 """What a kind of component declares, once: the table a component file gives
 it in, its keys (how each is written, the kind of value it holds, the sign a
-sweep must keep, its default) and how its part is built from them.
+sweep must keep, its default), how its part is built from them, and what the
+assembly, the equations and the reports ask of it (:class:`Kind`).
 
 A key's ``form`` says how the file writes it:
 
@@ -270,7 +271,11 @@ class Kind:
     its derivation rests on beside them (``shape``), for a part acting on
     one body its share of Q (``acts``), the values that switch the model
     (``switching``), and for a part that joins several coordinates by its
-    own energies its :class:`Coupling` (``couples``)."""
+    own energies its :class:`Coupling` (``couples``); then its ``check``
+    against its bodies' motion, its ``roles`` (:data:`ROLE_FLAGS`), for a
+    rigid link its symbolic factor (``rigid``), the slopes its mode steps
+    (``steps``), the count of the model's bounds it joins (``counted``) and
+    the quantities its parts report (``quantities``)."""
 
     table: str
     keys: tuple[Key, ...]
