@@ -50,14 +50,14 @@ from sympy.physics.units import Dimension, time
 
 from crane_sym.components import kinds
 from crane_sym.components.kinds.base import FIXED_UNITS, Key
-from crane_sym.components.model import Model
 from crane_sym.components.closed import actings, link_response
+from crane_sym.components.model import Model
 from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, TRANSLATING, UNITS,
                                         ComponentError, value)
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["NUMERIC", "QUANTITIES", "Parameter", "Quantity", "UNITS", "derived_quantity",
-           "parameters", "signed", "static_loads", "switching_values"]
+           "parameters", "quantity_table", "signed", "static_loads", "switching_values"]
 
 _ONE = Dimension(1)
 #: Each quantity by its name: the kind of component it belongs to, and what it is.

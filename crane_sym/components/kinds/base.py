@@ -26,11 +26,13 @@ varies (:mod:`crane_sym.components.designs`).
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Callable, Sequence
+from typing import Any, Callable
 
 import sympy as sp
 from sympy.physics.units import Dimension, length, time
 
+from crane_sym.components.kinds.roles import (ROLE_FLAGS, Check, PartQuantity, ends_moving,
+                                              has_role)
 from crane_sym.components.loads import HENRY, OHM
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
@@ -218,49 +220,6 @@ class Coupling:
     factors: Callable[[Component, dict], "tuple[Factor, ...]"]
 
 
-#: A kind's check of a part against the bodies by name and all the components
-#: (a speed controller looks up its DC motor): see ``Kind.check``.
-Check = Callable[[Component, dict, Sequence[Component]], Any]
-
-#: What a part may declare of itself (``Kind.roles``), and what the assembly
-#: then asks (:mod:`crane_sym.components.topology`,
-#: :mod:`crane_sym.components.vibration`).
-ROLE_FLAGS = {
-    "holds": "it may hold its body's rigid group at rest (a brake, a speed law): a ground "
-             "contact takes no such group",
-    "sets speed": "it sets its body's speed (a speed law): one to a rigid group, and a mode "
-                  "holds that group out of its vibration",
-    "slides": "it acts while its body slides (a brake): never where a speed law sets the speed",
-    "steady": "its load is solved at the start (a steady motor): one at most",
-    "balances": "it balances the other loads at the start (an acceleration law): one at "
-                "most, a steady motor counted",
-    "rests": "it rests its body's rigid group on the ground (a ground contact)",
-}
-
-
-@dataclass(frozen=True)
-class PartQuantity:
-    """A quantity a kind's parts report, ``<part>.<name>`` in a [[formula]]:
-    what it is (``text``), its dimension and SI unit, how it is derived
-    (``how``) and ``derive(part, κ, q, inertia)``, its expression in the
-    parts' symbols given its body's κ, its group's coordinate q(t) and the
-    inertia of that group referred to the body."""
-
-    name: str
-    text: str
-    dimension: Dimension
-    unit: str
-    how: str
-    derive: Callable[[Component, sp.Expr, sp.Expr, sp.Expr], sp.Expr]
-
-
-def has_role(kind: "Kind", part: Component, role: str) -> bool:
-    """Whether ``part`` (of ``kind``) declares ``role`` (a key of :data:`ROLE_FLAGS`)."""
-    if role not in ROLE_FLAGS:
-        raise KeyError(f"no role {role!r}; roles: {', '.join(ROLE_FLAGS)}")
-    return kind.roles is not None and role in kind.roles(part)
-
-
 @dataclass(frozen=True)
 class Kind:
     """A kind of component: its ``table`` (``[[table]]`` in a component file),
@@ -315,7 +274,7 @@ class Kind:
     counted: str = ""
     #: The quantities its parts report beyond a body's, a link's and a
     #: contact's (a DC motor's time constant), each a :class:`PartQuantity`.
-    quantities: tuple["PartQuantity", ...] = ()
+    quantities: tuple[PartQuantity, ...] = ()
 
     @property
     def part_kind(self) -> str:
@@ -380,27 +339,6 @@ def failure(part: Component, what: str) -> tuple:
     """The switching value of a part that fails (``fails_at``, s), or none."""
     t = getattr(part, "fails_at", None)
     return () if t is None else (("fails_at", t, time, "s", f"instant {what} fails"),)
-
-
-def ends_moving(part: Component, bodies: dict, want: tuple[str, str], what: str) -> None:
-    """Refuse a rigid link whose two ends do not move as ``want`` (rotating,
-    translating), in one line saying ``what`` it does.
-
-    Parameters
-    ----------
-    part : Component
-        A rigid link (its ``ends``).
-    bodies : dict
-        The model's bodies by name.
-    want : (str, str)
-        The motions of its first and second end.
-    what : str
-        What it does, as the message says (``joins two rotating bodies``).
-    """
-    a, b = (bodies[e] for e in part.ends)
-    if (a.motion, b.motion) != want:
-        raise ComponentError(f"{part.label} {what}; {a.label} is {a.motion}, "
-                             f"{b.label} is {b.motion}")
 
 
 def run_end(duration: float) -> str:
