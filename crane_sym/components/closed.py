@@ -26,7 +26,7 @@ from crane_sym.components.parts import Component, ComponentError
 from crane_sym.mechanics.elimination import RelativeEquation, relative_coordinate
 from crane_sym.mechanics.odes import solve_constant_coefficient
 
-__all__ = ["LinkResponse", "actings", "link_response"]
+__all__ = ["LinkResponse", "acting_parts", "link_response"]
 
 
 @dataclass(frozen=True)
@@ -38,7 +38,7 @@ class LinkResponse:
     force: sp.Expr
 
 
-def actings(model: Model) -> list[tuple[Component, Acting]]:
+def acting_parts(model: Model) -> list[tuple[Component, Acting]]:
     """Each part acting on one body with what its kind says it adds to Q
     (``Kind.acts``), in the assembly's order.
 
@@ -64,7 +64,7 @@ def link_response(model: Model, u0: sp.Expr = sp.Integer(0)) -> LinkResponse:
                              "by one elastic link without backlash (and no span)")
     # a load that switches (it joins a mode's symbols) or is no constant, but
     # not a part of first order (its states are refused next, by name)
-    switching = [part.label for part, acts in actings(model)
+    switching = [part.label for part, acts in acting_parts(model)
                  if (acts.joins or not acts.constant) and not acts.states]
     if switching:
         raise ComponentError(f"a closed form in the symbols needs constant loads; "

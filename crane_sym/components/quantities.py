@@ -50,7 +50,7 @@ from sympy.physics.units import Dimension, time
 
 from crane_sym.components import kinds
 from crane_sym.components.kinds.base import FIXED_UNITS, Key
-from crane_sym.components.closed import actings, link_response
+from crane_sym.components.closed import acting_parts, link_response
 from crane_sym.components.model import Model
 from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, TRANSLATING, UNITS,
                                         ComponentError, value)
@@ -241,7 +241,7 @@ def static_loads(model: Model) -> dict[str, sp.Expr | None]:
     """
     a, eq = model.assembly, model.equations
     speeds = {q.diff(eq.t) for q in eq.coordinates}
-    for part, acts in actings(model):
+    for part, acts in acting_parts(model):
         if acts.force is not None and acts.force.atoms(sp.Derivative) & speeds:
             raise ComponentError(f"a static load needs loads that do not depend on the "
                                  f"speed; {part.label} does")
