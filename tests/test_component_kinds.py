@@ -263,3 +263,16 @@ def test_a_kind_with_new_physics_from_one_module_runs_against_its_closed_form(
     assert str(err.value) == ("component model 'damped': dashpot 'dash' on mass 'cart': damping "
                               "'1200.0 N*m*s/rad' is mass*length**2/time, expected "
                               "force*time/length (e.g. N*s/m)")
+
+
+def test_a_sweep_field_takes_its_dimension_from_the_body_a_link_to_the_ground_holds(tmp_path):
+    """A shaft held by a torsion spring to the ground: the spring's stiffness
+    is a torsional one (N·m/rad), from the shaft's motion, never the ground's."""
+    path = tmp_path / "grounded.toml"
+    path.write_text('[model]\nname = "grounded"\n\n[[inertia]]\nname = "shaft"\n'
+                    'inertia = "10 kg*m^2"\n\n[[elastic]]\nname = "spring"\n'
+                    'between = ["ground", "shaft"]\nstiffness = "1e4 N*m/rad"\n\n'
+                    '[[motor]]\nname = "drive"\nbody = "shaft"\ntorque = "100 N*m"\n\n'
+                    '[run]\nduration = "0.1 s"\nstart = "rest"\n', encoding="utf-8")
+    field = Designs(path).fields["spring.stiffness"]
+    assert field.dimension == DIMENSIONS["stiffness"][ROTATING]
