@@ -80,7 +80,8 @@ def _quantity_names(model: Model) -> dict[str, str]:
     owners = {"body": list(a.bodies), "link": [l.part.name for l in a.links],
               "contact": [c.part.name for c in a.contacts]}
     for what, (owner, _) in KINDS.items():
-        names = owners.get(owner) or [l.part.name for l in a.loads if l.part.kind == owner]
+        names = owners.get(owner) or [p.name for p in (*[l.part for l in a.loads],
+                                                       *a.couplings) if p.kind == owner]
         out |= {f"{n}.{what}": what for n in names}
     return out
 

@@ -29,6 +29,8 @@ A parameter is named ``<component>.<key>`` as the component file writes it
                            unstretched: R = s Q/κ of its body's group (s = ±1, the
                            ground's side)
 ``<contact>.reaction_peak`` its largest reaction over the file's run, a number
+``<span>.force_peak``      a span's largest force ∂Π/∂u + ∂Φ/∂u̇ over the file's run, a
+                           number
 ``<motor>.time_constant``  a DC motor's mechanical time constant τ = J_red / (−∂F/∂ω),
                            F its force with the armature's current at rest
                            (L di/dt = 0 solved for i): J_red R / k²
@@ -54,6 +56,7 @@ from crane_sym.components.loads import Characteristic
 from crane_sym.components.model import Model
 from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, TRANSLATING, UNITS,
                                         ComponentError, ElasticLink, value)
+from crane_sym.components.reported import reported_peak
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["KINDS", "NUMERIC", "Parameter", "Quantity", "UNITS", "derived_quantity", "parameters",
@@ -70,11 +73,12 @@ KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to
          "reaction": ("contact", "the ground's reaction at rest at the start, the links "
                                  "unstretched"),
          "reaction_peak": ("contact", "the ground's largest reaction over the file's run"),
+         "force_peak": ("span", "its largest force over the file's run"),
          "time_constant": ("dc motor", "its mechanical time constant: the reduced inertia "
                                        "over the slope of its torque against speed, the "
                                        "armature's inductance neglected")}
 #: Quantities that are numbers of the file's run, not symbolic.
-NUMERIC = ("peak", "factor", "reaction_peak")
+NUMERIC = ("peak", "factor", "reaction_peak", "force_peak")
 
 
 @dataclass(frozen=True)
@@ -303,6 +307,9 @@ def derived_quantity(model: Model, path: str, run=None,
         return _contact_quantity(model, path, run)
     if KINDS[what][0] == "dc motor":
         return _time_constant(model, path, name)
+    if KINDS[what][0] == "span":
+        p = reported_peak(model, path, run, what.removesuffix("_peak"))
+        return Quantity(path, sp.Float(p.value, 17), p.dimension, p.unit, p.how, numeric=True)
     link = _link(model, name) if name in [l.part.name for l in a.links] else None
     if link is None:
         raise ComponentError(f"quantity {path!r}: no elastic link {name!r}; links: "

@@ -107,10 +107,11 @@ def _check_fixed(probe: ComponentSystem, system: np.ndarray, positions: int,
     """The torque and the states fixed by the balance: refused where a
     combination of them (a ``steady`` motor and a DC motor's current, two
     motors' currents) can change without unbalancing anything."""
-    if not system.size:
+    if system.shape[1] == positions + torque:     # no state: as solved without states
         return
-    _, sigma, vt = np.linalg.svd(system)
-    null = vt[np.sum(sigma > 1e-12 * sigma.max(initial=0.0)):, positions:]
+    norms = np.linalg.norm(system, axis=0)
+    _, sigma, vt = np.linalg.svd(system / np.where(norms > 0, norms, 1.0))
+    null = vt[np.sum(sigma > 1e-10 * sigma.max(initial=0.0)):, positions:]
     loose = np.flatnonzero(np.abs(null).max(axis=0, initial=0.0) > 1e-8)
     if loose.size:
         names = ["the 'steady' motor's torque"] * torque + [str(s) for s in

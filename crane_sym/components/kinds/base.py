@@ -208,12 +208,17 @@ class Coupling:
     bodies)``, its values against those bodies (their motion, its factors'
     dimensions; ComponentError, one line); ``energies(part, where)``, its
     share (T, Π, Φ) of the energies, given each body's (κ, q(t));
-    ``factors(part, bodies)``, each :class:`Factor` of that share."""
+    ``factors(part, bodies)``, each :class:`Factor` of that share;
+    ``stretch(part, where, bodies)``, for a part that reports its load, its
+    stretch u in the coordinates and the SI unit of its load, which the
+    toolkit derives from its energies, ∂Π/∂u + ∂Φ/∂u̇
+    (:mod:`crane_sym.components.coupling_loads`)."""
 
     bodies: Callable[[Component], tuple[str, ...]]
     check: Callable[[Component, dict], None]
     energies: Callable[[Component, dict], tuple[sp.Expr, sp.Expr, sp.Expr]]
     factors: Callable[[Component, dict], "tuple[Factor, ...]"]
+    stretch: Callable[[Component, dict, dict], tuple[sp.Expr, str]] | None = None
 
 
 @dataclass(frozen=True)

@@ -120,17 +120,25 @@ def _check(span: Span, bodies: dict[str, Body]) -> None:
                     own / DIMENSIONS["displacement"][bodies[body].motion])
 
 
+def _points(span: Span, where: dict) -> tuple[sp.Expr, sp.Expr]:
+    """(x_A, x_B) of the span, given each body's (κ, q(t))."""
+    return tuple(sum((_factor(b, f) * where[b][0] * where[b][1] for b, f in terms),
+                     sp.Integer(0)) for terms in (span.start, span.end))
+
+
 def _energies(span: Span, where: dict) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """(T, Π, Φ) of the span, given each body's (κ, q(t))."""
-    points = []
-    for terms in (span.start, span.end):
-        points.append(sum((_factor(b, f) * where[b][0] * where[b][1] for b, f in terms),
-                          sp.Integer(0)))
-    (xa, xb), t = points, next(iter(where.values()))[1].args[0]
+    (xa, xb), t = _points(span, where), next(iter(where.values()))[1].args[0]
     va, vb = xa.diff(t), xb.diff(t)
     c, d, m = (s.symbol(span.name) for s in SYMBOLS)
     u = xb - xa
     return (m * (va**2 + va * vb + vb**2) / 6, c * u**2 / 2, d * u.diff(t)**2 / 2)
+
+
+def _stretch(span: Span, where: dict, bodies: dict[str, Body]) -> tuple[sp.Expr, str]:
+    """Its stretch u = x_B − x_A and the unit of its force, ∂Π/∂u + ∂Φ/∂u̇."""
+    xa, xb = _points(span, where)
+    return xb - xa, "N"
 
 
 def _factors(span: Span, bodies: dict[str, Body]) -> tuple[Factor, ...]:
@@ -160,4 +168,4 @@ KIND = Kind("span", (Key("name", "word"), Key("stiffness", value="stiffness", si
                                          g["damping"], g["mass"]),
             "an elastic element of its own mass between two points, each a linear "
             "combination of bodies' coordinates (or the frame)",
-            symbols=SYMBOLS, couples=Coupling(_bodies, _check, _energies, _factors))
+            symbols=SYMBOLS, couples=Coupling(_bodies, _check, _energies, _factors, _stretch))
