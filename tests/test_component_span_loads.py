@@ -169,3 +169,111 @@ def test_a_sweep_of_a_span_s_force_is_each_design_s_run(tmp_path, capsys):
         run = read.model.run(read.duration, rest=read.rest)
         peak = next(p for p in part_peaks(run) if p.part == "tight")
         assert abs(swept[i] - abs(peak.value)) <= 1e-9 * abs(peak.value)
+
+
+# --- a span of angles: a twisting shaft with an inertia of its own -------------------
+
+#: Two inertias [kg m²] joined by a shaft of stiffness C_T [N m/rad] and own inertia J_S
+#: [kg m²], a constant torque T_D [N m] on the first from rest.
+J1, J2, J_S, C_T, T_D = 2.0, 3.0, 0.6, 1e4, 10.0
+SHAFT = f'''[model]
+name = "two_inertias"
+
+[[inertia]]
+name = "a"
+inertia = "{J1} kg*m^2"
+
+[[inertia]]
+name = "b"
+inertia = "{J2} kg*m^2"
+
+[[span]]
+name = "shaft"
+start = {{ a = 1 }}
+end = {{ b = 1 }}
+stiffness = "{C_T} N*m/rad"
+damping = "0 N*m*s/rad"
+mass = "{J_S} kg*m^2"
+
+[[motor]]
+name = "drive"
+body = "a"
+torque = "{T_D} N*m"
+
+[run]
+duration = "0.3 s"
+start = "rest"
+
+[[formula]]
+name = "twice the far side's share"
+latex = "M = -\\\\frac{{2 T (J_2 + J_s/2)}}{{J_1 + J_2 + J_s}}"
+symbols = {{ T = "drive.torque", J_1 = "a.inertia", J_2 = "b.inertia", J_s = "shaft.mass" }}
+quantity = "shaft.torque_peak"
+'''
+
+
+def test_a_span_of_angles_between_two_inertias_is_its_closed_form(tmp_path, capsys):
+    """M = [[J1 + J/3, J/6], [J/6, J2 + J/3]]; the elastic mode's ω² =
+    c (J1 + J2 + J) / det M; from rest under a torque T on the first, the
+    shaft's torque is c u = −T (J2 + J/2)/(J1 + J2 + J) (1 − cos ωt) (the
+    uniformly accelerated twist, reached through the elastic mode alone):
+    along the run to 1e-12, its peak printed in N·m, and the [[formula]] on
+    shaft.torque_peak confirmed."""
+    from crane_sym.cli.main import main
+    from crane_sym.components.file_audit import audit_file
+    from crane_sym.components.reading import read_component_file
+    path = tmp_path / "shaft.toml"
+    path.write_text(SHAFT)
+    read = read_component_file(str(path))
+    span, = read.model.assembly.couplings
+    assert span.motion == "rotating"
+    M = read.model.equations.numeric()([], [], [1.0], [])[0]
+    np.testing.assert_allclose(M, [[J1 + J_S / 3, J_S / 6], [J_S / 6, J2 + J_S / 3]], rtol=1e-15)
+    run = read.model.run(0.3, rest=True)
+    omega = np.sqrt(C_T * (J1 + J2 + J_S) / np.linalg.det(M))
+    static = -T_D * (J2 + J_S / 2) / (J1 + J2 + J_S)
+    times = np.linspace(0.0, 0.3, 301)
+    w = run.system.first_order.weights(run.model.equations.outputs[0][3])
+    curve = values(run.result, times, lambda mode: (w, 0.0))
+    assert np.max(np.abs(curve - static * (1 - np.cos(omega * times)))) <= 1e-12 * abs(static)
+    peak, = part_peaks(run)
+    assert (peak.what, peak.unit) == ("torque", "N*m")
+    assert abs(peak.value - 2 * static) <= 1e-12 * abs(2 * static)
+    assert abs(peak.time - np.pi / omega) <= 1e-9
+    formula, = audit_file(read)
+    assert formula.verdict == "confirmed"
+    assert main(["run", str(path), "--out", str(tmp_path / "out")]) == 0
+    assert f"peak torque of shaft: {2 * static:.2f} N·m" in capsys.readouterr().out.replace(
+        "N*m", "N·m")
+
+
+def test_a_span_of_angles_refuses_a_value_of_a_length(tmp_path):
+    """Its damping in N·s/m, its own mass in kg: one line each."""
+    from crane_sym.components.parts import ComponentError
+    from crane_sym.components.reading import read_component_file
+    for old, new, line in (('damping = "0 N*m*s/rad"', 'damping = "1 N*s/m"',
+                            r"span 'shaft': damping '1 N\*s/m' is mass/time, expected "),
+                           (f'mass = "{J_S} kg*m^2"', 'mass = "0.6 kg"',
+                            r"span 'shaft': mass '0\.6 kg' is mass, expected ")):
+        path = tmp_path / "bad.toml"
+        path.write_text(SHAFT.replace(old, new))
+        with pytest.raises(ComponentError, match=line):
+            read_component_file(str(path))
+
+
+def test_a_sweep_of_a_span_of_angles_is_its_closed_form(tmp_path, capsys):
+    """shaft.torque.peak over its stiffness (N·m/rad) and own inertia (kg·m²),
+    batched: 2 T (J2 + J/2)/(J1 + J2 + J) at every design, to 1e-12."""
+    xr = pytest.importorskip("xarray")
+    from crane_sym.cli.main import main
+    path = tmp_path / "shaft.toml"
+    path.write_text(SHAFT)
+    argv = ["sweep", str(path), "--vary", "shaft.stiffness=1e4:2e4:2", "--vary",
+            "shaft.mass=0.3:0.6:2", "--output", "shaft.torque.peak", "--out",
+            str(tmp_path / "out"), "--format", "json", "--quiet", "--scheduler", "synchronous"]
+    assert main(argv) == 0
+    swept = xr.open_zarr(json.loads(capsys.readouterr().out)["dataset"]).load()
+    for j, inertia in enumerate((0.3, 0.6)):
+        closed = 2 * T_D * (J2 + inertia / 2) / (J1 + J2 + inertia)
+        column = swept["shaft.torque.peak"].values[:, j]
+        assert np.max(np.abs(column - closed)) <= 1e-12 * closed

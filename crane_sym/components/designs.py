@@ -202,8 +202,10 @@ class Designs:
                     continue                 # solved at the start, or without effect
                 if isinstance(declared.value, str):
                     body = entry.get("body") or (entry.get("between") or [None])[0]
-                    motion = a.bodies[body].motion if body in a.bodies else (
-                        ROTATING if kind == "inertia" else "translating")
+                    own = next((p for p in self.model.components if p.name == name), None)
+                    motion = a.bodies[body].motion if body in a.bodies else (  # a span's own
+                        getattr(own, "motion", None) or (ROTATING if kind == "inertia"
+                                                         else "translating"))
                     dimension = DIMENSIONS[declared.value][motion]
                 else:
                     dimension = declared.value

@@ -347,8 +347,8 @@ def derive(assembly: Assembly) -> Equations:
         shares = couples.energies(part, where)
         T, V, D = T + shares[0], V + shares[1], D + shares[2]
         if couples.stretch is not None:     # its load from its own energies, ∂Π/∂u + ∂Φ/∂u̇
-            u, unit = couples.stretch(part, where, assembly.bodies)
-            carried.append((part.name, "force", unit, load_of(shares, u, coords, t, part.label)))
+            u, what, unit = couples.stretch(part, where, assembly.bodies)
+            carried.append((part.name, what, unit, load_of(shares, u, coords, t, part.label)))
     loads = [F.xreplace(back) for F in laws]
     forces = {q: sp.Integer(0) for q in coords}
     joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}

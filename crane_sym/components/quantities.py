@@ -30,7 +30,7 @@ A parameter is named ``<component>.<key>`` as the component file writes it
                            ground's side)
 ``<contact>.reaction_peak`` its largest reaction over the file's run, a number
 ``<span>.force_peak``      a span's largest force ∂Π/∂u + ∂Φ/∂u̇ over the file's run, a
-                           number
+                           number (``<span>.torque_peak``: a span of angles, its torque)
 ``<motor>.time_constant``  a DC motor's mechanical time constant τ = J_red / (−∂F/∂ω),
                            F its force with the armature's current at rest
                            (L di/dt = 0 solved for i): J_red R / k²
@@ -74,11 +74,12 @@ KINDS = {"reduced_inertia": ("body", "the inertia of its rigid group referred to
                                  "unstretched"),
          "reaction_peak": ("contact", "the ground's largest reaction over the file's run"),
          "force_peak": ("span", "its largest force over the file's run"),
+         "torque_peak": ("span", "its largest torque over the file's run (a span of angles)"),
          "time_constant": ("dc motor", "its mechanical time constant: the reduced inertia "
                                        "over the slope of its torque against speed, the "
                                        "armature's inductance neglected")}
 #: Quantities that are numbers of the file's run, not symbolic.
-NUMERIC = ("peak", "factor", "reaction_peak", "force_peak")
+NUMERIC = ("peak", "factor", "reaction_peak", "force_peak", "torque_peak")
 
 
 @dataclass(frozen=True)
@@ -156,9 +157,9 @@ def _dimension(a, key: Key, part) -> tuple[Dimension, str, str]:
 
 def _motion(a, part) -> str:
     """The motion of the body a part is, acts on, or (a link) starts at; a
-    span's stretch is a length."""
+    span's stretch is a length, or an angle (its ``motion``)."""
     if kinds.of(part).couples is not None:
-        return TRANSLATING
+        return getattr(part, "motion", TRANSLATING)
     if isinstance(part, ElasticLink):
         return next(a.bodies[e].motion for e in part.ends if e != GROUND)
     body = part.name if part.name in a.bodies else getattr(part, "body", None) or part.ends[0]

@@ -106,7 +106,8 @@ class Key:
 
 
 #: The SI unit of each fixed dimension a key may hold.
-FIXED_UNITS = {Dimension(1): "1", length: "m", time: "s", length / time**2: "m/s^2",
+FIXED_UNITS = {Dimension(1): "1", length: "m", 1 / length: "1/m", time: "s",
+               length / time**2: "m/s^2",
                OHM: "ohm", HENRY: "H"}
 
 
@@ -210,7 +211,8 @@ class Coupling:
     share (T, Π, Φ) of the energies, given each body's (κ, q(t));
     ``factors(part, bodies)``, each :class:`Factor` of that share;
     ``stretch(part, where, bodies)``, for a part that reports its load, its
-    stretch u in the coordinates and the SI unit of its load, which the
+    stretch u in the coordinates, what its load is (``force``, ``torque``)
+    and its SI unit; the
     toolkit derives from its energies, ∂Π/∂u + ∂Φ/∂u̇
     (:mod:`crane_sym.components.coupling_loads`)."""
 
@@ -218,7 +220,7 @@ class Coupling:
     check: Callable[[Component, dict], None]
     energies: Callable[[Component, dict], tuple[sp.Expr, sp.Expr, sp.Expr]]
     factors: Callable[[Component, dict], "tuple[Factor, ...]"]
-    stretch: Callable[[Component, dict, dict], tuple[sp.Expr, str]] | None = None
+    stretch: Callable[[Component, dict, dict], tuple[sp.Expr, str, str]] | None = None
 
 
 @dataclass(frozen=True)
