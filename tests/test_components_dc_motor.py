@@ -349,14 +349,21 @@ def test_a_steady_start_the_limit_cannot_hold_is_refused():
 
 def test_a_steady_start_that_cannot_rest_or_is_not_fixed_is_refused():
     """A reference of 10 rad/s at t = 0 against a start at speed 0: the
-    integral cannot rest; a 'steady' motor beside the armature: the load
-    shared in any proportion. Each one line."""
+    integral cannot rest; a loop without integral (and limit): the current
+    cannot; a 'steady' motor beside the armature: the load shared in any
+    proportion. Each one line."""
     from crane_sym.components.parts import ComponentError
     moving = EXAMPLE.read_text().replace("coefficients = [[0.0, 100.0], [100.0]]",
                                          "coefficients = [[10.0, 90.0], [100.0]]")
     with pytest.raises(ComponentError, match=r"^start: z_speed_loop cannot rest at the steady "
                        r"start .*start = \"rest\"$"):
         _file_model(moving).run(2.0)
+    proportional = "\n".join(line for line in EXAMPLE.read_text().replace(
+        'integral = "200 V/rad"', 'integral = "0 V/rad"').splitlines()
+        if not line.startswith("limit ="))
+    with pytest.raises(ComponentError, match=r"^start: i_armature cannot rest at the steady "
+                       r"start .*start = \"rest\"$"):
+        _file_model(proportional).run(2.0)
     held = EXAMPLE.read_text().replace(
         "[[dc_motor]]", '[[motor]]\nname = "holding_brake"\nbody = "motor"\n'
         'torque = "steady"\n\n[[dc_motor]]')

@@ -93,8 +93,10 @@ def balance(probe: ComponentSystem, unit: ComponentSystem | None, contacts: tupl
     system, rhs = np.vstack([matrix, lower]), np.concatenate([f, right])
     z = np.linalg.lstsq(system, rhs, rcond=None)[0] if system.shape[1] else np.zeros(0)
     _check_fixed(probe, system, K.shape[1] - pinned, unit is not None)
-    _check_forces(matrix, f, z)
+    if n_states:           # the loads balanced by some states, whatever their rates?
+        _check_forces(matrix, f, np.linalg.lstsq(matrix, f, rcond=None)[0])
     _check_rates(probe, lower, right, z)
+    _check_forces(matrix, f, z)
     positions = np.concatenate([[0.0] * pinned, z[:K.shape[1] - pinned]])
     torque = float(z[K.shape[1] - pinned]) if unit is not None else 0.0
     states = z[len(z) - n_states:] if n_states else np.zeros(0)
@@ -112,8 +114,9 @@ def _check_fixed(probe: ComponentSystem, system: np.ndarray, positions: int,
     norms = np.linalg.norm(system, axis=0)
     _, sigma, vt = np.linalg.svd(system / np.where(norms > 0, norms, 1.0))
     null = vt[np.sum(sigma > 1e-10 * sigma.max(initial=0.0)):, positions:]
-    loose = np.flatnonzero(np.abs(null).max(axis=0, initial=0.0) > 1e-8)
-    if loose.size:
+    loose = [j for j in np.flatnonzero(np.abs(null).max(axis=0, initial=0.0) > 1e-8)
+             if norms[positions + j] > 0]     # a state that enters nothing stays at 0
+    if loose:
         names = ["the 'steady' motor's torque"] * torque + [str(s) for s in
                                                            probe.equations.states]
         raise ComponentError(f"start: the steady start does not fix "
@@ -141,9 +144,9 @@ def _check_rates(probe: ComponentSystem, lower: np.ndarray, right: np.ndarray,
         if abs(rest) > TOLERANCE * size and abs(rest) > 1e-12 * max(size, 1.0):
             state = probe.equations.states[j]
             raise ComponentError(f"start: {state} cannot rest at the steady start (its rate "
-                                 f"stays off 0 whatever the states: a law at t = 0 that "
-                                 f"differs from the steady speed?); start at the speed the "
-                                 f"laws give at t = 0, or start = \"rest\"")
+                                 f"stays off 0 whatever the states: a reference at t = 0 "
+                                 f"other than the steady speed, or a loop without an "
+                                 f"integral?); start = \"rest\"")
 
 
 def _check_limits(probe: ComponentSystem, states: np.ndarray) -> None:
