@@ -97,6 +97,11 @@ def test_a_two_mass_span_s_peak_is_its_closed_form(tmp_path, capsys):
     assert np.max(np.abs(curve - theirs)) <= 1e-12 * abs(closed)
     right, half = audit_file(read)
     assert (right.verdict, half.verdict) == ("confirmed", "discrepancy")
+    from crane_sym.components.parts import ComponentError
+    from crane_sym.components.quantities import derived_quantity
+    with pytest.raises(ComponentError, match=r"^quantity 'rope\.torque_peak': no part 'rope' "
+                       r"reports a torque$"):
+        derived_quantity(read.model, "rope.torque_peak", run)
     assert main(["run", str(path), "--out", str(tmp_path / "out"), "--format", "json",
                  "-q"]) == 0
     found = json.loads(capsys.readouterr().out)["results"]

@@ -94,7 +94,8 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
     if path not in known:
         raise ComponentError(f"{where}: unknown quantity {path!r}; "
                              f"{did_you_mean(path, list(known))}a quantity is "
-                             f"<body>.reduced_inertia, <dc motor>.time_constant, <link>."
+                             f"<body>.reduced_inertia, <dc motor>.time_constant, "
+                             f"<span>.{{force_peak, torque_peak}}, <link>."
                              f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'link')}}} "
                              f"or <ground contact>."
                              f"{{{', '.join(k for k in KINDS if KINDS[k][0] == 'contact')}}}")
