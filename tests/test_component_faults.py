@@ -168,6 +168,10 @@ ROWS = {
     "limit without integral": Fault(DC, 'integral = "200 V/rad"', 'integral = "0 V/rad"',
                                     r"speed controller 'speed_loop': integral \(a limit's "
                                     r"integral tracks it\) must be > 0, got '0 V/rad'"),
+    "limit below the load": Fault(DC, 'limit = "1000 N*m"', 'limit = "600 N*m"',
+                                  r"start: speed_loop's limit holds i_armature within ±150 "
+                                  r"\(SI\); the steady start needs 163\.5: the limit cannot "
+                                  r"hold the load"),
     "gain in V/rad": Fault(DC, 'proportional = "20 V*s/rad"', 'proportional = "20 V/rad"',
                            MODEL_DC + r"speed controller 'speed_loop' on inertia 'motor': "
                            r"proportional '20 V/rad' is mass\*length\*\*2/\(time\*\*3\*current\), "
@@ -231,7 +235,8 @@ PAIRS = [pytest.param(case, command, marks=pytest.mark.harm(
              "bounds" if case in BOUNDS else "one-line"))
          for case in ROWS for command in COMMANDS
          if command != "model show" or case not in ("speed 1e308 rpm",
-                                                    "contact with a steady start")]
+                                                    "contact with a steady start",
+                                                    "limit below the load")]
 
 
 @pytest.mark.parametrize("case,command", PAIRS)

@@ -81,6 +81,10 @@ C_ROPE, D_ROPE, M_HOOK, G = 2e6, 2e3, 1e4, 9.81
 R_A, L_A, K_A, KP, KI, T_MAX = 0.1, 5e-3, 4.0, 20.0, 200.0, 1000.0
 RHO = RADIUS / (GEAR * REEVING)                     # rope end per rad of the motor
 J_RED = JM + JD / GEAR**2 + M_END * RHO**2
+#: The steady start at speed 0: the current that holds the load, m g ρ / k, and
+#: the integral that keeps it, R i = k_i z (L di/dt = 0 at ω = ω_ref = 0).
+I_0 = M_HOOK * G * RHO / K_A
+Z_0 = R_A * I_0 / KI
 
 
 def reference(t: float) -> tuple[float, float]:
@@ -116,10 +120,11 @@ def demand_rate(t: float, y: np.ndarray) -> float:
 
 
 def hoist_reference(t_end: float, limited: bool) -> tuple[list[tuple[float, str]], object]:
-    """solve_ivp (DOP853, rtol 1e-12) of the hoist from the load held on the
-    stretched rope, with events for the limit's modes; (events, dense solution)."""
+    """solve_ivp (DOP853, rtol 1e-12) of the hoist from the load held still on
+    the stretched rope by the current I_0 and the integral Z_0, with events for
+    the limit's modes; (events, dense solution)."""
     from scipy.integrate import solve_ivp
-    y = np.array([0.0, 0.0, -M_HOOK * G / C_ROPE, 0.0, 0.0, 0.0])
+    y = np.array([0.0, 0.0, -M_HOOK * G / C_ROPE, 0.0, I_0, Z_0])
     t, mode, events, pieces = 0.0, 0, [], []
     while t < t_end:
         stop = 1.0 if t < 1.0 else t_end
@@ -168,7 +173,7 @@ def test_dc_hoist_without_its_limit_against_solve_ivp():
     """The loop unlimited: speed, current and rope force of the phases' closed
     forms against DOP853 at rtol 1e-12, to 1e-8 of their peaks."""
     run = example_run(limited=False)
-    assert [e for _, e in run.events] == ["holding_brake off", "speed_loop next piece"]
+    assert [e for _, e in run.events] == ["speed_loop next piece"]
     events, theirs = hoist_reference(2.0, limited=False)
     times = np.linspace(0.0, 2.0, 401)
     y = theirs(times)
@@ -187,9 +192,9 @@ def test_dc_hoist_with_its_limit_against_solve_ivp_with_events():
     the current never past the limit."""
     run = example_run(limited=True)
     events, theirs = hoist_reference(2.0, limited=True)
-    ours = [(t, e) for t, e in run.events if e != "holding_brake off"]
+    ours = run.events
     assert [e for _, e in ours] == [e for _, e in events]
-    assert sum(e == "speed_loop limited +" for _, e in ours) == 3
+    assert sum(e == "speed_loop limited +" for _, e in ours) == 2
     for (t1, _), (t2, _) in zip(ours, events):
         assert abs(t1 - t2) <= 1e-8
     times = np.linspace(0.0, 2.0, 2001)
@@ -249,3 +254,119 @@ def test_the_walkthrough_shows_the_first_order_equations():
     assert "\\frac{d z_{\\mathrm{speed\\_loop}}}{dt} = " in page
     assert "speed_loop at + limit, integral frozen" in page
     assert "$x_{6} = i_{\\mathrm{armature}}$" in page
+
+
+# --- the steady start: every first-order state at rest (components.steady) ------------
+
+def _file_model(text: str):
+    """The model of a component file's ``text``."""
+    from crane_sym.components.reading import read_component_file
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "dc_hoist_pi.toml"
+        path.write_text(text)
+        return read_component_file(str(path)).model
+
+
+def _still(run) -> np.ndarray:
+    """|A x0 + b| of the start's mode in the rows of the accelerations and the
+    first-order states' rates, each over the size of its terms |A| |x0| + |b|."""
+    A, b = run.system.matrices(run.mode)
+    s = run.system
+    rows = [s.v(g) for g in range(s.n)] + list(range(s.first, s.size))
+    size = np.abs(A) @ np.abs(run.x0) + np.abs(b)
+    rate = A @ run.x0 + b
+    return np.abs(rate[rows]) / np.where(size[rows] > 0, size[rows], 1.0)
+
+
+def test_the_steady_start_solves_the_current_and_the_integral():
+    """At speed 0 the current holds the load, i = m g ρ / k, and the integral
+    keeps it, z = R i / k_i; the rope at its static stretch; every rate 0 to
+    1e-12 of its terms."""
+    run = example_run(limited=True)
+    s = run.system
+    assert run.x0[s.first] == pytest.approx(I_0, rel=1e-12)
+    assert run.x0[s.first + 1] == pytest.approx(Z_0, rel=1e-12)
+    assert run.x0[s.q(1)] == pytest.approx(-M_HOOK * G / C_ROPE, rel=1e-12)
+    assert run.peaks[0].static == pytest.approx(M_HOOK * G, rel=1e-12)
+    assert _still(run).max() <= 1e-12
+
+
+def _peak(f, times: np.ndarray) -> float:
+    """The largest |f| of a dense solution, the sampled largest refined."""
+    from scipy.optimize import minimize_scalar
+    k = int(np.argmax(np.abs(f(times))))
+    lo, hi = times[max(k - 1, 0)], times[min(k + 1, len(times) - 1)]
+    best = minimize_scalar(lambda t: -abs(f(np.array([t]))[0]), bounds=(lo, hi),
+                           method="bounded", options={"xatol": 1e-12})
+    return max(abs(f(np.array([best.x]))[0]), float(np.abs(f(times)).max()))
+
+
+def test_the_started_hoist_s_peaks_against_solve_ivp():
+    """From the solved start, the loop unlimited: the peaks of the rope's force,
+    the current and the speed against solve_ivp (DOP853, rtol 1e-12) to 1e-9."""
+    from crane_sym.components.report import part_peaks
+    run = example_run(limited=False)
+    _, theirs = hoist_reference(2.0, limited=False)
+    times = np.linspace(0.0, 2.0, 4001)
+    rope = lambda ts: (C_ROPE * (RHO * theirs(ts)[:, 0] - theirs(ts)[:, 2])
+                       + D_ROPE * (RHO * theirs(ts)[:, 1] - theirs(ts)[:, 3]))
+    ours = {p.what: abs(p.value) for p in part_peaks(run)}
+    for name, mine, f in (("rope", abs(run.peaks[0].value), rope),
+                          ("current", ours["current"], lambda ts: theirs(ts)[:, 4]),
+                          ("speed", ours["speed"], lambda ts: theirs(ts)[:, 1])):
+        ref = _peak(f, times)
+        assert abs(mine - ref) <= 1e-9 * ref, (name, mine, ref)
+
+
+def test_a_steady_start_at_speed_stays_steady():
+    """Hoisting at 100 rad/s under a constant reference of 100 rad/s: the start
+    solves z = (R i + k ω) / k_i; over 0.5 s speeds, current and integral stay
+    put to 1e-12 and the hook rises at ρ ω."""
+    text = (EXAMPLE.read_text().replace("coefficients = [[0.0, 100.0], [100.0]]",
+                                        "coefficients = [[100.0], [100.0]]")
+            .replace('speed = "0 rad/s"', 'speed = "100 rad/s"'))
+    run = _file_model(text).run(0.5, start_body="motor", start_speed="100 rad/s")
+    s = run.system
+    assert run.x0[s.first + 1] == pytest.approx((R_A * I_0 + K_A * 100.0) / KI, rel=1e-12)
+    assert _still(run).max() <= 1e-12
+    times = np.linspace(0.0, 0.5, 51)
+    for index, expected in ((s.v(0), 100.0), (s.v(1), RHO * 100.0), (s.first, I_0),
+                            (s.first + 1, run.x0[s.first + 1])):
+        assert np.max(np.abs(state(run, index, times) - expected)) <= 1e-12 * abs(expected)
+    hook = state(run, s.q(1), times)
+    assert np.max(np.abs(hook - (RHO * 100.0 * times - M_HOOK * G / C_ROPE))) <= 1e-12 * 50
+
+
+def test_a_steady_start_the_limit_cannot_hold_is_refused():
+    """A torque limit of 600 N·m under a load torque of 654 N·m: one line."""
+    from crane_sym.components.parts import ComponentError
+    model = _file_model(EXAMPLE.read_text().replace('limit = "1000 N*m"', 'limit = "600 N*m"'))
+    with pytest.raises(ComponentError, match=r"^start: speed_loop's limit holds i_armature "
+                       r"within ±150 \(SI\); the steady start needs 163\.5: the limit cannot "
+                       r"hold the load$"):
+        model.run(2.0)
+
+
+def test_a_steady_start_that_cannot_rest_or_is_not_fixed_is_refused():
+    """A reference of 10 rad/s at t = 0 against a start at speed 0: the
+    integral cannot rest; a loop without integral (and limit): the current
+    cannot; a 'steady' motor beside the armature: the load shared in any
+    proportion. Each one line."""
+    from crane_sym.components.parts import ComponentError
+    moving = EXAMPLE.read_text().replace("coefficients = [[0.0, 100.0], [100.0]]",
+                                         "coefficients = [[10.0, 90.0], [100.0]]")
+    with pytest.raises(ComponentError, match=r"^start: z_speed_loop cannot rest at the steady "
+                       r"start .*start = \"rest\"$"):
+        _file_model(moving).run(2.0)
+    proportional = "\n".join(line for line in EXAMPLE.read_text().replace(
+        'integral = "200 V/rad"', 'integral = "0 V/rad"').splitlines()
+        if not line.startswith("limit ="))
+    with pytest.raises(ComponentError, match=r"^start: i_armature cannot rest at the steady "
+                       r"start .*start = \"rest\"$"):
+        _file_model(proportional).run(2.0)
+    held = EXAMPLE.read_text().replace(
+        "[[dc_motor]]", '[[motor]]\nname = "holding_brake"\nbody = "motor"\n'
+        'torque = "steady"\n\n[[dc_motor]]')
+    with pytest.raises(ComponentError, match=r"^start: the steady start does not fix the "
+                       r"'steady' motor's torque and i_armature and z_speed_loop: "):
+        _file_model(held).run(2.0)

@@ -203,7 +203,9 @@ class Designs:
                 if isinstance(declared.value, str):     # by the motion of its body
                     body = entry.get("body") or next(
                         (e for e in entry.get("between") or () if e != GROUND), name)
-                    motion = a.bodies[body].motion if body in a.bodies else TRANSLATING
+                    own = next((p for p in self.model.components if p.name == name), None)
+                    motion = a.bodies[body].motion if body in a.bodies else (  # a span's own
+                        getattr(own, "motion", None) or TRANSLATING)
                     dimension = DIMENSIONS[declared.value][motion]
                 else:
                     dimension = declared.value

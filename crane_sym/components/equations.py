@@ -38,6 +38,7 @@ import numpy as np
 import sympy as sp
 
 from crane_sym.components import kinds
+from crane_sym.components.coupling_loads import load_of
 from crane_sym.components.first_order import rate_matrices
 from crane_sym.components.kinds.base import ROLES
 from crane_sym.components.topology import Assembly
@@ -340,9 +341,14 @@ def derive(assembly: Assembly) -> Equations:
     for (s, rate), u in zip(stretches, twists):
         back.update({s: u, rate: u.diff(t)})
     V, D = V.xreplace(back), D.xreplace(back)
+    carried = []                            # (part, what, unit, F) of the couplings' loads
     for part in assembly.couplings:         # a span: its own T, Π, Φ in several coordinates
-        shares = kinds.of(part).couples.energies(part, where)
+        couples = kinds.of(part).couples
+        shares = couples.energies(part, where)
         T, V, D = T + shares[0], V + shares[1], D + shares[2]
+        if couples.stretch is not None:     # its load from its own energies, ∂Π/∂u + ∂Φ/∂u̇
+            u, what, unit = couples.stretch(part, where, assembly.bodies)
+            carried.append((part.name, what, unit, load_of(shares, u, coords, t, part.label)))
     loads = [F.xreplace(back) for F in laws]
     forces = {q: sp.Integer(0) for q in coords}
     joined: dict[str, list[sp.Symbol]] = {role: [] for role in ROLES}
@@ -370,6 +376,7 @@ def derive(assembly: Assembly) -> Equations:
         part, a_law = balancing
         kappa, q = where[part.body]
         forces[q] += kappa * _rigid_drive(assembly, where, part.body, a_law, acting)
+    outputs += carried
     eqs = lagrange_equations(T, V, coords, t, forces, D)
     values = parameter_values(assembly)
     return Equations(assembly, tuple(coords), T, V, D, forces, eqs, tuple(twists),

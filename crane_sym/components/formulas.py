@@ -80,7 +80,8 @@ def _quantity_names(model: Model) -> dict[str, str]:
     owners = {"body": list(a.bodies), "link": [l.part.name for l in a.links],
               "contact": [c.part.name for c in a.contacts]}
     for what, (owner, _) in quantity_table().items():
-        names = owners.get(owner) or [l.part.name for l in a.loads if l.part.kind == owner]
+        names = owners.get(owner) or [p.name for p in (*[l.part for l in a.loads],
+                                                       *a.couplings) if p.kind == owner]
         out |= {f"{n}.{what}": what for n in names}
     return out
 
@@ -105,7 +106,8 @@ def _check_quantity(path: object, model: Model, where: str, key: str) -> str:
     if path not in known:
         raise ComponentError(f"{where}: unknown quantity {path!r}; "
                              f"{did_you_mean(path, list(known))}a quantity is "
-                             f"<body>.reduced_inertia, {_declared()}<link>."
+                             f"<body>.reduced_inertia, {_declared()}<span>."
+                             f"{{{', '.join(_of('span'))}}}, <link>."
                              f"{{{', '.join(_of('link'))}}} or <ground contact>."
                              f"{{{', '.join(_of('contact'))}}}")
     return path

@@ -44,6 +44,7 @@ from crane_sym.components.model_limits import MAX_PHASES, check_cycles
 from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
                                         value)
 from crane_sym.components.pruning import Dropped, Scope, needed
+from crane_sym.components.steady import balance
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import (PhaseFormError, PhaseLimitError, PiecewiseResult,
@@ -208,7 +209,9 @@ class Model:
         Steady (the default): every group moves at the speed ``body``'s
         ``speed`` implies (no link twisting), every link rests at the twist that
         balances the loads with all motors on, on the flank its load pushes it
-        to; a ``steady`` motor's torque is solved with the twists; every motor
+        to; a ``steady`` motor's torque is solved with the twists, and so is
+        every first-order state, at rest (a DC motor's current, a PI loop's
+        integral: :func:`~crane_sym.components.steady.balance`); every motor
         law at its value just before t = 0 (0; an acceleration law's a = 0: its
         motor then holds the drive against the other loads). ``rest``:
         everything at rest at zero twist, every gap open (a link with backlash
@@ -254,10 +257,11 @@ class Model:
         driven = tuple(True for _ in probe.motors)
         contacts = tuple(1 for _ in probe.backlash)
         for _ in range(2 * len(contacts) + 2):
-            positions, torque = self._balance(probe, unit, contacts, driven,
-                                              np.asarray(rates, dtype=float))
+            solved = balance(probe, unit, contacts, driven, np.asarray(rates, dtype=float),
+                             0 if a.grounded else 1)
             x = np.zeros(probe.size)
-            x[0:2 * n:2], x[1:2 * n:2] = positions, rates
+            x[0:2 * n:2], x[1:2 * n:2] = solved.positions, rates
+            x[probe.first:] = solved.states
             turned = []
             for link, c in zip(probe.backlash, contacts):
                 u = float(probe.twist(link) @ x)
@@ -273,7 +277,7 @@ class Model:
         else:
             raise ComponentError("no steady state at the start: the links with backlash "
                                  "cannot all rest on a flank")
-        extra = {steady: torque} if steady is not None else {}
+        extra = {steady: solved.torque} if steady is not None else {}
         for k, (g, kappa) in probe.moved.items():
             law = probe.laws[k]
             if abs(law.value_at(0.0) - rates[g] * kappa) > 1e-9 * max(abs(law.value_at(0.0)),
@@ -321,35 +325,6 @@ class Model:
                 net, cap = float(x[probe.v(g)]), -1.0
             motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
         return resting(probe, replace(mode, motion=tuple(motion)), x), x, {}
-
-    def _balance(self, probe: ComponentSystem, unit: ComponentSystem | None,
-                 contacts: tuple, driven: tuple, rates: np.ndarray) -> tuple[np.ndarray, float]:
-        """Positions (the first group's at 0, unless a link holds the drive to
-        the ground) and the steady motor's torque that make K q = f − D q̇ (but on
-        a group a speed law moves: its motor gives what the balance takes);
-        ComponentError if no motor torque balances the loads."""
-        _, D, K, f0 = probe._linear(contacts, driven)[:4]
-        f = f0 - D @ rates
-        pinned = 0 if self.assembly.grounded else 1
-        columns = [K[:, pinned:]]
-        if unit is not None:
-            columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
-        matrix = np.hstack(columns)
-        free = [g for g in range(len(f)) if g not in {g for g, _ in probe.moved.values()}]
-        matrix, f = matrix[free], f[free]
-        if matrix.shape[1]:
-            z = np.linalg.lstsq(matrix, f, rcond=None)[0]
-        else:
-            z = np.zeros(0)
-        residual = np.abs(matrix @ z - f).max() if len(f) else 0.0
-        scale = np.abs(f).max() + (np.abs(matrix).max() * np.abs(z).max() if z.size else 0.0)
-        if residual > 1e-9 * max(scale, 1e-300) and residual > 1e-12:
-            raise ComponentError("the drive is not in a steady state at the start: its "
-                                 "constant loads do not balance; give one motor the torque "
-                                 "'steady'")
-        positions = np.concatenate([[0.0] * pinned, z[:K.shape[1] - pinned]])
-        torque = float(z[-1]) if unit is not None else 0.0
-        return positions, torque
 
     def with_parts(self, components: Sequence[Component]) -> "Model":
         """This model with other values of its parts (a design of a sweep): the

@@ -45,6 +45,8 @@ _VOLT = force * length / (time * current)
 VALUE_KINDS: dict[str, dict[str, tuple[Dimension, str]]] = {
     "inertia": {ROTATING: (mass * length**2, "kg*m^2")},
     "mass": {TRANSLATING: (mass, "kg")},
+    # an element's own mass along its stretch: kg along a length, kg·m² along an angle
+    "own inertia": {ROTATING: (mass * length**2, "kg*m^2"), TRANSLATING: (mass, "kg")},
     "stiffness": {ROTATING: (force * length, "N*m/rad"), TRANSLATING: (force / length, "N/m")},
     "damping": {ROTATING: (force * length * time, "N*m*s/rad"),
                 TRANSLATING: (force * time / length, "N*s/m")},

@@ -29,6 +29,8 @@ A parameter is named ``<component>.<key>`` as the component file writes it
                            unstretched: R = s Q/κ of its body's group (s = ±1, the
                            ground's side)
 ``<contact>.reaction_peak`` its largest reaction over the file's run, a number
+``<span>.force_peak``      a span's largest force ∂Π/∂u + ∂Φ/∂u̇ over the file's run, a
+                           number (``<span>.torque_peak``: a span of angles, its torque)
 ``<motor>.time_constant``  a DC motor's mechanical time constant τ = J_red / (−∂F/∂ω),
                            F its force with the armature's current at rest
                            (L di/dt = 0 solved for i): J_red R / k²
@@ -54,6 +56,7 @@ from crane_sym.components.closed import acting_parts, link_response
 from crane_sym.components.model import Model
 from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, TRANSLATING, UNITS,
                                         ComponentError, value)
+from crane_sym.components.reported import reported_peak
 from crane_sym.components.vibration import MODAL, ModeChoice, modal_quantity
 
 __all__ = ["NUMERIC", "QUANTITIES", "Parameter", "Quantity", "UNITS", "derived_quantity",
@@ -69,7 +72,10 @@ QUANTITIES = {"reduced_inertia": ("body", "the inertia of its rigid group referr
               "factor": ("link", "its dynamic factor: peak over reference or static load"),
               "reaction": ("contact", "the ground's reaction at rest at the start, the links "
                                       "unstretched"),
-              "reaction_peak": ("contact", "the ground's largest reaction over the file's run")}
+              "reaction_peak": ("contact", "the ground's largest reaction over the file's run"),
+              "force_peak": ("span", "its largest force over the file's run"),
+              "torque_peak": ("span", "its largest torque over the file's run (a span of "
+                                      "angles)")}
 
 
 def quantity_table() -> dict[str, tuple[str, str]]:
@@ -81,7 +87,7 @@ def quantity_table() -> dict[str, tuple[str, str]]:
 
 
 #: Quantities that are numbers of the file's run, not symbolic.
-NUMERIC = ("peak", "factor", "reaction_peak")
+NUMERIC = ("peak", "factor", "reaction_peak", "force_peak", "torque_peak")
 
 
 @dataclass(frozen=True)
@@ -159,9 +165,9 @@ def _dimension(a, key: Key, part) -> tuple[Dimension, str, str]:
 
 def _motion(a, part) -> str:
     """The motion of the body a part is, acts on, or (a link) starts at; a
-    span's stretch is a length."""
+    span's stretch is a length, or an angle (its ``motion``)."""
     if kinds.of(part).couples is not None:
-        return TRANSLATING
+        return getattr(part, "motion", TRANSLATING)
     body = part.name if part.name in a.bodies else getattr(part, "body", None) or next(
         e for e in part.ends if e != GROUND)
     return a.bodies[body].motion
@@ -310,6 +316,9 @@ def derived_quantity(model: Model, path: str, run=None,
                         "(divided by its κ²)")
     if table[what][0] == "contact":
         return _contact_quantity(model, path, run)
+    if table[what][0] == "span":
+        p = reported_peak(model, path, run, what.removesuffix("_peak"))
+        return Quantity(path, sp.Float(p.value, 17), p.dimension, p.unit, p.how, numeric=True)
     if what not in QUANTITIES:
         return _part_quantity(model, path, table[what][0])
     link = _link(model, name) if name in [l.part.name for l in a.links] else None

@@ -110,7 +110,8 @@ class Key:
 
 
 #: The SI unit of each fixed dimension a key may hold.
-FIXED_UNITS = {Dimension(1): "1", length: "m", time: "s", length / time**2: "m/s^2",
+FIXED_UNITS = {Dimension(1): "1", length: "m", 1 / length: "1/m", time: "s",
+               length / time**2: "m/s^2",
                OHM: "ohm", HENRY: "H"}
 
 
@@ -212,12 +213,18 @@ class Coupling:
     bodies)``, its values against those bodies (their motion, its factors'
     dimensions; ComponentError, one line); ``energies(part, where)``, its
     share (T, Π, Φ) of the energies, given each body's (κ, q(t));
-    ``factors(part, bodies)``, each :class:`Factor` of that share."""
+    ``factors(part, bodies)``, each :class:`Factor` of that share;
+    ``stretch(part, where, bodies)``, for a part that reports its load, its
+    stretch u in the coordinates, what its load is (``force``, ``torque``)
+    and its SI unit; the
+    toolkit derives from its energies, ∂Π/∂u + ∂Φ/∂u̇
+    (:mod:`crane_sym.components.coupling_loads`)."""
 
     bodies: Callable[[Component], tuple[str, ...]]
     check: Callable[[Component, dict], None]
     energies: Callable[[Component, dict], tuple[sp.Expr, sp.Expr, sp.Expr]]
     factors: Callable[[Component, dict], "tuple[Factor, ...]"]
+    stretch: Callable[[Component, dict, dict], tuple[sp.Expr, str, str]] | None = None
 
 
 @dataclass(frozen=True)

@@ -25,6 +25,13 @@ one); a bare integer enters the equations as that
 integer, any other factor as its sign times a symbol ``a_<body>_<text>`` of
 its magnitude (``a_drum_250_mm``: spans that write a radius alike share it),
 the parameter ``<span>.<start|end>.<body>`` of a [[formula]]. A span with one point on the frame is a spring to the ground.
+
+A span whose stiffness is written per radian (``"2e4 N*m/rad"``) twists: its
+points are angles (a factor is rad per unit of the body's coordinate, a bare
+number on a shaft), its damping is in N·m·s/rad, its ``mass`` is the moment of
+inertia of its own shaft (kg·m², the angular speed linear along it: the same
+T), and its load is a torque in N·m. Its force, ∂Π/∂u + ∂Φ/∂u̇, is derived
+from these energies (:mod:`crane_sym.components.coupling_loads`).
 """
 from __future__ import annotations
 
@@ -34,8 +41,10 @@ from dataclasses import dataclass
 import sympy as sp
 
 from crane_sym.components.kinds.base import Coupling, Factor, Key, Kind, Symbolic
-from crane_sym.components.parts import (DIMENSIONS, TRANSLATING, Body, Component,
-                                        ComponentError, Given, Value, _at_least, _name, value)
+from crane_sym.components.parts import (DIMENSIONS, ROTATING, TRANSLATING, UNITS, Body,
+                                        Component, ComponentError, Given, Value, _at_least,
+                                        _name, value)
+from crane_sym.units import same_dimension
 
 __all__ = ["KIND", "Span"]
 
@@ -46,7 +55,8 @@ SIDES = ("start", "end")
 class Span(Component):
     """An elastic element between two points (see the module docstring):
     ``start`` and ``end`` are (body, factor) each, the factor a
-    :class:`~crane_sym.components.parts.Value`."""
+    :class:`~crane_sym.components.parts.Value`; ``motion`` is ``rotating``
+    where its stiffness is written per radian (its points angles)."""
 
     name: str
     start: tuple[tuple[str, Value], ...]
@@ -54,6 +64,7 @@ class Span(Component):
     stiffness: Value
     damping: Value
     mass: Value
+    motion: str
     kind = "span"
 
     def __init__(self, name: str, start: dict[str, Given] | None, end: dict[str, Given] | None,
@@ -78,8 +89,11 @@ class Span(Component):
         _at_least(owner, "stiffness", c, 0.0, True)
         _at_least(owner, "damping", d, 0.0, False)
         _at_least(owner, "mass", m, 0.0, False)
+        twists = c.dimension is not None and same_dimension(c.dimension,
+                                                            DIMENSIONS["stiffness"][ROTATING])
         for key, v in (("name", name), ("start", sides[0]), ("end", sides[1]),
-                       ("stiffness", c), ("damping", d), ("mass", m)):
+                       ("stiffness", c), ("damping", d), ("mass", m),
+                       ("motion", ROTATING if twists else TRANSLATING)):
             object.__setattr__(self, key, v)
 
 
@@ -109,33 +123,43 @@ def _bodies(span: Span) -> tuple[str, ...]:
 
 
 def _check(span: Span, bodies: dict[str, Body]) -> None:
-    """Its values' dimensions, and each factor's: a length per unit of the
-    body's coordinate."""
-    for key in ("stiffness", "damping", "mass"):
-        getattr(span, key).check(span.label, key, DIMENSIONS[key][TRANSLATING])
-    own = DIMENSIONS["displacement"][TRANSLATING]
+    """Its values' dimensions by its motion, and each factor's: a length (an
+    angle) per unit of the body's coordinate."""
+    for key, kind in (("stiffness", "stiffness"), ("damping", "damping"),
+                      ("mass", "own inertia")):
+        getattr(span, key).check(span.label, key, DIMENSIONS[kind][span.motion])
+    own = DIMENSIONS["displacement"][span.motion]
     for side, terms in zip(SIDES, (span.start, span.end)):
         for body, f in terms:
             f.check(span.label, f"{side} factor of {body!r}",
                     own / DIMENSIONS["displacement"][bodies[body].motion])
 
 
+def _points(span: Span, where: dict) -> tuple[sp.Expr, sp.Expr]:
+    """(x_A, x_B) of the span, given each body's (κ, q(t))."""
+    return tuple(sum((_factor(b, f) * where[b][0] * where[b][1] for b, f in terms),
+                     sp.Integer(0)) for terms in (span.start, span.end))
+
+
 def _energies(span: Span, where: dict) -> tuple[sp.Expr, sp.Expr, sp.Expr]:
     """(T, Π, Φ) of the span, given each body's (κ, q(t))."""
-    points = []
-    for terms in (span.start, span.end):
-        points.append(sum((_factor(b, f) * where[b][0] * where[b][1] for b, f in terms),
-                          sp.Integer(0)))
-    (xa, xb), t = points, next(iter(where.values()))[1].args[0]
+    (xa, xb), t = _points(span, where), next(iter(where.values()))[1].args[0]
     va, vb = xa.diff(t), xb.diff(t)
     c, d, m = (s.symbol(span.name) for s in SYMBOLS)
     u = xb - xa
     return (m * (va**2 + va * vb + vb**2) / 6, c * u**2 / 2, d * u.diff(t)**2 / 2)
 
 
+def _stretch(span: Span, where: dict, bodies: dict[str, Body]) -> tuple[sp.Expr, str, str]:
+    """Its stretch u = x_B − x_A, and what its load ∂Π/∂u + ∂Φ/∂u̇ is, with its
+    unit: a force, or a torque where it twists."""
+    xa, xb = _points(span, where)
+    return xb - xa, "torque" if span.motion == ROTATING else "force", UNITS["load"][span.motion]
+
+
 def _factors(span: Span, bodies: dict[str, Body]) -> tuple[Factor, ...]:
     """Its factors that are symbols, each a parameter ``<span>.<side>.<body>``."""
-    own = DIMENSIONS["displacement"][TRANSLATING]
+    own = DIMENSIONS["displacement"][span.motion]
     return tuple(Factor(f"{side}.{b}", factor_symbol(b, f), abs(f.si),
                         own / DIMENSIONS["displacement"][bodies[b].motion],
                         f"factor of {b} in the {side} point of the span {span.name}")
@@ -155,9 +179,10 @@ KIND = Kind("span", (Key("name", "word"), Key("stiffness", value="stiffness", si
                      Key("end", "terms", required=False, default=None),
                      Key("damping", value="damping", sign="nonnegative", required=False,
                          default=0.0),
-                     Key("mass", value="mass", sign="nonnegative", required=False, default=0.0)),
+                     Key("mass", value="own inertia", sign="nonnegative", required=False,
+                         default=0.0)),
             lambda g, entry, where: Span(g["name"], g["start"], g["end"], g["stiffness"],
                                          g["damping"], g["mass"]),
             "an elastic element of its own mass between two points, each a linear "
             "combination of bodies' coordinates (or the frame)",
-            symbols=SYMBOLS, couples=Coupling(_bodies, _check, _energies, _factors))
+            symbols=SYMBOLS, couples=Coupling(_bodies, _check, _energies, _factors, _stretch))
