@@ -79,7 +79,7 @@ def test_a_two_mass_span_s_peak_is_its_closed_form(tmp_path, capsys):
     the [[formula]] naming rope.force_peak confirmed (the half refuted)."""
     from crane_sym.cli.main import main
     from crane_sym.components.file_audit import audit_file
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     path = tmp_path / "two.toml"
     path.write_text(TWO)
     read = read_component_file(str(path))
@@ -128,7 +128,7 @@ def test_the_drum_drive_s_span_forces_peak_as_004s_12():
     e2 = z − r φ3 − y) at their peaks against (12) integrated by DOP853 at
     rtol 1e-12 with the derivation's generated right-hand side, to 1e-9."""
     from scipy.integrate import solve_ivp
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     module = generated("drum_drive")
     v = DRUM
     args = [v[k] for k in ("I1", "I2", "I3", "C1", "C2", "nu1", "nu2", "m3", "m_L", "C_y",
@@ -158,7 +158,7 @@ def test_a_sweep_of_a_span_s_force_is_each_design_s_run(tmp_path, capsys):
     against the file's run with that value written in, to 1e-9."""
     xr = pytest.importorskip("xarray")
     from crane_sym.cli.main import main
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     argv = ["sweep", str(FILE), "--vary", "drive.torque=400:480:2", "--output",
             "tight.force.peak", "--out", str(tmp_path / "out"), "--format", "json",
             "--quiet", "--scheduler", "synchronous"]
@@ -226,7 +226,7 @@ def test_a_span_of_angles_between_two_inertias_is_its_closed_form(tmp_path, caps
     shaft.torque_peak confirmed."""
     from crane_sym.cli.main import main
     from crane_sym.components.file_audit import audit_file
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     path = tmp_path / "shaft.toml"
     path.write_text(SHAFT)
     read = read_component_file(str(path))
@@ -255,7 +255,7 @@ def test_a_span_of_angles_between_two_inertias_is_its_closed_form(tmp_path, caps
 def test_a_span_of_angles_refuses_a_value_of_a_length(tmp_path):
     """Its damping in N·s/m, its own mass in kg: one line each."""
     from crane_sym.components.parts import ComponentError
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     for old, new, line in (('damping = "0 N*m*s/rad"', 'damping = "1 N*s/m"',
                             r"span 'shaft': damping '1 N\*s/m' is mass/time, expected "),
                            (f'mass = "{J_S} kg*m^2"', 'mass = "0.6 kg"',

@@ -260,7 +260,7 @@ def test_the_walkthrough_shows_the_first_order_equations():
 
 def _file_model(text: str):
     """The model of a component file's ``text``."""
-    from crane_sym.components.reading import read_component_file
+    from crane_sym.components.component_file import read_component_file
     with tempfile.TemporaryDirectory() as folder:
         path = Path(folder) / "dc_hoist_pi.toml"
         path.write_text(text)
