@@ -40,10 +40,12 @@ __all__ = ["DPS", "ExactForm", "SLOW", "exact_form", "precise_closed_form"]
 #: Working digits of the exact run.
 DPS = 40
 #: Largest |λ| T of a small resolved eigenvalue summed with the kernel over a
-#: horizon T (its series then needs about DPS/2 terms at most).
+#: horizon T (its share of the series then falls as (|λ| T)^j / j!: below
+#: 1e-40 by j = 35).
 SLOW = 1.0
 #: Most terms of the kernel's series.
 SERIES_TERMS = 80
+
 
 def _mp(value: sp.Expr) -> mpmath.mpf | mpmath.mpc:
     """An exact SymPy number at the working precision."""
