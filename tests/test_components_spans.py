@@ -335,8 +335,9 @@ def test_the_design_with_c1_doubled_runs_004s_12(tmp_path):
 
 def test_a_phase_no_form_certifies_is_refused_in_one_line(tmp_path):
     """The drum shaft 1e15 times stiffer (C_y = 2e22 N/m: a bending mode at
-    5e9 rad/s beside the free drive): neither the double form nor the precise
-    one solves the phase's equations to 1e-8, and the run is refused by name."""
+    3.4e9 rad/s beside the free drive): neither the double form (residual 1.1)
+    nor the precise one rounded to double (1.5e-7: ω t eps) solves the phase's
+    equations to 1e-8, and the run is refused by name."""
     stiff = _variant(tmp_path, ('stiffness = "2e7 N/m"', 'stiffness = "2e22 N/m"'),
                      ('duration = "10 s"', 'duration = "1 s"'))
     with pytest.raises(ComponentError, match=r"^run: a phase of 1 s: its closed form does "
