@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from crane_sym.mechanics import closed_forms
-from crane_sym.mechanics import exact_phases
+from crane_sym.mechanics import exact_forms, exact_phases
 from crane_sym.mechanics import piecewise_linear
 from crane_sym.derivations.hoist_brakes.drive_train import emergency_stop, table1_values
 from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
@@ -55,7 +55,7 @@ def test_table_does_not_depend_on_libm(monkeypatch, make, ulps):
     for module in (piecewise_linear, exact_phases):
         monkeypatch.setattr(module, "math", _other_libm(ulps))
     closed_forms.clear_cache()
-    exact_phases._exact_form_cached.cache_clear()
+    exact_forms._exact_form_cached.cache_clear()
     exact_other = exact_table(run)
     assert not _same(run.table(), double)
     assert _same(exact_other, exact)
@@ -160,8 +160,8 @@ def test_jordan_and_eigenvector_routes_agree():
     b = rng.normal(size=4)
     keys = tuple(map(float, A.ravel())), tuple(map(float, b))
     with mpmath.workdps(40):
-        jordan = exact_phases._form_jordan(*keys)
-        eig = exact_phases._form_eig(*keys)
+        jordan = exact_forms._form_jordan(*keys)
+        eig = exact_forms._form_eig(*keys)
         z0 = [mpmath.mpf(v) for v in rng.normal(size=4)]
         for tau in ("0", "0.013", "0.7"):
             a, e = jordan.state(mpmath.mpf(tau), z0), eig.state(mpmath.mpf(tau), z0)

@@ -12,5 +12,6 @@ May import: the top-level vocabulary (``symbols``, ``units``, ``dimensions``,
 """
 
 # a double phase whose form rounding has spoilt falls back to mpmath's
-# (piecewise_linear.precise_form): the provider registers itself on import
+# (piecewise_linear.precise_form): the provider (exact_forms, which
+# exact_phases imports) registers itself on import
 from crane_sym.mechanics import exact_phases as _exact_phases  # noqa: E402,F401

@@ -49,20 +49,22 @@ __all__ = ["ClosedForm", "Guard", "HybridSystem", "MAX_PHASES", "PhaseFormError"
 #: Largest relative residual of a phase's closed form at the phase's end
 #: (:meth:`ClosedForm.residual`) before it is taken from :func:`precise_form`.
 RESIDUAL = 1e-8
-#: The provider of precise closed forms (mpmath: ``exact_phases`` registers it).
-_PRECISE: list[Callable[[np.ndarray, np.ndarray], ClosedForm]] = []
+#: The provider of precise closed forms (mpmath: ``exact_forms`` registers it).
+_PRECISE: list[Callable[[np.ndarray, np.ndarray, float], ClosedForm]] = []
 
 
-def use_precise_forms(provider: Callable[[np.ndarray, np.ndarray], ClosedForm]) -> None:
-    """Register the closed forms :func:`precise_form` falls back to."""
+def use_precise_forms(provider: Callable[[np.ndarray, np.ndarray, float], ClosedForm]) -> None:
+    """Register (A, b, the phase's longest) -> the form :func:`precise_form` takes."""
     _PRECISE[:] = [provider]
 
 
-def precise_form(A: np.ndarray, b: np.ndarray, length: float, x0: np.ndarray) -> ClosedForm:
-    """The phase's closed form from the precise provider, where the double one
-    does not solve its equations to :data:`RESIDUAL` over ``length``; refused
-    by name where none is registered or it does not either, or not from x0."""
-    form = _PRECISE[0](A, b) if _PRECISE else None
+def precise_form(A: np.ndarray, b: np.ndarray, length: float, x0: np.ndarray,
+                 horizon: float) -> ClosedForm:
+    """The closed form, from the precise provider, of a phase at most ``horizon``
+    long whose double one does not solve its equations to :data:`RESIDUAL` over
+    ``length``; refused by name where none is registered or it does not either,
+    or not from x0."""
+    form = _PRECISE[0](A, b, horizon) if _PRECISE else None
     if form is None or max(form.residual(length, x0, A, b),
                            form.start_miss(length, x0, A, b)) > RESIDUAL:
         raise PhaseFormError(f"a phase of {length:g} s: its closed form does not solve its"
@@ -388,8 +390,9 @@ def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: f
         first = (horizon, pending[0][1] if pending else "end")
         end, event = _next_event(system, mode, form, x, *first, h_min)
         if form.residual(end, x, A, b) > RESIDUAL:      # rounding grown past the phase
-            form = precise_form(A, b, end, x)
+            form = precise_form(A, b, end, x, first[0])
             end, event = _next_event(system, mode, form, x, *first, h_min)
+            form = precise_form(A, b, end, x, first[0])   # checked where it ends too
         result.segments.append(Segment(mode, t, t + end, x, form, event))
         x_end = form.state(end, x)
         t += end
