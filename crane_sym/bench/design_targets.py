@@ -61,10 +61,17 @@ FILE_CASES = (FileSweepCase("examples/drive_trains/bridge_travel.toml", "drive_l
                              ("trolley_drive.stiffness", 1e6, 3e6))),)
 
 
+#: Names that only wrap the work below them (a comprehension, a memo).
+_WRAPPERS = ("<listcomp>", "<genexpr>", "<lambda>", "cached")
+#: A function with this share of the whole or more is the call's own frame.
+_OUTER = 0.9
+
+
 def profile_top(solve: Callable[[], Any], top: int = TOP) -> list[tuple[str, float]]:
     """Where ``solve()`` spends its time: (function, share of the whole) of the
     ``top`` functions of this package with the most cumulative time under
-    cProfile, the outermost (``solve`` itself) left out."""
+    cProfile; the frames around the whole (:data:`_OUTER` of it or more) and
+    the wrappers (:data:`_WRAPPERS`) left out."""
     prof = cProfile.Profile()
     prof.enable()
     solve()
@@ -73,7 +80,7 @@ def profile_top(solve: Callable[[], Any], top: int = TOP) -> list[tuple[str, flo
     total = max((v[3] for v in stats.values()), default=0.0)
     rows = []
     for (path, line, name), (_, _, _, cumulative, _) in stats.items():
-        if "crane_sym" not in path or cumulative >= total:
+        if "crane_sym" not in path or name in _WRAPPERS or cumulative >= _OUTER * total:
             continue
         where = path[path.rindex("crane_sym"):].removesuffix(".py").replace("/", ".")
         rows.append((f"{where}.{name}", cumulative / total if total else 0.0))
