@@ -18,6 +18,7 @@ that is not met.
 from __future__ import annotations
 
 import cProfile
+import hashlib
 import os
 import pstats
 import time
@@ -119,6 +120,7 @@ def paper_row(paper: str, case: BatchedBenchCase) -> dict[str, Any]:
 
 
 def _file_values(case: FileSweepCase, n: int) -> dict[str, np.ndarray]:
+    """The grid of ``n`` values a field of ``case``, field -> SI array."""
     grids = np.meshgrid(*[np.linspace(lo, hi, n) for _, lo, hi in case.axes], indexing="ij")
     return {name: g for (name, _, _), g in zip(case.axes, grids)}
 
@@ -127,8 +129,6 @@ def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
     """A component file's grid of ``case.n`` ** 2 designs as one block
     against ``case.target``, and where a grid of :data:`PROFILE_DESIGNS`
     spends its time; ``root`` is the folder ``case.path`` is relative to."""
-    import hashlib
-
     from crane_sym.components.designs import evaluate_block as file_block
     path = root / case.path
     name = f"{case.path} {case.output}"
