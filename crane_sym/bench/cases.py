@@ -116,6 +116,11 @@ class BatchedBenchCase:
         ``solve_ivp``, :mod:`crane_sym.bench.batched_targets`); None: no such rows.
     targets : bool
         The case the batched solver's targets are measured on.
+    block_target : float, optional
+        Seconds for a grid of ``block_n`` values per axis as one block
+        (:mod:`crane_sym.bench.design_targets`); None: no such row.
+    block_n : int
+        Values per axis of that grid.
     """
 
     output: str
@@ -128,6 +133,8 @@ class BatchedBenchCase:
     at: tuple[str, ...] = ()
     run: Callable | None = None
     targets: bool = False
+    block_target: float | None = None
+    block_n: int = 100
 
 
 def batched_cases() -> list[tuple[str, BatchedBenchCase]]:

@@ -1,0 +1,192 @@
+"""``crane-sym bench --sweep``, section (g): 10⁴ designs of a hybrid model
+built from components, one block, against the targets of issue 39 (item 3),
+each row printed with met / not met and the machine's load:
+
+- a paper's batched case that declares ``block_target`` (003's start-up:
+  10⁴ designs in at most 1 s), its grid of ``n`` × ``n`` designs solved as one
+  block as a sweep's worker solves it (``crane_sym.sweep.grid.evaluate_block``);
+- a component file of 5 bodies (:data:`FILE_CASES`: ``bridge_travel.toml``,
+  its two stiffnesses varied, 10⁴ designs in at most 2 s), one block through
+  ``crane_sym.components.designs.evaluate_block``.
+
+Each block is solved once (a run of a minute, not three). Where its time goes
+comes from cProfile on a grid of :data:`PROFILE_DESIGNS` designs of the same
+case, solved afresh: the functions with the most cumulative time, as
+fractions of the profiled whole (:func:`profile_top`), printed beside a row
+that is not met.
+"""
+from __future__ import annotations
+
+import cProfile
+import hashlib
+import os
+import pstats
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+from crane_sym import progress
+from crane_sym.bench.batched import _grid
+from crane_sym.bench.cases import BatchedBenchCase, batched_cases
+from crane_sym.sweep.grid import evaluate_block
+
+__all__ = ["FILE_CASES", "FileSweepCase", "PROFILE_DESIGNS", "file_row", "markdown_rows",
+           "paper_row", "profile_top", "run_rows"]
+
+#: Designs of the profiled grid that says where a block's time goes.
+PROFILE_DESIGNS = 1024
+#: Entries of the profile a row keeps.
+TOP = 8
+
+
+@dataclass(frozen=True)
+class FileSweepCase:
+    """A component file swept over two of its fields: ``n`` values each,
+    from ``low`` to ``high`` in SI (``axes``: (field, low, high)), its
+    ``output`` (``<link>.peak``), and the target in seconds for the block."""
+
+    path: str
+    output: str
+    axes: tuple[tuple[str, float, float], ...]
+    n: int = 100
+    target: float = 2.0
+
+
+#: The component files benched: 5 bodies (motors, shaft, wheels, bridge,
+#: trolley in 3 groups), backlash, a friction brake that holds, a ramped brake.
+FILE_CASES = (FileSweepCase("examples/drive_trains/bridge_travel.toml", "drive_line.peak",
+                            (("drive_line.stiffness", 150.0, 350.0),
+                             ("trolley_drive.stiffness", 1e6, 3e6))),)
+
+
+#: Names that only wrap the work below them (a comprehension, a memo).
+_WRAPPERS = ("<listcomp>", "<genexpr>", "<lambda>", "cached")
+#: A function with this share of the whole or more is the call's own frame.
+_OUTER = 0.9
+
+
+def profile_top(solve: Callable[[], Any], top: int = TOP) -> list[tuple[str, float]]:
+    """Where ``solve()`` spends its time: (function, share of the whole) of the
+    ``top`` functions of this package with the most cumulative time under
+    cProfile; the frames around the whole (:data:`_OUTER` of it or more) and
+    the wrappers (:data:`_WRAPPERS`) left out."""
+    prof = cProfile.Profile()
+    prof.enable()
+    solve()
+    prof.disable()
+    stats = pstats.Stats(prof).stats
+    total = max((v[3] for v in stats.values()), default=0.0)
+    rows = []
+    for (path, line, name), (_, _, _, cumulative, _) in stats.items():
+        if "crane_sym" not in path or name in _WRAPPERS or cumulative >= _OUTER * total:
+            continue
+        where = path[path.rindex("crane_sym"):].removesuffix(".py").replace("/", ".")
+        rows.append((f"{where}.{name}", cumulative / total if total else 0.0))
+    rows.sort(key=lambda r: -r[1])
+    return rows[:top]
+
+
+def _timed(solve: Callable[[], np.ndarray]) -> dict[str, Any]:
+    """One solve: wall and CPU seconds, the load average before and after."""
+    before = os.getloadavg()[0]
+    start, cpu = time.perf_counter(), time.process_time()
+    values = solve()
+    return {"seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
+            "load_before": before, "load_after": os.getloadavg()[0],
+            "designs": int(np.size(values)), "nan": int(np.isnan(values).sum())}
+
+
+def paper_row(paper: str, case: BatchedBenchCase) -> dict[str, Any]:
+    """The case's grid of ``case.block_n`` ** 2 designs as one block against its
+    ``block_target``, and where a grid of :data:`PROFILE_DESIGNS` spends its time."""
+    say = progress.current()
+
+    def solver(n: int) -> Callable[[], np.ndarray]:
+        chosen, spec, names, axes = _grid(case, n)
+        call = (chosen.derivation, case.output, spec.kind, spec.args, names,
+                dict(chosen.fixed), dict(chosen.options))
+        return lambda: evaluate_block(*call, *axes, cached=False)
+    solver(2)()                                              # imports, the derivation
+    say.step(f"  {case.output}: {case.block_n ** len(case.axes)} designs as one block ...")
+    row = {"name": f"{paper} {case.output}", **_timed(solver(case.block_n)),
+           "target": case.block_target}
+    row["met"] = row["seconds"] <= case.block_target
+    say.step(f"  {case.output}: where the time goes ({PROFILE_DESIGNS} designs, cProfile) ...")
+    row["profile"] = profile_top(solver(round(PROFILE_DESIGNS ** (1 / len(case.axes)))))
+    return row
+
+
+def _file_values(case: FileSweepCase, n: int) -> dict[str, np.ndarray]:
+    """The grid of ``n`` values a field of ``case``, field -> SI array."""
+    grids = np.meshgrid(*[np.linspace(lo, hi, n) for _, lo, hi in case.axes], indexing="ij")
+    return {name: g for (name, _, _), g in zip(case.axes, grids)}
+
+
+def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
+    """A component file's grid of ``case.n`` ** 2 designs as one block
+    against ``case.target``, and where a grid of :data:`PROFILE_DESIGNS`
+    spends its time; ``root`` is the folder ``case.path`` is relative to."""
+    from crane_sym.components.designs import evaluate_block as file_block
+    path = root / case.path
+    name = f"{case.path} {case.output}"
+    if not path.is_file():
+        return {"name": name, "skipped": f"{case.path} not found under {root}"}
+    digest = hashlib.sha256(path.read_bytes()).hexdigest()
+    say = progress.current()
+
+    def solver(n: int) -> Callable[[], np.ndarray]:
+        values = _file_values(case, n)
+        return lambda: file_block(str(path), digest, case.output, values, cached=False)
+    solver(2)()                                              # read, derived
+    say.step(f"  {name}: {case.n ** len(case.axes)} designs as one block ...")
+    row = {"name": name, **_timed(solver(case.n)), "target": case.target}
+    row["met"] = row["seconds"] <= case.target
+    say.step(f"  {name}: where the time goes ({PROFILE_DESIGNS} designs, cProfile) ...")
+    row["profile"] = profile_top(solver(round(PROFILE_DESIGNS ** (1 / len(case.axes)))))
+    return row
+
+
+def run_rows(root: Path | None = None) -> list[dict[str, Any]]:
+    """Every row of section (g): the papers' cases with a ``block_target``,
+    then :data:`FILE_CASES` (relative to ``root``, default the folder above
+    the package: a checkout's examples)."""
+    root = root or Path(__file__).resolve().parents[2]
+    say, rows = progress.current(), []
+    for paper, case in batched_cases():
+        if case.block_target is not None:
+            with say.task(f"  (g) {paper} {case.output}"):
+                rows.append(paper_row(paper, case))
+    for case in FILE_CASES:
+        with say.task(f"  (g) {case.path}"):
+            rows.append(file_row(case, root))
+    return rows
+
+
+def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
+    """The section of ``bench_sweep.md`` for :func:`run_rows`."""
+    if not rows:
+        return []
+    lines = ["## (g) 10⁴ designs of a model from components, one block (issue 39)", "",
+             "Each block solved once, wall and CPU seconds of this process, the load "
+             "average before and after (the machine is shared).", "",
+             "| target | measured | limit | met |", "| --- | --- | --- | --- |"]
+    for r in rows:
+        if "skipped" in r:
+            lines.append(f"| {r['name']} | skipped: {r['skipped']} | | |")
+            continue
+        lines.append(f"| {r['designs']} designs of {r['name']}, one block | "
+                     f"{r['seconds']:.2f} s wall, {r['cpu_seconds']:.2f} s CPU "
+                     f"({1e3 * r['seconds'] / r['designs']:.2f} ms a design; NaN "
+                     f"{r['nan']}); load {r['load_before']:.1f} before, "
+                     f"{r['load_after']:.1f} after | ≤ {r['target']:g} s | "
+                     f"{'met' if r['met'] else 'not met'} |")
+    for r in rows:
+        if r.get("profile") and not r["met"]:
+            parts = "; ".join(f"{name} {100 * share:.0f} %" for name, share in r["profile"])
+            lines.append(f"\n{r['name']}: where the time goes ({PROFILE_DESIGNS} designs, "
+                         f"cProfile, cumulative share of the block): {parts}.")
+    lines.append("")
+    return lines

@@ -1,0 +1,77 @@
+"""Section (g) of ``bench --sweep`` (``crane_sym.bench.design_targets``) on
+tiny grids: a row is timed, judged against its target, and a row not met says
+where its time goes."""
+from __future__ import annotations
+
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+
+from crane_sym.bench import design_targets
+from crane_sym.components.designs import designs
+
+ROOT = Path(__file__).resolve().parents[1]
+
+
+def test_a_component_file_row_not_met_says_where_the_time_goes(monkeypatch):
+    """A 2 × 2 grid of the 5-body file against a target of 0 s: not met,
+    no NaN, its profile functions of the package with shares in (0, 1), the
+    largest first, all in the Markdown."""
+    monkeypatch.setattr(design_targets, "PROFILE_DESIGNS", 4)
+    case = replace(design_targets.FILE_CASES[0], n=2, target=0.0)
+    row = design_targets.file_row(case, ROOT)
+    assert row["designs"] == 4 and row["nan"] == 0 and row["met"] is False
+    assert row["seconds"] > 0 and row["load_before"] >= 0
+    shares = [share for _, share in row["profile"]]
+    assert row["profile"] and all(name.startswith("crane_sym.") for name, _ in row["profile"])
+    assert all(0 < s < 1 for s in shares) and shares == sorted(shares, reverse=True)
+    text = "\n".join(design_targets.markdown_rows([row]))
+    assert "| ≤ 0 s | not met |" in text and "where the time goes" in text
+    assert row["profile"][0][0] in text
+
+
+def test_a_row_met_prints_no_profile_and_a_missing_file_is_skipped(tmp_path):
+    row = {"name": "x", "designs": 4, "seconds": 0.1, "cpu_seconds": 0.1, "nan": 0,
+           "load_before": 1.0, "load_after": 1.0, "target": 1.0, "met": True,
+           "profile": [("crane_sym.a.b", 0.5)]}
+    text = "\n".join(design_targets.markdown_rows([row]))
+    assert "| ≤ 1 s | met |" in text and "where the time goes" not in text
+    skipped = design_targets.file_row(design_targets.FILE_CASES[0], tmp_path)
+    assert "not found" in skipped["skipped"]
+    assert "skipped" in "\n".join(design_targets.markdown_rows([skipped]))
+
+
+def test_the_benched_file_batched_is_its_per_design_run_near_critical_and_in_other_modes(
+        monkeypatch):
+    """The 5-body file of the bench, batched against the per-design run
+    (numeric closed forms) to 1e-9 of each peak, on designs that take
+    different mode sequences (a start torque too small to move the bridge
+    against its rolling friction, one just above it, the file's) and a
+    trolley drive damped just below and just above the critical damping of
+    the trolley swinging against the held bridge (2√(k m_t)), beside the
+    file's own damping. (Exactly critical, to the double, the per-design
+    route itself stops: ``spectral_clusters`` raises ClusterError, its Schur
+    form finding none of the two eigenvalues about −7.07.)"""
+    from crane_sym.mechanics import batched_runs
+    seen = []
+    solve = batched_runs.largest_of_runs
+
+    def kept(*args, **kwargs):
+        seen.append(solve(*args, **kwargs))
+        return seen[-1]
+    monkeypatch.setattr(batched_runs, "largest_of_runs", kept)
+    found = designs(ROOT / design_targets.FILE_CASES[0].path)
+    critical = 2 * np.sqrt(2e6 * 40e3)
+    damping = np.array([critical * (1 - 1e-8), critical * (1 + 1e-6), critical * (1 + 1e-4),
+                        1.4e3])
+    values = {"start.torque": np.array([30.0, 60.0, 230.0])[:, None],
+              "trolley_drive.damping": damping[None, :]}
+    for output in ("drive_line.peak", "trolley_drive.peak"):
+        swept = found.largest(output, values)
+        reference = found.per_design(output, values, exact=False)
+        assert swept.shape == (3, 4) and np.all(reference > 0)
+        np.testing.assert_allclose(swept, reference, rtol=1e-9)
+    phases = seen[-1].phases.reshape(3, 4)
+    assert len({tuple(row) for row in phases}) == 3     # each torque its own sequence
+    assert seen[-1].summary["capped"] == 0
