@@ -38,6 +38,7 @@ import numpy as np
 from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
+from crane_sym.bench.roofline import markdown_rows as roofline_rows
 from crane_sym.bench.thread_blocks import markdown_row as thread_markdown_row
 from crane_sym.bench.thread_blocks import thread_row
 from crane_sym.sweep.grid import evaluate_block, run_sweep
@@ -223,6 +224,9 @@ def markdown_rows(r: dict[str, Any]) -> list[str]:
             f"{v['accuracy']:g}: " + ", ".join(v["settings"]) for v in ivp)
             + f". {ivp[0]['runs_with_other_phase_count']} of {ivp[0]['integrator_runs']} "
             "integrator runs found another number of phases than the closed form."]
+    if "roofline" in r.get("threads", {}):
+        t = r["threads"]
+        lines += roofline_rows(t["efficiency"], t["target"], t["roofline"])
     lines.append("")
     return lines
 
