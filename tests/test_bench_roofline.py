@@ -64,3 +64,19 @@ def test_markdown_says_which_rows_are_measured_and_which_modelled():
     assert "*measured*" in text and "*modelled*" in text
     assert "not met: the machine" in text
     assert np.isfinite(rl.amdahl(16, 0.2))
+
+
+def test_parallel_section_alone_from_the_command_line(monkeypatch, capsys):
+    from crane_sym.bench import batched_targets
+    from crane_sym.cli.main import main
+    row = {"designs": 4, "output": "y", "blocks": 2, "block_designs": [2, 2],
+           "scheduler": "threads", "efficiency": 0.5, "no_dask_seconds": 1.0,
+           "dask_seconds": 1.0, "dask_seconds_all": [1.0], "dask_cores": 1.0,
+           "sin": {"efficiency": 0.6, "one_thread_s": 1.0, "two_threads_s": 0.8},
+           "load_before": 1.0, "load_after": 1.0, "same_worst": True, "target": 0.7,
+           "met": False, "roofline": _roof(0.6, 0.9)}
+    monkeypatch.setattr(batched_targets, "thread_row", lambda case: row)
+    assert main(["bench", "--parallel", "--quiet"]) == 0
+    out = capsys.readouterr().out
+    assert "efficiency 50 %" in out and "| 16 | — |" in out
+    assert "not met: the machine" in out

@@ -1,6 +1,8 @@
 """`crane-sym bench`: speed against error of the generated code and the SciPy
 alternatives, the targets table, piecewise-linear runs, sampled loads,
-(with ``--audit``) the main job's time against its targets, (with ``--sweep``)
+(with ``--audit``) the main job's time against its targets, (with
+``--fast-paths``) the fast-path targets alone, (with ``--parallel``) both
+cores against a roofline, (with ``--sweep``)
 design sweeps and (with ``--components FILE``) component
 models from the file to the run.
 
@@ -99,7 +101,7 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
     check_options(args)                  # so does an option out of its range
     # the sections (--audit, --fast-paths, --sweep, --components): without ids, only those
     sections_only = not args.ids and any(getattr(args, name, None) for name in (
-        "audit", "fast_paths", "sweep", "components"))
+        "audit", "fast_paths", "parallel", "sweep", "components"))
     show = args.format == "table"
     if getattr(args, "audit", False):
         with say.task("the main job: audit and generate --check"):
@@ -109,6 +111,11 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
         with say.task("fast paths: np.cos at 1e5 points and peak memory on 1e6"):
             text = fast_paths.markdown(fast_paths.fast_paths(ids))
             _wrote([_write_section(text, out_dir / "bench_fast_paths.md", show)], keep and show)
+    if getattr(args, "parallel", False):
+        from crane_sym.bench.batched_targets import parallel_section
+        with say.task("both cores: a batched sweep on 1 and 2 threads, the roofline"):
+            _wrote([_write_section(parallel_section(), out_dir / "bench_parallel.md", show)],
+                   keep and show)
     if args.sweep:
         output_files.out_folder(out_dir)
         with say.task("design sweeps against per-design integration"):
