@@ -38,11 +38,12 @@ import numpy as np
 from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
+from crane_sym.bench.roofline import markdown_rows as roofline_rows
 from crane_sym.bench.thread_blocks import markdown_row as thread_markdown_row
 from crane_sym.bench.thread_blocks import thread_row
 from crane_sym.sweep.grid import evaluate_block, run_sweep
 
-__all__ = ["large_row", "ivp_rows", "worst_row", "markdown_rows"]
+__all__ = ["large_row", "ivp_rows", "worst_row", "markdown_rows", "parallel_section"]
 
 #: The targets: seconds for 10⁴ designs, the speed-up over the per-design
 #: loop, seconds and bytes for 10⁶, speed-ups over solve_ivp at 1e-6 and 1e-9.
@@ -223,8 +224,26 @@ def markdown_rows(r: dict[str, Any]) -> list[str]:
             f"{v['accuracy']:g}: " + ", ".join(v["settings"]) for v in ivp)
             + f". {ivp[0]['runs_with_other_phase_count']} of {ivp[0]['integrator_runs']} "
             "integrator runs found another number of phases than the closed form."]
+    if "roofline" in r.get("threads", {}):
+        t = r["threads"]
+        lines += roofline_rows(t["efficiency"], t["target"], t["roofline"])
     lines.append("")
     return lines
+
+
+def parallel_section() -> str:
+    """``bench --parallel``: row (f) of the two threads alone, with the
+    roofline and the scaling curve of 1..16 workers beside it (a minute or
+    two, where a whole ``bench --sweep`` takes many on a busy machine)."""
+    from crane_sym.bench.cases import batched_cases
+    found = [c for _, c in batched_cases() if c.targets]
+    if not found:
+        return "# Bench: both cores\n\nNo batched case is marked for the targets.\n"
+    t = thread_row(found[0])
+    return "\n".join(["# Bench: both cores on a batched sweep, and why", "",
+                      "| target | measured | limit | met |", "| --- | --- | --- | --- |",
+                      thread_markdown_row(t),
+                      *roofline_rows(t["efficiency"], t["target"], t["roofline"]), ""])
 
 
 def run_targets(rows: list[dict[str, Any]], designs: int = 10**6) -> dict[str, Any]:

@@ -23,6 +23,7 @@ import numpy as np
 from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
+from crane_sym.bench.roofline import roofline
 from crane_sym.sweep.grid import chunks_for, evaluate_block, run_sweep
 
 __all__ = ["DESIGNS", "EFFICIENCY", "REPEATS", "markdown_row", "thread_row"]
@@ -101,6 +102,8 @@ def thread_row(case: BatchedBenchCase, designs: int = DESIGNS) -> dict[str, Any]
     result = found[-1]
     say.step("  the np.sin control ...")
     control = _sin_control()
+    say.step("  the roofline: memory bandwidth, np.sin and np.add on 1 and 2 threads ...")
+    roof = roofline()
     efficiency = alone / (2 * dask_s)
     worst = max(float(np.nanmax(b)) for b in kept)
     return {"output": case.output, "designs": chosen.points, "blocks": len(parts),
@@ -109,7 +112,7 @@ def thread_row(case: BatchedBenchCase, designs: int = DESIGNS) -> dict[str, Any]
             "no_dask_seconds": alone, "no_dask_seconds_all": alone_all,
             "no_dask_cores": alone_cores, "dask_seconds": dask_s, "dask_seconds_all": dask_all,
             "dask_cores": dask_cores, "efficiency": efficiency, "target": EFFICIENCY,
-            "met": efficiency >= EFFICIENCY, "sin": control,
+            "met": efficiency >= EFFICIENCY, "sin": control, "roofline": roof,
             "same_worst": worst == result.worst[case.output][0],
             "load_before": load_before, "load_after": os.getloadavg()[0]}
 

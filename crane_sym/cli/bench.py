@@ -1,6 +1,8 @@
 """`crane-sym bench`: speed against error of the generated code and the SciPy
 alternatives, the targets table, piecewise-linear runs, sampled loads,
-(with ``--audit``) the main job's time against its targets, (with ``--sweep``)
+(with ``--audit``) the main job's time against its targets, (with
+``--fast-paths``) the fast-path targets alone, (with ``--parallel``) both
+cores against a roofline, (with ``--sweep``)
 design sweeps and (with ``--components FILE``) component
 models from the file to the run.
 
@@ -92,43 +94,47 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
     from crane_sym.bench import functions as bench
     from crane_sym.bench import memory as bench_memory
     from crane_sym.bench import targets as bt
-    from crane_sym.scenes import reading as scenes
+    from crane_sym.bench.fast_paths import bench_inputs
     from crane_sym.bench.report import as_markdown, headline, not_applicable, plot, plot_scaling
     say = progress.current()
     ids = _ids(args.ids)                 # an unknown id fails before the folder is made
     check_options(args)                  # so does an option out of its range
+    # the sections (--audit, --fast-paths, --sweep, --components): without ids, only those
+    sections_only = not args.ids and any(getattr(args, name, None) for name in (
+        "audit", "fast_paths", "parallel", "sweep", "components"))
+    show = args.format == "table"
     if getattr(args, "audit", False):
         with say.task("the main job: audit and generate --check"):
-            _wrote([_bench_audit(out_dir, args.format == "table")],
-                   keep and args.format == "table")
-        if not args.ids and not args.sweep and not getattr(args, "components", None):
-            return 0                       # `bench --audit` alone: the main job only
+            _wrote([_bench_audit(out_dir, show)], keep and show)
+    if getattr(args, "fast_paths", False):
+        from crane_sym.bench import fast_paths
+        with say.task("fast paths: np.cos at 1e5 points and peak memory on 1e6"):
+            text = fast_paths.markdown(fast_paths.fast_paths(ids))
+            _wrote([_write_section(text, out_dir / "bench_fast_paths.md", show)], keep and show)
+    if getattr(args, "parallel", False):
+        from crane_sym.bench.batched_targets import parallel_section
+        with say.task("both cores: a batched sweep on 1 and 2 threads, the roofline"):
+            _wrote([_write_section(parallel_section(), out_dir / "bench_parallel.md", show)],
+                   keep and show)
     if args.sweep:
         output_files.out_folder(out_dir)
         with say.task("design sweeps against per-design integration"):
-            _wrote([cli_sweep.run_bench(out_dir, args.format == "json")],
-                   keep and args.format == "table")
-        if not args.ids and not getattr(args, "components", None):
-            return 0                       # `bench --sweep` alone: the sweep bench only
+            _wrote([cli_sweep.run_bench(out_dir, args.format == "json")], keep and show)
     if getattr(args, "components", None):
-        _wrote([_bench_components(args.components, out_dir, args.format)],
-               keep and args.format == "table")
-        if not args.ids:                   # `bench --components FILE` alone: only that
-            return 0
+        _wrote([_bench_components(args.components, out_dir, args.format)], keep and show)
+    if sections_only:
+        return 0
     everything, goals = [], []
     rtols = args.rtols or (bench.QUICK_RTOLS if args.quick else bench.RTOLS)
     sizes = args.sizes or (bt.QUICK_SIZES if args.quick else bt.SIZES)
     compare = args.compare_points or (bt.QUICK_COMPARE_POINTS if args.quick
                                       else bt.COMPARE_POINTS)
     for i in ids:
-        chosen = [s for s in map(scenes.load_scene, scenes.list_scenes())
-                  if s.derivation == i and not s.load_table and "duration" in s.options]
-        d = registry.get(i)
-        if not chosen or not d.outputs:
+        found = bench_inputs(i)
+        if found is None:
             print(f"{i}: no scene or no generated functions to bench", file=sys.stderr)
             continue
-        values = bench.grid_values(d, chosen)
-        duration = max(s.options["duration"] for s in chosen)
+        d, chosen, values, duration = found
         start = time.perf_counter()
         with say.task(f"{i}: generated functions and integrators, {len(rtols)} tolerances"):
             rows = bench.bench(d, values, duration, points=args.points,

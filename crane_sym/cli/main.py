@@ -365,6 +365,14 @@ def parser() -> argparse.ArgumentParser:
                    help="bench the main job: `audit` of every paper and `generate --check`, "
                         "each in a fresh process, against their targets, and an audit's "
                         "time paper by paper and stage by stage")
+    p.add_argument("--fast-paths", action="store_true",
+                   help="bench the fast-path targets alone: each time function against "
+                   "np.cos at 1e5 points (with the hand-written floor) and its peak memory "
+                   "on 1e6, met / not met")
+    p.add_argument("--parallel", action="store_true",
+                   help="bench both cores alone: a batched sweep on 2 threads against the "
+                   "same blocks on one, with a roofline (memory bandwidth, np.sin, np.add) "
+                   "and a scaling curve of 1..16 workers, met / not met and why")
     p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
                    "per-design integration; alone, only that")
     p.add_argument("--components", nargs="+", metavar="FILE",
