@@ -30,6 +30,7 @@ from typing import Any, Callable
 import sympy as sp
 from sympy.physics.units import Dimension, length, time
 
+from crane_sym.components.kinds.events import Events
 from crane_sym.components.loads import HENRY, OHM
 from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
 
@@ -226,7 +227,8 @@ class Kind:
     its derivation rests on beside them (``shape``), for a part acting on
     one body its share of Q (``acts``), the values that switch the model
     (``switching``), and for a part that joins several coordinates by its
-    own energies its :class:`Coupling` (``couples``)."""
+    own energies its :class:`Coupling` (``couples``), and how its parts
+    switch the model (``events``)."""
 
     table: str
     keys: tuple[Key, ...]
@@ -247,6 +249,11 @@ class Kind:
     stiffness: Callable[[Component], sp.Expr] | None = None
     #: For a part that joins several coordinates by its own T, Π and Φ.
     couples: Coupling | None = None
+    # declared for modes and events
+    #: How its parts switch the model: the mode's values they own, their
+    #: events, guards and rules (:class:`~crane_sym.components.kinds.events.Events`;
+    #: None: they switch nothing).
+    events: Events | None = None
 
     @property
     def part_kind(self) -> str:
