@@ -74,8 +74,10 @@ class ComponentSystem:
         self.backlash = [l for l in a.links if l.gapped]
         #: Each kind that switches (``Kind.events``) with its parts' loads, in
         #: the order of :data:`~crane_sym.components.kinds.KINDS`.
-        self.of_kind = {kind.table: [l for l in a.loads if kind.part_kind == l.part.kind]
-                        for kind in kinds.KINDS}
+        #: The parts of each kind that acts on one body (its loads, its
+        #: contacts), in the order given.
+        self.of_kind = {kind.table: [l for l in (*a.loads, *a.contacts)
+                                     if kind.part_kind == l.part.kind] for kind in kinds.KINDS}
         self.switching = [(kind.events, kind.table, self.of_kind[kind.table])
                           for kind in kinds.KINDS if kind.events is not None]
         # what the walkthrough and the command line name by kind
@@ -100,9 +102,6 @@ class ComponentSystem:
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.contacts = list(a.contacts)
         self.events: dict[str, tuple[str, int]] = {}
-        for j, contact in enumerate(self.contacts):
-            self.events[f"{contact.part.name} lifts off"] = ("lift", j)
-            self.events[f"{contact.part.name} sets down"] = ("land", j)
         for j, l in enumerate(self.backlash):
             for kind, name in _contact_events(l.part).items():
                 self.events[name] = (kind, j)
@@ -351,17 +350,7 @@ class ComponentSystem:
                 out.append(Guard(name["close+"], u, -hi, 1))
                 if np.isfinite(lo):                 # a slack link has no lower flank
                     out.append(Guard(name["close-"], u, -lo, -1))
-        fixed = {c.group for c in self.contacts}
-        for j, contact in enumerate(self.contacts):
-            name, g = contact.part.name, contact.group
-            if mode.motion[g] == HELD:
-                w, k = self.reaction(mode, j)
-                if w.any():                     # a constant reaction never turns negative
-                    out.append(Guard(f"{name} lifts off", tuple(w), k, -1))
-            else:                               # the body's way towards the ground
-                w = np.zeros(self.size)
-                w[self.q(g)] = contact.part.sign * contact.kappa
-                out.append(Guard(f"{name} sets down", tuple(w), 0.0, 1))
+        fixed = set()
         for events, _, loads in self.switching:         # the kinds' own guards
             for i in range(len(loads)):
                 out += [Guard(name, tuple(w), k, d)
@@ -408,14 +397,6 @@ class ComponentSystem:
                 g, kappa = self.moved[i]
                 x[self.v(g)] = self.clock.rows(pieces)[i][0] / kappa
             return replace(mode, pieces=tuple(pieces)), x
-        if kind in ("lift", "land"):
-            g = self.contacts[i].group
-            held = FREE
-            if kind == "land":                  # set down at rest, exactly on the ground
-                x[self.q(g)] = x[self.v(g)] = 0.0
-                w, k = self.reaction(mode.moving(g, HELD), i)
-                held = HELD if float(w @ x + k) >= 0 else FREE
-            return mode.moving(g, held), x
         if kind == "rest":
             return self.rests(mode, i, x)
         x[self.v(i)] = 0.0                        # slides from rest
