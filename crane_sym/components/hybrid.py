@@ -29,6 +29,14 @@ makes the equations of :mod:`crane_sym.components.equations` linear:
   its tracking state slides): a controller's torque limit
   (:mod:`crane_sym.components.first_order`).
 
+This module is the generic machinery: the groups' motion (free, sliding
+against what holds them by friction, held) and the events of links and
+laws. A kind that switches the model declares it in its own module
+(``Kind.events``, :class:`crane_sym.components.kinds.events.Events`: a
+brake, a motor, a characteristic, a ground contact): the system loops over
+those kinds for the mode's values they own, their guards, their rules, what
+they hold by friction and their own states, and asks no part its class.
+
 Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
 solves each phase in closed form and finds the events on those closed forms.
 """
@@ -42,6 +50,7 @@ from crane_sym.components import kinds
 from crane_sym.components.equations import Equations
 from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
+from crane_sym.components.mode_numbers import ModeNumbers
 from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode, memo, solved
 from crane_sym.components.parts import ElasticLink
 from crane_sym.mechanics.piecewise_linear import Guard
@@ -69,7 +78,6 @@ class ComponentSystem:
         a = equations.assembly
         self.assembly = a
         self.extra = dict(extra or {})
-        self._numeric = equations.numeric(self.extra)
         self.n = len(a.groups)
         self.backlash = [l for l in a.links if l.gapped]
         #: Each kind that switches (``Kind.events``) with its parts' loads, in
@@ -119,8 +127,7 @@ class ComponentSystem:
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
         self.events.update(self.first_order.events())
-        self._linear = memo(self._linear_uncached)
-        self._inputs = memo(self._inputs_uncached)
+        self.numbers = ModeNumbers(self)
         # a mode's matrices and guards, kept: a batched sweep asks each design
         # for them once a phase (the copies handed out may be changed)
         self._matrices = memo(self._matrices_uncached)
@@ -162,52 +169,9 @@ class ComponentSystem:
         return self._twists[link.part.name].copy()
 
     # --- the linear pieces --------------------------------------------------------
-    def _flanks(self, contacts: tuple[int, ...]) -> tuple[list[float], list[float]]:
-        chi, delta = [], []
-        for l, c in zip(self.backlash, contacts):
-            lo, hi = l.part.flanks                          # SI, rad or m
-            chi.append(0.0 if c == 0 else 1.0)
-            delta.append(hi if c > 0 else lo if c < 0 else 0.0)
-        return chi, delta
-
-    def inputs(self, mode: Mode) -> tuple[tuple[float, ...], tuple[float, ...]]:
-        """(switches, slopes): the numbers the mode gives the symbols of those
-        roles (a motor's on, a characteristic's slope), from the kinds."""
-        return self._inputs(mode)
-
-    def _inputs_uncached(self, mode: Mode) -> tuple[tuple[float, ...], tuple[float, ...]]:
-        by_role: dict[str, list[float]] = {"switches": [], "slopes": []}
-        for events, _, loads in self.switching:
-            if events.role:
-                by_role[events.role] += [events.value(self, mode, i) for i in range(len(loads))]
-        return tuple(by_role["switches"]), tuple(by_role["slopes"])
-
     def linear(self, mode: Mode):
-        """What :meth:`_linear_uncached` gives for the contacts and inputs of ``mode``."""
-        return self._linear(mode.contacts, *self.inputs(mode))
-
-    def _linear_uncached(self, contacts: tuple[int, ...], on: tuple[float, ...],
-                         slopes: tuple[float, ...]):
-        """(M, D, K, f without friction, laws and states, ∂f/∂B per brake, ∂f/∂L per
-        law, ∂f/∂s per first-order state) of the contacts, the motors' switches
-        and the characteristics' slopes."""
-        chi, delta = self._flanks(contacts)
-        on, slopes = list(on), list(slopes)
-        zero = [0.0] * len(self.equations.friction)
-        M, D, K, f = self._numeric(chi, delta, on, zero, slopes)
-        E = np.zeros((self.n, len(zero)))
-        for k in range(len(zero)):
-            unit = list(zero)
-            unit[k] = 1.0
-            E[:, k] = self._numeric(chi, delta, on, unit, slopes)[3] - f
-        G = np.zeros((self.n, len(self.laws)))
-        for k in range(len(self.laws)):
-            unit = np.eye(len(self.laws))[k]
-            G[:, k] = self._numeric(chi, delta, on, zero, slopes, unit)[3] - f
-        S = np.zeros((self.n, self.size - self.first))
-        for k in range(S.shape[1]):
-            S[:, k] = self._numeric(chi, delta, on, zero, slopes, (), np.eye(S.shape[1])[k])[3] - f
-        return M, D, K, f, E, G, S
+        """(M, D, K, f, E, G, S) of ``mode`` (:class:`ModeNumbers`)."""
+        return self.numbers(mode)
 
     def law_forcing(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(F, c): the laws' generalized forces on the groups as F x + c."""
@@ -428,6 +392,6 @@ class ComponentSystem:
             if position:
                 if mode.contacts[position[0]] == 0:
                     return np.zeros(self.size), 0.0
-                delta = self._flanks(mode.contacts)[1][position[0]]
+                delta = self.numbers.flanks(mode.contacts)[1][position[0]]
             return a * u + b * rate, e * delta
         return affine

@@ -51,11 +51,12 @@ class Events:
     its guards in a mode (:data:`GuardSpec`); ``rules``: the handler of each
     event key. The rest are what the generic machinery asks of a kind that
     acts through it: ``holds(system, mode, i)``, what the part can hold of
-    its group's load by friction (w, k) or None; ``fixes(system, mode, i)``,
+    its group's load by friction, (group, column of its own state or None,
+    size: the capacity is size·x[column], or size itself), or None; ``fixes(system, mode, i)``,
     the group the part itself keeps still (no friction guard for it) or
     None; ``states(part)``, how many states of its own (a brake's build-up)
     and ``rates(system, mode, i, A, b)``, their rows; ``role`` and
-    ``value(part, mode, i)``, the number its symbol of that role
+    ``value(system, mode, i)``, the number its symbol of that role
     (:data:`~crane_sym.components.kinds.base.ROLES`) takes in a mode (a
     motor's switch, a characteristic's slope)."""
 
@@ -70,4 +71,4 @@ class Events:
     states: Callable[[Component], int] = lambda part: 0
     rates: Callable[[Any, Any, int, Any, Any], None] | None = None
     role: str = ""
-    value: Callable[[Component, Any, int], float] | None = None
+    value: Callable[[Any, Any, int], float] | None = None
