@@ -80,12 +80,12 @@ class ComponentSystem:
         self.extra = dict(extra or {})
         self.n = len(a.groups)
         self.backlash = [l for l in a.links if l.gapped]
-        #: Each kind that switches (``Kind.events``) with its parts' loads, in
-        #: the order of :data:`~crane_sym.components.kinds.KINDS`.
         #: The parts of each kind that acts on one body (its loads, its
         #: contacts), in the order given.
         self.of_kind = {kind.table: [l for l in (*a.loads, *a.contacts)
                                      if kind.part_kind == l.part.kind] for kind in kinds.KINDS}
+        #: Each kind that switches (``Kind.events``): its events, table and
+        #: parts, in the order of :data:`~crane_sym.components.kinds.KINDS`.
         self.switching = [(kind.events, kind.table, self.of_kind[kind.table])
                           for kind in kinds.KINDS if kind.events is not None]
         # what the walkthrough and the command line name by kind
