@@ -30,12 +30,12 @@ makes the equations of :mod:`crane_sym.components.equations` linear:
   (:mod:`crane_sym.components.first_order`).
 
 This module is the generic machinery: the groups' motion (free, sliding
-against what holds them by friction, held) and the events of links and
-laws. A kind that switches the model declares it in its own module
-(``Kind.events``, :class:`crane_sym.components.kinds.events.Events`: a
-brake, a motor, a characteristic, a ground contact): the system loops over
-those kinds for the mode's values they own, their guards, their rules, what
-they hold by friction and their own states, and asks no part its class.
+against what holds them by friction, held) and the laws' pieces. A kind that
+switches the model declares it in its own module (``Kind.events``,
+:class:`crane_sym.components.kinds.events.Events`: a brake, a motor, a
+characteristic, a ground contact, a gapped elastic link): the system loops
+over those kinds for the mode's values they own, their guards, their rules,
+what they hold by friction and their own states, and asks no part its class.
 
 Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
 solves each phase in closed form and finds the events on those closed forms.
@@ -52,20 +52,9 @@ from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.mode_numbers import ModeNumbers
 from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode, memo, solved
-from crane_sym.components.parts import ElasticLink
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["BACKWARD", "FORWARD", "FREE", "HELD", "ComponentSystem", "Mode"]
-
-
-def _contact_events(part: ElasticLink) -> dict[str, str]:
-    """The names of a gapped link's contact events by kind: a backlash link
-    ``opens`` and ``closes +``/``-``; a slack rope ``snaps taut`` and ``goes
-    slack`` (it has no lower flank)."""
-    if part.slack is not None:
-        return {"open": f"{part.name} goes slack", "close+": f"{part.name} snaps taut"}
-    return {"open": f"{part.name} opens", "close+": f"{part.name} closes +",
-            "close-": f"{part.name} closes -"}
 
 
 class ComponentSystem:
@@ -80,9 +69,9 @@ class ComponentSystem:
         self.extra = dict(extra or {})
         self.n = len(a.groups)
         self.backlash = [l for l in a.links if l.gapped]
-        #: The parts of each kind that acts on one body (its loads, its
-        #: contacts), in the order given.
-        self.of_kind = {kind.table: [l for l in (*a.loads, *a.contacts)
+        #: The parts of each kind as assembled (its loads, contacts or links),
+        #: in the order given.
+        self.of_kind = {kind.table: [l for l in (*a.loads, *a.contacts, *a.links)
                                      if kind.part_kind == l.part.kind] for kind in kinds.KINDS}
         #: Each kind that switches (``Kind.events``): its events, table and
         #: parts, in the order of :data:`~crane_sym.components.kinds.KINDS`.
@@ -110,10 +99,6 @@ class ComponentSystem:
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.contacts = list(a.contacts)
         self.events: dict[str, tuple[str, int]] = {}
-        for j, l in enumerate(self.backlash):
-            for kind, name in _contact_events(l.part).items():
-                self.events[name] = (kind, j)
-            self.events[f"{l.part.name} breaks"] = ("break", j)
         for g, group in enumerate(a.groups):
             for suffix, kind in ((" rests", "rest"), (" slips +", "slip+"),
                                  (" slips -", "slip-")):
@@ -300,20 +285,6 @@ class ComponentSystem:
 
     def _guards_uncached(self, mode: Mode) -> tuple[Guard, ...]:
         out = []
-        for j, (l, c) in enumerate(zip(self.backlash, mode.contacts)):
-            if j in mode.cut or not l.part.opens:      # cut, or a gap of width 0
-                continue
-            u = tuple(self.twist(l))
-            lo, hi = l.part.flanks
-            name = _contact_events(l.part)
-            if c > 0:
-                out.append(Guard(name["open"], u, -hi, -1))
-            elif c < 0:
-                out.append(Guard(name["open"], u, -lo, 1))
-            else:
-                out.append(Guard(name["close+"], u, -hi, 1))
-                if np.isfinite(lo):                 # a slack link has no lower flank
-                    out.append(Guard(name["close-"], u, -lo, -1))
         fixed = set()
         for events, _, loads in self.switching:         # the kinds' own guards
             for i in range(len(loads)):
@@ -348,11 +319,6 @@ class ComponentSystem:
             free = self._matrices(replace(mode, limits=tuple(0 for _ in mode.limits)))
             return replace(mode, limits=self.first_order.switch(kind, i, mode.limits, x,
                                                                 free)), x
-        if kind in ("open", "close+", "close-", "break"):
-            contacts = list(mode.contacts)
-            contacts[i] = {"open": 0, "close+": 1, "close-": -1, "break": 0}[kind]
-            cut = tuple(sorted({*mode.cut, i})) if kind == "break" else mode.cut
-            return replace(mode, contacts=tuple(contacts), cut=cut), x
         if kind == "piece":
             pieces = list(mode.pieces)
             pieces[i] += 1

@@ -229,16 +229,15 @@ class Model:
     def schedule(self, rest: bool = False) -> tuple[tuple[float, str], ...]:
         """The events known in advance: each switching kind's (a brake
         engaging, its ramp ending, released; a motor switched off; a
-        characteristic's steps; :class:`~crane_sym.components.kinds.events.Events`),
-        links cut (``fails_at``) and motor laws' pieces; for a start at
+        characteristic's steps; a link cut at ``fails_at``;
+        :class:`~crane_sym.components.kinds.events.Events`) and motor laws' pieces; for a start at
         ``rest``, without those its mode has taken already."""
         out = []
         for kind in kinds.KINDS:
             if kind.events is not None:
-                out += [e for l in self.assembly.loads if l.part.kind == kind.part_kind
+                out += [e for l in (*self.assembly.loads, *self.assembly.links)
+                        if l.part.kind == kind.part_kind
                         for e in kind.events.schedule(l.part, rest)]
-        out += [(l.part.fails_at, f"{l.part.name} breaks") for l in self.assembly.links
-                if l.part.fails_at is not None]
         out += LawClock(clocked([l.part for l in self.assembly.loads]), 0).schedule()
         return tuple(sorted(out))
 
