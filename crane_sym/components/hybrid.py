@@ -29,82 +29,32 @@ makes the equations of :mod:`crane_sym.components.equations` linear:
   its tracking state slides): a controller's torque limit
   (:mod:`crane_sym.components.first_order`).
 
+This module is the generic machinery: the groups' motion (free, sliding
+against what holds them by friction, held) and the laws' pieces. A kind that
+switches the model declares it in its own module (``Kind.events``,
+:class:`crane_sym.components.kinds.events.Events`: a brake, a motor, a
+characteristic, a ground contact, a gapped elastic link): the system loops
+over those kinds for the mode's values they own, their guards, their rules,
+what they hold by friction and their own states, and asks no part its class.
+
 Between events the model is linear, so :func:`crane_sym.mechanics.piecewise_linear.simulate`
 solves each phase in closed form and finds the events on those closed forms.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
-from typing import Callable
+from dataclasses import replace
 
 import numpy as np
 
+from crane_sym.components import kinds
 from crane_sym.components.equations import Equations
 from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
-from crane_sym.components.loads import Brake, Characteristic, Motor
-from crane_sym.components.parts import ComponentError, ElasticLink
+from crane_sym.components.mode_numbers import ModeNumbers
+from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode, memo, solved
 from crane_sym.mechanics.piecewise_linear import Guard
 
-__all__ = ["ComponentSystem", "Mode"]
-
-FREE, FORWARD, BACKWARD, HELD = "free", "+", "-", "0"
-
-
-@dataclass(frozen=True)
-class Mode:
-    """Contacts of the backlash links, motion of each group, brakes engaged,
-    motors on, ramps under way (see the module docstring)."""
-
-    contacts: tuple[int, ...]
-    motion: tuple[str, ...]
-    engaged: tuple[bool, ...]
-    driven: tuple[bool, ...]
-    ramping: tuple[bool, ...]
-    steps: tuple[int, ...] = ()
-    pieces: tuple[int, ...] = ()
-    #: The gapped links cut for good (their places in ``contacts``; contact 0).
-    cut: tuple[int, ...] = ()
-    #: Each first-order limit free (0) or at its bound (see the module docstring).
-    limits: tuple[int, ...] = ()
-
-
-def _contact_events(part: ElasticLink) -> dict[str, str]:
-    """The names of a gapped link's contact events by kind: a backlash link
-    ``opens`` and ``closes +``/``-``; a slack rope ``snaps taut`` and ``goes
-    slack`` (it has no lower flank)."""
-    if part.slack is not None:
-        return {"open": f"{part.name} goes slack", "close+": f"{part.name} snaps taut"}
-    return {"open": f"{part.name} opens", "close+": f"{part.name} closes +",
-            "close-": f"{part.name} closes -"}
-
-
-def _memo(func: Callable) -> Callable:
-    """``func`` with its results kept by arguments (a dict: a system is built
-    per design of a sweep, and ``functools.lru_cache`` costs ~70 µs to make)."""
-    kept: dict = {}
-
-    def cached(*args):
-        try:
-            return kept[args]
-        except KeyError:
-            out = kept[args] = func(*args)
-            return out
-    return cached
-
-
-def _solved(M: np.ndarray, R: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(M⁻¹ R, M⁻¹ r): divided row by row where M is diagonal (rigid groups
-    without a coupling of several coordinates: a division is exact to the
-    last bit, where LAPACK may multiply by a reciprocal), else solved."""
-    if not np.count_nonzero(M - np.diag(np.diag(M))):
-        m = np.diag(M)
-        return R / m[:, None], r / m
-    if np.linalg.matrix_rank(M) < len(M):
-        raise ComponentError("the mass matrix of the moving groups is singular: a coupling "
-                             "leaves a coordinate without inertia")
-    both = np.linalg.solve(M, np.hstack([R, r[:, None]]))
-    return both[:, :-1], both[:, -1]
+__all__ = ["BACKWARD", "FORWARD", "FREE", "HELD", "ComponentSystem", "Mode"]
 
 
 class ComponentSystem:
@@ -117,55 +67,74 @@ class ComponentSystem:
         a = equations.assembly
         self.assembly = a
         self.extra = dict(extra or {})
-        self._numeric = equations.numeric(self.extra)
         self.n = len(a.groups)
         self.backlash = [l for l in a.links if l.gapped]
-        self.brakes = [l for l in a.loads if isinstance(l.part, Brake)]
-        self.motors = [l for l in a.loads if isinstance(l.part, Motor)]
-        self.characteristics = [l for l in a.loads if isinstance(l.part, Characteristic)]
-        built = [i for i, b in enumerate(self.brakes) if b.part.build_up != "step"]
-        self.beta = {i: 2 * self.n + j for j, i in enumerate(built)}
+        #: The parts of each kind as assembled (its loads, contacts or links),
+        #: in the order given.
+        self.of_kind = {kind.table: [l for l in (*a.loads, *a.contacts, *a.links)
+                                     if kind.part_kind == l.part.kind] for kind in kinds.KINDS}
+        #: Each kind that switches (``Kind.events``): its events, table and
+        #: parts, in the order of :data:`~crane_sym.components.kinds.KINDS`.
+        self.switching = [(kind.events, kind.table, self.of_kind[kind.table])
+                          for kind in kinds.KINDS if kind.events is not None]
+        # what the walkthrough and the command line name by kind
+        self.brakes, self.motors, self.characteristics = (
+            self.of_kind.get(t, []) for t in ("brake", "motor", "characteristic"))
+        #: The column of each part's own state, by (its kind's table, its place).
+        self.columns: dict[tuple[str, int], int] = {}
+        for events, table, loads in self.switching:
+            for i, load in enumerate(loads):
+                for _ in range(events.states(load.part)):
+                    self.columns[table, i] = 2 * self.n + len(self.columns)
+        own = len(self.columns)
+        self.beta = {i: col for (t, i), col in self.columns.items() if t == "brake"}
         self.laws = clocked([l.part for l in a.loads])
-        self.clock = LawClock(self.laws, 2 * self.n + len(built))
-        self.first = 2 * self.n + len(built) + self.clock.size
+        self.clock = LawClock(self.laws, 2 * self.n + own)
+        self.first = 2 * self.n + own + self.clock.size
         self.size = self.first + len(equations.states)
         self.first_order = FirstOrder(equations, self.n, self.first, self.size, self.extra)
         self.limits = self.first_order.limits
         self.moved = {k: a.place[law.body][:2] for k, law in enumerate(self.laws)
                       if law.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
-        self.brake_kappa = [a.place[b.part.body][1] for b in self.brakes]
         self.contacts = list(a.contacts)
         self.events: dict[str, tuple[str, int]] = {}
-        for j, contact in enumerate(self.contacts):
-            self.events[f"{contact.part.name} lifts off"] = ("lift", j)
-            self.events[f"{contact.part.name} sets down"] = ("land", j)
-        for j, l in enumerate(self.backlash):
-            for kind, name in _contact_events(l.part).items():
-                self.events[name] = (kind, j)
-            self.events[f"{l.part.name} breaks"] = ("break", j)
         for g, group in enumerate(a.groups):
             for suffix, kind in ((" rests", "rest"), (" slips +", "slip+"),
                                  (" slips -", "slip-")):
                 self.events[group.name + suffix] = (kind, g)
-        for k, b in enumerate(self.brakes):
-            self.events[f"{b.part.name} engages"] = ("engage", k)
-            self.events[f"{b.part.name} ramp done"] = ("ramped", k)
-            self.events[f"{b.part.name} releases"] = ("let go", k)
-        for m, motor in enumerate(self.motors):
-            self.events[f"{motor.part.name} off"] = ("off", m)
-        for m, law in enumerate(self.characteristics):
-            self.events[f"{law.part.name} next step"] = ("step", m)
+        #: The rule of each kind's event, by its event's name: (rule, place).
+        self.rules: dict[str, tuple] = {}
+        for events, _, loads in self.switching:
+            for i, load in enumerate(loads):
+                for name, key in events.names(load.part):
+                    self.rules[name] = (events.rules[key], i)
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
         self.events.update(self.first_order.events())
-        self._linear = _memo(self._linear_uncached)
+        self.numbers = ModeNumbers(self)
         # a mode's matrices and guards, kept: a batched sweep asks each design
         # for them once a phase (the copies handed out may be changed)
-        self._matrices = _memo(self._matrices_uncached)
-        self._guards = _memo(self._guards_uncached)
-        self._link_loads = _memo(self._link_load_uncached)
+        self._matrices = memo(self._matrices_uncached)
+        self._guards = memo(self._guards_uncached)
+        self._link_loads = memo(self._link_load_uncached)
         self._twists: dict[str, np.ndarray] = {}
+
+    def start(self, rest: bool) -> dict[str, tuple]:
+        """Each field the kinds' parts own, with its values at the start
+        (steady, or at ``rest``)."""
+        out: dict[str, list] = {}
+        for events, _, loads in self.switching:
+            for f in events.fields:
+                out.setdefault(f, [])
+            for load in loads:
+                for f, v in events.start(load.part, rest).items():
+                    out[f].append(v)
+        return {f: tuple(v) for f, v in out.items()}
+
+    def place(self, load) -> tuple[int, float]:
+        """(group, κ) of the body a load acts on."""
+        return self.assembly.place[load.part.body][:2]
 
     # --- positions in the state -------------------------------------------------
     def q(self, g: int) -> int:
@@ -185,48 +154,19 @@ class ComponentSystem:
         return self._twists[link.part.name].copy()
 
     # --- the linear pieces --------------------------------------------------------
-    def _flanks(self, contacts: tuple[int, ...]) -> tuple[list[float], list[float]]:
-        chi, delta = [], []
-        for l, c in zip(self.backlash, contacts):
-            lo, hi = l.part.flanks                          # SI, rad or m
-            chi.append(0.0 if c == 0 else 1.0)
-            delta.append(hi if c > 0 else lo if c < 0 else 0.0)
-        return chi, delta
-
-    def _linear_uncached(self, contacts: tuple[int, ...], driven: tuple[bool, ...],
-                         steps: tuple[int, ...] = ()):
-        """(M, D, K, f without friction, laws and states, ∂f/∂B per brake, ∂f/∂L per
-        law, ∂f/∂s per first-order state) of the contacts, the motors and the
-        characteristics' steps."""
-        chi, delta = self._flanks(contacts)
-        on = [1.0 if d else 0.0 for d in driven]
-        slopes = [law.values[1 + min(k, len(law.values) - 2)]
-                  for law, k in zip(self.characteristics, steps or [0] * len(self.characteristics))]
-        zero = [0.0] * len(self.brakes)
-        M, D, K, f = self._numeric(chi, delta, on, zero, slopes)
-        E = np.zeros((self.n, len(self.brakes)))
-        for k in range(len(self.brakes)):
-            unit = list(zero)
-            unit[k] = 1.0
-            E[:, k] = self._numeric(chi, delta, on, unit, slopes)[3] - f
-        G = np.zeros((self.n, len(self.laws)))
-        for k in range(len(self.laws)):
-            unit = np.eye(len(self.laws))[k]
-            G[:, k] = self._numeric(chi, delta, on, zero, slopes, unit)[3] - f
-        S = np.zeros((self.n, self.size - self.first))
-        for k in range(S.shape[1]):
-            S[:, k] = self._numeric(chi, delta, on, zero, slopes, (), np.eye(S.shape[1])[k])[3] - f
-        return M, D, K, f, E, G, S
+    def linear(self, mode: Mode):
+        """(M, D, K, f, E, G, S) of ``mode`` (:class:`ModeNumbers`)."""
+        return self.numbers(mode)
 
     def law_forcing(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(F, c): the laws' generalized forces on the groups as F x + c."""
-        G = self._linear(mode.contacts, mode.driven, mode.steps)[5]
+        G = self.linear(mode)[5]
         W, c = self.clock.signals(mode.pieces, self.size)
         return G @ W, G @ c
 
     def net_load(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """The generalized load on group g but its brakes' friction, as w·x + k."""
-        M = self._linear(mode.contacts, mode.driven, mode.steps)[0]
+        M = self.linear(mode)[0]
         R, r = self._pushes(mode)
         w, k = R[g].copy(), float(r[g])
         coupled = [j for j in range(self.n) if j != g and M[g, j] != 0]
@@ -240,25 +180,43 @@ class ComponentSystem:
     def _pushes(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(R, r): the generalized forces on the groups, but the brakes' friction,
         as R x + r: the right-hand side of M q̈ = R x + r."""
-        D, K, f = self._linear(mode.contacts, mode.driven, mode.steps)[1:4]
+        D, K, f = self.linear(mode)[1:4]
         F, c = self.law_forcing(mode)
         R = F.copy()
         R[:, 0:2 * self.n:2] -= K
         R[:, 1:2 * self.n:2] -= D
-        R[:, self.first:] += self._linear(mode.contacts, mode.driven, mode.steps)[6]
+        R[:, self.first:] += self.linear(mode)[6]
         return R, f + c
 
     def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
-        """What the engaged brakes of group g can hold, Σ |κ| M β, as w·x + k."""
+        """What the parts holding group g by friction can hold (the engaged
+        brakes' Σ |κ| M β), as w·x + k, from each kind's ``holds``."""
         w, k = np.zeros(self.size), 0.0
-        for i, brake in enumerate(self.brakes):
-            if self.brake_group[i] == g and mode.engaged[i]:
-                size = abs(self.brake_kappa[i]) * brake.load
-                if i in self.beta:
-                    w[self.beta[i]] += size
-                else:
-                    k += size
+        for events, _, loads in self.switching:
+            if events.holds is None:
+                continue
+            for i in range(len(loads)):
+                held = events.holds(self, mode, i)
+                if held is not None and held[0] == g:
+                    _, column, size = held
+                    if column is None:
+                        k += size
+                    else:
+                        w[column] += size
         return w, k
+
+    def settled(self, mode: Mode, g: int, x: np.ndarray) -> str:
+        """How group g moves from rest in state x: held while its load is
+        within what holds it, else sliding the way the load pushes."""
+        held = mode.moving(g, HELD)
+        (wn, kn), (wc, kc) = self.net_load(held, g), self.capacity(held, g)
+        net, cap = float(wn @ x + kn), float(wc @ x + kc)
+        return HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
+
+    def rests(self, mode: Mode, g: int, x: np.ndarray) -> tuple[Mode, np.ndarray]:
+        """Group g brought to rest (its speed set to 0), then :meth:`settled`."""
+        x[self.v(g)] = 0.0
+        return mode.moving(g, self.settled(mode, g, x)), x
 
     def reaction(self, mode: Mode, j: int) -> tuple[np.ndarray, float]:
         """The ground's reaction on the body of contact ``j`` as w·x + k: what
@@ -280,7 +238,7 @@ class ComponentSystem:
         solved for the accelerations of the groups that move freely; a held
         group's is 0, a speed law's group's the law's (they enter the others'
         rows through a full M's off-diagonal entries)."""
-        M = self._linear(mode.contacts, mode.driven, mode.steps)[0]
+        M = self.linear(mode)[0]
         R, r = self._pushes(mode)
         A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
         self.clock.fill(A, b, mode.pieces)
@@ -308,19 +266,15 @@ class ComponentSystem:
                 R = R - coupling @ A[known]
                 r = r - coupling @ b[known]
             mass = M[np.ix_(free, free)]
-            A[rows], b[rows] = _solved(mass, R, r)
+            A[rows], b[rows] = solved(mass, R, r)
             if S.any() or s.any():
-                friction = _solved(mass, S[free], s[free])
+                friction = solved(mass, S[free], s[free])
                 A[rows] -= friction[0]
                 b[rows] -= friction[1]
-        for i, col in self.beta.items():
-            part = self.brakes[i].part
-            if not mode.engaged[i]:
-                continue
-            if part.build_up == "ramp" and mode.ramping[i]:
-                b[col] = 1.0 / part.time
-            elif part.build_up == "exponential":
-                A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
+        for events, _, loads in self.switching:         # the parts' own states
+            if events.rates is not None:
+                for i in range(len(loads)):
+                    events.rates(self, mode, i, A, b)
         self.first_order.hold(A, b, mode.limits)
         return A, b
 
@@ -331,34 +285,16 @@ class ComponentSystem:
 
     def _guards_uncached(self, mode: Mode) -> tuple[Guard, ...]:
         out = []
-        for j, (l, c) in enumerate(zip(self.backlash, mode.contacts)):
-            if j in mode.cut or not l.part.opens:      # cut, or a gap of width 0
-                continue
-            u = tuple(self.twist(l))
-            lo, hi = l.part.flanks
-            name = _contact_events(l.part)
-            if c > 0:
-                out.append(Guard(name["open"], u, -hi, -1))
-            elif c < 0:
-                out.append(Guard(name["open"], u, -lo, 1))
-            else:
-                out.append(Guard(name["close+"], u, -hi, 1))
-                if np.isfinite(lo):                 # a slack link has no lower flank
-                    out.append(Guard(name["close-"], u, -lo, -1))
-        grounded = {c.group for c in self.contacts}
-        for j, contact in enumerate(self.contacts):
-            name, g = contact.part.name, contact.group
-            if mode.motion[g] == HELD:
-                w, k = self.reaction(mode, j)
-                if w.any():                     # a constant reaction never turns negative
-                    out.append(Guard(f"{name} lifts off", tuple(w), k, -1))
-            else:                               # the body's way towards the ground
-                w = np.zeros(self.size)
-                w[self.q(g)] = contact.part.sign * contact.kappa
-                out.append(Guard(f"{name} sets down", tuple(w), 0.0, 1))
+        fixed = set()
+        for events, _, loads in self.switching:         # the kinds' own guards
+            for i in range(len(loads)):
+                out += [Guard(name, tuple(w), k, d)
+                        for name, w, k, d in events.guards(self, mode, i)]
+                if events.fixes is not None:
+                    fixed.add(events.fixes(self, mode, i))
         for g, state in enumerate(mode.motion):
             name = self.assembly.groups[g].name
-            if g in grounded:
+            if g in fixed:                   # held by a part, not by friction
                 continue
             if state in (FORWARD, BACKWARD):
                 out.append(Guard(f"{name} rests", tuple(np.eye(self.size)[self.v(g)]), 0.0,
@@ -374,21 +310,15 @@ class ComponentSystem:
 
     def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
         """The next mode and state after a guard or a scheduled event."""
-        kind, i = self.events[event]
         x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
+        if event in self.rules:                   # a kind's own event
+            rule, i = self.rules[event]
+            return rule(self, mode, i, x)
+        kind, i = self.events[event]
         if kind in ("limit+", "limit-", "within", "release"):
             free = self._matrices(replace(mode, limits=tuple(0 for _ in mode.limits)))
             return replace(mode, limits=self.first_order.switch(kind, i, mode.limits, x,
                                                                 free)), x
-        if kind in ("open", "close+", "close-", "break"):
-            contacts = list(mode.contacts)
-            contacts[i] = {"open": 0, "close+": 1, "close-": -1, "break": 0}[kind]
-            cut = tuple(sorted({*mode.cut, i})) if kind == "break" else mode.cut
-            return replace(mode, contacts=tuple(contacts), cut=cut), x
-        if kind == "step":
-            steps = list(mode.steps)
-            steps[i] += 1
-            return replace(mode, steps=tuple(steps)), x
         if kind == "piece":
             pieces = list(mode.pieces)
             pieces[i] += 1
@@ -397,70 +327,10 @@ class ComponentSystem:
                 g, kappa = self.moved[i]
                 x[self.v(g)] = self.clock.rows(pieces)[i][0] / kappa
             return replace(mode, pieces=tuple(pieces)), x
-        if kind == "off":
-            driven = list(mode.driven)
-            driven[i] = False
-            return replace(mode, driven=tuple(driven)), x
-        if kind in ("lift", "land"):
-            g = self.contacts[i].group
-            held = HELD
-            if kind == "land":                  # set down at rest, exactly on the ground
-                x[self.q(g)] = x[self.v(g)] = 0.0
-                down = replace(mode, motion=tuple(HELD if j == g else m
-                                                  for j, m in enumerate(mode.motion)))
-                w, k = self.reaction(down, i)
-                held = HELD if float(w @ x + k) >= 0 else FREE
-            else:
-                held = FREE
-            return replace(mode, motion=tuple(held if j == g else m
-                                              for j, m in enumerate(mode.motion))), x
-        if kind == "ramped":
-            ramping = list(mode.ramping)
-            ramping[i] = False
-            x[self.beta[i]] = 1.0
-            return replace(mode, ramping=tuple(ramping)), x
-        motion, g = list(mode.motion), i
-        if kind == "let go":
-            return self._release(mode, i, x), x
-        if kind == "engage":
-            engaged, ramping = list(mode.engaged), list(mode.ramping)
-            engaged[i] = True
-            ramping[i] = self.brakes[i].part.build_up == "ramp"
-            mode = replace(mode, engaged=tuple(engaged), ramping=tuple(ramping))
-            g = self.brake_group[i]
-            if motion[g] != FREE:
-                return mode, x
-            speed = x[self.v(g)]
-            if speed:
-                motion[g] = FORWARD if speed > 0 else BACKWARD
-                return replace(mode, motion=tuple(motion)), x
-            kind = "rest"                        # of the brake's group g, not of group i
-        x[self.v(g)] = 0.0
-        if kind == "slip+":
-            motion[g] = FORWARD
-        elif kind == "slip-":
-            motion[g] = BACKWARD
-        else:                                    # at rest: held while the load is within
-            held = replace(mode, motion=tuple(motion[:g] + [HELD] + motion[g + 1:]))
-            (wn, kn), (wc, kc) = self.net_load(held, g), self.capacity(held, g)
-            net, cap = float(wn @ x + kn), float(wc @ x + kc)
-            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
-        return replace(mode, motion=tuple(motion)), x
-
-    def _release(self, mode: Mode, i: int, x: np.ndarray) -> Mode:
-        """Brake i released for good: its group free if no other brake is
-        engaged on it, else held only while the rest still hold its load."""
-        engaged, ramping = list(mode.engaged), list(mode.ramping)
-        engaged[i] = ramping[i] = False
-        mode = replace(mode, engaged=tuple(engaged), ramping=tuple(ramping))
-        g, motion = self.brake_group[i], list(mode.motion)
-        if not any(on and self.brake_group[k] == g for k, on in enumerate(engaged)):
-            motion[g] = FREE
-        elif motion[g] == HELD:
-            (wn, kn), (wc, kc) = self.net_load(mode, g), self.capacity(mode, g)
-            net, cap = float(wn @ x + kn), float(wc @ x + kc)
-            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
-        return replace(mode, motion=tuple(motion))
+        if kind == "rest":
+            return self.rests(mode, i, x)
+        x[self.v(i)] = 0.0                        # slides from rest
+        return mode.moving(i, FORWARD if kind == "slip+" else BACKWARD), x
 
     # --- outputs ------------------------------------------------------------------
     def contact_load(self, j: int):
@@ -488,6 +358,6 @@ class ComponentSystem:
             if position:
                 if mode.contacts[position[0]] == 0:
                     return np.zeros(self.size), 0.0
-                delta = self._flanks(mode.contacts)[1][position[0]]
+                delta = self.numbers.flanks(mode.contacts)[1][position[0]]
             return a * u + b * rate, e * delta
         return affine

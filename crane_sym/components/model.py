@@ -28,23 +28,22 @@ them) and hands the :class:`~crane_sym.components.hybrid.ComponentSystem` to
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from functools import cached_property, partial
 from typing import Sequence
 
 import numpy as np
 
-from crane_sym.components.contacts import ContactPeak, contact_peaks, resting
+from crane_sym.components.contacts import ContactPeak, contact_peaks
 from crane_sym.components.equations import Equations, derive
-from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, HELD, ComponentSystem, Mode
-from crane_sym.components.initial import apply, shifts
+from crane_sym.components import kinds
+from crane_sym.components.hybrid import ComponentSystem, Mode
+from crane_sym.components.initial import shifts
 from crane_sym.components.laws import LawClock, clocked
-from crane_sym.components.loads import Brake, Characteristic, Motor
 from crane_sym.components.model_limits import MAX_PHASES, check_cycles
-from crane_sym.components.parts import (DIMENSIONS, ROTATING, Component, ComponentError, Given,
-                                        value)
+from crane_sym.components.parts import ROTATING, Component, ComponentError, Given, value
 from crane_sym.components.pruning import Dropped, Scope, needed
-from crane_sym.components.steady import balance
+from crane_sym.components.start import rest_start, steady_start
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import (PhaseFormError, PhaseLimitError, PiecewiseResult,
@@ -196,135 +195,17 @@ class Model:
     @property
     def steady_motor(self):
         """The symbol of the torque of the ``steady`` motor, or None."""
-        for load, symbol in zip([l for l in self.assembly.loads if isinstance(l.part, Motor)],
-                                self.equations.motor_loads):
-            if load.load is None:
-                return symbol
-        return None
+        return next((s for s in self.equations.motor_loads if s not in self.equations.values),
+                    None)
 
     def start(self, body: str | None = None, speed: Given = 0.0, rest: bool = False
               ) -> tuple[Mode, np.ndarray, dict]:
-        """The state at t = 0: (mode, state, solved values).
-
-        Steady (the default): every group moves at the speed ``body``'s
-        ``speed`` implies (no link twisting), every link rests at the twist that
-        balances the loads with all motors on, on the flank its load pushes it
-        to; a ``steady`` motor's torque is solved with the twists, and so is
-        every first-order state, at rest (a DC motor's current, a PI loop's
-        integral: :func:`~crane_sym.components.steady.balance`); every motor
-        law at its value just before t = 0 (0; an acceleration law's a = 0: its
-        motor then holds the drive against the other loads). ``rest``:
-        everything at rest at zero twist, every gap open (a link with backlash
-        at the end of its gap where its twist is zero; a link that only fails,
-        its gap of width 0, on its flank), whatever the loads.
-        Then each ``[[initial]]`` state moves its body and sets its speed
-        (:func:`~crane_sym.components.initial.apply`).
-        """
-        a = self.assembly
+        """The state at t = 0: (mode, state, solved values), steady or at
+        ``rest`` (:func:`~crane_sym.components.start.steady_start`,
+        :func:`~crane_sym.components.start.rest_start`)."""
         if rest:
-            return self._rest_start()
-        if a.contacts:
-            raise ComponentError(f"{a.contacts[0].part.label}: a body on the ground starts at "
-                                 "rest; give [run] start = \"rest\"")
-        if a.couplings:
-            raise ComponentError(f"start: a steady start sets the speeds through the elastic "
-                                 f"links, not through {a.couplings[0].label}; start at rest")
-        body = body or next(iter(a.bodies))
-        if body not in a.bodies:
-            raise ComponentError(f"start: unknown body {body!r}; bodies: {', '.join(a.bodies)}")
-        v = value(f"start of {body!r}", "speed", speed,
-                  DIMENSIONS["speed"][a.bodies[body].motion]).si
-        n = len(a.groups)
-        rates = [None] * n
-        g0, k0, _ = a.place[body]
-        rates[g0] = v / k0
-        changed = True
-        while changed:
-            changed = False
-            for link in a.links:
-                for near, far in (ends := a.ends(link), ends[::-1]):
-                    here = 0.0 if near.group is None else rates[near.group]
-                    if here is not None and far.group is not None and rates[far.group] is None:
-                        rates[far.group], changed = here * near.kappa / far.kappa, True
-        for link in a.links:
-            if sum(w * rates[g] for g, w in a.weights(link)) != 0:
-                raise ComponentError(f"start: {link.part.label} holds a body to the ground, "
-                                     f"which cannot move at the steady speed {v:g} of "
-                                     f"{a.bodies[body].label}; start at speed 0")
-        steady = self.steady_motor
-        probe = ComponentSystem(self.equations, {steady: 0.0} if steady is not None else {})
-        unit = ComponentSystem(self.equations, {steady: 1.0}) if steady is not None else None
-        driven = tuple(True for _ in probe.motors)
-        contacts = tuple(1 for _ in probe.backlash)
-        for _ in range(2 * len(contacts) + 2):
-            solved = balance(probe, unit, contacts, driven, np.asarray(rates, dtype=float),
-                             0 if a.grounded else 1)
-            x = np.zeros(probe.size)
-            x[0:2 * n:2], x[1:2 * n:2] = solved.positions, rates
-            x[probe.first:] = solved.states
-            turned = []
-            for link, c in zip(probe.backlash, contacts):
-                u = float(probe.twist(link) @ x)
-                lo, hi = link.part.flanks
-                if c > 0 and u < hi and not np.isfinite(lo):
-                    raise ComponentError(f"start: {link.part.label} is slack in the steady "
-                                         f"state (twist {u:.6g} below its slack {hi:g}); "
-                                         "start = \"rest\"")
-                turned.append(c if (u >= hi if c > 0 else u <= lo) else -c)
-            if tuple(turned) == contacts:
-                break
-            contacts = tuple(turned)
-        else:
-            raise ComponentError("no steady state at the start: the links with backlash "
-                                 "cannot all rest on a flank")
-        extra = {steady: solved.torque} if steady is not None else {}
-        for k, (g, kappa) in probe.moved.items():
-            law = probe.laws[k]
-            if abs(law.value_at(0.0) - rates[g] * kappa) > 1e-9 * max(abs(law.value_at(0.0)),
-                                                                      abs(rates[g] * kappa)):
-                raise ComponentError(f"{law.label}: its speed at t = 0 is "
-                                     f"{law.value_at(0.0):.6g}, the steady start's "
-                                     f"{rates[g] * kappa:.6g}")
-        mode = Mode(contacts, tuple(FREE for _ in range(n)),
-                    tuple(False for _ in probe.brakes), driven,
-                    tuple(False for _ in probe.brakes), tuple(0 for _ in probe.characteristics),
-                    tuple(0 for _ in probe.laws), limits=tuple(0 for _ in probe.limits))
-        return (*apply(self.initial, probe, mode, x, v), extra)
-
-    def _at_once(self) -> tuple[bool, ...]:
-        """Which brakes act at rest from t = 0 (a step without delay)."""
-        return tuple(isinstance(l.part, Brake) and l.part.delay == 0
-                     and l.part.build_up == "step"
-                     for l in self.assembly.loads if isinstance(l.part, Brake))
-
-    def _rest_start(self) -> tuple[Mode, np.ndarray, dict]:
-        """At rest, every gap open; a brake without delay engaged from the
-        start, its body held while the loads at rest are within its capacity
-        (decided here, not at an event), sliding if an initial state moves it."""
-        if self.steady_motor is not None:
-            raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
-                                 "hold; give its torque")
-        probe = ComponentSystem(self.equations)
-        engaged = self._at_once()
-        motion = [FREE for _ in self.assembly.groups]
-        mode = Mode(tuple(0 if l.part.opens else 1 for l in probe.backlash), tuple(motion),
-                    engaged,
-                    tuple(True for _ in probe.motors), tuple(False for _ in probe.brakes),
-                    tuple(0 for _ in probe.characteristics), tuple(0 for _ in probe.laws),
-                    limits=tuple(0 for _ in probe.limits))
-        x = np.zeros(probe.size)
-        for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
-            x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa
-        mode, x = apply(self.initial, probe, mode, x)
-        for g in sorted({probe.brake_group[i] for i, on in enumerate(engaged) if on}):
-            held = replace(mode, motion=tuple(HELD if j == g else m
-                                              for j, m in enumerate(motion)))
-            (wn, kn), (wc, kc) = probe.net_load(held, g), probe.capacity(held, g)
-            net, cap = float(wn @ x + kn), float(wc @ x + kc)
-            if x[probe.v(g)] != 0:           # given a velocity: it slides that way
-                net, cap = float(x[probe.v(g)]), -1.0
-            motion[g] = HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
-        return resting(probe, replace(mode, motion=tuple(motion)), x), x, {}
+            return rest_start(self)
+        return steady_start(self, body, speed)
 
     def with_parts(self, components: Sequence[Component]) -> "Model":
         """This model with other values of its parts (a design of a sweep): the
@@ -345,25 +226,18 @@ class Model:
         model.equations = self.equations.for_design(model.assembly)
         return model
 
-    def schedule(self) -> tuple[tuple[float, str], ...]:
-        """The events known in advance: brakes engaging and their ramps ending,
-        brakes released and links cut (``fails_at``), motors switched off,
-        characteristics' steps and motor laws' pieces."""
+    def schedule(self, rest: bool = False) -> tuple[tuple[float, str], ...]:
+        """The events known in advance: each switching kind's (a brake
+        engaging, its ramp ending, released; a motor switched off; a
+        characteristic's steps; a link cut at ``fails_at``;
+        :class:`~crane_sym.components.kinds.events.Events`) and motor laws' pieces; for a start at
+        ``rest``, without those its mode has taken already."""
         out = []
-        for load in self.assembly.loads:
-            part = load.part
-            if isinstance(part, Brake):
-                out.append((part.delay, f"{part.name} engages"))
-                if part.fails_at is not None:
-                    out.append((part.fails_at, f"{part.name} releases"))
-                if part.build_up == "ramp":
-                    out.append((part.delay + part.time, f"{part.name} ramp done"))
-            elif isinstance(part, Motor) and part.off_at is not None:
-                out.append((part.off_at, f"{part.name} off"))
-            elif isinstance(part, Characteristic):
-                out += [(float(t), f"{part.name} next step") for t in np.cumsum(part.holds)]
-        out += [(l.part.fails_at, f"{l.part.name} breaks") for l in self.assembly.links
-                if l.part.fails_at is not None]
+        for kind in kinds.KINDS:
+            if kind.events is not None:
+                out += [e for l in (*self.assembly.loads, *self.assembly.links)
+                        if l.part.kind == kind.part_kind
+                        for e in kind.events.schedule(l.part, rest)]
         out += LawClock(clocked([l.part for l in self.assembly.loads]), 0).schedule()
         return tuple(sorted(out))
 
@@ -409,13 +283,7 @@ class Model:
             output = system.link_load(names.index(link) if link is not None else 0)
         else:                                    # no link: a zero output
             output = partial(_nothing, system.size)
-        schedule = self.schedule()
-        if rest:             # the brakes engaged from the start are in its mode
-            names = {f"{l.part.name} engages" for l, on in zip(
-                [l for l in self.assembly.loads if isinstance(l.part, Brake)], self._at_once())
-                if on}
-            schedule = tuple(e for e in schedule if not (e[0] == 0 and e[1] in names))
-        return HybridRun(system, mode, x0, t_end, schedule, output)
+        return HybridRun(system, mode, x0, t_end, self.schedule(rest), output)
 
     def run(self, duration: Given, start_body: str | None = None,
             start_speed: Given = 0.0, exact: bool | None = None,

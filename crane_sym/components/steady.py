@@ -26,7 +26,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from crane_sym.components.hybrid import ComponentSystem
+from crane_sym.components.hybrid import ComponentSystem, Mode
 from crane_sym.components.parts import ComponentError
 
 __all__ = ["Balance", "balance"]
@@ -56,8 +56,8 @@ def _rate_rows(probe: ComponentSystem, rates: np.ndarray, pinned: int
     return Rq[:, pinned:], Rs, right
 
 
-def balance(probe: ComponentSystem, unit: ComponentSystem | None, contacts: tuple,
-            driven: tuple, rates: np.ndarray, pinned: int) -> Balance:
+def balance(probe: ComponentSystem, unit: ComponentSystem | None, mode: Mode,
+            rates: np.ndarray, pinned: int) -> Balance:
     """The steady start's :class:`Balance` (see the module docstring);
     ComponentError if no motor torque balances the loads, if a state cannot
     rest, or if a limit cannot hold the state its load needs.
@@ -68,18 +68,19 @@ def balance(probe: ComponentSystem, unit: ComponentSystem | None, contacts: tupl
         The model's system with a ``steady`` motor's torque at 0.
     unit : ComponentSystem or None
         The same with that torque at 1 (None: no ``steady`` motor).
-    contacts, driven : tuple
-        The contacts of the links with backlash and the motors on.
+    mode : Mode
+        The mode at the start (the contacts of the links with backlash, the
+        motors on).
     rates : ndarray
         Each group's steady speed.
     pinned : int
         1 where the first group's position is pinned at 0, else 0.
     """
-    _, D, K, f0, _, _, S = probe._linear(contacts, driven)
+    _, D, K, f0, _, _, S = probe.linear(mode)
     f = f0 - D @ rates
     columns = [K[:, pinned:]]
     if unit is not None:
-        columns.append(-(unit._linear(contacts, driven)[3] - f0)[:, None])
+        columns.append(-(unit.linear(mode)[3] - f0)[:, None])
     columns.append(-S)
     matrix = np.hstack(columns)
     free = [g for g in range(len(f)) if g not in {g for g, _ in probe.moved.values()}]

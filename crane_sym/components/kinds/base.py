@@ -31,6 +31,7 @@ from typing import Any, Callable
 import sympy as sp
 from sympy.physics.units import Dimension, length, time
 
+from crane_sym.components.kinds.events import Events
 from crane_sym.components.kinds.roles import (ROLE_FLAGS, Check, PartQuantity, ends_moving,
                                               has_role)
 from crane_sym.components.loads import HENRY, OHM
@@ -241,7 +242,8 @@ class Kind:
     against its bodies' motion, its ``roles`` (:data:`ROLE_FLAGS`), for a
     rigid link its symbolic factor (``rigid``), the slopes its mode steps
     (``steps``), the count of the model's bounds it joins (``counted``) and
-    the quantities its parts report (``quantities``)."""
+    the quantities its parts report (``quantities``); and how its parts
+    switch the model (``events``)."""
 
     table: str
     keys: tuple[Key, ...]
@@ -282,6 +284,11 @@ class Kind:
     #: The quantities its parts report beyond a body's, a link's and a
     #: contact's (a DC motor's time constant), each a :class:`PartQuantity`.
     quantities: tuple[PartQuantity, ...] = ()
+    # declared for modes and events
+    #: How its parts switch the model: the mode's values they own, their
+    #: events, guards and rules (:class:`~crane_sym.components.kinds.events.Events`;
+    #: None: they switch nothing).
+    events: Events | None = None
 
     @property
     def part_kind(self) -> str:

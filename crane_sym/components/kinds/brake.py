@@ -1,10 +1,18 @@
 """``[[brake]]``: a brake on a body, its torque (a force on a translating body)
-built up after a delay as a step, a ramp or an exponential."""
+built up after a delay as a step, a ramp or an exponential.
+
+Its modes: ``engaged`` (from its delay on, until it is released at
+``fails_at``) and ``ramping`` (a ramp under way); a ramp's or an
+exponential's build-up 0 ≤ β ≤ 1 is a state of its own. Engaged, it holds
+its group by friction up to |κ| M β (``holds``): the system's groups slide
+against it, and rest or slip again where their load says so.
+"""
 import sympy as sp
 from sympy.physics.units import time
 
 from crane_sym.components.acting import force_load
 from crane_sym.components.kinds.base import Acting, Key, Kind, failure, load_key, run_end
+from crane_sym.components.kinds.events import BACKWARD, FORWARD, FREE, HELD, Events
 from crane_sym.components.loads import Brake
 from crane_sym.components.parts import DIMENSIONS, ROTATING, UNITS
 
@@ -29,7 +37,110 @@ def _switching(part: Brake, motion: str) -> tuple:
             *failure(part, f"the brake {part.name}"))
 
 
-KIND = Kind("brake", (Key("name", "word"), Key("body", "body"),
+# --- its modes and events ---------------------------------------------------------
+TABLE = "brake"
+
+
+def _at_once(part: Brake) -> bool:
+    """Whether it acts from t = 0: a step without delay."""
+    return part.delay == 0 and part.build_up == "step"
+
+
+def _start(part: Brake, rest: bool) -> dict:
+    """Engaged at a start at rest if it acts at once (the start decides its
+    group's motion); never ramping."""
+    return {"engaged": rest and _at_once(part), "ramping": False}
+
+
+def _names(part: Brake) -> tuple:
+    return ((f"{part.name} engages", "engage"), (f"{part.name} ramp done", "ramped"),
+            (f"{part.name} releases", "let go"))
+
+
+def _schedule(part: Brake, rest: bool) -> tuple:
+    """Engaging at its delay (but at a start at rest, where it acts at once
+    and the start engaged it), released at ``fails_at``, its ramp done."""
+    out = [] if rest and _at_once(part) else [(part.delay, f"{part.name} engages")]
+    if part.fails_at is not None:
+        out.append((part.fails_at, f"{part.name} releases"))
+    if part.build_up == "ramp":
+        out.append((part.delay + part.time, f"{part.name} ramp done"))
+    return tuple(out)
+
+
+def _column(system, i: int) -> int | None:
+    """The column of brake i's build-up β in the state (None for a step)."""
+    return system.columns.get((TABLE, i))
+
+
+def _holds(system, mode, i: int):
+    """(group, β's column or None, |κ| M): what brake i holds while engaged."""
+    if not mode.engaged[i]:
+        return None
+    load = system.of_kind[TABLE][i]
+    g, kappa = system.place(load)
+    return g, _column(system, i), abs(kappa) * load.load
+
+
+def _rates(system, mode, i: int, A, b) -> None:
+    """β' = 1/T on a ramp under way, β' = (1 − β)/T for an exponential."""
+    col, part = _column(system, i), system.of_kind[TABLE][i].part
+    if col is None or not mode.engaged[i]:
+        return
+    if part.build_up == "ramp" and mode.ramping[i]:
+        b[col] = 1.0 / part.time
+    elif part.build_up == "exponential":
+        A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
+
+
+def _set(values: tuple, i: int, value) -> list:
+    out = list(values)
+    out[i] = value
+    return out
+
+
+def _engage(system, mode, i: int, x):
+    """Engaged (ramping if a ramp): a free group then slides the way it
+    moves, or, at rest, is held while its load is within the capacity."""
+    part = system.of_kind[TABLE][i].part
+    mode = mode.setting(engaged=_set(mode.engaged, i, True),
+                        ramping=_set(mode.ramping, i, part.build_up == "ramp"))
+    g = system.place(system.of_kind[TABLE][i])[0]
+    if mode.motion[g] != FREE:
+        return mode, x
+    speed = x[system.v(g)]
+    if speed:
+        return mode.moving(g, FORWARD if speed > 0 else BACKWARD), x
+    return system.rests(mode, g, x)
+
+
+def _ramped(system, mode, i: int, x):
+    """Its ramp done: β = 1 from here on."""
+    x[_column(system, i)] = 1.0
+    return mode.setting(ramping=_set(mode.ramping, i, False)), x
+
+
+def _let_go(system, mode, i: int, x):
+    """Released for good: its group free if no other brake is engaged on it,
+    else held only while the rest still hold its load."""
+    mode = mode.setting(engaged=_set(mode.engaged, i, False),
+                        ramping=_set(mode.ramping, i, False))
+    g = system.place(system.of_kind[TABLE][i])[0]
+    if not any(on and system.place(system.of_kind[TABLE][k])[0] == g
+               for k, on in enumerate(mode.engaged)):
+        return mode.moving(g, FREE), x
+    if mode.motion[g] == HELD:
+        return mode.moving(g, system.settled(mode, g, x)), x
+    return mode, x
+
+
+EVENTS = Events(("engaged", "ramping"), _start, _names,
+                {"engage": _engage, "ramped": _ramped, "let go": _let_go},
+                schedule=_schedule, holds=_holds,
+                states=lambda part: 0 if part.build_up == "step" else 1, rates=_rates)
+
+
+KIND = Kind(TABLE, (Key("name", "word"), Key("body", "body"),
                       Key("torque", value="load", sign="positive", required=False),
                       Key("force", value="load", sign="positive", required=False),
                       Key("delay", value=time, sign="nonnegative", required=False, default=0.0),
@@ -41,4 +152,4 @@ KIND = Kind("brake", (Key("name", "word"), Key("body", "body"),
                                           g["delay"], g["build_up"], g["time"], g["fails_at"]),
             "a brake on a body", idle=_idle, acts=_acts, switching=_switching,
             check=lambda part, bodies, components: force_load(part, bodies),
-            roles=lambda part: frozenset({"holds", "slides"}), counted="brakes")
+            roles=lambda part: frozenset({"holds", "slides"}), counted="brakes", events=EVENTS)

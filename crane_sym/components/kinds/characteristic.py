@@ -1,8 +1,14 @@
-"""``[[characteristic]]``: a motor's β (v0 − v), its slope stepped at the hold times."""
+"""``[[characteristic]]``: a motor's β (v0 − v), its slope stepped at the hold times.
+
+Its mode: ``steps``, the step it is on (0 at the start, one more at the end
+of each hold time); its slope β the step's, the last one's from there on.
+"""
+import numpy as np
 import sympy as sp
 
 from crane_sym.components.acting import Load, body_of
 from crane_sym.components.kinds.base import Acting, Key, Kind, Symbolic
+from crane_sym.components.kinds.events import Events
 from crane_sym.components.loads import Characteristic
 from crane_sym.components.parts import DIMENSIONS
 
@@ -25,6 +31,27 @@ def _check(part: Characteristic, bodies: dict, components: tuple) -> Load:
                                       for k in part.slopes)))
 
 
+def _next(system, mode, i: int, x):
+    """On to the next step."""
+    steps = list(mode.steps)
+    steps[i] += 1
+    return mode.setting(steps=steps), x
+
+
+def _slope(system, mode, i: int) -> float:
+    """The slope of the step it is on (the first where the mode has no steps)."""
+    law = system.of_kind["characteristic"][i]
+    k = mode.steps[i] if mode.steps else 0
+    return law.values[1 + min(k, len(law.values) - 2)]
+
+
+EVENTS = Events(("steps",), lambda part, rest: {"steps": 0},
+                lambda part: ((f"{part.name} next step", "step"),), {"step": _next},
+                schedule=lambda part, rest: tuple((float(t), f"{part.name} next step")
+                                                  for t in np.cumsum(part.holds)),
+                role="slopes", value=_slope)
+
+
 KIND = Kind("characteristic", (Key("name", "word"), Key("body", "body"),
                                Key("speed", value="speed"), Key("slopes", "list"),
                                Key("holds", "list", required=False, default=[])),
@@ -33,4 +60,4 @@ KIND = Kind("characteristic", (Key("name", "word"), Key("body", "body"),
             "a motor's speed characteristic on a body",
             symbols=(SPEED,), acts=_acts,
             shape=lambda part: len(part.holds), check=_check,
-            steps=lambda load: load.values[1:])
+            steps=lambda load: load.values[1:], events=EVENTS)

@@ -3,10 +3,18 @@ with an optional backlash gap: F = c (u − flank) + d u̇, u = x(second) − x(
 or, with ``slack`` h instead, a rope that only pulls: F = c (u − h) + d u̇ while
 u ≥ h, 0 below (a key of this kind, not a kind of its own: a slack rope is an
 elastic link whose gap runs from −∞ to h, so its load, peak, dynamic factor,
-sweep and walkthrough are the elastic link's)."""
+sweep and walkthrough are the elastic link's).
+
+Its modes: a gapped link (a backlash, a slack, or ``fails_at``) is on its
+upper flank (+1), in its gap (0) or on its lower flank (−1), ``Mode.contacts``
+by its place among the gapped links; it opens where its twist returns to the
+flank and closes where the twist reaches the other end of the gap; cut at
+``fails_at``, it stays in its gap for good (``Mode.cut``)."""
+import numpy as np
 from sympy.physics.units import time
 
 from crane_sym.components.kinds.base import Key, Kind, Symbolic, failure
+from crane_sym.components.kinds.events import Events
 from crane_sym.components.parts import DIMENSIONS, UNITS, ComponentError, ElasticLink
 
 
@@ -28,6 +36,64 @@ def _switching(part: ElasticLink, motion: str) -> tuple:
             *failure(part, f"the elastic link {part.name}"))
 
 
+# --- its modes and events ---------------------------------------------------------
+def _names(part: ElasticLink) -> dict[str, str]:
+    """Its contact events by rule: a backlash link ``opens`` and ``closes
+    +``/``-``; a slack rope ``snaps taut`` and ``goes slack`` (it has no
+    lower flank); a link that fails ``breaks``."""
+    if part.slack is not None:
+        out = {"open": f"{part.name} goes slack", "close+": f"{part.name} snaps taut"}
+    else:
+        out = {"open": f"{part.name} opens", "close+": f"{part.name} closes +",
+               "close-": f"{part.name} closes -"}
+    return {**out, "break": f"{part.name} breaks"}
+
+
+def _gapped(system, i: int) -> int | None:
+    """Link i's place among the gapped links (None: it has no gap)."""
+    link = system.of_kind["elastic"][i]
+    return next((j for j, l in enumerate(system.backlash) if l is link), None)
+
+
+def _guards(system, mode, i: int) -> tuple:
+    """Opening from its flank, closing on either end of its gap (not once cut,
+    nor for a gap of width 0)."""
+    j = _gapped(system, i)
+    if j is None or j in mode.cut or not system.backlash[j].part.opens:
+        return ()
+    link = system.backlash[j]
+    u, (lo, hi), name, c = system.twist(link), link.part.flanks, _names(link.part), mode.contacts[j]
+    if c > 0:
+        return ((name["open"], u, -hi, -1),)
+    if c < 0:
+        return ((name["open"], u, -lo, 1),)
+    closing = ((name["close+"], u, -hi, 1),)
+    if np.isfinite(lo):                 # a slack link has no lower flank
+        closing += ((name["close-"], u, -lo, -1),)
+    return closing
+
+
+def _contact(rule: str):
+    """The rule that puts a gapped link in contact ``rule`` names (cut for good
+    at a break)."""
+    def switch(system, mode, i: int, x):
+        j = _gapped(system, i)
+        contacts = list(mode.contacts)
+        contacts[j] = {"open": 0, "close+": 1, "close-": -1, "break": 0}[rule]
+        cut = tuple(sorted({*mode.cut, j})) if rule == "break" else mode.cut
+        return mode.setting(contacts=contacts, cut=cut), x
+    return switch
+
+
+EVENTS = Events((), lambda part, rest: {},
+                lambda part: tuple((name, rule) for rule, name in _names(part).items())
+                if part.gapped else (),
+                {rule: _contact(rule) for rule in ("open", "close+", "close-", "break")},
+                schedule=lambda part, rest: (() if part.fails_at is None else
+                                             ((part.fails_at, f"{part.name} breaks"),)),
+                guards=_guards)
+
+
 KIND = Kind("elastic", (Key("name", "word"), Key("between", "ends"),
                         Key("stiffness", value="stiffness", sign="positive"),
                         Key("damping", value="damping", sign="nonnegative", required=False,
@@ -46,4 +112,4 @@ KIND = Kind("elastic", (Key("name", "word"), Key("between", "ends"),
                               "stiffness of the elastic link {name}"),
                      Symbolic("damping", "d", "nonnegative", lambda link: link.damping,
                               "damping of the elastic link {name}")),
-            shape=lambda link: link.gapped, switching=_switching, counted="links")
+            shape=lambda link: link.gapped, switching=_switching, counted="links", events=EVENTS)

@@ -1,9 +1,14 @@
-"""``[[motor]]``: a constant (or ``steady``) torque on a body, optionally switched off."""
+"""``[[motor]]``: a constant (or ``steady``) torque on a body, optionally switched off.
+
+Its mode: ``driven``, on from the start until ``off_at``; its switch ``on``
+is 1 while driven, else 0.
+"""
 import sympy as sp
 from sympy.physics.units import time
 
 from crane_sym.components.acting import Load, force_load
 from crane_sym.components.kinds.base import Acting, Key, Kind, Symbolic, load_key
+from crane_sym.components.kinds.events import Events
 from crane_sym.components.loads import Motor
 
 
@@ -31,6 +36,20 @@ def _check(part: Motor, bodies: dict, components: tuple) -> Load:
     return Load(part, None) if part.load is None else force_load(part, bodies)
 
 
+def _off(system, mode, i: int, x):
+    """Switched off for good."""
+    driven = list(mode.driven)
+    driven[i] = False
+    return mode.setting(driven=driven), x
+
+
+EVENTS = Events(("driven",), lambda part, rest: {"driven": True},
+                lambda part: ((f"{part.name} off", "off"),), {"off": _off},
+                schedule=lambda part, rest: (() if part.off_at is None else
+                                             ((part.off_at, f"{part.name} off"),)),
+                role="switches", value=lambda system, mode, i: 1.0 if mode.driven[i] else 0.0)
+
+
 KIND = Kind("motor", (Key("name", "word"), Key("body", "body"),
                       Key("torque", value="load", sign="positive", required=False),
                       Key("force", value="load", sign="positive", required=False),
@@ -39,4 +58,4 @@ KIND = Kind("motor", (Key("name", "word"), Key("body", "body"),
                                           g["off_at"]),
             "a motor's constant or steady torque on a body", idle=_idle,
             symbols=(TORQUE,), acts=_acts, check=_check,
-            roles=lambda part: frozenset({"steady"} if part.load is None else ()))
+            roles=lambda part: frozenset({"steady"} if part.load is None else ()), events=EVENTS)
