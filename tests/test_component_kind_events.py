@@ -24,11 +24,12 @@ import pytest
 import sympy as sp
 
 from crane_sym.components import kinds
+from crane_sym.components.acting import Load
 from crane_sym.components.kinds import Key, Kind
 from crane_sym.components.kinds.base import Acting
 from crane_sym.components.kinds.events import HELD, Events
 from crane_sym.components.loads import Resistance
-from crane_sym.components.reading import read_component_file
+from crane_sym.components.component_file import read_component_file
 
 
 # --- the toy kind: one module's worth, as ARCHITECTURE.md "How to add a kind" shows ---
@@ -73,6 +74,7 @@ RATCHET = Kind(
     lambda g, entry, where: Ratchet(g["name"], g["body"], 0.0),
     "a one-way stop that catches a body when it would move back",
     acts=lambda part, kappa, q: Acting(sp.Integer(0)),
+    check=lambda part, bodies, components: Load(part, None),
     events=Events(("caught",), lambda part, rest: {"caught": False},
                   lambda part: ((f"{part.name} catches", "catch"),), {"catch": _catch},
                   guards=_guards,
