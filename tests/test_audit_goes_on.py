@@ -10,7 +10,8 @@ import json
 from pathlib import Path
 
 from crane_sym.cli.main import main
-from crane_sym.components.quantities import parameters, static_loads
+from crane_sym.components.parameters import parameters
+from crane_sym.components.quantities import static_loads
 from crane_sym.components.component_file import read_component_file
 
 #: A gantry hoist no paper has: motor, coupling with backlash, drum, a block on

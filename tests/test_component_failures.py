@@ -14,7 +14,7 @@ from scipy.linalg import eigh
 from scipy.optimize import minimize_scalar
 
 from component_commands import swept, walkthrough
-from crane_sym.components.quantities import parameters
+from crane_sym.components.parameters import parameters
 from crane_sym.components.component_file import read_component_file
 
 EXAMPLE = (Path(__file__).resolve().parents[1] / "examples" / "drive_trains"

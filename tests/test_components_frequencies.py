@@ -15,7 +15,8 @@ import scipy.linalg
 
 from crane_sym.components import ComponentError
 from crane_sym.components.file_audit import audit_file
-from crane_sym.components.quantities import derived_quantity, signed
+from crane_sym.components.parameters import signed
+from crane_sym.components.quantities import derived_quantity
 from crane_sym.components.component_file import read_component_file
 from crane_sym.components.vibration import ModeChoice, mode_at
 

@@ -36,8 +36,8 @@ from crane_sym.components import formula_limits as limits
 from crane_sym.components.formula_limits import Refused, TooLarge, bounded, check_print
 from crane_sym.components.formulas import TIME, FileFormula
 from crane_sym.components.parts import ComponentError, value
-from crane_sym.components.quantities import (NUMERIC, derived_quantity, parameters,
-                                             quantity_table)
+from crane_sym.components.parameters import parameters
+from crane_sym.components.quantities import NUMERIC, derived_quantity, quantity_table
 from crane_sym.components.component_file import ComponentFile
 from crane_sym.components.vibration import ModeChoice, mode_at
 from crane_sym.derivation import Derivation, Step
@@ -109,7 +109,7 @@ def formula_derivation(read: ComponentFile, f: FileFormula, run=None) -> tuple[
             return
         low, high = (v, v) if exact else (v / SPREAD, v * SPREAD)
         # drawn at the sign the file gives it: a real symbol (a motor's torque)
-        # never at its mirror, a negative one as its negative twin (quantities.signed)
+        # never at its mirror, a negative one as its negative twin (parameters.signed)
         sign = "negative" if p.value < 0 else "positive"
         entries[symbol] = PhysicalSymbol(symbol, p.dimension, p.unit, p.description,
                                          PARAMETER, sign, (low, high))

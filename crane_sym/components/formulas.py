@@ -15,7 +15,7 @@ user's source, to be audited against the model derived from the components.
     at = "0.2 s"                             # optional, for a frequency: the run's instant
 
 ``symbols`` maps each name the print uses to a parameter of the model
-(``<component>.<key>``, :func:`crane_sym.components.quantities.parameters`),
+(``<component>.<key>``, :func:`crane_sym.components.parameters.parameters`),
 to ``"time"``, or to a derived quantity (its expression is put in);
 ``quantity`` names what the formula's left side is
 (:mod:`crane_sym.components.quantities`). ``mode`` and ``at`` say which
@@ -39,7 +39,8 @@ from sympy.physics.units import time
 
 from crane_sym.components.model import Model
 from crane_sym.components.parts import ComponentError, value
-from crane_sym.components.quantities import QUANTITIES, parameters, quantity_table
+from crane_sym.components.parameters import parameters
+from crane_sym.components.quantities import QUANTITIES, quantity_table
 from crane_sym.components.vibration import LOWEST, MODAL
 from crane_sym.scenes.options import did_you_mean
 

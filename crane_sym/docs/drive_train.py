@@ -22,7 +22,8 @@ from pathlib import Path
 from crane_sym.components.kinds import by_table
 from crane_sym.components.model import ComponentRun
 from crane_sym.components.parts import ComponentError
-from crane_sym.components.quantities import derived_quantity, parameters, static_loads
+from crane_sym.components.parameters import parameters
+from crane_sym.components.quantities import derived_quantity, static_loads
 from crane_sym.components.component_file import ComponentFile, read_component_file
 from crane_sym.docs.drive_train_modes import _Markup, _math, _modes, _number, _phases, _table
 from crane_sym.docs.drive_train_states import states_section
