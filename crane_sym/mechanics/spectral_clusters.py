@@ -185,7 +185,7 @@ def numpy_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
             others = np.delete(lam, cluster)
             gap = float(np.abs(others - mu).min()) if others.size else np.inf
             # a defective cluster of k splits by O(eps^(1/k)) in the Schur form's rounding
-            floor = 4 * algebra.eps ** (1 / len(cluster)) * scale
+            floor = 4 * algebra.eps ** (1 / len(cluster)) * max(scale, float(np.linalg.norm(M)))
             radius = min(max(4 * spread, floor), 0.5 * gap)
             P = _schur_projector(M, mu, radius, len(cluster))
         projector += P
