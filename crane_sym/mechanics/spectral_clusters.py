@@ -184,7 +184,9 @@ def numpy_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
             spread = float(np.abs(members - mu).max())
             others = np.delete(lam, cluster)
             gap = float(np.abs(others - mu).min()) if others.size else np.inf
-            radius = min(max(4 * spread, 1e-12 * scale), 0.5 * gap)
+            # a defective cluster of k splits by O(eps^(1/k)) in the Schur form's rounding
+            floor = 4 * algebra.eps ** (1 / len(cluster)) * max(scale, float(np.linalg.norm(M)))
+            radius = min(max(4 * spread, floor), 0.5 * gap)
             P = _schur_projector(M, mu, radius, len(cluster))
         projector += P
         if mu.imag < 0:
