@@ -15,8 +15,9 @@ unit-impulse response :math:`h` (Chovnyuk et al., eqs (15)–(17), (33)):
     u(t) = u_{\\mathrm{free}}(t) + \\int_0^t h(t - \\tau)\\, S(\\tau)\\, d\\tau .
 
 Everything is computed by SymPy: :math:`h` and :math:`u_{\\mathrm{free}}` by
-solving the homogeneous equation, the convolution by integration piece by
-piece of a ``PiecewiseLoad`` (``duhamel``), or, as an independent route, by
+solving the homogeneous equation, the convolution piece by piece of a
+``PiecewiseLoad`` by closed-form antiderivatives (``duhamel``,
+``exp_trig_integrals``), or, as an independent route, by
 the Laplace transform of the whole problem (``duhamel_laplace``). Note the
 convention: ``damping`` is :math:`n`, half the coefficient of
 :math:`\\dot u` (``elimination.RelativeEquation.damping`` is :math:`2n`).
@@ -27,6 +28,7 @@ from dataclasses import dataclass
 
 import sympy as sp
 
+from crane_sym.mechanics.exp_trig_integrals import definite_integral
 from crane_sym.mechanics.loads import Piece, PiecewiseLoad, as_expression
 from crane_sym.mechanics.verification import Verification, _verify_pieces
 
@@ -142,21 +144,20 @@ def free_response(omega: sp.Expr, t: sp.Symbol, u0: sp.Expr, v0: sp.Expr,
 
 def _convolve(h: sp.Expr, S: sp.Expr, t: sp.Symbol, tau: sp.Dummy,
               lower: sp.Expr, upper: sp.Expr) -> sp.Expr:
-    """:math:`\\int_{lower}^{upper} h(t - \\tau) S(\\tau)\\,d\\tau` by SymPy
+    """:math:`\\int_{lower}^{upper} h(t - \\tau) S(\\tau)\\,d\\tau` in closed form
     (``S`` is given in ``tau``).
 
     The kernel is split into products of functions of :math:`t` and of
     :math:`\\tau` (addition theorems, :math:`e^{a-b} = e^a e^{-b}`), so each
-    term integrates only its :math:`\\tau` factor.
+    term integrates only its :math:`\\tau` factor, by the antiderivatives of
+    ``exp_trig_integrals`` (polynomial, exponential and trigonometric loads;
+    SymPy's ``integrate`` only for a term outside that class).
     """
     kernel = sp.expand(sp.expand_trig(h.subs(t, t - tau)), power_exp=True)
     total = sp.Integer(0)
     for term in sp.Add.make_args(sp.expand(kernel * S)):
         outside, inside = term.as_independent(tau, as_Add=False)
-        integral = sp.integrate(inside, (tau, lower, upper))
-        if integral.has(sp.Integral):
-            raise ValueError(f"SymPy cannot integrate {inside} over tau")
-        total += outside * integral
+        total += outside * definite_integral(inside, tau, lower, upper)
     return total
 
 
