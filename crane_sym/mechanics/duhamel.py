@@ -25,6 +25,7 @@ convention: ``damping`` is :math:`n`, half the coefficient of
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import sympy as sp
 
@@ -46,7 +47,13 @@ class _Oscillator:
 
     @classmethod
     def of(cls, omega: object, damping: object) -> "_Oscillator":
-        omega, damping = as_expression(omega, "omega"), as_expression(damping, "damping")
+        """The oscillator of ``omega`` and ``damping``: one per pair, so that its
+        solutions are solved once (``_homogeneous`` is memoized on it)."""
+        return cls._of(as_expression(omega, "omega"), as_expression(damping, "damping"))
+
+    @classmethod
+    @lru_cache(maxsize=64)
+    def _of(cls, omega: sp.Expr, damping: sp.Expr) -> "_Oscillator":
         if omega.is_positive is False or omega.is_zero:
             raise ValueError(f"omega must be positive, got {omega}")
         if damping.is_negative:
@@ -69,14 +76,18 @@ class _Oscillator:
                               if isinstance(s, sp.Symbol)})
 
 
+@lru_cache(maxsize=256)
 def _homogeneous(osc: _Oscillator, t: sp.Symbol, u0: sp.Expr, v0: sp.Expr) -> sp.Expr:
     """Solve :math:`\\ddot u + 2n\\dot u + \\omega^2 u = 0`, :math:`u(0)=u_0,
-    \\dot u(0)=v_0`, in the dummies of ``osc``.
+    \\dot u(0)=v_0`, in the dummies of ``osc`` (0 from rest).
 
     With damping, :math:`u = e^{-nt} y` removes the :math:`\\dot y` term and
     leaves :math:`\\ddot y + (\\omega^2 - n^2) y = 0`, solved with
-    :math:`\\omega_d^2 = \\omega^2 - n^2`.
+    :math:`\\omega_d^2 = \\omega^2 - n^2`. Memoized: a derivation asks for the
+    same impulse response once per load.
     """
+    if u0 == 0 and v0 == 0:
+        return sp.Integer(0)
     u, y = sp.Function("u")(t), sp.Function("y")(t)
     operator = u.diff(t, 2) + 2 * osc.n * u.diff(t) + osc.w ** 2 * u
     if osc.n == 0:
