@@ -153,7 +153,8 @@ def definite_integral(integrand: sp.Expr, tau: sp.Symbol, lower: sp.Expr,
     """:math:`\\int_{lower}^{upper}` ``integrand`` :math:`d\\tau`, exactly.
 
     Each term of the expanded integrand in the class of the module docstring
-    is integrated in closed form; any other term by ``sympy.integrate``
+    is integrated in closed form, its value a sum of products (as
+    ``integrate`` gives it); any other term by ``sympy.integrate``
     (``ValueError`` where SymPy cannot).
 
     >>> tau, t, w = sp.symbols("tau t omega", positive=True)
@@ -171,7 +172,7 @@ def definite_integral(integrand: sp.Expr, tau: sp.Symbol, lower: sp.Expr,
             total += _by_sympy(term, tau, lower, upper)
             continue
         primitive = sp.Add(*primitives)
-        total += primitive.subs(tau, upper) - primitive.subs(tau, lower)
+        total += sp.expand_mul(primitive.subs(tau, upper) - primitive.subs(tau, lower))
     return total
 
 

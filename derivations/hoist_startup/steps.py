@@ -12,6 +12,7 @@ import sympy as sp
 
 from crane_sym.derivation import Derivation
 from crane_sym.mechanics.duhamel import impulse_response
+from crane_sym.mechanics.exp_trig_integrals import definite_integral
 from crane_sym.mechanics.elimination import relative_coordinate
 from crane_sym.mechanics.lagrange import lagrange_equations
 from crane_sym.mechanics.odes import solve_constant_coefficient
@@ -226,11 +227,11 @@ def drive_laws(d: Derivation) -> None:
     d.add("(29)", sp.Eq(tau0, contact), "C·v0·τ_0 = m2 g: the load leaves the ground.")
     for i in range(1, 5):
         amp = sp.Symbol("A")
-        (value,) = sp.solve(sp.integrate(amp * LAW_SHAPES[i], (t, 0, t_n)) - v0, amp)
+        (value,) = sp.solve(definite_integral(amp * LAW_SHAPES[i], t, 0, t_n) - v0, amp)
         d.add(f"(30), a_{i}", sp.Eq(A_LAW[i], value * LAW_SHAPES[i]),
               f"Shape of a_{i} from ref. [7], scaled so that ∫₀^tп a dt = v0 (the "
               "drive reaches the steady speed at the end of the start).")
-    d.add("(30), speed of a_2", sp.Eq(v_end, sp.integrate(PRINTED_LAWS[2], (t, 0, t_n))),
+    d.add("(30), speed of a_2", sp.Eq(v_end, definite_integral(PRINTED_LAWS[2], t, 0, t_n)),
           "The printed a_2 integrated over the start.")
     weight = drive.subs(Q, m2 * g)
     d.add("(31)", sp.Eq(P, weight), "(28) with Q = m2 g: the load hangs on the rope.")

@@ -10,6 +10,7 @@ import sympy as sp
 
 from crane_sym.derivation import Derivation
 from crane_sym.mechanics.duhamel import duhamel, free_response, impulse_response
+from crane_sym.mechanics.exp_trig_integrals import definite_integral
 from crane_sym.mechanics.loads import linear, ramp, rectangular_pulse, step
 from crane_sym.codegen.rewriting import cos_pair_to_sin_squared
 
@@ -80,20 +81,21 @@ def load_cases(d: Derivation) -> dict:
     d.add("(38)", sp.Eq(K, out["instant"]), "(35) over x_ст.")
 
     # 2. Linear ramp.
-    y2 = sp.integrate((t - vt) * y_force.subs(t, vt), (vt, 0, t))
+    y2 = definite_integral((t - vt) * y_force.subs(t, vt), vt, 0, t)
     d.add("(39)", sp.Eq(x, k * y2), "∫ k(t − θ) Y(θ) dθ with Y per unit force.",
           title="2. Linearly growing load")
-    d.add("Y_2 (after (39))", sp.Eq(Y2, sp.integrate(sp.integrate(
-        impulse_response(Omega, t).subs(t, vt), (vt, 0, t)).subs(t, vt), (vt, 0, t))),
+    y1_unit = definite_integral(impulse_response(Omega, t).subs(t, vt), vt, 0, t)
+    d.add("Y_2 (after (39))", sp.Eq(Y2, definite_integral(y1_unit.subs(t, vt), vt, 0, t)),
         "Y of (16) integrated twice from 0.")
     rising = duhamel(linear(k / m, t=t), Omega, t).pieces[0].expr
     if sp.simplify(rising - k * y2) != 0:
         raise RuntimeError("(39) and Duhamel's integral of k t disagree")
     d.add("(40), in m and Ω", sp.Eq(x, rising), "Duhamel's integral of P̄ = k t.")
-    d.add("(40)", sp.Eq(x, _in_stiffness(rising)), "m Ω² = C.")
+    rising_c = _in_stiffness(rising)
+    d.add("(40)", sp.Eq(x, rising_c), "m Ω² = C.")
     d.add("(41)", sp.Eq(x_st, _in_stiffness(_static(k * t_n))),
           "Static deflection under P̄(t_п) = k t_п, with m Ω² = C.")
-    out["ramp"] = sp.simplify(_in_stiffness(rising) / rhs(d, "(41)"))
+    out["ramp"] = sp.simplify(rising_c / rhs(d, "(41)"))
     d.add("(42)", sp.Eq(K, out["ramp"]), "(40) over (41).")
 
     # 3. Rectangular pulse.
@@ -101,14 +103,15 @@ def load_cases(d: Derivation) -> dict:
     during, after = (p.expr for p in pulse.pieces)
     d.add("(43), in m and Ω", sp.Eq(x, during), "Duhamel's integral for 0 ≤ t ≤ θ.",
           title="3. Rectangular pulse")
-    d.add("(43)", sp.Eq(x, _in_stiffness(during)), "m Ω² = C.")
+    during_c, after_c = _in_stiffness(during), _in_stiffness(after)
+    d.add("(43)", sp.Eq(x, during_c), "m Ω² = C.")
     d.add("(44), in m and Ω", sp.Eq(x, after),
           "Duhamel's integral for t ≥ θ: the load piece ends at θ.")
-    d.add("(44)", sp.Eq(x, _in_stiffness(after)), "m Ω² = C.")
+    d.add("(44)", sp.Eq(x, after_c), "m Ω² = C.")
     d.add("x_ст (before (45))", sp.Eq(x_st, _in_stiffness(_static(Pbar0))),
           "Static deflection under P̄_0, with m Ω² = C.")
-    k_during = sp.simplify(_in_stiffness(during) / rhs(d, "x_ст (before (45))"))
-    k_after = sp.simplify(_in_stiffness(after) / rhs(d, "x_ст (before (45))"))
+    k_during = sp.simplify(during_c / rhs(d, "x_ст (before (45))"))
+    k_after = sp.simplify(after_c / rhs(d, "x_ст (before (45))"))
     d.add("(45)", sp.Eq(K, k_during), "(43) over x_ст.")
     d.add("(46)", sp.Eq(K, k_after), "(44) over x_ст.")
     out["pulse"] = sp.Piecewise((k_during, t <= theta), (k_after, True))
@@ -134,8 +137,8 @@ def load_cases(d: Derivation) -> dict:
     d.add("(49)", sp.Eq(x, hold), "Duhamel's integral for t ≥ θ.")
     xst = _static(Pbar0)
     d.add("(50), x_ст", sp.Eq(x_st, xst), "Static deflection under P̄_0: (32) with ẍ = 0.")
-    d.add("(50)", sp.Eq(x, x_st * sp.simplify(hold / xst)), "(49) over x_ст.")
     k_up, k_hold = sp.simplify(up / xst), sp.simplify(hold / xst)
+    d.add("(50)", sp.Eq(x, x_st * k_hold), "(49) over x_ст.")
     d.add("(51)", sp.Eq(K, k_up), "(48) over x_ст.")
     d.add("(52)", sp.Eq(K, k_hold), "(49) over x_ст.")
     out["ramp_hold"] = sp.Piecewise((k_up, t <= theta), (k_hold, True))
