@@ -157,6 +157,15 @@ def definite_integral(integrand: sp.Expr, tau: sp.Symbol, lower: sp.Expr,
     ``integrate`` gives it); any other term by ``sympy.integrate``
     (``ValueError`` where SymPy cannot).
 
+    Parameters
+    ----------
+    integrand : sympy.Expr
+        The function of ``tau`` to integrate.
+    tau : Symbol
+        The variable of integration.
+    lower, upper : sympy.Expr
+        The bounds (free of ``tau``).
+
     >>> tau, t, w = sp.symbols("tau t omega", positive=True)
     >>> definite_integral(tau * sp.sin(w * tau - w * t), tau, 0, t)
     -t/omega + sin(omega*t)/omega**2
