@@ -258,14 +258,41 @@ def _signs(e: sp.Basic) -> dict[str, bool]:
     return {"real": True, **kept}
 
 
+def _stand_ins(expr: sp.Expr, rng: np.random.Generator) -> dict | None:
+    """A polynomial of degree 2 with seeded coefficients for each undefined
+    function of one argument inside an integral of ``expr`` (S(θ) under
+    ∫ S(θ) sin Ω(t − θ) dθ), of the sign it is declared; an identity in any
+    function holds in these. None when one takes more arguments, must be an
+    integer, or is also differentiated (its stand-in would not be frozen)."""
+    inside = {f for i in expr.atoms(sp.Integral) for f in i.atoms(AppliedUndef)}
+    if any(dv.expr.func in {f.func for f in inside} for dv in expr.atoms(sp.Derivative)):
+        return None
+    out = {}
+    for func in sorted({f.func for f in inside}, key=str):
+        applied = next(f for f in inside if f.func is func)
+        if len(applied.args) != 1 or applied.is_integer:
+            return None
+        c = [sp.Rational(int(rng.integers(300, 3000)), 1000) for _ in range(3)]
+        u = sp.Dummy("u", real=True)
+        if applied.is_positive or applied.is_nonnegative:
+            body = c[0] + c[2] * u**2
+        elif applied.is_negative or applied.is_nonpositive:
+            body = -c[0] - c[2] * u**2
+        else:
+            body = c[0] - c[1] * u + c[2] * u**2
+        out[func] = sp.Lambda(u, body)
+    return out
+
+
 def numerically_nonzero(expr: sp.Expr, *, points: int = 2, seed: int = 2024) -> bool:
     """True when ``expr`` is shown not to be identically 0: at a seeded point
-    its symbols' assumptions allow, it is real, finite and not 0 in mpmath at
-    30 and at 50 digits, the two values agreeing to 10 digits (a sum that is
-    0 leaves rounding noise, which does not). Then no simplification can
-    reduce it to 0, and none need be tried. False when the numbers cannot tell:
-    an integral, a sum, a derivative of more than a function, a complex or
-    undefined value, a symbol that must be an integer.
+    its symbols' assumptions allow (an undefined function under an integral
+    a seeded polynomial, :func:`_stand_ins`), it is real, finite and not 0 in
+    mpmath at 30 and at 50 digits, the two values agreeing to 10 digits (a
+    sum that is 0 leaves rounding noise, which does not). Then no
+    simplification can reduce it to 0, and none need be tried. False when the
+    numbers cannot tell: a sum, a derivative of more than a function, a
+    complex or undefined value, a symbol that must be an integer.
 
     Parameters
     ----------
@@ -280,9 +307,13 @@ def numerically_nonzero(expr: sp.Expr, *, points: int = 2, seed: int = 2024) -> 
     >>> numerically_nonzero(sp.sin(x)**2 + sp.cos(x)**2 - 1), numerically_nonzero(x - y)
     (False, True)
     """
-    if expr.has(sp.Integral, sp.Sum, sp.Product) or any(
+    rng = np.random.default_rng(seed)
+    stand_ins = _stand_ins(expr, rng)
+    if stand_ins is None or expr.has(sp.Sum, sp.Product) or any(
             not isinstance(dv.expr, AppliedUndef) for dv in expr.atoms(sp.Derivative)):
         return False
+    expr = expr.replace(lambda e: isinstance(e, AppliedUndef) and e.func in stand_ins,
+                        lambda e: stand_ins[e.func](*e.args))
     frozen = {e: sp.Dummy(f"frz{i}", **_signs(e)) for i, e in enumerate(
         sorted(expr.atoms(sp.Derivative) | expr.atoms(AppliedUndef),
                key=lambda e: (-len(e.args), sp.srepr(e))))}
@@ -290,7 +321,6 @@ def numerically_nonzero(expr: sp.Expr, *, points: int = 2, seed: int = 2024) -> 
     if flat.atoms(AppliedUndef) or flat.has(sp.Derivative):
         return False
     symbols = sorted(flat.free_symbols, key=sp.default_sort_key)
-    rng = np.random.default_rng(seed)
     try:
         f = sp.lambdify(symbols, flat, modules="mpmath")
         for _ in range(points):
