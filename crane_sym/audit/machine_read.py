@@ -90,14 +90,13 @@ def _canonical(expr: sp.Basic) -> sp.Basic:
 
 @lru_cache(maxsize=4096)
 def _zero(expr: sp.Basic) -> bool:
-    """``expr`` is 0: never where numbers show it is not
-    (``numerically_nonzero``); else expanded first, simplified only if needed
-    (integrals kept unevaluated: the print and the transcription write the
-    same integrals), so a 0 rests on the symbolic proof alone. Asked once per
-    run of each expression."""
-    if numerically_nonzero(expr):
-        return False
-    return sp.expand(expr) == 0 or sp.simplify(expr, doit=False) == 0
+    """``expr`` is 0: expanded first; simplified only if needed (integrals kept
+    unevaluated: the print and the transcription write the same integrals)
+    and not where numbers show it is not 0 (``numerically_nonzero``), so a 0
+    rests on the symbolic proof alone. Asked once per run of each expression."""
+    if sp.expand(expr) == 0:
+        return True
+    return not numerically_nonzero(expr) and sp.simplify(expr, doit=False) == 0
 
 
 def _refuted(parsed, hand: sp.Eq, d: Derivation) -> bool:
