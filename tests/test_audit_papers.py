@@ -6,7 +6,9 @@ import pytest
 
 pytest.importorskip("lark")
 
-from crane_sym.audit.papers import audit_papers, workers  # noqa: E402
+from crane_sym import registry  # noqa: E402
+from crane_sym.audit.papers import (Slot, audit_papers, longest_first,  # noqa: E402
+                                    schedule_text, workers)
 from crane_sym.bench.audit_times import (CommandTime, PaperTimes, as_markdown,  # noqa: E402
                                          paper_times)
 
@@ -20,6 +22,28 @@ def test_two_processes_give_the_records_of_one_in_the_papers_order():
     assert [[r.as_dict() for r in a.records] for a in parallel] == \
         [[r.as_dict() for r in a.records] for a in serial]
     assert all(a.records and a.build > 0 and a.slowest for a in parallel)
+    slots = [a.slot for a in parallel]
+    assert [s.paper for s in slots] == PAPERS and {s.worker for s in slots} <= {1, 2}
+    assert all(0 <= s.start < s.end for s in slots)
+    assert [a.slot.worker for a in serial] == [0, 0]        # this process, in order
+    assert serial[0].slot.end <= serial[1].slot.start
+
+
+def test_the_pool_takes_the_longest_paper_first():
+    assert longest_first(["a", "b", "c", "d"], {"a": 1.0, "b": 9.0, "c": 3.0}) == \
+        ["d", "b", "c", "a"]                                # unknown d may be longest
+    ids = registry.ids()
+    assert set(registry.AUDIT_SECONDS) == set(ids) == set(registry.GENERATE_SECONDS)
+    order = longest_first(ids, registry.AUDIT_SECONDS)
+    assert [registry.AUDIT_SECONDS[i] for i in order] == \
+        sorted(registry.AUDIT_SECONDS.values(), reverse=True)
+
+
+def test_the_schedule_names_each_workers_papers_and_the_makespan():
+    text = schedule_text([Slot("a", 1, 0.2, 5.0), Slot("b", 2, 0.2, 3.0),
+                          Slot("c", 2, 3.0, 6.5)])
+    assert text.splitlines() == ["worker 1: a 0.2–5.0 s", "worker 2: b 0.2–3.0 s, c 3.0–6.5 s",
+                                 "makespan 6.5 s"]
 
 
 def test_workers_are_at_most_one_a_paper():
@@ -27,13 +51,15 @@ def test_workers_are_at_most_one_a_paper():
 
 
 def test_the_targets_table_says_met_and_not_met():
-    fast = CommandTime("crane-sym audit", 12.0, 20.0, 1.0, 1.5)
+    fast = CommandTime("crane-sym audit", 12.0, 20.0, 1.0, 1.5,
+                       ("worker 1: a 0.1–9.0 s", "makespan 9.0 s"))
     slow = CommandTime("crane-sym generate --check", 31.0, 20.0, 2.0, 2.5)
     papers = [PaperTimes("a", 3, 1.0, 2.0, 0.5, 10, 0), PaperTimes("b", 2, 2.0, 1.0, 0.5, 4, 1)]
     text = as_markdown([fast, slow], papers)
     assert "| `crane-sym audit` | 12.0 | ≤ 20 s | met | 1.00 / 1.50 |" in text
     assert "| `crane-sym generate --check` | 31.0 | ≤ 20 s | not met |" in text
     assert "| all | 5 | 3.00 | 3.00 | 1.00 | 14 / 1 | 7.00 |" in text
+    assert "- worker 1: a 0.1–9.0 s\n- makespan 9.0 s" in text
 
 
 def test_a_papers_stages_are_timed():

@@ -31,7 +31,7 @@ def test_the_workers_stages_reach_the_parent():
     stream = io.StringIO()
     with progress.reporting(progress.Progress(True, stream)):
         out = in_processes(_slow_paper, ["a", "b"], 2, "working",
-                           lambda r: f"done {r}")
+                           lambda r: f"done {r}").results
     assert out == ["A", "B"]                                   # in the papers' order
     said = stream.getvalue()
     for paper in "ab":
@@ -43,7 +43,7 @@ def test_the_workers_stages_reach_the_parent():
 def test_silent_workers_say_nothing():
     stream = io.StringIO()
     with progress.reporting(progress.Progress(False, stream)):
-        assert in_processes(_slow_paper, ["a", "b"], 2, "working", str) == ["A", "B"]
+        assert in_processes(_slow_paper, ["a", "b"], 2, "working", str).results == ["A", "B"]
     assert stream.getvalue() == ""
 
 

@@ -13,14 +13,21 @@
 
 Each returns a ``CheckOutcome`` whose ``status`` is ``pass``, ``fail`` or
 ``inconclusive``; a failing outcome says what differs.
+
+What repeats within a run is done once: a relation's numeric function (the
+derived step is compared with every reading of its print) and a dimension's
+exponent vector.
 """
 from __future__ import annotations
 
-from typing import Iterable
+from functools import lru_cache
+from typing import Callable, Iterable
 
 import mpmath
 import numpy as np
 import sympy as sp
+
+from sympy.core.function import AppliedUndef
 
 from crane_sym.dimensions import check_equation, vector
 from crane_sym.latex import latex
@@ -28,6 +35,18 @@ from crane_sym.outcomes import FAIL, INCONCLUSIVE, PASS, CheckOutcome
 from crane_sym.audit.sampling import PointSampler, draw
 from crane_sym.symbols import COORDINATE, DEFINED, TIME, SymbolTable
 
+
+
+@lru_cache(maxsize=4096)
+def _mpmath_function(args: tuple, expr: sp.Expr) -> Callable:
+    """``expr`` as an mpmath function of ``args``, made once per run."""
+    return sp.lambdify(list(args), expr, modules="mpmath")
+
+
+@lru_cache(maxsize=None)
+def _vector(dim: sp.Basic) -> tuple:
+    """A dimension's exponent vector, found once per run."""
+    return vector(dim)
 
 
 def residual(relation: sp.Eq) -> sp.Expr:
@@ -55,7 +74,7 @@ def symbolic_equivalence(printed: sp.Eq, derived: sp.Eq,
                          table: SymbolTable) -> CheckOutcome:
     """Decide by simplification whether two relations are the same equation."""
     rp, rd = residual(printed), residual(derived)
-    if sp.simplify(rp - rd) == 0:
+    if sp.expand(rp - rd) == 0 or sp.simplify(rp - rd) == 0:   # expanding is enough, mostly
         return CheckOutcome("symbolic", PASS, "printed − derived simplifies to 0")
     if printed.lhs == derived.lhs and printed.lhs.free_symbols & unknowns_of(table):
         # Both define the same quantity: only equal right-hand sides agree.
@@ -106,8 +125,7 @@ def numeric_equivalence(printed: sp.Eq, derived: sp.Eq, table: SymbolTable,
     if stray:
         raise ValueError(f"symbols {sorted(map(str, stray))} are not in the symbol table")
     args = [e.expr for e in params] + computed + unknown
-    f_p = sp.lambdify(args, rp, modules="mpmath")
-    f_d = sp.lambdify(args, rd, modules="mpmath")
+    f_p, f_d = _mpmath_function(tuple(args), rp), _mpmath_function(tuple(args), rd)
     rng = np.random.default_rng(seed)
     entries = {e.expr: e for e in table}
     original = {v: k for k, v in frozen.items()}
@@ -214,9 +232,116 @@ def difference(printed: sp.Eq, derived: sp.Eq, *, max_ops: int = 300) -> sp.Expr
     return best if best is not None and sp.count_ops(best) <= max_ops else None
 
 
+def _witness_values(symbols: list, rng: np.random.Generator) -> list | None:
+    """A value for each symbol that its SymPy assumptions allow (what
+    ``simplify`` may rely on): of size 0.3 to 3, its sign as declared, random
+    where none is; None when a symbol asks for more (an integer)."""
+    values = []
+    for sym in symbols:
+        if sym.is_integer or sym.is_zero:
+            return None
+        size = mpmath.mpf(float(np.exp(rng.uniform(np.log(0.3), np.log(3.0)))))
+        if sym.is_negative or sym.is_nonpositive:
+            values.append(-size)
+        elif sym.is_positive or sym.is_nonnegative or rng.random() < 0.5:
+            values.append(size)
+        else:
+            values.append(-size)
+    return values
+
+
+def _signs(e: sp.Basic) -> dict[str, bool]:
+    """The assumptions of a function value or derivative ``e`` that its plain
+    stand-in keeps: real, and its sign (and integrality) where declared."""
+    kept = {name: True for name in ("positive", "negative", "nonnegative", "nonpositive",
+                                    "integer") if getattr(e, f"is_{name}")}
+    return {"real": True, **kept}
+
+
+def _stand_ins(expr: sp.Expr, rng: np.random.Generator) -> dict | None:
+    """A polynomial of degree 2 with seeded coefficients for each undefined
+    function of one argument inside an integral of ``expr`` (S(θ) under
+    ∫ S(θ) sin Ω(t − θ) dθ), of the sign it is declared; an identity in any
+    function holds in these. None when one takes more arguments, must be an
+    integer, or is also differentiated (its stand-in would not be frozen)."""
+    inside = {f for i in expr.atoms(sp.Integral) for f in i.atoms(AppliedUndef)}
+    if any(dv.expr.func in {f.func for f in inside} for dv in expr.atoms(sp.Derivative)):
+        return None
+    out = {}
+    for func in sorted({f.func for f in inside}, key=str):
+        applied = next(f for f in inside if f.func is func)
+        if len(applied.args) != 1 or applied.is_integer:
+            return None
+        c = [sp.Rational(int(rng.integers(300, 3000)), 1000) for _ in range(3)]
+        u = sp.Dummy("u", real=True)
+        if applied.is_positive or applied.is_nonnegative:
+            body = c[0] + c[2] * u**2
+        elif applied.is_negative or applied.is_nonpositive:
+            body = -c[0] - c[2] * u**2
+        else:
+            body = c[0] - c[1] * u + c[2] * u**2
+        out[func] = sp.Lambda(u, body)
+    return out
+
+
+def numerically_nonzero(expr: sp.Expr, *, points: int = 2, seed: int = 2024) -> bool:
+    """True when ``expr`` is shown not to be identically 0: at a seeded point
+    its symbols' assumptions allow (an undefined function under an integral
+    a seeded polynomial, :func:`_stand_ins`), it is real, finite and not 0 in
+    mpmath at 20 and at 40 digits, the two values agreeing to 10 digits (a
+    sum that is 0 leaves rounding noise, which does not). Then no
+    simplification can reduce it to 0, and none need be tried. False when the
+    numbers cannot tell: a sum, a derivative of more than a function, a
+    complex or undefined value, a symbol that must be an integer.
+
+    Parameters
+    ----------
+    expr : Expr
+        The expression, such as the difference of two relations' residuals.
+    points : int, optional
+        Seeded points tried.
+    seed : int, optional
+        The seed of the points.
+
+    >>> x, y = sp.symbols("x y", positive=True)
+    >>> numerically_nonzero(sp.sin(x)**2 + sp.cos(x)**2 - 1), numerically_nonzero(x - y)
+    (False, True)
+    """
+    rng = np.random.default_rng(seed)
+    stand_ins = _stand_ins(expr, rng)
+    if stand_ins is None or expr.has(sp.Sum, sp.Product) or any(
+            not isinstance(dv.expr, AppliedUndef) for dv in expr.atoms(sp.Derivative)):
+        return False
+    expr = expr.replace(lambda e: isinstance(e, AppliedUndef) and e.func in stand_ins,
+                        lambda e: stand_ins[e.func](*e.args))
+    frozen = {e: sp.Dummy(f"frz{i}", **_signs(e)) for i, e in enumerate(
+        sorted(expr.atoms(sp.Derivative) | expr.atoms(AppliedUndef),
+               key=lambda e: (-len(e.args), sp.srepr(e))))}
+    flat = expr.xreplace(frozen)
+    if flat.atoms(AppliedUndef) or flat.has(sp.Derivative):
+        return False
+    symbols = sorted(flat.free_symbols, key=sp.default_sort_key)
+    try:
+        f = sp.lambdify(symbols, flat, modules="mpmath")
+        for _ in range(points):
+            values = _witness_values(symbols, rng)
+            if values is None:
+                return False
+            with mpmath.workdps(20):
+                coarse = f(*values)
+            with mpmath.workdps(40):
+                fine = f(*values)
+            if all(isinstance(v, mpmath.mpf) and mpmath.isfinite(v) for v in (coarse, fine)) \
+                    and fine != 0 and abs(coarse - fine) <= mpmath.mpf(10) ** -10 * abs(fine):
+                return True
+    except (ValueError, TypeError, ArithmeticError, NameError, AttributeError):
+        return False
+    return False
+
+
 def dimension_consistency(relation: sp.Eq, table: SymbolTable,
                           names: dict | None = None) -> CheckOutcome:
     """Every term of ``relation``, as printed, has one dimension."""
-    dims = {k: vector(v) for k, v in table.dimensions().items()}
+    dims = {k: _vector(v) for k, v in table.dimensions().items()}
     report = check_equation(relation.lhs, relation.rhs, dims, names)
     return CheckOutcome("dimension", PASS if report.consistent else FAIL, report.message)

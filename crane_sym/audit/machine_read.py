@@ -20,11 +20,13 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, replace
+from functools import lru_cache
 
 import sympy as sp
 from sympy.core.function import AppliedUndef
 
-from crane_sym.audit.checks import numeric_equivalence, symbolic_equivalence
+from crane_sym.audit.checks import (numeric_equivalence, numerically_nonzero,
+                                   symbolic_equivalence)
 from crane_sym.derivation import Derivation
 from crane_sym.latex import latex
 from crane_sym.outcomes import FAIL
@@ -86,10 +88,15 @@ def _canonical(expr: sp.Basic) -> sp.Basic:
     return expr.replace(lambda e: isinstance(e, sp.Abs), lambda e: e.rewrite(sp.Piecewise))
 
 
+@lru_cache(maxsize=4096)
 def _zero(expr: sp.Basic) -> bool:
-    """``expr`` is 0: expanded first, simplified only if needed (integrals kept
-    unevaluated: the print and the transcription write the same integrals)."""
-    return sp.expand(expr) == 0 or sp.simplify(expr, doit=False) == 0
+    """``expr`` is 0: expanded first; simplified only if needed (integrals kept
+    unevaluated: the print and the transcription write the same integrals)
+    and not where numbers show it is not 0 (``numerically_nonzero``), so a 0
+    rests on the symbolic proof alone. Asked once per run of each expression."""
+    if sp.expand(expr) == 0:
+        return True
+    return not numerically_nonzero(expr) and sp.simplify(expr, doit=False) == 0
 
 
 def _refuted(parsed, hand: sp.Eq, d: Derivation) -> bool:

@@ -9,7 +9,9 @@ build (``registry.get``), the checks of its printed formulas
 its prints (``machine_read``), the last with how many look-ups of the prints'
 sides the committed table of parses answered (an unreadable side is looked up
 each time it is met) and how many sides the Earley parser read afresh
-(``crane_sym.audit.parse_table``). The machine is shared, so each
+(``crane_sym.audit.parse_table``). The audit's schedule (which paper ran on
+which worker, from when to when, and the makespan) is the one its own
+``--profile`` printed in that run. The machine is shared, so each
 measurement is quoted with the load average before and after it.
 """
 from __future__ import annotations
@@ -63,6 +65,7 @@ class CommandTime:
     target: float
     load_before: float
     load_after: float
+    schedule: tuple[str, ...] = ()   # its `schedule:` lines on stderr (audit --profile)
 
     @property
     def met(self) -> bool:
@@ -118,8 +121,10 @@ def command_time(args: Sequence[str], target: float) -> CommandTime:
         last = (done.stderr.strip().splitlines() or ["no message"])[-1]
         raise RuntimeError(f"bench --audit: `crane-sym {' '.join(args)}` exited "
                            f"{done.returncode}: {last}")
+    schedule = tuple(line[len("schedule: "):] for line in done.stderr.splitlines()
+                     if line.startswith("schedule: "))
     return CommandTime("crane-sym " + " ".join(args), seconds, target, before,
-                       os.getloadavg()[0])
+                       os.getloadavg()[0], schedule)
 
 
 def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes]) -> str:
@@ -146,8 +151,11 @@ def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes]) -
                  f"{sum(p.from_table for p in papers)} / "
                  f"{sum(p.parsed_fresh for p in papers)}",
                  f"{sum(p.total for p in papers):.2f}"])
+    schedules = [line for c in commands if c.schedule
+                 for line in ["", f"Schedule of `{c.command}` (its own --profile):", "",
+                              *(f"- {s}" for s in c.schedule)]]
     stages = markdown_table(
         ["paper", "formulas", "build s", "checks s", "machine reading s",
          "table look-ups / sides parsed afresh", "total s"], rows)
-    return "\n".join(["## Targets", "", targets, "", "## Where an audit's time goes "
+    return "\n".join(["## Targets", "", targets, *schedules, "", "## Where an audit's time goes "
                       "(one process, paper by paper)", "", stages])

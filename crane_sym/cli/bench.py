@@ -229,7 +229,8 @@ def _bench_audit(out_dir: Path, show: bool) -> Path:
     say = progress.current()
     start = time.perf_counter()
     with say.task("`crane-sym audit` of every paper in a fresh process"):
-        audit = at.command_time(["audit", "--format", "json", "--quiet"], at.AUDIT_TARGET)
+        audit = at.command_time(["audit", "--format", "json", "--quiet", "--profile"],
+                                at.AUDIT_TARGET)
     with say.task("`crane-sym generate --check` in a fresh process"):
         check = at.command_time(["generate", "--check", "--quiet"], at.CHECK_TARGET)
     with say.task("an audit stage by stage, paper by paper"):

@@ -116,7 +116,7 @@ def cmd_audit(args: argparse.Namespace) -> int:
         return cmd_audit_components(args)
     # imported on use: see the module docstring
     from crane_sym.audit.formats import FORMATS
-    from crane_sym.audit.papers import audit_papers, workers
+    from crane_sym.audit.papers import audit_papers, schedule_text, workers
     ids = _ids(args.ids)
     processes = args.processes or workers(len(ids))
     reporter = _progress(args)
@@ -141,6 +141,9 @@ def cmd_audit(args: argparse.Namespace) -> int:
                   file=sys.stderr)
             for seconds, label in a.slowest:
                 print(f"    {seconds:7.3f} s  {label}", file=sys.stderr)
+        slots = [a.slot for a in audited if a.slot is not None]
+        print("schedule: " + schedule_text(slots).replace("\n", "\nschedule: "),
+              file=sys.stderr)
     return 0
 
 

@@ -4,7 +4,8 @@ parses (``crane_sym.audit.parse_table``).
 
 A paper's module, its scenes' modules and its prints' parses need that paper
 built and nothing of another paper's, so the papers are printed in processes
-of their own when more than one core is free (SymPy holds the GIL); the files
+of their own when more than one core is free (SymPy holds the GIL), the
+longest first (``registry.GENERATE_SECONDS``); the files
 are the same bytes either way, assembled in the order one process gives.
 """
 from __future__ import annotations
@@ -71,7 +72,7 @@ def all_files(processes: int | None = None) -> dict[str, str]:
     processes = workers(len(papers)) if processes is None else processes
     if processes > 1:
         shares = in_processes(paper_files, papers, processes, "printing modules and scenes",
-                              _printed)
+                              _printed, registry.GENERATE_SECONDS).results
     else:
         shares = [paper_files(paper) for paper in papers]
     modules: dict[str, str] = {}
