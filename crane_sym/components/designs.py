@@ -9,8 +9,9 @@ in SI; each varied component is rebuilt from its table with those values
 model is assembled anew, and the symbolic derivation is the file's, shared
 (:meth:`crane_sym.components.model.Model.with_parts`); a design whose gaps
 differ from the file's (a backlash varied from or to zero) takes the
-derivation of its own structure, made once (:class:`Templates`, which a
-paper's drive train uses for its own designs too).
+derivation of its own structure, made once
+(:class:`~crane_sym.components.templates.Templates`, which a paper's drive
+train uses for its own designs too).
 
 The outputs, per elastic link ``L``: ``L.peak``, the largest |load| over the
 run from the file's start (N·m, or N between translating bodies), and
@@ -45,6 +46,7 @@ from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.components.kinds import by_table
 from crane_sym.components.model import Model, start_load
+from crane_sym.components.templates import Templates, structure
 from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, Component,
                                         ComponentError, value)
 from crane_sym.components.pruning import Scope
@@ -114,59 +116,6 @@ def _text(value: float, field: Field) -> str | float:
         return float(value)
     unit = si_unit(field.dimension)
     return repr(float(value)) + ("" if unit == "1" else f" {unit}")
-
-
-def structure(parts: Sequence[Component]) -> tuple:
-    """What a model's derivation rests on beside its parts' values, which
-    :meth:`Model.with_parts` cannot change: each part's kind and name, whether
-    an elastic link has a gap, how many steps a characteristic takes (each
-    kind's ``shape``).
-
-    Parameters
-    ----------
-    parts : sequence of Component
-        The parts of a model.
-    """
-    shapes = [kinds.of(p).shape for p in parts]
-    return tuple((type(p).__name__, p.name, shape(p) if shape is not None else None)
-                 for p, shape in zip(parts, shapes))
-
-
-class Templates:
-    """One derived model per :func:`structure`, the template of every design of
-    it: a design is its template with the design's parts
-    (:meth:`Model.with_parts`: assembled anew, Lagrange's equations and their
-    lambdified form shared, not derived again), its name, title and scope the
-    template's. A structure met for the first time is derived once, as
-    ``Model(parts, name, title, scope)``.
-
-    Parameters
-    ----------
-    name, title : str
-        The name and title of the models.
-    scope : Scope, optional
-        The run the models are built for (``Model.for_run``), if any.
-    models : sequence of Model, optional
-        Templates derived already (a component file's own model).
-    """
-
-    def __init__(self, name: str, title: str = "", scope: Scope | None = None,
-                 models: Sequence[Model] = ()) -> None:
-        self.name, self.title, self.scope = name, title, scope
-        self.models = {structure(m.components): m for m in models}
-
-    def design(self, parts: Sequence[Component]) -> Model:
-        """The model of ``parts``, its derivation its structure's template's.
-
-        Parameters
-        ----------
-        parts : sequence of Component
-            The design's parts.
-        """
-        key = structure(parts)
-        if key not in self.models:
-            self.models[key] = Model(parts, self.name, self.title, self.scope)
-        return self.models[key].with_parts(parts)
 
 
 class Designs:
