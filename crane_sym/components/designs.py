@@ -34,6 +34,7 @@ import hashlib
 import math
 import tomllib
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 from typing import Mapping, Sequence
 
@@ -94,6 +95,7 @@ class Field:
         return si_unit(self.dimension)
 
 
+@lru_cache(maxsize=None)
 def si_unit(dimension: Dimension) -> str:
     """The SI unit of ``dimension`` as :mod:`crane_sym.units` reads it
     (``kg*m^2*s^-2``; ``1`` for none): its factor to SI is exactly 1.
@@ -214,40 +216,46 @@ class Designs:
     def start(self, model: Model):
         """(mode, state, system) of a design's run from the file's start."""
         f = self.file
-        mode, x0, extra = model.start(f.body, f.speed, f.rest)
-        return mode, x0, ComponentSystem(model.equations, extra)
+        return model.started(f.body, f.speed, f.rest)
 
     @property
     def duration(self) -> float:
         """The run's end [s]."""
         return value("run", "duration", self.file.duration, time).si
 
-    def largest(self, output: str, values: Mapping[str, np.ndarray]) -> np.ndarray:
-        """``output`` of every design of a block (``values``: field -> SI arrays
-        of one shape, or scalars), the designs solved together."""
-        from crane_sym.mechanics.batched_runs import largest_of_runs
+    def runs(self, output: str, values: Mapping[str, np.ndarray]
+             ) -> tuple[tuple[int, ...], list[HybridRun], np.ndarray]:
+        """(shape, one run a design with ``output``'s load as its output, each
+        link's reference for a factor, NaN where it has none) of a block
+        (``values`` as :meth:`largest` takes them): what the batched solver
+        solves together, each design built from its structure's template."""
         index, kind, _ = self.outputs()[output]
         names = list(values)
         arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names]) \
             if names else [np.zeros(())]
         shape = arrays[0].shape
-        runs, reference = [], np.empty(arrays[0].size)
+        runs, reference = [], np.full(arrays[0].size, np.nan)
         t_end = self.duration
         for k, at in enumerate(np.ndindex(shape)):
             model = self.design({n: float(a[at]) for n, a in zip(names, arrays)})
             mode, x0, system = self.start(model)
             if kind == "reaction":
-                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
-                                      system.contact_load(index)))
-                continue
-            if kind == "part":
-                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
-                                      _reported(system, model, index)))
-                continue
-            runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
-                                  system.link_load(index)))
-            ref = start_load(system, mode, x0, index)[1]
-            reference[k] = abs(ref) if ref else np.nan
+                load = system.contact_load(index)
+            elif kind == "part":
+                load = _reported(system, model, index)
+            else:
+                load = system.link_load(index)
+                ref = start_load(system, mode, x0, index)[1]
+                reference[k] = abs(ref) if ref else np.nan
+            runs.append(HybridRun(system, mode, x0, t_end, model.schedule(), load))
+        return shape, runs, reference
+
+    def largest(self, output: str, values: Mapping[str, np.ndarray]) -> np.ndarray:
+        """``output`` of every design of a block (``values``: field -> SI arrays
+        of one shape, or scalars), the designs solved together."""
+        from crane_sym.mechanics.batched_runs import largest_of_runs
+        kind = self.outputs()[output][1]
+        shape, runs, reference = self.runs(output, values)
         result = largest_of_runs(runs, magnitude=True)
         if result.capped.any():
             k = int(np.flatnonzero(result.capped)[0])
