@@ -16,7 +16,9 @@ from dataclasses import dataclass
 from typing import Callable
 
 from crane_sym.components import kinds
+from crane_sym.components.equations import Equations
 from crane_sym.components.kinds.events import Events
+from crane_sym.components.topology import Assembly
 
 __all__ = ["Layout", "layout"]
 
@@ -31,8 +33,11 @@ class Layout:
     :data:`~crane_sym.components.kinds.KINDS`; ``columns``: (table, place)
     -> the column of a part's own state after the groups' 2 n;
     ``events``: each group's event -> (kind, group); ``rules``: each part's
-    event -> (its rule, the part's place among its kind's parts)."""
+    event -> (its rule, the part's place among its kind's parts); ``kinds``:
+    the kinds it was built from (:data:`~crane_sym.components.kinds.KINDS`
+    then, kept so that the ids its key holds stay theirs)."""
 
+    kinds: tuple
     of_kind: dict[str, tuple[int, ...]]
     switching: tuple[tuple[Events, str], ...]
     columns: dict[tuple[str, int], int]
@@ -44,7 +49,7 @@ class Layout:
 _GROUP_EVENTS = ((" rests", "rest"), (" slips +", "slip+"), (" slips -", "slip-"))
 
 
-def layout(equations) -> Layout:
+def layout(equations: Equations) -> Layout:
     """The :class:`Layout` of ``equations``' system, built once per structure
     and kept in ``equations.layouts`` (shared by a template and its designs).
 
@@ -66,7 +71,7 @@ def layout(equations) -> Layout:
     return equations.layouts[signature]
 
 
-def _built(assembly) -> Layout:
+def _built(assembly: Assembly) -> Layout:
     """The tables of :class:`Layout` for ``assembly``."""
     items = (*assembly.loads, *assembly.contacts, *assembly.links)
     of_kind = {kind.table: tuple(j for j, item in enumerate(items)
@@ -84,4 +89,4 @@ def _built(assembly) -> Layout:
                 rules[name] = (events.rules[key], i)
     events = {group.name + suffix: (kind, g) for g, group in enumerate(assembly.groups)
               for suffix, kind in _GROUP_EVENTS}
-    return Layout(of_kind, switching, columns, events, rules)
+    return Layout(tuple(kinds.KINDS), of_kind, switching, columns, events, rules)

@@ -154,7 +154,8 @@ def rest_start(model, probe: ComponentSystem | None = None) -> tuple[Mode, np.nd
     if model.steady_motor is not None:
         raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
                              "hold; give its torque")
-    probe = probe or ComponentSystem(model.equations)
+    if probe is None:
+        probe = ComponentSystem(model.equations)
     n = len(model.assembly.groups)
     mode = start_mode(probe, tuple(0 if l.part.opens else 1 for l in probe.backlash), n, True)
     x = np.zeros(probe.size)
