@@ -7,7 +7,9 @@ each row printed with met / not met and the machine's load:
   block as a sweep's worker solves it (``crane_sym.sweep.grid.evaluate_block``);
 - a component file of 5 bodies (:data:`FILE_CASES`: ``bridge_travel.toml``,
   its two stiffnesses varied, 10⁴ designs in at most 2 s), one block through
-  ``crane_sym.components.designs.evaluate_block``.
+  ``crane_sym.components.designs.evaluate_block``, and the building of
+  :data:`PROFILE_DESIGNS` of its designs' runs alone (``Designs.runs``: what
+  of a block is per-design Python before the batched solve).
 
 Each block is solved once (a run of a minute, not three). Where its time goes
 comes from cProfile on a grid of :data:`PROFILE_DESIGNS` designs of the same
@@ -129,7 +131,7 @@ def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
     """A component file's grid of ``case.n`` ** 2 designs as one block
     against ``case.target``, and where a grid of :data:`PROFILE_DESIGNS`
     spends its time; ``root`` is the folder ``case.path`` is relative to."""
-    from crane_sym.components.designs import evaluate_block as file_block
+    from crane_sym.components.designs import designs, evaluate_block as file_block
     path = root / case.path
     name = f"{case.path} {case.output}"
     if not path.is_file():
@@ -144,6 +146,10 @@ def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
     say.step(f"  {name}: {case.n ** len(case.axes)} designs as one block ...")
     row = {"name": name, **_timed(solver(case.n)), "target": case.target}
     row["met"] = row["seconds"] <= case.target
+    say.step(f"  {name}: {PROFILE_DESIGNS} designs' runs built, not solved ...")
+    block = designs(str(path), digest)
+    values = _file_values(case, round(PROFILE_DESIGNS ** (1 / len(case.axes))))
+    row["construction"] = _timed(lambda: block.runs(case.output, values)[2])
     say.step(f"  {name}: where the time goes ({PROFILE_DESIGNS} designs, cProfile) ...")
     row["profile"] = profile_top(solver(round(PROFILE_DESIGNS ** (1 / len(case.axes)))))
     return row
@@ -183,6 +189,14 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
                      f"{r['nan']}); load {r['load_before']:.1f} before, "
                      f"{r['load_after']:.1f} after | ≤ {r['target']:g} s | "
                      f"{'met' if r['met'] else 'not met'} |")
+    for r in rows:
+        if "construction" in r:
+            c = r["construction"]
+            lines.append(f"\n{r['name']}: its {c['designs']} designs' runs built, not solved "
+                         f"(parts, model, start, system, schedule: ``Designs.runs``): "
+                         f"{c['seconds']:.2f} s wall, {c['cpu_seconds']:.2f} s CPU "
+                         f"({1e3 * c['seconds'] / c['designs']:.2f} ms a design); load "
+                         f"{c['load_before']:.1f} before.")
     for r in rows:
         if r.get("profile") and not r["met"]:
             parts = "; ".join(f"{name} {100 * share:.0f} %" for name, share in r["profile"])

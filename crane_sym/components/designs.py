@@ -9,8 +9,9 @@ in SI; each varied component is rebuilt from its table with those values
 model is assembled anew, and the symbolic derivation is the file's, shared
 (:meth:`crane_sym.components.model.Model.with_parts`); a design whose gaps
 differ from the file's (a backlash varied from or to zero) takes the
-derivation of its own structure, made once (:class:`Templates`, which a
-paper's drive train uses for its own designs too).
+derivation of its own structure, made once
+(:class:`~crane_sym.components.templates.Templates`, which a paper's drive
+train uses for its own designs too).
 
 The outputs, per elastic link ``L``: ``L.peak``, the largest |load| over the
 run from the file's start (N·m, or N between translating bodies), and
@@ -33,6 +34,7 @@ import hashlib
 import math
 import tomllib
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 from typing import Mapping, Sequence
 
@@ -45,6 +47,7 @@ from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.components.kinds import by_table
 from crane_sym.components.model import Model, start_load
+from crane_sym.components.templates import Templates, structure
 from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, Component,
                                         ComponentError, value)
 from crane_sym.components.pruning import Scope
@@ -92,6 +95,7 @@ class Field:
         return si_unit(self.dimension)
 
 
+@lru_cache(maxsize=None)
 def si_unit(dimension: Dimension) -> str:
     """The SI unit of ``dimension`` as :mod:`crane_sym.units` reads it
     (``kg*m^2*s^-2``; ``1`` for none): its factor to SI is exactly 1.
@@ -114,59 +118,6 @@ def _text(value: float, field: Field) -> str | float:
         return float(value)
     unit = si_unit(field.dimension)
     return repr(float(value)) + ("" if unit == "1" else f" {unit}")
-
-
-def structure(parts: Sequence[Component]) -> tuple:
-    """What a model's derivation rests on beside its parts' values, which
-    :meth:`Model.with_parts` cannot change: each part's kind and name, whether
-    an elastic link has a gap, how many steps a characteristic takes (each
-    kind's ``shape``).
-
-    Parameters
-    ----------
-    parts : sequence of Component
-        The parts of a model.
-    """
-    shapes = [kinds.of(p).shape for p in parts]
-    return tuple((type(p).__name__, p.name, shape(p) if shape is not None else None)
-                 for p, shape in zip(parts, shapes))
-
-
-class Templates:
-    """One derived model per :func:`structure`, the template of every design of
-    it: a design is its template with the design's parts
-    (:meth:`Model.with_parts`: assembled anew, Lagrange's equations and their
-    lambdified form shared, not derived again), its name, title and scope the
-    template's. A structure met for the first time is derived once, as
-    ``Model(parts, name, title, scope)``.
-
-    Parameters
-    ----------
-    name, title : str
-        The name and title of the models.
-    scope : Scope, optional
-        The run the models are built for (``Model.for_run``), if any.
-    models : sequence of Model, optional
-        Templates derived already (a component file's own model).
-    """
-
-    def __init__(self, name: str, title: str = "", scope: Scope | None = None,
-                 models: Sequence[Model] = ()) -> None:
-        self.name, self.title, self.scope = name, title, scope
-        self.models = {structure(m.components): m for m in models}
-
-    def design(self, parts: Sequence[Component]) -> Model:
-        """The model of ``parts``, its derivation its structure's template's.
-
-        Parameters
-        ----------
-        parts : sequence of Component
-            The design's parts.
-        """
-        key = structure(parts)
-        if key not in self.models:
-            self.models[key] = Model(parts, self.name, self.title, self.scope)
-        return self.models[key].with_parts(parts)
 
 
 class Designs:
@@ -265,40 +216,46 @@ class Designs:
     def start(self, model: Model):
         """(mode, state, system) of a design's run from the file's start."""
         f = self.file
-        mode, x0, extra = model.start(f.body, f.speed, f.rest)
-        return mode, x0, ComponentSystem(model.equations, extra)
+        return model.started(f.body, f.speed, f.rest)
 
     @property
     def duration(self) -> float:
         """The run's end [s]."""
         return value("run", "duration", self.file.duration, time).si
 
-    def largest(self, output: str, values: Mapping[str, np.ndarray]) -> np.ndarray:
-        """``output`` of every design of a block (``values``: field -> SI arrays
-        of one shape, or scalars), the designs solved together."""
-        from crane_sym.mechanics.batched_runs import largest_of_runs
+    def runs(self, output: str, values: Mapping[str, np.ndarray]
+             ) -> tuple[tuple[int, ...], list[HybridRun], np.ndarray]:
+        """(shape, one run a design with ``output``'s load as its output, each
+        link's reference for a factor, NaN where it has none) of a block
+        (``values`` as :meth:`largest` takes them): what the batched solver
+        solves together, each design built from its structure's template."""
         index, kind, _ = self.outputs()[output]
         names = list(values)
         arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names]) \
             if names else [np.zeros(())]
         shape = arrays[0].shape
-        runs, reference = [], np.empty(arrays[0].size)
+        runs, reference = [], np.full(arrays[0].size, np.nan)
         t_end = self.duration
         for k, at in enumerate(np.ndindex(shape)):
             model = self.design({n: float(a[at]) for n, a in zip(names, arrays)})
             mode, x0, system = self.start(model)
             if kind == "reaction":
-                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
-                                      system.contact_load(index)))
-                continue
-            if kind == "part":
-                runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
-                                      _reported(system, model, index)))
-                continue
-            runs.append(HybridRun(system, mode, x0, t_end, model.schedule(),
-                                  system.link_load(index)))
-            ref = start_load(system, mode, x0, index)[1]
-            reference[k] = abs(ref) if ref else np.nan
+                load = system.contact_load(index)
+            elif kind == "part":
+                load = _reported(system, model, index)
+            else:
+                load = system.link_load(index)
+                ref = start_load(system, mode, x0, index)[1]
+                reference[k] = abs(ref) if ref else np.nan
+            runs.append(HybridRun(system, mode, x0, t_end, model.schedule(), load))
+        return shape, runs, reference
+
+    def largest(self, output: str, values: Mapping[str, np.ndarray]) -> np.ndarray:
+        """``output`` of every design of a block (``values``: field -> SI arrays
+        of one shape, or scalars), the designs solved together."""
+        from crane_sym.mechanics.batched_runs import largest_of_runs
+        kind = self.outputs()[output][1]
+        shape, runs, reference = self.runs(output, values)
         result = largest_of_runs(runs, magnitude=True)
         if result.capped.any():
             k = int(np.flatnonzero(result.capped)[0])

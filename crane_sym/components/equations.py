@@ -164,6 +164,12 @@ class Equations:
     def _numeric(self) -> dict:
         return {}
 
+    @cached_property
+    def layouts(self) -> dict:
+        """The system's tables by structure (:func:`crane_sym.components.layout.layout`),
+        shared by the designs of :meth:`for_design`."""
+        return {}
+
     def numeric(self, extra: dict[sp.Symbol, float] | None = None) -> Callable:
         """(χ, δ, on, B, β, L) -> (M, D, K, f) as arrays, the parameters' values put in
         (and ``extra``: a steady motor's solved torque). Kept per ``extra``: a run
@@ -232,6 +238,7 @@ class Equations:
         design.__dict__["linear"] = self.linear              # cached_property: shared
         design.__dict__["first_order"] = self.first_order
         design.__dict__["_lambdified"] = self._lambdified
+        design.__dict__["layouts"] = self.layouts
         # the links' symbolic loads too (SymPy's diff: a quarter of a design's assembly)
         design.__dict__["_link_coefficients"] = self._link_coefficients
         return design

@@ -46,10 +46,10 @@ from dataclasses import replace
 
 import numpy as np
 
-from crane_sym.components import kinds
 from crane_sym.components.equations import Equations
 from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
+from crane_sym.components.layout import layout
 from crane_sym.components.mode_numbers import ModeNumbers
 from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode, memo, solved
 from crane_sym.mechanics.piecewise_linear import Guard
@@ -69,23 +69,23 @@ class ComponentSystem:
         self.extra = dict(extra or {})
         self.n = len(a.groups)
         self.backlash = [l for l in a.links if l.gapped]
+        # the tables that rest on the structure alone, shared by a template's designs
+        shared = layout(equations)
+        items = (*a.loads, *a.contacts, *a.links)
         #: The parts of each kind as assembled (its loads, contacts or links),
         #: in the order given.
-        self.of_kind = {kind.table: [l for l in (*a.loads, *a.contacts, *a.links)
-                                     if kind.part_kind == l.part.kind] for kind in kinds.KINDS}
+        self.of_kind = {table: [items[j] for j in places]
+                        for table, places in shared.of_kind.items()}
         #: Each kind that switches (``Kind.events``): its events, table and
         #: parts, in the order of :data:`~crane_sym.components.kinds.KINDS`.
-        self.switching = [(kind.events, kind.table, self.of_kind[kind.table])
-                          for kind in kinds.KINDS if kind.events is not None]
+        self.switching = [(events, table, self.of_kind[table])
+                          for events, table in shared.switching]
         # what the walkthrough and the command line name by kind
         self.brakes, self.motors, self.characteristics = (
             self.of_kind.get(t, []) for t in ("brake", "motor", "characteristic"))
         #: The column of each part's own state, by (its kind's table, its place).
-        self.columns: dict[tuple[str, int], int] = {}
-        for events, table, loads in self.switching:
-            for i, load in enumerate(loads):
-                for _ in range(events.states(load.part)):
-                    self.columns[table, i] = 2 * self.n + len(self.columns)
+        self.columns: dict[tuple[str, int], int] = {
+            key: 2 * self.n + column for key, column in shared.columns.items()}
         own = len(self.columns)
         self.beta = {i: col for (t, i), col in self.columns.items() if t == "brake"}
         self.laws = clocked([l.part for l in a.loads])
@@ -98,17 +98,9 @@ class ComponentSystem:
                       if law.law == "speed"}          # law -> (group, κ of its body)
         self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
         self.contacts = list(a.contacts)
-        self.events: dict[str, tuple[str, int]] = {}
-        for g, group in enumerate(a.groups):
-            for suffix, kind in ((" rests", "rest"), (" slips +", "slip+"),
-                                 (" slips -", "slip-")):
-                self.events[group.name + suffix] = (kind, g)
+        self.events: dict[str, tuple[str, int]] = dict(shared.events)
         #: The rule of each kind's event, by its event's name: (rule, place).
-        self.rules: dict[str, tuple] = {}
-        for events, _, loads in self.switching:
-            for i, load in enumerate(loads):
-                for name, key in events.names(load.part):
-                    self.rules[name] = (events.rules[key], i)
+        self.rules: dict[str, tuple] = shared.rules
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
         self.events.update(self.first_order.events())

@@ -36,10 +36,10 @@ import numpy as np
 
 from crane_sym.components.contacts import ContactPeak, contact_peaks
 from crane_sym.components.equations import Equations, derive
-from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem, Mode
 from crane_sym.components.initial import shifts
 from crane_sym.components.laws import LawClock, clocked
+from crane_sym.components.layout import layout
 from crane_sym.components.model_limits import MAX_PHASES, check_cycles
 from crane_sym.components.parts import ROTATING, Component, ComponentError, Given, value
 from crane_sym.components.pruning import Dropped, Scope, needed
@@ -207,6 +207,25 @@ class Model:
             return rest_start(self)
         return steady_start(self, body, speed)
 
+    def started(self, body: str | None = None, speed: Given = 0.0, rest: bool = False
+                ) -> tuple[Mode, np.ndarray, ComponentSystem]:
+        """:meth:`start` with the run's system: (mode, state, system). Where
+        the start solves no value (no ``steady`` motor) the system the start
+        was found with is the run's, not built a second time.
+
+        Parameters
+        ----------
+        body, speed, rest
+            The start, as :meth:`start` takes it.
+        """
+        if self.steady_motor is not None:
+            mode, x0, extra = self.start(body, speed, rest)
+            return mode, x0, ComponentSystem(self.equations, extra)
+        system = ComponentSystem(self.equations)
+        mode, x0, _ = (rest_start(self, system) if rest else
+                       steady_start(self, body, speed, system))
+        return mode, x0, system
+
     def with_parts(self, components: Sequence[Component]) -> "Model":
         """This model with other values of its parts (a design of a sweep): the
         parts assembled anew, the symbolic derivation shared
@@ -232,12 +251,11 @@ class Model:
         characteristic's steps; a link cut at ``fails_at``;
         :class:`~crane_sym.components.kinds.events.Events`) and motor laws' pieces; for a start at
         ``rest``, without those its mode has taken already."""
-        out = []
-        for kind in kinds.KINDS:
-            if kind.events is not None:
-                out += [e for l in (*self.assembly.loads, *self.assembly.links)
-                        if l.part.kind == kind.part_kind
-                        for e in kind.events.schedule(l.part, rest)]
+        a, shared = self.assembly, layout(self.equations)
+        items = (*a.loads, *a.contacts, *a.links)
+        contacts = range(len(a.loads), len(a.loads) + len(a.contacts))   # none scheduled
+        out = [e for events, table in shared.switching for j in shared.of_kind[table]
+               if j not in contacts for e in events.schedule(items[j].part, rest)]
         out += LawClock(clocked([l.part for l in self.assembly.loads]), 0).schedule()
         return tuple(sorted(out))
 
@@ -274,8 +292,7 @@ class Model:
                 f"{' from rest' if scope.rest else ''} without {scope.dropped[0].part.label}"
                 f" ({scope.dropped[0].reason}); build it for this run (Model.for_run)")
         check_cycles(self.assembly, t_end)
-        mode, x0, extra = self.start(start_body, start_speed, rest)
-        system = ComponentSystem(self.equations, extra)
+        mode, x0, system = self.started(start_body, start_speed, rest)
         names = [l.part.name for l in system.assembly.links]
         if link is not None and link not in names:
             raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")

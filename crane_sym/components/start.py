@@ -43,7 +43,8 @@ def start_mode(system: ComponentSystem, contacts: tuple[int, ...], n: int, rest:
     return mode.setting(**system.start(rest))
 
 
-def steady_start(model, body: str | None, speed: Given) -> tuple[Mode, np.ndarray, dict]:
+def steady_start(model, body: str | None, speed: Given,
+                 probe: ComponentSystem | None = None) -> tuple[Mode, np.ndarray, dict]:
     """The steady state at t = 0: (mode, state, solved values).
 
     Every group moves at the speed ``body``'s ``speed`` implies (no link
@@ -64,6 +65,9 @@ def steady_start(model, body: str | None, speed: Given) -> tuple[Mode, np.ndarra
         The body whose speed is given (None: the first).
     speed : str or float
         Its speed.
+    probe : ComponentSystem, optional
+        The model's system, where the model has no ``steady`` motor (built
+        here if not given).
     """
     a = model.assembly
     if a.contacts:
@@ -95,7 +99,8 @@ def steady_start(model, body: str | None, speed: Given) -> tuple[Mode, np.ndarra
                                  f"which cannot move at the steady speed {v:g} of "
                                  f"{a.bodies[body].label}; start at speed 0")
     steady = model.steady_motor
-    probe = ComponentSystem(model.equations, {steady: 0.0} if steady is not None else {})
+    if probe is None or steady is not None:
+        probe = ComponentSystem(model.equations, {steady: 0.0} if steady is not None else {})
     unit = ComponentSystem(model.equations, {steady: 1.0}) if steady is not None else None
     contacts = tuple(1 for _ in probe.backlash)
     for _ in range(2 * len(contacts) + 2):
@@ -131,7 +136,7 @@ def steady_start(model, body: str | None, speed: Given) -> tuple[Mode, np.ndarra
     return (*apply(model.initial, probe, mode, x, v), extra)
 
 
-def rest_start(model) -> tuple[Mode, np.ndarray, dict]:
+def rest_start(model, probe: ComponentSystem | None = None) -> tuple[Mode, np.ndarray, dict]:
     """At rest, every gap open (a link with backlash at the end of its gap
     where its twist is zero; a link that only fails, its gap of width 0, on
     its flank), whatever the loads; what holds a group by friction from t = 0
@@ -143,11 +148,14 @@ def rest_start(model) -> tuple[Mode, np.ndarray, dict]:
     ----------
     model : Model
         The model.
+    probe : ComponentSystem, optional
+        The model's system (built here if not given).
     """
     if model.steady_motor is not None:
         raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
                              "hold; give its torque")
-    probe = ComponentSystem(model.equations)
+    if probe is None:
+        probe = ComponentSystem(model.equations)
     n = len(model.assembly.groups)
     mode = start_mode(probe, tuple(0 if l.part.opens else 1 for l in probe.backlash), n, True)
     x = np.zeros(probe.size)

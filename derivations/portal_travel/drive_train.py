@@ -30,7 +30,7 @@ import numpy as np
 
 from crane_sym.components import (Brake, Characteristic, ElasticLink, Mass, Model,
                                   Resistance)
-from crane_sym.components.designs import Templates
+from crane_sym.components.templates import Templates
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.mechanics.phase_table import Affine
 from crane_sym.mechanics.piecewise_linear import PiecewiseResult
