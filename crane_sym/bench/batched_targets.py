@@ -226,7 +226,7 @@ def markdown_rows(r: dict[str, Any]) -> list[str]:
             "integrator runs found another number of phases than the closed form."]
     if "roofline" in r.get("threads", {}):
         t = r["threads"]
-        lines += roofline_rows(t["efficiency"], t["target"], t["roofline"])
+        lines += roofline_rows(t["efficiency"], t["target"], t["roofline"], t["fit"])
     lines.append("")
     return lines
 
@@ -243,7 +243,8 @@ def parallel_section() -> str:
     return "\n".join(["# Bench: both cores on a batched sweep, and why", "",
                       "| target | measured | limit | met |", "| --- | --- | --- | --- |",
                       thread_markdown_row(t),
-                      *roofline_rows(t["efficiency"], t["target"], t["roofline"]), ""])
+                      *roofline_rows(t["efficiency"], t["target"], t["roofline"], t["fit"]),
+                      ""])
 
 
 def run_targets(rows: list[dict[str, Any]], designs: int = 10**6) -> dict[str, Any]:
