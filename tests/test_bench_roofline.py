@@ -3,6 +3,8 @@ round by round, the controls measured on small arrays, Amdahl's serial
 fraction fitted with its range over the rounds (and called unstable where
 it is), the scaling curve's measured and modelled parts, and the verdict's
 reason. No timing is asserted."""
+import os
+
 import numpy as np
 import pytest
 
@@ -132,7 +134,13 @@ def _row(**changed):
            "sweep": _sweep(0.5, [0.5, 0.45]), "no_dask_seconds": 1.0, "no_dask_median": 1.1,
            "dask_seconds": 1.0, "dask_median": 1.2, "dask_cores": 1.0,
            "relative": {"least": 0.83, "median": 0.8, "low": 0.75, "high": 0.83},
-           "same_worst": True, "target": 0.7, "met": False, "roofline": _roof(0.6, 0.9),
+           "same_worst": True, "target": 0.7, "variants": [
+               {"trial": "sweep, no Dask", "workers": 1, "least_s": 1.0, "median_s": 1.1,
+                "ratio": 1.0, "low": 1.0, "high": 1.0},
+               {"trial": "6 blocks, Dask's threads", "workers": 2, "least_s": 0.7,
+                "median_s": 0.8, "ratio": 0.71, "low": 0.6, "high": 0.71,
+                "relative": {"least": 1.18, "median": 1.0, "low": 0.9, "high": 1.18}}],
+           "met": False, "roofline": _roof(0.6, 0.9),
            "fit": {"fraction": 0.4, "low": 0.3, "high": 0.6, "stable": False,
                    "why": "the range is wider than 0.1"}}
     return {**row, **changed}
@@ -147,16 +155,50 @@ def test_parallel_section_alone_from_the_command_line(monkeypatch, capsys):
     assert "efficiency 50 % from the minima" in out and "| 16 | — |" in out
     assert "83 % of what this machine gave np.sin" in out and "2 interleaved rounds" in out
     assert "not met: the machine" in out and "NOT STABLE" in out
+    assert ("| 6 blocks, Dask's threads | 2 | 0.70 | 0.80 | 71 % (60–71 %) | "
+            "118 % (90–118 %) |") in out
 
 
-def test_thread_row_measures_the_sweep_and_its_controls_in_the_same_rounds():
+def test_thread_row_measures_the_sweep_its_variants_and_controls_in_the_same_rounds():
     from crane_sym.bench.cases import batched_cases
-    from crane_sym.bench.thread_blocks import ALONE, THREADS, markdown_row, thread_row
+    from crane_sym.bench.thread_blocks import ALONE, THREADS, markdown_row, thread_row, variant_rows
     case = next(c for _, c in batched_cases() if c.targets)
-    t = thread_row(case, designs=100, rounds=2, elements=2**10)
+    variants = (("2 blocks, no Dask", 2, None), ("2 blocks, Dask's threads", 2, "threads"))
+    t = thread_row(case, designs=100, rounds=2, elements=2**10, variants=variants)
     assert t["rounds"] == 2 and len(t["sweep"]["rounds"]) == 2 and t["same_worst"]
     assert t["designs"] == 100 and sum(t["block_designs"]) == 100
     assert t["efficiency"] == pytest.approx(t["no_dask_seconds"] / (2 * t["dask_seconds"]))
     assert t["relative"]["least"] == pytest.approx(
         t["efficiency"] / t["roofline"]["sin"]["efficiency"])
-    assert ALONE != THREADS and "interleaved rounds" in markdown_row(t)
+    rows = {v["trial"]: v for v in t["variants"]}
+    assert list(rows) == [ALONE, THREADS, "2 blocks, no Dask", "2 blocks, Dask's threads"]
+    assert rows[ALONE]["ratio"] == 1.0 and "relative" not in rows[ALONE]
+    assert rows[THREADS]["ratio"] == pytest.approx(t["efficiency"])
+    assert rows["2 blocks, Dask's threads"]["workers"] == 2
+    assert "interleaved rounds" in markdown_row(t)
+    assert any(line.startswith("| 2 blocks, Dask's threads | 2 |") for line in variant_rows(t))
+
+
+def _mark() -> None:
+    os.environ["CRANE_SYM_TEST_WARM"] = str(os.getpid())
+
+
+def _marked() -> bool:
+    return os.environ.get("CRANE_SYM_TEST_WARM") == str(os.getpid())
+
+
+def test_a_warm_pool_has_run_its_warm_call_in_every_worker_before_it_is_used():
+    import dask.array as da
+
+    from crane_sym.sweep.compute import compute_local, warm_pool
+    warm = _mark
+    with warm_pool("processes", warm) as pool:
+        assert len(pool._processes) == 2
+        assert all(pool.submit(_marked).result() for _ in range(4))
+        x = da.arange(10, chunks=5)
+        assert compute_local(lambda kept: [x.sum()], "processes", True, False,
+                             pool=pool) == (45,)
+        assert pool.submit(abs, -1).result() == 1          # the caller's pool, left running
+    with pytest.raises(ValueError, match="'synchronous' has no pool"):
+        with warm_pool("synchronous", warm):
+            pass

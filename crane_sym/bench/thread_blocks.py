@@ -16,25 +16,49 @@ made of what this machine gave np.sin at that moment.
 """
 from __future__ import annotations
 
+import contextlib
+import functools
 from concurrent.futures import ThreadPoolExecutor
-from typing import Any
+from typing import Any, Sequence
 
 import numpy as np
 
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
-from crane_sym.bench.interleaved import Trial, efficiency, run_rounds
+from crane_sym.bench.interleaved import Rounds, Trial, efficiency, run_rounds
 from crane_sym.bench.roofline import control_trials, fit_serial, roofline
-from crane_sym.sweep.grid import chunks_for, evaluate_block, run_sweep
+from crane_sym.sweep.blocks import first_axis
+from crane_sym.sweep.compute import compute_local, warm_pool
+from crane_sym.sweep.grid import chunks_for, evaluate_block, grid_arrays, run_sweep
+from crane_sym.sweep.summaries import summaries
 
-__all__ = ["DESIGNS", "EFFICIENCY", "ROUNDS", "markdown_row", "relative", "thread_row"]
+__all__ = ["DESIGNS", "EFFICIENCY", "ROUNDS", "VARIANTS", "markdown_row", "relative",
+           "thread_row", "variant_rows"]
 
 #: Designs of the row (a square grid), the target, and the interleaved rounds.
 DESIGNS = 90_000
 EFFICIENCY = 0.70
-ROUNDS = 5
-#: The trials of the sweep: its control and Dask's threads.
+ROUNDS = 3
+#: The trials of the sweep as it runs: its control and Dask's threads.
 ALONE, THREADS = "sweep, no Dask", "sweep, Dask's threads"
+#: The changes tried (item 2), timed in the same rounds: (trial, blocks, Dask's
+#: local scheduler); blocks None are the local sweep's, a scheduler None the
+#: blocks one after the other without Dask; processes run on a warm pool
+#: (started, imports and a first block done, before the rounds).
+VARIANTS = (("6 blocks, no Dask", 6, None),
+            ("6 blocks, Dask's threads", 6, "threads"),
+            ("the sweep's blocks, Dask's processes (warm pool)", None, "processes"))
+
+
+def _parts(axes: list[np.ndarray], chunks) -> list[list[np.ndarray]]:
+    """Each block's axis values, in the grid's block order."""
+    starts = [np.cumsum((0,) + c) for c in chunks]
+    return [[a[s[i]:s[i + 1]] for a, s, i in zip(axes, starts, ix)]
+            for ix in np.ndindex(*[len(c) for c in chunks])]
+
+
+def _worst(blocks: list[np.ndarray]) -> float:
+    return max(float(np.nanmax(b)) for b in blocks)
 
 
 def relative(sweep: dict[str, Any], sin: dict[str, Any]) -> dict[str, float]:
@@ -59,7 +83,9 @@ def relative(sweep: dict[str, Any], sin: dict[str, Any]) -> dict[str, float]:
 
 
 def thread_row(case: BatchedBenchCase, designs: int = DESIGNS, rounds: int = ROUNDS,
-               elements: int | None = None) -> dict[str, Any]:
+               elements: int | None = None,
+               variants: Sequence[tuple[str, int | None, str | None]] = VARIANTS
+               ) -> dict[str, Any]:
     """The case's grid of ``designs`` (a square) by Dask's threads in the
     local sweep's blocks against the same blocks without Dask, and the
     controls, in ``rounds`` interleaved rounds.
@@ -74,29 +100,45 @@ def thread_row(case: BatchedBenchCase, designs: int = DESIGNS, rounds: int = ROU
         Interleaved rounds (N).
     elements : int, optional
         Elements of the controls' arrays (default: the roofline's).
+    variants : sequence of (str, int or None, str or None)
+        The changes timed beside the sweep (:data:`VARIANTS`).
     """
     n = int(round(designs ** (1 / len(case.axes))))
     chosen, spec, names, axes = _grid(case, n)
     call = (chosen.derivation, case.output, spec.kind, spec.args, names, dict(chosen.fixed),
             dict(chosen.options))
     chunks = chunks_for(chosen, workers=2)
-    starts = [np.cumsum((0,) + c) for c in chunks]
-    parts = [[a[s[i]:s[i + 1]] for a, s, i in zip(axes, starts, ix)]
-             for ix in np.ndindex(*[len(c) for c in chunks])]
-    kept: list[np.ndarray] = []
+    parts = _parts(axes, chunks)
+    worsts: dict[str, float] = {}
     found: list = []
     sized = {} if elements is None else {"elements": elements}
-    with ThreadPoolExecutor(2) as pool:
-        trials = [Trial(ALONE, lambda: kept.__setitem__(
-                      slice(None), [evaluate_block(*call, *p) for p in parts])),
+
+    def alone(name: str, blocks: list) -> Trial:
+        return Trial(name, lambda: worsts.__setitem__(
+            name, _worst([evaluate_block(*call, *p) for p in blocks])))
+
+    def on_dask(name: str, cut, local: str, pool) -> Trial:
+        grid = grid_arrays(chosen, cut)
+        return Trial(name, lambda: worsts.__setitem__(name, compute_local(
+            lambda kept: summaries(chosen, grid, cut), local, True, False, pool=pool)[0][0]), 2)
+    warm = functools.partial(evaluate_block, *call, *[a[:2] for a in axes])
+    wanted = any(local == "processes" for _, _, local in variants)
+    with ThreadPoolExecutor(2) as threads, \
+            warm_pool("processes", warm) if wanted else contextlib.nullcontext() as processes:
+        trials = [alone(ALONE, parts),
                   Trial(THREADS, lambda: found.append(run_sweep(chosen, None,
-                                                                scheduler="threads")), 2),
-                  *control_trials(pool, **sized)]
+                                                                scheduler="threads")), 2)]
+        for name, count, local in variants:
+            cut = chunks if count is None else first_axis(chosen.shape, count)
+            trials.append(alone(name, _parts(axes, cut)) if local is None else
+                          on_dask(name, cut, local, processes if local == "processes"
+                                  else None))
+        trials += control_trials(threads, **sized)
         measured = run_rounds(trials, rounds)
     roof = roofline(measured, **sized)
     sweep = efficiency(measured, ALONE, THREADS)
     result = found[-1]
-    worst = max(float(np.nanmax(b)) for b in kept)
+    worsts[THREADS] = result.worst[case.output][0]
     return {"output": case.output, "designs": chosen.points, "blocks": len(parts),
             "block_designs": [int(np.prod([len(a) for a in p])) for p in parts],
             "sweep_blocks": result.blocks, "scheduler": result.scheduler,
@@ -109,7 +151,24 @@ def thread_row(case: BatchedBenchCase, designs: int = DESIGNS, rounds: int = ROU
             "sweep": sweep, "efficiency": sweep["least"], "target": EFFICIENCY,
             "met": sweep["least"] >= EFFICIENCY, "relative": relative(sweep, roof["sin"]),
             "roofline": roof, "fit": fit_serial(sweep, roof),
-            "same_worst": worst == result.worst[case.output][0]}
+            "variants": _variants(measured, [t for t in trials if t.name in worsts], roof),
+            "same_worst": len(set(worsts.values())) == 1}
+
+
+def _variants(measured: Rounds, trials: list[Trial], roof: dict[str, Any]) -> list[dict]:
+    """Each sweep trial against the no-Dask control of the sweep's blocks:
+    T₁/(p·T) from the minima and over the rounds (p its workers), and for
+    two workers that efficiency over np.sin's in the same rounds."""
+    rows = []
+    for t in trials:
+        least, each = measured.ratio(ALONE, t.name, t.workers)
+        row = {"trial": t.name, "workers": t.workers, "least_s": measured.least(t.name),
+               "median_s": measured.median(t.name), "ratio": least,
+               "low": float(each.min()), "high": float(each.max())}
+        if t.workers == 2:
+            row["relative"] = relative({"least": least, "rounds": list(each)}, roof["sin"])
+        rows.append(row)
+    return rows
 
 
 def markdown_row(t: dict[str, Any]) -> str:
@@ -131,3 +190,23 @@ def markdown_row(t: dict[str, Any]) -> str:
             f"(rounds {100 * rel['low']:.0f}–{100 * rel['high']:.0f} %, median "
             f"{100 * rel['median']:.0f} %); same worst: {t['same_worst']} | "
             f"≥ {100 * t['target']:.0f} % | {'met' if t['met'] else 'not met'} |")
+
+
+def variant_rows(t: dict[str, Any]) -> list[str]:
+    """What each change gave (item 2): every sweep trial of the same rounds
+    against the no-Dask control of the sweep's blocks."""
+    lines = ["", f"What each change gave: every sweep of the {t['designs']} designs timed in "
+             f"the same {t['rounds']} interleaved rounds (load {min(t['loads']):.1f}–"
+             f"{max(t['loads']):.1f}), against the sweep's {t['blocks']} blocks one after "
+             "the other without Dask (T₁); T₁/(p·T) from the minima, its range over the "
+             "rounds; on two workers also over np.sin's efficiency in the same rounds.", "",
+             "| sweep | workers | min [s] | median [s] | T₁/(p·T) (rounds) | of np.sin's |",
+             "| --- | --- | --- | --- | --- | --- |"]
+    for v in t["variants"]:
+        rel = v.get("relative")
+        lines.append(f"| {v['trial']} | {v['workers']} | {v['least_s']:.2f} | "
+                     f"{v['median_s']:.2f} | {100 * v['ratio']:.0f} % ({100 * v['low']:.0f}–"
+                     f"{100 * v['high']:.0f} %) | "
+                     + ("—" if rel is None else f"{100 * rel['least']:.0f} % "
+                        f"({100 * rel['low']:.0f}–{100 * rel['high']:.0f} %)") + " |")
+    return lines
