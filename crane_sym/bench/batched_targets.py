@@ -40,7 +40,7 @@ from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
 from crane_sym.bench.roofline import markdown_rows as roofline_rows
 from crane_sym.bench.thread_blocks import markdown_row as thread_markdown_row
-from crane_sym.bench.thread_blocks import thread_row
+from crane_sym.bench.thread_blocks import thread_row, variant_rows
 from crane_sym.sweep.grid import evaluate_block, run_sweep
 
 __all__ = ["large_row", "ivp_rows", "worst_row", "markdown_rows", "parallel_section"]
@@ -226,7 +226,8 @@ def markdown_rows(r: dict[str, Any]) -> list[str]:
             "integrator runs found another number of phases than the closed form."]
     if "roofline" in r.get("threads", {}):
         t = r["threads"]
-        lines += roofline_rows(t["efficiency"], t["target"], t["roofline"])
+        lines += variant_rows(t) + roofline_rows(t["efficiency"], t["target"], t["roofline"],
+                                                  t["fit"])
     lines.append("")
     return lines
 
@@ -242,8 +243,9 @@ def parallel_section() -> str:
     t = thread_row(found[0])
     return "\n".join(["# Bench: both cores on a batched sweep, and why", "",
                       "| target | measured | limit | met |", "| --- | --- | --- | --- |",
-                      thread_markdown_row(t),
-                      *roofline_rows(t["efficiency"], t["target"], t["roofline"]), ""])
+                      thread_markdown_row(t), *variant_rows(t),
+                      *roofline_rows(t["efficiency"], t["target"], t["roofline"], t["fit"]),
+                      ""])
 
 
 def run_targets(rows: list[dict[str, Any]], designs: int = 10**6) -> dict[str, Any]:

@@ -1,132 +1,212 @@
-"""``crane-sym bench --sweep``, section (f): both cores on a NumPy-bound
-batched output (issue 39, item 2).
+"""``crane-sym bench --parallel`` (and ``--sweep``, section (f)): both cores
+on a NumPy-bound batched output (issue 39, item 2).
 
 The case's grid of 9·10⁴ designs in the blocks a local sweep cuts it into
-(:func:`crane_sym.sweep.blocks.chunks_for`: blocks of at least 4·10⁴ designs,
-one per core), swept by Dask's threads (nothing written) against the same
-blocks one after the other in this process without Dask (the control):
-parallel efficiency T₁/(2·T₂), target 70 %. Beside it the machine's own
-answer, ``np.sin`` over two blocks in two plain threads against one after
-the other, and the load average: on a shared 2-core machine another job on
-the second core takes the efficiency with it, which the np.sin control shows.
+(:func:`crane_sym.sweep.blocks.chunks_for`), swept by Dask's threads
+(nothing written) against the same blocks one after the other in this
+process without Dask (the control): parallel efficiency T₁/(2·T₂), target
+70 %. On a shared 2-core machine another job on the second core takes the
+efficiency with it, so the sweep, its control and the machine's controls
+(np.sin, np.copyto, np.add on one and two threads:
+:func:`crane_sym.bench.roofline.control_trials`) are timed in the same
+interleaved rounds (:mod:`crane_sym.bench.interleaved`), N of them; the
+efficiency is given from the minimum times, with its median and range over
+the rounds, and also relative to np.sin's in the same rounds: what the sweep
+made of what this machine gave np.sin at that moment.
 """
 from __future__ import annotations
 
-import os
-import resource
-import time
+import contextlib
+import functools
 from concurrent.futures import ThreadPoolExecutor
-from typing import Any, Callable
+from typing import Any, Sequence
 
 import numpy as np
 
-from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase
-from crane_sym.bench.roofline import roofline
-from crane_sym.sweep.grid import chunks_for, evaluate_block, run_sweep
+from crane_sym.bench.interleaved import Rounds, Trial, efficiency, run_rounds
+from crane_sym.bench.roofline import control_trials, fit_serial, roofline
+from crane_sym.sweep.blocks import first_axis
+from crane_sym.sweep.compute import compute_local, warm_pool
+from crane_sym.sweep.grid import chunks_for, evaluate_block, grid_arrays, run_sweep
+from crane_sym.sweep.summaries import summaries
 
-__all__ = ["DESIGNS", "EFFICIENCY", "REPEATS", "markdown_row", "thread_row"]
+__all__ = ["DESIGNS", "EFFICIENCY", "ROUNDS", "VARIANTS", "markdown_row", "relative",
+           "thread_row", "variant_rows"]
 
-#: Designs of the row (a square grid), the target, and runs of each side
-#: (the least kept: on a shared machine others only ever add time).
+#: Designs of the row (a square grid), the target, and the interleaved rounds.
 DESIGNS = 90_000
 EFFICIENCY = 0.70
-REPEATS = 2
-#: Elements of each of the control's two np.sin blocks.
-SIN_BLOCK = 10**7
+ROUNDS = 3
+#: The trials of the sweep as it runs: its control and Dask's threads.
+ALONE, THREADS = "sweep, no Dask", "sweep, Dask's threads"
+#: The changes tried (item 2), timed in the same rounds: (trial, blocks, Dask's
+#: local scheduler); blocks None are the local sweep's, a scheduler None the
+#: blocks one after the other without Dask; processes run on a warm pool
+#: (started, imports and a first block done, before the rounds).
+VARIANTS = (("6 blocks, no Dask", 6, None),
+            ("6 blocks, Dask's threads", 6, "threads"),
+            ("the sweep's blocks, Dask's processes (warm pool)", None, "processes"))
 
 
-def _cpu() -> float:
-    usage = resource.getrusage(resource.RUSAGE_SELF)
-    return usage.ru_utime + usage.ru_stime
+def _parts(axes: list[np.ndarray], chunks) -> list[list[np.ndarray]]:
+    """Each block's axis values, in the grid's block order."""
+    starts = [np.cumsum((0,) + c) for c in chunks]
+    return [[a[s[i]:s[i + 1]] for a, s, i in zip(axes, starts, ix)]
+            for ix in np.ndindex(*[len(c) for c in chunks])]
 
 
-def _least(run: Callable[[], Any]) -> tuple[float, float, list[float]]:
-    """Wall seconds of the least of :data:`REPEATS` runs, the CPU seconds of
-    this process per wall second in it, and every run's wall seconds."""
-    best, cores, walls = np.inf, 0.0, []
-    for _ in range(REPEATS):
-        start, cpu = time.perf_counter(), _cpu()
-        run()
-        wall = time.perf_counter() - start
-        walls.append(wall)
-        if wall < best:
-            best, cores = wall, (_cpu() - cpu) / wall
-    return best, cores, walls
+def _worst(blocks: list[np.ndarray]) -> float:
+    return max(float(np.nanmax(b)) for b in blocks)
 
 
-def _sin_control() -> dict[str, float]:
-    """np.sin over two blocks: one after the other, and in two plain threads."""
-    blocks = [np.linspace(0.0, 1.0 + k, SIN_BLOCK) for k in range(2)]
+def relative(sweep: dict[str, Any], sin: dict[str, Any]) -> dict[str, float]:
+    """The sweep's efficiency over np.sin's at the same moment: from the
+    minima, and round by round (median, low, high).
 
-    def alone() -> None:
-        for b in blocks:
-            np.sin(b).max()
+    Parameters
+    ----------
+    sweep : dict
+        :func:`crane_sym.bench.interleaved.efficiency` of the sweep.
+    sin : dict
+        The np.sin control of :func:`crane_sym.bench.roofline.roofline`.
 
-    def pair() -> None:
-        with ThreadPoolExecutor(2) as pool:
-            list(pool.map(lambda b: np.sin(b).max(), blocks))
-    pair()                                                   # warm: the allocations
-    one, _, _ = _least(alone)
-    two, cores, _ = _least(pair)
-    return {"one_thread_s": one, "two_threads_s": two, "efficiency": one / (2 * two),
-            "cores_used_two": cores}
+    >>> r = relative({"least": 0.6, "rounds": [0.6, 0.4]},
+    ...              {"efficiency": 0.8, "efficiency_rounds": [0.8, 0.5]})
+    >>> round(r["least"], 2), round(r["low"], 2), round(r["high"], 2)
+    (0.75, 0.75, 0.8)
+    """
+    each = np.array(sweep["rounds"]) / np.array(sin["efficiency_rounds"])
+    return {"least": sweep["least"] / sin["efficiency"], "median": float(np.median(each)),
+            "low": float(each.min()), "high": float(each.max())}
 
 
-def thread_row(case: BatchedBenchCase, designs: int = DESIGNS) -> dict[str, Any]:
+def thread_row(case: BatchedBenchCase, designs: int = DESIGNS, rounds: int = ROUNDS,
+               elements: int | None = None,
+               variants: Sequence[tuple[str, int | None, str | None]] = VARIANTS
+               ) -> dict[str, Any]:
     """The case's grid of ``designs`` (a square) by Dask's threads in the
-    local sweep's blocks, against the same blocks without Dask; with the
-    np.sin control and the load average before and after."""
-    say = progress.current()
+    local sweep's blocks against the same blocks without Dask, and the
+    controls, in ``rounds`` interleaved rounds.
+
+    Parameters
+    ----------
+    case : BatchedBenchCase
+        The batched case marked for the targets.
+    designs : int
+        Designs of its grid (rounded to a square).
+    rounds : int
+        Interleaved rounds (N).
+    elements : int, optional
+        Elements of the controls' arrays (default: the roofline's).
+    variants : sequence of (str, int or None, str or None)
+        The changes timed beside the sweep (:data:`VARIANTS`).
+    """
     n = int(round(designs ** (1 / len(case.axes))))
     chosen, spec, names, axes = _grid(case, n)
     call = (chosen.derivation, case.output, spec.kind, spec.args, names, dict(chosen.fixed),
             dict(chosen.options))
     chunks = chunks_for(chosen, workers=2)
-    starts = [np.cumsum((0,) + c) for c in chunks]
-    parts = [[a[s[i]:s[i + 1]] for a, s, i in zip(axes, starts, ix)]
-             for ix in np.ndindex(*[len(c) for c in chunks])]
-    load_before = os.getloadavg()[0]
-    evaluate_block(*call, *[a[:2] for a in axes])            # imports, the derivation
-    say.step(f"  {chosen.points} designs in {len(parts)} blocks without Dask ...")
-    kept: list[np.ndarray] = []
+    parts = _parts(axes, chunks)
+    worsts: dict[str, float] = {}
+    found: list = []
+    sized = {} if elements is None else {"elements": elements}
 
-    def one_after_the_other() -> None:
-        kept[:] = [evaluate_block(*call, *p) for p in parts]
-    alone, alone_cores, alone_all = _least(one_after_the_other)
-    say.step(f"  {chosen.points} designs in {len(parts)} blocks on Dask's threads ...")
-    found = []
-    dask_s, dask_cores, dask_all = _least(
-        lambda: found.append(run_sweep(chosen, None, scheduler="threads")))
+    def alone(name: str, blocks: list) -> Trial:
+        return Trial(name, lambda: worsts.__setitem__(
+            name, _worst([evaluate_block(*call, *p) for p in blocks])))
+
+    def on_dask(name: str, cut, local: str, pool) -> Trial:
+        grid = grid_arrays(chosen, cut)
+        return Trial(name, lambda: worsts.__setitem__(name, compute_local(
+            lambda kept: summaries(chosen, grid, cut), local, True, False, pool=pool)[0][0]), 2)
+    warm = functools.partial(evaluate_block, *call, *[a[:2] for a in axes])
+    wanted = any(local == "processes" for _, _, local in variants)
+    with ThreadPoolExecutor(2) as threads, \
+            warm_pool("processes", warm) if wanted else contextlib.nullcontext() as processes:
+        trials = [alone(ALONE, parts),
+                  Trial(THREADS, lambda: found.append(run_sweep(chosen, None,
+                                                                scheduler="threads")), 2)]
+        for name, count, local in variants:
+            cut = chunks if count is None else first_axis(chosen.shape, count)
+            trials.append(alone(name, _parts(axes, cut)) if local is None else
+                          on_dask(name, cut, local, processes if local == "processes"
+                                  else None))
+        trials += control_trials(threads, **sized)
+        measured = run_rounds(trials, rounds)
+    roof = roofline(measured, **sized)
+    sweep = efficiency(measured, ALONE, THREADS)
     result = found[-1]
-    say.step("  the np.sin control ...")
-    control = _sin_control()
-    say.step("  the roofline: memory bandwidth, np.sin and np.add on 1 and 2 threads ...")
-    roof = roofline()
-    efficiency = alone / (2 * dask_s)
-    worst = max(float(np.nanmax(b)) for b in kept)
+    worsts[THREADS] = result.worst[case.output][0]
     return {"output": case.output, "designs": chosen.points, "blocks": len(parts),
             "block_designs": [int(np.prod([len(a) for a in p])) for p in parts],
             "sweep_blocks": result.blocks, "scheduler": result.scheduler,
-            "no_dask_seconds": alone, "no_dask_seconds_all": alone_all,
-            "no_dask_cores": alone_cores, "dask_seconds": dask_s, "dask_seconds_all": dask_all,
-            "dask_cores": dask_cores, "efficiency": efficiency, "target": EFFICIENCY,
-            "met": efficiency >= EFFICIENCY, "sin": control, "roofline": roof,
-            "same_worst": worst == result.worst[case.output][0],
-            "load_before": load_before, "load_after": os.getloadavg()[0]}
+            "rounds": measured.count, "loads": list(measured.loads),
+            "no_dask_seconds": measured.least(ALONE),
+            "no_dask_median": measured.median(ALONE),
+            "no_dask_cores": float(np.median(measured.cores[ALONE])),
+            "dask_seconds": measured.least(THREADS), "dask_median": measured.median(THREADS),
+            "dask_cores": float(np.median(measured.cores[THREADS])),
+            "sweep": sweep, "efficiency": sweep["least"], "target": EFFICIENCY,
+            "met": sweep["least"] >= EFFICIENCY, "relative": relative(sweep, roof["sin"]),
+            "roofline": roof, "fit": fit_serial(sweep, roof),
+            "variants": _variants(measured, [t for t in trials if t.name in worsts], roof),
+            "same_worst": len(set(worsts.values())) == 1}
+
+
+def _variants(measured: Rounds, trials: list[Trial], roof: dict[str, Any]) -> list[dict]:
+    """Each sweep trial against the no-Dask control of the sweep's blocks:
+    T₁/(p·T) from the minima and over the rounds (p its workers), and for
+    two workers that efficiency over np.sin's in the same rounds."""
+    rows = []
+    for t in trials:
+        least, each = measured.ratio(ALONE, t.name, t.workers)
+        row = {"trial": t.name, "workers": t.workers, "least_s": measured.least(t.name),
+               "median_s": measured.median(t.name), "ratio": least,
+               "low": float(each.min()), "high": float(each.max())}
+        if t.workers == 2:
+            row["relative"] = relative({"least": least, "rounds": list(each)}, roof["sin"])
+        rows.append(row)
+    return rows
 
 
 def markdown_row(t: dict[str, Any]) -> str:
-    """The row of table (f)."""
-    s = t["sin"]
+    """The row of the target: the efficiency from the minima (median and
+    range over the rounds), and relative to np.sin's in the same rounds."""
+    s, rel = t["sweep"], t["relative"]
+    sin = t["roofline"]["sin"]
     return (f"| {t['designs']} designs of {t['output']} on 2 threads ({t['blocks']} blocks of "
             f"{', '.join(str(d) for d in t['block_designs'])}, Dask's {t['scheduler']}) "
-            f"against the same blocks one after the other without Dask | efficiency "
-            f"{100 * t['efficiency']:.0f} % ({t['no_dask_seconds']:.2f} s → "
-            f"{t['dask_seconds']:.2f} s, least of {len(t['dask_seconds_all'])}; the process got "
-            f"{t['dask_cores']:.2f} cores); np.sin control {100 * s['efficiency']:.0f} % "
-            f"({s['one_thread_s']:.3f} s → {s['two_threads_s']:.3f} s); load "
-            f"{t['load_before']:.1f} before, {t['load_after']:.1f} after; same worst: "
-            f"{t['same_worst']} | ≥ {100 * t['target']:.0f} % | "
-            f"{'met' if t['met'] else 'not met'} |")
+            f"against the same blocks one after the other without Dask; {t['rounds']} "
+            f"interleaved rounds with the controls, load {min(t['loads']):.1f}–"
+            f"{max(t['loads']):.1f} | efficiency {100 * s['least']:.0f} % from the minima "
+            f"({t['no_dask_seconds']:.2f} s → {t['dask_seconds']:.2f} s; medians "
+            f"{t['no_dask_median']:.2f} s → {t['dask_median']:.2f} s; rounds "
+            f"{100 * s['low']:.0f}–{100 * s['high']:.0f} %, median {100 * s['median']:.0f} %; "
+            f"the process got {t['dask_cores']:.2f} cores); np.sin control "
+            f"{100 * sin['efficiency']:.0f} % in the same rounds, so the sweep made "
+            f"{100 * rel['least']:.0f} % of what this machine gave np.sin at that moment "
+            f"(rounds {100 * rel['low']:.0f}–{100 * rel['high']:.0f} %, median "
+            f"{100 * rel['median']:.0f} %); same worst: {t['same_worst']} | "
+            f"≥ {100 * t['target']:.0f} % | {'met' if t['met'] else 'not met'} |")
+
+
+def variant_rows(t: dict[str, Any]) -> list[str]:
+    """What each change gave (item 2): every sweep trial of the same rounds
+    against the no-Dask control of the sweep's blocks."""
+    lines = ["", f"What each change gave: every sweep of the {t['designs']} designs timed in "
+             f"the same {t['rounds']} interleaved rounds (load {min(t['loads']):.1f}–"
+             f"{max(t['loads']):.1f}), against the sweep's {t['blocks']} blocks one after "
+             "the other without Dask (T₁); T₁/(p·T) from the minima, its range over the "
+             "rounds; on two workers also over np.sin's efficiency in the same rounds.", "",
+             "| sweep | workers | min [s] | median [s] | T₁/(p·T) (rounds) | of np.sin's |",
+             "| --- | --- | --- | --- | --- | --- |"]
+    for v in t["variants"]:
+        rel = v.get("relative")
+        lines.append(f"| {v['trial']} | {v['workers']} | {v['least_s']:.2f} | "
+                     f"{v['median_s']:.2f} | {100 * v['ratio']:.0f} % ({100 * v['low']:.0f}–"
+                     f"{100 * v['high']:.0f} %) | "
+                     + ("—" if rel is None else f"{100 * rel['least']:.0f} % "
+                        f"({100 * rel['low']:.0f}–{100 * rel['high']:.0f} %)") + " |")
+    return lines

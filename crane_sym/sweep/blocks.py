@@ -29,7 +29,7 @@ from crane_sym import registry
 from crane_sym.sweep.plan import SweepPlan
 
 __all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "THREAD_DESIGNS", "THREAD_MAX_DESIGNS",
-           "chunks_for", "local_scheduler", "threaded"]
+           "chunks_for", "first_axis", "local_scheduler", "threaded"]
 
 #: Bytes of float64 output per block of the grid (closed forms).
 CHUNK_BYTES = 8 * 2**20
@@ -98,9 +98,27 @@ def _rows(plan: SweepPlan, workers: int) -> tuple[tuple[int, ...], ...]:
     grid is); the first axis cut into near-equal runs (the rest whole)."""
     points = plan.points
     count = max(math.ceil(points / THREAD_MAX_DESIGNS), min(workers, points // THREAD_DESIGNS))
-    count = max(1, min(count, points // THREAD_DESIGNS, plan.shape[0]))
-    edges = np.linspace(0, plan.shape[0], count + 1).round().astype(int)
-    return (tuple(int(d) for d in np.diff(edges)),) + tuple((n,) for n in plan.shape[1:])
+    return first_axis(plan.shape, max(1, min(count, points // THREAD_DESIGNS)))
+
+
+def first_axis(shape: tuple[int, ...], count: int) -> tuple[tuple[int, ...], ...]:
+    """Chunks of a grid of ``shape`` in ``count`` blocks (at most one a row
+    of the first axis): the first axis cut into near-equal runs, the rest
+    whole.
+
+    Parameters
+    ----------
+    shape : tuple of int
+        The grid's shape.
+    count : int
+        Blocks wanted.
+
+    >>> first_axis((10, 3), 3)
+    ((3, 4, 3), (3,))
+    """
+    count = max(1, min(count, shape[0]))
+    edges = np.linspace(0, shape[0], count + 1).round().astype(int)
+    return (tuple(int(d) for d in np.diff(edges)),) + tuple((n,) for n in shape[1:])
 
 
 def local_scheduler(plan: SweepPlan, chunks) -> str:

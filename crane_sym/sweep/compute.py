@@ -29,7 +29,7 @@ from crane_sym.sweep.plan import SweepError
 from crane_sym.sweep.store import deferred_signals
 
 __all__ = ["STOP_WAIT", "compute_local", "compute_remote", "connect", "cycles_collected_after",
-           "scheduler_lost"]
+           "scheduler_lost", "warm_pool"]
 
 #: Seconds to wait for a live scheduler's workers to stop a cancelled sweep.
 STOP_WAIT = 30.0
@@ -51,17 +51,36 @@ def connect(address: str, timeout: float = 3.0):
 
 
 def compute_local(tasks: Callable[[dict], list], local: str, quiet: bool, own_pool: bool,
-                  once: dict | None = None) -> tuple:
+                  once: dict | None = None, pool=None) -> tuple:
     """``dask.compute`` of ``tasks(arrays)`` on the local scheduler. With
     ``once`` (name -> dask array) those arrays are computed first, in the same
     pool, and kept, and ``tasks`` gets them computed (each block once, however
     many tasks read it); otherwise ``tasks({})``. With ``own_pool`` (the tasks
     write files) the threads or processes are this call's own, and on a
     failure or signal every task already started has finished, and no other
-    starts, before the exception leaves."""
+    starts, before the exception leaves.
+
+    Parameters
+    ----------
+    tasks : callable
+        The computed arrays of ``once`` (or {}) -> the Dask collections to compute.
+    local : str
+        ``"synchronous"``, ``"threads"`` or ``"processes"``.
+    quiet : bool
+        No progress bar.
+    own_pool : bool
+        A pool of this call's own, shut down before it returns or raises.
+    once : dict, optional
+        Arrays computed first and kept.
+    pool : Executor, optional
+        A started pool (:func:`warm_pool`) to run on instead: the caller's,
+        left running.
+    """
     import dask
     from dask.diagnostics import ProgressBar
-    pool = _pool(local) if own_pool else None
+    given = pool
+    if given is None and own_pool:
+        pool = _pool(local)
     bar = ProgressBar(minimum=2.0, out=sys.stderr) if not quiet else None
     if bar is not None:
         bar.register()
@@ -75,14 +94,14 @@ def compute_local(tasks: Callable[[dict], list], local: str, quiet: bool, own_po
     finally:
         if bar is not None:
             bar.unregister()
-        if pool is not None:
+        if pool is not None and given is None:
             with deferred_signals():
                 pool.shutdown(wait=True, cancel_futures=True)
 
 
-def _pool(local: str):
+def _pool(local: str, warm: Callable[[], object] | None = None):
     """A pool like the one Dask's local scheduler ``local`` makes (None for
-    the synchronous one)."""
+    the synchronous one); a process runs ``warm`` (picklable) as it starts."""
     from dask.system import CPU_COUNT
     if local == "threads":
         from concurrent.futures import ThreadPoolExecutor
@@ -90,10 +109,52 @@ def _pool(local: str):
     if local == "processes":
         from concurrent.futures import ProcessPoolExecutor
 
-        from dask.multiprocessing import get_context, initialize_worker_process
+        from dask.multiprocessing import get_context
         return ProcessPoolExecutor(CPU_COUNT, mp_context=get_context(),
-                                   initializer=initialize_worker_process)
+                                   initializer=_start_worker, initargs=(warm,))
     return None
+
+
+def _start_worker(warm: Callable[[], object] | None) -> None:
+    """In a new worker process: Dask's set-up, then ``warm`` (imports, a
+    first call)."""
+    from dask.multiprocessing import initialize_worker_process
+    initialize_worker_process()
+    if warm is not None:
+        warm()
+
+
+@contextlib.contextmanager
+def warm_pool(local: str, warm: Callable[[], object]) -> Iterator:
+    """A pool for Dask's local scheduler ``local`` whose workers are started
+    and have run ``warm`` (a picklable call: the imports and a first block)
+    before the block is entered, so a clock started inside times the sweep,
+    not the workers' start (~3 s for two processes here); shut down on exit.
+    ``compute_local(..., pool=...)`` runs on it.
+
+    Parameters
+    ----------
+    local : str
+        ``"threads"`` or ``"processes"``.
+    warm : callable
+        Run once in each worker process as it starts (for threads: once, here).
+
+    >>> with warm_pool("threads", lambda: None) as pool:
+    ...     pool.submit(sum, [1, 2]).result()
+    3
+    """
+    pool = _pool(local, warm)
+    if pool is None:
+        raise ValueError(f"warm_pool: {local!r} has no pool (threads or processes)")
+    try:
+        if local == "threads":
+            warm()
+        # one task a worker, each long enough that every worker gets one: all started
+        list(pool.map(time.sleep, [0.2] * getattr(pool, "_max_workers", 1)))
+        yield pool
+    finally:
+        with deferred_signals():
+            pool.shutdown(wait=True, cancel_futures=True)
 
 
 def compute_remote(client, tasks: Callable[[dict], list], quiet: bool, address: str,
