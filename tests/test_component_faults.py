@@ -143,6 +143,14 @@ ROWS = {
                                       r"component model 'lift_off': ground contact 'floor': "
                                       r"ground contact 'ground_support' rests the same rigid "
                                       r"group on the ground already"),
+    # a brake holds at rest by its friction capacity, undeclared: no contact's group
+    "brake on a resting group": Fault(LIFT, "[run]",
+                                      '[[brake]]\nname = "catch"\nbody = "load"\n'
+                                      'force = "1 kN"\n\n[run]',
+                                      r"component model 'lift_off': ground contact "
+                                      r"'ground_support': brake 'catch' acts on the rigid group "
+                                      r"of mass 'load', which the ground holds while it rests; "
+                                      r"a contact takes a group without brakes or speed laws"),
     # a DC motor's armature and its speed loop
     "armature resistance < 0": Fault(DC, 'resistance = "0.1 ohm"', 'resistance = "-0.1 ohm"',
                                      r"dc motor 'armature': resistance must be > 0, "

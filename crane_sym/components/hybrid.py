@@ -190,13 +190,13 @@ class ComponentSystem:
 
     def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """What the parts holding group g by friction can hold (the engaged
-        brakes' Σ |κ| M β), as w·x + k, from each kind's ``holds``."""
+        brakes' Σ |κ| M β), as w·x + k, from each kind's ``friction_capacity``."""
         w, k = np.zeros(self.size), 0.0
         for events, _, loads in self.switching:
-            if events.holds is None:
+            if events.friction_capacity is None:
                 continue
             for i in range(len(loads)):
-                held = events.holds(self, mode, i)
+                held = events.friction_capacity(self, mode, i)
                 if held is not None and held[0] == g:
                     _, column, size = held
                     if column is None:
