@@ -77,9 +77,6 @@ class ComponentSystem:
         #: parts, in the order of :data:`~crane_sym.components.kinds.KINDS`.
         self.switching = [(kind.events, kind.table, self.of_kind[kind.table])
                           for kind in kinds.KINDS if kind.events is not None]
-        # what the walkthrough and the command line name by kind
-        self.brakes, self.motors, self.characteristics = (
-            self.of_kind.get(t, []) for t in ("brake", "motor", "characteristic"))
         #: The column of each part's own state, by (its kind's table, its place).
         self.columns: dict[tuple[str, int], int] = {}
         for events, table, loads in self.switching:
@@ -96,7 +93,7 @@ class ComponentSystem:
         self.limits = self.first_order.limits
         self.moved = {k: a.place[law.body][:2] for k, law in enumerate(self.laws)
                       if law.law == "speed"}          # law -> (group, κ of its body)
-        self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
+        self.brake_group = [a.place[b.part.body][0] for b in self.of_kind["brake"]]
         self.contacts = list(a.contacts)
         self.events: dict[str, tuple[str, int]] = {}
         for g, group in enumerate(a.groups):
