@@ -318,6 +318,22 @@ def test_the_started_hoist_s_peaks_against_solve_ivp():
         assert abs(mine - ref) <= 1e-9 * ref, (name, mine, ref)
 
 
+
+def test_a_run_s_part_peaks_are_computed_once_for_its_lines_and_json(monkeypatch):
+    """``crane-sym run`` finds the peaks of what the parts report once a run:
+    the printed lines and the JSON read the same ``ComponentReport.parts``."""
+    from crane_sym.components import report
+    found = []
+    original = report.part_peaks
+    monkeypatch.setattr(report, "part_peaks", lambda run: found.append(run) or original(run))
+    done = report.run_component_file(EXAMPLE, None)
+    numbers = report.results(done)["results"]
+    assert len(found) == 1 and found[0] is done.run
+    assert [p.what for p in done.parts] == ["current", "torque", "speed"]
+    for p in done.parts:
+        assert numbers[f"{p.part}.{p.what}.peak"]["value"] == pytest.approx(p.value, rel=0)
+        assert any(l.startswith(f"peak {p.what} of {p.part}: ") for l in done.lines)
+
 def test_a_steady_start_at_speed_stays_steady():
     """Hoisting at 100 rad/s under a constant reference of 100 rad/s: the start
     solves z = (R i + k ω) / k_i; over 0.5 s speeds, current and integral stay

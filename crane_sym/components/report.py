@@ -11,6 +11,7 @@ import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Sequence
 
 import numpy as np
 
@@ -32,15 +33,6 @@ POINTS = 2001
 
 
 @dataclass(frozen=True)
-class ComponentReport:
-    """The run, the lines printed, the files written."""
-
-    run: ComponentRun
-    lines: list[str]
-    files: list[Path]
-
-
-@dataclass(frozen=True)
 class PartPeak:
     """The largest value (signed, by magnitude) of what a part reports over a
     run (a DC motor's current, torque, speed) and when it occurs."""
@@ -50,6 +42,17 @@ class PartPeak:
     unit: str
     time: float
     value: float
+
+
+@dataclass(frozen=True)
+class ComponentReport:
+    """The run, the peaks of what its parts report (computed once for the
+    lines and the JSON), the lines printed, the files written."""
+
+    run: ComponentRun
+    parts: list[PartPeak]
+    lines: list[str]
+    files: list[Path]
 
 
 def part_peaks(run: ComponentRun) -> list[PartPeak]:
@@ -102,13 +105,14 @@ def load_text(value: float, unit: str, positive: str | None, factor: float,
         format_quantity(0.0, scaled)
 
 
-def report_lines(run: ComponentRun) -> list[str]:
+def report_lines(run: ComponentRun, parts: Sequence[PartPeak]) -> list[str]:
     """The components dropped as not needed, a brake that engages the instant
     a steady start begins (its friction is not in that steady motion), how
     the loads' signs read, peak
     loads (in kN or kN·m where they are that large, in words where a link
-    declares its ``positive``; with time and dynamic factor) and events, one
-    per line."""
+    declares its ``positive``; with time and dynamic factor), the peaks of
+    what its parts report (``parts``, :func:`part_peaks` of the run) and
+    events, one per line."""
     lines = [d.line() for d in run.model.dropped]
     for t, event in run.schedule:          # a steady start: the brake comes after it
         if t == 0 and event.endswith(" engages"):
@@ -135,7 +139,7 @@ def report_lines(run: ComponentRun) -> list[str]:
         lines.append(f"peak reaction of {r.contact}: {load_text(r.value, r.unit, None, *scale)}"
                      f" at t = {format_quantity(r.time, 's')} (at the start "
                      f"{load_text(r.start, r.unit, None, *scale)})")
-    for p in part_peaks(run):
+    for p in parts:
         lines.append(f"peak {p.what} of {p.part}: {format_quantity(p.value, p.unit)} at "
                      f"t = {format_quantity(p.time, 's')}")
     for t, event in run.events:
@@ -173,7 +177,7 @@ def results(report: ComponentReport) -> dict:
                       f"{r.contact}.reaction_peak_time": {"value": number(r.time), "unit": "s"},
                       f"{r.contact}.reaction_start": {"value": number(r.start),
                                                       "unit": r.unit}})
-    for p in part_peaks(report.run):
+    for p in report.parts:
         found.update({f"{p.part}.{p.what}.peak": {"value": number(p.value), "unit": p.unit},
                       f"{p.part}.{p.what}.peak_time": {"value": number(p.time), "unit": "s"}})
     return {"scene": model.name, "title": model.title, "model": model.name,
@@ -252,9 +256,10 @@ def run_component_file(path: str | Path, out: str | Path | None) -> ComponentRep
     read: ComponentFile = read_component_file(path)
     model = read.model
     run = model.run(read.duration, read.body, read.speed, rest=read.rest)
-    lines = report_lines(run)
+    parts = part_peaks(run)
+    lines = report_lines(run, parts)
     if out is None:
-        return ComponentReport(run, lines, [])
+        return ComponentReport(run, parts, lines, [])
     figs = load_figures(run, model.title or model.name)
     source = render_component_module(run)
     with output_files.staged(out) as stage:
@@ -266,4 +271,4 @@ def run_component_file(path: str | Path, out: str | Path | None) -> ComponentRep
             buffer = io.BytesIO()
             fig.savefig(buffer, format="png", dpi=120, metadata={"Software": None})
             files.append(stage.bytes(name, buffer.getvalue()))
-    return ComponentReport(run, lines, files)
+    return ComponentReport(run, parts, lines, files)
