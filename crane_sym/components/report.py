@@ -55,6 +55,18 @@ class ComponentReport:
     files: list[Path]
 
 
+def _reported(run: ComponentRun) -> list[tuple[str, str, str, np.ndarray]]:
+    """(part, what, SI unit, weights w: the value is w·x) of every value the
+    run's parts report (``Acting.outputs``, a span's force), in the order the
+    parts were given."""
+    a, out = run.system.assembly, []
+    bodies = {l.part.name: a.bodies[l.part.body] for l in a.loads}
+    for part, what, unit, value in run.model.equations.outputs:
+        si = UNITS[unit][bodies[part].motion] if unit in UNITS else unit
+        out.append((part, what, si, run.system.first_order.weights(value)))
+    return out
+
+
 def part_peaks(run: ComponentRun) -> list[PartPeak]:
     """The peak of every value the run's parts report (``Acting.outputs``), in
     the order the parts were given.
@@ -64,12 +76,9 @@ def part_peaks(run: ComponentRun) -> list[PartPeak]:
     run : ComponentRun
         The run.
     """
-    a, out = run.system.assembly, []
-    bodies = {l.part.name: a.bodies[l.part.body] for l in a.loads}
-    for part, what, unit, value in run.model.equations.outputs:
-        w = run.system.first_order.weights(value)
+    out = []
+    for part, what, si, w in _reported(run):
         when, peak = largest(run.result, run.system, lambda mode, w=w: (w, 0.0), magnitude=True)
-        si = UNITS[unit][bodies[part].motion] if unit in UNITS else unit
         out.append(PartPeak(part, what, si, when, peak))
     return out
 
@@ -205,7 +214,8 @@ def _json(run: ComponentRun, name: str) -> str:
 
 
 def load_figures(run: ComponentRun, title: str) -> list:
-    """The figures (Matplotlib) of the loads of the run's elastic links, at most
+    """The figures (Matplotlib) of the loads of the run's elastic links, its
+    spans' forces (or torques) and its ground contacts' reactions, at most
     four panels each; each axis says what it shows in words and units (a
     link's tension where it declares its ``positive``, kN or kN·m where the
     load is that large).
@@ -228,6 +238,13 @@ def load_figures(run: ComponentRun, title: str) -> list:
                             [(p.link, times, values(run.result, times,
                                                     run.system.link_load(i)) / factor)],
                             group="elastic links", xlabel="time [s]"))
+    spans = {part.name for part in run.system.assembly.couplings}
+    for part, what, si, w in (r for r in _reported(run) if r[0] in spans):
+        load = values(run.result, times, lambda mode, w=w: (w, 0.0))
+        factor, unit = engineering(float(np.abs(load).max()), si)
+        panels.append(Panel(f"{what} of the span {part}", f"{what} [{unit}]",
+                            [(part, times, load / factor)], group="spans",
+                            xlabel="time [s]"))
     for j, r in enumerate(run.reactions):
         factor, unit = engineering(max(abs(r.value), abs(r.start)), r.unit)
         panels.append(Panel(f"reaction of the ground contact {r.contact}",
@@ -241,7 +258,7 @@ def load_figures(run: ComponentRun, title: str) -> list:
 def run_component_file(path: str | Path, out: str | Path | None) -> ComponentReport:
     """Read ``path``, run it, write ``<name>.json``, the module
     ``model_<name>.py`` (the links' loads as tables of closed forms) and
-    ``<name>_loads*.png`` into ``out`` (nothing else, nowhere else).
+    ``<name>_loads*.png`` (:func:`load_figures`) into ``out`` (nothing else, nowhere else).
 
     Parameters
     ----------
