@@ -177,9 +177,9 @@ ROWS = {
                                     r"speed controller 'speed_loop': integral \(a limit's "
                                     r"integral tracks it\) must be > 0, got '0 V/rad'"),
     "limit below the load": Fault(DC, 'limit = "1000 N*m"', 'limit = "600 N*m"',
-                                  r"start: speed_loop's limit holds i_armature within ±150 "
-                                  r"\(SI\); the steady start needs 163\.5: the limit cannot "
-                                  r"hold the load"),
+                                  r"start: speed_loop's limit holds i_armature within ±150 A; "
+                                  r"the steady start needs 163\.5 A: the limit cannot hold "
+                                  r"the load"),
     "gain in V/rad": Fault(DC, 'proportional = "20 V*s/rad"', 'proportional = "20 V/rad"',
                            MODEL_DC + r"speed controller 'speed_loop' on inertia 'motor': "
                            r"proportional '20 V/rad' is mass\*length\*\*2/\(time\*\*3\*current\), "

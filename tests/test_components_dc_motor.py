@@ -358,10 +358,22 @@ def test_a_steady_start_the_limit_cannot_hold_is_refused():
     from crane_sym.components.parts import ComponentError
     model = _file_model(EXAMPLE.read_text().replace('limit = "1000 N*m"', 'limit = "600 N*m"'))
     with pytest.raises(ComponentError, match=r"^start: speed_loop's limit holds i_armature "
-                       r"within ±150 \(SI\); the steady start needs 163\.5: the limit cannot "
+                       r"within ±150 A; the steady start needs 163\.5 A: the limit cannot "
                        r"hold the load$"):
         model.run(2.0)
 
+
+
+def test_a_limited_state_s_unit_is_the_one_its_part_reports():
+    """The refusal says a bound in the unit a part reports its state in (the
+    current in A, not its torque in the load's unit); a state no part reports
+    in a unit of its own is said in SI."""
+    from types import SimpleNamespace
+    from crane_sym.components.steady import _unit_of
+    i, z = sp.symbols("i z")
+    probe = SimpleNamespace(equations=SimpleNamespace(outputs=(
+        ("m", "torque", "load", i), ("m", "current", "A", i))))
+    assert (_unit_of(probe, i), _unit_of(probe, z)) == ("A", "(SI)")
 
 def test_a_steady_start_that_cannot_rest_or_is_not_fixed_is_refused():
     """A reference of 10 rad/s at t = 0 against a start at speed 0: the
