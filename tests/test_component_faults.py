@@ -143,6 +143,14 @@ ROWS = {
                                       r"component model 'lift_off': ground contact 'floor': "
                                       r"ground contact 'ground_support' rests the same rigid "
                                       r"group on the ground already"),
+    # a brake holds at rest by its friction capacity, undeclared: no contact's group
+    "brake on a resting group": Fault(LIFT, "[run]",
+                                      '[[brake]]\nname = "catch"\nbody = "load"\n'
+                                      'force = "1 kN"\n\n[run]',
+                                      r"component model 'lift_off': ground contact "
+                                      r"'ground_support': brake 'catch' acts on the rigid group "
+                                      r"of mass 'load', which the ground holds while it rests; "
+                                      r"a contact takes a group without brakes or speed laws"),
     # a DC motor's armature and its speed loop
     "armature resistance < 0": Fault(DC, 'resistance = "0.1 ohm"', 'resistance = "-0.1 ohm"',
                                      r"dc motor 'armature': resistance must be > 0, "
@@ -169,9 +177,9 @@ ROWS = {
                                     r"speed controller 'speed_loop': integral \(a limit's "
                                     r"integral tracks it\) must be > 0, got '0 V/rad'"),
     "limit below the load": Fault(DC, 'limit = "1000 N*m"', 'limit = "600 N*m"',
-                                  r"start: speed_loop's limit holds i_armature within ±150 "
-                                  r"\(SI\); the steady start needs 163\.5: the limit cannot "
-                                  r"hold the load"),
+                                  r"start: speed_loop's limit holds i_armature within ±150 A; "
+                                  r"the steady start needs 163\.5 A: the limit cannot hold "
+                                  r"the load"),
     "gain in V/rad": Fault(DC, 'proportional = "20 V*s/rad"', 'proportional = "20 V/rad"',
                            MODEL_DC + r"speed controller 'speed_loop' on inertia 'motor': "
                            r"proportional '20 V/rad' is mass\*length\*\*2/\(time\*\*3\*current\), "

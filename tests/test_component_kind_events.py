@@ -16,7 +16,7 @@ end of the run, where without the ratchet the mass would swing back.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -154,3 +154,22 @@ def test_an_unregistered_switching_kind_is_an_unknown_table(tmp_path):
     from crane_sym.components import ComponentError
     with pytest.raises(ComponentError, match="unknown table 'ratchet'"):
         _run(tmp_path, STOP)
+
+
+def test_holding_at_rest_follows_from_a_friction_capacity():
+    """The role ``holds at rest`` is derived from ``Events.friction_capacity``:
+    the brake declares only ``slides`` yet plays it; the ratchet, which keeps
+    its group still itself (``fixes``), plays it once its events give a
+    capacity; a speed law, which holds without friction, declares it."""
+    from crane_sym.components.kinds import brake, motor_law
+    from crane_sym.components.kinds.roles import has_role
+    assert brake.KIND.roles(None) == frozenset({"slides"})
+    assert has_role(brake.KIND, None, "holds at rest")
+    assert not has_role(RATCHET, None, "holds at rest")
+    gripping = replace(RATCHET, events=replace(RATCHET.events,
+                                               friction_capacity=lambda system, mode, i: None))
+    assert has_role(gripping, None, "holds at rest")
+    speed = type("Law", (), {"law": "speed"})()
+    assert has_role(motor_law.KIND, speed, "holds at rest")
+    with pytest.raises(KeyError, match="no role 'holds'"):
+        has_role(brake.KIND, None, "holds")

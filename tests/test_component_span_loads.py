@@ -111,6 +111,32 @@ def test_a_two_mass_span_s_peak_is_its_closed_form(tmp_path, capsys):
     assert "peak force of rope: -75.00 N at t = 0.08604 s" in capsys.readouterr().out
 
 
+
+def test_a_model_of_spans_only_draws_their_forces(tmp_path):
+    """The two masses, joined by a span and no elastic link, write
+    ``two_masses_loads.png``: one panel, the span's force in N along its closed
+    form −P m2/(m1+m2) (1 − cos ωt) to 1e-12; the shaft's torque in N·m."""
+    from crane_sym.cli.main import main
+    from crane_sym.components.component_file import read_component_file
+    from crane_sym.components.report import load_figures
+    path = tmp_path / "two.toml"
+    path.write_text(TWO)
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "-q"]) == 0
+    assert (tmp_path / "out" / "two_masses_loads.png").stat().st_size > 0
+    run = read_component_file(str(path)).model.run(0.5, rest=True)
+    fig, = load_figures(run, "two masses")
+    ax, = fig.get_axes()
+    line, = ax.get_lines()
+    assert (ax.get_ylabel(), ax.get_xlabel()) == ("force [N]", "time [s]")
+    omega = np.sqrt(C * (1 / M1 + 1 / M2))
+    times, drawn = line.get_xdata(), line.get_ydata()
+    theirs = -P * M2 / (M1 + M2) * (1 - np.cos(omega * times))
+    assert times[-1] == 0.5 and np.max(np.abs(drawn - theirs)) <= 1e-12 * P
+    path.write_text(SHAFT)
+    run = read_component_file(str(path)).model.run(0.3, rest=True)
+    fig, = load_figures(run, "two inertias")
+    assert [ax.get_ylabel() for ax in fig.get_axes()] == ["torque [N·m]"]
+
 def _peak_of(curve) -> float:
     """The largest |value| of a dense solution's curve, refined around its sample."""
     from scipy.optimize import minimize_scalar

@@ -318,6 +318,22 @@ def test_the_started_hoist_s_peaks_against_solve_ivp():
         assert abs(mine - ref) <= 1e-9 * ref, (name, mine, ref)
 
 
+
+def test_a_run_s_part_peaks_are_computed_once_for_its_lines_and_json(monkeypatch):
+    """``crane-sym run`` finds the peaks of what the parts report once a run:
+    the printed lines and the JSON read the same ``ComponentReport.parts``."""
+    from crane_sym.components import report
+    found = []
+    original = report.part_peaks
+    monkeypatch.setattr(report, "part_peaks", lambda run: found.append(run) or original(run))
+    done = report.run_component_file(EXAMPLE, None)
+    numbers = report.results(done)["results"]
+    assert len(found) == 1 and found[0] is done.run
+    assert [p.what for p in done.parts] == ["current", "torque", "speed"]
+    for p in done.parts:
+        assert numbers[f"{p.part}.{p.what}.peak"]["value"] == pytest.approx(p.value, rel=0)
+        assert any(l.startswith(f"peak {p.what} of {p.part}: ") for l in done.lines)
+
 def test_a_steady_start_at_speed_stays_steady():
     """Hoisting at 100 rad/s under a constant reference of 100 rad/s: the start
     solves z = (R i + k ω) / k_i; over 0.5 s speeds, current and integral stay
@@ -342,10 +358,22 @@ def test_a_steady_start_the_limit_cannot_hold_is_refused():
     from crane_sym.components.parts import ComponentError
     model = _file_model(EXAMPLE.read_text().replace('limit = "1000 N*m"', 'limit = "600 N*m"'))
     with pytest.raises(ComponentError, match=r"^start: speed_loop's limit holds i_armature "
-                       r"within ±150 \(SI\); the steady start needs 163\.5: the limit cannot "
+                       r"within ±150 A; the steady start needs 163\.5 A: the limit cannot "
                        r"hold the load$"):
         model.run(2.0)
 
+
+
+def test_a_limited_state_s_unit_is_the_one_its_part_reports():
+    """The refusal says a bound in the unit a part reports its state in (the
+    current in A, not its torque in the load's unit); a state no part reports
+    in a unit of its own is said in SI."""
+    from types import SimpleNamespace
+    from crane_sym.components.steady import _unit_of
+    i, z = sp.symbols("i z")
+    probe = SimpleNamespace(equations=SimpleNamespace(outputs=(
+        ("m", "torque", "load", i), ("m", "current", "A", i))))
+    assert (_unit_of(probe, i), _unit_of(probe, z)) == ("A", "(SI)")
 
 def test_a_steady_start_that_cannot_rest_or_is_not_fixed_is_refused():
     """A reference of 10 rad/s at t = 0 against a start at speed 0: the

@@ -254,7 +254,7 @@ def test_bridge_travel_against_solve_ivp_with_events():
     assert len(run.events) >= 20
     assert {"shaft slips +", "shaft slips -", "shaft rests", "motors rests",
             "drive_line closes +", "drive_line closes -"} <= {e for _, e in run.events}
-    brakes = [b.part.name for b in run.system.brakes]
+    brakes = [b.part.name for b in run.system.of_kind["brake"]]
     assert run.mode.engaged[brakes.index("rolling")]          # from the start, at rest
     _check_against_hand(run, model, hand, 8.0, at_start=("rolling engages",))
 

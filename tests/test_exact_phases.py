@@ -185,3 +185,54 @@ def test_illinois_reaches_full_precision():
     with mpmath.workdps(40):
         root = illinois(lambda x: mpmath.cos(x) - x, mpmath.mpf(0), mpmath.mpf(1))
         assert abs(root - mpmath.findroot(lambda x: mpmath.cos(x) - x, 0.7)) < mpmath.mpf("1e-37")
+
+
+def _jordan_fails(monkeypatch) -> None:
+    """SymPy's Jordan form raising a MatrixError, the caches of earlier forms emptied."""
+    import sympy as sp
+    from sympy.matrices.exceptions import MatrixError
+
+    def refuse(self, *args, **kwargs):
+        raise MatrixError("Could not compute\nthe eigenvalues")
+    monkeypatch.setattr(type(sp.zeros(1, 1)), "jordan_form", refuse)
+    closed_forms.clear_cache()
+    closed_forms.jordan.cache_clear()
+    exact_forms._exact_form_cached.cache_clear()
+
+
+def test_a_failed_jordan_fallback_names_the_phase(monkeypatch):
+    """The exact run's fallback (mpmath's eigenvectors give up, SymPy's Jordan
+    form raises a MatrixError) is one ValueError naming the phase and what to do."""
+    _jordan_fails(monkeypatch)
+    monkeypatch.setattr(exact_forms, "exact_is_cheap", lambda a, b: False)
+    monkeypatch.setattr(exact_forms, "_form_eig", lambda a, b, horizon=None: None)
+    with pytest.raises(closed_forms.JordanFormError) as caught:
+        exact_table(_hoist_run())
+    assert isinstance(caught.value, ValueError)
+    assert str(caught.value) == (
+        "phase 1 of the run (from t = 0 s): SymPy's exact Jordan form of its x' = A x + b "
+        "failed (MatrixError: Could not compute the eigenvalues), so it has no closed form "
+        "here: change a value of the model by a small fraction (its eigenvalues nearly "
+        "coincide), or report the model")
+
+
+def test_a_failed_jordan_form_is_one_line_from_the_command_line(monkeypatch, tmp_path, capsys):
+    """A drive train whose phases take the exact Jordan form (``crane-sym run``):
+    exit 2, one line naming the phase, nothing written."""
+    from crane_sym.cli.main import main
+    path = tmp_path / "spring.toml"
+    path.write_text('[model]\nname = "spring"\n\n[[mass]]\nname = "m"\nmass = "10 kg"\n\n'
+                    '[[elastic]]\nname = "k"\nbetween = ["ground", "m"]\n'
+                    'stiffness = "1e4 N/m"\ndamping = "20 N*s/m"\n\n'
+                    '[[resistance]]\nname = "push"\nbody = "m"\nforce = "50 N"\n\n'
+                    '[run]\nduration = "0.5 s"\nstart = "rest"\n', encoding="utf-8")
+    assert main(["run", str(path), "-q"]) == 0
+    capsys.readouterr()
+    _jordan_fails(monkeypatch)
+    assert main(["run", str(path), "--out", str(tmp_path / "out"), "-q"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == "" and not (tmp_path / "out").exists()
+    assert captured.err.startswith("crane-sym: error: phase 1 of the run (from t = 0 s): "
+                                   "SymPy's exact Jordan form of its x' = A x + b failed "
+                                   "(MatrixError: Could not compute the eigenvalues)")
+    assert captured.err.count("\n") == 1

@@ -13,7 +13,7 @@ from crane_sym.cli.main import main
 from crane_sym.components.model import LinkPeak
 from crane_sym.components.parts import ComponentError
 from crane_sym.components.component_file import read_component_file
-from crane_sym.components.report import load_figures, load_text, report_lines
+from crane_sym.components.report import load_figures, load_text, part_peaks, report_lines
 from crane_sym.scenes.panels import engineering
 
 GANTRY = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "gantry_hoist.toml"
@@ -33,6 +33,11 @@ def test_engineering_units():
     assert engineering(3.0, "s") == (1.0, "s")
 
 
+
+def _lines(run) -> list[str]:
+    """The lines ``run`` prints for ``run``."""
+    return report_lines(run, part_peaks(run))
+
 def test_a_load_in_words_turns_with_its_sign():
     scale = engineering(152100.0, "N")
     assert load_text(152100.0, "N", "tension", *scale) == "152.1 kN tension"
@@ -42,7 +47,7 @@ def test_a_load_in_words_turns_with_its_sign():
 
 
 def test_run_says_tension_in_kn_and_the_sign_once(run):
-    lines = report_lines(run)
+    lines = _lines(run)
     ropes = [l for l in lines if l.startswith("peak load of rope_")]
     assert len(ropes) == 4 and all(" kN tension at t = " in l and "(at the start "
                                    in l and " kN tension, dynamic factor " in l
@@ -59,7 +64,7 @@ def test_a_reversed_rope_reads_compression_where_its_sign_turns(tmp_path):
     path.write_text(text, encoding="utf-8")
     read = read_component_file(path)
     run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
-    (line,) = [l for l in report_lines(run) if l.startswith("peak load of rope_a_top")]
+    (line,) = [l for l in _lines(run) if l.startswith("peak load of rope_a_top")]
     assert " kN compression at t = " in line       # its positive = "tension" now lies
     path.write_text(text.replace('between = ["rope_a", "top_a"]\nstiffness = "3e7 N/m"\n'
                                  'damping = "1e4 N*s/m"\npositive = "tension"',
@@ -68,7 +73,7 @@ def test_a_reversed_rope_reads_compression_where_its_sign_turns(tmp_path):
                     encoding="utf-8")
     read = read_component_file(path)
     run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
-    (line,) = [l for l in report_lines(run) if l.startswith("peak load of rope_a_top")]
+    (line,) = [l for l in _lines(run) if l.startswith("peak load of rope_a_top")]
     assert " kN tension at t = " in line
 
 
@@ -124,7 +129,7 @@ def test_a_brake_at_the_steady_starts_instant_is_said(tmp_path):
     read = read_component_file(path)
     at_once = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
     assert any(l.startswith("note: brake 'safety_brakes' engages at t = 0") and
-               "computed without it" in l for l in report_lines(at_once))
+               "computed without it" in l for l in _lines(at_once))
     read = read_component_file(fig9)
     later = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
-    assert not any(l.startswith("note: brake") for l in report_lines(later))
+    assert not any(l.startswith("note: brake") for l in _lines(later))

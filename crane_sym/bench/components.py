@@ -142,7 +142,8 @@ def time_model(path: str | Path) -> ComponentTiming:
               ("first run: steady start, closed forms, events", t_first),
               ("peaks of every link (certified bounds)", t_peaks))
     return ComponentTiming(read.name, len(assembly.bodies), len(assembly.groups),
-                           len(system.backlash), len(system.brakes), len(first.result.segments),
+                           len(system.backlash), len(system.of_kind["brake"]),
+                           len(first.result.segments),
                            stages, t_run, split)
 
 

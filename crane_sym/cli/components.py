@@ -63,9 +63,10 @@ def model_text(path: str) -> str:
     system = ComponentSystem(eq)
     lines += ["", "modes:"]
     lines += [f"  {l.part.label}: {', '.join(l.part.contacts)}" for l in system.backlash]
-    lines += [f"  {b.part.label} on {b.part.body}: off, engaged" for b in system.brakes]
-    lines += [f"  {m.part.label}: on, off" for m in system.motors if m.part.off_at is not None]
-    lines += [f"  {c.part.label}: {len(c.part.slopes)} steps" for c in system.characteristics]
+    parts = system.of_kind
+    lines += [f"  {b.part.label} on {b.part.body}: off, engaged" for b in parts["brake"]]
+    lines += [f"  {m.part.label}: on, off" for m in parts["motor"] if m.part.off_at is not None]
+    lines += [f"  {c.part.label}: {len(c.part.slopes)} steps" for c in parts["characteristic"]]
     lines += [f"  {law.label}: {len(law.pieces())} pieces ({law.law} law)"
               for law in system.laws]
     lines += [f"  {limit.name}: within its limit, at + limit, at - limit"

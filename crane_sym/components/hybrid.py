@@ -80,9 +80,6 @@ class ComponentSystem:
         #: parts, in the order of :data:`~crane_sym.components.kinds.KINDS`.
         self.switching = [(events, table, self.of_kind[table])
                           for events, table in shared.switching]
-        # what the walkthrough and the command line name by kind
-        self.brakes, self.motors, self.characteristics = (
-            self.of_kind.get(t, []) for t in ("brake", "motor", "characteristic"))
         #: The column of each part's own state, by (its kind's table, its place).
         self.columns: dict[tuple[str, int], int] = {
             key: 2 * self.n + column for key, column in shared.columns.items()}
@@ -96,7 +93,7 @@ class ComponentSystem:
         self.limits = self.first_order.limits
         self.moved = {k: a.place[law.body][:2] for k, law in enumerate(self.laws)
                       if law.law == "speed"}          # law -> (group, κ of its body)
-        self.brake_group = [a.place[b.part.body][0] for b in self.brakes]
+        self.brake_group = [a.place[b.part.body][0] for b in self.of_kind["brake"]]
         self.contacts = list(a.contacts)
         self.events: dict[str, tuple[str, int]] = dict(shared.events)
         #: The rule of each kind's event, by its event's name: (rule, place).
@@ -182,13 +179,13 @@ class ComponentSystem:
 
     def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """What the parts holding group g by friction can hold (the engaged
-        brakes' Σ |κ| M β), as w·x + k, from each kind's ``holds``."""
+        brakes' Σ |κ| M β), as w·x + k, from each kind's ``friction_capacity``."""
         w, k = np.zeros(self.size), 0.0
         for events, _, loads in self.switching:
-            if events.holds is None:
+            if events.friction_capacity is None:
                 continue
             for i in range(len(loads)):
-                held = events.holds(self, mode, i)
+                held = events.friction_capacity(self, mode, i)
                 if held is not None and held[0] == g:
                     _, column, size = held
                     if column is None:

@@ -11,6 +11,7 @@ import json
 import math
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Sequence
 
 import numpy as np
 
@@ -32,15 +33,6 @@ POINTS = 2001
 
 
 @dataclass(frozen=True)
-class ComponentReport:
-    """The run, the lines printed, the files written."""
-
-    run: ComponentRun
-    lines: list[str]
-    files: list[Path]
-
-
-@dataclass(frozen=True)
 class PartPeak:
     """The largest value (signed, by magnitude) of what a part reports over a
     run (a DC motor's current, torque, speed) and when it occurs."""
@@ -52,6 +44,29 @@ class PartPeak:
     value: float
 
 
+@dataclass(frozen=True)
+class ComponentReport:
+    """The run, the peaks of what its parts report (computed once for the
+    lines and the JSON), the lines printed, the files written."""
+
+    run: ComponentRun
+    parts: list[PartPeak]
+    lines: list[str]
+    files: list[Path]
+
+
+def _reported(run: ComponentRun) -> list[tuple[str, str, str, np.ndarray]]:
+    """(part, what, SI unit, weights w: the value is w·x) of every value the
+    run's parts report (``Acting.outputs``, a span's force), in the order the
+    parts were given."""
+    a, out = run.system.assembly, []
+    bodies = {l.part.name: a.bodies[l.part.body] for l in a.loads}
+    for part, what, unit, value in run.model.equations.outputs:
+        si = UNITS[unit][bodies[part].motion] if unit in UNITS else unit
+        out.append((part, what, si, run.system.first_order.weights(value)))
+    return out
+
+
 def part_peaks(run: ComponentRun) -> list[PartPeak]:
     """The peak of every value the run's parts report (``Acting.outputs``), in
     the order the parts were given.
@@ -61,12 +76,9 @@ def part_peaks(run: ComponentRun) -> list[PartPeak]:
     run : ComponentRun
         The run.
     """
-    a, out = run.system.assembly, []
-    bodies = {l.part.name: a.bodies[l.part.body] for l in a.loads}
-    for part, what, unit, value in run.model.equations.outputs:
-        w = run.system.first_order.weights(value)
+    out = []
+    for part, what, si, w in _reported(run):
         when, peak = largest(run.result, run.system, lambda mode, w=w: (w, 0.0), magnitude=True)
-        si = UNITS[unit][bodies[part].motion] if unit in UNITS else unit
         out.append(PartPeak(part, what, si, when, peak))
     return out
 
@@ -102,13 +114,14 @@ def load_text(value: float, unit: str, positive: str | None, factor: float,
         format_quantity(0.0, scaled)
 
 
-def report_lines(run: ComponentRun) -> list[str]:
+def report_lines(run: ComponentRun, parts: Sequence[PartPeak]) -> list[str]:
     """The components dropped as not needed, a brake that engages the instant
     a steady start begins (its friction is not in that steady motion), how
     the loads' signs read, peak
     loads (in kN or kN·m where they are that large, in words where a link
-    declares its ``positive``; with time and dynamic factor) and events, one
-    per line."""
+    declares its ``positive``; with time and dynamic factor), the peaks of
+    what its parts report (``parts``, :func:`part_peaks` of the run) and
+    events, one per line."""
     lines = [d.line() for d in run.model.dropped]
     for t, event in run.schedule:          # a steady start: the brake comes after it
         if t == 0 and event.endswith(" engages"):
@@ -135,7 +148,7 @@ def report_lines(run: ComponentRun) -> list[str]:
         lines.append(f"peak reaction of {r.contact}: {load_text(r.value, r.unit, None, *scale)}"
                      f" at t = {format_quantity(r.time, 's')} (at the start "
                      f"{load_text(r.start, r.unit, None, *scale)})")
-    for p in part_peaks(run):
+    for p in parts:
         lines.append(f"peak {p.what} of {p.part}: {format_quantity(p.value, p.unit)} at "
                      f"t = {format_quantity(p.time, 's')}")
     for t, event in run.events:
@@ -173,7 +186,7 @@ def results(report: ComponentReport) -> dict:
                       f"{r.contact}.reaction_peak_time": {"value": number(r.time), "unit": "s"},
                       f"{r.contact}.reaction_start": {"value": number(r.start),
                                                       "unit": r.unit}})
-    for p in part_peaks(report.run):
+    for p in report.parts:
         found.update({f"{p.part}.{p.what}.peak": {"value": number(p.value), "unit": p.unit},
                       f"{p.part}.{p.what}.peak_time": {"value": number(p.time), "unit": "s"}})
     return {"scene": model.name, "title": model.title, "model": model.name,
@@ -201,7 +214,8 @@ def _json(run: ComponentRun, name: str) -> str:
 
 
 def load_figures(run: ComponentRun, title: str) -> list:
-    """The figures (Matplotlib) of the loads of the run's elastic links, at most
+    """The figures (Matplotlib) of the loads of the run's elastic links, its
+    spans' forces (or torques) and its ground contacts' reactions, at most
     four panels each; each axis says what it shows in words and units (a
     link's tension where it declares its ``positive``, kN or kN·m where the
     load is that large).
@@ -224,6 +238,13 @@ def load_figures(run: ComponentRun, title: str) -> list:
                             [(p.link, times, values(run.result, times,
                                                     run.system.link_load(i)) / factor)],
                             group="elastic links", xlabel="time [s]"))
+    spans = {part.name for part in run.system.assembly.couplings}
+    for part, what, si, w in (r for r in _reported(run) if r[0] in spans):
+        load = values(run.result, times, lambda mode, w=w: (w, 0.0))
+        factor, unit = engineering(float(np.abs(load).max()), si)
+        panels.append(Panel(f"{what} of the span {part}", f"{what} [{unit}]",
+                            [(part, times, load / factor)], group="spans",
+                            xlabel="time [s]"))
     for j, r in enumerate(run.reactions):
         factor, unit = engineering(max(abs(r.value), abs(r.start)), r.unit)
         panels.append(Panel(f"reaction of the ground contact {r.contact}",
@@ -237,7 +258,7 @@ def load_figures(run: ComponentRun, title: str) -> list:
 def run_component_file(path: str | Path, out: str | Path | None) -> ComponentReport:
     """Read ``path``, run it, write ``<name>.json``, the module
     ``model_<name>.py`` (the links' loads as tables of closed forms) and
-    ``<name>_loads*.png`` into ``out`` (nothing else, nowhere else).
+    ``<name>_loads*.png`` (:func:`load_figures`) into ``out`` (nothing else, nowhere else).
 
     Parameters
     ----------
@@ -252,9 +273,10 @@ def run_component_file(path: str | Path, out: str | Path | None) -> ComponentRep
     read: ComponentFile = read_component_file(path)
     model = read.model
     run = model.run(read.duration, read.body, read.speed, rest=read.rest)
-    lines = report_lines(run)
+    parts = part_peaks(run)
+    lines = report_lines(run, parts)
     if out is None:
-        return ComponentReport(run, lines, [])
+        return ComponentReport(run, parts, lines, [])
     figs = load_figures(run, model.title or model.name)
     source = render_component_module(run)
     with output_files.staged(out) as stage:
@@ -266,4 +288,4 @@ def run_component_file(path: str | Path, out: str | Path | None) -> ComponentRep
             buffer = io.BytesIO()
             fig.savefig(buffer, format="png", dpi=120, metadata={"Software": None})
             files.append(stage.bytes(name, buffer.getvalue()))
-    return ComponentReport(run, lines, files)
+    return ComponentReport(run, parts, lines, files)

@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from crane_sym.components.hybrid import ComponentSystem, Mode
-from crane_sym.components.parts import ComponentError
+from crane_sym.components.parts import UNITS, ComponentError
 
 __all__ = ["Balance", "balance"]
 
@@ -155,6 +155,15 @@ def _check_limits(probe: ComponentSystem, states: np.ndarray) -> None:
     for limit, (name, symbol, _, _) in zip(probe.limits, probe.equations.limits):
         value = float(states[limit.state - probe.first])
         if abs(value) > limit.bound * (1 + 1e-12):
+            unit = _unit_of(probe, symbol)
             raise ComponentError(f"start: {name}'s limit holds {symbol} within "
-                                 f"±{limit.bound:.6g} (SI); the steady start needs "
-                                 f"{value:.6g}: the limit cannot hold the load")
+                                 f"±{limit.bound:.6g} {unit}; the steady start needs "
+                                 f"{value:.6g} {unit}: the limit cannot hold the load")
+
+
+def _unit_of(probe: ComponentSystem, state) -> str:
+    """The unit a part reports ``state`` in (a DC motor's current: A), else "(SI)"."""
+    for _, _, unit, value in probe.equations.outputs:
+        if value == state and unit not in UNITS:
+            return unit
+    return "(SI)"

@@ -236,7 +236,7 @@ def _contacts(parts: list[Component], bodies: dict[str, Body],
                 raise ComponentError(f"{part.label}: {other.part.label} rests the same rigid "
                                      "group on the ground already")
         for load in loads:
-            if kinds.plays(load.part, "holds") and place[load.part.body][0] == g:
+            if kinds.plays(load.part, "holds at rest") and place[load.part.body][0] == g:
                 raise ComponentError(f"{part.label}: {load.part.label} acts on the rigid group "
                                      f"of {bodies[part.body].label}, which the ground holds "
                                      "while it rests; a contact takes a group without brakes "

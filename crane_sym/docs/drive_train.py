@@ -302,9 +302,10 @@ def drive_train_page(path: str | Path) -> str:
     for k, fig in enumerate(load_figures(run, title), start=1):
         buffer = io.BytesIO()
         fig.savefig(buffer, format="png", dpi=110, metadata={"Software": None})
-        figures.append((f"Figure {k}: the loads of the elastic links over the run",
+        figures.append((f"Figure {k}: the loads of the elastic links, spans and ground "
+                        "contacts over the run",
                         buffer.getvalue()))
     return render_page(render(read, run, records), title, figures,
-                       "The loads of the elastic links over the run, from its phases "
-                       "in closed form.")
+                       "The loads of the elastic links, spans and ground contacts over "
+                       "the run, from its phases in closed form.")
 

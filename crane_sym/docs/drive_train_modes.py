@@ -56,7 +56,7 @@ def describe_mode(system: ComponentSystem, mode: Mode) -> str:
         else:
             words.append(f"{link.part.name} " + ("on its upper flank" if c > 0 else
                                                  "on its lower flank" if c < 0 else "in its gap"))
-    for brake, on, ramp in zip(system.brakes, mode.engaged, mode.ramping):
+    for brake, on, ramp in zip(system.of_kind["brake"], mode.engaged, mode.ramping):
         words.append(f"{brake.part.name} " + (("building up" if ramp or
                                                brake.part.build_up == "exponential"
                                                else "engaged") if on else "off"))
@@ -65,9 +65,9 @@ def describe_mode(system: ComponentSystem, mode: Mode) -> str:
             words.append(f"group {a.groups[g].name} held by its brakes")
         elif motion in (FORWARD, BACKWARD):
             words.append(f"group {a.groups[g].name} sliding {motion}")
-    for motor, on in zip(system.motors, mode.driven):
+    for motor, on in zip(system.of_kind["motor"], mode.driven):
         words.append(f"{motor.part.name} {'on' if on else 'off'}")
-    for law, k in zip(system.characteristics, mode.steps):
+    for law, k in zip(system.of_kind["characteristic"], mode.steps):
         words.append(f"{law.part.name} on step {k + 1}")
     return "; ".join(words + limit_words(system, mode)) or "one mode"
 
@@ -107,7 +107,7 @@ def _state(system: ComponentSystem) -> str:
     for q in eq.coordinates:
         names += [latex(q, symbol_names=eq.latex_names),
                   latex(q.diff(eq.t), symbol_names=eq.latex_names)]
-    names += ["\\beta_{\\mathrm{" + system.brakes[i].part.name.replace("_", "\\_") + "}}"
+    names += ["\\beta_{\\mathrm{" + system.of_kind["brake"][i].part.name.replace("_", "\\_") + "}}"
               for i in sorted(system.beta)]
     for law in system.clock.laws:        # w_j = τ^j of the law's current piece
         upright = "\\mathrm{" + law.name.replace("_", "\\_") + "}"
@@ -118,13 +118,14 @@ def _state(system: ComponentSystem) -> str:
 
 def _modes(run: ComponentRun) -> list[str]:
     system = run.system
+    parts = system.of_kind
     out: list[str] = []
     lines = [f"{l.part.name}: {', '.join(l.part.contacts)}" for l in system.backlash]
     lines += [f"{b.part.name} on {b.part.body}: off, then engaged"
               + ("" if b.part.build_up == "step" else f", building up ({b.part.build_up})")
-              for b in system.brakes]
-    lines += [f"{m.part.name}: on, off" for m in system.motors if m.part.off_at is not None]
-    lines += [f"{c.part.name}: {len(c.part.slopes)} steps" for c in system.characteristics]
+              for b in parts["brake"]]
+    lines += [f"{m.part.name}: on, off" for m in parts["motor"] if m.part.off_at is not None]
+    lines += [f"{c.part.name}: {len(c.part.slopes)} steps" for c in parts["characteristic"]]
     braked = sorted({system.assembly.groups[g].name for g in system.brake_group})
     lines += [f"group {name}: free, sliding against its brakes, held" for name in braked]
     lines += [f"{limit.name}: within its limit, at it (integral frozen, then tracking)"

@@ -26,11 +26,22 @@ from typing import Iterator, Sequence
 
 import numpy as np
 import sympy as sp
+from sympy.matrices.exceptions import MatrixError
 
 from crane_sym.mechanics.spectral_clusters import numpy_terms
 
-__all__ = ["ClosedForm", "clear_cache", "closed_form", "exact_is_cheap", "fold", "jordan",
-           "jordan_blocks"]
+__all__ = ["ClosedForm", "JordanFormError", "clear_cache", "closed_form", "exact_is_cheap",
+           "fold", "jordan", "jordan_blocks"]
+
+
+class JordanFormError(ValueError):
+    """SymPy's exact Jordan form of a phase failed (a ``MatrixError``): one
+    line saying so and what to do; the run names the phase
+    (:meth:`in_phase`)."""
+
+    def in_phase(self, k: int, t: float) -> "JordanFormError":
+        """The same error, naming phase ``k`` of the run, which starts at ``t`` [s]."""
+        return JordanFormError(f"phase {k} of the run (from t = {float(t):.6g} s): {self}")
 
 
 @dataclass(frozen=True)
@@ -147,7 +158,14 @@ def jordan(a_key: tuple, b_key: tuple) -> tuple[sp.Matrix, sp.Matrix]:
     aug = sp.zeros(n + 1, n + 1)
     aug[:n, :n] = sp.Matrix(n, n, [exact(v) for v in a_key])
     aug[:n, n] = sp.Matrix([exact(v) for v in b_key])
-    return aug.jordan_form()
+    try:
+        return aug.jordan_form()
+    except MatrixError as exc:
+        said = " ".join(str(exc).split()) or "no reason given"
+        raise JordanFormError(f"SymPy's exact Jordan form of its x' = A x + b failed "
+                              f"(MatrixError: {said}), so it has no closed form here: "
+                              "change a value of the model by a small fraction (its "
+                              "eigenvalues nearly coincide), or report the model") from None
 
 
 def jordan_blocks(J: sp.Matrix) -> Iterator[tuple[int, int]]:

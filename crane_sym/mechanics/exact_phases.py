@@ -32,7 +32,7 @@ from typing import Callable, Hashable, Sequence
 import mpmath
 import numpy as np
 
-from crane_sym.mechanics.closed_forms import ClosedForm
+from crane_sym.mechanics.closed_forms import ClosedForm, JordanFormError
 from crane_sym.mechanics.exact_forms import DPS, ExactForm, exact_form
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
 from crane_sym.mechanics.piecewise_linear import (MAX_PHASES, Guard, HybridSystem, PhaseLimitError,
@@ -147,7 +147,10 @@ def simulate_exact(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_
         pending = sorted((float(s), name) for s, name in schedule if 0 <= s < t_end)
         t, segments, event = mpmath.mpf(0), [], "start"
         for _ in range(max_events):
-            form = exact_form(*system.matrices(mode))
+            try:
+                form = exact_form(*system.matrices(mode))
+            except JordanFormError as exc:
+                raise exc.in_phase(len(segments) + 1, t) from None
             horizon = mpmath.mpf(pending[0][0] if pending else t_end) - t
             end, event = horizon, (pending[0][1] if pending else "end")
             for guard in system.guards(mode):

@@ -39,7 +39,7 @@ from typing import Callable, Hashable, Iterator, Protocol, Sequence
 import numpy as np
 from scipy.optimize import brentq
 
-from crane_sym.mechanics.closed_forms import ClosedForm, closed_form
+from crane_sym.mechanics.closed_forms import ClosedForm, JordanFormError, closed_form
 
 __all__ = ["ClosedForm", "Guard", "HybridSystem", "MAX_PHASES", "PhaseFormError",
            "PhaseLimitError", "PiecewiseResult", "Segment", "by_phase", "closed_form",
@@ -348,6 +348,21 @@ class PhaseLimitError(RuntimeError):
         self.limit, self.t, self.t_end, self.last = limit, t, t_end, last
 
 
+def _phase(system: HybridSystem, mode: Hashable, x: np.ndarray, first: tuple[float, str],
+           h_min: float, exact: bool | None) -> tuple[ClosedForm, float, str]:
+    """The phase from ``x`` in ``mode``: its closed form, its length and the
+    event that ends it (``first``: the next scheduled one); the precise form
+    where the double one's rounding grew past :data:`RESIDUAL` over it."""
+    A, b = system.matrices(mode)
+    form = closed_form(A, b, exact)
+    end, event = _next_event(system, mode, form, x, *first, h_min)
+    if form.residual(end, x, A, b) > RESIDUAL:      # rounding grown past the phase
+        form = precise_form(A, b, end, x, first[0])
+        end, event = _next_event(system, mode, form, x, *first, h_min)
+        form = precise_form(A, b, end, x, first[0])   # checked where it ends too
+    return form, end, event
+
+
 def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: float,
              schedule: Sequence[tuple[float, str]] = (), *, h_min: float = 1e-10,
              max_events: int = MAX_PHASES, exact: bool | None = None) -> PiecewiseResult:
@@ -384,15 +399,12 @@ def simulate(system: HybridSystem, mode: Hashable, x0: Sequence[float], t_end: f
     pending = sorted((float(t), name) for t, name in schedule if 0 <= t < t_end)
     result, t, event = PiecewiseResult(), 0.0, "start"
     for _ in range(max_events):
-        A, b = system.matrices(mode)
-        form = closed_form(A, b, exact)
         horizon = (pending[0][0] if pending else t_end) - t
         first = (horizon, pending[0][1] if pending else "end")
-        end, event = _next_event(system, mode, form, x, *first, h_min)
-        if form.residual(end, x, A, b) > RESIDUAL:      # rounding grown past the phase
-            form = precise_form(A, b, end, x, first[0])
-            end, event = _next_event(system, mode, form, x, *first, h_min)
-            form = precise_form(A, b, end, x, first[0])   # checked where it ends too
+        try:
+            form, end, event = _phase(system, mode, x, first, h_min, exact)
+        except JordanFormError as exc:
+            raise exc.in_phase(len(result.segments) + 1, t) from None
         result.segments.append(Segment(mode, t, t + end, x, form, event))
         x_end = form.state(end, x)
         t += end

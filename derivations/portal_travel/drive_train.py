@@ -88,7 +88,7 @@ def speed_index(system: ComponentSystem, body: str) -> int:
 def step_accelerations(result: PiecewiseResult, system: ComponentSystem) -> np.ndarray:
     """The crane's mean acceleration over each start step [m/s²]: Δv_k / hold
     time (Table 1's a_k), the holds of the left side's characteristic."""
-    holds = system.characteristics[0].part.holds
+    holds = system.of_kind["characteristic"][0].part.holds
     edges = np.concatenate([[0.0], np.cumsum(holds)])
     speeds = result.state(edges)[:, speed_index(system, "crane")]
     return np.diff(speeds) / np.diff(edges)

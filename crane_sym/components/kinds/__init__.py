@@ -45,8 +45,8 @@ def of(part: Component) -> Kind:
 
 
 def plays(part: Component, role: str) -> bool:
-    """Whether ``part`` declares ``role`` (``Kind.roles``: a key of
-    :data:`crane_sym.components.kinds.base.ROLE_FLAGS`, e.g. ``holds``).
+    """Whether ``part`` plays ``role`` (``Kind.roles``: a key of
+    :data:`crane_sym.components.kinds.base.ROLE_FLAGS`, e.g. ``holds at rest``).
 
     Parameters
     ----------

@@ -4,8 +4,9 @@ built up after a delay as a step, a ramp or an exponential.
 Its modes: ``engaged`` (from its delay on, until it is released at
 ``fails_at``) and ``ramping`` (a ramp under way); a ramp's or an
 exponential's build-up 0 ≤ β ≤ 1 is a state of its own. Engaged, it holds
-its group by friction up to |κ| M β (``holds``): the system's groups slide
-against it, and rest or slip again where their load says so.
+its group by friction up to |κ| M β (``friction_capacity``; so it plays the
+role ``holds at rest`` undeclared): the system's groups slide against it,
+and rest or slip again where their load says so.
 """
 import sympy as sp
 from sympy.physics.units import time
@@ -73,7 +74,7 @@ def _column(system, i: int) -> int | None:
     return system.columns.get((TABLE, i))
 
 
-def _holds(system, mode, i: int):
+def _friction_capacity(system, mode, i: int):
     """(group, β's column or None, |κ| M): what brake i holds while engaged."""
     if not mode.engaged[i]:
         return None
@@ -136,7 +137,7 @@ def _let_go(system, mode, i: int, x):
 
 EVENTS = Events(("engaged", "ramping"), _start, _names,
                 {"engage": _engage, "ramped": _ramped, "let go": _let_go},
-                schedule=_schedule, holds=_holds,
+                schedule=_schedule, friction_capacity=_friction_capacity,
                 states=lambda part: 0 if part.build_up == "step" else 1, rates=_rates)
 
 
@@ -152,4 +153,4 @@ KIND = Kind(TABLE, (Key("name", "word"), Key("body", "body"),
                                           g["delay"], g["build_up"], g["time"], g["fails_at"]),
             "a brake on a body", idle=_idle, acts=_acts, switching=_switching,
             check=lambda part, bodies, components: force_load(part, bodies),
-            roles=lambda part: frozenset({"holds", "slides"}), counted="brakes", events=EVENTS)
+            roles=lambda part: frozenset({"slides"}), counted="brakes", events=EVENTS)

@@ -50,9 +50,11 @@ class Events:
     ``rest`` has already taken); ``guards(system, mode, i)``:
     its guards in a mode (:data:`GuardSpec`); ``rules``: the handler of each
     event key. The rest are what the generic machinery asks of a kind that
-    acts through it: ``holds(system, mode, i)``, what the part can hold of
-    its group's load by friction, (group, column of its own state or None,
-    size: the capacity is size·x[column], or size itself), or None; ``fixes(system, mode, i)``,
+    acts through it: ``friction_capacity(system, mode, i)``, what the part
+    can hold of its group's load by friction, (group, column of its own
+    state or None, size: the capacity is size·x[column], or size itself), or
+    None (a kind that gives it plays the role ``holds at rest``);
+    ``fixes(system, mode, i)``,
     the group the part itself keeps still (no friction guard for it) or
     None; ``states(part)``, how many states of its own (a brake's build-up)
     and ``rates(system, mode, i, A, b)``, their rows; ``role`` and
@@ -66,7 +68,7 @@ class Events:
     rules: Mapping[str, Handler] = field(default_factory=dict)
     schedule: Callable[[Component, bool], tuple[tuple[float, str], ...]] = _none
     guards: Callable[[Any, Any, int], tuple[GuardSpec, ...]] = _none
-    holds: Callable[[Any, Any, int], Any] | None = None
+    friction_capacity: Callable[[Any, Any, int], Any] | None = None
     fixes: Callable[[Any, Any, int], int | None] | None = None
     states: Callable[[Component], int] = lambda part: 0
     rates: Callable[[Any, Any, int, Any, Any], None] | None = None

@@ -56,7 +56,7 @@ def _check(part: MotorLaw, bodies: dict, components: tuple) -> Load:
 
 
 #: What a law of each kind is to the assembly (``Kind.roles``).
-ROLES = {"speed": frozenset({"holds", "sets speed"}), "acceleration": frozenset({"balances"}),
+ROLES = {"speed": frozenset({"holds at rest", "sets speed"}), "acceleration": frozenset({"balances"}),
          "torque": frozenset()}
 
 

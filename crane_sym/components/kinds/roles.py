@@ -24,8 +24,9 @@ Check = Callable[[Component, dict, Sequence[Component]], Any]
 #: then asks (:mod:`crane_sym.components.topology`,
 #: :mod:`crane_sym.components.vibration`).
 ROLE_FLAGS = {
-    "holds": "it may hold its body's rigid group at rest (a brake, a speed law): a ground "
-             "contact takes no such group",
+    "holds at rest": "it may hold its body's rigid group at rest (a brake, a speed law): a "
+                     "ground contact takes no such group; a kind whose ``Events`` give a "
+                     "``friction_capacity`` plays it without declaring it",
     "sets speed": "it sets its body's speed (a speed law): one to a rigid group, and a mode "
                   "holds that group out of its vibration",
     "slides": "it acts while its body slides (a brake): never where a speed law sets the speed",
@@ -53,9 +54,14 @@ class PartQuantity:
 
 
 def has_role(kind: Any, part: Component, role: str) -> bool:
-    """Whether ``part`` (of ``kind``) declares ``role`` (a key of :data:`ROLE_FLAGS`)."""
+    """Whether ``part`` (of ``kind``) plays ``role`` (a key of :data:`ROLE_FLAGS`):
+    it declares it, or, for ``holds at rest``, its kind holds by friction
+    (its ``Events`` give a ``friction_capacity``)."""
     if role not in ROLE_FLAGS:
         raise KeyError(f"no role {role!r}; roles: {', '.join(ROLE_FLAGS)}")
+    if role == "holds at rest" and kind.events is not None \
+            and kind.events.friction_capacity is not None:
+        return True
     return kind.roles is not None and role in kind.roles(part)
 
 
