@@ -66,3 +66,12 @@ def test_a_papers_stages_are_timed():
     (times,) = paper_times(["travel_braking"])
     assert times.formulas > 0 and min(times.build, times.checks, times.reading) > 0
     assert times.from_table + times.parsed_fresh > 0
+
+
+def test_audit_profile_prints_the_schedule(capsys):
+    from crane_sym.cli.main import main
+    assert main(["audit", "000", "--format", "json", "--quiet", "--profile"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    schedule = [line for line in err if line.startswith("schedule: ")]
+    assert schedule[0].startswith("schedule: this process: travel_braking 0.0–")
+    assert schedule[-1].startswith("schedule: makespan ")
