@@ -140,7 +140,7 @@ def test_grazing_start_does_not_chatter():
     its speed grows as t². The double run once read rounding noise as the
     speed coming back to rest ('rests' four times within 1e-9 s); its search
     now watches the speed shifted by its rounding band until it leaves the
-    band (piecewise_linear.sign_change), so neither has a 'rests', and both
+    band (event_search.sign_change), so neither has a 'rests', and both
     describe the same load to ~1e-10."""
     run = _portal_run("2pi")
     double = run.table()
