@@ -14,7 +14,7 @@ from crane_sym.mechanics.batched_forms import batch_forms
 from crane_sym.mechanics.batched_signals import Signals
 from crane_sym.mechanics.closed_forms import closed_form
 from crane_sym.mechanics.phase_table import largest
-from crane_sym.mechanics.piecewise_linear import first_crossing
+from crane_sym.mechanics.event_search import first_crossing
 
 RPM = 2 * np.pi / 60
 

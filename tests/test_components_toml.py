@@ -195,7 +195,7 @@ def test_model_show_prints_groups_equations_and_modes(capsys):
 def test_a_group_that_slips_does_not_rest_on_rounding_noise(name):
     """A held group slips where its load reaches the brakes' capacity, with
     zero acceleration: it must not be logged as resting again ~1e-10 s later
-    (the search's rounding band, piecewise_linear.sign_change)."""
+    (the search's rounding band, event_search.sign_change)."""
     read = read_component_file(EXAMPLE.with_name(f"{name}.toml"))
     run = read.model.run(read.duration, read.body, read.speed, rest=read.rest)
     slips = [(t, e) for t, e in run.events if " slips " in e]

@@ -10,7 +10,7 @@ import pytest
 
 from crane_sym.mechanics import closed_forms
 from crane_sym.mechanics import exact_forms, exact_phases
-from crane_sym.mechanics import piecewise_linear
+from crane_sym.mechanics import event_search
 from crane_sym.derivations.hoist_brakes.drive_train import emergency_stop, table1_values
 from crane_sym.derivations.hoist_brakes.hybrid import EMERGENCY_STOP
 from crane_sym.derivations.portal_travel.hybrid import STARTUP, rim_values
@@ -52,7 +52,7 @@ def test_table_does_not_depend_on_libm(monkeypatch, make, ulps):
     run = make()
     exact, double = exact_table(run), run.table()
     text = render_tabulated(_output(), exact, "note")
-    for module in (piecewise_linear, exact_phases):
+    for module in (event_search, exact_phases):
         monkeypatch.setattr(module, "math", _other_libm(ulps))
     closed_forms.clear_cache()
     exact_forms._exact_form_cached.cache_clear()
@@ -140,7 +140,7 @@ def test_grazing_start_does_not_chatter():
     its speed grows as t². The double run once read rounding noise as the
     speed coming back to rest ('rests' four times within 1e-9 s); its search
     now watches the speed shifted by its rounding band until it leaves the
-    band (piecewise_linear.sign_change), so neither has a 'rests', and both
+    band (event_search.sign_change), so neither has a 'rests', and both
     describe the same load to ~1e-10."""
     run = _portal_run("2pi")
     double = run.table()

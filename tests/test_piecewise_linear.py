@@ -11,7 +11,8 @@ from crane_sym.components.hybrid import Mode
 from crane_sym.derivations.hoist_brakes.drive_train import (emergency_stop, rated_torque,
                                                             table1_values)
 from crane_sym.mechanics.phase_table import largest, values
-from crane_sym.mechanics.piecewise_linear import closed_form, first_crossing, simulate
+from crane_sym.mechanics.event_search import first_crossing
+from crane_sym.mechanics.piecewise_linear import closed_form, simulate
 
 linalg = pytest.importorskip("scipy.linalg")
 integrate = pytest.importorskip("scipy.integrate")

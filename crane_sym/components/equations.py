@@ -41,6 +41,7 @@ from crane_sym.components import kinds
 from crane_sym.components.coupling_loads import load_of
 from crane_sym.components.first_order import rate_matrices
 from crane_sym.components.kinds.base import ROLES
+from crane_sym.components.rigid_drive import rigid_drive_force
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 
@@ -373,7 +374,7 @@ def derive(assembly: Assembly) -> Equations:
             states[s] = states.get(s, sp.Integer(0)) + rate
         limits += [(part.name, *limit) for limit in acts.limits]
         outputs += [(part.name, *out) for out in acts.outputs]
-        if acts.force is None:                  # an acceleration law: see _rigid_drive
+        if acts.force is None:                  # an acceleration law: see rigid_drive_force
             balancing = (part, acts.joins[-1][1])
             continue
         if acts.constant:
@@ -382,7 +383,7 @@ def derive(assembly: Assembly) -> Equations:
     if balancing is not None:
         part, a_law = balancing
         kappa, q = where[part.body]
-        forces[q] += kappa * _rigid_drive(assembly, where, part.body, a_law, acting)
+        forces[q] += kappa * rigid_drive_force(assembly, where, part.body, a_law, acting)
     outputs += carried
     eqs = lagrange_equations(T, V, coords, t, forces, D)
     values = parameter_values(assembly)
@@ -392,33 +393,3 @@ def derive(assembly: Assembly) -> Equations:
                      tuple(joined["slopes"]), tuple(joined["signals"]), tuple(laws),
                      tuple(stretches), tuple(states), tuple(states.values()), tuple(limits),
                      tuple(outputs))
-
-
-def _rigid_drive(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]], body: str,
-                 a_law: sp.Symbol, acting: list[tuple[str, sp.Expr]]) -> sp.Expr:
-    """P = J_red a − Σ ρ_b F_b: the force on ``body`` that drives the drive, were it
-    rigid, at the acceleration ``a_law`` of ``body`` against the loads ``acting``
-    (the weights, resistances and motors: the loads constant in time).
-
-    Rigid, every elastic link keeps its twist: κ_b q̇_b = κ_a q̇_a, so group g
-    moves ρ_g per unit of the body's coordinate y (ρ = 1/κ on its own group),
-    body b moves κ_b ρ_g; virtual work refers its inertia and load to y."""
-    place = assembly.place
-    rho = {place[body][0]: 1 / where[body][0]}
-    todo = [place[body][0]]
-    while todo:
-        here = todo.pop(0)
-        for link in assembly.links:
-            ends = assembly.ends(link)
-            for near, far in (ends, ends[::-1]):
-                if near.group == here and far.group is not None and far.group not in rho:
-                    rho[far.group] = rho[here] * near.factor / far.factor
-                    todo.append(far.group)
-    J = sp.Integer(0)
-    for g, group in enumerate(assembly.groups):
-        for (member, _), kappa in zip(group.members, group.factors):
-            inertia = _p(f"{'J' if member.motion == 'rotating' else 'm'}_{member.name}")
-            J += inertia * (kappa * rho[g]) ** 2
-    held = sum((where[b][0] * rho[place[b][0]] * F for b, F in acting), sp.Integer(0))
-    return sp.expand(J * a_law - held)
-

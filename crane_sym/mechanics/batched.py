@@ -214,7 +214,7 @@ def _signals(form: BatchForm, vectors: np.ndarray, weights: np.ndarray,
     """g = w·x + k of each design over the phase, as a :class:`Signals`; a
     term within 64 ulps of the sum it comes from is rounding noise of an exact
     zero (the rigid mode's powers of t of a load that only the springs set) and
-    is 0, as on the per-design route (``piecewise_linear.exact_zeros``)."""
+    is 0, as on the per-design route (``event_search.exact_zeros``)."""
     parts = vectors[:, :, : form.n] * weights[:, None, :]
     amps = parts.sum(axis=2)
     amps[np.abs(amps) <= 64 * np.finfo(float).eps * np.abs(parts).sum(axis=2)] = 0.0

@@ -1,7 +1,7 @@
 """Events of many signals at once: the certified no-skip search and a
 bracketed refinement, both on arrays.
 
-:func:`first_crossings` is :func:`crane_sym.mechanics.piecewise_linear.sign_change`
+:func:`first_crossings` is :func:`crane_sym.mechanics.event_search.sign_change`
 for m signals together (:class:`crane_sym.mechanics.batched_signals.Signals`),
 with the same guarantee: from t, g cannot reach 0 before t + |g(t)|/L (L
 bounds |g'| over the current window) nor before the root of
@@ -36,7 +36,7 @@ def first_crossings(sig: Signals, start: np.ndarray, t_end: np.ndarray, directio
     """The first t in (start, t_end] where each g changes sign, NaN where none.
 
     ``direction`` (+1, −1 or 0 per row) says on which side a start on the
-    surface lies, as for :func:`crane_sym.mechanics.piecewise_linear.first_crossing`.
+    surface lies, as for :func:`crane_sym.mechanics.event_search.first_crossing`.
     ``owner`` (one integer ≥ 0 per row, the rows of one design's guards
     sharing one; an array as long as the largest is made) asks for
     the earliest crossing of each owner only: a row stops searching, NaN, once

@@ -35,8 +35,8 @@ import numpy as np
 from crane_sym.mechanics.closed_forms import ClosedForm, JordanFormError
 from crane_sym.mechanics.exact_forms import DPS, ExactForm, exact_form
 from crane_sym.mechanics.phase_table import HybridRun, PhaseTable
-from crane_sym.mechanics.piecewise_linear import (MAX_PHASES, Guard, HybridSystem, PhaseLimitError,
-                                                  sign_change, signal)
+from crane_sym.mechanics.event_search import sign_change, signal
+from crane_sym.mechanics.piecewise_linear import MAX_PHASES, Guard, HybridSystem, PhaseLimitError
 
 __all__ = ["DPS", "ExactForm", "ExactRun", "ExactSegment", "crossing", "exact_form",
            "exact_table", "illinois", "simulate_exact", "tabulate_exact"]
@@ -45,7 +45,7 @@ EPS = float(np.finfo(float).eps)
 
 
 def _noise(form: ClosedForm, amps: np.ndarray, k: float, t: float) -> float:
-    """A bound of the rounding error of :func:`crane_sym.mechanics.piecewise_linear.signal`'s
+    """A bound of the rounding error of :func:`crane_sym.mechanics.event_search.signal`'s
     g at t, whatever libm: each term's size times its arguments' rounding, the
     amplitudes' own rounding and the sum's."""
     total = abs(k)

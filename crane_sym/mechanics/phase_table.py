@@ -24,7 +24,8 @@ import numpy as np
 
 from crane_sym.kernels.arithmetic import _phase_sum
 from crane_sym.mechanics.phase_peaks import peak_candidates
-from crane_sym.mechanics.piecewise_linear import (HybridSystem, PiecewiseResult, Segment, by_phase, exact_zeros,
+from crane_sym.mechanics.event_search import exact_zeros
+from crane_sym.mechanics.piecewise_linear import (HybridSystem, PiecewiseResult, Segment, by_phase,
                                                   simulate)
 
 __all__ = ["PEAK_TIE", "HybridRun", "PhaseTable", "first_of_largest", "largest", "phase_candidates",
