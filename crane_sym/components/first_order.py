@@ -21,14 +21,13 @@ keeps r = 0 (ż from ṙ = 0), until ṙ of the free mode turns through 0.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 import sympy as sp
 
-from crane_sym.mechanics.piecewise_linear import Guard
 
-__all__ = ["FirstOrder", "Limit", "rate_matrices"]
+__all__ = ["FirstOrder", "Limit", "fill_rates", "hold_limits", "limit_guards", "rate_matrices"]
 
 
 def rate_matrices(coordinates: Sequence[sp.Expr], t: sp.Symbol, states: Sequence[sp.Symbol],
@@ -111,49 +110,6 @@ class FirstOrder:
             w[at] = float(sp.diff(value, s).xreplace(self._values))
         return w
 
-    def fill(self, A: np.ndarray, b: np.ndarray, W: np.ndarray, c: np.ndarray) -> None:
-        """The states' rows, free (the signals L = W x + c)."""
-        Rq, Rv, Rs, RL, r0 = self.rates
-        rows = slice(self.first, self.size)
-        A[rows, 0:2 * self.n:2], A[rows, 1:2 * self.n:2] = Rq, Rv
-        A[rows, self.first:] = Rs
-        A[rows] += RL @ W
-        b[rows] = RL @ c + r0.reshape(-1)
-
-    def hold(self, A: np.ndarray, b: np.ndarray, limits: Sequence[int]) -> None:
-        """The free (A, b) changed in place for the limits at a bound: the state
-        still; its tracking state frozen (±1) or keeping the free rate
-        r = a·x + β at 0 (±2)."""
-        for limit, at in zip(self.limits, limits):
-            if not at:
-                continue
-            a = A[limit.state].copy()
-            A[limit.state], b[limit.state] = 0.0, 0.0
-            pivot, a[limit.state], a[limit.tracking] = a[limit.tracking], 0.0, 0.0
-            if abs(at) == 1:
-                A[limit.tracking], b[limit.tracking] = 0.0, 0.0
-            else:
-                A[limit.tracking], b[limit.tracking] = -(a @ A) / pivot, -(a @ b) / pivot
-
-    def guards(self, limits: Sequence[int], free: tuple[np.ndarray, np.ndarray]) -> list[Guard]:
-        """A free limit's state reaching ±bound; at ±1 its free rate r turning
-        back through 0; at ±2 ṙ of the free mode turning (``free``: (A, b) of
-        the mode with every limit free)."""
-        out = []
-        A, b = free
-        for limit, at in zip(self.limits, limits):
-            a, sign = A[limit.state], int(np.sign(at))
-            if at == 0:
-                unit = tuple(np.eye(self.size)[limit.state])
-                out += [Guard(f"{limit.name} limited +", unit, -limit.bound, 1),
-                        Guard(f"{limit.name} limited -", unit, limit.bound, -1)]
-            elif abs(at) == 1:
-                out.append(Guard(f"{limit.name} demand within", tuple(a), float(b[limit.state]),
-                                 -sign))
-            else:
-                out.append(Guard(f"{limit.name} released", tuple(a @ A), float(a @ b), -sign))
-        return out
-
     def events(self) -> dict[str, tuple[str, int]]:
         """The events of the limits, by name: (kind, limit)."""
         return {f"{limit.name} {word}": (kind, j) for j, limit in enumerate(self.limits)
@@ -175,3 +131,65 @@ class FirstOrder:
             out[j] = 1 if kind == "limit+" else -1
             x[limit.state] = out[j] * limit.bound
         return tuple(out)
+
+
+def fill_rates(rates: Sequence[np.ndarray], n: int, first: int, A: np.ndarray, b: np.ndarray,
+               W: np.ndarray, c: np.ndarray) -> None:
+    """The states' rows of x' = A x + b, free, for k designs at once (a
+    leading axis on every array): ``rates`` (R_q, R_v, R_s, R_L, r_0) per
+    design, the signals L = W x + c."""
+    Rq, Rv, Rs, RL, r0 = rates
+    if not Rq.shape[1]:
+        return
+    rows = slice(first, first + Rq.shape[1])
+    A[:, rows, 0:2 * n:2], A[:, rows, 1:2 * n:2] = Rq, Rv
+    A[:, rows, first:] = Rs
+    A[:, rows] += RL @ W
+    b[:, rows] = (RL @ c[:, :, None])[:, :, 0] + r0.reshape(len(r0), -1)
+
+
+def hold_limits(limits: Sequence[Limit], A: np.ndarray, b: np.ndarray,
+                at: Sequence[int]) -> None:
+    """The free (A, b) of k designs changed in place for the limits at a
+    bound: the state still; its tracking state frozen (±1) or keeping the
+    free rate r = a·x + β at 0 (±2)."""
+    for limit, where in zip(limits, at):
+        if not where:
+            continue
+        a = A[:, limit.state].copy()
+        A[:, limit.state], b[:, limit.state] = 0.0, 0.0
+        pivot = a[:, limit.tracking].copy()
+        a[:, limit.state], a[:, limit.tracking] = 0.0, 0.0
+        if abs(where) == 1:
+            A[:, limit.tracking], b[:, limit.tracking] = 0.0, 0.0
+        else:
+            A[:, limit.tracking] = -(a[:, None, :] @ A)[:, 0] / pivot[:, None]
+            b[:, limit.tracking] = -(a * b).sum(axis=1) / pivot
+
+
+def limit_guards(limits: Sequence[Limit], bounds: np.ndarray, at: Sequence[int], size: int,
+                 free: Callable[[], tuple[np.ndarray, np.ndarray]]
+                 ) -> list[tuple[str, np.ndarray, np.ndarray, int]]:
+    """The limits' guards for k designs, (event, w (k, size), constant (k,),
+    direction) each: a free limit's state reaching ±bound (``bounds``: (k,
+    limits)); at ±1 its free rate r turning back through 0; at ±2 ṙ of the
+    free mode turning (``free()``: (A, b) per design with every limit free,
+    asked only where a limit is at its bound)."""
+    out, k = [], len(bounds)
+    A, b = free() if any(at) else (None, None)
+    for j, (limit, where) in enumerate(zip(limits, at)):
+        sign = int(np.sign(where))
+        if where:
+            a = A[:, limit.state]
+        if where == 0:
+            unit = np.zeros((k, size))
+            unit[:, limit.state] = 1.0
+            out += [(f"{limit.name} limited +", unit, -bounds[:, j], 1),
+                    (f"{limit.name} limited -", unit.copy(), bounds[:, j].copy(), -1)]
+        elif abs(where) == 1:
+            out.append((f"{limit.name} demand within", a.copy(), b[:, limit.state].copy(),
+                        -sign))
+        else:
+            out.append((f"{limit.name} released", (a[:, None, :] @ A)[:, 0],
+                        (a * b).sum(axis=1), -sign))
+    return out

@@ -43,15 +43,21 @@ solves each phase in closed form and finds the events on those closed forms.
 from __future__ import annotations
 
 from dataclasses import replace
+from functools import cached_property
+from typing import Sequence
 
 import numpy as np
 
+from crane_sym.components.design_arrays import (DesignArray, free_limits, mode_guards,
+                                                mode_matrices, net_load)
+from crane_sym.components.design_family import DesignFamily
+from crane_sym.components.design_switches import settled, switched
 from crane_sym.components.equations import Equations
 from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.layout import layout
 from crane_sym.components.mode_numbers import ModeNumbers
-from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode, memo, solved
+from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode, memo
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["BACKWARD", "FORWARD", "FREE", "HELD", "ComponentSystem", "Mode"]
@@ -147,60 +153,27 @@ class ComponentSystem:
         """(M, D, K, f, E, G, S) of ``mode`` (:class:`ModeNumbers`)."""
         return self.numbers(mode)
 
-    def law_forcing(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
-        """(F, c): the laws' generalized forces on the groups as F x + c."""
-        G = self.linear(mode)[5]
-        W, c = self.clock.signals(mode.pieces, self.size)
-        return G @ W, G @ c
+    @cached_property
+    def alone(self) -> DesignArray:
+        """This design as an array of one (:mod:`crane_sym.components.design_arrays`):
+        the route its matrices and guards take, the one a batch of designs takes."""
+        return DesignArray.of([self], shared=False)
 
     def net_load(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """The generalized load on group g but its brakes' friction, as w·x + k."""
-        M = self.linear(mode)[0]
-        R, r = self._pushes(mode)
-        w, k = R[g].copy(), float(r[g])
-        coupled = [j for j in range(self.n) if j != g and M[g, j] != 0]
-        if coupled:          # a full M: the others' accelerations load g through M[g, j]
-            A, b = self._matrices(mode)
-            rows = [self.v(j) for j in coupled]
-            w -= M[g, coupled] @ A[rows]
-            k -= float(M[g, coupled] @ b[rows])
-        return w, k
-
-    def _pushes(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
-        """(R, r): the generalized forces on the groups, but the brakes' friction,
-        as R x + r: the right-hand side of M q̈ = R x + r."""
-        D, K, f = self.linear(mode)[1:4]
-        F, c = self.law_forcing(mode)
-        R = F.copy()
-        R[:, 0:2 * self.n:2] -= K
-        R[:, 1:2 * self.n:2] -= D
-        R[:, self.first:] += self.linear(mode)[6]
-        return R, f + c
+        w, k = net_load(self.alone, mode, g)
+        return w[0], float(k[0])
 
     def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, float]:
         """What the parts holding group g by friction can hold (the engaged
         brakes' Σ |κ| M β), as w·x + k, from each kind's ``friction_capacity``."""
-        w, k = np.zeros(self.size), 0.0
-        for events, _, loads in self.switching:
-            if events.friction_capacity is None:
-                continue
-            for i in range(len(loads)):
-                held = events.friction_capacity(self, mode, i)
-                if held is not None and held[0] == g:
-                    _, column, size = held
-                    if column is None:
-                        k += size
-                    else:
-                        w[column] += size
-        return w, k
+        w, k = self.alone.capacity(mode, g)
+        return w[0], float(k[0])
 
     def settled(self, mode: Mode, g: int, x: np.ndarray) -> str:
         """How group g moves from rest in state x: held while its load is
         within what holds it, else sliding the way the load pushes."""
-        held = mode.moving(g, HELD)
-        (wn, kn), (wc, kc) = self.net_load(held, g), self.capacity(held, g)
-        net, cap = float(wn @ x + kn), float(wc @ x + kc)
-        return HELD if abs(net) <= cap else FORWARD if net > 0 else BACKWARD
+        return settled(self.alone, mode, g, np.asarray(x)[None])[0]
 
     def rests(self, mode: Mode, g: int, x: np.ndarray) -> tuple[Mode, np.ndarray]:
         """Group g brought to rest (its speed set to 0), then :meth:`settled`."""
@@ -223,49 +196,10 @@ class ComponentSystem:
         return A.copy(), b.copy()
 
     def _matrices_uncached(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
-        """M q̈ = R x + r (:meth:`_pushes`) less each sliding group's friction,
-        solved for the accelerations of the groups that move freely; a held
-        group's is 0, a speed law's group's the law's (they enter the others'
-        rows through a full M's off-diagonal entries)."""
-        M = self.linear(mode)[0]
-        R, r = self._pushes(mode)
-        A, b = np.zeros((self.size, self.size)), np.zeros(self.size)
-        self.clock.fill(A, b, mode.pieces)
-        self.first_order.fill(A, b, *self.clock.signals(mode.pieces, self.size))
-        S, s = np.zeros_like(R), np.zeros_like(r)      # the sliding groups' friction
-        for g in range(self.n):
-            if mode.motion[g] in (FORWARD, BACKWARD):
-                sign = 1.0 if mode.motion[g] == FORWARD else -1.0
-                w, k = self.capacity(mode, g)
-                S[g], s[g] = sign * w, sign * k
-            if mode.motion[g] != HELD:
-                A[self.q(g), self.v(g)] = 1.0
-        for k, (g, kappa) in self.moved.items():          # the speed law's motion
-            w, c = self.clock.derivative(mode.pieces, k, self.size)
-            A[self.v(g)], b[self.v(g)] = w / kappa, c / kappa
-        fixed = [g for g in range(self.n) if mode.motion[g] == HELD or
-                 g in {h for h, _ in self.moved.values()}]
-        free = [g for g in range(self.n) if g not in fixed]
-        if free:
-            rows = [self.v(g) for g in free]
-            known = [self.v(g) for g in fixed]
-            R, r = R[free], r[free]
-            coupling = M[np.ix_(free, fixed)]
-            if coupling.any():                # a known acceleration pushes through M
-                R = R - coupling @ A[known]
-                r = r - coupling @ b[known]
-            mass = M[np.ix_(free, free)]
-            A[rows], b[rows] = solved(mass, R, r)
-            if S.any() or s.any():
-                friction = solved(mass, S[free], s[free])
-                A[rows] -= friction[0]
-                b[rows] -= friction[1]
-        for events, _, loads in self.switching:         # the parts' own states
-            if events.rates is not None:
-                for i in range(len(loads)):
-                    events.rates(self, mode, i, A, b)
-        self.first_order.hold(A, b, mode.limits)
-        return A, b
+        """(A, b) of ``mode``: :func:`~crane_sym.components.design_arrays.mode_matrices`
+        of this design alone."""
+        A, b = mode_matrices(self.alone, mode)
+        return A[0], b[0]
 
     def guards(self, mode: Mode) -> list[Guard]:
         """Contacts that change, sliding groups that come to rest, held groups
@@ -273,53 +207,38 @@ class ComponentSystem:
         return list(self._guards(mode))
 
     def _guards_uncached(self, mode: Mode) -> tuple[Guard, ...]:
-        out = []
-        fixed = set()
-        for events, _, loads in self.switching:         # the kinds' own guards
-            for i in range(len(loads)):
-                out += [Guard(name, tuple(w), k, d)
-                        for name, w, k, d in events.guards(self, mode, i)]
-                if events.fixes is not None:
-                    fixed.add(events.fixes(self, mode, i))
-        for g, state in enumerate(mode.motion):
-            name = self.assembly.groups[g].name
-            if g in fixed:                   # held by a part, not by friction
-                continue
-            if state in (FORWARD, BACKWARD):
-                out.append(Guard(f"{name} rests", tuple(np.eye(self.size)[self.v(g)]), 0.0,
-                                 -1 if state == FORWARD else 1))
-            elif state == HELD:
-                (wn, kn), (wc, kc) = self.net_load(mode, g), self.capacity(mode, g)
-                if (wn - wc).any():        # a constant load cannot come to slide
-                    out.append(Guard(f"{name} slips +", tuple(wn - wc), kn - kc, 1))
-                if (wn + wc).any():
-                    out.append(Guard(f"{name} slips -", tuple(wn + wc), kn + kc, -1))
-        free = replace(mode, limits=tuple(0 for _ in mode.limits))
-        return tuple(out) + tuple(self.first_order.guards(mode.limits, self._matrices(free)))
+        def free() -> tuple[np.ndarray, np.ndarray]:
+            A, b = self._matrices(free_limits(mode))
+            return A[None], b[None]
+        return tuple(Guard(name, tuple(w[0]), float(k[0]), d) for name, w, k, d
+                     in mode_guards(self.alone, mode, free))
+
+    @staticmethod
+    def family(systems: Sequence["ComponentSystem"]) -> "DesignFamily | None":
+        """The designs ``systems`` as one :class:`DesignFamily` where they come
+        from one template (their equations' shared lambdified form), else None."""
+        first = systems[0].equations
+        if not all(isinstance(s, ComponentSystem) and s.equations.shared and
+                   s.equations.linear is first.linear and s.size == systems[0].size
+                   for s in systems):
+            return None
+        return DesignFamily(DesignArray.of(systems))
 
     def switch(self, mode: Mode, event: str, t: float, x: np.ndarray) -> tuple[Mode, np.ndarray]:
-        """The next mode and state after a guard or a scheduled event."""
+        """The next mode and state after a guard or a scheduled event: a
+        kind's own rule, a limit's, or the generic events of
+        :func:`~crane_sym.components.design_switches.switched`."""
         x = np.array(x)          # floats, or mpmath numbers in an exact replay: kept so
         if event in self.rules:                   # a kind's own event
             rule, i = self.rules[event]
             return rule(self, mode, i, x)
         kind, i = self.events[event]
         if kind in ("limit+", "limit-", "within", "release"):
-            free = self._matrices(replace(mode, limits=tuple(0 for _ in mode.limits)))
+            free = self._matrices(free_limits(mode))
             return replace(mode, limits=self.first_order.switch(kind, i, mode.limits, x,
                                                                 free)), x
-        if kind == "piece":
-            pieces = list(mode.pieces)
-            pieces[i] += 1
-            self.clock.reset(x, i)
-            if i in self.moved:
-                g, kappa = self.moved[i]
-                x[self.v(g)] = self.clock.rows(pieces)[i][0] / kappa
-            return replace(mode, pieces=tuple(pieces)), x
-        if kind == "rest":
-            return self.rests(mode, i, x)
-        x[self.v(i)] = 0.0                        # slides from rest
-        return mode.moving(i, FORWARD if kind == "slip+" else BACKWARD), x
+        modes, x = switched(self.alone, mode, event, x[None])     # rest, slip, piece
+        return modes[0], x[0]
 
     # --- outputs ------------------------------------------------------------------
     def contact_load(self, j: int):

@@ -9,11 +9,13 @@ batched sweep once a phase per design.
 """
 from __future__ import annotations
 
+from typing import Callable, Sequence
+
 import numpy as np
 
 from crane_sym.components.modes import Mode, memo
 
-__all__ = ["ModeNumbers"]
+__all__ = ["ModeNumbers", "mode_linear"]
 
 
 class ModeNumbers:
@@ -56,20 +58,48 @@ class ModeNumbers:
 
     def _linear_uncached(self, contacts: tuple[int, ...], on: tuple[float, ...],
                          slopes: tuple[float, ...]):
-        n, laws, states = self.system.n, len(self.system.laws), len(self.system.equations.states)
         chi, delta = self.flanks(contacts)
-        on, slopes = list(on), list(slopes)
-        zero = [0.0] * len(self.system.equations.friction)
-        M, D, K, f = self._numeric(chi, delta, on, zero, slopes)
-        E = np.zeros((n, len(zero)))
-        for k in range(len(zero)):
-            unit = list(zero)
-            unit[k] = 1.0
-            E[:, k] = self._numeric(chi, delta, on, unit, slopes)[3] - f
-        G = np.zeros((n, laws))
-        for k in range(laws):
-            G[:, k] = self._numeric(chi, delta, on, zero, slopes, np.eye(laws)[k])[3] - f
-        S = np.zeros((n, states))
-        for k in range(states):
-            S[:, k] = self._numeric(chi, delta, on, zero, slopes, (), np.eye(states)[k])[3] - f
-        return M, D, K, f, E, G, S
+        counts = (len(self.system.equations.friction), len(self.system.laws),
+                  len(self.system.equations.states))
+        return tuple(m[0] for m in mode_linear(self._one, chi, [delta], [on], [slopes], counts))
+
+    def _one(self, chi, delta, on, friction, slopes, signals=(), states=()):
+        """This design's (M, D, K, f) with a leading axis of one design."""
+        out = self._numeric(chi, list(delta[0]), list(on[0]), friction, list(slopes[0]),
+                            signals, states)
+        return tuple(m[None] for m in out)
+
+
+def mode_linear(evaluate: Callable, chi: Sequence[float], delta, on, slopes,
+                counts: tuple[int, int, int]) -> tuple[np.ndarray, ...]:
+    """(M, D, K, f, E, G, S) of k designs in one mode, a leading axis of
+    designs on each: f without friction, laws and first-order states, and
+    each column of E, G and S as f with that one input at 1 less f.
+
+    Parameters
+    ----------
+    evaluate : callable
+        (χ, δ, on, B, β, L, s) -> (M, D, K, f) of the designs.
+    chi : sequence of float
+        Each gapped link's contact, 1 or 0 (the same for every design).
+    delta, on, slopes : arrays (k, values)
+        Each design's flanks, motor switches and characteristics' slopes.
+    counts : (int, int, int)
+        The frictions B, laws L and first-order states s.
+    """
+    friction, laws, states = counts
+    zero = [0.0] * friction
+    M, D, K, f = evaluate(chi, delta, on, zero, slopes)
+    k, n = f.shape
+    E = np.zeros((k, n, friction))
+    for j in range(friction):
+        unit = list(zero)
+        unit[j] = 1.0
+        E[:, :, j] = evaluate(chi, delta, on, unit, slopes)[3] - f
+    G = np.zeros((k, n, laws))
+    for j in range(laws):
+        G[:, :, j] = evaluate(chi, delta, on, zero, slopes, np.eye(laws)[j])[3] - f
+    S = np.zeros((k, n, states))
+    for j in range(states):
+        S[:, :, j] = evaluate(chi, delta, on, zero, slopes, (), np.eye(states)[j])[3] - f
+    return M, D, K, f, E, G, S

@@ -79,14 +79,16 @@ def memo(func: Callable) -> Callable:
 
 
 def solved(M: np.ndarray, R: np.ndarray, r: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """(M⁻¹ R, M⁻¹ r): divided row by row where M is diagonal (rigid groups
-    without a coupling of several coordinates: a division is exact to the
-    last bit, where LAPACK may multiply by a reciprocal), else solved."""
-    if not np.count_nonzero(M - np.diag(np.diag(M))):
-        m = np.diag(M)
-        return R / m[:, None], r / m
-    if np.linalg.matrix_rank(M) < len(M):
+    """(M⁻¹ R, M⁻¹ r), for one design or k at once (a leading axis on each):
+    divided row by row where M is diagonal (rigid groups without a coupling
+    of several coordinates: a division is exact to the last bit, where
+    LAPACK may multiply by a reciprocal), else solved."""
+    n = M.shape[-1]
+    diagonal = np.diagonal(M, axis1=-2, axis2=-1)
+    if not np.count_nonzero(M[..., ~np.eye(n, dtype=bool)]):
+        return R / diagonal[..., None], r / diagonal
+    if np.any(np.linalg.matrix_rank(M) < n):
         raise ComponentError("the mass matrix of the moving groups is singular: a coupling "
                              "leaves a coordinate without inertia")
-    both = np.linalg.solve(M, np.hstack([R, r[:, None]]))
-    return both[:, :-1], both[:, -1]
+    both = np.linalg.solve(M, np.concatenate([R, r[..., None]], axis=-1))
+    return both[..., :-1], both[..., -1]

@@ -7,7 +7,10 @@ describes each mode by Python code per design. :class:`RunFamily` asks each
 design's system for its matrices, guards and output, stacks them for the
 designs in a mode, and calls each design's switching rule on the designs
 that fired an event; the closed forms, the event search and the extrema are
-the batched solver's. The Python calls cost per design and phase what a
+the batched solver's. Where the runs' systems know themselves as one family
+(their class's ``family(systems)``: designs of one component template,
+:class:`crane_sym.components.design_arrays.DesignFamily`), a mode's matrices
+and guards come from it for all the designs in the mode at once. The Python calls cost per design and phase what a
 model written for arrays (a paper's own family of designs)
 saves; the closed forms and the search, where the time of a run goes, are
 shared. The designs' guards in a mode must agree in number, names and
@@ -31,6 +34,9 @@ class RunFamily:
     def __init__(self, runs: Sequence[HybridRun]) -> None:
         self.runs = list(runs)
         self.n = len(np.asarray(self.runs[0].x0))
+        family = getattr(self.runs[0].system, "family", None)
+        #: The systems as one family, or None (each asked in turn).
+        self.family = family([r.system for r in self.runs]) if family else None
         self._modes: list[Hashable] = []
         self._codes: dict[Hashable, int] = {}
 
@@ -47,12 +53,17 @@ class RunFamily:
 
     def matrices(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Each design's (A, b) in the mode, stacked."""
+        if self.family is not None:
+            return self.family.matrices(self._modes[mode], index)
         pairs = [self.runs[i].system.matrices(self._modes[mode]) for i in index]
         return (np.array([np.asarray(A, float) for A, _ in pairs]),
                 np.array([np.asarray(b, float) for _, b in pairs]))
 
     def guards(self, mode: int, index: np.ndarray) -> list[BatchedGuard]:
         """Each design's guards in the mode, stacked guard by guard."""
+        if self.family is not None:
+            return [BatchedGuard(name, w, k, d)
+                    for name, w, k, d in self.family.guards(self._modes[mode], index)]
         lists = [self.runs[i].system.guards(self._modes[mode]) for i in index]
         first = lists[0]
         if any([(g.name, g.direction) for g in gs] != [(g.name, g.direction) for g in first]
@@ -64,8 +75,15 @@ class RunFamily:
 
     def switch(self, mode: int, event: str, index: np.ndarray, t: np.ndarray,
                x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Each design's own rule, on the designs that fired ``event``."""
-        codes, out = np.empty(index.size, dtype=np.int64), np.empty_like(x)
+        """Each design's own rule, on the designs that fired ``event`` (the
+        family's, for all of them at once, where it has one)."""
+        codes = np.empty(index.size, dtype=np.int64)
+        both = None if self.family is None else \
+            self.family.switch(self._modes[mode], event, index, x)
+        if both is not None:
+            codes[:] = [self.code(new) for new in both[0]]
+            return codes, both[1]
+        out = np.empty_like(x)
         for k, i in enumerate(index):
             new, out[k] = self.runs[i].system.switch(self._modes[mode], event, float(t[k]),
                                                      x[k].copy())

@@ -1,0 +1,350 @@
+"""Designs of one component model as arrays (:class:`DesignArray`): a mode's
+M, D, K, f, its x' = A x + b and its guards for k designs at once, a leading
+axis of designs on every array.
+
+Designs of one template share Lagrange's equations (``Model.with_parts``,
+``Equations.for_design``); they differ in their parts' values. The numbers a
+mode needs are then one call of the template's lambdified equations on the
+designs' parameter values stacked (:func:`template_numbers`), and (A, b) is
+solved for all of them together (:func:`mode_matrices`). One design is the
+case k = 1: :class:`~crane_sym.components.hybrid.ComponentSystem` asks this
+module for its own matrices and guards, so a design solved alone and in a
+batch take one route. What a kind declares in Python for one part
+(``Events.friction_capacity``, ``rates``, ``value``, ``guards``) is asked of each design
+in turn (:meth:`DesignArray.each`).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable, Sequence
+
+import numpy as np
+import sympy as sp
+
+from crane_sym.components.first_order import fill_rates, hold_limits, limit_guards
+from crane_sym.components.mode_numbers import mode_linear
+from crane_sym.components.modes import BACKWARD, FORWARD, HELD, Mode, solved
+
+__all__ = ["DesignArray", "free_limits", "mode_guards", "mode_matrices", "net_load",
+           "pushes", "template_numbers"]
+
+#: The flattened lambdified form of each template's (M, D, K, f), by the
+#: identity of its ``Equations.linear`` (kept with it, so the key stays its own).
+_FLAT: dict[int, tuple[Any, tuple[sp.Symbol, ...], Callable]] = {}
+
+
+def _flat_form(equations) -> tuple[tuple[sp.Symbol, ...], Callable]:
+    """(parameters, fn): fn(χ, δ, on, B, β, L, s, parameter values) -> the
+    entries of M, D, K and f in a flat list, each a number or an array of
+    designs (SymPy prints a constant entry as a number: broadcast by the caller)."""
+    linear = equations.linear
+    kept = _FLAT.get(id(linear))
+    if kept is None or kept[0] is not linear:
+        parameters = tuple(sorted({*equations.values, *equations.motor_loads}, key=str))
+        entries = [e for m in linear for e in m]
+        arguments = [list(equations.contact), list(equations.flank), list(equations.switches),
+                     list(equations.friction), list(equations.slopes), list(equations.signals),
+                     list(equations.states), list(parameters)]
+        kept = _FLAT[id(linear)] = (linear, parameters, sp.lambdify(arguments, entries, "numpy"))
+    return kept[1], kept[2]
+
+
+def template_numbers(systems: Sequence) -> Callable:
+    """The (M, D, K, f) of ``systems`` (designs of one template) as one
+    evaluation: (χ, δ, on, B, β, L, s) -> arrays with a leading axis of
+    designs; δ, on and β arrays of (designs, values)."""
+    equations = systems[0].equations
+    parameters, fn = _flat_form(equations)
+    given = np.array([[{**s.equations.values, **s.extra}.get(p, np.nan) for p in parameters]
+                      for s in systems], dtype=float)
+    return _evaluator(fn, given, equations)
+
+
+def _evaluator(fn: Callable, given: np.ndarray, equations) -> Callable:
+    linear = equations.linear
+    shapes = [m.shape for m in linear]
+    laws, states_ = len(equations.signals), len(equations.states)
+
+    def evaluate(chi, delta, on, friction, slopes, signals=(), states=(), rows=None):
+        signals = list(signals) or [0.0] * laws
+        states = list(states) or [0.0] * states_
+        values = given if rows is None else given[rows]
+        k = len(values)
+        columns = [values[:, j] for j in range(values.shape[1])]
+        flat = fn(list(chi), list(np.asarray(delta, float).T), list(np.asarray(on, float).T),
+                  list(friction), list(np.asarray(slopes, float).T), list(signals),
+                  list(states), columns)
+        out, at = [], 0
+        for rows_, cols in shapes:
+            block = np.empty((k, rows_ * cols))
+            for j in range(rows_ * cols):
+                block[:, j] = flat[at + j]
+            at += rows_ * cols
+            out.append(block.reshape(k, rows_, cols))
+        return out[0], out[1], out[2], out[3].reshape(k, -1)
+    return evaluate
+
+
+def _padded(pieces: Sequence[Sequence[tuple[float, tuple[float, ...]]]], width: int
+            ) -> np.ndarray:
+    """Each design's pieces of a law, (designs, pieces, ``width``): a piece's
+    coefficients of τ^j, zeros past its degree (they add nothing)."""
+    out = np.zeros((len(pieces), len(pieces[0]), width))
+    for d, design in enumerate(pieces):
+        for p, (_, row) in enumerate(design):
+            out[d, p, :len(row)] = row
+    return out
+
+
+@dataclass(frozen=True, eq=False)
+class DesignArray:
+    """k designs of one component model (their ``ComponentSystem``s), with
+    what differs between them stacked once: their parameter values (through
+    ``numbers``), flanks, laws' pieces, first-order rates and bounds, and the
+    κ of each group a speed law moves. :meth:`take` keeps some of the designs."""
+
+    systems: tuple
+    numbers: Callable                       # (mode, array) -> (M, D, K, f, E, G, S)
+    flanks: np.ndarray                      # (k, gapped links, 2): lower, upper
+    pieces: tuple[np.ndarray, ...]          # per law: (k, pieces, coefficients)
+    rates: tuple[np.ndarray, ...]           # (R_q, R_v, R_s, R_L, r_0), each (k, ...)
+    bounds: np.ndarray                      # (k, limits)
+    kappas: np.ndarray                      # (k, speed laws)
+    rows: np.ndarray = field(default=None)  # the designs' rows in the whole array
+
+    @classmethod
+    def of(cls, systems: Sequence, shared: bool = True) -> "DesignArray":
+        """The designs ``systems``; ``shared``: their numbers from the
+        template's lambdified form in one call, else (one system alone) from
+        its own :class:`~crane_sym.components.mode_numbers.ModeNumbers`."""
+        systems = tuple(systems)
+        first = systems[0]
+        if shared:
+            evaluate = template_numbers(systems)
+            counts = (len(first.equations.friction), len(first.laws),
+                      len(first.equations.states))
+
+            def numbers(mode: Mode, array: "DesignArray"):
+                chi, delta = array.contact(mode.contacts)
+                on, slopes = array.inputs(mode)
+                return mode_linear(lambda *a, **k: evaluate(*a, **k, rows=array.rows),
+                                   chi, delta, on, slopes, counts)
+        else:
+            def numbers(mode: Mode, array: "DesignArray"):
+                return tuple(m[None] for m in first.linear(mode))
+        flanks = np.array([[l.part.flanks for l in s.backlash] for s in systems],
+                          dtype=float).reshape(len(systems), len(first.backlash), 2)
+        pieces = tuple(_padded([s.clock.pieces[m] for s in systems], law.degree + 1)
+                       for m, law in enumerate(first.laws))
+        rates = tuple(np.array([s.first_order.rates[j] for s in systems])
+                      for j in range(len(first.first_order.rates)))
+        bounds = np.array([[l.bound for l in s.limits] for s in systems],
+                          dtype=float).reshape(len(systems), -1)
+        kappas = np.array([[kappa for _, kappa in s.moved.values()] for s in systems],
+                          dtype=float).reshape(len(systems), -1)
+        return cls(systems, numbers, flanks, pieces, rates, bounds, kappas,
+                   np.arange(len(systems)))
+
+    @property
+    def k(self) -> int:
+        return len(self.systems)
+
+    @property
+    def model(self):
+        """The first design's system: what the designs share (sizes, places, structure)."""
+        return self.systems[0]
+
+    def take(self, index: np.ndarray) -> "DesignArray":
+        """The designs at ``index`` (positions in this array)."""
+        return replace(self, systems=tuple(self.systems[i] for i in index),
+                       flanks=self.flanks[index], pieces=tuple(p[index] for p in self.pieces),
+                       rates=tuple(r[index] for r in self.rates), bounds=self.bounds[index],
+                       kappas=self.kappas[index], rows=self.rows[index])
+
+    def each(self, ask: Callable[[Any], Any]) -> list:
+        """``ask(system)`` of each design in turn: a kind's hook in Python."""
+        return [ask(s) for s in self.systems]
+
+    def linear(self, mode: Mode):
+        """(M, D, K, f, E, G, S) of ``mode``, a leading axis of designs."""
+        return self.numbers(mode, self)
+
+    def contact(self, contacts: tuple[int, ...]) -> tuple[list[float], np.ndarray]:
+        """(χ, δ): each gapped link in contact (1) or not (0), the flank it is on."""
+        chi = [0.0 if c == 0 else 1.0 for c in contacts]
+        delta = np.zeros((self.k, len(contacts)))
+        for j, c in enumerate(contacts):
+            if c:
+                delta[:, j] = self.flanks[:, j, 1 if c > 0 else 0]
+        return chi, delta
+
+    def inputs(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
+        """(switches, slopes), (k, values) each: the kinds' ``Events.value`` per design."""
+        by_role: dict[str, list] = {"switches": [], "slopes": []}
+        for events, _, parts in self.model.switching:
+            if events.role:
+                for i in range(len(parts)):
+                    by_role[events.role].append(
+                        self.each(lambda s: events.value(s, mode, i)))
+        return tuple(np.array(by_role[r], dtype=float).T.reshape(self.k, -1)
+                     for r in ("switches", "slopes"))
+
+    def signals(self, steps: Sequence[int]) -> tuple[np.ndarray, np.ndarray]:
+        """(W, c): law m's value W[:, m]·x + c[:, m] on the pieces ``steps``."""
+        clock, size = self.model.clock, self.model.size
+        W, c = np.zeros((self.k, len(self.pieces), size)), np.zeros((self.k, len(self.pieces)))
+        for m, k in enumerate(steps):
+            row = self.pieces[m][:, min(k, self.pieces[m].shape[1] - 1)]
+            c[:, m] = row[:, 0]
+            for j in range(1, row.shape[1]):
+                W[:, m, clock.offsets[m] + j - 1] = row[:, j]
+        return W, c
+
+    def derivative(self, steps: Sequence[int], m: int) -> tuple[np.ndarray, np.ndarray]:
+        """(w, c): the rate of law m on its piece, dp/dτ = w·x + c, per design."""
+        row = self.pieces[m][:, min(steps[m], self.pieces[m].shape[1] - 1)]
+        w = np.zeros((self.k, self.model.size))
+        for j in range(2, row.shape[1]):
+            w[:, self.model.clock.offsets[m] + j - 2] = j * row[:, j]
+        return w, (row[:, 1] if row.shape[1] > 1 else np.zeros(self.k))
+
+    def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, np.ndarray]:
+        """What holds group g by friction (the kinds' ``friction_capacity``), as
+        w·x + k per design."""
+        w, k = np.zeros((self.k, self.model.size)), np.zeros(self.k)
+        for events, _, loads in self.model.switching:
+            if events.friction_capacity is None:
+                continue
+            for i in range(len(loads)):
+                grips = self.each(lambda s: events.friction_capacity(s, mode, i))
+                for d, held in enumerate(grips):
+                    if held is not None and held[0] == g:
+                        if held[1] is None:
+                            k[d] += held[2]
+                        else:
+                            w[d, held[1]] += held[2]
+        return w, k
+
+
+def pushes(array: DesignArray, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
+    """(R, r): the generalized forces on the groups but the brakes' friction,
+    R x + r per design: the right-hand side of M q̈ = R x + r."""
+    _, D, K, f, _, G, S = array.linear(mode)
+    n, first = array.model.n, array.model.first
+    W, c = array.signals(mode.pieces)
+    R = G @ W
+    R[:, :, 0:2 * n:2] -= K
+    R[:, :, 1:2 * n:2] -= D
+    R[:, :, first:] += S
+    return R, f + (G @ c[:, :, None])[:, :, 0]
+
+
+def net_load(array: DesignArray, mode: Mode, g: int) -> tuple[np.ndarray, np.ndarray]:
+    """The generalized load on group g but its brakes' friction, w·x + k per
+    design; a full M couples the others' accelerations in."""
+    system = array.model
+    M = array.linear(mode)[0]
+    R, r = pushes(array, mode)
+    w, k = R[:, g].copy(), r[:, g].copy()
+    coupled = [j for j in range(system.n) if j != g and M[:, g, j].any()]
+    if coupled:
+        A, b = mode_matrices(array, mode)
+        rows = [system.v(j) for j in coupled]
+        m = M[:, g, coupled]
+        w -= (m[:, None, :] @ A[:, rows])[:, 0]
+        k -= (m * b[:, rows]).sum(axis=1)
+    return w, k
+
+
+def free_limits(mode: Mode) -> Mode:
+    """``mode`` with every first-order limit free."""
+    return replace(mode, limits=tuple(0 for _ in mode.limits))
+
+
+def mode_matrices(array: DesignArray, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
+    """(A, b) of ``mode`` per design, (k, size, size) and (k, size): M q̈ =
+    R x + r less each sliding group's friction, solved for the groups that
+    move freely; a held group's acceleration is 0, a speed law's group's the
+    law's (they enter the others' rows through a full M's off-diagonal
+    entries); then the clocks', the parts' own and the first-order rows."""
+    system = array.model
+    n, size, k = system.n, system.size, array.k
+    M = array.linear(mode)[0]
+    R, r = pushes(array, mode)
+    A0, b0 = np.zeros((size, size)), np.zeros(size)
+    system.clock.fill(A0, b0, mode.pieces)          # the clocks' rows: the same for all
+    A, b = np.repeat(A0[None], k, axis=0), np.repeat(b0[None], k, axis=0)
+    W, c = array.signals(mode.pieces)
+    fill_rates(array.rates, n, system.first, A, b, W, c)
+    S, s = np.zeros_like(R), np.zeros_like(r)      # the sliding groups' friction
+    for g in range(n):
+        if mode.motion[g] in (FORWARD, BACKWARD):
+            sign = 1.0 if mode.motion[g] == FORWARD else -1.0
+            w, h = array.capacity(mode, g)
+            S[:, g], s[:, g] = sign * w, sign * h
+        if mode.motion[g] != HELD:
+            A[:, system.q(g), system.v(g)] = 1.0
+    for m, (law, (g, _)) in enumerate(system.moved.items()):      # a speed law's motion
+        w, h = array.derivative(mode.pieces, law)
+        A[:, system.v(g)], b[:, system.v(g)] = w / array.kappas[:, m, None], h / array.kappas[:, m]
+    moved = {g for g, _ in system.moved.values()}
+    fixed = [g for g in range(n) if mode.motion[g] == HELD or g in moved]
+    free = [g for g in range(n) if g not in fixed]
+    if free:
+        rows, known = [system.v(g) for g in free], [system.v(g) for g in fixed]
+        R, r = R[:, free], r[:, free]
+        coupling = M[:, free][:, :, fixed]
+        if coupling.any():                  # a known acceleration pushes through M
+            R = R - coupling @ A[:, known]
+            r = r - (coupling @ b[:, known, None])[:, :, 0]
+        mass = M[:, free][:, :, free]
+        A[:, rows], b[:, rows] = solved(mass, R, r)
+        if S.any() or s.any():
+            friction = solved(mass, S[:, free], s[:, free])
+            A[:, rows] -= friction[0]
+            b[:, rows] -= friction[1]
+    for events, _, loads in system.switching:       # the parts' own states
+        if events.rates is not None:
+            for i in range(len(loads)):
+                for d, one in enumerate(array.systems):
+                    events.rates(one, mode, i, A[d], b[d])
+    hold_limits(system.limits, A, b, mode.limits)
+    return A, b
+
+
+def mode_guards(array: DesignArray, mode: Mode,
+                free: Callable[[], tuple[np.ndarray, np.ndarray]]
+                ) -> list[tuple[str, np.ndarray, np.ndarray, int]]:
+    """The guards of ``mode`` per design, (event, w (k, size), k (k,),
+    direction) each: the kinds' own (asked of each design), sliding groups
+    coming to rest, held groups slipping, the first-order limits (``free()``:
+    (A, b) of the mode with every limit free). ValueError where the designs'
+    kinds name different guards."""
+    system, out, fixed = array.model, [], set()
+    for events, _, loads in system.switching:        # the kinds' own guards
+        for i in range(len(loads)):
+            lists = array.each(lambda s: tuple(events.guards(s, mode, i)))
+            if any([(g[0], g[3]) for g in gs] != [(g[0], g[3]) for g in lists[0]]
+                   for gs in lists):
+                raise ValueError(f"designs differ in the guards of mode {mode!r}")
+            out += [(name, np.array([np.asarray(gs[j][1], float) for gs in lists]),
+                     np.array([float(gs[j][2]) for gs in lists]), d)
+                    for j, (name, _, _, d) in enumerate(lists[0])]
+            if events.fixes is not None:
+                fixed.add(events.fixes(system, mode, i))
+    unit = np.eye(system.size)
+    for g, state in enumerate(mode.motion):
+        name = system.assembly.groups[g].name
+        if g in fixed:                       # held by a part, not by friction
+            continue
+        if state in (FORWARD, BACKWARD):
+            out.append((f"{name} rests", np.repeat(unit[None, system.v(g)], array.k, axis=0),
+                        np.zeros(array.k), -1 if state == FORWARD else 1))
+        elif state == HELD:
+            (wn, kn), (wc, kc) = net_load(array, mode, g), array.capacity(mode, g)
+            if (wn - wc).any():             # a constant load cannot come to slide
+                out.append((f"{name} slips +", wn - wc, kn - kc, 1))
+            if (wn + wc).any():
+                out.append((f"{name} slips -", wn + wc, kn + kc, -1))
+    return out + limit_guards(system.limits, array.bounds, mode.limits, system.size, free)
+

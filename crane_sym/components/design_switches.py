@@ -1,0 +1,54 @@
+"""The generic events of a component model switched for k designs at once
+(:func:`switched`): a group coming to rest (held, or sliding on the way its
+load pushes), a held group slipping, a law's next piece. The new state is a
+simple function of x, so one pass over the designs' arrays does it; a
+kind's own rule (``Events.rules``) and a first-order limit's switch are
+Python per design, and left to the caller (None).
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+import numpy as np
+
+from crane_sym.components.design_arrays import DesignArray, net_load
+from crane_sym.components.modes import BACKWARD, FORWARD, HELD, Mode
+
+__all__ = ["settled", "switched"]
+
+
+def settled(array: DesignArray, mode: Mode, g: int, x: np.ndarray) -> list[str]:
+    """How group g moves from rest in each design's state x (k, size): held
+    while its load is within what holds it, else sliding the way the load pushes."""
+    held = mode.moving(g, HELD)
+    (wn, kn), (wc, kc) = net_load(array, held, g), array.capacity(held, g)
+    net, cap = (wn * x).sum(axis=1) + kn, (wc * x).sum(axis=1) + kc
+    return [HELD if abs(float(a)) <= float(c) else FORWARD if float(a) > 0 else BACKWARD
+            for a, c in zip(net, cap)]
+
+
+def switched(array: DesignArray, mode: Mode, event: str, x: np.ndarray
+             ) -> tuple[list[Mode], np.ndarray] | None:
+    """Each design's next mode and its state after ``event`` (x: (k, size),
+    changed in place: floats, or mpmath numbers in an exact replay), or None
+    where the event is a kind's own or a limit's (switched per design)."""
+    system = array.model
+    if event in system.rules or system.events[event][0] not in ("rest", "slip+", "slip-",
+                                                               "piece"):
+        return None
+    kind, i = system.events[event]
+    if kind == "piece":
+        pieces = list(mode.pieces)
+        pieces[i] += 1
+        start = system.clock.offsets[i]
+        x[:, start:start + system.clock.laws[i].degree] = 0.0
+        if i in system.moved:          # a speed law sets its group's speed to the new piece's
+            g = system.moved[i][0]
+            row = array.pieces[i][:, min(pieces[i], array.pieces[i].shape[1] - 1)]
+            x[:, system.v(g)] = row[:, 0] / array.kappas[:, list(system.moved).index(i)]
+        return [replace(mode, pieces=tuple(pieces))] * array.k, x
+    x[:, system.v(i)] = 0.0
+    if kind == "rest":
+        kept: dict[str, Mode] = {}
+        return [kept.setdefault(m, mode.moving(i, m)) for m in settled(array, mode, i, x)], x
+    return [mode.moving(i, FORWARD if kind == "slip+" else BACKWARD)] * array.k, x

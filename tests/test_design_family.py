@@ -1,0 +1,91 @@
+"""Designs of one component template solved as one family
+(:mod:`crane_sym.components.design_family`: a mode's matrices, guards and
+generic switches for all its designs at once) against the same designs asked
+one by one (each design's own ``ComponentSystem``, the route before the
+family), on a drive train with backlash, a brake that slips and sticks, a
+law with pieces and a DC motor whose controller hits its torque limit; the
+designs' runs take different sequences of modes."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from crane_sym.components import design_family
+from crane_sym.components.designs import designs
+from crane_sym.components.hybrid import ComponentSystem
+from crane_sym.mechanics.phase_table import HybridRun
+
+EXAMPLE = Path(__file__).resolve().parents[1] / "examples" / "drive_trains" / "dc_hoist_pi.toml"
+
+#: dc_hoist_pi with a coupling with backlash before its gearbox, a holding
+#: brake engaged at 1.5 s on the drum, and a speed reference that ramps up,
+#: holds and ramps down (three pieces): the controller hits its limit, the
+#: brake stops the drum, the drum slips again and the backlash opens.
+CHANGES = (
+    ('name = "dc_hoist_pi"', 'name = "family_check"'),
+    ('[[gear]]\nname = "gearbox"\ninput = "motor"',
+     '[[inertia]]\nname = "shaft"\ninertia = "0 kg*m^2"\n\n'
+     '[[elastic]]\nname = "coupling"\nbetween = ["motor", "shaft"]\n'
+     'stiffness = "2e4 N*m/rad"\ndamping = "20 N*m*s/rad"\nbacklash = "2 deg"\n\n'
+     '[[brake]]\nname = "holding"\nbody = "drum"\ntorque = "25 kN*m"\ndelay = "1.5 s"\n\n'
+     '[[gear]]\nname = "gearbox"\ninput = "shaft"'),
+    ('breakpoints = [0.0, 1.0, 100.0]\ncoefficients = [[0.0, 100.0], [100.0]]',
+     'breakpoints = [0.0, 1.0, 1.3, 100.0]\n'
+     'coefficients = [[0.0, 100.0], [100.0], [100.0, -200.0]]'),
+)
+#: Brake torques [N m] either side of what holds the drum, controller limits
+#: [N m] either side of what the start-up asks.
+GRID = {"holding.torque": np.array([8e3, 18e3, 25e3, 40e3])[:, None],
+        "speed_loop.limit": np.array([700.0, 1000.0, 3000.0])[None, :]}
+
+
+@pytest.fixture(scope="module")
+def found(tmp_path_factory):
+    text = EXAMPLE.read_text()
+    for old, new in CHANGES:
+        assert old in text
+        text = text.replace(old, new)
+    path = tmp_path_factory.mktemp("family") / "family_check.toml"
+    path.write_text(text)
+    return designs(str(path))
+
+
+def _sequences(found) -> set[tuple[str, ...]]:
+    """The events of each design's run, solved alone."""
+    grid = dict(zip(GRID, np.broadcast_arrays(*GRID.values())))
+    out = set()
+    for at in np.ndindex(4, 3):
+        model = found.design({name: float(v[at]) for name, v in grid.items()})
+        mode, x0, system = found.start(model)
+        run = HybridRun(system, mode, x0, found.duration, model.schedule(),
+                        system.link_load(0))
+        out.add(tuple(event for _, event, _ in run.solve().events))
+    return out
+
+
+@pytest.mark.parametrize("output", ["coupling.peak", "rope.peak", "armature.current.peak"])
+def test_the_family_equals_the_designs_asked_one_by_one(found, monkeypatch, output):
+    asked = []
+    matrices = design_family.DesignFamily.matrices
+
+    def counted(self, mode, index):
+        asked.append(len(index))
+        return matrices(self, mode, index)
+    monkeypatch.setattr(design_family.DesignFamily, "matrices", counted)
+    together = found.largest(output, GRID)
+    assert asked and max(asked) > 1             # the family answered for several at once
+    monkeypatch.setattr(ComponentSystem, "family", staticmethod(lambda systems: None))
+    one_by_one = found.largest(output, GRID)
+    assert together.shape == (4, 3) and np.all(np.isfinite(together))
+    np.testing.assert_allclose(together, one_by_one, rtol=1e-12, atol=0.0)
+
+
+def test_the_designs_take_different_sequences_of_modes(found):
+    events = _sequences(found)
+    assert len(events) >= 3
+    every = {e for run in events for e in run}
+    for needed in ("coupling opens", "drum rests", "drum slips -", "speed_loop limited +",
+                   "speed_loop next piece"):
+        assert needed in every, needed
