@@ -2,7 +2,8 @@
 alternatives, the targets table, piecewise-linear runs, sampled loads,
 (with ``--audit``) the main job's time against its targets, (with
 ``--fast-paths``) the fast-path targets alone, (with ``--parallel``) both
-cores against a roofline, (with ``--sweep``)
+cores against a roofline, (with ``--designs``) section (g) of the sweeps alone:
+models from components at 10⁴ designs a block, (with ``--sweep``)
 design sweeps and (with ``--components FILE``) component
 models from the file to the run.
 
@@ -101,7 +102,7 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
     check_options(args)                  # so does an option out of its range
     # the sections (--audit, --fast-paths, --sweep, --components): without ids, only those
     sections_only = not args.ids and any(getattr(args, name, None) for name in (
-        "audit", "fast_paths", "parallel", "sweep", "components"))
+        "audit", "fast_paths", "parallel", "designs", "sweep", "components"))
     show = args.format == "table"
     if getattr(args, "audit", False):
         with say.task("the main job: audit and generate --check"):
@@ -116,6 +117,11 @@ def _bench(args: argparse.Namespace, out_dir: Path, keep: bool) -> int:
         with say.task("both cores: a batched sweep on 1 and 2 threads, the roofline"):
             _wrote([_write_section(parallel_section(), out_dir / "bench_parallel.md", show)],
                    keep and show)
+    if getattr(args, "designs", False):
+        from crane_sym.bench import design_targets
+        with say.task("(g) 10⁴ designs of a model from components, one block each"):
+            text = "\n".join(design_targets.markdown_rows(design_targets.run_rows())) + "\n"
+            _wrote([_write_section(text, out_dir / "bench_designs.md", show)], keep and show)
     if args.sweep:
         output_files.out_folder(out_dir)
         with say.task("design sweeps against per-design integration"):
