@@ -158,7 +158,13 @@ def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
 def run_rows(root: Path | None = None) -> list[dict[str, Any]]:
     """Every row of section (g): the papers' cases with a ``block_target``,
     then :data:`FILE_CASES` (relative to ``root``, default the folder above
-    the package: a checkout's examples)."""
+    the package: a checkout's examples).
+
+    Parameters
+    ----------
+    root : Path, optional
+        The folder the files of :data:`FILE_CASES` are relative to.
+    """
     root = root or Path(__file__).resolve().parents[2]
     say, rows = progress.current(), []
     for paper, case in batched_cases():
@@ -172,7 +178,14 @@ def run_rows(root: Path | None = None) -> list[dict[str, Any]]:
 
 
 def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
-    """The section of ``bench_sweep.md`` for :func:`run_rows`."""
+    """The section of ``bench_sweep.md`` (and of ``bench_designs.md``) for
+    :func:`run_rows`.
+
+    Parameters
+    ----------
+    rows : list of dict
+        The rows :func:`run_rows` measured.
+    """
     if not rows:
         return []
     lines = ["## (g) 10⁴ designs of a model from components, one block (issue 39)", "",
