@@ -191,22 +191,16 @@ class DesignArray:
 
     def signals(self, steps: Sequence[int]) -> tuple[np.ndarray, np.ndarray]:
         """(W, c): law m's value W[:, m]·x + c[:, m] on the pieces ``steps``."""
-        clock, size = self.model.clock, self.model.size
-        W, c = np.zeros((self.k, len(self.pieces), size)), np.zeros((self.k, len(self.pieces)))
-        for m, k in enumerate(steps):
-            row = self.pieces[m][:, min(k, self.pieces[m].shape[1] - 1)]
-            c[:, m] = row[:, 0]
-            for j in range(1, row.shape[1]):
-                W[:, m, clock.offsets[m] + j - 1] = row[:, j]
-        return W, c
+        rows = [self._row(m, k) for m, k in enumerate(steps)]
+        return self.model.clock.signals_of(rows, self.model.size, (self.k,))
 
     def derivative(self, steps: Sequence[int], m: int) -> tuple[np.ndarray, np.ndarray]:
         """(w, c): the rate of law m on its piece, dp/dτ = w·x + c, per design."""
-        row = self.pieces[m][:, min(steps[m], self.pieces[m].shape[1] - 1)]
-        w = np.zeros((self.k, self.model.size))
-        for j in range(2, row.shape[1]):
-            w[:, self.model.clock.offsets[m] + j - 2] = j * row[:, j]
-        return w, (row[:, 1] if row.shape[1] > 1 else np.zeros(self.k))
+        return self.model.clock.derivative_of(self._row(m, steps[m]), m, self.model.size)
+
+    def _row(self, m: int, step: int) -> np.ndarray:
+        """Law m's coefficients on piece ``step`` (its last past the end), per design."""
+        return self.pieces[m][:, min(step, self.pieces[m].shape[1] - 1)]
 
     def capacity(self, mode: Mode, g: int) -> tuple[np.ndarray, np.ndarray]:
         """What holds group g by friction (the kinds' ``friction_capacity``), as

@@ -156,20 +156,35 @@ class LawClock:
 
     def signals(self, steps: Sequence[int], size: int) -> tuple[np.ndarray, np.ndarray]:
         """(W, c): law k's value is W[k]·x + c[k] on the current pieces."""
-        W, c = np.zeros((len(self.laws), size)), np.zeros(len(self.laws))
-        for k, row in enumerate(self.rows(steps)):
-            c[k] = row[0]
-            for j, coef in enumerate(row[1:], 1):
-                W[k, self.offsets[k] + j - 1] = coef
+        return self.signals_of(self.rows(steps), size)
+
+    def signals_of(self, rows: Sequence, size: int,
+                   batch: tuple[int, ...] = ()) -> tuple[np.ndarray, np.ndarray]:
+        """(W, c) of :meth:`signals` from each law's row of coefficients, a
+        row of shape ``batch + (degree + 1,)``: one design's, or ``batch`` =
+        (k,) designs' at once (``components.design_arrays``)."""
+        W, c = np.zeros(batch + (len(self.laws), size)), np.zeros(batch + (len(self.laws),))
+        for k, row in enumerate(rows):
+            row = np.asarray(row, dtype=float)
+            c[..., k] = row[..., 0]
+            for j in range(1, row.shape[-1]):
+                W[..., k, self.offsets[k] + j - 1] = row[..., j]
         return W, c
 
     def derivative(self, steps: Sequence[int], k: int, size: int) -> tuple[np.ndarray, float]:
         """(w, c): the rate of law k on its current piece, dp/dτ = w·x + c
         (:math:`c_{k1} + \\sum_{j \\ge 2} j c_{kj} w_{j-1}`)."""
-        row, w = self.rows(steps)[k], np.zeros(size)
-        for j in range(2, len(row)):
-            w[self.offsets[k] + j - 2] = j * row[j]
-        return w, (row[1] if len(row) > 1 else 0.0)
+        w, c = self.derivative_of(self.rows(steps)[k], k, size)
+        return w, float(c)
+
+    def derivative_of(self, row, k: int, size: int) -> tuple[np.ndarray, np.ndarray]:
+        """(w, c) of :meth:`derivative` from law k's row of coefficients, of
+        shape ``batch + (degree + 1,)`` (one design's, or k designs' at once)."""
+        row = np.asarray(row, dtype=float)
+        w = np.zeros(row.shape[:-1] + (size,))
+        for j in range(2, row.shape[-1]):
+            w[..., self.offsets[k] + j - 2] = j * row[..., j]
+        return w, (row[..., 1] if row.shape[-1] > 1 else np.zeros(row.shape[:-1]))
 
     def fill(self, A: np.ndarray, b: np.ndarray, steps: Sequence[int]) -> None:
         """The clocks' rows of x' = A x + b: w_1' = 1, w_j' = j w_{j-1}, while
