@@ -50,10 +50,12 @@ def _group(system, i: int) -> int:
     return system.place(system.of_kind["ratchet"][i])[0]
 
 
-def _guards(system, mode, i: int) -> tuple:
-    """Free, its body moving forwards: caught where the speed falls through 0."""
+def _guards(designs, mode, i: int) -> tuple:
+    """Free, its body moving forwards: caught where the speed falls through 0
+    (the same guard for every design of ``designs``)."""
     if _caught(mode, i):
         return ()
+    system = designs.model
     w = np.zeros(system.size)
     w[system.v(_group(system, i))] = 1.0
     name = system.of_kind["ratchet"][i].part.name

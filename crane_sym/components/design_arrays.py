@@ -9,14 +9,16 @@ designs' parameter values stacked (:func:`template_numbers`), and (A, b) is
 solved for all of them together (:func:`mode_matrices`). One design is the
 case k = 1: :class:`~crane_sym.components.hybrid.ComponentSystem` asks this
 module for its own matrices and guards, so a design solved alone and in a
-batch take one route. What a kind declares in Python for one part
-(``Events.friction_capacity``, ``rates``, ``value``, ``guards``) is asked of each design
-in turn (:meth:`DesignArray.each`).
+batch take one route. The kinds' hooks (``Events.friction_capacity``,
+``rates``, ``value``, ``guards``) answer for the whole array: they read the
+structure from :attr:`DesignArray.model` and each design's numbers through
+:meth:`DesignArray.gather` (asked of the designs once, then sliced as the
+solver takes designs apart), so no hook runs once per design and phase.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Any, Callable, Sequence
+from typing import Any, Callable, Hashable, Sequence
 
 import numpy as np
 import sympy as sp
@@ -111,6 +113,9 @@ class DesignArray:
     bounds: np.ndarray                      # (k, limits)
     kappas: np.ndarray                      # (k, speed laws)
     rows: np.ndarray = field(default=None)  # the designs' rows in the whole array
+    #: What :meth:`gather` asked of the whole array's designs, by key (shared by
+    #: the arrays :meth:`take` makes); "systems": the whole array's designs.
+    gathered: dict = field(default_factory=dict, repr=False)
 
     @classmethod
     def of(cls, systems: Sequence, shared: bool = True) -> "DesignArray":
@@ -143,7 +148,7 @@ class DesignArray:
         kappas = np.array([[kappa for _, kappa in s.moved.values()] for s in systems],
                           dtype=float).reshape(len(systems), -1)
         return cls(systems, numbers, flanks, pieces, rates, bounds, kappas,
-                   np.arange(len(systems)))
+                   np.arange(len(systems)), {"systems": systems})
 
     @property
     def k(self) -> int:
@@ -161,9 +166,14 @@ class DesignArray:
                        rates=tuple(r[index] for r in self.rates), bounds=self.bounds[index],
                        kappas=self.kappas[index], rows=self.rows[index])
 
-    def each(self, ask: Callable[[Any], Any]) -> list:
-        """``ask(system)`` of each design in turn: a kind's hook in Python."""
-        return [ask(s) for s in self.systems]
+    def gather(self, key: Hashable, ask: Callable[[Any], Any]) -> np.ndarray:
+        """``ask(system)`` of each design as one float array, (k, ...): asked
+        of the whole array's designs the first time ``key`` is met, kept, and
+        sliced to this array's designs after."""
+        if key not in self.gathered:
+            self.gathered[key] = np.array([ask(s) for s in self.gathered["systems"]],
+                                          dtype=float)
+        return self.gathered[key][self.rows]
 
     def linear(self, mode: Mode):
         """(M, D, K, f, E, G, S) of ``mode``, a leading axis of designs."""
@@ -183,9 +193,8 @@ class DesignArray:
         by_role: dict[str, list] = {"switches": [], "slopes": []}
         for events, _, parts in self.model.switching:
             if events.role:
-                for i in range(len(parts)):
-                    by_role[events.role].append(
-                        self.each(lambda s: events.value(s, mode, i)))
+                by_role[events.role] += [np.broadcast_to(events.value(self, mode, i), (self.k,))
+                                         for i in range(len(parts))]
         return tuple(np.array(by_role[r], dtype=float).T.reshape(self.k, -1)
                      for r in ("switches", "slopes"))
 
@@ -210,14 +219,24 @@ class DesignArray:
             if events.friction_capacity is None:
                 continue
             for i in range(len(loads)):
-                grips = self.each(lambda s: events.friction_capacity(s, mode, i))
-                for d, held in enumerate(grips):
-                    if held is not None and held[0] == g:
-                        if held[1] is None:
-                            k[d] += held[2]
-                        else:
-                            w[d, held[1]] += held[2]
+                held = events.friction_capacity(self, mode, i)
+                if held is not None and held[0] == g:
+                    if held[1] is None:
+                        k += held[2]
+                    else:
+                        w[:, held[1]] += held[2]
         return w, k
+
+    def reaction(self, mode: Mode, j: int) -> tuple[np.ndarray, np.ndarray]:
+        """The ground's reaction on the body of contact ``j`` as w·x + k per
+        design: what holds its group at rest, R = s N/κ (0 off the ground)."""
+        contact = self.model.contacts[j]
+        if mode.motion[contact.group] != HELD:
+            return np.zeros((self.k, self.model.size)), np.zeros(self.k)
+        w, k = net_load(self, mode, contact.group)
+        scale = contact.part.sign / self.gather(("contact kappa", j),
+                                                lambda s: s.contacts[j].kappa)
+        return scale[:, None] * w, scale * k
 
 
 def pushes(array: DesignArray, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
@@ -300,8 +319,7 @@ def mode_matrices(array: DesignArray, mode: Mode) -> tuple[np.ndarray, np.ndarra
     for events, _, loads in system.switching:       # the parts' own states
         if events.rates is not None:
             for i in range(len(loads)):
-                for d, one in enumerate(array.systems):
-                    events.rates(one, mode, i, A[d], b[d])
+                events.rates(array, mode, i, A, b)
     hold_limits(system.limits, A, b, mode.limits)
     return A, b
 
@@ -310,20 +328,17 @@ def mode_guards(array: DesignArray, mode: Mode,
                 free: Callable[[], tuple[np.ndarray, np.ndarray]]
                 ) -> list[tuple[str, np.ndarray, np.ndarray, int]]:
     """The guards of ``mode`` per design, (event, w (k, size), k (k,),
-    direction) each: the kinds' own (asked of each design), sliding groups
+    direction) each: the kinds' own (for the whole array: a kind raises
+    ValueError where its designs name different guards), sliding groups
     coming to rest, held groups slipping, the first-order limits (``free()``:
-    (A, b) of the mode with every limit free). ValueError where the designs'
-    kinds name different guards."""
+    (A, b) of the mode with every limit free)."""
     system, out, fixed = array.model, [], set()
+    shape = (array.k, system.size)
     for events, _, loads in system.switching:        # the kinds' own guards
         for i in range(len(loads)):
-            lists = array.each(lambda s: tuple(events.guards(s, mode, i)))
-            if any([(g[0], g[3]) for g in gs] != [(g[0], g[3]) for g in lists[0]]
-                   for gs in lists):
-                raise ValueError(f"designs differ in the guards of mode {mode!r}")
-            out += [(name, np.array([np.asarray(gs[j][1], float) for gs in lists]),
-                     np.array([float(gs[j][2]) for gs in lists]), d)
-                    for j, (name, _, _, d) in enumerate(lists[0])]
+            out += [(name, np.array(np.broadcast_to(np.asarray(w, float), shape)),
+                     np.array(np.broadcast_to(np.asarray(c, float), shape[:1])), d)
+                    for name, w, c, d in events.guards(array, mode, i)]
             if events.fixes is not None:
                 fixed.add(events.fixes(system, mode, i))
     unit = np.eye(system.size)

@@ -1,14 +1,17 @@
 """Designs of one component template as one family for the batched solver
 (:class:`DesignFamily`, what :class:`crane_sym.mechanics.batched_runs.RunFamily`
-asks where the runs' systems offer it): a mode's (A, b), guards and
-generic switches for the designs in the mode at once.
+asks where the runs' systems offer it): a mode's (A, b), guards, generic
+switches and links' loads for the designs in the mode at once.
 """
 from __future__ import annotations
+
+from typing import Sequence
 
 import numpy as np
 
 from crane_sym.components.design_arrays import (DesignArray, free_limits, mode_guards,
                                                 mode_matrices)
+from crane_sym.components.design_outputs import LinkLoad, link_loads
 from crane_sym.components.design_switches import switched
 from crane_sym.components.modes import Mode
 
@@ -40,3 +43,16 @@ class DesignFamily:
         switches by its own rule
         (:func:`~crane_sym.components.design_switches.switched`)."""
         return switched(self.array.take(index), mode, event, x.copy())
+
+    def output(self, outputs: Sequence, mode: Mode, index: np.ndarray
+               ) -> tuple[np.ndarray, np.ndarray] | None:
+        """The runs' outputs ``outputs`` of the designs at ``index`` in
+        ``mode`` (w, k stacked) where each is the load of the same links of
+        its own design (:class:`~crane_sym.components.design_outputs.LinkLoad`),
+        else None (each asked in turn)."""
+        links = getattr(outputs[0], "links", None)
+        systems = self.array.systems
+        if not all(isinstance(o, LinkLoad) and o.links == links and o.system is systems[i]
+                   for o, i in zip(outputs, index)):
+            return None
+        return link_loads(self.array.take(index), links, mode)

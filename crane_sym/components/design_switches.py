@@ -1,8 +1,10 @@
 """The generic events of a component model switched for k designs at once
 (:func:`switched`): a group coming to rest (held, or sliding on the way its
 load pushes), a held group slipping, a law's next piece. The new state is a
-simple function of x, so one pass over the designs' arrays does it; a
-kind's own rule (``Events.rules``) and a first-order limit's switch are
+simple function of x, so one pass over the designs' arrays does it. A
+kind's own rule that sets the mode from the mode alone (``Events.plain``: a
+contact closing, a characteristic's next step) is asked once for all the
+designs; the other rules of a kind and a first-order limit's switch are
 Python per design, and left to the caller (None).
 """
 from __future__ import annotations
@@ -33,6 +35,9 @@ def switched(array: DesignArray, mode: Mode, event: str, x: np.ndarray
     changed in place: floats, or mpmath numbers in an exact replay), or None
     where the event is a kind's own or a limit's (switched per design)."""
     system = array.model
+    if event in system.plain:                 # the mode's rule, the same for every design
+        rule, i = system.rules[event]
+        return [rule(system, mode, i, x[0])[0]] * array.k, x
     if event in system.rules or system.events[event][0] not in ("rest", "slip+", "slip-",
                                                                "piece"):
         return None

@@ -51,6 +51,7 @@ import numpy as np
 from crane_sym.components.design_arrays import (DesignArray, free_limits, mode_guards,
                                                 mode_matrices, net_load)
 from crane_sym.components.design_family import DesignFamily
+from crane_sym.components.design_outputs import LinkLoad
 from crane_sym.components.design_switches import settled, switched
 from crane_sym.components.equations import Equations
 from crane_sym.components.first_order import FirstOrder
@@ -104,6 +105,8 @@ class ComponentSystem:
         self.events: dict[str, tuple[str, int]] = dict(shared.events)
         #: The rule of each kind's event, by its event's name: (rule, place).
         self.rules: dict[str, tuple] = shared.rules
+        #: The kinds' events whose rule sets the mode from the mode alone.
+        self.plain: frozenset[str] = shared.plain
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
         self.events.update(self.first_order.events())
@@ -252,20 +255,10 @@ class ComponentSystem:
         ``tabulate`` take (made once a link: an output asks for it per mode)."""
         return self._link_loads(index)
 
-    def _link_load_uncached(self, index: int):
-        link = self.assembly.links[index]
-        u = self.twist(link)
-        rate = np.roll(u, 1)                     # q̇ sits right after q
-        rate[2 * self.n:] = 0.0
-        position = [j for j, l in enumerate(self.backlash) if l is link]
-        # on a flank F = a u + b u̇ + e δ, from the energies (Equations.link_laws)
-        a, b, e = self.equations.link_coefficients(index, self.extra)
+    def _link_load_uncached(self, index: int) -> LinkLoad:
+        return LinkLoad(self, (index,))
 
-        def affine(mode: Mode) -> tuple[np.ndarray, float]:
-            delta = 0.0
-            if position:
-                if mode.contacts[position[0]] == 0:
-                    return np.zeros(self.size), 0.0
-                delta = self.numbers.flanks(mode.contacts)[1][position[0]]
-            return a * u + b * rate, e * delta
-        return affine
+    def links_load(self, indices: Sequence[int]) -> LinkLoad:
+        """The summed load of elastic links ``indices`` per mode, as (w, k)
+        (:class:`~crane_sym.components.design_outputs.LinkLoad`)."""
+        return LinkLoad(self, indices)

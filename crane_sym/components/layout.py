@@ -33,7 +33,9 @@ class Layout:
     :data:`~crane_sym.components.kinds.KINDS`; ``columns``: (table, place)
     -> the column of a part's own state after the groups' 2 n;
     ``events``: each group's event -> (kind, group); ``rules``: each part's
-    event -> (its rule, the part's place among its kind's parts); ``kinds``:
+    event -> (its rule, the part's place among its kind's parts); ``plain``:
+    the events whose rule sets the mode from the mode alone
+    (``Events.plain``); ``kinds``:
     the kinds it was built from (:data:`~crane_sym.components.kinds.KINDS`
     then, kept so that the ids its key holds stay theirs)."""
 
@@ -43,6 +45,7 @@ class Layout:
     columns: dict[tuple[str, int], int]
     events: dict[str, tuple[str, int]]
     rules: dict[str, tuple[Callable, int]]
+    plain: frozenset[str]
 
 
 #: Each group's events: (suffix of its name, kind).
@@ -81,12 +84,16 @@ def _built(assembly: Assembly) -> Layout:
                       if kind.events is not None)
     columns: dict[tuple[str, int], int] = {}
     rules: dict[str, tuple[Callable, int]] = {}
+    plain: set[str] = set()
     for events, table in switching:
         for i, j in enumerate(of_kind[table]):
             for _ in range(events.states(items[j].part)):
                 columns[table, i] = len(columns)
             for name, key in events.names(items[j].part):
                 rules[name] = (events.rules[key], i)
+                if key in events.plain:
+                    plain.add(name)
     events = {group.name + suffix: (kind, g) for g, group in enumerate(assembly.groups)
               for suffix, kind in _GROUP_EVENTS}
-    return Layout(tuple(kinds.KINDS), of_kind, switching, columns, events, rules)
+    return Layout(tuple(kinds.KINDS), of_kind, switching, columns, events, rules,
+                  frozenset(plain))

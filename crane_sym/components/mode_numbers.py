@@ -52,8 +52,9 @@ class ModeNumbers:
         by_role: dict[str, list[float]] = {"switches": [], "slopes": []}
         for events, _, parts in self.system.switching:
             if events.role:
-                by_role[events.role] += [events.value(self.system, mode, i)
-                                         for i in range(len(parts))]
+                by_role[events.role] += [float(np.broadcast_to(
+                    events.value(self.system.alone, mode, i), (1,))[0])
+                    for i in range(len(parts))]
         return tuple(by_role["switches"]), tuple(by_role["slopes"])
 
     def _linear_uncached(self, contacts: tuple[int, ...], on: tuple[float, ...],

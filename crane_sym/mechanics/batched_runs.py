@@ -93,6 +93,11 @@ class RunFamily:
     def output(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Each run's output in the mode, stacked (as :func:`largest` takes it:
         the run's ``scale`` is its table's, not applied here)."""
+        if self.family is not None and hasattr(self.family, "output"):
+            both = self.family.output([self.runs[i].output for i in index],
+                                      self._modes[mode], index)
+            if both is not None:
+                return both
         pairs = [self.runs[i].output(self._modes[mode]) for i in index]
         return (np.array([np.asarray(w, float) for w, _ in pairs]),
                 np.array([float(k) for _, k in pairs]))

@@ -23,8 +23,7 @@ to zero inside that band.
 """
 from __future__ import annotations
 
-from functools import partial
-from typing import Hashable, Mapping, Sequence
+from typing import Mapping, Sequence
 
 import numpy as np
 
@@ -94,11 +93,6 @@ def step_accelerations(result: PiecewiseResult, system: ComponentSystem) -> np.n
     return np.diff(speeds) / np.diff(edges)
 
 
-def _links(system: ComponentSystem, mode: Hashable) -> tuple[np.ndarray, float]:
-    (w1, k1), (w2, k2) = system.link_load(0)(mode), system.link_load(1)(mode)
-    return w1 + w2, k1 + k2
-
-
 def total_load(system: ComponentSystem) -> Affine:
     """F1 + F2, the force of both links on the crane, per mode as (w, k)."""
-    return partial(_links, system)
+    return system.links_load((0, 1))

@@ -74,24 +74,28 @@ def _column(system, i: int) -> int | None:
     return system.columns.get((TABLE, i))
 
 
-def _friction_capacity(system, mode, i: int):
-    """(group, β's column or None, |κ| M): what brake i holds while engaged."""
+def _friction_capacity(designs, mode, i: int):
+    """(group, β's column or None, |κ| M per design): what brake i holds while engaged."""
     if not mode.engaged[i]:
         return None
-    load = system.of_kind[TABLE][i]
-    g, kappa = system.place(load)
-    return g, _column(system, i), abs(kappa) * load.load
+    system = designs.model
+    grip = designs.gather((TABLE, i, "grip"), lambda s: abs(s.place(s.of_kind[TABLE][i])[1])
+                          * s.of_kind[TABLE][i].load)
+    return system.place(system.of_kind[TABLE][i])[0], _column(system, i), grip
 
 
-def _rates(system, mode, i: int, A, b) -> None:
-    """β' = 1/T on a ramp under way, β' = (1 − β)/T for an exponential."""
+def _rates(designs, mode, i: int, A, b) -> None:
+    """β' = 1/T on a ramp under way, β' = (1 − β)/T for an exponential
+    (A, b: (designs, size, size) and (designs, size))."""
+    system = designs.model
     col, part = _column(system, i), system.of_kind[TABLE][i].part
     if col is None or not mode.engaged[i]:
         return
+    rate = 1.0 / designs.gather((TABLE, i, "time"), lambda s: s.of_kind[TABLE][i].part.time)
     if part.build_up == "ramp" and mode.ramping[i]:
-        b[col] = 1.0 / part.time
+        b[:, col] = rate
     elif part.build_up == "exponential":
-        A[col, col], b[col] = -1.0 / part.time, 1.0 / part.time
+        A[:, col, col], b[:, col] = -rate, rate
 
 
 def _set(values: tuple, i: int, value) -> list:

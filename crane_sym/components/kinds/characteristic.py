@@ -38,15 +38,16 @@ def _next(system, mode, i: int, x):
     return mode.setting(steps=steps), x
 
 
-def _slope(system, mode, i: int) -> float:
-    """The slope of the step it is on (the first where the mode has no steps)."""
-    law = system.of_kind["characteristic"][i]
+def _slope(designs, mode, i: int) -> np.ndarray:
+    """Each design's slope on the step it is on (the first where the mode has no steps)."""
+    values = designs.gather(("characteristic", i),
+                            lambda s: s.of_kind["characteristic"][i].values)
     k = mode.steps[i] if mode.steps else 0
-    return law.values[1 + min(k, len(law.values) - 2)]
+    return values[:, 1 + min(k, values.shape[1] - 2)]
 
 
 EVENTS = Events(("steps",), lambda part, rest: {"steps": 0},
-                lambda part: ((f"{part.name} next step", "step"),), {"step": _next},
+                lambda part: ((f"{part.name} next step", "step"),), {"step": _next}, plain=frozenset({"step"}),
                 schedule=lambda part, rest: tuple((float(t), f"{part.name} next step")
                                                   for t in np.cumsum(part.holds)),
                 role="slopes", value=_slope)

@@ -55,20 +55,30 @@ def _gapped(system, i: int) -> int | None:
     return next((j for j, l in enumerate(system.backlash) if l is link), None)
 
 
-def _guards(system, mode, i: int) -> tuple:
+def _guards(designs, mode, i: int) -> tuple:
     """Opening from its flank, closing on either end of its gap (not once cut,
-    nor for a gap of width 0)."""
+    nor for a gap of width 0), for each design: its twist's weights and its
+    flanks its own."""
+    system = designs.model
     j = _gapped(system, i)
-    if j is None or j in mode.cut or not system.backlash[j].part.opens:
+    if j is None or j in mode.cut:
+        return ()
+    lo, hi = designs.flanks[:, j, 0], designs.flanks[:, j, 1]
+    opens = lo < hi
+    if not opens.all():
+        if opens.any():
+            raise ValueError(f"designs differ in the guards of mode {mode!r}: the gap of "
+                             f"{system.backlash[j].part.name} is 0 in some of them")
         return ()
     link = system.backlash[j]
-    u, (lo, hi), name, c = system.twist(link), link.part.flanks, _names(link.part), mode.contacts[j]
+    u = designs.gather(("twist", j), lambda s: s.twist(s.backlash[j]))
+    name, c = _names(link.part), mode.contacts[j]
     if c > 0:
         return ((name["open"], u, -hi, -1),)
     if c < 0:
         return ((name["open"], u, -lo, 1),)
     closing = ((name["close+"], u, -hi, 1),)
-    if np.isfinite(lo):                 # a slack link has no lower flank
+    if np.isfinite(lo).all():           # a slack link has no lower flank
         closing += ((name["close-"], u, -lo, -1),)
     return closing
 
@@ -89,6 +99,7 @@ EVENTS = Events((), lambda part, rest: {},
                 lambda part: tuple((name, rule) for rule, name in _names(part).items())
                 if part.gapped else (),
                 {rule: _contact(rule) for rule in ("open", "close+", "close-", "break")},
+                plain=frozenset({"open", "close+", "close-", "break"}),
                 schedule=lambda part, rest: (() if part.fails_at is None else
                                              ((part.fails_at, f"{part.name} breaks"),)),
                 guards=_guards)

@@ -5,13 +5,20 @@ they name, their guards and the rule each event switches by
 The piecewise-linear system (:class:`crane_sym.components.hybrid.ComponentSystem`)
 is the generic machinery: it keeps the groups' motion (free, sliding, held)
 and loops over the kinds, asking each part's :class:`Events` for its share.
-A hook gets the system, the mode, the part's place among its kind's parts
-and the state; it reads the mode through :meth:`Mode.of` and writes it
-through :meth:`Mode.setting` (a field of ``Mode`` where the kind owns one,
-else a value of ``Mode.own``), so a new kind switches without a new field.
+A rule (``rules``) gets the system of one design, the mode, the part's place
+among its kind's parts and the state; it reads the mode through
+:meth:`Mode.of` and writes it through :meth:`Mode.setting` (a field of
+``Mode`` where the kind owns one, else a value of ``Mode.own``), so a new
+kind switches without a new field. The hooks the solver asks in every phase
+(``guards``, ``friction_capacity``, ``rates``, ``value``) get the designs of
+one template at once instead
+(:class:`~crane_sym.components.design_arrays.DesignArray`: ``designs.model``
+the structure they share, ``designs.gather`` a number of each design) and
+answer with a leading axis of designs; one design alone is an array of one.
 
 A guard is ``(event, weights, constant, direction)``: the event happens
-where ``weights·x + constant`` crosses 0 the way ``direction`` says
+where ``weights·x + constant`` crosses 0 the way ``direction`` says (weights
+(designs, size) or (size,), constant (designs,) or a number)
 (:class:`crane_sym.mechanics.piecewise_linear.Guard`, which the system
 builds from it).
 """
@@ -47,18 +54,21 @@ class Events:
     start (steady, or at ``rest``); ``names(part)``: each event the part
     names with the key of its rule in ``rules``; ``schedule(part, rest)``:
     its events known in advance, (time, event) each (but those a start at
-    ``rest`` has already taken); ``guards(system, mode, i)``:
+    ``rest`` has already taken); ``guards(designs, mode, i)``:
     its guards in a mode (:data:`GuardSpec`); ``rules``: the handler of each
-    event key. The rest are what the generic machinery asks of a kind that
-    acts through it: ``friction_capacity(system, mode, i)``, what the part
+    event key; ``plain``: the keys of the rules that set the mode from the
+    mode alone and leave the state as it is (designs that fire such an event
+    in one mode go to one new mode together). The rest are what the generic
+    machinery asks of a kind that acts through it:
+    ``friction_capacity(designs, mode, i)``, what the part
     can hold of its group's load by friction, (group, column of its own
-    state or None, size: the capacity is size·x[column], or size itself), or
-    None (a kind that gives it plays the role ``holds at rest``);
+    state or None, size per design: the capacity is size·x[column], or size
+    itself), or None (a kind that gives it plays the role ``holds at rest``);
     ``fixes(system, mode, i)``,
     the group the part itself keeps still (no friction guard for it) or
     None; ``states(part)``, how many states of its own (a brake's build-up)
-    and ``rates(system, mode, i, A, b)``, their rows; ``role`` and
-    ``value(system, mode, i)``, the number its symbol of that role
+    and ``rates(designs, mode, i, A, b)``, their rows; ``role`` and
+    ``value(designs, mode, i)``, the number its symbol of that role
     (:data:`~crane_sym.components.kinds.base.ROLES`) takes in a mode (a
     motor's switch, a characteristic's slope)."""
 
@@ -66,6 +76,7 @@ class Events:
     start: Callable[[Component, bool], Mapping[str, Any]]
     names: Callable[[Component], tuple[tuple[str, str], ...]]
     rules: Mapping[str, Handler] = field(default_factory=dict)
+    plain: frozenset[str] = frozenset()
     schedule: Callable[[Component, bool], tuple[tuple[float, str], ...]] = _none
     guards: Callable[[Any, Any, int], tuple[GuardSpec, ...]] = _none
     friction_capacity: Callable[[Any, Any, int], Any] | None = None

@@ -14,18 +14,20 @@ from crane_sym.components.kinds.events import FREE, HELD, Events
 from crane_sym.components.loads import GroundContact
 
 
-def _guards(system, mode, j: int) -> tuple:
+def _guards(designs, mode, j: int) -> tuple:
     """On the ground: lifts off where R falls through 0; off it: set down
-    where its body returns to x = 0."""
+    where its body returns to x = 0 (for each design)."""
+    system = designs.model
     contact = system.contacts[j]
     name, g = contact.part.name, contact.group
     if mode.motion[g] == HELD:
-        w, k = system.reaction(mode, j)
+        w, k = designs.reaction(mode, j)
         if w.any():                     # a constant reaction never turns negative
             return ((f"{name} lifts off", w, k, -1),)
         return ()
-    w = np.zeros(system.size)           # the body's way towards the ground
-    w[system.q(g)] = contact.part.sign * contact.kappa
+    w = np.zeros((designs.k, system.size))     # the body's way towards the ground
+    w[:, system.q(g)] = contact.part.sign * designs.gather(("contact kappa", j),
+                                                           lambda s: s.contacts[j].kappa)
     return ((f"{name} sets down", w, 0.0, 1),)
 
 
@@ -45,7 +47,7 @@ def _land(system, mode, j: int, x):
 EVENTS = Events((), lambda part, rest: {},
                 lambda part: ((f"{part.name} lifts off", "lift"),
                               (f"{part.name} sets down", "land")),
-                {"lift": _lift, "land": _land}, guards=_guards,
+                {"lift": _lift, "land": _land}, guards=_guards, plain=frozenset({"lift"}),
                 fixes=lambda system, mode, j: system.contacts[j].group)
 
 KIND = Kind("ground_contact", (Key("name", "word"), Key("body", "body"),

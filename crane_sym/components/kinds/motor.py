@@ -44,10 +44,10 @@ def _off(system, mode, i: int, x):
 
 
 EVENTS = Events(("driven",), lambda part, rest: {"driven": True},
-                lambda part: ((f"{part.name} off", "off"),), {"off": _off},
+                lambda part: ((f"{part.name} off", "off"),), {"off": _off}, plain=frozenset({"off"}),
                 schedule=lambda part, rest: (() if part.off_at is None else
                                              ((part.off_at, f"{part.name} off"),)),
-                role="switches", value=lambda system, mode, i: 1.0 if mode.driven[i] else 0.0)
+                role="switches", value=lambda designs, mode, i: 1.0 if mode.driven[i] else 0.0)
 
 
 KIND = Kind("motor", (Key("name", "word"), Key("body", "body"),
