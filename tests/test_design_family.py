@@ -89,3 +89,41 @@ def test_the_designs_take_different_sequences_of_modes(found):
     for needed in ("coupling opens", "drum rests", "drum slips -", "speed_loop limited +",
                    "speed_loop next piece"):
         assert needed in every, needed
+
+
+def test_the_kinds_hooks_answer_for_every_design_as_each_alone(found):
+    """The kinds' guards, the brake's capacity and rates, the slopes and the
+    links' loads of every mode the designs pass through, asked of the array
+    of designs, against each design asked alone (its own numbers, not the
+    template's lambdified form): the same events, and numbers to 1e-12."""
+    from crane_sym.components.design_arrays import (DesignArray, free_limits, mode_guards,
+                                                    mode_matrices)
+    from crane_sym.components.design_outputs import link_loads
+    grid = dict(zip(GRID, np.broadcast_arrays(*GRID.values())))
+    systems, modes = [], set()
+    for at in np.ndindex(4, 3):
+        model = found.design({name: float(v[at]) for name, v in grid.items()})
+        mode, x0, system = found.start(model)
+        run = HybridRun(system, mode, x0, found.duration, model.schedule(),
+                        system.link_load(0))
+        systems.append(system)
+        modes |= {segment.mode for segment in run.solve().segments}
+    array = DesignArray.of(systems)
+    assert len(modes) >= 5
+    for mode in modes:
+        together = mode_guards(array, mode, lambda: mode_matrices(array, free_limits(mode)))
+        A, b = design_family.DesignFamily(array).matrices(mode, np.arange(array.k))
+        w, k = link_loads(array, (0,), mode)
+        for d, system in enumerate(systems):
+            alone = system.guards(mode)
+            assert [g.name for g in alone] == [g[0] for g in together]
+            for guard, (_, weights, constant, direction) in zip(alone, together):
+                assert guard.direction == direction
+                np.testing.assert_allclose(weights[d], guard.weights, rtol=1e-12, atol=1e-9)
+                np.testing.assert_allclose(constant[d], guard.constant, rtol=1e-12, atol=1e-9)
+            A1, b1 = system.matrices(mode)
+            np.testing.assert_allclose(A[d], A1, rtol=1e-12, atol=1e-12 * np.abs(A1).max())
+            np.testing.assert_allclose(b[d], b1, rtol=1e-12, atol=1e-12 * max(np.abs(b1).max(), 1))
+            w1, k1 = system.link_load(0)(mode)
+            np.testing.assert_array_equal(w[d], w1)
+            assert k[d] == k1

@@ -100,10 +100,12 @@ def _padded(pieces: Sequence[Sequence[tuple[float, tuple[float, ...]]]], width: 
 
 @dataclass(frozen=True, eq=False)
 class DesignArray:
-    """k designs of one component model (their ``ComponentSystem``s), with
-    what differs between them stacked once: their parameter values (through
-    ``numbers``), flanks, laws' pieces, first-order rates and bounds, and the
-    κ of each group a speed law moves. :meth:`take` keeps some of the designs."""
+    """k designs of one component model, with what differs between them
+    stacked once: their parameter values (through ``numbers``), flanks, laws'
+    pieces, first-order rates and bounds, and the κ of each group a speed law
+    moves. :meth:`take` keeps some of the designs: ``rows`` are their places
+    among ``systems``, the ``ComponentSystem`` of every design of the whole
+    array (not sliced: :meth:`gather` asks them once)."""
 
     systems: tuple
     numbers: Callable                       # (mode, array) -> (M, D, K, f, E, G, S)
@@ -114,7 +116,7 @@ class DesignArray:
     kappas: np.ndarray                      # (k, speed laws)
     rows: np.ndarray = field(default=None)  # the designs' rows in the whole array
     #: What :meth:`gather` asked of the whole array's designs, by key (shared by
-    #: the arrays :meth:`take` makes); "systems": the whole array's designs.
+    #: the arrays :meth:`take` makes).
     gathered: dict = field(default_factory=dict, repr=False)
 
     @classmethod
@@ -148,11 +150,11 @@ class DesignArray:
         kappas = np.array([[kappa for _, kappa in s.moved.values()] for s in systems],
                           dtype=float).reshape(len(systems), -1)
         return cls(systems, numbers, flanks, pieces, rates, bounds, kappas,
-                   np.arange(len(systems)), {"systems": systems})
+                   np.arange(len(systems)))
 
     @property
     def k(self) -> int:
-        return len(self.systems)
+        return len(self.rows)
 
     @property
     def model(self):
@@ -161,9 +163,8 @@ class DesignArray:
 
     def take(self, index: np.ndarray) -> "DesignArray":
         """The designs at ``index`` (positions in this array)."""
-        return replace(self, systems=tuple(self.systems[i] for i in index),
-                       flanks=self.flanks[index], pieces=tuple(p[index] for p in self.pieces),
-                       rates=tuple(r[index] for r in self.rates), bounds=self.bounds[index],
+        return replace(self, flanks=self.flanks[index],
+                       pieces=tuple(p[index] for p in self.pieces), rates=tuple(r[index] for r in self.rates), bounds=self.bounds[index],
                        kappas=self.kappas[index], rows=self.rows[index])
 
     def gather(self, key: Hashable, ask: Callable[[Any], Any]) -> np.ndarray:
@@ -171,8 +172,7 @@ class DesignArray:
         of the whole array's designs the first time ``key`` is met, kept, and
         sliced to this array's designs after."""
         if key not in self.gathered:
-            self.gathered[key] = np.array([ask(s) for s in self.gathered["systems"]],
-                                          dtype=float)
+            self.gathered[key] = np.array([ask(s) for s in self.systems], dtype=float)
         return self.gathered[key][self.rows]
 
     def linear(self, mode: Mode):

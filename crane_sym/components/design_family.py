@@ -5,7 +5,7 @@ switches and links' loads for the designs in the mode at once.
 """
 from __future__ import annotations
 
-from typing import Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 
@@ -44,15 +44,14 @@ class DesignFamily:
         (:func:`~crane_sym.components.design_switches.switched`)."""
         return switched(self.array.take(index), mode, event, x.copy())
 
-    def output(self, outputs: Sequence, mode: Mode, index: np.ndarray
-               ) -> tuple[np.ndarray, np.ndarray] | None:
-        """The runs' outputs ``outputs`` of the designs at ``index`` in
-        ``mode`` (w, k stacked) where each is the load of the same links of
-        its own design (:class:`~crane_sym.components.design_outputs.LinkLoad`),
-        else None (each asked in turn)."""
+    def outputs(self, outputs: Sequence) -> Callable | None:
+        """``output(mode, index)``: the runs' outputs ``outputs`` (one a design,
+        in order) for the designs at ``index`` in ``mode``, (w, k) stacked,
+        where each is the load of the same links of its own design
+        (:class:`~crane_sym.components.design_outputs.LinkLoad`); else None
+        (each asked in turn)."""
         links = getattr(outputs[0], "links", None)
-        systems = self.array.systems
-        if not all(isinstance(o, LinkLoad) and o.links == links and o.system is systems[i]
-                   for o, i in zip(outputs, index)):
+        if not all(isinstance(o, LinkLoad) and o.links == links and o.system is s
+                   for o, s in zip(outputs, self.array.systems)):
             return None
-        return link_loads(self.array.take(index), links, mode)
+        return lambda mode, index: link_loads(self.array.take(index), links, mode)

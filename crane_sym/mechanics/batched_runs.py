@@ -9,11 +9,12 @@ designs in a mode, and calls each design's switching rule on the designs
 that fired an event; the closed forms, the event search and the extrema are
 the batched solver's. Where the runs' systems know themselves as one family
 (their class's ``family(systems)``: designs of one component template,
-:class:`crane_sym.components.design_arrays.DesignFamily`), a mode's matrices
-and guards come from it for all the designs in the mode at once. The Python calls cost per design and phase what a
-model written for arrays (a paper's own family of designs)
-saves; the closed forms and the search, where the time of a run goes, are
-shared. The designs' guards in a mode must agree in number, names and
+:class:`crane_sym.components.design_family.DesignFamily`), a mode's matrices,
+guards, the switches its rules allow and the runs' outputs (its
+``outputs(outputs)``, where it offers them) come from it for all the designs
+in the mode at once. Elsewhere the Python calls cost per design and phase
+what a model written for arrays (a paper's own family of designs) saves;
+the closed forms and the search are shared. The designs' guards in a mode must agree in number, names and
 directions (they do for designs of one model).
 """
 from __future__ import annotations
@@ -37,6 +38,9 @@ class RunFamily:
         family = getattr(self.runs[0].system, "family", None)
         #: The systems as one family, or None (each asked in turn).
         self.family = family([r.system for r in self.runs]) if family else None
+        #: The runs' outputs for designs at once where the family offers it, else None.
+        self._output = (self.family.outputs([r.output for r in self.runs])
+                        if self.family is not None else None)
         self._modes: list[Hashable] = []
         self._codes: dict[Hashable, int] = {}
 
@@ -93,11 +97,8 @@ class RunFamily:
     def output(self, mode: int, index: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Each run's output in the mode, stacked (as :func:`largest` takes it:
         the run's ``scale`` is its table's, not applied here)."""
-        if self.family is not None and hasattr(self.family, "output"):
-            both = self.family.output([self.runs[i].output for i in index],
-                                      self._modes[mode], index)
-            if both is not None:
-                return both
+        if self._output is not None:
+            return self._output(self._modes[mode], index)
         pairs = [self.runs[i].output(self._modes[mode]) for i in index]
         return (np.array([np.asarray(w, float) for w, _ in pairs]),
                 np.array([float(k) for _, k in pairs]))
