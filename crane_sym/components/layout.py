@@ -61,6 +61,9 @@ def layout(equations: Equations) -> Layout:
     equations : Equations
         A model's (or a design's) equations, with their assembly.
     """
+    own = equations.__dict__.get("_layout")      # a design's system and schedule both ask
+    if own is not None and own.kinds == tuple(kinds.KINDS):
+        return own
     a = equations.assembly
     items = (*a.loads, *a.contacts, *a.links)
     switches = {k.part_kind: k.events for k in kinds.KINDS if k.events is not None}
@@ -71,6 +74,7 @@ def layout(equations: Equations) -> Layout:
                        for item in items if item.part.kind in switches))
     if signature not in equations.layouts:
         equations.layouts[signature] = _built(a)
+    equations.__dict__["_layout"] = equations.layouts[signature]
     return equations.layouts[signature]
 
 

@@ -30,18 +30,27 @@ def by_table() -> dict[str, Kind]:
     return {k.table: k for k in KINDS}
 
 
+#: (the list :data:`KINDS` was, its length, each part kind's first kind in
+#: it): :func:`of` looks a part's kind up, built anew when KINDS is another list.
+_INDEX: tuple[list, int, dict[str, Kind]] = ([], 0, {})
+
+
 def of(part: Component) -> Kind:
-    """The kind of ``part`` (by its ``kind``: ``gear``, ``elastic link``).
+    """The kind of ``part`` (by its ``kind``: ``gear``, ``elastic link``): the
+    first of :data:`KINDS` that declares it.
 
     Parameters
     ----------
     part : Component
         A part of a model.
     """
-    for kind in KINDS:
-        if kind.part_kind == part.kind:
-            return kind
-    raise KeyError(f"no kind declares parts of kind {part.kind!r}")
+    global _INDEX
+    if _INDEX[0] is not KINDS or _INDEX[1] != len(KINDS):
+        _INDEX = (KINDS, len(KINDS), {k.part_kind: k for k in reversed(KINDS)})
+    kind = _INDEX[2].get(part.kind)
+    if kind is None:
+        raise KeyError(f"no kind declares parts of kind {part.kind!r}")
+    return kind
 
 
 def plays(part: Component, role: str) -> bool:

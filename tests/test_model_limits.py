@@ -1,0 +1,38 @@
+"""The natural frequencies the cycle limit rests on
+(:func:`crane_sym.components.model_limits.frequencies`) against the closed
+form of a two-mass chain, ground -c1- m1 -c2- m2, at 50 digits: the roots
+ω² of m1 m2 λ² − (m2 (c1 + c2) + m1 c2) λ + c1 c2 = 0 (every group has
+inertia: the assembly refuses one without, so NumPy's symmetric route)."""
+from __future__ import annotations
+
+import mpmath as mp
+import numpy as np
+import pytest
+
+from crane_sym.components import ElasticLink, Mass
+from crane_sym.components.model_limits import frequencies
+from crane_sym.components.topology import assemble
+
+
+def _closed(m1: float, m2: float, c1: float, c2: float) -> list[float]:
+    with mp.workdps(50):
+        a, b, c = mp.mpf(m1) * m2, -(mp.mpf(m2) * (c1 + c2) + mp.mpf(m1) * c2), mp.mpf(c1) * c2
+        d = mp.sqrt(b * b - 4 * a * c)
+        return sorted(float(mp.sqrt(r)) for r in ((-b - d) / (2 * a), (-b + d) / (2 * a)))
+
+
+def _chain(m1: float, m2: float, c1: float, c2: float):
+    return assemble([Mass("a", m1), Mass("b", m2), ElasticLink("l1", "ground", "a", c1, 0.0, 0.0),
+                     ElasticLink("l2", "a", "b", c2, 0.0, 0.0)])
+
+
+@pytest.mark.parametrize("m1, m2, c1, c2", [
+    (1.0, 1.0, 1.0, 1.0),                 # equal subsystems
+    (1e-3, 1e3, 1e6, 1e3),                # mass ratio 1e6
+    (250e3, 250e3, 5e6, 5e6),             # 003's crane and side, both links alike
+    (2.0, 3e-4, 7e8, 1e2),                # a light end on a soft link
+])
+def test_frequencies_equal_the_two_mass_closed_form(m1, m2, c1, c2):
+    got = np.sort(frequencies(_chain(m1, m2, c1, c2)))
+    np.testing.assert_allclose(got, _closed(m1, m2, c1, c2), rtol=1e-10)
+
