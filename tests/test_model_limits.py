@@ -36,3 +36,28 @@ def test_frequencies_equal_the_two_mass_closed_form(m1, m2, c1, c2):
     got = np.sort(frequencies(_chain(m1, m2, c1, c2)))
     np.testing.assert_allclose(got, _closed(m1, m2, c1, c2), rtol=1e-10)
 
+
+
+def test_a_files_design_beyond_the_period_bound_is_refused_naming_its_values(tmp_path):
+    """travel_braking_000 run for 1000 s: 4.2e3 periods of its slowest mode as
+    written, 1.34e4 with the transmission ten times as stiff (ω ∝ √c); the
+    block is refused in one line naming that design, before it is solved."""
+    from pathlib import Path
+
+    from crane_sym.components.designs import designs
+    from crane_sym.components.parts import ComponentError
+    example = Path(__file__).resolve().parents[1] / "examples" / "drive_trains"
+    text = (example / "travel_braking_000.toml").read_text()
+    assert 'duration = "1.5 s"' in text
+    path = tmp_path / "long_travel.toml"
+    path.write_text(text.replace('duration = "1.5 s"', 'duration = "1000 s"'))
+    block = designs(str(path))
+    assert np.isfinite(block.largest("transmission.peak",
+                                     {"transmission.stiffness": np.array([3e6])})).all()
+    with pytest.raises(ComponentError) as refused:
+        block.largest("transmission.peak", {"transmission.stiffness": np.array([3e6, 3e7])})
+    message = str(refused.value)
+    assert "\n" not in message
+    assert message.startswith("design transmission.stiffness = 3e+07 kg*s^-2: run: duration "
+                              "1000 s spans 1.34e+04 periods")
+    assert "at most 10000" in message

@@ -47,6 +47,7 @@ from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.components.kinds import by_table
 from crane_sym.components.model import Model, start_load
+from crane_sym.components.model_limits import check_cycles
 from crane_sym.components.templates import Templates, structure
 from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, Component,
                                         ComponentError, value)
@@ -228,7 +229,9 @@ class Designs:
         """(shape, one run a design with ``output``'s load as its output, each
         link's reference for a factor, NaN where it has none) of a block
         (``values`` as :meth:`largest` takes them): what the batched solver
-        solves together, each design built from its structure's template."""
+        solves together, each design built from its structure's template and
+        checked against the bound on its run's periods (ComponentError naming
+        the design's values, as a run of the file alone is)."""
         index, kind, _ = self.outputs()[output]
         names = list(values)
         arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names]) \
@@ -237,7 +240,14 @@ class Designs:
         runs, reference = [], np.full(arrays[0].size, np.nan)
         t_end = self.duration
         for k, at in enumerate(np.ndindex(shape)):
-            model = self.design({n: float(a[at]) for n, a in zip(names, arrays)})
+            given = {n: float(a[at]) for n, a in zip(names, arrays)}
+            model = self.design(given)
+            try:
+                check_cycles(model.assembly, t_end)
+            except ComponentError as exc:
+                values = ", ".join(f"{n} = {v:g} {si_unit(self.fields[n].dimension)}"
+                                   for n, v in given.items())
+                raise ComponentError(f"design {values}: {exc}") from None
             mode, x0, system = self.start(model)
             if kind == "reaction":
                 load = system.contact_load(index)

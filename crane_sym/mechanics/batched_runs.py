@@ -84,8 +84,10 @@ class RunFamily:
         codes = np.empty(index.size, dtype=np.int64)
         both = None if self.family is None else \
             self.family.switch(self._modes[mode], event, index, x)
-        if both is not None:
-            codes[:] = [self.code(new) for new in both[0]]
+        if both is not None:         # most designs share a few new modes: each hashed once
+            seen: dict[int, int] = {}
+            codes[:] = [seen[id(new)] if id(new) in seen else
+                        seen.setdefault(id(new), self.code(new)) for new in both[0]]
             return codes, both[1]
         out = np.empty_like(x)
         for k, i in enumerate(index):
