@@ -556,3 +556,33 @@ def test_refine_finds_each_root_to_xtol_against_mpmath(first_point):
         root = mpmath.findroot(g, (mpmath.mpf(float(lo[i])), mpmath.mpf(float(hi[i]))),
                                solver="illinois", tol=mpmath.mpf(10) ** -28)
         assert abs(found[i] - float(root)) <= 1e-14 + 4 * np.spacing(float(root))
+
+
+def test_003_starts_found_together_are_each_designs_own():
+    """003's start-up from rest, its wind either side of the friction that
+    holds the crane (held, or sliding at once), the wind or the friction 0
+    in some designs (other templates: no wind, no brake): the starts found together
+    (``rest_runs``) are each design's own (``hybrid_run``) to the bit, and
+    their peaks the per-design ones to 1e-9."""
+    from crane_sym.derivations.portal_travel import sweep_outputs
+    from crane_sym.mechanics.batched_runs import largest_of_runs
+    from crane_sym.scenes.reading import load_scene
+    scene = load_scene("fig12_startup_backlash")
+    values = {k: float(v) for k, v in scene.parameters.items()
+              if k in sweep_outputs._PARAMETERS}
+    wind = np.array([0.0, 2e4, 2.9e4, 3.1e4, 6e4, 2e4])
+    friction = np.array([3e4, 3e4, 3e4, 3e4, 3e4, 0.0])
+    values.update(W_w=wind, W_f=friction, phi_b=np.pi)
+    _, together = sweep_outputs._designs(values)
+    _, alone = sweep_outputs._designs(values, together=False)
+    # three templates: friction and wind, no wind (W_w = 0), no friction (W_f = 0)
+    assert len({id(r.system.equations.linear) for r in together}) == 3
+    motions = set()
+    for a, b in zip(together, alone):
+        assert a.mode == b.mode
+        np.testing.assert_array_equal(a.x0, b.x0)
+        motions.add(a.mode.motion)
+    assert len(motions) >= 2                       # held in some designs, sliding in others
+    result = largest_of_runs(together, magnitude=False, max_events=sweep_outputs.MAX_PHASES)
+    np.testing.assert_allclose(result.value, sweep_outputs.peak_per_design(values, {}),
+                               rtol=1e-9)

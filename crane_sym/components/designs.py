@@ -46,7 +46,7 @@ from crane_sym import units
 from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.components.kinds import by_table
-from crane_sym.components.model import Model, start_load
+from crane_sym.components.model import Model, start_load, started_at_rest
 from crane_sym.components.model_limits import check_cycles
 from crane_sym.components.templates import Templates, structure
 from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, Component,
@@ -231,7 +231,8 @@ class Designs:
         (``values`` as :meth:`largest` takes them): what the batched solver
         solves together, each design built from its structure's template and
         checked against the bound on its run's periods (ComponentError naming
-        the design's values, as a run of the file alone is)."""
+        the design's values, as a run of the file alone is); from rest, the
+        designs' starts found together (``started_at_rest``)."""
         index, kind, _ = self.outputs()[output]
         names = list(values)
         arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names]) \
@@ -239,16 +240,19 @@ class Designs:
         shape = arrays[0].shape
         runs, reference = [], np.full(arrays[0].size, np.nan)
         t_end = self.duration
-        for k, at in enumerate(np.ndindex(shape)):
+        models = []
+        for at in np.ndindex(shape):
             given = {n: float(a[at]) for n, a in zip(names, arrays)}
-            model = self.design(given)
+            models.append(self.design(given))
             try:
-                check_cycles(model.assembly, t_end)
+                check_cycles(models[-1].assembly, t_end)
             except ComponentError as exc:
                 values = ", ".join(f"{n} = {v:g} {si_unit(self.fields[n].dimension)}"
                                    for n, v in given.items())
                 raise ComponentError(f"design {values}: {exc}") from None
-            mode, x0, system = self.start(model)
+        starts = started_at_rest(models) if self.file.rest and \
+            self.model.steady_motor is None else [self.start(model) for model in models]
+        for k, (model, (mode, x0, system)) in enumerate(zip(models, starts)):
             if kind == "reaction":
                 load = system.contact_load(index)
             elif kind == "part":

@@ -43,13 +43,13 @@ from crane_sym.components.layout import layout
 from crane_sym.components.model_limits import MAX_PHASES, check_cycles
 from crane_sym.components.parts import ROTATING, Component, ComponentError, Given, value
 from crane_sym.components.pruning import Dropped, Scope, needed
-from crane_sym.components.start import rest_start, steady_start
+from crane_sym.components.start import rest_start, rest_starts, steady_start
 from crane_sym.components.topology import Assembly, assemble
 from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import (PhaseFormError, PhaseLimitError, PiecewiseResult,
                                                   simulate)
 
-__all__ = ["ComponentRun", "LinkPeak", "Model", "start_load"]
+__all__ = ["ComponentRun", "LinkPeak", "Model", "rest_runs", "start_load", "started_at_rest"]
 
 
 @dataclass(frozen=True)
@@ -280,6 +280,22 @@ class Model:
         -------
         HybridRun
         """
+        t_end = self.end(duration, rest)
+        check_cycles(self.assembly, t_end)
+        mode, x0, system = self.started(start_body, start_speed, rest)
+        return self._hybrid(system, mode, x0, t_end, link, rest)
+
+    def end(self, duration: Given, rest: bool = False) -> float:
+        """The end of a run of ``duration`` in seconds, refused in one line
+        where it is not > 0 or past what the model was built for (its scope).
+
+        Parameters
+        ----------
+        duration : str or float
+            The end of the run (a time with its unit, or seconds).
+        rest : bool
+            Whether the run starts at rest.
+        """
         from sympy.physics.units import time
         t_end = value("run", "duration", duration, time).si
         if not t_end > 0:
@@ -291,8 +307,12 @@ class Model:
                 f"run: the model was built for a run of {scope.duration:g} s"
                 f"{' from rest' if scope.rest else ''} without {scope.dropped[0].part.label}"
                 f" ({scope.dropped[0].reason}); build it for this run (Model.for_run)")
-        check_cycles(self.assembly, t_end)
-        mode, x0, system = self.started(start_body, start_speed, rest)
+        return t_end
+
+    def _hybrid(self, system: ComponentSystem, mode: Mode, x0: np.ndarray, t_end: float,
+                link: str | None, rest: bool) -> HybridRun:
+        """The run from a start found, with the load of ``link`` (default the
+        first elastic link, none: a zero output) as its output."""
         names = [l.part.name for l in system.assembly.links]
         if link is not None and link not in names:
             raise ComponentError(f"no elastic link {link!r}; links: {', '.join(names)}")
@@ -318,3 +338,51 @@ class Model:
             raise ComponentError(f"run: {exc}") from None
         return ComponentRun(self, run.system, run.mode, run.x0, run.t_end,
                             tuple(run.schedule), result)
+
+
+def started_at_rest(models: Sequence[Model]) -> list[tuple[Mode, np.ndarray, ComponentSystem]]:
+    """:meth:`Model.started` at rest of the designs of a sweep's block:
+    (mode, state, system) each, the starts of the designs of one template
+    found together (:func:`~crane_sym.components.start.rest_starts`: a held
+    group settled for the designs in one mode at once).
+
+    Parameters
+    ----------
+    models : sequence of Model
+        The designs.
+    """
+    systems = [ComponentSystem(model.equations) for model in models]
+    templates: dict[int, list[int]] = {}
+    for d, system in enumerate(systems):
+        shared = system.equations.shared
+        templates.setdefault(id(system.equations.linear) if shared else -1 - d, []).append(d)
+    starts: list = [None] * len(models)
+    for index in templates.values():
+        one = [systems[d] for d in index]
+        found = rest_starts([models[d] for d in index], one,
+                            None if one[0].equations.shared else one[0].alone)
+        for d, (mode, x0) in zip(index, found):
+            starts[d] = (mode, x0, systems[d])
+    return starts
+
+
+def rest_runs(models: Sequence[Model], duration: Given, link: str | None = None
+              ) -> list[HybridRun]:
+    """:meth:`Model.hybrid_run` from rest of the designs of a sweep's block,
+    each checked and run as alone, their starts found together
+    (:func:`started_at_rest`).
+
+    Parameters
+    ----------
+    models : sequence of Model
+        The designs.
+    duration : str or float
+        The end of the runs.
+    link : str, optional
+        Name of the elastic link whose load is the output.
+    """
+    t_end = models[0].end(duration, rest=True)
+    for model in models:
+        check_cycles(model.assembly, t_end)
+    return [model._hybrid(system, mode, x0, t_end, link, True)
+            for model, (mode, x0, system) in zip(models, started_at_rest(models))]

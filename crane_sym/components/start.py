@@ -11,15 +11,19 @@ is held while the loads at rest are within what holds it.
 """
 from __future__ import annotations
 
+from typing import Sequence
+
 import numpy as np
 
 from crane_sym.components.contacts import resting
+from crane_sym.components.design_arrays import DesignArray
+from crane_sym.components.design_switches import settled
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, ComponentSystem, Mode
 from crane_sym.components.initial import apply
 from crane_sym.components.parts import DIMENSIONS, ComponentError, Given, value
 from crane_sym.components.steady import balance
 
-__all__ = ["rest_start", "start_mode", "steady_start"]
+__all__ = ["rest_start", "rest_starts", "start_mode", "steady_start"]
 
 
 def start_mode(system: ComponentSystem, contacts: tuple[int, ...], n: int, rest: bool) -> Mode:
@@ -151,27 +155,83 @@ def rest_start(model, probe: ComponentSystem | None = None) -> tuple[Mode, np.nd
     probe : ComponentSystem, optional
         The model's system (built here if not given).
     """
+    if probe is None:
+        _no_steady_motor(model)
+        probe = ComponentSystem(model.equations)
+    return (*rest_starts([model], [probe], probe.alone)[0], {})
+
+
+def rest_starts(models: Sequence, systems: Sequence[ComponentSystem],
+                array: DesignArray | None = None) -> list[tuple[Mode, np.ndarray]]:
+    """:func:`rest_start` of each of ``models``, designs of one template with
+    their ``systems``: (mode, state) each. Whether a group is held, and how
+    it settles, is decided for the designs that share a mode at once, on
+    ``array`` (default: the designs' :class:`DesignArray`, their numbers from
+    the template's lambdified form; one design alone passes its own).
+    ValueError for systems of different templates without ``array``.
+
+    Parameters
+    ----------
+    models : sequence of Model
+        The designs.
+    systems : sequence of ComponentSystem
+        Their systems.
+    array : DesignArray, optional
+        The designs as one array.
+    """
+    _no_steady_motor(models[0])
+    if array is None:
+        linear = systems[0].equations.linear
+        if not all(s.equations.shared and s.equations.linear is linear for s in systems):
+            raise ValueError("rest_starts: the designs are not of one template")
+        array = DesignArray.of(systems)
+    starts = []
+    for model, probe in zip(models, systems):
+        mode = start_mode(probe, tuple(0 if l.part.opens else 1 for l in probe.backlash),
+                          len(model.assembly.groups), True)
+        x = np.zeros(probe.size)
+        for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
+            x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa
+        starts.append(list(apply(model.initial, probe, mode, x)))
+    held = _held(array, [mode for mode, _ in starts], len(models[0].assembly.groups))
+    first = systems[0]
+    for g, designs in held:
+        for mode, index in _by_mode([mode for mode, _ in starts], designs).items():
+            moving = [d for d in index if starts[d][1][first.v(g)] != 0]
+            for d in moving:                  # given a velocity: it slides that way
+                starts[d][0] = mode.moving(g, FORWARD if starts[d][1][first.v(g)] > 0 else BACKWARD)
+            still = [d for d in index if d not in moving]
+            if still:
+                motions = settled(array.take(np.array(still)), mode, g,
+                                  np.array([starts[d][1] for d in still]))
+                for d, motion in zip(still, motions):
+                    starts[d][0] = mode.moving(g, motion)
+    return [(resting(probe, mode, x), x) for probe, (mode, x) in zip(systems, starts)]
+
+
+def _no_steady_motor(model) -> None:
     if model.steady_motor is not None:
         raise ComponentError("start at rest: a 'steady' motor has no steady motion to "
                              "hold; give its torque")
-    if probe is None:
-        probe = ComponentSystem(model.equations)
-    n = len(model.assembly.groups)
-    mode = start_mode(probe, tuple(0 if l.part.opens else 1 for l in probe.backlash), n, True)
-    x = np.zeros(probe.size)
-    for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
-        x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa
-    mode, x = apply(model.initial, probe, mode, x)
-    for g in [g for g in range(n) if _held(probe, mode, g)]:
-        speed = float(x[probe.v(g)])
-        if speed != 0:                   # given a velocity: it slides that way
-            mode = mode.moving(g, FORWARD if speed > 0 else BACKWARD)
-        else:
-            mode = mode.moving(g, probe.settled(mode, g, x))
-    return resting(probe, mode, x), x, {}
 
 
-def _held(system: ComponentSystem, mode: Mode, g: int) -> bool:
-    """Whether something holds group g by friction in ``mode``."""
-    w, k = system.capacity(mode, g)
-    return bool(w.any() or k)
+def _by_mode(modes: Sequence[Mode], designs: Sequence[int]) -> dict[Mode, list[int]]:
+    """The designs among ``designs`` by their mode in ``modes``."""
+    out: dict[Mode, list[int]] = {}
+    for d in designs:
+        out.setdefault(modes[d], []).append(d)
+    return out
+
+
+def _held(array: DesignArray, modes: Sequence[Mode], n: int) -> list[tuple[int, list[int]]]:
+    """(group, the designs something holds it in by friction in their mode
+    at the start) of each group held in some design."""
+    out = []
+    for g in range(n):
+        designs: list[int] = []
+        for mode, index in _by_mode(modes, range(len(modes))).items():
+            w, k = array.take(np.array(index)).capacity(mode, g)
+            designs += [d for d, on in zip(index, w.any(axis=1) | (k != 0)) if on]
+        if designs:
+            out.append((g, sorted(designs)))
+    return out

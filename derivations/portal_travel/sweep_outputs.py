@@ -28,20 +28,31 @@ _PARAMETERS = ("P_m", "omega_n", "omega_0", "J_r", "n_m", "v_n", "lambda_p", "c_
 END = 4.0
 
 
-def _designs(values):
-    """(shape, one HybridRun per design) of the start-up."""
-    from .drive_train import fig11_design, total_load
+def _models(values):
+    """(shape, the start-up's model per design: hybrid.STARTUP's, its
+    derivation shared by the designs of one structure)."""
+    from .drive_train import fig11_design
     from .hybrid import rim_values
     from .startup import HOLDS
     names = list(values)
     arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
-    runs = []
+    models = []
     for index in np.ndindex(arrays[0].shape):
         p = {n: float(a[index]) for n, a in zip(names, arrays)}
-        # hybrid.STARTUP's run and output ("load"), its derivation shared by the designs
-        run = fig11_design(rim_values(p, p["phi_b"]), HOLDS).hybrid_run(END, rest=True)
-        runs.append(replace(run, output=total_load(run.system)))
-    return arrays[0].shape, runs
+        models.append(fig11_design(rim_values(p, p["phi_b"]), HOLDS))
+    return arrays[0].shape, models
+
+
+def _designs(values, together: bool = True):
+    """(shape, one HybridRun per design) of the start-up, its output ("load")
+    hybrid.STARTUP's; ``together``: the designs' starts found together
+    (``rest_runs``), else each design's own ``hybrid_run`` (the reference)."""
+    from crane_sym.components.model import rest_runs
+    from .drive_train import total_load
+    shape, models = _models(values)
+    runs = rest_runs(models, END) if together else \
+        [model.hybrid_run(END, rest=True) for model in models]
+    return shape, [replace(run, output=total_load(run.system)) for run in runs]
 
 
 #: The most phases of a design's start-up before it is stopped (a contact that
@@ -61,7 +72,7 @@ def _peak_startup_link_force(values, options) -> np.ndarray:
 
 def peak_per_design(values, options) -> np.ndarray:
     """:func:`_peak_startup_link_force` one design at a time (the reference)."""
-    shape, runs = _designs(values)
+    shape, runs = _designs(values, together=False)
     from crane_sym.mechanics.phase_table import largest
     return np.array([largest(r.solve(), r.system, r.output)[1] for r in runs]).reshape(shape)
 
