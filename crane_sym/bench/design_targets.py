@@ -7,7 +7,9 @@ each row printed with met / not met and the machine's load:
   block as a sweep's worker solves it (``crane_sym.sweep.grid.evaluate_block``);
 - a component file of 5 bodies (:data:`FILE_CASES`: ``bridge_travel.toml``,
   its two stiffnesses varied, 10⁴ designs in at most 2 s), one block through
-  ``crane_sym.components.designs.evaluate_block``, and the building of
+  ``crane_sym.components.designs.evaluate_block`` with Python's cycle
+  collector paused as a sweep's worker pauses it
+  (``crane_sym.sweep.compute.cycles_collected_after``), and the building of
   :data:`PROFILE_DESIGNS` of its designs' runs alone (``Designs.runs``: what
   of a block is per-design Python before the batched solve).
 
@@ -33,6 +35,7 @@ import numpy as np
 from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase, batched_cases
+from crane_sym.sweep.compute import cycles_collected_after
 from crane_sym.sweep.grid import evaluate_block
 
 __all__ = ["FILE_CASES", "FileSweepCase", "PROFILE_DESIGNS", "file_row", "markdown_rows",
@@ -141,7 +144,10 @@ def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
 
     def solver(n: int) -> Callable[[], np.ndarray]:
         values = _file_values(case, n)
-        return lambda: file_block(str(path), digest, case.output, values, cached=False)
+        def solve() -> np.ndarray:
+            with cycles_collected_after():             # as sweep.grid.evaluate_block
+                return file_block(str(path), digest, case.output, values, cached=False)
+        return solve
     solver(2)()                                              # read, derived
     say.step(f"  {name}: {case.n ** len(case.axes)} designs as one block ...")
     row = {"name": name, **_timed(solver(case.n)), "target": case.target}
@@ -149,7 +155,8 @@ def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
     say.step(f"  {name}: {PROFILE_DESIGNS} designs' runs built, not solved ...")
     block = designs(str(path), digest)
     values = _file_values(case, round(PROFILE_DESIGNS ** (1 / len(case.axes))))
-    row["construction"] = _timed(lambda: block.runs(case.output, values)[2])
+    with cycles_collected_after():
+        row["construction"] = _timed(lambda: block.runs(case.output, values)[2])
     say.step(f"  {name}: where the time goes ({PROFILE_DESIGNS} designs, cProfile) ...")
     row["profile"] = profile_top(solver(round(PROFILE_DESIGNS ** (1 / len(case.axes)))))
     return row

@@ -227,7 +227,8 @@ class Designs:
     def runs(self, output: str, values: Mapping[str, np.ndarray]
              ) -> tuple[tuple[int, ...], list[HybridRun], np.ndarray]:
         """(shape, one run a design with ``output``'s load as its output, each
-        link's reference for a factor, NaN where it has none) of a block
+        link's reference for a factor or an angle, NaN where it has none or
+        the output is a peak) of a block
         (``values`` as :meth:`largest` takes them): what the batched solver
         solves together, each design built from its structure's template and
         checked against the bound on its run's periods (ComponentError naming
@@ -259,8 +260,9 @@ class Designs:
                 load = _reported(system, model, index)
             else:
                 load = system.link_load(index)
-                ref = start_load(system, mode, x0, index)[1]
-                reference[k] = abs(ref) if ref else np.nan
+                if kind != "peak":               # what a factor or an angle divides by
+                    ref = start_load(system, mode, x0, index)[1]
+                    reference[k] = abs(ref) if ref else np.nan
             runs.append(HybridRun(system, mode, x0, t_end, model.schedule(), load))
         return shape, runs, reference
 

@@ -3,6 +3,8 @@
 Its mode: ``steps``, the step it is on (0 at the start, one more at the end
 of each hold time); its slope β the step's, the last one's from there on.
 """
+from itertools import accumulate
+
 import numpy as np
 import sympy as sp
 
@@ -49,7 +51,7 @@ def _slope(designs, mode, i: int) -> np.ndarray:
 EVENTS = Events(("steps",), lambda part, rest: {"steps": 0},
                 lambda part: ((f"{part.name} next step", "step"),), {"step": _next}, plain=frozenset({"step"}),
                 schedule=lambda part, rest: tuple((float(t), f"{part.name} next step")
-                                                  for t in np.cumsum(part.holds)),
+                                                  for t in accumulate(part.holds)),
                 role="slopes", value=_slope)
 
 
