@@ -118,6 +118,9 @@ class DesignArray:
     #: What :meth:`gather` asked of the whole array's designs, by key (shared by
     #: the arrays :meth:`take` makes).
     gathered: dict = field(default_factory=dict, repr=False)
+    #: The numbers of the modes asked of these designs (:meth:`linear`, not
+    #: changed by its callers; :meth:`take` starts afresh).
+    numbered: dict = field(default_factory=dict, repr=False)
 
     @classmethod
     def of(cls, systems: Sequence, shared: bool = True) -> "DesignArray":
@@ -164,8 +167,9 @@ class DesignArray:
     def take(self, index: np.ndarray) -> "DesignArray":
         """The designs at ``index`` (positions in this array)."""
         return replace(self, flanks=self.flanks[index],
-                       pieces=tuple(p[index] for p in self.pieces), rates=tuple(r[index] for r in self.rates), bounds=self.bounds[index],
-                       kappas=self.kappas[index], rows=self.rows[index])
+                       pieces=tuple(p[index] for p in self.pieces),
+                       rates=tuple(r[index] for r in self.rates), bounds=self.bounds[index],
+                       kappas=self.kappas[index], rows=self.rows[index], numbered={})
 
     def gather(self, key: Hashable, ask: Callable[[Any], Any]) -> np.ndarray:
         """``ask(system)`` of each design as one float array, (k, ...): asked
@@ -176,8 +180,11 @@ class DesignArray:
         return self.gathered[key][self.rows]
 
     def linear(self, mode: Mode):
-        """(M, D, K, f, E, G, S) of ``mode``, a leading axis of designs."""
-        return self.numbers(mode, self)
+        """(M, D, K, f, E, G, S) of ``mode``, a leading axis of designs (kept:
+        a mode's matrices, guards and loads each ask for them)."""
+        if mode not in self.numbered:
+            self.numbered[mode] = self.numbers(mode, self)
+        return self.numbered[mode]
 
     def contact(self, contacts: tuple[int, ...]) -> tuple[list[float], np.ndarray]:
         """(χ, δ): each gapped link in contact (1) or not (0), the flank it is on."""
