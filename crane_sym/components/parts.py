@@ -104,14 +104,15 @@ def value(owner: str, what: str, given: Given, expected: Dimension | None = None
     """``given`` (text with a unit, or a number in SI) as a :class:`Value`; with
     ``expected``, its dimension checked at once; 0 or a magnitude within
     :data:`MAGNITUDES`, else :class:`ComponentError`."""
-    if isinstance(given, Value):
-        result = given
-    elif isinstance(given, bool):
-        raise ComponentError(f"{owner}: {what} expects a quantity, got {given!r}")
-    elif isinstance(given, numbers.Real):
+    if type(given) in (float, int) or (   # a float first: every design of a sweep gives them
+            not isinstance(given, (bool, Value)) and isinstance(given, numbers.Real)):
         if not math.isfinite(float(given)):
             raise ComponentError(f"{owner}: {what} must be finite, got {given!r}")
         result = Value(float(given), None, repr(given))
+    elif isinstance(given, Value):
+        result = given
+    elif isinstance(given, bool):
+        raise ComponentError(f"{owner}: {what} expects a quantity, got {given!r}")
     elif isinstance(given, str):
         try:
             q = units.parse_quantity(given)

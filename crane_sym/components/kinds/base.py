@@ -133,8 +133,16 @@ class Symbolic:
     what: str
 
     def symbol(self, component: str) -> sp.Symbol:
-        """Its symbol for the component called ``component``."""
-        return sp.Symbol(f"{self.letter}_{component}", **{self.assumption: True})
+        """Its symbol for the component called ``component`` (made once: every
+        design of a sweep asks for it)."""
+        key = (self.letter, component, self.assumption)
+        if key not in _SYMBOLS:
+            _SYMBOLS[key] = sp.Symbol(f"{self.letter}_{component}", **{self.assumption: True})
+        return _SYMBOLS[key]
+
+
+#: The symbols :meth:`Symbolic.symbol` made, by (letter, component, assumption).
+_SYMBOLS: dict[tuple[str, str, str], sp.Symbol] = {}
 
 
 #: The lists of a mode's symbols a part acting on a body may join (fields of
