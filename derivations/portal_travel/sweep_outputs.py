@@ -5,12 +5,13 @@ The start-up of the travel drive with backlash in both links (Fig. 12, Table
 component model of ``drive_train.py`` (``hybrid.STARTUP``) on Table 1's hold
 times, and a
 block of the grid is solved at once by the batched solver
-(``crane_sym.mechanics.batched_runs``: each design's own rules, the closed
-forms, events and extrema batched; the two equal sides' repeated eigenvalues
-clustered). It agrees with the per-design run of each design to 1e-9
+(``crane_sym.mechanics.batched_runs``: the designs' starts from rest, their
+modes' matrices, guards, switches and loads for all the designs of one
+template at once, the closed forms, events and extrema batched; the two
+equal sides' repeated eigenvalues clustered). It agrees with the per-design run of each design to 1e-9
 (``tests/test_batched.py``). The backlash φ_b is no scene parameter (the
 scene's report runs each value of its options): give it with ``--at`` or
-``--vary``. Its block is Python-bound (each design assembled and switched in
+``--vary``. Its block is Python-bound (each design's parts assembled in
 Python, ``threads`` not set): a sweep runs its blocks on processes, a grid of
 at most 10⁴ designs as one block in this process (``crane_sym.sweep.blocks``).
 """
