@@ -10,9 +10,9 @@ output's ``threads`` flag:
   calls, and a block's Python per phase is paid once for all its designs,
   so blocks are few and large (at least :data:`THREAD_DESIGNS` designs, at
   most :data:`THREAD_MAX_DESIGNS`, ~6 kB a design while it runs) and run on
-  threads, which share them without pickling. Measured with 2 threads on
-  this 2-core machine (001's peaks): 50 % parallel efficiency at 10⁴
-  designs a sweep, 61 % at 2·10⁴, 71 % at 4·10⁴, 87 % at 9·10⁴.
+  threads, which share them without pickling. Their parallel efficiency on
+  two threads is measured by ``crane-sym bench --parallel`` (the README
+  quotes its run), not kept here.
 - Python-bound (003's start-up, a component file's designs: each design
   assembled and switched in Python): one block per worker, at most
   :data:`BATCH_DESIGNS` designs, on processes; a grid of at most that many
