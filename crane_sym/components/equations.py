@@ -41,7 +41,7 @@ from crane_sym.components import kinds
 from crane_sym.components.coupling_loads import load_of
 from crane_sym.components.first_order import rate_matrices
 from crane_sym.components.kinds.base import ROLES
-from crane_sym.components.rigid_drive import rigid_drive_force
+from crane_sym.components.rigid_drive import inertia_symbol, rigid_drive_force
 from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.lagrange import LagrangeEquations, lagrange_equations
 
@@ -323,8 +323,7 @@ def derive(assembly: Assembly) -> Equations:
     for g, q in zip(assembly.groups, coords):
         for (body, _), kappa in zip(g.members, g.factors):
             where[body.name] = (kappa, q)
-            J = _p(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}")
-            T += J * (kappa * q.diff(t)) ** 2 / 2
+            T += inertia_symbol(body) * (kappa * q.diff(t)) ** 2 / 2
     V = D = sp.Integer(0)
     twists, stretches, contact, flank = [], [], [], []
     for link in assembly.links:

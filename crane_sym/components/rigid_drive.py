@@ -8,9 +8,16 @@ from __future__ import annotations
 
 import sympy as sp
 
+from crane_sym.components.parts import Body
 from crane_sym.components.topology import Assembly
 
-__all__ = ["rigid_drive_force"]
+__all__ = ["inertia_symbol", "rigid_drive_force"]
+
+
+def inertia_symbol(body: Body) -> sp.Symbol:
+    """A body's inertia symbol, J_<name> where it rotates and m_<name> where it
+    moves along a line: the one name T and the rigid drive's J_red share."""
+    return sp.Symbol(f"{'J' if body.motion == 'rotating' else 'm'}_{body.name}", positive=True)
 
 
 def rigid_drive_force(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Expr]],
@@ -36,8 +43,6 @@ def rigid_drive_force(assembly: Assembly, where: dict[str, tuple[sp.Expr, sp.Exp
     J = sp.Integer(0)
     for g, group in enumerate(assembly.groups):
         for (member, _), kappa in zip(group.members, group.factors):
-            inertia = sp.Symbol(f"{'J' if member.motion == 'rotating' else 'm'}_{member.name}",
-                                positive=True)
-            J += inertia * (kappa * rho[g]) ** 2
+            J += inertia_symbol(member) * (kappa * rho[g]) ** 2
     held = sum((where[b][0] * rho[place[b][0]] * F for b, F in acting), sp.Integer(0))
     return sp.expand(J * a_law - held)
