@@ -262,3 +262,38 @@ def test_bench_with_an_unknown_id_makes_no_folder(tmp_path, capsys):
     assert main(["bench", "999", "--out", str(tmp_path / "bench")]) == 2
     assert not (tmp_path / "bench").exists()
     assert capsys.readouterr().out == ""
+
+
+def test_bench_designs_prints_its_targets_met_or_not(monkeypatch, tmp_path, capsys):
+    """``bench --designs`` (section (g) alone) on grids of 3 × 3 designs, the
+    profile on 9: a row per target with its limit and met / not met, where
+    the time goes beside a row not met (the file's, its limit set to 0 s), the
+    file's runs built alone, and its
+    Markdown written only into ``--out`` (no timing asserted: timings belong
+    to the bench, not to a test)."""
+    from dataclasses import replace
+
+    from crane_sym.bench import design_targets
+    cases = [(paper, replace(case, block_n=3)) for paper, case in design_targets.batched_cases()
+             if case.block_target is not None]
+    assert cases
+    monkeypatch.setattr(design_targets, "batched_cases", lambda: cases)
+    monkeypatch.setattr(design_targets, "FILE_CASES",
+                        tuple(replace(c, n=3, target=0.0) for c in design_targets.FILE_CASES))
+    monkeypatch.setattr(design_targets, "PROFILE_DESIGNS", 9)
+    out = tmp_path / "bench"
+    assert main(["bench", "--designs", "--quiet", "--out", str(out)]) == 0
+    text = capsys.readouterr().out
+    assert "## (g) 10⁴ designs of a model from components, one block (issue 39)" in text
+    rows = [line for line in text.splitlines() if line.startswith("| 9 designs of ")]
+    assert len(rows) == 2
+    assert "portal_travel peak_startup_link_force" in rows[0] and "| ≤ 1 s |" in rows[0]
+    assert "bridge_travel.toml drive_line.peak" in rows[1] and "| ≤ 0 s |" in rows[1]
+    assert rows[1].endswith("| not met |")              # a limit of 0 s: its profile follows
+    assert all(re.search(r"\| (met|not met) \|$", row) for row in rows)
+    assert all("NaN 0" in row for row in rows)
+    missed = sum(row.endswith("| not met |") for row in rows)
+    assert text.count("where the time goes (9 designs, cProfile") == missed >= 1
+    assert "bridge_travel.toml drive_line.peak: where the time goes" in text
+    assert "its 9 designs' runs built, not solved" in text
+    assert sorted(p.name for p in out.iterdir()) == ["bench_designs.md"]
