@@ -199,7 +199,8 @@ def rest_starts(models: Sequence, systems: Sequence[ComponentSystem],
         for mode, index in _by_mode([mode for mode, _ in starts], designs).items():
             moving = [d for d in index if starts[d][1][first.v(g)] != 0]
             for d in moving:                  # given a velocity: it slides that way
-                starts[d][0] = mode.moving(g, FORWARD if starts[d][1][first.v(g)] > 0 else BACKWARD)
+                speed = starts[d][1][first.v(g)]
+                starts[d][0] = mode.moving(g, FORWARD if speed > 0 else BACKWARD)
             still = [d for d in index if d not in moving]
             if still:
                 motions = settled(array.take(np.array(still)), mode, g,
@@ -226,10 +227,10 @@ def _by_mode(modes: Sequence[Mode], designs: Sequence[int]) -> dict[Mode, list[i
 def _held(array: DesignArray, modes: Sequence[Mode], n: int) -> list[tuple[int, list[int]]]:
     """(group, the designs something holds it in by friction in their mode
     at the start) of each group held in some design."""
-    out = []
+    out, by_mode = [], _by_mode(modes, range(len(modes))).items()
     for g in range(n):
         designs: list[int] = []
-        for mode, index in _by_mode(modes, range(len(modes))).items():
+        for mode, index in by_mode:
             w, k = array.take(np.array(index)).capacity(mode, g)
             designs += [d for d, on in zip(index, w.any(axis=1) | (k != 0)) if on]
         if designs:
