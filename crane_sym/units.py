@@ -205,8 +205,18 @@ def unit_text(text: str) -> str:
     return text[_NUMBER.match(text).end():].strip()
 
 
+#: :func:`_dependencies` by the identity of a dimension met before (a part's
+#: declared dimension is one object; SymPy's ``==`` on a cache hit costs ~10 µs).
+_BY_ID: dict[int, tuple[Dimension, tuple[tuple[str, int], ...]]] = {}
+
+
 def _deps(d: Dimension) -> dict[str, int]:
-    return dict(_dependencies(d))
+    kept = _BY_ID.get(id(d))
+    if kept is None or kept[0] is not d:
+        if len(_BY_ID) > 4096:          # parsed texts' dimensions are new objects
+            _BY_ID.clear()
+        kept = _BY_ID[id(d)] = (d, _dependencies(d))
+    return dict(kept[1])
 
 
 @functools.lru_cache(maxsize=1024)

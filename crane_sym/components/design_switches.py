@@ -54,6 +54,7 @@ def switched(array: DesignArray, mode: Mode, event: str, x: np.ndarray
         return [replace(mode, pieces=tuple(pieces))] * array.k, x
     x[:, system.v(i)] = 0.0
     if kind == "rest":
-        kept: dict[str, Mode] = {}
-        return [kept.setdefault(m, mode.moving(i, m)) for m in settled(array, mode, i, x)], x
+        motions = settled(array, mode, i, x)
+        kept = {m: mode.moving(i, m) for m in set(motions)}    # each new mode made once
+        return [kept[m] for m in motions], x
     return [mode.moving(i, FORWARD if kind == "slip+" else BACKWARD)] * array.k, x

@@ -50,7 +50,7 @@ from crane_sym.components.model import Model, start_load, started_at_rest
 from crane_sym.components.model_limits import check_cycles
 from crane_sym.components.templates import Templates, structure
 from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, Component,
-                                        ComponentError, value)
+                                        ComponentError, Value, value)
 from crane_sym.components.pruning import Scope
 from crane_sym.components.component_file import read_component_file
 from crane_sym.mechanics.phase_table import HybridRun, largest
@@ -121,6 +121,32 @@ def _text(value: float, field: Field) -> str | float:
     return repr(float(value)) + ("" if unit == "1" else f" {unit}")
 
 
+def _given(value: float, field: Field) -> Value | float:
+    """:func:`_text` as the parts' constructors read it (a :class:`Value`:
+    the same number, dimension and text, its unit parsed once a field)."""
+    text = _text(value, field)
+    if not isinstance(text, str):
+        return text
+    num, den, dimension = units._parse_unit(text[len(repr(float(value))):])
+    return Value(float(value) * num / den, dimension, text)
+
+
+def _read(kind: str, entry: dict) -> dict:
+    """A table ``entry`` with each quantity's text read once into a
+    :class:`Value` (a design's parts are built from it without parsing the
+    keys it does not change); a text that is no quantity stays text."""
+    forms = {k.name: k.form for k in by_table()[kind].keys}
+    out = dict(entry)
+    for key, v in entry.items():
+        if forms.get(key) == "quantity" and isinstance(v, str):
+            try:
+                q = units.parse_quantity(v)
+            except units.UnitError:
+                continue                      # a word ("steady"), or refused as before
+            out[key] = Value(q.value, q.dimension, v)
+    return out
+
+
 class Designs:
     """The designs of one component file (read and derived once)."""
 
@@ -140,6 +166,7 @@ class Designs:
         self.templates = Templates(self.model.name, self.model.title, self.model.scope,
                                    [self.model])
         self.fields = self._fields()
+        self._entries_read: dict[str, dict] = {}       # entries read once (:func:`_read`)
 
     def _fields(self) -> dict[str, Field]:
         a = self.model.assembly
@@ -196,13 +223,18 @@ class Designs:
                      if f.key != "reference" or (kind == "factor" and f.component == link))
 
     def parts(self, values: Mapping[str, float]) -> list:
-        """The components with ``values`` (field name -> SI) put in."""
+        """The components with ``values`` (field name -> SI) put in: the
+        tables they change built again from the entries read once
+        (:func:`_read`), each value given as a :class:`Value` (:func:`_given`)."""
         parts = list(self.model.components)
         changed: dict[str, dict] = {}
         for name, v in values.items():
             f = self.fields[name]
-            entry = changed.setdefault(f.component, dict(self.entries[f.component][1]))
-            entry[f.key] = _text(v, f)
+            if f.component not in changed:
+                if f.component not in self._entries_read:
+                    self._entries_read[f.component] = _read(*self.entries[f.component])
+                changed[f.component] = dict(self._entries_read[f.component])
+            changed[f.component][f.key] = _given(v, f)
         for component, entry in changed.items():
             kind = self.entries[component][0]
             parts[self.position[component]] = by_table()[kind].read(

@@ -110,13 +110,19 @@ class ComponentSystem:
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
         self.events.update(self.first_order.events())
-        self.numbers = ModeNumbers(self)
         # a mode's matrices and guards, kept: a batched sweep asks each design
         # for them once a phase (the copies handed out may be changed)
         self._matrices = memo(self._matrices_uncached)
         self._guards = memo(self._guards_uncached)
         self._link_loads = memo(self._link_load_uncached)
         self._twists: dict[str, np.ndarray] = {}
+
+    @cached_property
+    def numbers(self) -> ModeNumbers:
+        """Its modes' (M, D, K, f, E, G, S) from its own lambdified numbers:
+        made when this design is asked alone (the designs of a batch take the
+        template's form together, :class:`DesignArray`)."""
+        return ModeNumbers(self)
 
     def start(self, rest: bool) -> dict[str, tuple]:
         """Each field the kinds' parts own, with its values at the start

@@ -50,15 +50,37 @@ class Mode:
 
     def setting(self, **values: Any) -> "Mode":
         """This mode with the fields named set to ``values`` (each a sequence)."""
-        named = {k: tuple(v) for k, v in values.items() if k in _FIELDS}
-        own = dict(self.own)
-        own.update({k: tuple(v) for k, v in values.items() if k not in _FIELDS})
-        return replace(self, **named, own=tuple(sorted(own.items())))
+        given = tuple((k, tuple(v)) for k, v in values.items())
+        key = (self, "setting", given)
+        out = _DERIVED.get(key)
+        if out is None:
+            named = {k: v for k, v in given if k in _FIELDS}
+            own = dict(self.own)
+            own.update({k: v for k, v in given if k not in _FIELDS})
+            out = _derived(key, replace(self, **named, own=tuple(sorted(own.items()))))
+        return out
 
     def moving(self, g: int, motion: str) -> "Mode":
         """This mode with group ``g`` in ``motion``."""
-        return replace(self, motion=tuple(motion if j == g else m
-                                          for j, m in enumerate(self.motion)))
+        key = (self, g, motion)
+        out = _DERIVED.get(key)
+        if out is None:
+            out = _derived(key, replace(self, motion=tuple(
+                motion if j == g else m for j, m in enumerate(self.motion))))
+        return out
+
+
+#: The modes :meth:`Mode.setting` and :meth:`Mode.moving` made, by what they
+#: were made from: the designs of a sweep switch into a few modes, and a
+#: dataclass's ``replace`` costs several times a dict lookup.
+_DERIVED: dict[tuple, Mode] = {}
+
+
+def _derived(key: tuple, mode: Mode) -> Mode:
+    if len(_DERIVED) > 100_000:
+        _DERIVED.clear()
+    _DERIVED[key] = mode
+    return mode
 
 
 _FIELDS = {f.name for f in fields(Mode)} - {"own"}

@@ -35,7 +35,7 @@ from crane_sym.components.kinds.events import Events
 from crane_sym.components.kinds.roles import (ROLE_FLAGS, Check, PartQuantity, ends_moving,
                                               has_role)
 from crane_sym.components.loads import HENRY, OHM
-from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError
+from crane_sym.components.parts import VALUE_KINDS, Component, ComponentError, Value
 
 __all__ = ["FIXED_UNITS", "FORMS", "ROLES", "ROLE_FLAGS", "Acting", "Check", "Coupling", "Factor",
            "Key", "Kind", "PartQuantity", "Symbolic", "ends_moving", "failure", "has_role",
@@ -103,6 +103,8 @@ class Key:
                 raise ComponentError(f"{where}: {self.name} must be text, got {v!r}")
             return v
         if self.form == "number" and isinstance(v, (int, float)) and not isinstance(v, bool):
+            return v
+        if self.form == "quantity" and isinstance(v, Value):      # read already (a design's)
             return v
         if not isinstance(v, str):
             raise ComponentError(f"{where}: {self.name} needs a value with its unit as text, "
