@@ -165,3 +165,15 @@ def test_every_example_sweeps_its_links_as_the_per_design_run(path):
             swept = found.largest(name, axis)
             reference = found.per_design(name, axis, exact=False)
             assert np.max(np.abs(swept - reference)) <= 1e-9 * np.max(reference), name
+
+
+def test_a_rest_start_design_runs_on_the_schedule_of_the_file_run_alone():
+    """From rest, a brake that acts at once is engaged by the start: a sweep's
+    design is scheduled as the file's own run (``Model.hybrid_run``), with no
+    engaging at t = 0 left in its schedule."""
+    found = designs(EXAMPLES[[p.stem for p in EXAMPLES].index("bridge_travel")])
+    assert found.file.rest
+    _, runs, _ = found.runs("drive_line.peak", {})
+    alone = found.model.hybrid_run(found.file.duration, rest=True)
+    assert runs[0].schedule == alone.schedule
+    assert all(name != "rolling engages" for _, name in runs[0].schedule)

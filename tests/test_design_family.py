@@ -127,3 +127,23 @@ def test_the_kinds_hooks_answer_for_every_design_as_each_alone(found):
             w1, k1 = system.link_load(0)(mode)
             np.testing.assert_array_equal(w[d], w1)
             assert k[d] == k1
+
+
+def test_designs_are_one_family_only_where_they_share_one_template(found):
+    """Designs of the file's template make one family; a model derived on its
+    own (the same parts, its own equations) beside them does not, and the
+    starts from rest of such a mix are refused rather than stacked."""
+    from crane_sym.components.design_arrays import one_template, template
+    from crane_sym.components.model import Model
+    from crane_sym.components.start import rest_starts
+    models = [found.design({"holding.torque": v}) for v in (8e3, 25e3)]
+    systems = [ComponentSystem(m.equations) for m in models]
+    assert one_template(systems) and template(systems[0]) is not None
+    assert isinstance(ComponentSystem.family(systems), design_family.DesignFamily)
+    own = Model(models[0].components, "own")
+    alone = ComponentSystem(own.equations)
+    assert template(alone) is None
+    assert not one_template([*systems, alone]) and not one_template([alone])
+    assert ComponentSystem.family([*systems, alone]) is None
+    with pytest.raises(ValueError, match="not of one template"):
+        rest_starts([*models, own], [*systems, alone])

@@ -28,7 +28,7 @@ from crane_sym.components.mode_numbers import mode_linear
 from crane_sym.components.modes import BACKWARD, FORWARD, HELD, Mode, solved
 
 __all__ = ["DesignArray", "free_limits", "mode_guards", "mode_matrices", "net_load",
-           "pushes", "template_numbers"]
+           "one_template", "pushes", "template", "template_numbers"]
 
 #: The flattened lambdified form of each template's (M, D, K, f), by the
 #: identity of its ``Equations.linear`` (kept with it, so the key stays its own).
@@ -49,6 +49,21 @@ def _flat_form(equations) -> tuple[tuple[sp.Symbol, ...], Callable]:
                      list(equations.states), list(parameters)]
         kept = _FLAT[id(linear)] = (linear, parameters, sp.lambdify(arguments, entries, "numpy"))
     return kept[1], kept[2]
+
+
+def template(system) -> int | None:
+    """The template a design's system shares with the other designs of it (the
+    identity of its equations' lambdified form, ``Equations.for_design``), or
+    None for a model derived on its own."""
+    equations = system.equations
+    return id(equations.linear) if equations.shared else None
+
+
+def one_template(systems: Sequence) -> bool:
+    """Whether ``systems`` are designs of one template (:func:`template`):
+    what :class:`DesignArray` stacks."""
+    first = template(systems[0])
+    return first is not None and all(template(s) == first for s in systems)
 
 
 def template_numbers(systems: Sequence) -> Callable:

@@ -295,7 +295,7 @@ class Designs:
                 if kind != "peak":               # what a factor or an angle divides by
                     ref = start_load(system, mode, x0, index)[1]
                     reference[k] = abs(ref) if ref else np.nan
-            runs.append(HybridRun(system, mode, x0, t_end, model.schedule(), load))
+            runs.append(HybridRun(system, mode, x0, t_end, model.schedule(self.file.rest), load))
         return shape, runs, reference
 
     def largest(self, output: str, values: Mapping[str, np.ndarray]) -> np.ndarray:

@@ -49,7 +49,7 @@ from typing import Sequence
 import numpy as np
 
 from crane_sym.components.design_arrays import (DesignArray, free_limits, mode_guards,
-                                                mode_matrices, net_load)
+                                                mode_matrices, net_load, one_template)
 from crane_sym.components.design_family import DesignFamily
 from crane_sym.components.design_outputs import LinkLoad
 from crane_sym.components.design_switches import settled, switched
@@ -226,10 +226,8 @@ class ComponentSystem:
     def family(systems: Sequence["ComponentSystem"]) -> "DesignFamily | None":
         """The designs ``systems`` as one :class:`DesignFamily` where they come
         from one template (their equations' shared lambdified form), else None."""
-        first = systems[0].equations
-        if not all(isinstance(s, ComponentSystem) and s.equations.shared and
-                   s.equations.linear is first.linear and s.size == systems[0].size
-                   for s in systems):
+        if not (all(isinstance(s, ComponentSystem) for s in systems) and
+                one_template(systems)):
             return None
         return DesignFamily(DesignArray.of(systems))
 

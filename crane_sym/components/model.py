@@ -30,10 +30,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 from functools import cached_property, partial
-from typing import Sequence
+from typing import Hashable, Sequence
 
 import numpy as np
 
+from crane_sym.components.design_arrays import template
 from crane_sym.components.contacts import ContactPeak, contact_peaks
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import ComponentSystem, Mode
@@ -352,15 +353,14 @@ def started_at_rest(models: Sequence[Model]) -> list[tuple[Mode, np.ndarray, Com
         The designs.
     """
     systems = [ComponentSystem(model.equations) for model in models]
-    templates: dict[int, list[int]] = {}
-    for d, system in enumerate(systems):
-        shared = system.equations.shared
-        templates.setdefault(id(system.equations.linear) if shared else -1 - d, []).append(d)
+    templates: dict[Hashable, list[int]] = {}
+    for d, system in enumerate(systems):           # a model of its own: alone
+        templates.setdefault(template(system) or ("alone", d), []).append(d)
     starts: list = [None] * len(models)
     for index in templates.values():
         one = [systems[d] for d in index]
         found = rest_starts([models[d] for d in index], one,
-                            None if one[0].equations.shared else one[0].alone)
+                            None if template(one[0]) is not None else one[0].alone)
         for d, (mode, x0) in zip(index, found):
             starts[d] = (mode, x0, systems[d])
     return starts

@@ -16,7 +16,7 @@ from typing import Sequence
 import numpy as np
 
 from crane_sym.components.contacts import resting
-from crane_sym.components.design_arrays import DesignArray
+from crane_sym.components.design_arrays import DesignArray, one_template
 from crane_sym.components.design_switches import settled
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, ComponentSystem, Mode
 from crane_sym.components.initial import apply
@@ -181,8 +181,7 @@ def rest_starts(models: Sequence, systems: Sequence[ComponentSystem],
     """
     _no_steady_motor(models[0])
     if array is None:
-        linear = systems[0].equations.linear
-        if not all(s.equations.shared and s.equations.linear is linear for s in systems):
+        if not one_template(systems):
             raise ValueError("rest_starts: the designs are not of one template")
         array = DesignArray.of(systems)
     starts = []
