@@ -147,3 +147,30 @@ def test_designs_are_one_family_only_where_they_share_one_template(found):
     assert ComponentSystem.family([*systems, alone]) is None
     with pytest.raises(ValueError, match="not of one template"):
         rest_starts([*models, own], [*systems, alone])
+
+
+@pytest.mark.parametrize("event", ["motor_brakes engages", "motor_brakes ramp done",
+                                   "rolling engages"])
+def test_a_brakes_rule_for_the_designs_at_once_is_each_designs_own(event):
+    """A brake's engaging and its ramp's end (``Events.together``) switched for
+    the designs of one template at once, the group moving forwards, backwards
+    and at rest with a load within and past the brake: each design's mode and
+    state as its own rule (``ComponentSystem.switch``) gives them."""
+    from crane_sym.components.design_arrays import DesignArray
+    from crane_sym.components.design_switches import switched
+    bridge = designs(EXAMPLE.parent / "bridge_travel.toml")
+    models = [bridge.design({"motor_brakes.torque": v}) for v in (1.0, 300.0, 3e4)] * 2
+    systems = [bridge.start(m)[2] for m in models]
+    mode, x0, _ = bridge.start(models[0])
+    assert event in systems[0].together
+    x = np.tile(x0, (6, 1))
+    g = systems[0].place(systems[0].of_kind["brake"][1])[0]
+    x[:, systems[0].v(g)] = [2.0, -2.0, 0.0, 0.0, 0.0, 0.0]
+    x[:, systems[0].q(g)] = [0.0, 0.0, 0.0, 0.3, -0.3, 0.0]
+    array = DesignArray.of(systems)
+    modes, after = switched(array, mode, event, x.copy())
+    for d, system in enumerate(systems):
+        alone, state = system.switch(mode, event, 0.0, x[d].copy())
+        assert modes[d] == alone
+        np.testing.assert_array_equal(after[d], state)
+    assert len(set(modes)) >= (2 if event == "motor_brakes engages" else 1)

@@ -249,6 +249,16 @@ class DesignArray:
                         w[:, held[1]] += held[2]
         return w, k
 
+    def settled(self, mode: Mode, g: int, x: np.ndarray) -> list[str]:
+        """How group g moves from rest in each design's state x (k, size):
+        held while its load is within what holds it, else sliding the way
+        the load pushes."""
+        held = mode.moving(g, HELD)
+        (wn, kn), (wc, kc) = net_load(self, held, g), self.capacity(held, g)
+        net, cap = (wn * x).sum(axis=1) + kn, (wc * x).sum(axis=1) + kc
+        return [HELD if abs(float(a)) <= float(c) else FORWARD if float(a) > 0 else BACKWARD
+                for a, c in zip(net, cap)]
+
     def reaction(self, mode: Mode, j: int) -> tuple[np.ndarray, np.ndarray]:
         """The ground's reaction on the body of contact ``j`` as w·x + k per
         design: what holds its group at rest, R = s N/κ (0 off the ground)."""

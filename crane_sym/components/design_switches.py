@@ -4,8 +4,9 @@ load pushes), a held group slipping, a law's next piece. The new state is a
 simple function of x, so one pass over the designs' arrays does it. A
 kind's own rule that sets the mode from the mode alone (``Events.plain``: a
 contact closing, a characteristic's next step) is asked once for all the
-designs; the other rules of a kind and a first-order limit's switch are
-Python per design, and left to the caller (None).
+designs, and a rule a kind gives for k designs at once (``Events.together``:
+a brake engaging) on them all; the other rules of a kind and a first-order
+limit's switch are Python per design, and left to the caller (None).
 """
 from __future__ import annotations
 
@@ -13,20 +14,10 @@ from dataclasses import replace
 
 import numpy as np
 
-from crane_sym.components.design_arrays import DesignArray, net_load
-from crane_sym.components.modes import BACKWARD, FORWARD, HELD, Mode
+from crane_sym.components.design_arrays import DesignArray
+from crane_sym.components.modes import BACKWARD, FORWARD, Mode
 
-__all__ = ["settled", "switched"]
-
-
-def settled(array: DesignArray, mode: Mode, g: int, x: np.ndarray) -> list[str]:
-    """How group g moves from rest in each design's state x (k, size): held
-    while its load is within what holds it, else sliding the way the load pushes."""
-    held = mode.moving(g, HELD)
-    (wn, kn), (wc, kc) = net_load(array, held, g), array.capacity(held, g)
-    net, cap = (wn * x).sum(axis=1) + kn, (wc * x).sum(axis=1) + kc
-    return [HELD if abs(float(a)) <= float(c) else FORWARD if float(a) > 0 else BACKWARD
-            for a, c in zip(net, cap)]
+__all__ = ["switched"]
 
 
 def switched(array: DesignArray, mode: Mode, event: str, x: np.ndarray
@@ -38,6 +29,9 @@ def switched(array: DesignArray, mode: Mode, event: str, x: np.ndarray
     if event in system.plain:                 # the mode's rule, the same for every design
         rule, i = system.rules[event]
         return [rule(system, mode, i, x[0])[0]] * array.k, x
+    if event in system.together:              # a kind's rule for the designs at once
+        rule, i = system.together[event]
+        return rule(array, mode, i, x)
     if event in system.rules or system.events[event][0] not in ("rest", "slip+", "slip-",
                                                                "piece"):
         return None
@@ -54,7 +48,7 @@ def switched(array: DesignArray, mode: Mode, event: str, x: np.ndarray
         return [replace(mode, pieces=tuple(pieces))] * array.k, x
     x[:, system.v(i)] = 0.0
     if kind == "rest":
-        motions = settled(array, mode, i, x)
+        motions = array.settled(mode, i, x)
         kept = {m: mode.moving(i, m) for m in set(motions)}    # each new mode made once
         return [kept[m] for m in motions], x
     return [mode.moving(i, FORWARD if kind == "slip+" else BACKWARD)] * array.k, x

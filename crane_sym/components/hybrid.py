@@ -52,7 +52,7 @@ from crane_sym.components.design_arrays import (DesignArray, free_limits, mode_g
                                                 mode_matrices, net_load, one_template)
 from crane_sym.components.design_family import DesignFamily
 from crane_sym.components.design_outputs import LinkLoad
-from crane_sym.components.design_switches import settled, switched
+from crane_sym.components.design_switches import switched
 from crane_sym.components.equations import Equations
 from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
@@ -107,6 +107,8 @@ class ComponentSystem:
         self.rules: dict[str, tuple] = shared.rules
         #: The kinds' events whose rule sets the mode from the mode alone.
         self.plain: frozenset[str] = shared.plain
+        #: The kinds' events whose rule has a form for k designs at once.
+        self.together: dict[str, tuple] = shared.together
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
         self.events.update(self.first_order.events())
@@ -182,7 +184,7 @@ class ComponentSystem:
     def settled(self, mode: Mode, g: int, x: np.ndarray) -> str:
         """How group g moves from rest in state x: held while its load is
         within what holds it, else sliding the way the load pushes."""
-        return settled(self.alone, mode, g, np.asarray(x)[None])[0]
+        return self.alone.settled(mode, g, np.asarray(x)[None])[0]
 
     def rests(self, mode: Mode, g: int, x: np.ndarray) -> tuple[Mode, np.ndarray]:
         """Group g brought to rest (its speed set to 0), then :meth:`settled`."""

@@ -35,7 +35,9 @@ class Layout:
     ``events``: each group's event -> (kind, group); ``rules``: each part's
     event -> (its rule, the part's place among its kind's parts); ``plain``:
     the events whose rule sets the mode from the mode alone
-    (``Events.plain``); ``kinds``:
+    (``Events.plain``); ``together``: each part's event whose rule has a form
+    for k designs at once (``Events.together``) -> (that form, the part's
+    place); ``kinds``:
     the kinds it was built from (:data:`~crane_sym.components.kinds.KINDS`
     then, kept so that the ids its key holds stay theirs)."""
 
@@ -46,6 +48,7 @@ class Layout:
     events: dict[str, tuple[str, int]]
     rules: dict[str, tuple[Callable, int]]
     plain: frozenset[str]
+    together: dict[str, tuple[Callable, int]]
 
 
 #: Each group's events: (suffix of its name, kind).
@@ -89,6 +92,7 @@ def _built(assembly: Assembly) -> Layout:
     columns: dict[tuple[str, int], int] = {}
     rules: dict[str, tuple[Callable, int]] = {}
     plain: set[str] = set()
+    together: dict[str, tuple[Callable, int]] = {}
     for events, table in switching:
         for i, j in enumerate(of_kind[table]):
             for _ in range(events.states(items[j].part)):
@@ -97,7 +101,9 @@ def _built(assembly: Assembly) -> Layout:
                 rules[name] = (events.rules[key], i)
                 if key in events.plain:
                     plain.add(name)
+                if key in events.together:
+                    together[name] = (events.together[key], i)
     events = {group.name + suffix: (kind, g) for g, group in enumerate(assembly.groups)
               for suffix, kind in _GROUP_EVENTS}
     return Layout(tuple(kinds.KINDS), of_kind, switching, columns, events, rules,
-                  frozenset(plain))
+                  frozenset(plain), together)

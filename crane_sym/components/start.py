@@ -17,7 +17,6 @@ import numpy as np
 
 from crane_sym.components.contacts import resting
 from crane_sym.components.design_arrays import DesignArray, one_template
-from crane_sym.components.design_switches import settled
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, ComponentSystem, Mode
 from crane_sym.components.initial import apply
 from crane_sym.components.parts import DIMENSIONS, ComponentError, Given, value
@@ -202,8 +201,8 @@ def rest_starts(models: Sequence, systems: Sequence[ComponentSystem],
                 starts[d][0] = mode.moving(g, FORWARD if speed > 0 else BACKWARD)
             still = [d for d in index if d not in moving]
             if still:
-                motions = settled(array.take(np.array(still)), mode, g,
-                                  np.array([starts[d][1] for d in still]))
+                motions = array.take(np.array(still)).settled(
+                    mode, g, np.array([starts[d][1] for d in still]))
                 for d, motion in zip(still, motions):
                     starts[d][0] = mode.moving(g, motion)
     return [(resting(probe, mode, x), x) for probe, (mode, x) in zip(systems, starts)]

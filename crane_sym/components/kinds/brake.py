@@ -8,6 +8,7 @@ its group by friction up to |κ| M β (``friction_capacity``; so it plays the
 role ``holds at rest`` undeclared): the system's groups slide against it,
 and rest or slip again where their load says so.
 """
+import numpy as np
 import sympy as sp
 from sympy.physics.units import time
 
@@ -104,13 +105,18 @@ def _set(values: tuple, i: int, value) -> list:
     return out
 
 
-def _engage(system, mode, i: int, x):
-    """Engaged (ramping if a ramp): a free group then slides the way it
-    moves, or, at rest, is held while its load is within the capacity."""
+def _engaged(system, mode, i: int):
+    """``mode`` with brake i engaged (ramping if a ramp), and its group."""
     part = system.of_kind[TABLE][i].part
     mode = mode.setting(engaged=_set(mode.engaged, i, True),
                         ramping=_set(mode.ramping, i, part.build_up == "ramp"))
-    g = system.place(system.of_kind[TABLE][i])[0]
+    return mode, system.place(system.of_kind[TABLE][i])[0]
+
+
+def _engage(system, mode, i: int, x):
+    """Engaged (ramping if a ramp): a free group then slides the way it
+    moves, or, at rest, is held while its load is within the capacity."""
+    mode, g = _engaged(system, mode, i)
     if mode.motion[g] != FREE:
         return mode, x
     speed = x[system.v(g)]
@@ -119,10 +125,38 @@ def _engage(system, mode, i: int, x):
     return system.rests(mode, g, x)
 
 
+def _engage_designs(designs, mode, i: int, x):
+    """:func:`_engage` for the designs of one template at once (x: (k, size)):
+    the groups at rest settled together (``DesignArray.settled``)."""
+    system = designs.model
+    mode, g = _engaged(system, mode, i)
+    if mode.motion[g] != FREE:
+        return [mode] * designs.k, x
+    speed = x[:, system.v(g)]
+    sliding = {FORWARD: mode.moving(g, FORWARD), BACKWARD: mode.moving(g, BACKWARD)}
+    modes = [sliding[FORWARD if s > 0 else BACKWARD] if s else None for s in speed]
+    still = np.flatnonzero(speed == 0)
+    if still.size:
+        x[still, system.v(g)] = 0.0
+        for d, motion in zip(still, designs.take(still).settled(mode, g, x[still])):
+            modes[d] = mode.moving(g, motion)
+    return modes, x
+
+
 def _ramped(system, mode, i: int, x):
     """Its ramp done: β = 1 from here on."""
     x[_column(system, i)] = 1.0
-    return mode.setting(ramping=_set(mode.ramping, i, False)), x
+    return _ramp_done(mode, i), x
+
+
+def _ramped_designs(designs, mode, i: int, x):
+    """:func:`_ramped` for the designs of one template at once (x: (k, size))."""
+    x[:, _column(designs.model, i)] = 1.0
+    return [_ramp_done(mode, i)] * designs.k, x
+
+
+def _ramp_done(mode, i: int):
+    return mode.setting(ramping=_set(mode.ramping, i, False))
 
 
 def _let_go(system, mode, i: int, x):
@@ -141,6 +175,7 @@ def _let_go(system, mode, i: int, x):
 
 EVENTS = Events(("engaged", "ramping"), _start, _names,
                 {"engage": _engage, "ramped": _ramped, "let go": _let_go},
+                together={"engage": _engage_designs, "ramped": _ramped_designs},
                 schedule=_schedule, friction_capacity=_friction_capacity,
                 states=lambda part: 0 if part.build_up == "step" else 1, rates=_rates)
 

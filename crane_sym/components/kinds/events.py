@@ -58,7 +58,10 @@ class Events:
     its guards in a mode (:data:`GuardSpec`); ``rules``: the handler of each
     event key; ``plain``: the keys of the rules that set the mode from the
     mode alone and leave the state as it is (designs that fire such an event
-    in one mode go to one new mode together). The rest are what the generic
+    in one mode go to one new mode together); ``together``: for a key of
+    ``rules``, the same rule for the designs of one template at once,
+    ``(designs, mode, i, x (k, size)) -> (modes, x)``, where the new mode
+    rests on the state (a brake engaging on a group at rest). The rest are what the generic
     machinery asks of a kind that acts through it:
     ``friction_capacity(designs, mode, i)``, what the part
     can hold of its group's load by friction, (group, column of its own
@@ -77,6 +80,7 @@ class Events:
     names: Callable[[Component], tuple[tuple[str, str], ...]]
     rules: Mapping[str, Handler] = field(default_factory=dict)
     plain: frozenset[str] = frozenset()
+    together: Mapping[str, Callable] = field(default_factory=dict)
     schedule: Callable[[Component, bool], tuple[tuple[float, str], ...]] = _none
     guards: Callable[[Any, Any, int], tuple[GuardSpec, ...]] = _none
     friction_capacity: Callable[[Any, Any, int], Any] | None = None
