@@ -35,6 +35,7 @@ from typing import Hashable, Sequence
 import numpy as np
 
 from crane_sym.components.design_arrays import template
+from crane_sym.components.design_assembly import reassemble
 from crane_sym.components.contacts import ContactPeak, contact_peaks
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import ComponentSystem, Mode
@@ -241,7 +242,7 @@ class Model:
         model = object.__new__(Model)
         model.components = tuple(components)
         model.name, model.title, model.scope = self.name, self.title, self.scope
-        model.assembly = assemble(model.components)
+        model.assembly = reassemble(model.components, self.components, self.assembly)
         model.initial = shifts(model.components, model.assembly)
         model.equations = self.equations.for_design(model.assembly)
         return model

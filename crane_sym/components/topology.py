@@ -35,7 +35,8 @@ from crane_sym.components.acting import Load
 from crane_sym.components.parts import (DIMENSIONS, GROUND, ROTATING, Body, Component,
                                         ComponentError, ElasticLink)
 
-__all__ = ["Assembly", "Contact", "End", "Group", "Link", "Load", "assemble"]
+__all__ = ["Assembly", "Contact", "End", "Group", "Link", "Load", "assemble", "elastic_link",
+           "rigid_groups"]
 
 #: Relative tolerance of a loop of rigid ratios.
 LOOP_TOLERANCE = 1e-12
@@ -204,8 +205,8 @@ def assemble(components: Sequence[Component]) -> Assembly:
         joined.append(names)
     _kinds(bodies, rigid, elastic)
     _connected(bodies, rigid, elastic, joined)
-    groups, place = _groups(bodies, rigid)
-    links = tuple(_link(p, bodies, place) for p in elastic)
+    groups, place = rigid_groups(bodies, rigid)
+    links = tuple(elastic_link(p, bodies, place) for p in elastic)
     loads = tuple(kinds.of(p).check(p, bodies, components) for p in acting)
     steady = [l.part.label for l in loads if kinds.plays(l.part, "steady")]
     if len(steady) > 1:
@@ -318,8 +319,8 @@ def rigid_factor(part: Component) -> sp.Expr:
     return kinds.of(part).rigid(part)
 
 
-def _groups(bodies: dict[str, Body], rigid: list) -> tuple[tuple[Group, ...],
-                                                            dict[str, tuple[int, float, sp.Expr]]]:
+def rigid_groups(bodies: dict[str, Body], rigid: list
+                 ) -> tuple[tuple[Group, ...], dict[str, tuple[int, float, sp.Expr]]]:
     """Rigid groups by a walk over gears and drums, κ multiplied along the way
     (as a number and in the links' symbols); a link that closes a loop must
     agree with the product around it."""
@@ -369,8 +370,9 @@ def _groups(bodies: dict[str, Body], rigid: list) -> tuple[tuple[Group, ...],
     return tuple(groups), place
 
 
-def _link(part: ElasticLink, bodies: dict[str, Body],
-          place: dict[str, tuple[int, float]]) -> Link:
+def elastic_link(part: ElasticLink, bodies: dict[str, Body],
+                 place: dict[str, tuple[int, float]]) -> Link:
+    """The link of ``part`` with its values in SI, checked against its bodies."""
     a, b = part.ends
     if GROUND not in part.ends and place[a][0] == place[b][0]:
         raise ComponentError(f"{part.label} joins {bodies[a].label} and {bodies[b].label}, "
