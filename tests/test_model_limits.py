@@ -61,3 +61,32 @@ def test_a_files_design_beyond_the_period_bound_is_refused_naming_its_values(tmp
     assert message.startswith("design transmission.stiffness = 3e+07 kg*s^-2: run: duration "
                               "1000 s spans 1.34e+04 periods")
     assert "at most 10000" in message
+
+
+def test_a_blocks_cycle_check_is_each_designs_own():
+    """A block's designs checked in one stack (``first_beyond``): the first
+    design past the bound, among designs of two sizes, with the message
+    ``check_cycles`` gives that design alone; None where every one is within."""
+    from crane_sym.components import ComponentError
+    from crane_sym.components.model_limits import MAX_CYCLES, check_cycles, first_beyond
+    single = assemble([Mass("a", 10.0), ElasticLink("l", "ground", "a", 1e3, 0.0, 0.0)])
+    free = assemble([Mass("z", 1.0)])               # no link: no mode, never beyond
+    designs = [_chain(1.0, 2.0, 1e3, 5e2), single, _chain(1.0, 2.0, 1e2, 1e15),
+               _chain(1.0, 2.0, 1e-6, 1e15), _chain(1.0, 2.0, 1e3, 1e3)]
+    duration = 100.0
+    alone = []
+    for d, a in enumerate(designs):
+        try:
+            check_cycles(a, duration)
+        except ComponentError as exc:
+            alone.append((d, str(exc)))
+    # 2: the stiff link on a soft one, many periods; 3: a slow mode under 1e-12 of
+    # the fast one is not counted, so the fast one's periods are
+    assert [d for d, _ in alone] == [2, 3]
+    d, exc = first_beyond(designs, duration)
+    assert (d, str(exc)) == alone[0]
+    assert first_beyond([designs[0], single, designs[4]], duration) is None
+    for a in designs:                # the stack's slowest ω as each design's own, to 0.1 %
+        period = 2 * np.pi / frequencies(a).min()
+        assert first_beyond([a], MAX_CYCLES * period * 0.999) is None
+        assert first_beyond([free, a], MAX_CYCLES * period * 1.001)[0] == 1

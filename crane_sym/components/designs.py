@@ -47,7 +47,7 @@ from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.components.kinds import by_table
 from crane_sym.components.model import Model, start_load, started_at_rest
-from crane_sym.components.model_limits import check_cycles
+from crane_sym.components.model_limits import first_beyond
 from crane_sym.components.templates import Templates, structure
 from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, Component,
                                         ComponentError, Value, value)
@@ -273,16 +273,14 @@ class Designs:
         shape = arrays[0].shape
         runs, reference = [], np.full(arrays[0].size, np.nan)
         t_end = self.duration
-        models = []
-        for at in np.ndindex(shape):
-            given = {n: float(a[at]) for n, a in zip(names, arrays)}
-            models.append(self.design(given))
-            try:
-                check_cycles(models[-1].assembly, t_end)
-            except ComponentError as exc:
-                values = ", ".join(f"{n} = {v:g} {si_unit(self.fields[n].dimension)}"
-                                   for n, v in given.items())
-                raise ComponentError(f"design {values}: {exc}") from None
+        given = [{n: float(a[at]) for n, a in zip(names, arrays)} for at in np.ndindex(shape)]
+        models = [self.design(one) for one in given]
+        beyond = first_beyond([model.assembly for model in models], t_end)
+        if beyond is not None:
+            d, exc = beyond
+            values = ", ".join(f"{n} = {v:g} {si_unit(self.fields[n].dimension)}"
+                               for n, v in given[d].items())
+            raise ComponentError(f"design {values}: {exc}")
         starts = started_at_rest(models) if self.file.rest and \
             self.model.steady_motor is None else [self.start(model) for model in models]
         for k, (model, (mode, x0, system)) in enumerate(zip(models, starts)):

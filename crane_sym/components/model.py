@@ -42,7 +42,7 @@ from crane_sym.components.hybrid import ComponentSystem, Mode
 from crane_sym.components.initial import shifts
 from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.layout import layout
-from crane_sym.components.model_limits import MAX_PHASES, check_cycles
+from crane_sym.components.model_limits import MAX_PHASES, check_cycles, first_beyond
 from crane_sym.components.parts import ROTATING, Component, ComponentError, Given, value
 from crane_sym.components.pruning import Dropped, Scope, needed
 from crane_sym.components.start import rest_start, rest_starts, steady_start
@@ -383,7 +383,8 @@ def rest_runs(models: Sequence[Model], duration: Given, link: str | None = None
         Name of the elastic link whose load is the output.
     """
     t_end = models[0].end(duration, rest=True)
-    for model in models:
-        check_cycles(model.assembly, t_end)
+    beyond = first_beyond([model.assembly for model in models], t_end)
+    if beyond is not None:
+        raise beyond[1]
     return [model._hybrid(system, mode, x0, t_end, link, True)
             for model, (mode, x0, system) in zip(models, started_at_rest(models))]

@@ -43,7 +43,7 @@ from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
 __all__ = ["COUNTS", "MAX_BODIES", "MAX_BRAKES", "MAX_CYCLES", "MAX_GAPS", "MAX_LINKS", "MAX_PHASES",
-           "check_counts", "check_cycles", "frequencies"]
+           "check_counts", "check_cycles", "first_beyond", "frequencies"]
 
 #: The most bodies (inertias and masses) a model may declare.
 MAX_BODIES = 24
@@ -98,26 +98,40 @@ def frequencies(assembly: Assembly) -> np.ndarray:
     assembly : Assembly
         The assembled model.
     """
-    n = len(assembly.groups)
-    K, M = np.zeros((n, n)), np.diag([g.inertia for g in assembly.groups])
-    for link in assembly.links:
-        b = np.zeros(n)
-        for g, weight in assembly.weights(link):
-            b[g] += weight
-        K += link.stiffness * np.outer(b, b)
     if not assembly.links:
         return np.zeros(0)
-    inertia = np.diag(M)
+    K, inertia = _stiffness([assembly])
     if np.all(inertia > 0):
-        scale = 1.0 / np.sqrt(inertia)
-        squares = np.linalg.eigvalsh(K * np.outer(scale, scale))
+        squares = _scaled_squares(K, inertia)[0]
     else:
         with np.errstate(all="ignore"):
-            squares = scipy.linalg.eigvals(K, M).real
+            squares = scipy.linalg.eigvals(K[0], np.diag(inertia[0])).real
     squares = squares[np.isfinite(squares)]
     if squares.size == 0:
         return np.zeros(0)
     return np.sqrt(squares[squares > 1e-12 * squares.max()])
+
+
+def _stiffness(assemblies: Sequence[Assembly]) -> tuple[np.ndarray, np.ndarray]:
+    """(K, the groups' inertias) of designs with as many groups, (k, n, n)
+    and (k, n): Σ c b bᵀ over the links, in the order of the links."""
+    n = len(assemblies[0].groups)
+    K = np.zeros((len(assemblies), n, n))
+    inertia = np.array([[g.inertia for g in a.groups] for a in assemblies], dtype=float)
+    for d, a in enumerate(assemblies):
+        for link in a.links:
+            b = np.zeros(n)
+            for g, weight in a.weights(link):
+                b[g] += weight
+            K[d] += link.stiffness * np.outer(b, b)
+    return K, inertia
+
+
+def _scaled_squares(K: np.ndarray, inertia: np.ndarray) -> np.ndarray:
+    """ω² of M^-1/2 K M^-1/2 per design (every inertia > 0), one ``eigvalsh``
+    of the stack (each matrix decomposed alone: the same as one by one)."""
+    scale = 1.0 / np.sqrt(inertia)
+    return np.linalg.eigvalsh(K * (scale[:, :, None] * scale[:, None, :]))
 
 
 def check_cycles(assembly: Assembly, duration: float) -> None:
@@ -132,11 +146,47 @@ def check_cycles(assembly: Assembly, duration: float) -> None:
     duration : float
         The run's end, s.
     """
-    omega = frequencies(assembly)
-    if omega.size == 0:
-        return
-    cycles = duration * omega.min() / (2 * math.pi)
-    if cycles > MAX_CYCLES:
-        raise ComponentError(f"run: duration {duration:g} s spans {cycles:.3g} periods of the "
-                             f"slowest mode ({2 * math.pi / omega.min():.3g} s), at most "
-                             f"{MAX_CYCLES}; shorten the run or soften the stiffest link")
+    beyond = first_beyond([assembly], duration)
+    if beyond is not None:
+        raise beyond[1]
+
+
+def first_beyond(assemblies: Sequence[Assembly], duration: float
+                 ) -> tuple[int, ComponentError] | None:
+    """The first of ``assemblies`` (the designs of a sweep's block) whose run
+    of ``duration`` spans more than :data:`MAX_CYCLES` periods of its slowest
+    mode, with the error :func:`check_cycles` raises for it; None where none
+    does. Designs with as many groups, all with inertia, are decomposed in
+    one stack; the others by :func:`frequencies` one by one.
+
+    Parameters
+    ----------
+    assemblies : sequence of Assembly
+        The assembled designs.
+    duration : float
+        The runs' end, s.
+    """
+    slowest = np.full(len(assemblies), np.inf)
+    by_size: dict[int, list[int]] = {}
+    for d, a in enumerate(assemblies):
+        if a.links and all(g.inertia > 0 for g in a.groups):
+            by_size.setdefault(len(a.groups), []).append(d)
+        elif a.links:
+            omega = frequencies(a)
+            slowest[d] = omega.min() if omega.size else np.inf
+    for index in by_size.values():
+        squares = _scaled_squares(*_stiffness([assemblies[d] for d in index]))
+        with np.errstate(invalid="ignore"):
+            top = np.max(np.where(np.isfinite(squares), squares, -np.inf), axis=1)
+            kept = np.isfinite(squares) & (squares > 1e-12 * top[:, None])
+            least = np.min(np.where(kept, squares, np.inf), axis=1)
+        slowest[index] = np.where(np.isfinite(least), np.sqrt(least), np.inf)
+    for d, omega in enumerate(slowest):
+        if np.isfinite(omega):
+            cycles = duration * omega / (2 * math.pi)
+            if cycles > MAX_CYCLES:
+                return d, ComponentError(
+                    f"run: duration {duration:g} s spans {cycles:.3g} periods of the slowest "
+                    f"mode ({2 * math.pi / omega:.3g} s), at most {MAX_CYCLES}; shorten the "
+                    "run or soften the stiffest link")
+    return None
