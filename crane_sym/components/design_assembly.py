@@ -62,12 +62,13 @@ def reassemble(components: Sequence[Component], template: Sequence[Component],
 
 def _same_but_values(components: Sequence[Component], template: Sequence[Component]) -> bool:
     """Whether ``components`` are ``template``'s parts in order but for their
-    values: the same classes and words (:func:`_words`)."""
+    values: the same classes and words (:func:`_words`); a part the design
+    keeps as the template's is the same."""
     kept = _TEMPLATE_WORDS.get(id(template))
     if kept is None or kept[0] is not template:
         kept = _TEMPLATE_WORDS[id(template)] = (template, tuple(map(_words, template)))
     return len(components) == len(template) and \
-        all(type(p) is type(t) and _words(p) == w
+        all(p is t or (type(p) is type(t) and _words(p) == w)
             for p, t, w in zip(components, template, kept[1]))
 
 
@@ -80,8 +81,14 @@ def _words(part: Component) -> tuple[tuple[str, Any], ...] | None:
         own = vars(part)
     except TypeError:
         return None
-    out = tuple((k, v) for k, v in own.items()
-                if v is None or isinstance(v, (str, bool)) or
-                (isinstance(v, (tuple, list)) and all(isinstance(e, str) for e in v)))
+    out = []
+    for key, v in own.items():
+        kind = type(v)
+        if kind is str or kind is bool or v is None:
+            out.append((key, v))
+        elif (kind is tuple or kind is list) and all(type(e) is str for e in v):
+            out.append((key, tuple(v)))
     couples = kinds.of(part).couples
-    return out + (("joins", tuple(couples.bodies(part))),) if couples is not None else out
+    if couples is not None:
+        out.append(("joins", tuple(couples.bodies(part))))
+    return tuple(out)
