@@ -174,3 +174,26 @@ def test_a_brakes_rule_for_the_designs_at_once_is_each_designs_own(event):
         assert modes[d] == alone
         np.testing.assert_array_equal(after[d], state)
     assert len(set(modes)) >= (2 if event == "motor_brakes engages" else 1)
+
+
+def test_a_blocks_systems_are_freed_by_their_reference_counts():
+    """A block's designs solved together leave no reference cycle: once the
+    runs are dropped, every design's system is gone without the cycle
+    collector (which would otherwise walk a block's 10⁶ objects after it)."""
+    import gc
+    import weakref
+
+    from crane_sym.mechanics.batched_runs import largest_of_runs
+    bridge = designs(EXAMPLE.parent / "bridge_travel.toml")
+    gc.collect()
+    gc.disable()
+    try:
+        _, runs, _ = bridge.runs("drive_line.peak",
+                                 {"motor_brakes.torque": np.array([150.0, 300.0, 600.0])})
+        largest_of_runs(runs, magnitude=True)
+        systems = [weakref.ref(r.system) for r in runs]
+        models = [weakref.ref(r.output.system.equations) for r in runs]
+        del runs
+        assert all(s() is None for s in systems) and all(m() is None for m in models)
+    finally:
+        gc.enable()

@@ -58,7 +58,7 @@ from crane_sym.components.first_order import FirstOrder
 from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.layout import layout
 from crane_sym.components.mode_numbers import ModeNumbers
-from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode, memo
+from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["BACKWARD", "FORWARD", "FREE", "HELD", "ComponentSystem", "Mode"]
@@ -112,11 +112,12 @@ class ComponentSystem:
         for m, law in enumerate(self.laws):
             self.events[f"{law.name} next piece"] = ("piece", m)
         self.events.update(self.first_order.events())
-        # a mode's matrices and guards, kept: a batched sweep asks each design
-        # for them once a phase (the copies handed out may be changed)
-        self._matrices = memo(self._matrices_uncached)
-        self._guards = memo(self._guards_uncached)
-        self._link_loads = memo(self._link_load_uncached)
+        # a mode's matrices and guards, kept (the copies handed out may be
+        # changed) in plain dicts: nothing the system keeps refers back to it, so
+        # a sweep's block of 10⁴ systems is freed by reference counts, no cycle
+        # left for the collector
+        self._kept_matrices: dict[Mode, tuple[np.ndarray, np.ndarray]] = {}
+        self._kept_guards: dict[Mode, tuple[Guard, ...]] = {}
         self._twists: dict[str, np.ndarray] = {}
 
     @cached_property
@@ -206,6 +207,11 @@ class ComponentSystem:
         A, b = self._matrices(mode)
         return A.copy(), b.copy()
 
+    def _matrices(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
+        if mode not in self._kept_matrices:
+            self._kept_matrices[mode] = self._matrices_uncached(mode)
+        return self._kept_matrices[mode]
+
     def _matrices_uncached(self, mode: Mode) -> tuple[np.ndarray, np.ndarray]:
         """(A, b) of ``mode``: :func:`~crane_sym.components.design_arrays.mode_matrices`
         of this design alone."""
@@ -216,6 +222,11 @@ class ComponentSystem:
         """Contacts that change, sliding groups that come to rest, held groups
         that slide again."""
         return list(self._guards(mode))
+
+    def _guards(self, mode: Mode) -> tuple[Guard, ...]:
+        if mode not in self._kept_guards:
+            self._kept_guards[mode] = self._guards_uncached(mode)
+        return self._kept_guards[mode]
 
     def _guards_uncached(self, mode: Mode) -> tuple[Guard, ...]:
         def free() -> tuple[np.ndarray, np.ndarray]:
@@ -258,10 +269,7 @@ class ComponentSystem:
     def link_load(self, index: int):
         """The load of elastic link ``index`` per mode, as (w, k): the output of
         a run that :func:`crane_sym.mechanics.phase_table.largest` and
-        ``tabulate`` take (made once a link: an output asks for it per mode)."""
-        return self._link_loads(index)
-
-    def _link_load_uncached(self, index: int) -> LinkLoad:
+        ``tabulate`` take (not kept here: it refers to the system)."""
         return LinkLoad(self, (index,))
 
     def links_load(self, indices: Sequence[int]) -> LinkLoad:
