@@ -122,13 +122,13 @@ def _text(value: float, field: Field) -> str | float:
 
 
 def _given(value: float, field: Field) -> Value | float:
-    """:func:`_text` as the parts' constructors read it (a :class:`Value`:
-    the same number, dimension and text, its unit parsed once a field)."""
+    """:func:`_text` read as the parts' constructors read it (a :class:`Value`
+    of its number in SI, its dimension and the text)."""
     text = _text(value, field)
     if not isinstance(text, str):
         return text
-    num, den, dimension = units._parse_unit(text[len(repr(float(value))):])
-    return Value(float(value) * num / den, dimension, text)
+    q = units.parse_quantity(text)
+    return Value(q.value, q.dimension, text)
 
 
 def _read(kind: str, entry: dict) -> dict:
