@@ -149,31 +149,55 @@ def test_designs_are_one_family_only_where_they_share_one_template(found):
         rest_starts([*models, own], [*systems, alone])
 
 
+def _switched_together_and_alone(found, field, values, event, brake):
+    """``event`` switched for designs of ``found`` (``field`` at ``values``,
+    each twice) at once and one by one, brake ``brake``'s group moving
+    forwards, backwards and at rest (some at a twist): (modes together,
+    modes alone), the states checked equal."""
+    from crane_sym.components.design_arrays import DesignArray
+    from crane_sym.components.design_switches import switched
+    models = [found.design({field: v}) for v in values] * 2
+    systems = [found.start(m)[2] for m in models]
+    mode, x0, _ = found.start(models[0])
+    assert event in systems[0].together
+    k = len(models)
+    x = np.tile(x0, (k, 1))
+    g = systems[0].place(systems[0].of_kind["brake"][brake])[0]
+    x[:, systems[0].v(g)] = ([2.0, -2.0] + [0.0] * k)[:k]
+    x[:, systems[0].q(g)] += ([0.0] * 3 + [0.3, -0.3] + [0.0] * k)[:k]
+    modes, after = switched(DesignArray.of(systems), mode, event, x.copy())
+    alone = []
+    for d, system in enumerate(systems):
+        new, state = system.switch(mode, event, 0.0, x[d].copy())
+        alone.append(new)
+        np.testing.assert_array_equal(after[d], state)
+    return modes, alone
+
+
 @pytest.mark.parametrize("event", ["motor_brakes engages", "motor_brakes ramp done",
                                    "rolling engages"])
 def test_a_brakes_rule_for_the_designs_at_once_is_each_designs_own(event):
     """A brake's engaging and its ramp's end (``Events.together``) switched for
-    the designs of one template at once, the group moving forwards, backwards
-    and at rest with a load within and past the brake: each design's mode and
-    state as its own rule (``ComponentSystem.switch``) gives them."""
-    from crane_sym.components.design_arrays import DesignArray
-    from crane_sym.components.design_switches import switched
+    the designs of one template at once: each design's mode and state as its
+    own rule (``ComponentSystem.switch``) gives them. A ramp brake holds
+    nothing as it engages, so its group slides the way it moves or is pushed."""
     bridge = designs(EXAMPLE.parent / "bridge_travel.toml")
-    models = [bridge.design({"motor_brakes.torque": v}) for v in (1.0, 300.0, 3e4)] * 2
-    systems = [bridge.start(m)[2] for m in models]
-    mode, x0, _ = bridge.start(models[0])
-    assert event in systems[0].together
-    x = np.tile(x0, (6, 1))
-    g = systems[0].place(systems[0].of_kind["brake"][1])[0]
-    x[:, systems[0].v(g)] = [2.0, -2.0, 0.0, 0.0, 0.0, 0.0]
-    x[:, systems[0].q(g)] = [0.0, 0.0, 0.0, 0.3, -0.3, 0.0]
-    array = DesignArray.of(systems)
-    modes, after = switched(array, mode, event, x.copy())
-    for d, system in enumerate(systems):
-        alone, state = system.switch(mode, event, 0.0, x[d].copy())
-        assert modes[d] == alone
-        np.testing.assert_array_equal(after[d], state)
+    modes, alone = _switched_together_and_alone(bridge, "motor_brakes.torque",
+                                                (1.0, 300.0, 3e4), event, 1)
+    assert modes == alone
     assert len(set(modes)) >= (2 if event == "motor_brakes engages" else 1)
+
+
+def test_a_step_brake_engaging_holds_the_designs_within_it_as_each_alone(found):
+    """The holding brake (a step) engaging on the drum, for designs whose
+    torque holds the drum's load and designs whose torque does not: the
+    designs at rest held or sliding, each as its own rule says."""
+    from crane_sym.components.modes import BACKWARD, FORWARD, HELD
+    modes, alone = _switched_together_and_alone(found, "holding.torque",
+                                                (8e3, 18e3, 25e3, 40e3), "holding engages", 0)
+    assert modes == alone
+    g = found.design({"holding.torque": 8e3}).assembly.place["drum"][0]
+    assert {m.motion[g] for m in modes} >= {FORWARD, BACKWARD, HELD}
 
 
 def test_a_blocks_systems_are_freed_by_their_reference_counts():
