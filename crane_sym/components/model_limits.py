@@ -106,10 +106,15 @@ def frequencies(assembly: Assembly) -> np.ndarray:
     else:
         with np.errstate(all="ignore"):
             squares = scipy.linalg.eigvals(K[0], np.diag(inertia[0])).real
-    squares = squares[np.isfinite(squares)]
-    if squares.size == 0:
-        return np.zeros(0)
-    return np.sqrt(squares[squares > 1e-12 * squares.max()])
+    return np.sqrt(squares[_kept(squares)])
+
+
+def _kept(squares: np.ndarray) -> np.ndarray:
+    """Which ω² of each row count: the finite ones above 1e-12 of the row's
+    largest finite one (below it, eigvalsh's rounding)."""
+    finite = np.isfinite(squares)
+    top = np.max(np.where(finite, squares, -np.inf), axis=-1, keepdims=True)
+    return finite & (squares > 1e-12 * top)
 
 
 def _stiffness(assemblies: Sequence[Assembly]) -> tuple[np.ndarray, np.ndarray]:
@@ -176,11 +181,9 @@ def first_beyond(assemblies: Sequence[Assembly], duration: float
             slowest[d] = omega.min() if omega.size else np.inf
     for index in by_size.values():
         squares = _scaled_squares(*_stiffness([assemblies[d] for d in index]))
-        with np.errstate(invalid="ignore"):
-            top = np.max(np.where(np.isfinite(squares), squares, -np.inf), axis=1)
-            kept = np.isfinite(squares) & (squares > 1e-12 * top[:, None])
-            least = np.min(np.where(kept, squares, np.inf), axis=1)
-        slowest[index] = np.where(np.isfinite(least), np.sqrt(least), np.inf)
+        least = np.min(np.where(_kept(squares), squares, np.inf), axis=1)
+        with np.errstate(invalid="ignore"):          # a kept ω² < 0: NaN, as frequencies gives
+            slowest[index] = np.sqrt(least)
     for d, omega in enumerate(slowest):
         if np.isfinite(omega):
             cycles = duration * omega / (2 * math.pi)
