@@ -13,6 +13,13 @@ each row printed with met / not met and the machine's load:
   :data:`PROFILE_DESIGNS` of its designs' runs alone (``Designs.runs``: what
   of a block is per-design Python before the batched solve).
 
+Beside each block, the floor of its method: the eigen-decompositions that
+the batched closed forms made of it (the block's own distinct A of every
+mode, kept while it ran: ``crane_sym.mechanics.batched_forms.decomposed``),
+``np.linalg.eig`` of each stack and of its transposes timed alone
+(:func:`eig_floor`, the least of :data:`FLOOR_REPEATS`). A target below it
+cannot be met by this solver on this machine, however little the rest costs.
+
 Each block is solved once (a run of a minute, not three). Where its time goes
 comes from cProfile on a grid of :data:`PROFILE_DESIGNS` designs of the same
 case, solved afresh: the functions with the most cumulative time, as
@@ -35,16 +42,19 @@ import numpy as np
 from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase, batched_cases
+from crane_sym.mechanics.batched_forms import decomposed
 from crane_sym.sweep.compute import cycles_collected_after
 from crane_sym.sweep.grid import evaluate_block
 
-__all__ = ["FILE_CASES", "FileSweepCase", "PROFILE_DESIGNS", "file_row", "markdown_rows",
-           "paper_row", "profile_top", "run_rows"]
+__all__ = ["FILE_CASES", "FLOOR_REPEATS", "FileSweepCase", "PROFILE_DESIGNS", "eig_floor",
+           "file_row", "markdown_rows", "paper_row", "profile_top", "run_rows"]
 
 #: Designs of the profiled grid that says where a block's time goes.
 PROFILE_DESIGNS = 1024
 #: Entries of the profile a row keeps.
 TOP = 8
+#: Timings of the eigen-decompositions alone; the least is the floor.
+FLOOR_REPEATS = 3
 
 
 @dataclass(frozen=True)
@@ -94,14 +104,41 @@ def profile_top(solve: Callable[[], Any], top: int = TOP) -> list[tuple[str, flo
     return rows[:top]
 
 
+def eig_floor(stacks: list[np.ndarray], repeats: int = FLOOR_REPEATS) -> dict[str, Any]:
+    """The eigen-decompositions of a block alone: ``np.linalg.eig`` of each
+    stack of distinct A and of its transposes, as the batched closed forms
+    take them (right and left vectors), the least of ``repeats`` timings.
+
+    Parameters
+    ----------
+    stacks : list of ndarray, each (m, n, n)
+        The stacks a block decomposed (``batched_forms.decomposed``).
+    repeats : int
+        Timings; the least is kept (others on the machine only add time).
+    """
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        for A in stacks:
+            np.linalg.eig(A)
+            np.linalg.eig(np.swapaxes(A, 1, 2))
+        times.append(time.perf_counter() - start)
+    return {"seconds": min(times), "matrices": int(sum(A.shape[0] for A in stacks)),
+            "sizes": sorted({int(A.shape[1]) for A in stacks}), "stacks": len(stacks)}
+
+
 def _timed(solve: Callable[[], np.ndarray]) -> dict[str, Any]:
-    """One solve: wall and CPU seconds, the load average before and after."""
+    """One solve: wall and CPU seconds, the load average before and after,
+    and the floor of its eigen-decompositions (:func:`eig_floor`)."""
     before = os.getloadavg()[0]
-    start, cpu = time.perf_counter(), time.process_time()
-    values = solve()
-    return {"seconds": time.perf_counter() - start, "cpu_seconds": time.process_time() - cpu,
+    with decomposed() as stacks:
+        start, cpu = time.perf_counter(), time.process_time()
+        values = solve()
+        seconds, cpu_seconds = time.perf_counter() - start, time.process_time() - cpu
+    return {"seconds": seconds, "cpu_seconds": cpu_seconds,
             "load_before": before, "load_after": os.getloadavg()[0],
-            "designs": int(np.size(values)), "nan": int(np.isnan(values).sum())}
+            "designs": int(np.size(values)), "nan": int(np.isnan(values).sum()),
+            "eig_floor": eig_floor(stacks)}
 
 
 def paper_row(paper: str, case: BatchedBenchCase) -> dict[str, Any]:
@@ -209,6 +246,19 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
                      f"{r['nan']}); load {r['load_before']:.1f} before, "
                      f"{r['load_after']:.1f} after | ≤ {r['target']:g} s | "
                      f"{'met' if r['met'] else 'not met'} |")
+    for r in rows:
+        floor = r.get("eig_floor")
+        if floor and floor["matrices"]:
+            below = floor["seconds"] > r["target"]
+            lines.append(f"\n{r['name']}: the eigen-decompositions alone, the floor of the "
+                         f"batched closed forms: {floor['matrices']} distinct A of size "
+                         f"{', '.join(map(str, floor['sizes']))} in {floor['stacks']} stacks "
+                         f"(one a mode and round), ``np.linalg.eig`` of each and of its "
+                         f"transpose: {floor['seconds']:.2f} s, least of {FLOOR_REPEATS}; "
+                         + (f"the target of {r['target']:g} s is below it: this solver "
+                            "cannot meet it on this machine, whatever the rest costs."
+                            if below else f"{floor['seconds'] / r['target']:.0%} of the "
+                            f"target of {r['target']:g} s."))
     for r in rows:
         if "construction" in r:
             c = r["construction"]
