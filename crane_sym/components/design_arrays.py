@@ -27,7 +27,7 @@ from crane_sym.components.first_order import fill_rates, hold_limits, limit_guar
 from crane_sym.components.mode_numbers import mode_linear
 from crane_sym.components.modes import BACKWARD, FORWARD, HELD, Mode, solved
 
-__all__ = ["DesignArray", "free_limits", "mode_guards", "mode_matrices", "net_load",
+__all__ = ["DesignArray", "evaluated", "free_limits", "mode_guards", "mode_matrices", "net_load",
            "one_template", "pushes", "template", "template_numbers"]
 
 #: The flattened lambdified form of each template's (M, D, K, f), by the
@@ -102,6 +102,19 @@ def _evaluator(fn: Callable, given: np.ndarray, equations) -> Callable:
     return evaluate
 
 
+def evaluated(system, evaluate: Callable) -> Callable:
+    """A :class:`DesignArray`'s ``numbers`` from ``evaluate``, the designs'
+    numbers as :func:`template_numbers` gives them (``system``: one of them)."""
+    counts = (len(system.equations.friction), len(system.laws), len(system.equations.states))
+
+    def numbers(mode: Mode, array: "DesignArray"):
+        chi, delta = array.contact(mode.contacts)
+        on, slopes = array.inputs(mode)
+        return mode_linear(lambda *a, **k: evaluate(*a, **k, rows=array.rows),
+                           chi, delta, on, slopes, counts)
+    return numbers
+
+
 def _padded(pieces: Sequence[Sequence[tuple[float, tuple[float, ...]]]], width: int
             ) -> np.ndarray:
     """Each design's pieces of a law, (designs, pieces, ``width``): a piece's
@@ -120,7 +133,10 @@ class DesignArray:
     pieces, first-order rates and bounds, and the κ of each group a speed law
     moves. :meth:`take` keeps some of the designs: ``rows`` are their places
     among ``systems``, the ``ComponentSystem`` of every design of the whole
-    array (not sliced: :meth:`gather` asks them once)."""
+    array (not sliced: :meth:`gather` asks them once). Designs that are one
+    system but for some of its parameters
+    (:class:`~crane_sym.components.design_block.DesignBlock`) hold that
+    system alone and their count, ``designs``."""
 
     systems: tuple
     numbers: Callable                       # (mode, array) -> (M, D, K, f, E, G, S)
@@ -136,6 +152,9 @@ class DesignArray:
     #: The numbers of the modes asked of these designs (:meth:`linear`, not
     #: changed by its callers; :meth:`take` starts afresh).
     numbered: dict = field(default_factory=dict, repr=False)
+    #: How many designs share ``systems[0]`` but for their parameters (a
+    #: ``DesignBlock``); None: one system a design.
+    designs: int | None = None
 
     @classmethod
     def of(cls, systems: Sequence, shared: bool = True) -> "DesignArray":
@@ -145,15 +164,7 @@ class DesignArray:
         systems = tuple(systems)
         first = systems[0]
         if shared:
-            evaluate = template_numbers(systems)
-            counts = (len(first.equations.friction), len(first.laws),
-                      len(first.equations.states))
-
-            def numbers(mode: Mode, array: "DesignArray"):
-                chi, delta = array.contact(mode.contacts)
-                on, slopes = array.inputs(mode)
-                return mode_linear(lambda *a, **k: evaluate(*a, **k, rows=array.rows),
-                                   chi, delta, on, slopes, counts)
+            numbers = evaluated(first, template_numbers(systems))
         else:
             def numbers(mode: Mode, array: "DesignArray"):
                 return tuple(m[None] for m in first.linear(mode))
@@ -191,7 +202,11 @@ class DesignArray:
         of the whole array's designs the first time ``key`` is met, kept, and
         sliced to this array's designs after."""
         if key not in self.gathered:
-            self.gathered[key] = np.array([ask(s) for s in self.systems], dtype=float)
+            if self.designs is None:
+                self.gathered[key] = np.array([ask(s) for s in self.systems], dtype=float)
+            else:                                # one system: asked once, every design's
+                self.gathered[key] = np.repeat(np.array([ask(self.systems[0])], dtype=float),
+                                               self.designs, axis=0)
         return self.gathered[key][self.rows]
 
     def linear(self, mode: Mode):

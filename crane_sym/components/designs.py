@@ -301,14 +301,55 @@ class Designs:
         of one shape, or scalars), the designs solved together."""
         from crane_sym.mechanics.batched_runs import largest_of_runs
         kind = self.outputs()[output][1]
-        shape, runs, reference = self.runs(output, values)
-        result = largest_of_runs(runs, magnitude=True)
+        shape, result = self._block(output, values)
+        if result is None:
+            shape, runs, reference = self.runs(output, values)
+            result = largest_of_runs(runs, magnitude=True)
         if result.capped.any():
             k = int(np.flatnonzero(result.capped)[0])
             raise RuntimeError(f"{output}: more than {MAX_PHASES} phases in the run of design {k} "
                                "of a block")
         peak = np.abs(result.value)
         return (peak if kind in ("peak", "reaction", "part") else peak / reference).reshape(shape)
+
+    def _block(self, output: str, values: Mapping[str, np.ndarray]):
+        """(shape, the batched result) of a link's peak where the designs
+        differ only in values the equations alone read, solved as one
+        :class:`~crane_sym.components.design_block.DesignBlock` from rest
+        (the numbers :meth:`runs` gives, no model a design); (shape, None)
+        where they do not, or a value breaks its sign (the designs built one
+        by one then say which)."""
+        from crane_sym.components.design_block import plain_block
+        index, kind, _ = self.outputs()[output]
+        names = list(values)
+        arrays = [a.ravel() for a in np.broadcast_arrays(
+            *[np.asarray(values[n], dtype=float) for n in names])] if names else []
+        shape = np.broadcast_shapes(*[np.shape(values[n]) for n in names])
+        if kind != "peak" or not self.file.rest or not names or \
+                not all(_keeps(a, self.fields[n].sign) for n, a in zip(names, arrays)):
+            return shape, None
+
+        def given(d: int) -> dict[str, float]:
+            return {n: float(a[d]) for n, a in zip(names, arrays)}
+        model = self.design(given(0))
+        block = plain_block(model, {(self.fields[n].component, self.fields[n].key): a
+                                    for n, a in zip(names, arrays)})
+        if block is None:
+            return shape, None
+        t_end = self.duration
+        beyond = block.first_beyond(t_end)
+        if beyond is not None:
+            d, exc = beyond
+            said = ", ".join(f"{n} = {v:g} {si_unit(self.fields[n].dimension)}"
+                             for n, v in given(d).items())
+            raise ComponentError(f"design {said}: {exc}")
+
+        def build(d: int, mode, x0) -> HybridRun:           # design d's own run
+            own = self.design(given(d))
+            system = ComponentSystem(own.equations)
+            return HybridRun(system, mode, x0, t_end, own.schedule(True),
+                             system.link_load(index))
+        return shape, block.largest((index,), t_end, build, magnitude=True)
 
     def per_design(self, output: str, values: Mapping[str, np.ndarray],
                    exact: bool | None = None) -> np.ndarray:
@@ -337,6 +378,14 @@ class Designs:
             out[at] = abs(peak.value) if kind == "peak" else (
                 abs(peak.factor) if peak.factor is not None else math.nan)
         return out
+
+
+def _keeps(values: np.ndarray, sign: str) -> bool:
+    """Whether every value is finite and keeps ``sign`` (a field's)."""
+    with np.errstate(invalid="ignore"):
+        held = {"positive": values > 0, "nonnegative": values >= 0,
+                "nonzero": values != 0}.get(sign, True)
+    return bool(np.all(np.isfinite(values)) and np.all(held))
 
 
 def _reported(system: ComponentSystem, model: Model, index: int):

@@ -241,11 +241,11 @@ class Equations:
         design.__dict__["_lambdified"] = self._lambdified
         design.__dict__["layouts"] = self.layouts
         # the links' symbolic loads too (SymPy's diff: a quarter of a design's assembly)
-        design.__dict__["_link_coefficients"] = self._link_coefficients
+        design.__dict__["link_derivatives"] = self.link_derivatives
         return design
 
     @cached_property
-    def _link_coefficients(self) -> tuple[tuple[sp.Expr, sp.Expr, sp.Expr], ...]:
+    def link_derivatives(self) -> tuple[tuple[sp.Expr, sp.Expr, sp.Expr], ...]:
         """Each link's load on a flank (χ = 1) as ∂F/∂u, ∂F/∂u̇ and ∂F/∂δ: it is
         affine in the three (shared by every design of the model)."""
         out = []
@@ -274,7 +274,7 @@ class Equations:
             Values solved later (a steady motor's torque).
         """
         values = {**self.values, **(extra or {})}
-        return tuple(float(c.xreplace(values)) for c in self._link_coefficients[index])
+        return tuple(float(c.xreplace(values)) for c in self.link_derivatives[index])
 
     def latex(self) -> list[str]:
         """The equations of motion in LaTeX, one per coordinate, as a mechanics

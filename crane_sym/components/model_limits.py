@@ -43,7 +43,8 @@ from crane_sym.components.topology import Assembly
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
 __all__ = ["COUNTS", "MAX_BODIES", "MAX_BRAKES", "MAX_CYCLES", "MAX_GAPS", "MAX_LINKS", "MAX_PHASES",
-           "check_counts", "check_cycles", "first_beyond", "frequencies"]
+           "check_counts", "check_cycles", "first_beyond", "first_beyond_stiffness",
+           "frequencies"]
 
 #: The most bodies (inertias and masses) a model may declare.
 MAX_BODIES = 24
@@ -180,16 +181,46 @@ def first_beyond(assemblies: Sequence[Assembly], duration: float
             omega = frequencies(a)
             slowest[d] = omega.min() if omega.size else np.inf
     for index in by_size.values():
-        squares = _scaled_squares(*_stiffness([assemblies[d] for d in index]))
-        least = np.min(np.where(_kept(squares), squares, np.inf), axis=1)
-        with np.errstate(invalid="ignore"):          # a kept ω² < 0: NaN, as frequencies gives
-            slowest[index] = np.sqrt(least)
-    for d, omega in enumerate(slowest):
-        if np.isfinite(omega):
-            cycles = duration * omega / (2 * math.pi)
-            if cycles > MAX_CYCLES:
-                return d, ComponentError(
-                    f"run: duration {duration:g} s spans {cycles:.3g} periods of the slowest "
-                    f"mode ({2 * math.pi / omega:.3g} s), at most {MAX_CYCLES}; shorten the "
-                    "run or soften the stiffest link")
-    return None
+        slowest[index] = _slowest(*_stiffness([assemblies[d] for d in index]))
+    return _past(slowest, duration)
+
+
+def first_beyond_stiffness(K: np.ndarray, inertia: np.ndarray, duration: float
+                           ) -> tuple[int, ComponentError] | None:
+    """:func:`first_beyond` of designs given by their K and their groups'
+    inertias, (k, n, n) and (k, n), every inertia > 0 (a block of designs
+    that differ only in their links' stiffness: no assembly a design).
+
+    Parameters
+    ----------
+    K, inertia : ndarray
+        Σ c b bᵀ over the links, in the order of the links, and the inertias.
+    duration : float
+        The runs' end, s.
+    """
+    return _past(_slowest(K, inertia), duration)
+
+
+def _slowest(K: np.ndarray, inertia: np.ndarray) -> np.ndarray:
+    """ω of the slowest mode that counts (:func:`_kept`) per design."""
+    squares = _scaled_squares(K, inertia)
+    least = np.min(np.where(_kept(squares), squares, np.inf), axis=1)
+    with np.errstate(invalid="ignore"):              # a kept ω² < 0: NaN, as frequencies gives
+        return np.sqrt(least)
+
+
+def _past(slowest: np.ndarray, duration: float) -> tuple[int, ComponentError] | None:
+    """The first design whose slowest ω spans more than :data:`MAX_CYCLES`
+    periods in ``duration``, with its error."""
+    with np.errstate(invalid="ignore"):
+        past = np.flatnonzero(np.isfinite(slowest) &
+                              (duration * slowest / (2 * math.pi) > MAX_CYCLES))
+    if not past.size:
+        return None
+    d = int(past[0])
+    omega = float(slowest[d])
+    cycles = duration * omega / (2 * math.pi)
+    return d, ComponentError(
+        f"run: duration {duration:g} s spans {cycles:.3g} periods of the slowest "
+        f"mode ({2 * math.pi / omega:.3g} s), at most {MAX_CYCLES}; shorten the "
+        "run or soften the stiffest link")

@@ -183,14 +183,17 @@ def rest_starts(models: Sequence, systems: Sequence[ComponentSystem],
         if not one_template(systems):
             raise ValueError("rest_starts: the designs are not of one template")
         array = DesignArray.of(systems)
-    starts = []
+    starts, made = [], {}
     for model, probe in zip(models, systems):
-        mode = start_mode(probe, tuple(0 if l.part.opens else 1 for l in probe.backlash),
-                          len(model.assembly.groups), True)
-        x = np.zeros(probe.size)
-        for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
-            x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa
-        starts.append(list(apply(model.initial, probe, mode, x)))
+        key = (id(model), id(probe))                 # designs of a block share both
+        if key not in made:
+            mode = start_mode(probe, tuple(0 if l.part.opens else 1 for l in probe.backlash),
+                              len(model.assembly.groups), True)
+            x = np.zeros(probe.size)
+            for k, (g, kappa) in probe.moved.items():    # a speed law starts at its own value
+                x[probe.v(g)] = probe.laws[k].value_at(0.0) / kappa
+            made[key] = tuple(apply(model.initial, probe, mode, x))
+        starts.append([made[key][0], made[key][1].copy()])
     held = _held(array, [mode for mode, _ in starts], len(models[0].assembly.groups))
     first = systems[0]
     for g, designs in held:
@@ -205,7 +208,8 @@ def rest_starts(models: Sequence, systems: Sequence[ComponentSystem],
                     mode, g, np.array([starts[d][1] for d in still]))
                 for d, motion in zip(still, motions):
                     starts[d][0] = mode.moving(g, motion)
-    return [(resting(probe, mode, x), x) for probe, (mode, x) in zip(systems, starts)]
+    return [(resting(probe, mode, x) if probe.contacts else mode, x)
+            for probe, (mode, x) in zip(systems, starts)]
 
 
 def _no_steady_motor(model) -> None:

@@ -16,6 +16,12 @@ in the mode at once. Elsewhere the Python calls cost per design and phase
 what a model written for arrays (a paper's own family of designs) saves;
 the closed forms and the search are shared. The designs' guards in a mode must agree in number, names and
 directions (they do for designs of one model).
+
+Designs that need no run of their own to be solved together (a block of a
+component template whose designs differ only in values the family holds as
+arrays) give the family and their starts instead
+(:func:`largest_of_starts`); a design's own run is then built only where the
+per-design route takes it (``runs[i]`` of a sequence that builds on demand).
 """
 from __future__ import annotations
 
@@ -26,21 +32,26 @@ import numpy as np
 from crane_sym.mechanics.batched import BatchedGuard, BatchedLargest, largest_batched
 from crane_sym.mechanics.phase_table import HybridRun
 
-__all__ = ["RunFamily", "largest_of_runs"]
+__all__ = ["RunFamily", "largest_of_runs", "largest_of_starts"]
 
 
 class RunFamily:
-    """The runs as one family: mode codes are given to modes as they appear."""
+    """The runs as one family: mode codes are given to modes as they appear.
+    ``family`` and ``output`` given (designs that are one family without a
+    run each, :func:`largest_of_starts`), ``runs`` is asked only for the
+    designs the per-design route takes."""
 
-    def __init__(self, runs: Sequence[HybridRun]) -> None:
-        self.runs = list(runs)
-        self.n = len(np.asarray(self.runs[0].x0))
-        family = getattr(self.runs[0].system, "family", None)
-        #: The systems as one family, or None (each asked in turn).
-        self.family = family([r.system for r in self.runs]) if family else None
-        #: The runs' outputs for designs at once where the family offers it, else None.
-        self._output = (self.family.outputs([r.output for r in self.runs])
-                        if self.family is not None else None)
+    def __init__(self, runs: Sequence[HybridRun], family=None, output=None) -> None:
+        if family is not None:
+            self.runs, self.family, self._output = runs, family, output
+        else:
+            self.runs = list(runs)
+            made = getattr(self.runs[0].system, "family", None)
+            #: The systems as one family, or None (each asked in turn).
+            self.family = made([r.system for r in self.runs]) if made else None
+            #: The runs' outputs for designs at once where the family offers it, else None.
+            self._output = (self.family.outputs([r.output for r in self.runs])
+                            if self.family is not None else None)
         self._modes: list[Hashable] = []
         self._codes: dict[Hashable, int] = {}
 
@@ -135,6 +146,41 @@ def largest_of_runs(runs: Sequence[HybridRun], **options) -> BatchedLargest:
     t_end = np.array([r.t_end for r in runs], dtype=float)
     return largest_batched(family, modes, x0, t_end, [name for name, _ in columns], times,
                            **options)
+
+
+def largest_of_starts(family: RunFamily, modes: Sequence[Hashable], x0: np.ndarray,
+                      t_end: float, schedule: Sequence, **options) -> BatchedLargest:
+    """:func:`largest_of_runs` of designs given as one family and their starts:
+    each design's first mode and state, one end and one schedule for all.
+    What it returns is what :func:`largest_of_runs` returns for the designs'
+    runs (``family.runs[i]``, asked only where the per-design route takes
+    design i).
+
+    Parameters
+    ----------
+    family : RunFamily
+        The designs, made with their family and output.
+    modes : sequence
+        Each design's first mode.
+    x0 : (N, n)
+        Each design's state at t = 0.
+    t_end : float
+        The runs' end.
+    schedule : sequence of (time, name)
+        Events known in advance, the same for every design.
+    **options
+        As for :func:`largest_of_runs`.
+    """
+    columns = [key for _, key in _numbered(schedule)]
+    order = sorted(range(len(columns)), key=lambda j: columns[j])
+    given = [t for t, _ in _numbered(schedule)]
+    times = np.broadcast_to(np.array([given[j] for j in order], dtype=float),
+                            (len(modes), len(columns)))
+    seen: dict[int, int] = {}                    # most designs share a few modes
+    codes = np.array([seen[id(m)] if id(m) in seen else seen.setdefault(id(m), family.code(m))
+                      for m in modes], dtype=np.int64)
+    return largest_batched(family, codes, np.asarray(x0, float), float(t_end),
+                           [columns[j][0] for j in order], times, **options)
 
 
 def _numbered(schedule) -> list[tuple[float, tuple[str, int]]]:

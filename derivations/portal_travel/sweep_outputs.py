@@ -11,13 +11,19 @@ template at once, the closed forms, events and extrema batched; the two
 equal sides' repeated eigenvalues clustered). It agrees with the per-design run of each design to 1e-9
 (``tests/test_batched.py``). The backlash φ_b is no scene parameter (the
 scene's report runs each value of its options): give it with ``--at`` or
-``--vary``. Its block is Python-bound (each design's parts assembled in
-Python, ``threads`` not set): a sweep runs its blocks on processes, a grid of
-at most 10⁴ designs as one block in this process (``crane_sym.sweep.blocks``).
+``--vary``. Where the designs of a block differ only in the links' stiffness
+and damping (C_пр and ζ swept), the block is one
+``crane_sym.components.design_block.DesignBlock``: one model, its values as
+arrays, a design's own model built only where the per-design route takes it
+(the same numbers, ``tests/test_design_block.py``); elsewhere each design's
+parts are assembled in Python. Its block is Python-bound (``threads`` not
+set): a sweep runs its blocks on processes, a grid of at most 10⁴ designs as
+one block in this process (``crane_sym.sweep.blocks``).
 """
 from __future__ import annotations
 
 from dataclasses import replace
+from functools import partial
 
 import numpy as np
 
@@ -44,6 +50,38 @@ def _models(values):
     return arrays[0].shape, models
 
 
+#: The rim values a block of designs may vary (``drive_train.fig11_parts``:
+#: both links' stiffness and damping); any other varied value, a model a design.
+_LINK_KEYS = {"c_l": "stiffness", "b": "damping"}
+
+
+def _block(values):
+    """(shape, a ``DesignBlock`` of the start-up, its first design's model)
+    where the designs' rim values differ only in :data:`_LINK_KEYS`, or None."""
+    from crane_sym.components.design_block import plain_block
+    from .drive_train import fig11_design
+    from .hybrid import rim_values
+    from .startup import HOLDS
+    names = list(values)
+    arrays = np.broadcast_arrays(*[np.asarray(values[n], dtype=float) for n in names])
+    p = {n: (float(a.flat[0]) if np.all(a == a.flat[0]) else a.ravel())
+         for n, a in zip(names, arrays)}
+    if isinstance(p["phi_b"], np.ndarray) or any(
+            isinstance(p[n], np.ndarray) for n in _PARAMETERS if n not in ("c_l", "zeta")):
+        return None
+    rim = rim_values(p, p["phi_b"])         # arithmetic on the arrays, design by design
+    if any(np.ndim(v) and k not in _LINK_KEYS for k, v in rim.items()) or \
+            not (np.all(np.asarray(rim["c_l"]) > 0) and np.all(np.asarray(rim["b"]) >= 0)):
+        return None
+    size = arrays[0].size
+    varied = {(f"link_{side}", key): np.broadcast_to(rim[name], (size,))
+              for side in ("left", "right") for name, key in _LINK_KEYS.items()}
+    first = {k: float(np.asarray(v).flat[0]) for k, v in rim.items()}
+    model = fig11_design(first, HOLDS)
+    block = plain_block(model, varied)
+    return None if block is None else (arrays[0].shape, block, rim)
+
+
 def _designs(values, together: bool = True):
     """(shape, one HybridRun per design) of the start-up, its output ("load")
     hybrid.STARTUP's; ``together``: the designs' starts found together
@@ -66,9 +104,31 @@ def _peak_startup_link_force(values, options) -> np.ndarray:
     the block's designs solved together; NaN for a design stopped at
     :data:`MAX_PHASES` phases."""
     from crane_sym.mechanics.batched_runs import largest_of_runs
-    shape, runs = _designs(values)
-    result = largest_of_runs(runs, magnitude=False, max_events=MAX_PHASES)
-    return result.value.reshape(shape)
+    found = _block(values)
+    if found is None:
+        shape, runs = _designs(values)
+        result = largest_of_runs(runs, magnitude=False, max_events=MAX_PHASES)
+        return result.value.reshape(shape)
+    shape, block, rim = found
+    t_end = block.model.end(END, rest=True)
+    beyond = block.first_beyond(t_end)
+    if beyond is not None:
+        raise beyond[1]
+    return block.largest((0, 1), t_end, partial(_own_run, rim, t_end), magnitude=False,
+                         max_events=MAX_PHASES).value.reshape(shape)
+
+
+def _own_run(rim, t_end: float, d: int, mode, x0):
+    """Design d's own run of a block (:func:`_block`) from its start: its
+    model and system, as :func:`_designs` builds them."""
+    from crane_sym.components.hybrid import ComponentSystem
+    from crane_sym.mechanics.phase_table import HybridRun
+    from .drive_train import fig11_design, total_load
+    from .startup import HOLDS
+    model = fig11_design({k: float(np.asarray(v).ravel()[d]) if np.ndim(v) else v
+                          for k, v in rim.items()}, HOLDS)
+    system = ComponentSystem(model.equations)
+    return HybridRun(system, mode, x0, t_end, model.schedule(True), total_load(system))
 
 
 def peak_per_design(values, options) -> np.ndarray:

@@ -126,13 +126,18 @@ class Symbolic:
     comes from (``torque`` is named ``force`` on a translating body); ``value``
     takes it in SI from the assembled item (the body, the rigid part, the
     ``topology.Link`` or ``topology.Load``; None: solved at the start);
-    ``what`` says what it is, formatted with ``name``, ``body`` and ``key``."""
+    ``what`` says what it is, formatted with ``name``, ``body`` and ``key``;
+    ``equations_only``: the value is read by nothing but the equations and
+    what is derived from their values (the link's load, the run's bound on
+    periods), so designs that differ only in it are one block of arrays
+    (:mod:`crane_sym.components.design_block`)."""
 
     key: str
     letter: str
     assumption: str
     value: Callable[[Any], "float | None"]
     what: str
+    equations_only: bool = False
 
     def symbol(self, component: str) -> sp.Symbol:
         """Its symbol for the component called ``component`` (made once: every
