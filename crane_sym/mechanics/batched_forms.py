@@ -228,7 +228,7 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     bad |= np.any(twin[:, :-1] & equal[:, 1:], axis=1)
     # nearly defective: a neighbour within CLUSTER (a pair's conjugate included)
     # and a condition number above NEAR_COND
-    with np.errstate(divide="ignore"):
+    with np.errstate(divide="ignore", over="ignore"):     # a defective one: inf
         kappa = 1.0 / np.abs(np.sum(vl * vr, axis=1))
     near = np.zeros_like(live)
     for j in range(lam.shape[1]):
