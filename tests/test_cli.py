@@ -268,7 +268,7 @@ def test_bench_designs_prints_its_targets_met_or_not(monkeypatch, tmp_path, caps
     """``bench --designs`` (section (g) alone) on grids of 3 × 3 designs, the
     profile on 9: a row per target with its limit and met / not met, where
     the time goes beside a row not met (the file's, its limit set to 0 s), the
-    file's runs built alone, and its
+    file's designs built alone, and its
     Markdown written only into ``--out`` (no timing asserted: timings belong
     to the bench, not to a test)."""
     from dataclasses import replace
@@ -295,5 +295,5 @@ def test_bench_designs_prints_its_targets_met_or_not(monkeypatch, tmp_path, caps
     missed = sum(row.endswith("| not met |") for row in rows)
     assert text.count("where the time goes (9 designs, cProfile") == missed >= 1
     assert "bridge_travel.toml drive_line.peak: where the time goes" in text
-    assert "its 9 designs' runs built, not solved" in text
+    assert "its 9 designs built, not solved" in text
     assert sorted(p.name for p in out.iterdir()) == ["bench_designs.md"]

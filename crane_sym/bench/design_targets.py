@@ -189,11 +189,17 @@ def file_row(case: FileSweepCase, root: Path) -> dict[str, Any]:
     say.step(f"  {name}: {case.n ** len(case.axes)} designs as one block ...")
     row = {"name": name, **_timed(solver(case.n)), "target": case.target}
     row["met"] = row["seconds"] <= case.target
-    say.step(f"  {name}: {PROFILE_DESIGNS} designs' runs built, not solved ...")
-    block = designs(str(path), digest)
+    say.step(f"  {name}: {PROFILE_DESIGNS} designs built, not solved ...")
+    found = designs(str(path), digest)
     values = _file_values(case, round(PROFILE_DESIGNS ** (1 / len(case.axes))))
+
+    def built() -> np.ndarray:            # a block where it applies, else a run a design
+        block = found.plain(case.output, values)[1]
+        if block is None:
+            return found.runs(case.output, values)[2]
+        return block.starts()[1][:, 0]
     with cycles_collected_after():
-        row["construction"] = _timed(lambda: block.runs(case.output, values)[2])
+        row["construction"] = _timed(built)
     say.step(f"  {name}: where the time goes ({PROFILE_DESIGNS} designs, cProfile) ...")
     row["profile"] = profile_top(solver(round(PROFILE_DESIGNS ** (1 / len(case.axes)))))
     return row
@@ -262,8 +268,10 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
     for r in rows:
         if "construction" in r:
             c = r["construction"]
-            lines.append(f"\n{r['name']}: its {c['designs']} designs' runs built, not solved "
-                         f"(parts, model, start, system, schedule: ``Designs.runs``): "
+            lines.append(f"\n{r['name']}: its {c['designs']} designs built, not solved "
+                         f"(one block: its model, the values as columns, the bound on "
+                         f"periods, the starts at rest, ``Designs.plain``; else a run a "
+                         f"design, ``Designs.runs``): "
                          f"{c['seconds']:.2f} s wall, {c['cpu_seconds']:.2f} s CPU "
                          f"({1e3 * c['seconds'] / c['designs']:.2f} ms a design); load "
                          f"{c['load_before']:.1f} before.")

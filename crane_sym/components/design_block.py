@@ -114,6 +114,7 @@ class DesignBlock:
         self.system = ComponentSystem(model.equations)
         self.array = _array(self.system, column_numbers(self.system, self.columns), self.k,
                             self._coefficients())
+        self._starts: tuple[list, np.ndarray] | None = None
 
     def _coefficients(self) -> dict[Hashable, np.ndarray]:
         """Each link's (a, b, e) per design (what ``DesignArray.gather`` asks
@@ -152,9 +153,11 @@ class DesignBlock:
 
     def starts(self) -> tuple[list, np.ndarray]:
         """Each design's first mode and state at rest (``start.rest_starts``,
-        the designs settled together on the block's array)."""
-        found = rest_starts([self.model] * self.k, [self.system] * self.k, self.array)
-        return [mode for mode, _ in found], np.array([x for _, x in found])
+        the designs settled together on the block's array; found once)."""
+        if self._starts is None:
+            found = rest_starts([self.model] * self.k, [self.system] * self.k, self.array)
+            self._starts = [mode for mode, _ in found], np.array([x for _, x in found])
+        return self._starts
 
     def largest(self, links: Sequence[int], duration: float,
                 build: Callable[[int, object, np.ndarray], HybridRun],

@@ -314,11 +314,20 @@ class Designs:
 
     def _block(self, output: str, values: Mapping[str, np.ndarray]):
         """(shape, the batched result) of a link's peak where the designs
-        differ only in values the equations alone read, solved as one
-        :class:`~crane_sym.components.design_block.DesignBlock` from rest
-        (the numbers :meth:`runs` gives, no model a design); (shape, None)
-        where they do not, or a value breaks its sign (the designs built one
-        by one then say which)."""
+        differ only in values the equations alone read, solved as one block
+        (:meth:`plain`; the numbers :meth:`runs` gives, no model a design);
+        (shape, None) where they do not."""
+        shape, block, solve = self.plain(output, values)
+        return shape, None if block is None else solve()
+
+    def plain(self, output: str, values: Mapping[str, np.ndarray]):
+        """(shape, the designs of a block as one
+        :class:`~crane_sym.components.design_block.DesignBlock` started at
+        rest and checked against the bound on periods, ``solve()``: its
+        batched result for ``output``) where the output is a link's peak and
+        the designs differ only in values the equations alone read; (shape,
+        None, None) where not, or where a value breaks its sign (the designs
+        built one by one then say which)."""
         from crane_sym.components.design_block import plain_block
         index, kind, _ = self.outputs()[output]
         names = list(values)
@@ -327,7 +336,7 @@ class Designs:
         shape = np.broadcast_shapes(*[np.shape(values[n]) for n in names])
         if kind != "peak" or not self.file.rest or not names or \
                 not all(_keeps(a, self.fields[n].sign) for n, a in zip(names, arrays)):
-            return shape, None
+            return shape, None, None
 
         def given(d: int) -> dict[str, float]:
             return {n: float(a[d]) for n, a in zip(names, arrays)}
@@ -335,7 +344,7 @@ class Designs:
         block = plain_block(model, {(self.fields[n].component, self.fields[n].key): a
                                     for n, a in zip(names, arrays)})
         if block is None:
-            return shape, None
+            return shape, None, None
         t_end = self.duration
         beyond = block.first_beyond(t_end)
         if beyond is not None:
@@ -349,7 +358,7 @@ class Designs:
             system = ComponentSystem(own.equations)
             return HybridRun(system, mode, x0, t_end, own.schedule(True),
                              system.link_load(index))
-        return shape, block.largest((index,), t_end, build, magnitude=True)
+        return shape, block, lambda: block.largest((index,), t_end, build, magnitude=True)
 
     def per_design(self, output: str, values: Mapping[str, np.ndarray],
                    exact: bool | None = None) -> np.ndarray:
