@@ -85,7 +85,7 @@ class FormCache:
             for where, f in parts:
                 key = next((i for i, p in enumerate(self.parts) if p.holds(f)), None)
                 if key is None:
-                    self.parts.append(_Store(f))
+                    self.parts.append(_Store(f, self.signature.size))
                     key = len(self.parts) - 1
                 part[fresh[where]] = key
                 slot[fresh[where]] = self.parts[key].append(f)
@@ -97,11 +97,12 @@ class FormCache:
 
 class _Store:
     """The distinct forms of one spectral structure in a mode, a row each
-    (arrays grown by doubling)."""
+    (arrays grown by doubling, to at most ``limit`` rows: a design holds one
+    form a mode, so a mode's forms never outnumber its cache's designs)."""
 
-    def __init__(self, f: BatchForm) -> None:
+    def __init__(self, f: BatchForm, limit: int) -> None:
         self.real, self.pairs, self.powers, self.sine = f.real, f.pairs, f.powers, f.sine
-        self.n = f.n
+        self.n, self.limit = f.n, limit
         self.count = 0
         T = f.powers.size
         self.sigmas, self.omegas = np.zeros((0, T)), np.zeros((0, T))
@@ -117,7 +118,7 @@ class _Store:
         row of each C_j is 0 … 0 1); their rows."""
         k = f.sigmas.shape[0]
         if self.count + k > self.sigmas.shape[0]:
-            grow = max(2 * self.sigmas.shape[0], self.count + k, 64)
+            grow = max(min(max(2 * self.sigmas.shape[0], 64), self.limit), self.count + k)
             self.sigmas = _grown(self.sigmas, grow)
             self.omegas = _grown(self.omegas, grow)
             self.coefficients = _grown(self.coefficients, grow)
@@ -134,6 +135,8 @@ class _Store:
 
 
 def _grown(a: np.ndarray, rows: int) -> np.ndarray:
-    out = np.zeros((rows,) + a.shape[1:])
+    """``a`` with room for ``rows`` rows (those past its own not set: only
+    the rows stored are ever read)."""
+    out = np.empty((rows,) + a.shape[1:])
     out[: a.shape[0]] = a
     return out
