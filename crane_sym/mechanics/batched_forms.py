@@ -387,17 +387,21 @@ def _form(A, b, slot, lam, vr, mu, vl, twin, kind, cond_limit: float) -> tuple[
             projector += 2 * C.real
     if not fine.any():
         return None, fine
-    powers, sine, sigmas, omegas, coefs = [], [], [], [], []
+    powers, sine, sigmas, omegas = [], [], [], []
+    # each term's C_j, the state's rows only (the constant's row is 0 … 0 1),
+    # written in place: no list of full matrices stacked at the end
+    coefficients = np.empty((k, len(real) + 2 * len(pairs) + size - live, n, size))
+
+    def term_of(power: int, is_sine: bool, sigma, omega, rows) -> None:
+        coefficients[:, len(powers)] = rows
+        powers.append(power), sine.append(is_sine), sigmas.append(sigma), omegas.append(omega)
     for sigma, C in real:                                 # real: e^{σt}
-        powers.append(0), sine.append(False)
-        sigmas.append(sigma), omegas.append(np.zeros(k)), coefs.append(C)
+        term_of(0, False, sigma, np.zeros(k), C.real[:, :n])
     for value, C in pairs:                                # a pair: 2 Re C cos, −2 Im C sin
         # an undamped pair's σ is rounding (~1e-15 ω): 0, so no e^{σt} is evaluated
         sigma = np.where(np.abs(value.real) <= 1e-12 * np.abs(value), 0.0, value.real)
-        for is_sine, part in ((False, 2 * C.real), (True, -2 * C.imag)):
-            powers.append(0), sine.append(is_sine)
-            sigmas.append(sigma), omegas.append(np.abs(value.imag))
-            coefs.append(part)
+        term_of(0, False, sigma, np.abs(value.imag), 2 * C.real[:, :n])
+        term_of(0, True, sigma, np.abs(value.imag), -2 * C.imag[:, :n])
     M = np.zeros((k, size, size))
     M[:, :n, :n] = A
     M[:, :n, n] = b
@@ -411,9 +415,8 @@ def _form(A, b, slot, lam, vr, mu, vl, twin, kind, cond_limit: float) -> tuple[
                 term = N @ term / j
                 if not term[kept].any():                 # N^j = 0 (a free side): no more
                     break
-            powers.append(j), sine.append(False)
-            sigmas.append(np.zeros(k)), omegas.append(np.zeros(k)), coefs.append(term)
+            term_of(j, False, np.zeros(k), np.zeros(k), term[:, :n])
     form = BatchForm(n, np.array(powers, dtype=float), np.array(sine, dtype=bool),
                      np.stack(sigmas, axis=1), np.stack(omegas, axis=1),
-                     np.stack(coefs, axis=1), len(real), len(pairs))
+                     coefficients[:, :len(powers)], len(real), len(pairs))
     return (form if fine.all() else form.take(kept)), fine
