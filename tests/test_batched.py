@@ -143,14 +143,16 @@ def test_003_designs_with_twin_eigenvalues_are_batched_to_1e_9(monkeypatch):
 
 @pytest.mark.parametrize("pair", ["real", "complex"])
 def test_nearly_equal_eigenvalues_are_batched_and_agree_with_mpmath(pair):
-    """Two eigenvalues a relative gap g apart (0, 1e-12 … 5e-4: equal, then
-    twins), in a coupled system (A = S D S⁻¹, S seeded) with a constant
-    input: no design is refused, and x(t) of the batched closed form agrees
-    with mpmath's expm of [[A, b], [0, 0]] t to 1e-13 of |x| at t = 0.1, 1, 3
-    (measured: 1e-14 at most; projectors one by one from the vectors were
-    4e-10 off at g = 1e-5)."""
+    """Two eigenvalues a relative gap g apart (0 and 1e-14: equal, one
+    eigenvalue, their mean; 1e-13 … 5e-4: twins), in a coupled system
+    (A = S D S⁻¹, S seeded) with a constant input: no design is refused, and
+    x(t) of the batched closed form agrees with mpmath's expm of
+    [[A, b], [0, 0]] t to 1e-13 of |x| at t = 0.1, 1, 3 (measured: 2.3e-14 at
+    most, at g = 1e-14, the mean's t·gap/2; projectors one by one from the
+    vectors were 4e-10 off at g = 1e-5; equal up to 10⁻¹² of the scale, the
+    pair of g = 1e-13 was 1.3e-13 off and that of g = 1e-12 1.3e-12)."""
     mpmath = pytest.importorskip("mpmath")
-    gaps = [0.0, 1e-12, 1e-10, 1e-8, 1e-6, 1e-5, 1e-4, 5e-4]
+    gaps = [0.0, 1e-14, 1e-13, 1e-12, 1e-10, 1e-8, 1e-6, 1e-5, 1e-4, 5e-4]
     rng = np.random.default_rng(39)
     S = rng.normal(size=(4, 4)) + 3 * np.eye(4)
     A, b = [], []

@@ -14,12 +14,13 @@ nilpotent series Σ_j (N t)^j / j! · Q with Q = I − Σ C_λ and N = M Q, as t
 per-design route does. A pair λ = σ ± iω folds into t^0 e^{σt} cos ωt and
 sin ωt terms.
 
-Equal nonzero eigenvalues (equal to 10⁻¹² of the spectrum's scale: two
-equal drives) form a cluster with one projector C = R (Lᵀ R)⁻¹ Lᵀ from its
-right and left eigenvectors. Two nearly equal ones (within ``CLUSTER`` of
-each other but not equal: two sides equal but for a little) are twins, two
-terms whose projectors come from their pair's (:func:`_twins`): within
-1e-14 of mpmath at gaps 0 to 5e-4 (``tests/test_batched.py``), where
+Equal nonzero eigenvalues (equal to rounding, ``EQUAL`` of the spectrum's
+scale: two equal drives) form a cluster with one projector
+C = R (Lᵀ R)⁻¹ Lᵀ from its right and left eigenvectors. Two nearly equal
+ones (within ``CLUSTER`` of each other but not equal: two sides equal but
+for a little) are twins, two terms whose projectors come from their pair's
+(:func:`_twins`): within 3e-14 of mpmath at gaps 0 to 5e-4
+(``tests/test_batched.py``), where
 projectors one by one from the vectors were off by rounding over the gap
 (4e-10 at a gap of 1e-5) and were refused below 10⁻⁶ (about one design in
 eleven of 003's start-up, sent to the per-design route). A design is refused (for the per-design route,
@@ -57,6 +58,19 @@ COND_LIMIT = 1e5
 #: 3e-9 of the peak at κ = 3.6e3, damping 1e-8 below critical), so 200 keeps
 #: it near 1e-11; the per-design route's clusters resolve the others.
 NEAR_COND = 200.0
+#: Two neighbouring eigenvalues are one (a cluster: one projector, their mean
+#: its eigenvalue) where they are at most EQUAL·scale apart (scale: the
+#: largest |λ|, at least 1): a few ulps of λ. Taking the mean moves each by
+#: half the gap, x(t) by about t·gap/2·|C z|: no more than rounding λ itself
+#: (32 ulps of λt), where 10⁻¹²·scale cost up to 1.4e-12 at t = 1 for a pair
+#: of |λ| ≈ 2 a relative 10⁻¹² apart. Equal drives' eigenvalues come out
+#: equal to the bit (003: a gap of 0) or within a few ulps (eig's rounding
+#: of a double eigenvalue, ~ eps·|λ| times its condition: at most 35 ulps of
+#: random A = S D S⁻¹ with cond S = 10); a gap above this
+#: is twins (:func:`_twins`), accurate down to rounding gaps (the error of
+#: (M − λ'I)P over the gap enters times a divided difference), or refused
+#: where the pair's vectors are nearly dependent (``NEAR_COND``).
+EQUAL = 64 * np.finfo(float).eps
 
 
 #: The stacks of distinct A that :func:`_spectra` decomposes, kept while
@@ -163,7 +177,7 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     live = cat < 3
     # clusters: equal nonzero eigenvalues (two equal drives), each one projector
     scale = np.maximum(np.abs(lam).max(axis=1, initial=0.0), 1.0)[:, None]
-    step = np.abs(np.diff(lam, axis=1)) > 1e-12 * scale
+    step = np.abs(np.diff(lam, axis=1)) > EQUAL * scale
     starts = np.concatenate([np.ones((first.size, 1), bool),
                              step | (np.diff(cat, axis=1) != 0)], axis=1)
     pattern = np.where(live, cat * 2 + starts, 7)
@@ -222,7 +236,7 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     # the per-design route, whose clusters resolve them (spectral_clusters)
     gap = np.abs(np.diff(lam, axis=1))
     same = live[:, 1:] & live[:, :-1] & (cat[:, 1:] == cat[:, :-1])
-    equal = same & (gap <= 1e-12 * scale)
+    equal = same & (gap <= EQUAL * scale)
     twin = same & (gap <= CLUSTER * np.abs(lam[:, :-1])) & ~equal
     bad |= np.any(twin[:, 1:] & (twin[:, :-1] | equal[:, :-1]), axis=1)
     bad |= np.any(twin[:, :-1] & equal[:, 1:], axis=1)
@@ -234,7 +248,7 @@ def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
     for j in range(lam.shape[1]):
         d = np.abs(lam - lam[:, j:j + 1])
         d[:, j] = np.inf
-        d[d <= 1e-12 * scale] = np.inf                # equal: one cluster, one projector
+        d[d <= EQUAL * scale] = np.inf                # equal: one cluster, one projector
         near[:, j] = d.min(axis=1) <= CLUSTER * np.abs(lam[:, j])
     bad |= np.any(live & near & (kappa > NEAR_COND), axis=1)
     first_twin = np.concatenate([twin, np.zeros((twin.shape[0], 1), bool)], axis=1)
