@@ -108,9 +108,14 @@ def peak_candidates(form: ClosedForm, amps: np.ndarray, k: float, rate: np.ndarr
         def slope(x: float) -> float:
             return float(_values(form, rate, rate_k, np.array([x]))[0])
         for i in turns:
-            if slope(a[i]) * slope(b[i]) < 0:      # the same signs evaluated alone
+            sa, sb = slope(a[i]), slope(b[i])
+            if sa * sb < 0:                        # the same signs evaluated alone
                 split[i] = brentq(slope, a[i], b[i], xtol=1e-15,
                                   rtol=4 * np.finfo(float).eps)
+            else:   # g' is rounding at an end (a crest found before, a grid point):
+                # its sign differs evaluated alone. That end is the crest, not the
+                # midpoint (a point within the tie of the top, taken as its time)
+                split[i] = a[i] if abs(sa) <= abs(sb) else b[i]
         inside = (split[turns] - a[turns] > floor) & (b[turns] - split[turns] > floor)
         # a crest on an end of its interval (a grid point, a half) is that end
         edge = turns[~inside]
