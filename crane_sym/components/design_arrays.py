@@ -28,7 +28,7 @@ from crane_sym.components.mode_numbers import mode_linear
 from crane_sym.components.modes import BACKWARD, FORWARD, HELD, Mode, solved
 
 __all__ = ["DesignArray", "evaluated", "free_limits", "mode_guards", "mode_matrices", "net_load",
-           "one_template", "pushes", "template", "template_numbers"]
+           "numbers_of", "one_template", "pushes", "template", "template_numbers"]
 
 #: The flattened lambdified form of each template's (M, D, K, f), by the
 #: identity of its ``Equations.linear`` (kept with it, so the key stays its own).
@@ -70,11 +70,17 @@ def template_numbers(systems: Sequence) -> Callable:
     """The (M, D, K, f) of ``systems`` (designs of one template) as one
     evaluation: (χ, δ, on, B, β, L, s) -> arrays with a leading axis of
     designs; δ, on and β arrays of (designs, values)."""
-    equations = systems[0].equations
+    return numbers_of(systems[0].equations, lambda parameters: np.array(
+        [[{**s.equations.values, **s.extra}.get(p, np.nan) for p in parameters]
+         for s in systems], dtype=float))
+
+
+def numbers_of(equations, given: Callable[[tuple[sp.Symbol, ...]], np.ndarray]) -> Callable:
+    """:func:`template_numbers` of designs whose parameter values
+    ``given(parameters)`` gives, (designs, parameters) in the order of the
+    template's lambdified form."""
     parameters, fn = _flat_form(equations)
-    given = np.array([[{**s.equations.values, **s.extra}.get(p, np.nan) for p in parameters]
-                      for s in systems], dtype=float)
-    return _evaluator(fn, given, equations)
+    return _evaluator(fn, given(parameters), equations)
 
 
 def _evaluator(fn: Callable, given: np.ndarray, equations) -> Callable:

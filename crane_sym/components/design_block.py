@@ -6,7 +6,7 @@ but values of the equations (a kind's ``Symbolic.equations_only``): the
 parts, their words, the rigid groups, the gaps, the laws, the start at rest
 are the template's. The block holds one design's model and system and the
 varied values as columns: a mode's numbers are one call of the template's
-lambdified equations on them (``DesignArray.of_columns``), the links' loads
+lambdified equations on them (:func:`column_numbers`), the links' loads
 take the varied coefficients per design, the bound on the run's periods
 decomposes K = Σ c b bᵀ of every design in one stack, and the designs' starts
 at rest are settled together. A design's own run is built only where the
@@ -27,7 +27,7 @@ import numpy as np
 import sympy as sp
 
 from crane_sym.components import kinds
-from crane_sym.components.design_arrays import DesignArray, _evaluator, _flat_form, evaluated
+from crane_sym.components.design_arrays import DesignArray, evaluated, numbers_of
 from crane_sym.components.design_family import DesignFamily
 from crane_sym.components.design_outputs import link_loads
 from crane_sym.components.hybrid import ComponentSystem
@@ -47,15 +47,16 @@ def column_numbers(system: ComponentSystem, columns: Mapping[sp.Symbol, np.ndarr
     parameters ``columns`` (symbol -> k values): its row of parameter values
     repeated, those columns put in. The lambdified form works entry by entry,
     so each design's numbers are the bits its own system would give."""
-    equations = system.equations
-    parameters, fn = _flat_form(equations)
     k = len(next(iter(columns.values())))
-    row = {**equations.values, **system.extra}
-    given = np.repeat(np.array([[row.get(p, np.nan) for p in parameters]], dtype=float), k,
-                      axis=0)
-    for symbol, values in columns.items():
-        given[:, parameters.index(symbol)] = values
-    return _evaluator(fn, given, equations)
+    row = {**system.equations.values, **system.extra}
+
+    def given(parameters: tuple[sp.Symbol, ...]) -> np.ndarray:
+        out = np.repeat(np.array([[row.get(p, np.nan) for p in parameters]], dtype=float), k,
+                        axis=0)
+        for symbol, values in columns.items():
+            out[:, parameters.index(symbol)] = values
+        return out
+    return numbers_of(system.equations, given)
 
 
 def plain_block(model, varied: Mapping[tuple[str, str], np.ndarray]) -> "DesignBlock | None":
