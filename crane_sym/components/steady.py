@@ -93,6 +93,8 @@ def balance(probe: ComponentSystem, unit: ComponentSystem | None, mode: Mode,
     lower, right = lower / scale[:, None], right / scale
     system, rhs = np.vstack([matrix, lower]), np.concatenate([f, right])
     z = np.linalg.lstsq(system, rhs, rcond=None)[0] if system.shape[1] else np.zeros(0)
+    if system.shape[1]:    # one step of iterative refinement: lstsq's rounding, κ eps,
+        z = z + np.linalg.lstsq(system, rhs - system @ z, rcond=None)[0]   # to ~eps
     _check_fixed(probe, system, K.shape[1] - pinned, unit is not None)
     if n_states:           # the loads balanced by some states, whatever their rates?
         _check_forces(matrix, f, np.linalg.lstsq(matrix, f, rcond=None)[0])

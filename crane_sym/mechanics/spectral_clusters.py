@@ -211,4 +211,32 @@ def numpy_terms(M: np.ndarray) -> list[tuple[int, complex, np.ndarray]]:
         raise ClusterError(f"{m} eigenvalues below {KERNEL:g} of the spectrum's scale are"
                            " not a rigid kernel: a mode too slow beside the fastest to be"
                            " resolved in double precision")
-    return terms
+    return _kernel_top_on_null(M, terms, len(terms) - m, algebra.eps)
+
+
+def _kernel_top_on_null(M: np.ndarray, terms: list, first: int, eps: float) -> list:
+    """The kernel's highest live term N^j Q / j! (its columns in ker M: the
+    rigid drift's rates) projected onto the null space of M from its SVD.
+
+    Q = I − Σ P carries the rounding of the other clusters' projectors, eps
+    ‖P‖ |z|, and N = M Q multiplies it by ‖M‖: a constant input of 4e5 in a
+    state's row (a PI loop's voltage) gives that state a drift of 1e-9 per
+    second that M's equations do not have. The projection removes what of
+    the term lies outside ker M, where the exact term has nothing; kept only
+    where it moves the term by rounding (a slow mode in the kernel would not
+    lie in ker M: then the term stays as it was)."""
+    kernel = terms[first:]
+    norms = [float(np.linalg.norm(C)) for _, _, C in kernel]
+    live = [k for k in range(1, len(kernel)) if norms[k] > 1e-8 * max(norms)]
+    if not live:
+        return terms
+    top = live[-1]
+    _, sigma, vh = np.linalg.svd(M)
+    null = vh[np.sum(sigma > M.shape[0] * eps * sigma[0]):].conj().T
+    if not null.shape[1]:
+        return terms
+    j, lam, C = kernel[top]
+    projected = null @ (null.conj().T @ C)
+    if np.linalg.norm(projected - C) > 1e-8 * norms[top]:
+        return terms
+    return terms[:first + top] + [(j, lam, projected)] + terms[first + top + 1:]
