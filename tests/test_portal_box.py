@@ -14,15 +14,32 @@ def test_the_committed_extremes_are_found_for_todays_inputs():
 
 def test_the_committed_extremes_are_what_the_boxes_give():
     """About 700 start-ups: every corner and the optimiser's runs, compared
-    with the table the audit reads (values to 1e-9, places to 1e-6 of a range)."""
+    with the table the audit reads.
+
+    A corner is one start-up at a fixed point: its value to 1e-9. An extreme
+    the optimiser found is where L-BFGS-B stood when its budget
+    (``OPTIMISER_RUNS`` = 40 runs, finite differences of ``STEP``) ran out,
+    two or three iterations in, not a converged optimum: that place depends on
+    the platform's floating point (SciPy's L-BFGS-B and BLAS). Studied on an
+    AMD EPYC, NumPy 2.4.6, SciPy 1.17.1, the model reproduced psi, 0's
+    committed value at its place to 1.5e-14, yet the optimiser's extremes moved
+    by up to 4.9e-7 relative (a2, 2pi) and their places by up to 4.4e-3 of a
+    range (F_max, 2pi, along a flat direction; re-running its committed place
+    gives 183.904 for 183.857, the place sits on a backlash contact's edge),
+    while a converged search lies further still (psi, 0: 1.21100 after 40
+    runs, 1.21035 after 343). So such an extreme is checked by its value, to
+    1e-5: well past the platforms' spread, under what the audit reads (3 digits)."""
     fresh = extremes_table(startup.table1_sensitivities(committed=False))
     assert list(fresh) == list(box_extremes.EXTREMES)
     ranges = [p.high - p.low for p in startup.PLAUSIBLE]
     for name, ends in fresh.items():
         for (value, at, by), (kept, kept_at, kept_by) in zip(ends, box_extremes.EXTREMES[name]):
             assert by == kept_by, name
-            assert math.isclose(value, kept, rel_tol=1e-9, abs_tol=1e-12), (name, value, kept)
-            assert all(abs(a - b) <= 1e-6 * r for a, b, r in zip(at, kept_at, ranges)), name
+            if by == "a corner":
+                assert math.isclose(value, kept, rel_tol=1e-9, abs_tol=1e-12), (name, value, kept)
+                assert all(abs(a - b) <= 1e-6 * r for a, b, r in zip(at, kept_at, ranges)), name
+                continue
+            assert math.isclose(value, kept, rel_tol=1e-5, abs_tol=1e-12), (name, value, kept)
 
 
 def test_a_changed_input_is_studied_afresh(monkeypatch):
