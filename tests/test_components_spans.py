@@ -135,14 +135,16 @@ def test_the_drum_drive_runs_004s_12(read):
     (12) integrated by solve_ivp (:func:`_integrated`): the shafts' torques of the
     run in double precision and of its generated tables (phases replayed in
     mpmath) to 1e-9 of their peaks; and the drum shaft's deflection y. The
-    drive runs free beside the stiff shaft, so the phase is the precise
-    (mpmath) form's: the double one misses its residual check by then."""
+    drive runs free beside the stiff shaft (a rigid drift in the kernel); the
+    double form's kernel term, projected onto ker M, now passes its residual
+    check at 10 s (2.9e-10; it missed it by more than 1e-8 before), so the run
+    is the double form's."""
     from crane_sym.mechanics.piecewise_linear import RESIDUAL
     assert read.duration == "10 s"
     run = read.model.run(read.duration, rest=read.rest)
     [phase] = run.result.segments
     A, b = run.system.matrices(phase.mode)
-    assert closed_forms.closed_form(A, b, None).residual(10.0, phase.x0, A, b) > RESIDUAL
+    assert closed_forms.closed_form(A, b, None).residual(10.0, phase.x0, A, b) <= RESIDUAL
     times = np.linspace(0.0, 10.0, 10_001)
     theirs = _integrated(DRUM, times)
     links = [l.part.name for l in run.system.assembly.links]
