@@ -29,7 +29,8 @@ def test_the_committed_extremes_are_what_the_boxes_give():
     while a converged search lies further still (psi, 0: 1.21100 after 40
     runs, 1.21035 after 343). So such an extreme is checked by its value, to
     1e-5: well past the platforms' spread, under what the audit reads (3 digits)."""
-    fresh = extremes_table(startup.table1_sensitivities(committed=False))
+    sensitivities = startup.table1_sensitivities(committed=False)
+    fresh = extremes_table(sensitivities)
     assert list(fresh) == list(box_extremes.EXTREMES)
     ranges = [p.high - p.low for p in startup.PLAUSIBLE]
     for name, ends in fresh.items():
@@ -37,7 +38,13 @@ def test_the_committed_extremes_are_what_the_boxes_give():
             assert by == kept_by, name
             if by == "a corner":
                 assert math.isclose(value, kept, rel_tol=1e-9, abs_tol=1e-12), (name, value, kept)
-                assert all(abs(a - b) <= 1e-6 * r for a, b, r in zip(at, kept_at, ranges)), name
+                if not all(abs(a - b) <= 1e-6 * r for a, b, r in zip(at, kept_at, ranges)):
+                    # corners that tie to rounding (a1 does not feel what the first
+                    # step does not reach): the first of them is the platform's pick;
+                    # the committed corner must give the same value
+                    study, number = sensitivities[name].study, sensitivities[name].name
+                    again = study.run(tuple(kept_at))[number]
+                    assert math.isclose(again, value, rel_tol=1e-9, abs_tol=1e-12), (name, again)
                 continue
             assert math.isclose(value, kept, rel_tol=1e-5, abs_tol=1e-12), (name, value, kept)
 
