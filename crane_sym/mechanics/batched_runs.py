@@ -62,6 +62,13 @@ class RunFamily:
             self._modes.append(mode)
         return self._codes[mode]
 
+    def codes(self, modes: Sequence[Hashable]) -> np.ndarray:
+        """The code of each of ``modes``; most designs share a few mode objects,
+        each hashed once."""
+        seen: dict[int, int] = {}
+        return np.array([seen[id(m)] if id(m) in seen else seen.setdefault(id(m), self.code(m))
+                         for m in modes], dtype=np.int64)
+
     def mode(self, code: int, i: int | None = None) -> Hashable:
         """The mode of a code (the same for every design ``i``)."""
         return self._modes[code]
@@ -92,15 +99,11 @@ class RunFamily:
                x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Each design's own rule, on the designs that fired ``event`` (the
         family's, for all of them at once, where it has one)."""
-        codes = np.empty(index.size, dtype=np.int64)
         both = None if self.family is None else \
             self.family.switch(self._modes[mode], event, index, x)
-        if both is not None:         # most designs share a few new modes: each hashed once
-            seen: dict[int, int] = {}
-            codes[:] = [seen[id(new)] if id(new) in seen else
-                        seen.setdefault(id(new), self.code(new)) for new in both[0]]
-            return codes, both[1]
-        out = np.empty_like(x)
+        if both is not None:
+            return self.codes(both[0]), both[1]
+        codes, out = np.empty(index.size, dtype=np.int64), np.empty_like(x)
         for k, i in enumerate(index):
             new, out[k] = self.runs[i].system.switch(self._modes[mode], event, float(t[k]),
                                                      x[k].copy())
@@ -176,10 +179,7 @@ def largest_of_starts(family: RunFamily, modes: Sequence[Hashable], x0: np.ndarr
     given = [t for t, _ in _numbered(schedule)]
     times = np.broadcast_to(np.array([given[j] for j in order], dtype=float),
                             (len(modes), len(columns)))
-    seen: dict[int, int] = {}                    # most designs share a few modes
-    codes = np.array([seen[id(m)] if id(m) in seen else seen.setdefault(id(m), family.code(m))
-                      for m in modes], dtype=np.int64)
-    return largest_batched(family, codes, np.asarray(x0, float), float(t_end),
+    return largest_batched(family, family.codes(modes), np.asarray(x0, float), float(t_end),
                            [columns[j][0] for j in order], times, **options)
 
 
