@@ -3,10 +3,12 @@
 Closed form of one phase
 ------------------------
 With z = (x, 1), z' = M z and M = [[A, b], [0, 0]], so z(t) = exp(M t) z(0).
-exp(M t) as a sum of terms t^j e^{λt} C, from SymPy's exact Jordan
-decomposition M = P J P⁻¹ where that is cheap (each entry of A and b taken as
-the exact rational of its shortest decimal; P evaluated to 30 digits, then
-inverted in floating point), or from the spectral clusters of M
+exp(M t) as a sum of terms t^j e^{λt} C, exact where that is cheap (each
+entry of A and b taken as the exact rational of its shortest decimal): from
+exact spectral projectors where M's characteristic polynomial has linear and
+simple quadratic factors only (:mod:`crane_sym.mechanics.rational_projectors`),
+else from SymPy's Jordan decomposition M = P J P⁻¹ (P evaluated to 30 digits,
+then inverted in floating point); elsewhere from the spectral clusters of M
 (:mod:`crane_sym.mechanics.spectral_clusters`: O(n³), exact where
 eigenvalues coincide or nearly do):
 
@@ -28,6 +30,7 @@ import numpy as np
 import sympy as sp
 from sympy.matrices.exceptions import MatrixError
 
+from crane_sym.mechanics.rational_projectors import projector_terms
 from crane_sym.mechanics.spectral_clusters import numpy_terms
 
 __all__ = ["ClosedForm", "JordanFormError", "clear_cache", "closed_form", "exact_is_cheap",
@@ -182,6 +185,13 @@ def jordan_blocks(J: sp.Matrix) -> Iterator[tuple[int, int]]:
 @lru_cache(maxsize=256)
 def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
     n = len(b_key)
+    terms = projector_terms(a_key, b_key)
+    return _folded(n, _jordan_terms(a_key, b_key) if terms is None else terms)
+
+
+def _jordan_terms(a_key: tuple, b_key: tuple) -> dict[tuple[int, complex], np.ndarray]:
+    """{(j, λ): C} from SymPy's exact Jordan form, P to 30 digits inverted in floats."""
+    n = len(b_key)
     P, J = jordan(a_key, b_key)
     Pn = np.array(P.evalf(30).tolist(), dtype=complex)
     Pinv = np.linalg.inv(Pn)
@@ -200,6 +210,12 @@ def _closed_form_cached(a_key: tuple, b_key: tuple) -> ClosedForm:
             C = Pn @ E @ Pinv
             key = (j, lam)
             terms[key] = terms.get(key, 0) + C
+    return terms
+
+
+def _folded(n: int, terms: dict[tuple[int, complex], np.ndarray]) -> ClosedForm:
+    """The real :class:`ClosedForm` of complex terms {(j, λ): C}, a conjugate
+    pair folded into cos and sin terms."""
     powers, sigmas, omegas, sine, coefs = [], [], [], [], []
     for (j, lam), C in sorted(terms.items(), key=lambda kv: (kv[0][0], kv[0][1].real,
                                                              kv[0][1].imag)):
