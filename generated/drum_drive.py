@@ -738,26 +738,36 @@ def state_derivative(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z,
                        W=W, s1=s1, s2=s2, s3=s3, s4=s4, s5=s5, s6=s6, s7=s7, s8=s8, s9=s9, s10=s10)
     x0 = C1*s2
     x1 = nu1*s7
-    x2 = C2*s2
-    x3 = nu2*s7
-    x4 = 3*I3
-    x5 = L*q
-    x6 = 2*x5
-    x7 = r**2
-    x8 = x6*x7
-    x9 = 1/(I3*x6 + L**2*q**2*x7 + m_L*x4 + m_L*x8)
-    x10 = 3*m_L
-    x11 = r*x5
-    x12 = C_t*s4
-    x13 = r*x10
-    x14 = C_t*s5
-    x15 = C_z*s5
-    x16 = nu_z*s10
-    x17 = nu_t*s10
-    x18 = 3*x11
-    x19 = 3*x5*x7
-    x20 = _cube(r)
-    return _matrix((10, 1), [s6, s7, s8, s9, s10, -(C1*s1 - M0 + nu1*s6 - x0 - x1)/I1, (C1*s1 + C2*s3 + nu1*s6 + nu2*s8 - x0 - x1 - x2 - x3)/I2, -x9*(2*C2*L*q*s3 + 3*C2*m_L*s3 + 3*C_t*L*q*s3*x7 + 3*C_t*m_L*s3*x7 + 3*C_z*L*q*r*s4 + 3*C_z*L*q*s3*x7 + 3*C_z*m_L*r*s4 + 3*C_z*m_L*s3*x7 + 2*L*nu2*q*s8 + 3*L*nu_z*q*r*s9 + 3*L*nu_z*q*s8*x7 - W*x11 + 3*m_L*nu2*s8 + 3*m_L*nu_z*r*s9 + 3*m_L*nu_z*s8*x7 - x10*x2 - x10*x3 - x11*x17 - x12*x13 - x12*x18 - x13*x14 - x13*x15 - x13*x16 - x14*x18 - x15*x18 - x16*x18 - x2*x6 - x3*x6), 3*(C_t*r*s3 - C_y*s4 - C_z*r*s3 - C_z*s4 + C_z*s5 + 2*F0 - nu_y*s9 - nu_z*r*s8 + nu_z*s10 - nu_z*s9 - x12 - x14)/(3*m3 + x6), x9*(C2*L*q*r*s3 + 3*C_t*I3*r*s3 + 3*C_t*L*q*s3*x20 + 3*C_z*I3*r*s3 + 3*C_z*I3*s4 + 3*C_z*L*q*s3*x20 + 3*C_z*L*q*s4*x7 + 3*I3*nu_z*r*s8 + 3*I3*nu_z*s9 + L*nu2*q*r*s8 + 3*L*nu_z*q*s8*x20 + 3*L*nu_z*q*s9*x7 - W*x4 - W*x8 - x11*x2 - x11*x3 - x12*x19 - x12*x4 - x14*x19 - x14*x4 - x15*x19 - x15*x4 - x16*x19 - x16*x4 - x17*x4 - x17*x8)])
+    x2 = C1*s1
+    x3 = nu1*s6
+    x4 = C2*s3
+    x5 = nu2*s8
+    x6 = C2*s2
+    x7 = nu2*s7
+    x8 = 3*I3
+    x9 = L*q
+    x10 = 2*x9
+    x11 = r**2
+    x12 = x10*x11
+    x13 = 1/(I3*x10 + L**2*q**2*x11 + m_L*x12 + m_L*x8)
+    x14 = 3*m_L
+    x15 = r*x9
+    x16 = C_t*s4
+    x17 = r*x14
+    x18 = C_t*s5
+    x19 = C_z*s4
+    x20 = C_z*s5
+    x21 = nu_z*s10
+    x22 = nu_z*s9
+    x23 = nu_t*s10
+    x24 = 3*x15
+    x25 = x11*x14
+    x26 = C_t*s3
+    x27 = C_z*s3
+    x28 = nu_z*s8
+    x29 = 3*x11*x9
+    x30 = _cube(r)
+    return _matrix((10, 1), [s6, s7, s8, s9, s10, (M0 + x0 + x1 - x2 - x3)/I1, (-x0 - x1 + x2 + x3 + x4 + x5 - x6 - x7)/I2, x13*(W*x15 - x10*x4 - x10*x5 + x10*x6 + x10*x7 - x14*x4 - x14*x5 + x14*x6 + x14*x7 + x15*x23 + x16*x17 + x16*x24 + x17*x18 - x17*x19 + x17*x20 + x17*x21 - x17*x22 + x18*x24 - x19*x24 + x20*x24 + x21*x24 - x22*x24 - x25*x26 - x25*x27 - x25*x28 - x26*x29 - x27*x29 - x28*x29), 3*(C_t*r*s3 - C_y*s4 - C_z*r*s3 + C_z*s5 + 2*F0 - nu_y*s9 + nu_z*s10 - r*x28 - x16 - x18 - x19 - x22)/(3*m3 + x10), x13*(C2*L*q*r*s3 + 3*C_t*I3*r*s3 + 3*C_t*L*q*s3*x30 + 3*C_z*I3*r*s3 + 3*C_z*I3*s4 + 3*C_z*L*q*s3*x30 + 3*C_z*L*q*s4*x11 + 3*I3*nu_z*r*s8 + 3*I3*nu_z*s9 + L*nu2*q*r*s8 + 3*L*nu_z*q*s8*x30 + 3*L*nu_z*q*s9*x11 - W*x12 - W*x8 - x12*x23 - x15*x6 - x15*x7 - x16*x29 - x16*x8 - x18*x29 - x18*x8 - x20*x29 - x20*x8 - x21*x29 - x21*x8 - x23*x8)])
 
 
 def state_jacobian(I1, I2, I3, C1, C2, nu1, nu2, m3, m_L, C_y, nu_y, C_t, C_z, nu_z, nu_t, q, L, r):
