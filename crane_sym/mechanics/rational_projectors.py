@@ -23,7 +23,7 @@ route for anything else.
 from __future__ import annotations
 
 from fractions import Fraction
-from math import factorial
+from math import factorial, gcd
 
 import mpmath
 import numpy as np
@@ -31,7 +31,9 @@ import sympy as sp
 
 __all__ = ["projector_terms"]
 
-Matrix = list[list[Fraction]]
+#: A rational matrix as exact integers over one common denominator (object
+#: arrays of Python ints: no gcd at each product, as Fractions would take).
+Rational = tuple[np.ndarray, int]
 
 
 def projector_terms(a_key: tuple, b_key: tuple) -> dict[tuple[int, complex], np.ndarray] | None:
@@ -39,28 +41,28 @@ def projector_terms(a_key: tuple, b_key: tuple) -> dict[tuple[int, complex], np.
     (entries the exact rationals of the floats' shortest decimals), or None where
     χ(M) has a factor of degree above 2 or a repeated quadratic factor."""
     n = len(b_key)
-    M = [[Fraction(repr(v)) for v in a_key[i * n:(i + 1) * n]] + [Fraction(repr(b_key[i]))]
-         for i in range(n)] + [[Fraction(0)] * (n + 1)]
+    exact = [[Fraction(repr(v)) for v in a_key[i * n:(i + 1) * n]] + [Fraction(repr(b_key[i]))]
+             for i in range(n)] + [[Fraction(0)] * (n + 1)]
     x = sp.Symbol("x")
-    chi = sp.Poly(sp.Matrix(M).charpoly(x).as_expr(), x, domain="QQ")
+    chi = sp.Poly(sp.Matrix(exact).charpoly(x).as_expr(), x, domain="QQ")
     _, factors = chi.factor_list()
     if any(f.degree() > 2 or (f.degree() == 2 and m > 1) for f, m in factors):
         return None
+    M = _integers(exact)
     terms: dict[tuple[int, complex], np.ndarray] = {}
     for f, m in factors:
-        power = f ** m
         rest = sp.Poly(1, x, domain="QQ")
         for g, k in factors:
             if g != f:
                 rest *= g ** k
-        _, t, one = sp.gcdex(power, rest)
+        _, t, one = sp.gcdex(f ** m, rest)
         assert one == 1                       # coprime factors
         Pi = _poly_at(t * rest, M)
         if f.degree() == 1:
             lam = -_fraction(f.monic().all_coeffs()[1])
-            N = _shifted(M, lam)
+            N = _plus_identity(M, -lam)
             C, j = Pi, 0
-            while j < m and any(any(row) for row in C):
+            while j < m and C[0].any():
                 terms[(j, complex(float(lam)))] = _doubles(C, Fraction(1, factorial(j)))
                 C, j = _matmul(N, C), j + 1
         else:
@@ -68,27 +70,26 @@ def projector_terms(a_key: tuple, b_key: tuple) -> dict[tuple[int, complex], np.
     return terms
 
 
-def _pair_terms(f: sp.Poly, Pi: Matrix, M: Matrix) -> dict[tuple[int, complex], np.ndarray]:
+def _pair_terms(f: sp.Poly, Pi: Rational, M: Rational) -> dict[tuple[int, complex], np.ndarray]:
     """C_{λ,0} of the roots of the irreducible quadratic ``f`` (the upper one of a
     complex pair only: its conjugate folds into it)."""
     _, p, q = (_fraction(c) for c in f.monic().all_coeffs())
     PiM = _matmul(Pi, M)
     with mpmath.workprec(160):
-        mp = lambda r: mpmath.mpf(r.numerator) / r.denominator  # noqa: E731
-        disc = mp(p * p - 4 * q)
-        half = mp(-p) / 2
+        mp = lambda num, den: mpmath.mpf(int(num)) / int(den)  # noqa: E731
+        disc = mp((p * p - 4 * q).numerator, (p * p - 4 * q).denominator)
+        half = mp(-p.numerator, 2 * p.denominator)
         if disc < 0:
-            roots = [mpmath.mpc(half, mpmath.sqrt(-disc) / 2)]
-            other = lambda lam: mpmath.conj(lam)  # noqa: E731
+            pairs = [(mpmath.mpc(half, mpmath.sqrt(-disc) / 2),
+                      mpmath.mpc(half, -mpmath.sqrt(-disc) / 2))]
         else:
-            roots = [half + mpmath.sqrt(disc) / 2, half - mpmath.sqrt(disc) / 2]
-            other = lambda lam: roots[1] if lam == roots[0] else roots[0]  # noqa: E731
+            r1, r2 = half + mpmath.sqrt(disc) / 2, half - mpmath.sqrt(disc) / 2
+            pairs = [(r1, r2), (r2, r1)]
         out = {}
-        for lam in roots:
-            mu = other(lam)
-            C = np.array([[complex((mp(a) - mu * mp(b)) / (lam - mu)) for a, b in zip(ra, rb)]
-                          for ra, rb in zip(PiM, Pi)])
-            out[(0, complex(lam))] = C
+        for lam, mu in pairs:                 # Π (M − μ)/(λ − μ)
+            C = [[complex((mp(a, PiM[1]) - mu * mp(b, Pi[1])) / (lam - mu))
+                  for a, b in zip(ra, rb)] for ra, rb in zip(PiM[0], Pi[0])]
+            out[(0, complex(lam))] = np.array(C)
     return out
 
 
@@ -96,27 +97,35 @@ def _fraction(c) -> Fraction:
     return Fraction(int(c.numerator), int(c.denominator))
 
 
-def _matmul(X: Matrix, Y: Matrix) -> Matrix:
-    cols = list(zip(*Y))
-    return [[sum((a * b for a, b in zip(row, col)), Fraction(0)) for col in cols] for row in X]
+def _integers(rows: list[list[Fraction]]) -> Rational:
+    den = 1
+    for v in (v for row in rows for v in row):
+        den = den * v.denominator // gcd(den, v.denominator)
+    return np.array([[int(v * den) for v in row] for row in rows], dtype=object), den
 
 
-def _shifted(M: Matrix, lam: Fraction) -> Matrix:
-    return [[v - lam if i == j else v for j, v in enumerate(row)] for i, row in enumerate(M)]
+def _matmul(X: Rational, Y: Rational) -> Rational:
+    return X[0].dot(Y[0]), X[1] * Y[1]
 
 
-def _poly_at(poly: sp.Poly, M: Matrix) -> Matrix:
+def _plus_identity(X: Rational, c: Fraction) -> Rational:
+    """X + c·I."""
+    out = X[0] * c.denominator
+    for i in range(len(out)):
+        out[i, i] += c.numerator * X[1]
+    return out, X[1] * c.denominator
+
+
+def _poly_at(poly: sp.Poly, M: Rational) -> Rational:
     """poly(M) by Horner's rule, in exact rationals."""
-    size = len(M)
-    out: Matrix = [[Fraction(0)] * size for _ in range(size)]
+    size = len(M[0])
+    out: Rational = (np.zeros((size, size), dtype=object), 1)
     for c in poly.all_coeffs():
-        out = _matmul(out, M)
-        c = _fraction(c)
-        for i in range(size):
-            out[i][i] += c
+        out = _plus_identity(_matmul(out, M), _fraction(c))
     return out
 
 
-def _doubles(C: Matrix, scale: Fraction) -> np.ndarray:
+def _doubles(C: Rational, scale: Fraction) -> np.ndarray:
     """The exact ``scale·C`` rounded once to doubles (complex, as the terms are)."""
-    return np.array([[complex(float(v * scale)) for v in row] for row in C])
+    return np.array([[complex(float(Fraction(int(v), C[1]) * scale)) for v in row]
+                     for row in C[0]])
