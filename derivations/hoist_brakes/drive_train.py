@@ -29,6 +29,7 @@ import numpy as np
 
 from crane_sym.components import (Brake, Drum, ElasticLink, Gear, Gravity, Inertia, Mass,
                                   Model, Motor)
+from crane_sym.components.templates import Templates
 from crane_sym.mechanics.phase_table import Affine, HybridRun
 
 __all__ = ["OMEGA1", "T_BB", "T_SB", "emergency_stop", "fig9_model", "rated_torque",
@@ -53,7 +54,7 @@ def fig9_model(values: Mapping[str, float], damping: float = 0.0, t_M: float = 0
     none), the motor's torque lost at ``t_M`` [s] (Fig. 3's Δt_M, 0 in Fig. 9).
     """
     v = values
-    return Model([
+    return _TEMPLATES.design([
         Inertia("motor", v["J1"]),                 # Table 1: motor shafts
         Inertia("shaft", 0.0),                     # gearbox input: no inertia of its own
         Inertia("drum", v["J2"]),                  # Table 1: drum shafts
@@ -67,7 +68,12 @@ def fig9_model(values: Mapping[str, float], damping: float = 0.0, t_M: float = 0
         Motor("drive", "motor", "steady", off_at=t_M),          # Fig. 3: torque lost
         Brake("safety", "drum", v["M_SB"], delay=v["t_SB"]),    # Table 1: M_SB, t_SB
         Brake("service", "motor", v["M_BB"], delay=v["t_BB"]),  # Table 1: M_BB, t_BB
-    ], name="hoist_fig9", title="Fig. 9: emergency stop while lowering")
+    ])
+
+
+#: The derived models of Fig. 9's hoist, one per structure: runs with other
+#: values (payloads, the audit's box of damping and delay) share the derivation.
+_TEMPLATES = Templates("hoist_fig9", "Fig. 9: emergency stop while lowering")
 
 
 def table1_values(payload: float, g: float = 9.81, backlash_deg: float | None = None,
