@@ -11,6 +11,7 @@ the reading takes 1 s" instead of only "Δt = 1 s".
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import mpmath
 import sympy as sp
@@ -24,9 +25,10 @@ __all__ = ["FitResult", "allowed", "fit_of"]
 _GRID = 400
 
 
+@lru_cache(maxsize=1024)
 def allowed(expr: sp.Expr, fit: Fit, printed: sp.Expr,
             tolerance: float) -> tuple[float, float] | None:
-    """The interval of ``fit.symbol`` inside ``fit.bracket`` where ``expr`` is
+    """(Cached: each record of a fit asks for every record's interval.) The interval of ``fit.symbol`` inside ``fit.bracket`` where ``expr`` is
     ``printed`` within ``tolerance`` (relative to ``expr``, as the numeric check
     compares), or None when no point of the bracket is; the ends bisected to
     12 digits. Between the first and the last point that pass, every grid
