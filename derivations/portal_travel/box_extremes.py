@@ -2,7 +2,7 @@
 parameters, as studied by ``box_table.py`` (written by
 ``python -m crane_sym.derivations.portal_travel.box_table``; do not edit).
 ``INPUTS`` is the digest of the inputs they were found for
-(``startup.box_inputs``); tests/test_portal_box.py studies them again."""
+(``startup.box_inputs``); tests/test_portal_box.py checks them."""
 
 INPUTS = '4b2e0647ba846539b6bddd7dd7dab2d5ff8fd113ce3835c4fcef3b9fe147a07f'
 

@@ -17,7 +17,7 @@ HEADER = ('"""The extremes of 003\'s Table 1 numbers over the box of the plausib
           "parameters, as studied by ``box_table.py`` (written by\n"
           "``python -m crane_sym.derivations.portal_travel.box_table``; do not edit).\n"
           "``INPUTS`` is the digest of the inputs they were found for\n"
-          '(``startup.box_inputs``); tests/test_portal_box.py studies them again."""\n')
+          '(``startup.box_inputs``); tests/test_portal_box.py checks them."""\n')
 
 
 def render() -> str:

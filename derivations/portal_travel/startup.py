@@ -93,10 +93,11 @@ def table1_sensitivities(committed: bool = True) -> dict[str, Sensitivity]:
     ``"psi, <backlash>"``, ``"a<k>, <backlash>"`` -> Sensitivity (one box per
     backlash, so the optimiser of a number runs that backlash's start-up alone).
 
-    The boxes' extremes (about 700 start-ups, 80 s) come from the committed
+    The boxes' extremes (about 700 start-ups, minutes) come from the committed
     table ``box_extremes.py`` where it was found for these inputs
     (:func:`box_inputs`), else, and with ``committed=False``, from the runs;
-    ``tests/test_portal_box.py`` studies the boxes again and compares."""
+    ``tests/test_portal_box.py`` runs every extreme at its place and studies
+    the box of backlash 0 again."""
     from .box_extremes import EXTREMES, INPUTS
     known = ({name: tuple(Extreme(v, at, by) for v, at, by in ends)
               for name, ends in EXTREMES.items()}
