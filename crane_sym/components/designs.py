@@ -33,16 +33,12 @@ from __future__ import annotations
 import hashlib
 import math
 import tomllib
-from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 from typing import Mapping, Sequence
 
 import numpy as np
-from sympy.physics.units import Dimension, time
-from sympy.physics.units.systems.si import dimsys_SI
+from sympy.physics.units import time
 
-from crane_sym import units
 from crane_sym.components import kinds
 from crane_sym.components.hybrid import ComponentSystem
 from crane_sym.components.kinds import by_table
@@ -53,6 +49,7 @@ from crane_sym.components.parts import (DIMENSIONS, GROUND, TRANSLATING, UNITS, 
                                         ComponentError, Value, value)
 from crane_sym.components.pruning import Scope
 from crane_sym.components.component_file import read_component_file
+from crane_sym.components.design_fields import Field, given, read_entry, si_unit
 from crane_sym.mechanics.phase_table import HybridRun, largest
 from crane_sym.mechanics.piecewise_linear import MAX_PHASES
 
@@ -69,82 +66,6 @@ OUTPUTS = {"peak": "largest |load| of the elastic link {link} over the run",
 _UNITS = {"factor": "1", "angle": "rad"}
 #: The output of each ground contact, ``<contact>.reaction``.
 REACTION = "largest reaction of the ground contact {contact} over the run"
-
-
-@dataclass(frozen=True)
-class Field:
-    """A value of one component that a sweep may vary: ``<component>.<key>``,
-    the file's text for it (None: not given, its default), its dimension, the
-    sign it must keep (``positive``, ``nonnegative``, ``nonzero`` or ``""``)."""
-
-    component: str
-    table: str
-    key: str
-    text: str | None
-    dimension: Dimension
-    sign: str
-
-    @property
-    def name(self) -> str:
-        return f"{self.component}.{self.key}"
-
-    @property
-    def unit(self) -> str:
-        """The unit the file writes it in ("1" for a bare number), else SI."""
-        if self.text is not None:
-            return units.unit_text(self.text) or "1"
-        return si_unit(self.dimension)
-
-
-@lru_cache(maxsize=None)
-def si_unit(dimension: Dimension) -> str:
-    """The SI unit of ``dimension`` as :mod:`crane_sym.units` reads it
-    (``kg*m^2*s^-2``; ``1`` for none): its factor to SI is exactly 1.
-
-    Parameters
-    ----------
-    dimension : Dimension
-        A dimension of mass, length, time and current.
-    """
-    deps = dimsys_SI.get_dimensional_dependencies(dimension)
-    names = {"mass": "kg", "length": "m", "time": "s", "current": "A"}
-    parts = [f"{names[str(k.name)]}" + ("" if p == 1 else f"^{int(p)}")
-             for k, p in deps.items() if p]
-    return "*".join(parts) or "1"
-
-
-def _text(value: float, field: Field) -> str | float:
-    """A value in SI as the file's reader takes it."""
-    if by_table()[field.table].key(field.key).form == "number":
-        return float(value)
-    unit = si_unit(field.dimension)
-    return repr(float(value)) + ("" if unit == "1" else f" {unit}")
-
-
-def _given(value: float, field: Field) -> Value | float:
-    """:func:`_text` read as the parts' constructors read it (a :class:`Value`
-    of its number in SI, its dimension and the text)."""
-    text = _text(value, field)
-    if not isinstance(text, str):
-        return text
-    q = units.parse_quantity(text)
-    return Value(q.value, q.dimension, text)
-
-
-def _read(kind: str, entry: dict) -> dict:
-    """A table ``entry`` with each quantity's text read once into a
-    :class:`Value` (a design's parts are built from it without parsing the
-    keys it does not change); a text that is no quantity stays text."""
-    forms = {k.name: k.form for k in by_table()[kind].keys}
-    out = dict(entry)
-    for key, v in entry.items():
-        if forms.get(key) == "quantity" and isinstance(v, str):
-            try:
-                q = units.parse_quantity(v)
-            except units.UnitError:
-                continue                      # a word ("steady"), or refused as before
-            out[key] = Value(q.value, q.dimension, v)
-    return out
 
 
 class Designs:
@@ -225,16 +146,17 @@ class Designs:
     def parts(self, values: Mapping[str, float]) -> list:
         """The components with ``values`` (field name -> SI) put in: the
         tables they change built again from the entries read once
-        (:func:`_read`), each value given as a :class:`Value` (:func:`_given`)."""
+        (:func:`~crane_sym.components.design_fields.read_entry`), each value given as a
+        :class:`Value` (:func:`~crane_sym.components.design_fields.given`)."""
         parts = list(self.model.components)
         changed: dict[str, dict] = {}
         for name, v in values.items():
             f = self.fields[name]
             if f.component not in changed:
                 if f.component not in self._entries_read:
-                    self._entries_read[f.component] = _read(*self.entries[f.component])
+                    self._entries_read[f.component] = read_entry(*self.entries[f.component])
                 changed[f.component] = dict(self._entries_read[f.component])
-            changed[f.component][f.key] = _given(v, f)
+            changed[f.component][f.key] = given(v, f)
         for component, entry in changed.items():
             kind = self.entries[component][0]
             parts[self.position[component]] = by_table()[kind].read(

@@ -2,7 +2,7 @@
 
 ``crane-sym sweep FILE --vary COMPONENT.FIELD=START:STOP:N[:log] [UNIT] ...
 --output LINK.peak|LINK.factor`` sweeps a drive train of the user's own: the
-axes are values of its components (:class:`crane_sym.components.designs.Field`:
+axes are values of its components (:class:`crane_sym.components.design_fields.Field`:
 ``gearbox_mesh.stiffness``, ``hook.mass``), in the unit the file writes them
 unless the argument names another of the same dimension; the outputs are the
 largest |load| of each elastic link over the file's run and its dynamic
