@@ -133,7 +133,7 @@ def test_designs_are_one_family_only_where_they_share_one_template(found):
     """Designs of the file's template make one family; a model derived on its
     own (the same parts, its own equations) beside them does not, and the
     starts from rest of such a mix are refused rather than stacked."""
-    from crane_sym.components.design_arrays import one_template, template
+    from crane_sym.components.template_forms import one_template, template
     from crane_sym.components.model import Model
     from crane_sym.components.start import rest_starts
     models = [found.design({"holding.torque": v}) for v in (8e3, 25e3)]

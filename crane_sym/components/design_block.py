@@ -27,7 +27,8 @@ import numpy as np
 import sympy as sp
 
 from crane_sym.components import kinds
-from crane_sym.components.design_arrays import DesignArray, evaluated, numbers_of
+from crane_sym.components.design_arrays import DesignArray
+from crane_sym.components.template_forms import evaluated, numbers_of
 from crane_sym.components.design_family import DesignFamily
 from crane_sym.components.design_outputs import link_loads
 from crane_sym.components.hybrid import ComponentSystem

@@ -49,7 +49,7 @@ from typing import Sequence
 import numpy as np
 
 from crane_sym.components.design_arrays import (DesignArray, free_limits, mode_guards,
-                                                mode_matrices, net_load, one_template)
+                                                mode_matrices, net_load)
 from crane_sym.components.design_family import DesignFamily
 from crane_sym.components.design_outputs import LinkLoad
 from crane_sym.components.design_switches import switched
@@ -59,6 +59,7 @@ from crane_sym.components.laws import LawClock, clocked
 from crane_sym.components.layout import layout
 from crane_sym.components.mode_numbers import ModeNumbers
 from crane_sym.components.modes import BACKWARD, FORWARD, FREE, HELD, Mode
+from crane_sym.components.template_forms import one_template
 from crane_sym.mechanics.piecewise_linear import Guard
 
 __all__ = ["BACKWARD", "FORWARD", "FREE", "HELD", "ComponentSystem", "Mode"]

@@ -35,7 +35,7 @@ from typing import Hashable, Sequence
 import numpy as np
 
 from crane_sym.components.contacts import ContactPeak, contact_peaks
-from crane_sym.components.design_arrays import template
+from crane_sym.components.template_forms import template
 from crane_sym.components.design_assembly import reassemble
 from crane_sym.components.equations import Equations, derive
 from crane_sym.components.hybrid import ComponentSystem, Mode

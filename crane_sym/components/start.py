@@ -16,7 +16,8 @@ from typing import Sequence
 import numpy as np
 
 from crane_sym.components.contacts import resting
-from crane_sym.components.design_arrays import DesignArray, one_template
+from crane_sym.components.design_arrays import DesignArray
+from crane_sym.components.template_forms import one_template
 from crane_sym.components.hybrid import BACKWARD, FORWARD, FREE, ComponentSystem, Mode
 from crane_sym.components.initial import apply
 from crane_sym.components.parts import DIMENSIONS, ComponentError, Given, value
