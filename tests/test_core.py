@@ -69,6 +69,18 @@ def test_symbolic_and_numeric_checks_fail_on_a_wrong_coefficient():
     assert outcome.status == FAIL and "ratio" in outcome.detail
 
 
+def test_symbolic_check_reads_a_printed_abs_as_its_cases():
+    """A print's |u| transcribed as its two cases against a derived Abs (004's
+    (21)) is a symbolic identity; with a sign changed in one case it is not."""
+    u = y - 2 * w
+    cases = sp.Piecewise((u, u >= 0), (-u, True))
+    printed = sp.Eq(F0, (w - cases) / 4)
+    outcome = symbolic_equivalence(printed, sp.Eq(F0, (w - sp.Abs(u)) / 4), TABLE)
+    assert outcome.status == PASS and "read as |x|" in outcome.detail
+    wrong = sp.Eq(F0, (w - sp.Piecewise((u, u >= 0), (u, True))) / 4)
+    assert symbolic_equivalence(wrong, sp.Eq(F0, (w - sp.Abs(u)) / 4), TABLE).status != PASS
+
+
 def test_numeric_check_reports_values_for_definitions():
     outcome = numeric_equivalence(sp.Eq(w, sp.sqrt(k / m) * 1.001), sp.Eq(w, sp.sqrt(k / m)), TABLE)
     assert outcome.status == FAIL and "right-hand side" in outcome.detail

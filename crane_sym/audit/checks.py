@@ -70,10 +70,30 @@ def unknowns_of(table: SymbolTable) -> set[sp.Basic]:
     return {e.expr for e in table.with_role(TIME, COORDINATE, DEFINED)}
 
 
+def _abs_of_cases(expr: sp.Expr) -> sp.Expr | None:
+    """``expr`` expanded with each Piecewise((x, x ≥ 0), (−x, True)) read as |x|,
+    where it holds both (a print's |x| transcribed as its cases against a derived
+    Abs: ``simplify`` took seconds to find what this shows); else None."""
+    if not (expr.has(sp.Abs) and expr.has(sp.Piecewise)):
+        return None
+
+    def is_abs(p: sp.Basic) -> bool:
+        if not isinstance(p, sp.Piecewise) or len(p.args) != 2 or p.args[1].cond != sp.true:
+            return False
+        (x, cond), (other, _) = p.args
+        return other == -x and isinstance(cond, sp.core.relational.Relational) and \
+            cond.canonical in {r.canonical for r in (sp.Ge(x, 0), sp.Gt(x, 0),
+                                                     sp.Le(-x, 0), sp.Lt(-x, 0))}
+    return sp.expand(expr.replace(is_abs, lambda p: sp.Abs(p.args[0].expr)))
+
+
 def symbolic_equivalence(printed: sp.Eq, derived: sp.Eq,
                          table: SymbolTable) -> CheckOutcome:
     """Decide by simplification whether two relations are the same equation."""
     rp, rd = residual(printed), residual(derived)
+    if _abs_of_cases(rp - rd) == 0:
+        return CheckOutcome("symbolic", PASS, "printed − derived expands to 0 with the "
+                            "cases (x if x ≥ 0, else −x) read as |x|")
     if sp.expand(rp - rd) == 0 or sp.simplify(rp - rd) == 0:   # expanding is enough, mostly
         return CheckOutcome("symbolic", PASS, "printed − derived simplifies to 0")
     if printed.lhs == derived.lhs and printed.lhs.free_symbols & unknowns_of(table):
