@@ -28,15 +28,15 @@ ALIASES: dict[str, str] = {"000": "travel_braking", "001": "hoist_brakes",
 #: machine (`crane-sym bench --audit`, its stages table): what orders the
 #: papers longest first in a pool (``audit.papers.longest_first``). Only the
 #: order matters; a paper missing here is taken first.
-AUDIT_SECONDS: dict[str, float] = {"travel_braking": 1.4, "hoist_brakes": 5.7,
-                                   "hoist_startup": 13.4, "portal_travel": 3.8,
-                                   "drum_drive": 8.1}
+AUDIT_SECONDS: dict[str, float] = {"travel_braking": 2.3, "hoist_brakes": 4.8,
+                                   "hoist_startup": 14.9, "portal_travel": 7.2,
+                                   "drum_drive": 8.7}
 #: Seconds each paper's share of `crane-sym generate` last took in one process
-#: (its build, module, scenes and machine reading; measured at a load of 2.2),
+#: (its build, module, scenes and machine reading; measured at a load of 0.9),
 #: for the same order.
-GENERATE_SECONDS: dict[str, float] = {"travel_braking": 4.5, "hoist_brakes": 9.0,
-                                      "hoist_startup": 20.3, "portal_travel": 6.7,
-                                      "drum_drive": 6.8}
+GENERATE_SECONDS: dict[str, float] = {"travel_braking": 3.8, "hoist_brakes": 8.2,
+                                      "hoist_startup": 24.6, "portal_travel": 10.2,
+                                      "drum_drive": 7.5}
 
 #: One example (or two) per subcommand, shown at the end of its --help; they
 #: name registered papers and shipped scenes, so they live with the papers' list.
