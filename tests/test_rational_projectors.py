@@ -50,7 +50,7 @@ def _exact_exp(A: np.ndarray, b, t: float) -> mpmath.matrix:
 
 
 def _terms_at(terms: dict, t: float) -> np.ndarray:
-    return sum(C * t ** j * np.exp(lam * t) / 1.0 for (j, lam), C in terms.items()
+    return sum(C * t ** j * np.exp(lam * t) for (j, lam), C in terms.items()
                if lam.imag >= 0) + sum(np.conj(C) * t ** j * np.exp(np.conj(lam) * t)
                                        for (j, lam), C in terms.items() if lam.imag > 0)
 

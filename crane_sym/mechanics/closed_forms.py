@@ -239,8 +239,11 @@ def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedFo
     A : (n, n) array-like of numbers
     b : (n,) array-like of numbers
     exact : bool, optional
-        True: SymPy's exact Jordan form (entries as exact decimals), whose cost
-        grows without bound with n and near-coinciding eigenvalues (radicals).
+        True: the exact form (entries as exact decimals): rational spectral
+        projectors where the characteristic polynomial's factors are linear or
+        simple quadratics (:mod:`crane_sym.mechanics.rational_projectors`), else
+        SymPy's Jordan form, whose cost grows without bound with n and
+        near-coinciding eigenvalues (radicals).
         False: the spectral clusters (:mod:`crane_sym.mechanics.spectral_clusters`),
         O(n³), exact where eigenvalues coincide or nearly do. None (the
         default): the exact form where it is cheap (:func:`exact_is_cheap`:
@@ -255,7 +258,7 @@ def closed_form(A: Sequence, b: Sequence, exact: bool | None = None) -> ClosedFo
 
 @lru_cache(maxsize=256)
 def exact_is_cheap(a_key: tuple, b_key: tuple) -> bool:
-    """Whether SymPy's Jordan form is cheap and adds accuracy: n ≤ 4, no two
+    """Whether the exact form is cheap and adds accuracy: n ≤ 4, no two
     nonzero eigenvalues within a cluster of each other (where exact radicals
     of nearly equal roots grow without bound), and a characteristic
     polynomial whose factors over the rationals are at most quadratic."""
