@@ -15,26 +15,21 @@ from crane_sym.scenes.run import run_scene
 from crane_sym.scenes.reading import Panel, list_scenes
 
 
-@pytest.fixture(scope="module")
-def written(tmp_path_factory):
-    """scene -> [(figure, path)] of every shipped scene, as `crane-sym run` writes them."""
-    out, seen = {}, []
+def _figures(name: str, folder) -> list:
+    """[(figure, path)] of scene ``name``, as `crane-sym run` writes them."""
+    seen = []
     save = plots.save
 
     def keep(fig, path):
         seen.append((fig, path))
         return save(fig, path)
 
-    folder = tmp_path_factory.mktemp("scenes")
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(plots, "save", keep)
-        for name in list_scenes():
-            seen.clear()
-            _, paths = run_scene(name, folder)
-            # each figure drawn to a temporary, renamed onto its path at the end
-            assert len(paths) == len(seen) and all(p.is_file() for p in paths)
-            out[name] = [(fig, path) for (fig, _), path in zip(seen, paths)]
-    return out
+        _, paths = run_scene(name, folder)
+    # each figure drawn to a temporary, renamed onto its path at the end
+    assert len(paths) == len(seen) and all(p.is_file() for p in paths)
+    return [(fig, path) for (fig, _), path in zip(seen, paths)]
 
 
 def _draw(fig):
@@ -46,60 +41,68 @@ def _draw(fig):
     return canvas.get_renderer()
 
 
-@pytest.mark.parametrize("name", list_scenes())
-def test_each_figure_has_at_most_four_panels_and_one_title(name, written):
-    for fig, path in written[name]:
-        axes = fig.get_axes()
-        assert 1 <= len(axes) <= plots.MAX_PANELS, path
-        # one figure title (the suptitle), no other text on the figure
-        assert fig.get_suptitle() and [t.get_text() for t in fig.texts] == [fig.get_suptitle()]
-        titles = [ax.get_title() for ax in axes]
-        if len(axes) == 1:
-            assert titles == [""], path          # its caption is in the figure's title
-        else:
-            assert all(titles) and len(set(titles)) == len(titles), path
-        width, height = fig.get_size_inches() * 120
-        assert height <= 1600 and width <= 1300, path
+def _panels_and_title(fig, path) -> None:
+    """At most four panels, one figure title, each panel's own title."""
+    axes = fig.get_axes()
+    assert 1 <= len(axes) <= plots.MAX_PANELS, path
+    # one figure title (the suptitle), no other text on the figure
+    assert fig.get_suptitle() and [t.get_text() for t in fig.texts] == [fig.get_suptitle()]
+    titles = [ax.get_title() for ax in axes]
+    if len(axes) == 1:
+        assert titles == [""], path          # its caption is in the figure's title
+    else:
+        assert all(titles) and len(set(titles)) == len(titles), path
+    width, height = fig.get_size_inches() * 120
+    assert height <= 1600 and width <= 1300, path
 
 
-@pytest.mark.parametrize("name", list_scenes())
-def test_legends_lie_outside_the_data_and_inside_the_figure(name, written):
-    for fig, path in written[name]:
-        renderer = _draw(fig)
-        page = fig.bbox
-        for ax in fig.get_axes():
-            legend = ax.get_legend()
-            lines = [ln for ln in ax.get_lines() if not ln.get_label().startswith("_")]
-            if len(lines) < 2:
-                continue
-            assert legend is not None, path
-            box, data = legend.get_window_extent(renderer), ax.get_window_extent(renderer)
-            assert not box.overlaps(data), (path, ax.get_title())
-            assert page.x0 <= box.x0 and box.x1 <= page.x1, path       # not cut off
-            assert page.y0 <= box.y0 and box.y1 <= page.y1, path
-            for line in lines:                   # no data point under the legend
-                xy = ax.transData.transform(line.get_xydata())
-                inside = ((xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1)
-                          & (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1))
-                assert not inside.any(), (path, line.get_label())
+def _legends_outside_the_data(fig, path) -> None:
+    """Legends outside the data area and inside the figure."""
+    renderer = _draw(fig)
+    page = fig.bbox
+    for ax in fig.get_axes():
+        legend = ax.get_legend()
+        lines = [ln for ln in ax.get_lines() if not ln.get_label().startswith("_")]
+        if len(lines) < 2:
+            continue
+        assert legend is not None, path
+        box, data = legend.get_window_extent(renderer), ax.get_window_extent(renderer)
+        assert not box.overlaps(data), (path, ax.get_title())
+        assert page.x0 <= box.x0 and box.x1 <= page.x1, path       # not cut off
+        assert page.y0 <= box.y0 and box.y1 <= page.y1, path
+        for line in lines:                   # no data point under the legend
+            xy = ax.transData.transform(line.get_xydata())
+            inside = ((xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1)
+                      & (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1))
+            assert not inside.any(), (path, line.get_label())
 
 
 def _outside_math(text: str) -> str:
     return re.sub(r"\$[^$]*\$", "", text)
 
 
-@pytest.mark.parametrize("name", list_scenes())
-def test_symbols_are_mathtext(name, written):
+def _symbols_in_mathtext(fig, path) -> None:
     """Subscripts and Cyrillic qualifiers sit inside $...$ (mathtext), never
     as plain text such as K_дин or x_ст."""
-    for fig, path in written[name]:
-        for ax in fig.get_axes():
-            texts = [ax.get_xlabel(), ax.get_ylabel(), ax.get_title()]
-            texts += [ln.get_label() for ln in ax.get_lines()
-                      if not ln.get_label().startswith("_")]
-            for text in texts:
-                plain = _outside_math(text)
-                assert "_" not in plain and not re.search("[а-яА-Я]", plain), (path, text)
+    for ax in fig.get_axes():
+        texts = [ax.get_xlabel(), ax.get_ylabel(), ax.get_title()]
+        texts += [ln.get_label() for ln in ax.get_lines()
+                  if not ln.get_label().startswith("_")]
+        for text in texts:
+            plain = _outside_math(text)
+            assert "_" not in plain and not re.search("[а-яА-Я]", plain), (path, text)
+
+
+@pytest.mark.parametrize("name", list_scenes())
+def test_each_scene_s_figures_read_well(name, tmp_path):
+    """Each figure a shipped scene writes: at most four panels and one title,
+    legends outside the data and inside the figure, symbols in mathtext that
+    renders without a missing glyph. One test a scene, so that each scene runs
+    once (a fixture of all of them ran them all on every pytest-xdist worker)."""
+    for fig, path in _figures(name, tmp_path):
+        _panels_and_title(fig, path)
+        _legends_outside_the_data(fig, path)
+        _symbols_in_mathtext(fig, path)
 
 
 def test_drive_laws_are_split_by_lifting_case():
