@@ -28,11 +28,12 @@ _GRID = 400
 @lru_cache(maxsize=1024)
 def allowed(expr: sp.Expr, fit: Fit, printed: sp.Expr,
             tolerance: float) -> tuple[float, float] | None:
-    """(Cached: each record of a fit asks for every record's interval.) The interval of ``fit.symbol`` inside ``fit.bracket`` where ``expr`` is
+    """The interval of ``fit.symbol`` inside ``fit.bracket`` where ``expr`` is
     ``printed`` within ``tolerance`` (relative to ``expr``, as the numeric check
     compares), or None when no point of the bracket is; the ends bisected to
     12 digits. Between the first and the last point that pass, every grid
-    point passes, or a ValueError says the set is not one interval."""
+    point passes, or a ValueError says the set is not one interval. Cached:
+    each record of a fit asks for every record's interval."""
     f = sp.lambdify(fit.symbol, expr, modules="mpmath")
     target = mpmath.mpf(sp.Rational(printed).p) / sp.Rational(printed).q
     tol = mpmath.mpf(max(tolerance, 1e-12))
