@@ -240,16 +240,23 @@ def difference(printed: sp.Eq, derived: sp.Eq, *, max_ops: int = 300) -> sp.Expr
             if coeff != 0 and scale != 0:
                 pairs.append((rp, rd * coeff / scale))
                 break
-    best = None
+    best, best_ops = None, None
     for a, b in pairs:  # expand cancels what the two share; no trigsimp roulette
         expanded = sp.expand(a - b)
-        candidates = [expanded, sp.factor_terms(expanded)]
-        if sp.count_ops(expanded) <= max_ops // 3:  # common denominators cancel
-            candidates.append(sp.factor_terms(sp.cancel(expanded)))
-        for diff in candidates:
-            if best is None or sp.count_ops(diff) < sp.count_ops(best):
-                best = diff
-    return best if best is not None and sp.count_ops(best) <= max_ops else None
+        expanded_ops = sp.count_ops(expanded)
+        candidates = [(expanded, expanded_ops)]
+        candidates.append(_with_ops(sp.factor_terms(expanded)))
+        if expanded_ops <= max_ops // 3:  # common denominators cancel
+            candidates.append(_with_ops(sp.factor_terms(sp.cancel(expanded))))
+        for diff, ops in candidates:
+            if best is None or ops < best_ops:
+                best, best_ops = diff, ops
+    return best if best is not None and best_ops <= max_ops else None
+
+
+def _with_ops(expr: sp.Expr) -> tuple[sp.Expr, int]:
+    """``expr`` with its operation count, counted once."""
+    return expr, sp.count_ops(expr)
 
 
 def _witness_values(symbols: list, rng: np.random.Generator) -> list | None:

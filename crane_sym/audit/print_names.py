@@ -142,6 +142,8 @@ def names_pass(tex: str, vocab: dict[str, sp.Basic],
     """
     complex_names = [k for k in vocab if not _NATIVE.match(k.replace(" ", ""))]
     for key in sorted(complex_names, key=lambda k: -len(k.split())):
+        if not all(atom in tex for atom in key.split()):
+            continue                # a match holds each atom as printed
         pattern = _compiled(key)
         if pattern.search(tex):
             token = placeholder(len(tokens))

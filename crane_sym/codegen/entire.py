@@ -199,15 +199,17 @@ def plan(key: int) -> Plan:
         closed_loss = [float(_bound(printed, mpmath.mpf(z))[1] / (U * s))
                        for z, s in zip(_GRID, sizes)]
         # |c_k| z**k, grid point by grid point until the series stops converging
-        scale = [(k, abs(mpmath.mpf(c.numerator) / c.denominator)) for k, c in coeffs.items()]
+        powers = list(coeffs)
+        scale = [abs(mpmath.mpf(c.numerator) / c.denominator) for c in coeffs.values()]
         best, series_worst = None, 0.0
         for i, cut in enumerate(_GRID):
-            w = mpmath.mpf(cut)
-            magnitude = [a * w ** k for k, a in scale]
-            n = _terms(list(coeffs), magnitude, power, sizes[i])
+            if best is not None and series_worst >= best[0]:
+                break       # the series' part only grows, the closed form's only shrinks
+            tails = _tails(scale, _powers(mpmath.mpf(cut), powers))
+            n = _terms(powers, tails, power, sizes[i])
             if n is None:
                 break
-            series_worst = max(series_worst, float(2 * mpmath.fsum(magnitude) / sizes[i]))
+            series_worst = max(series_worst, float(2 * tails[0] / sizes[i]))
             loss = max(series_worst, max(closed_loss[i:]))
             if best is None or loss < best[0]:
                 best = (loss, cut, n)
@@ -216,13 +218,36 @@ def plan(key: int) -> Plan:
     return Plan(printed, cut, power, step, taylor, loss)
 
 
-def _terms(powers: list[int], magnitude: list, power: int, size) -> int | None:
-    """Fewest terms after the first so that the omitted ones sum below TAIL·size."""
+def _powers(w: mpmath.mpf, powers: list[int]) -> list[mpmath.mpf]:
+    """w**k for the increasing exponents ``powers``, each from the one before
+    by one multiplication (a few roundings at 40 digits: far below the 2**-60
+    the plan decides on)."""
+    out, last, value = [], powers[0], w ** powers[0]
+    steps: dict[int, mpmath.mpf] = {}
+    for k in powers:
+        if k != last:
+            gap = k - last
+            if gap not in steps:
+                steps[gap] = w ** gap
+            value *= steps[gap]
+            last = k
+        out.append(value)
+    return out
+
+
+def _tails(scale: list, powers: list) -> list:
+    """tails[i] = Σ_{j ≥ i} scale[j]·powers[j]: what the series omits after i terms."""
     tails, running = [], mpmath.mpf(0)
-    for m in reversed(magnitude):
-        running += m
+    for a, p in zip(reversed(scale), reversed(powers)):
+        running += a * p
         tails.append(running)
-    tails.reverse()                         # tails[i] = sum of magnitude[i:]
+    tails.reverse()
+    return tails
+
+
+def _terms(powers: list[int], tails: list, power: int, size) -> int | None:
+    """Fewest terms after the first so that the omitted ones (``tails``, the sums
+    of the magnitudes from each term on) sum below TAIL·size."""
     for i, k in enumerate(powers):
         if k > _ORDER - 60:
             return None

@@ -25,6 +25,7 @@ The waves and their coefficients are built in :mod:`crane_sym.codegen.waves`.
 from __future__ import annotations
 
 from collections import defaultdict
+from functools import lru_cache
 from typing import Callable
 
 import mpmath
@@ -212,9 +213,11 @@ def _horner(var: sp.Expr, parts: list[sp.Expr]) -> sp.Expr:
     return total
 
 
+@lru_cache(maxsize=None)
 def _stable_piece(piece: sp.Expr, t: sp.Symbol, anchor: sp.Expr,
                   window: sp.Expr | None) -> sp.Expr:
-    """One side of a window (or the part present at all times) in local variables."""
+    """One side of a window (or the part present at all times) in local
+    variables; cached, as a module's functions and its scenes share pieces."""
     if piece == 0:
         return piece
     k = _slope(piece, t)
