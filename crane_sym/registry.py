@@ -5,6 +5,7 @@ Derivation modules are imported, and built, only when asked for.
 from __future__ import annotations
 
 import importlib
+import importlib.util
 from functools import lru_cache
 from types import ModuleType
 
@@ -93,14 +94,19 @@ def module(name: str) -> ModuleType:
 
 
 def module_path(name: str) -> str:
-    """The file of the derivation's package (its ``__init__.py``).
+    """The file of the derivation's package (its ``__init__.py``), found
+    without importing it (an import builds its printed formulas: a second
+    in a process that only lists the shipped scenes).
 
     Parameters
     ----------
     name : str
         A derivation id or paper number (``000``).
     """
-    return str(module(name).__file__)
+    spec = importlib.util.find_spec(DERIVATIONS[resolve(name)])
+    if spec is None or spec.origin is None:
+        raise ImportError(f"derivation package {DERIVATIONS[resolve(name)]} is not installed")
+    return spec.origin
 
 
 def scene_loads(name: str) -> dict[str, SceneLoad]:

@@ -24,7 +24,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from functools import lru_cache
+from functools import cached_property, lru_cache
 from typing import Sequence
 
 import mpmath
@@ -77,10 +77,17 @@ class ExactForm:
             out.append(tau ** k * mpmath.exp(s * tau) * wave)
         return out
 
+    @cached_property
+    def _rows(self) -> tuple[list[list[mpmath.mpf]], ...]:
+        """The state rows of each C_j as lists (mpmath's matrix product, less
+        its bookkeeping: the same dot products in the same order)."""
+        return tuple([[C[i, k] for k in range(C.cols)] for i in range(self.n)]
+                     for C in self.coefficients)
+
     def vectors(self, z0: Sequence[mpmath.mpf]) -> list[list[mpmath.mpf]]:
         """C_j (x0, 1) for every term, the state part only."""
-        z = mpmath.matrix(list(z0) + [1])
-        return [list((C * z)[: self.n]) for C in self.coefficients]
+        z = [mpmath.mpmathify(v) for v in z0] + [mpmath.mpf(1)]
+        return [[mpmath.fdot(zip(row, z)) for row in rows] for rows in self._rows]
 
     def state(self, tau: mpmath.mpf, z0: Sequence[mpmath.mpf]) -> list[mpmath.mpf]:
         """x(τ) from x(0) = ``z0``."""
