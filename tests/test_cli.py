@@ -2,8 +2,12 @@
 name, --version, --help, progress on stderr only, the accuracy verdict, list."""
 from __future__ import annotations
 
+import contextlib
+import fcntl
 import importlib.util
+import io
 import json
+import os
 import re
 import shlex
 import sys
@@ -22,10 +26,41 @@ from crane_sym.registry import EXAMPLES
 ROOT = Path(__file__).resolve().parents[1]
 
 
+class _Terminal(io.StringIO):
+    """A captured stderr that says it is a terminal (progress is shown there)."""
+
+    def isatty(self) -> bool:
+        return True
+
+
 @pytest.fixture(scope="module")
-def files() -> dict[str, str]:
-    """Everything `crane-sym generate` writes (rendered once for the module)."""
-    return generate.all_files()
+def written(tmp_path_factory) -> tuple[Path, str, str]:
+    """`crane-sym generate --out DIR` into a folder that does not exist yet, run
+    once for the whole test run (a full regeneration is the slowest command
+    there is): the folder, stdout and stderr (a terminal's). pytest-xdist's
+    workers share it: the first to take the lock regenerates, the others wait
+    and read what it left."""
+    run = tmp_path_factory.getbasetemp()         # a worker's: popen-gwN in the run's
+    shared = (run.parent if os.environ.get("PYTEST_XDIST_WORKER") else run) / "cli_generate"
+    shared.mkdir(exist_ok=True)
+    out, streams = shared / "generated", shared / "streams.json"
+    with open(shared / "lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        if not streams.exists():
+            stdout, stderr = io.StringIO(), _Terminal()
+            with contextlib.redirect_stdout(stdout), contextlib.redirect_stderr(stderr):
+                code = main(["generate", "--out", str(out)])
+            assert code == 0, stderr.getvalue()
+            streams.write_text(json.dumps([stdout.getvalue(), stderr.getvalue()]),
+                               encoding="utf-8")
+    stdout, stderr = json.loads(streams.read_text(encoding="utf-8"))
+    return out, stdout, stderr
+
+
+@pytest.fixture(scope="module")
+def files(written) -> dict[str, str]:
+    """Everything `crane-sym generate` wrote, by file name."""
+    return {p.name: p.read_text(encoding="utf-8") for p in sorted(written[0].iterdir())}
 
 
 def _terminal(monkeypatch) -> None:
@@ -36,22 +71,25 @@ def _terminal(monkeypatch) -> None:
 
 # --- 3. Regeneration -----------------------------------------------------------
 
-def test_generate_writes_an_empty_folder_in_full(tmp_path, files, capsys, monkeypatch):
-    _terminal(monkeypatch)
-    out = tmp_path / "generated"                 # does not exist yet
-    assert main(["generate", "--out", str(out)]) == 0
-    captured = capsys.readouterr()
-    assert sorted(p.name for p in out.iterdir()) == sorted(files)
-    assert all((out / n).read_text(encoding="utf-8") == t for n, t in files.items())
-    assert f"wrote {out / '__init__.py'}" in captured.out
+def test_generate_writes_an_empty_folder_in_full(written, files, monkeypatch, capsys):
+    """Every file the committed generated/ holds, nothing else, the same bytes;
+    progress on stderr only; and --check of that folder says it is fresh."""
+    out, stdout, stderr = written
+    committed = module_files.default_directory()
+    assert sorted(files) == sorted(p.name for p in committed.iterdir() if p.is_file())
+    assert all((committed / n).read_text(encoding="utf-8") == t for n, t in files.items())
+    assert f"wrote {out / '__init__.py'}" in stdout
     # progress went to stderr, per derivation and per scene (in one process or in
     # several, as each paper comes back)
-    assert "printing travel_braking.py" in captured.err \
-        or "printed travel_braking.py" in captured.err
-    assert "specializing scene overhead_crane_50t" in captured.err \
-        or "specialized scenes overhead_crane_50t" in captured.err
-    assert "wrote" not in captured.err and "printing" not in captured.out
+    assert "printing travel_braking.py" in stderr or "printed travel_braking.py" in stderr
+    assert "specializing scene overhead_crane_50t" in stderr \
+        or "specialized scenes overhead_crane_50t" in stderr
+    assert "wrote" not in stderr and "printing" not in stdout
+    # --check against this folder (what the derivations produce is `files`: the
+    # regeneration itself is the fixture's, and CI's `generate --check`)
+    monkeypatch.setattr(generate, "all_files", lambda: files)
     assert main(["generate", "--check", "--out", str(out)]) == 0
+    assert capsys.readouterr().out.strip() == f"{out} is up to date ({len(files)} files)"
 
 
 def test_default_directory_is_found_without_the_package(monkeypatch):
