@@ -172,9 +172,27 @@ def value_units(name: str) -> dict[str, str]:
     return dict(getattr(module(name), "VALUE_UNITS", {}))
 
 
-@lru_cache(maxsize=None)
 def get(name: str) -> Derivation:
-    """The built derivation for ``name`` (built once per process, under fixed
-    SymPy draws: the same path and time in every process)."""
+    """The built derivation for ``name``: one build per process, whether it is
+    asked for by id or by paper number (:func:`built`).
+
+    Parameters
+    ----------
+    name : str
+        A derivation id or paper number (``000``).
+    """
+    return built(resolve(name))
+
+
+@lru_cache(maxsize=None)
+def built(key: str) -> Derivation:
+    """The derivation registered as ``key`` built, once per process, under
+    fixed SymPy draws (the same path and time in every process).
+
+    Parameters
+    ----------
+    key : str
+        A derivation id (:func:`resolve` gives it for a paper number).
+    """
     with fixed_sympy_draws():
-        return module(name).build()
+        return module(key).build()

@@ -27,5 +27,5 @@ def test_a_derivation_is_built_under_the_fixed_draws(monkeypatch):
     fake = SimpleNamespace(build=lambda: drawn.append(rng.random()) or "built")
     monkeypatch.setattr(registry, "module", lambda name: fake)
     rng.seed(1)                           # whatever state the caller left
-    assert registry.get.__wrapped__("travel_braking") == "built"   # past the cache
+    assert registry.built.__wrapped__("travel_braking") == "built"   # past the cache
     assert drawn == [expected]
