@@ -103,9 +103,10 @@ def module_path(name: str) -> str:
     name : str
         A derivation id or paper number (``000``).
     """
-    spec = importlib.util.find_spec(DERIVATIONS[resolve(name)])
+    package = DERIVATIONS[resolve(name)]
+    spec = importlib.util.find_spec(package)
     if spec is None or spec.origin is None:
-        raise ImportError(f"derivation package {DERIVATIONS[resolve(name)]} is not installed")
+        raise ImportError(f"derivation package {package} is not installed")
     return spec.origin
 
 

@@ -243,10 +243,8 @@ def difference(printed: sp.Eq, derived: sp.Eq, *, max_ops: int = 300) -> sp.Expr
     best, best_ops = None, None
     for a, b in pairs:  # expand cancels what the two share; no trigsimp roulette
         expanded = sp.expand(a - b)
-        expanded_ops = sp.count_ops(expanded)
-        candidates = [(expanded, expanded_ops)]
-        candidates.append(_with_ops(sp.factor_terms(expanded)))
-        if expanded_ops <= max_ops // 3:  # common denominators cancel
+        candidates = [_with_ops(expanded), _with_ops(sp.factor_terms(expanded))]
+        if candidates[0][1] <= max_ops // 3:  # common denominators cancel
             candidates.append(_with_ops(sp.factor_terms(sp.cancel(expanded))))
         for diff, ops in candidates:
             if best is None or ops < best_ops:

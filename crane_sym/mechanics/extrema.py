@@ -262,7 +262,6 @@ def _interval_critical(f: sp.Expr, t: sp.Symbol, lo: sp.Expr, hi: sp.Expr, dps: 
         if depth >= max_depth:
             unresolved.append((left, right, e0(box).b))
             continue
-        middle = (left + right) / 2
         stack += [(middle, right, depth + 1), (left, middle, depth + 1)]
     return roots, unresolved, searched
 
