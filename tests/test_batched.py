@@ -507,17 +507,17 @@ def test_equal_designs_are_grouped_byte_for_byte_even_when_their_hashes_collide(
     """Designs are grouped by a hash of their bytes, checked byte for byte: a
     hash that maps every row to one value (a collision) falls back to the
     sort of rows and groups the same; -0.0 and 0.0 differ in bytes."""
-    from crane_sym.mechanics import batched_forms
+    from crane_sym.mechanics import batched_spectra
     rng = np.random.default_rng(5)
     base = rng.normal(size=(7, 6))
     rows = np.ascontiguousarray(base[rng.integers(0, 7, size=200)])
     rows[3, 2] = -0.0 if rows[3, 2] == 0.0 else rows[3, 2]
     rows = np.concatenate([rows, np.zeros((1, 6)), -np.zeros((1, 6))])
-    first, inverse = batched_forms.first_of_equal(rows)
+    first, inverse = batched_spectra.first_of_equal(rows)
     assert np.array_equal(rows[first][inverse].view(np.int64), rows.view(np.int64))
     assert len(first) == len({r.tobytes() for r in rows})
-    monkeypatch.setitem(batched_forms._MIX, rows.shape[1], np.zeros(rows.shape[1], np.int64))
-    first2, inverse2 = batched_forms.first_of_equal(rows)
+    monkeypatch.setitem(batched_spectra._MIX, rows.shape[1], np.zeros(rows.shape[1], np.int64))
+    first2, inverse2 = batched_spectra.first_of_equal(rows)
     assert np.array_equal(rows[first2][inverse2].view(np.int64), rows.view(np.int64))
     assert len(first2) == len(first)
 

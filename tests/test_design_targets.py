@@ -35,14 +35,14 @@ def test_the_floor_is_the_blocks_own_eigen_decompositions_timed_alone():
     """A 2 × 2 grid of the file: the floor counts the distinct A its block
     decomposed (the recorder holds them only while the block runs), times
     them, and the Markdown says whether the target is below it."""
-    from crane_sym.mechanics import batched_forms
+    from crane_sym.mechanics import batched_spectra
     case = replace(design_targets.FILE_CASES[0], n=2, target=0.0)
     values = design_targets._file_values(case, 2)
     block = designs(ROOT / case.path)
-    with batched_forms.decomposed() as stacks:
+    with batched_spectra.decomposed() as stacks:
         block.largest(case.output, values)
     assert stacks and all(A.ndim == 3 and A.shape[1] == A.shape[2] for A in stacks)
-    assert batched_forms._DECOMPOSED.get() is None
+    assert batched_spectra._DECOMPOSED.get() is None
     floor = design_targets.eig_floor(stacks, repeats=1)
     assert floor["matrices"] == sum(len(A) for A in stacks) >= 4 and floor["seconds"] > 0
     row = {"name": "x", "designs": 4, "seconds": 0.1, "cpu_seconds": 0.1, "nan": 0,

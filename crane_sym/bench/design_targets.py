@@ -14,10 +14,12 @@ each row printed with met / not met and the machine's load:
   of a block is per-design Python before the batched solve).
 
 Beside each block, the floor of its method: the eigen-decompositions that
-the batched closed forms made of it (the block's own distinct A of every
-mode, kept while it ran: ``crane_sym.mechanics.batched_forms.decomposed``),
-``np.linalg.eig`` of each stack and of its transposes timed alone
-(:func:`eig_floor`, the least of :data:`FLOOR_REPEATS`). A target below it
+the batched closed forms made of it (the block's own distinct A, each once
+for all its modes, kept while it ran:
+``crane_sym.mechanics.batched_spectra.decomposed``), timed alone as the solver
+makes them (``batched_spectra.decompose``: ``np.linalg.eig`` of each stack,
+its left vectors from V⁻¹ or from ``np.linalg.eig`` of Aᵀ; :func:`eig_floor`,
+the least of :data:`FLOOR_REPEATS`). A target below it
 cannot be met by this solver on this machine, however little the rest costs.
 
 Each block is solved once (a run of a minute, not three). Where its time goes
@@ -42,7 +44,7 @@ import numpy as np
 from crane_sym import progress
 from crane_sym.bench.batched import _grid
 from crane_sym.bench.cases import BatchedBenchCase, batched_cases
-from crane_sym.mechanics.batched_forms import decomposed
+from crane_sym.mechanics.batched_spectra import decompose, decomposed
 from crane_sym.sweep.compute import cycles_collected_after
 from crane_sym.sweep.grid import evaluate_block
 
@@ -105,25 +107,26 @@ def profile_top(solve: Callable[[], Any], top: int = TOP) -> list[tuple[str, flo
 
 
 def eig_floor(stacks: list[np.ndarray], repeats: int = FLOOR_REPEATS) -> dict[str, Any]:
-    """The eigen-decompositions of a block alone: ``np.linalg.eig`` of each
-    stack of distinct A and of its transposes, as the batched closed forms
-    take them (right and left vectors), the least of ``repeats`` timings.
+    """The eigen-decompositions of a block alone, as the batched closed forms
+    make them (``batched_spectra.decompose``: right and left vectors), the
+    least of ``repeats`` timings, and how many took their left vectors from
+    ``np.linalg.eig`` of Aᵀ (``transposed``) rather than from V⁻¹.
 
     Parameters
     ----------
     stacks : list of ndarray, each (m, n, n)
-        The stacks a block decomposed (``batched_forms.decomposed``).
+        The stacks a block decomposed (``batched_spectra.decomposed``).
     repeats : int
         Timings; the least is kept (others on the machine only add time).
     """
-    times = []
+    times, transposed = [], 0
     for _ in range(repeats):
         start = time.perf_counter()
-        for A in stacks:
-            np.linalg.eig(A)
-            np.linalg.eig(np.swapaxes(A, 1, 2))
+        by_inverse = [decompose(A)[4] for A in stacks]
         times.append(time.perf_counter() - start)
+        transposed = int(sum(np.sum(~b) for b in by_inverse))
     return {"seconds": min(times), "matrices": int(sum(A.shape[0] for A in stacks)),
+            "transposed": transposed,
             "sizes": sorted({int(A.shape[1]) for A in stacks}), "stacks": len(stacks)}
 
 
@@ -259,8 +262,11 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
             lines.append(f"\n{r['name']}: the eigen-decompositions alone, the floor of the "
                          f"batched closed forms: {floor['matrices']} distinct A of size "
                          f"{', '.join(map(str, floor['sizes']))} in {floor['stacks']} stacks "
-                         f"(one a mode and round), ``np.linalg.eig`` of each and of its "
-                         f"transpose: {floor['seconds']:.2f} s, least of {FLOOR_REPEATS}; "
+                         f"(one a round and mode, each A once for all its modes), "
+                         f"``np.linalg.eig`` of each, its left vectors from V⁻¹ "
+                         f"({floor['matrices'] - floor.get('transposed', 0)}) or from "
+                         f"``np.linalg.eig`` of Aᵀ ({floor.get('transposed', 0)}): "
+                         f"{floor['seconds']:.2f} s, least of {FLOOR_REPEATS}; "
                          + (f"the target of {r['target']:g} s is below it: this solver "
                             "cannot meet it on this machine, whatever the rest costs."
                             if below else f"{floor['seconds'] / r['target']:.0%} of the "

@@ -8,7 +8,9 @@ its own mode, state, clock and schedule. A round takes every design still
 running through one phase: the designs are grouped by mode, each group's
 closed forms come from batched eigen-decompositions
 (:func:`crane_sym.mechanics.batched_forms.batch_forms`, kept per mode by
-:class:`crane_sym.mechanics.batched_cache.FormCache`), the guards of every
+:class:`crane_sym.mechanics.batched_cache.FormCache`, each distinct A
+decomposed once for all the modes it appears in:
+:class:`crane_sym.mechanics.batched_spectra.SpectraMemo`), the guards of every
 design of every mode are searched together by the certified no-skip step
 and refined by bracketing on arrays
 (:mod:`crane_sym.mechanics.batched_events`), the output's stationary points
@@ -47,6 +49,7 @@ from crane_sym.mechanics.batched_events import all_crossings, first_crossings
 from crane_sym.mechanics.batched_cache import FormCache
 from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm
 from crane_sym.mechanics.batched_signals import Signals
+from crane_sym.mechanics.batched_spectra import SpectraMemo
 from crane_sym.mechanics.batched_system import BatchedGuard, BatchedLargest, BatchedSystem
 from crane_sym.mechanics.phase_table import PEAK_TIE, largest
 from crane_sym.mechanics.piecewise_linear import simulate
@@ -132,6 +135,7 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
                np.zeros(N, dtype=bool), np.zeros(N, dtype=bool), magnitude)
     best_key = np.full(N, -np.inf)
     forms: dict[int, FormCache] = {}
+    memo = SpectraMemo()                 # modes that differ in b only share A's spectra
     clock = dict.fromkeys(("forms", "events", "extrema", "switching", "tail", "fallback"),
                           0.0)
     rounds = 0
@@ -149,7 +153,7 @@ def largest_batched(system: BatchedSystem, modes: np.ndarray, x0: np.ndarray,
         for mode in np.unique(s.mode[act]):
             idx = act[s.mode[act] == mode]
             if int(mode) not in forms:
-                forms[int(mode)] = FormCache(N, cond_limit)
+                forms[int(mode)] = FormCache(N, cond_limit, memo)
             cache = forms[int(mode)]
             # (A, b) asked for only where a design meets the mode first
             for where, form in cache.forms(idx, functools.partial(system.matrices, int(mode))):

@@ -11,7 +11,9 @@ from typing import Callable
 
 import numpy as np
 
-from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm, batch_forms, first_of_equal
+from crane_sym.mechanics.batched_forms import COND_LIMIT, BatchForm, batch_forms
+from crane_sym.mechanics.batched_spectra import SpectraMemo, first_of_equal
+from crane_sym.mechanics.row_chunks import RowChunks
 
 __all__ = ["FormCache"]
 
@@ -37,10 +39,13 @@ class FormCache:
     points at that one's form instead of decomposing it again, where the
     designs new to the mode in a round bring at most :data:`KNOWN_LOOKUP`
     distinct (A, b) (more, a swept value in b, are decomposed: a lookup a
-    key costs more than the decomposition it saves)."""
+    key costs more than the decomposition it saves). The modes of a run may
+    share one ``memo`` of spectra (:class:`SpectraMemo`): a mode that
+    differs from another in b only decomposes none of its A again."""
 
-    def __init__(self, size: int, cond_limit: float = COND_LIMIT) -> None:
-        self.cond_limit = cond_limit
+    def __init__(self, size: int, cond_limit: float = COND_LIMIT,
+                 memo: SpectraMemo | None = None) -> None:
+        self.cond_limit, self.memo = cond_limit, memo
         self.signature = np.full(size, -2)          # −2 not yet, −1 refused, else a part
         self.slot = np.zeros(size, dtype=np.intp)   # the form's row in its part
         self.parts: list[_Store] = []
@@ -80,12 +85,13 @@ class FormCache:
                 part[j], slot[j] = self.known.get(keys[f].tobytes(), (-2, 0))
         fresh = np.flatnonzero(part == -2)
         if fresh.size:
-            parts, refused = batch_forms(A[first[fresh]], b[first[fresh]], self.cond_limit)
+            parts, refused = batch_forms(A[first[fresh]], b[first[fresh]], self.cond_limit,
+                                          self.memo)
             part[fresh[refused]] = -1
             for where, f in parts:
                 key = next((i for i, p in enumerate(self.parts) if p.holds(f)), None)
                 if key is None:
-                    self.parts.append(_Store(f, self.signature.size))
+                    self.parts.append(_Store(f))
                     key = len(self.parts) - 1
                 part[fresh[where]] = key
                 slot[fresh[where]] = self.parts[key].append(f)
@@ -96,17 +102,13 @@ class FormCache:
 
 
 class _Store:
-    """The distinct forms of one spectral structure in a mode, a row each
-    (arrays grown by doubling, to at most ``limit`` rows: a design holds one
-    form a mode, so a mode's forms never outnumber its cache's designs)."""
+    """The distinct forms of one spectral structure in a mode, a row each,
+    kept in the chunks they were made in (:class:`RowChunks`)."""
 
-    def __init__(self, f: BatchForm, limit: int) -> None:
+    def __init__(self, f: BatchForm) -> None:
         self.real, self.pairs, self.powers, self.sine = f.real, f.pairs, f.powers, f.sine
-        self.n, self.limit = f.n, limit
-        self.count = 0
-        T = f.powers.size
-        self.sigmas, self.omegas = np.zeros((0, T)), np.zeros((0, T))
-        self.coefficients = np.zeros((0, T, f.n, f.n + 1))
+        self.n = f.n
+        self.rows = RowChunks()
 
     def holds(self, f: BatchForm) -> bool:
         """True where ``f`` has this structure (its terms in the same blocks)."""
@@ -114,29 +116,12 @@ class _Store:
                 and self.powers.shape == f.powers.shape)
 
     def append(self, f: BatchForm) -> np.ndarray:
-        """Store the k forms of ``f`` (the rows of the state only: the last
+        """Keep the k forms of ``f`` (the rows of the state only: the last
         row of each C_j is 0 … 0 1); their rows."""
-        k = f.sigmas.shape[0]
-        if self.count + k > self.sigmas.shape[0]:
-            grow = max(min(max(2 * self.sigmas.shape[0], 64), self.limit), self.count + k)
-            self.sigmas = _grown(self.sigmas, grow)
-            self.omegas = _grown(self.omegas, grow)
-            self.coefficients = _grown(self.coefficients, grow)
-        rows = np.arange(self.count, self.count + k)
-        self.sigmas[rows], self.omegas[rows] = f.sigmas, f.omegas
-        self.coefficients[rows] = f.coefficients[:, :, :f.n]
-        self.count += k
-        return rows
+        return self.rows.append((f.sigmas, f.omegas, f.coefficients[:, :, :f.n]))
 
     def form(self, rows: np.ndarray) -> BatchForm:
         """The forms of ``rows``, one per design (a row may repeat)."""
-        return BatchForm(self.n, self.powers, self.sine, self.sigmas[rows], self.omegas[rows],
-                         self.coefficients[rows], self.real, self.pairs)
-
-
-def _grown(a: np.ndarray, rows: int) -> np.ndarray:
-    """``a`` with room for ``rows`` rows (those past its own not set: only
-    the rows stored are ever read)."""
-    out = np.empty((rows,) + a.shape[1:])
-    out[: a.shape[0]] = a
-    return out
+        sigmas, omegas, coefficients = self.rows.take(rows)
+        return BatchForm(self.n, self.powers, self.sine, sigmas, omegas, coefficients,
+                         self.real, self.pairs)

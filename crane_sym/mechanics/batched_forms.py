@@ -1,11 +1,10 @@
 """Closed forms of one phase for many designs at once, and their signals.
 
 The batched sibling of :mod:`crane_sym.mechanics.closed_forms`' numeric route:
-k designs in one mode have matrices M = [[A, b], [0, 0]] of one shape; one
-call of ``np.linalg.eig`` on the stack of the distinct A (a swept value that
-moves b only, a backlash, shares A) and one on their transposes give every
-design's eigenvalues and right and left eigenvectors (:func:`_spectra`),
-the left matched to the right by their order. Each simple nonzero
+k designs in one mode have matrices M = [[A, b], [0, 0]] of one shape; the
+spectra of the distinct A (a swept value that moves b only, a backlash,
+shares A), :mod:`crane_sym.mechanics.batched_spectra`, give every design's
+eigenvalues and right and left eigenvectors. Each simple nonzero
 eigenvalue λ of M (A's, with the right vector (v, 0) and the left (w, wᵀb/λ))
 gives the spectral projector C_λ = v (wᵀ, wᵀb/λ) / (wᵀ v): its A-block once
 per distinct A, its last column per design, b brought in algebraically. The
@@ -30,67 +29,26 @@ three or more nearly equal eigenvalues, twins beside a cluster, nearly
 defective twins (a condition number above ``NEAR_COND``), a cluster's
 condition number ‖(L̂ᵀ R̂)⁻¹‖ above ``cond_limit`` (for a simple eigenvalue
 1/|ŵᵀv̂|; a defective eigenvalue makes it huge), a complex pair closer to the
-real axis than 10⁻⁵ of the scale, or spectra of M and Mᵀ that do not match.
+real axis than 10⁻⁵ of the scale, or (where the left vectors come from the
+eigen-decomposition of Aᵀ) spectra of A and Aᵀ that do not match.
 
 :class:`crane_sym.mechanics.batched_cache.FormCache` keeps the forms per
 mode.
 """
 from __future__ import annotations
 
-import contextlib
-import contextvars
 from dataclasses import dataclass
-from typing import Iterator
 
 import numpy as np
 
-from crane_sym.mechanics.spectral_clusters import CLUSTER
+from crane_sym.mechanics.batched_spectra import EQUAL, SpectraMemo, spectra
 
-__all__ = ["BatchForm", "batch_forms", "decomposed", "first_of_equal"]
+__all__ = ["BatchForm", "COND_LIMIT", "batch_forms"]
 
 #: Largest eigenvalue condition number the batched route accepts: a design's
 #: error grows like eps times it, so 1e5 keeps it near 1e-11 (a nearly
 #: defective pair, critical damping, goes to the per-design route).
 COND_LIMIT = 1e5
-#: Largest condition number κ of an eigenvalue with a neighbour within
-#: CLUSTER of it: near a defective pair (near-critical damping) the error
-#: grows like eps·κ² (the eigenvalue off by eps·κ, times amplitudes κ large:
-#: 3e-9 of the peak at κ = 3.6e3, damping 1e-8 below critical), so 200 keeps
-#: it near 1e-11; the per-design route's clusters resolve the others.
-NEAR_COND = 200.0
-#: Two neighbouring eigenvalues are one (a cluster: one projector, their mean
-#: its eigenvalue) where they are at most EQUAL·scale apart (scale: the
-#: largest |λ|, at least 1): a few ulps of λ. Taking the mean moves each by
-#: half the gap, x(t) by about t·gap/2·|C z|: no more than rounding λ itself
-#: (32 ulps of λt), where 10⁻¹²·scale cost up to 1.4e-12 at t = 1 for a pair
-#: of |λ| ≈ 2 a relative 10⁻¹² apart. Equal drives' eigenvalues come out
-#: equal to the bit (003: a gap of 0) or within a few ulps (eig's rounding
-#: of a double eigenvalue, ~ eps·|λ| times its condition: at most 35 ulps of
-#: random A = S D S⁻¹ with cond S = 10); a gap above this
-#: is twins (:func:`_twins`), accurate down to rounding gaps (the error of
-#: (M − λ'I)P over the gap enters times a divided difference), or refused
-#: where the pair's vectors are nearly dependent (``NEAR_COND``).
-EQUAL = 64 * np.finfo(float).eps
-
-
-#: The stacks of distinct A that :func:`_spectra` decomposes, kept while
-#: :func:`decomposed` is open (None: not kept).
-_DECOMPOSED: contextvars.ContextVar[list | None] = contextvars.ContextVar(
-    "decomposed", default=None)
-
-
-@contextlib.contextmanager
-def decomposed() -> Iterator[list[np.ndarray]]:
-    """The stacks of distinct A that the batched closed forms decompose while
-    the block runs (each (m, n, n), as ``np.linalg.eig`` takes it): what a
-    bench times alone as the floor of the method. Nothing is copied; the
-    list holds the stacks the solver made anyway."""
-    kept: list[np.ndarray] = []
-    token = _DECOMPOSED.set(kept)
-    try:
-        yield kept
-    finally:
-        _DECOMPOSED.reset(token)
 
 
 @dataclass(frozen=True)
@@ -160,9 +118,9 @@ class BatchForm:
         return out
 
 
-def batch_forms(A: np.ndarray, b: np.ndarray,
-                cond_limit: float = COND_LIMIT) -> tuple[list[tuple[np.ndarray, BatchForm]],
-                                                         np.ndarray]:
+def batch_forms(A: np.ndarray, b: np.ndarray, cond_limit: float = COND_LIMIT,
+                memo: SpectraMemo | None = None) -> tuple[list[tuple[np.ndarray, BatchForm]],
+                                                          np.ndarray]:
     """The closed forms of x' = A x + b for a stack of designs.
 
     Returns ``(parts, refused)``: each part is (positions in the stack, its
@@ -170,10 +128,12 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     of nonzero real eigenvalues and of complex pairs); ``refused`` holds the
     positions the batched route does not take (see the module docstring).
     The spectrum and the projectors' A-blocks come from the distinct A
-    (:func:`_spectra`); b enters each design's last column algebraically.
+    (:func:`crane_sym.mechanics.batched_spectra.spectra`, found in ``memo``
+    where a mode before met the same A); b enters each design's last column
+    algebraically.
     """
     k, n = b.shape
-    first, inverse, lam, vr, mu, vl, cat, bad, twin = _spectra(A)
+    first, inverse, lam, vr, mu, vl, cat, bad, twin = spectra(A, memo)
     live = cat < 3
     # clusters: equal nonzero eigenvalues (two equal drives), each one projector
     scale = np.maximum(np.abs(lam).max(axis=1, initial=0.0), 1.0)[:, None]
@@ -201,93 +161,6 @@ def batch_forms(A: np.ndarray, b: np.ndarray,
     return parts, np.array(sorted(refused), dtype=np.intp)
 
 
-def _spectra(A: np.ndarray) -> tuple[np.ndarray, ...]:
-    """Eigenvalues and unit right and left eigenvectors of each distinct A
-    (bytes compared; one ``np.linalg.eig`` of the stack of them and one of
-    their transposes, each A decomposed alone, so a design's bits do not
-    depend on its neighbours), both spectra in one order (:func:`_ordered`):
-    ``first`` (the first design of each distinct A), ``inverse`` (per design,
-    its A), λ, V, μ, W, the categories, ``bad``: spectra of A and Aᵀ that
-    do not match, a complex pair closer to the real axis than 10⁻⁵ of the
-    scale, a value not finite, three nearly equal eigenvalues, or a nearly
-    defective one (see the module docstring); and ``twin``: True at the
-    first of two nearly equal eigenvalues (not equal to rounding)."""
-    k = A.shape[0]
-    first, inverse = first_of_equal(np.ascontiguousarray(A.reshape(k, -1)))
-    distinct = A[first]
-    kept = _DECOMPOSED.get()
-    if kept is not None:
-        kept.append(distinct)
-    lam, vr = np.linalg.eig(distinct)
-    mu, vl = np.linalg.eig(np.swapaxes(distinct, 1, 2))
-    scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
-    tol = 1e-6 * scale
-    lam, vr, cat = _ordered(lam, vr, tol)
-    mu, vl, cat_mu = _ordered(mu, vl, tol)
-    live = cat < 3
-    bad = np.any(cat != cat_mu, axis=1) | np.any(live & (np.abs(lam - mu) >= tol), axis=1)
-    im = np.abs(lam.imag)
-    bad |= np.any(live & (im > 0) & (im < 1e-5 * scale), axis=1)
-    bad |= ~np.all(np.isfinite(lam), axis=1) | ~np.all(np.isfinite(mu), axis=1)
-    # a cluster is one eigenvalue with one projector where its members are equal
-    # to rounding (equal drives); two nearly equal ones (two sides equal but for
-    # a little) are twins: two terms whose projectors come from their pair's
-    # (_twins); three or more nearly equal, or twins beside a cluster, go to
-    # the per-design route, whose clusters resolve them (spectral_clusters)
-    gap = np.abs(np.diff(lam, axis=1))
-    same = live[:, 1:] & live[:, :-1] & (cat[:, 1:] == cat[:, :-1])
-    equal = same & (gap <= EQUAL * scale)
-    twin = same & (gap <= CLUSTER * np.abs(lam[:, :-1])) & ~equal
-    bad |= np.any(twin[:, 1:] & (twin[:, :-1] | equal[:, :-1]), axis=1)
-    bad |= np.any(twin[:, :-1] & equal[:, 1:], axis=1)
-    # nearly defective: a neighbour within CLUSTER (a pair's conjugate included)
-    # and a condition number above NEAR_COND
-    with np.errstate(divide="ignore", over="ignore"):     # a defective one: inf
-        kappa = 1.0 / np.abs(np.sum(vl * vr, axis=1))
-    near = np.zeros_like(live)
-    for j in range(lam.shape[1]):
-        d = np.abs(lam - lam[:, j:j + 1])
-        d[:, j] = np.inf
-        d[d <= EQUAL * scale] = np.inf                # equal: one cluster, one projector
-        near[:, j] = d.min(axis=1) <= CLUSTER * np.abs(lam[:, j])
-    bad |= np.any(live & near & (kappa > NEAR_COND), axis=1)
-    first_twin = np.concatenate([twin, np.zeros((twin.shape[0], 1), bool)], axis=1)
-    return first, inverse, lam, vr, mu, vl, cat, bad, first_twin
-
-
-#: Odd multipliers of :func:`first_of_equal`'s hash, per row width (fixed:
-#: no run depends on a seed).
-_MIX: dict[int, np.ndarray] = {}
-
-
-def first_of_equal(rows: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The first of each group of rows equal byte for byte, and per row its
-    group: rows hashed to one integer, which is sorted (a sort of whole rows
-    as bytes costs several times more); the groups checked byte for byte,
-    and a collision falls back to the sort of rows.
-
-    Parameters
-    ----------
-    rows : ndarray, shape (k, w), float64, C-contiguous
-        The rows compared.
-    """
-    if rows.dtype.itemsize == 8 and rows.flags.c_contiguous:
-        bits = rows.view(np.int64)
-        width = bits.shape[1]
-        if width not in _MIX:
-            _MIX[width] = (np.random.default_rng(28 + width).integers(
-                1, 2**62, size=width, dtype=np.int64) * 2 + 1)
-        mixed = (bits * _MIX[width]).sum(axis=1)
-        _, first, inverse = np.unique(mixed, return_index=True, return_inverse=True)
-        inverse = inverse.ravel()
-        if np.array_equal(bits[first][inverse], bits):
-            return first, inverse
-    keys = np.ascontiguousarray(rows).view(
-        np.dtype((np.void, rows.dtype.itemsize * rows.shape[1]))).ravel()
-    _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
-    return first, inverse.ravel()
-
-
 def _unique_rows(pattern: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``np.unique(pattern, axis=0, return_inverse=True)`` of small integer rows
     (0 … 7), each read as one base-8 number: the same rows in the same order."""
@@ -298,17 +171,6 @@ def _unique_rows(pattern: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
                                                         dtype=np.int64))
     _, first, which = np.unique(codes, return_index=True, return_inverse=True)
     return pattern[first], which.ravel()
-
-
-def _ordered(values, vectors, tol):
-    """Eigenvalues and their vectors sorted by (category, real, imaginary part);
-    category 0 real nonzero, 1 upper half plane, 2 lower, 3 the kernel."""
-    live = np.abs(values) > tol
-    cat = np.where(~live, 3, np.where(values.imag == 0, 0, np.where(values.imag > 0, 1, 2)))
-    order = np.lexsort((values.imag, values.real, cat), axis=-1)
-    return (np.take_along_axis(values, order, axis=1),
-            np.take_along_axis(vectors, order[:, None, :], axis=2),
-            np.take_along_axis(cat, order, axis=1))
 
 
 def _projector(A, b, slot, mu, R, L) -> tuple[np.ndarray, np.ndarray]:

@@ -287,7 +287,7 @@ class Signals:
             s = self.real_sigmas
             a = np.abs(self.real_amps)
             L += _rowsum(a * np.exp(np.maximum(s * a0, s * a1)) * np.abs(s))
-            out += (a * np.maximum(1.0, np.exp(s * tt))).sum(axis=1)
+            out += _rowsum(a * np.maximum(1.0, np.exp(s * tt)))
         return L, size, out
 
     def spread(self, horizon: np.ndarray) -> np.ndarray:
@@ -308,8 +308,8 @@ class Signals:
                 amp = amp * np.maximum(1.0, np.exp(s * tt))
             out += _rowsum(amp)
         if self.real_amps.shape[1]:
-            out += (np.abs(self.real_amps)
-                    * np.maximum(1.0, np.exp(self.real_sigmas * tt))).sum(axis=1)
+            out += _rowsum(np.abs(self.real_amps)
+                           * np.maximum(1.0, np.exp(self.real_sigmas * tt)))
         return out
 
     def settled_by(self, margin: np.ndarray, horizon: np.ndarray) -> np.ndarray:
@@ -391,5 +391,16 @@ def _abs_rowsum(a: np.ndarray) -> np.ndarray:
 
 
 def _rowsum(a: np.ndarray) -> np.ndarray:
-    """Σ over a row's terms; a single term as it is (a reduction costs more)."""
-    return a[:, 0] if a.shape[1] == 1 else a.sum(axis=1)
+    """Σ over a row's terms, column by column up to 7 of them: NumPy's
+    reduction along short rows costs 10–30 times more (85 µs for 4096 rows of
+    2, against 3 µs), and below 8 terms it adds them in the same order, so the
+    bits are its own; from 8 on it sums pairwise, so it is kept there."""
+    width = a.shape[1]
+    if width == 1:
+        return a[:, 0]
+    if width >= 8:
+        return a.sum(axis=1)
+    out = a[:, 0] + a[:, 1]
+    for j in range(2, width):
+        out += a[:, j]
+    return out
