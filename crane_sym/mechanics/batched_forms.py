@@ -182,18 +182,24 @@ def _projector(A, b, slot, mu, R, L) -> tuple[np.ndarray, np.ndarray]:
     m = R.shape[2]
     gram = np.einsum("dim,din->dmn", L, R)
     with np.errstate(all="ignore"):
-        inv = np.linalg.inv(gram) if np.all(np.isfinite(gram)) else gram * np.nan
-    block = np.einsum("dim,dmn,djn->dij", R, np.nan_to_num(inv), L)
-    with np.errstate(all="ignore"):
+        if m == 1:                          # a simple eigenvalue: G⁻¹ = 1/(wᵀv)
+            inv = 1.0 / gram
+        else:
+            inv = np.linalg.inv(gram) if np.all(np.isfinite(gram)) else gram * np.nan
         s_ = np.einsum("ki,kim->km", b.astype(complex), L[slot]) / mu[slot]
         norm = np.sqrt(1.0 + np.abs(s_) ** 2)
         scaled = inv[slot] * norm[:, None, :]
         cond = (np.linalg.norm(scaled, ord=2, axis=(1, 2)) if m > 1
                 else np.abs(scaled[:, 0, 0]))
+    safe = np.nan_to_num(inv)
     C = np.zeros((k, n + 1, n + 1), dtype=complex)
-    C[:, :n, :n] = block[slot]
-    C[:, :n, n] = np.einsum("kim,kmn,kn->ki", R[slot], np.nan_to_num(inv)[slot],
-                            np.nan_to_num(s_))
+    if m == 1:                              # outer products, not three-operand einsums
+        left = R[:, :, 0] * safe[:, 0]
+        C[:, :n, :n] = (left[:, :, None] * L[:, None, :, 0])[slot]
+        C[:, :n, n] = left[slot] * np.nan_to_num(s_)
+    else:
+        C[:, :n, :n] = np.einsum("dim,dmn,djn->dij", R, safe, L)[slot]
+        C[:, :n, n] = np.einsum("kim,kmn,kn->ki", R[slot], safe[slot], np.nan_to_num(s_))
     return C, cond
 
 

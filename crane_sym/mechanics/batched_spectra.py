@@ -85,16 +85,20 @@ def decompose(A: np.ndarray) -> tuple[np.ndarray, ...]:
     rows of V⁻¹; elsewhere μ, W are ``np.linalg.eig`` of Aᵀ, in its order.
     Each column of V and W has unit length."""
     lam, vr = np.linalg.eig(A)                 # real where all of the stack's are
-    lam, vr = lam.astype(complex), vr.astype(complex)
+    lam, vr = lam.astype(complex, copy=False), vr.astype(complex, copy=False)
     mu, vl = lam.copy(), np.empty_like(vr)
     by_inverse = np.zeros(A.shape[0], dtype=bool)
     with np.errstate(all="ignore"):
-        det = np.linalg.det(vr)
-    can = np.flatnonzero(np.isfinite(det) & (det != 0))     # no zero pivot: inv succeeds
+        try:
+            can, rows, V = np.arange(A.shape[0]), np.linalg.inv(vr), vr
+        except np.linalg.LinAlgError:                        # an exactly singular V
+            det = np.linalg.det(vr)
+            can = np.flatnonzero(np.isfinite(det) & (det != 0))  # no zero pivot
+            V = vr[can]
+            rows = np.linalg.inv(V) if can.size else None
     if can.size:
         with np.errstate(all="ignore"):
-            rows = np.linalg.inv(vr[can])
-            cond = (np.abs(vr[can]).sum(axis=1).max(axis=1)
+            cond = (np.abs(V).sum(axis=1).max(axis=1)
                     * np.abs(rows).sum(axis=1).max(axis=1))
         good = np.isfinite(cond) & (cond <= LEFT_COND)
         W = np.swapaxes(rows[good], 1, 2)
