@@ -240,8 +240,11 @@ class Signals:
             rate = np.abs(s) + self.pair_omegas[rows]
             amp = np.hypot(self.cos_amps[rows], self.sin_amps[rows])
             if s.any():
+                # no term grows: the largest e^{σt} is at t0, one for every end
+                shared = None if (s > 0).any() else amp * np.exp(s * a0)
                 for (L, M2), t1 in zip(out, ends):
-                    grown = amp * np.exp(np.maximum(s * a0, s * t1[:, None]))
+                    grown = (shared if shared is not None
+                             else amp * np.exp(np.maximum(s * a0, s * t1[:, None])))
                     L += _rowsum(grown * rate)
                     M2 += _rowsum(grown * rate * rate)
             else:
@@ -252,8 +255,10 @@ class Signals:
         if self.real_amps.shape[1]:
             s = self.real_sigmas[rows]
             a = np.abs(self.real_amps[rows])
+            shared = None if (s > 0).any() else a * np.exp(s * a0)
             for (L, M2), t1 in zip(out, ends):
-                amp = a * np.exp(np.maximum(s * a0, s * t1[:, None]))
+                amp = (shared if shared is not None
+                       else a * np.exp(np.maximum(s * a0, s * t1[:, None])))
                 L += _rowsum(amp * np.abs(s))
                 M2 += _rowsum(amp * s * s)
         return out
