@@ -123,3 +123,21 @@ def test_short_row_sums_are_numpys_bits(width):
     assert np.array_equal(_rowsum(a), a.sum(axis=1))
     strided = np.asfortranarray(a)
     assert np.array_equal(_rowsum(strided), strided.sum(axis=1))
+
+
+def test_a_designs_spectrum_does_not_depend_on_its_neighbours():
+    """A stack where some designs take their left vectors from V⁻¹ and one
+    from Aᵀ (a Jordan block at 0, made dense by a similarity): each design's
+    spectrum is the one it gets decomposed alone, byte for byte (what lets
+    a sweep's blocks be cut anywhere, and the memo share one)."""
+    A = _random_stack(6, 4, 7)
+    S = np.random.default_rng(8).normal(size=(4, 4))
+    J = np.zeros((4, 4))
+    J[0, 1], J[2, 2], J[3, 3] = 1.0, -1.0, -2.0
+    A[2] = S @ J @ np.linalg.inv(S)
+    together = decompose(A)
+    assert not together[4][2] and together[4].sum() >= 4
+    for i in range(6):
+        alone = decompose(A[i:i + 1])
+        for t, a in zip(together, alone):
+            assert np.array_equal(t[i:i + 1], a)
