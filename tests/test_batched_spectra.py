@@ -92,6 +92,8 @@ def test_the_memo_keeps_no_more_than_its_limit():
     """Past its bytes, new spectra are computed and not kept."""
     A = _random_stack(100, 6, 4)
     memo = SpectraMemo(limit=20_000)
+    spectra(A[:2], memo)
+    spectra(A[:2], memo)                               # a hit: the memo is of use
     spectra(A, memo)
     assert 0 < memo.size <= 20_000
     kept = memo._tables[6].rows.count
@@ -141,3 +143,19 @@ def test_a_designs_spectrum_does_not_depend_on_its_neighbours():
         alone = decompose(A[i:i + 1])
         for t, a in zip(together, alone):
             assert np.array_equal(t[i:i + 1], a)
+
+
+def test_a_memo_without_hits_lets_its_spectra_go():
+    """Every mode's A its own (003's start-up): once the trial's bytes pass
+    with no hit, the memo holds nothing and keeps nothing more, and the
+    spectra are the fresh ones."""
+    A = _random_stack(60, 5, 9)
+    memo = SpectraMemo(trial=20_000)
+    spectra(A[:5], memo)
+    assert memo.size > 0 and not memo.closed
+    got = spectra(A[5:60], memo)
+    assert memo.closed and memo.size == 0 and not memo._tables
+    spectra(A[:5], memo)
+    assert memo.hits == 0 and not memo._tables
+    for g, f in zip(got, spectra(A[5:60])):
+        assert np.array_equal(g, f)

@@ -55,6 +55,11 @@ LEFT_COND = 1e4
 #: Bytes of spectra a :class:`SpectraMemo` keeps at most (past it, new A are
 #: decomposed and not kept).
 MEMO_BYTES = 1 << 27
+#: Bytes a :class:`SpectraMemo` keeps before its first hit (bridge_travel.toml
+#: meets its first after 46 MB, its fourth stack); past them with
+#: none (every mode's A its own: 003's start-up) it lets all go and keeps no
+#: more, so a run that cannot share holds no spectra.
+MEMO_TRIAL = 1 << 26
 
 
 #: The stacks of distinct A that :func:`spectra` decomposes, kept while
@@ -116,8 +121,9 @@ class SpectraMemo:
     depends on A alone, each decomposed alone: one found here is bit for bit
     the one a fresh decomposition gives."""
 
-    def __init__(self, limit: int = MEMO_BYTES) -> None:
-        self.limit, self.size = limit, 0
+    def __init__(self, limit: int = MEMO_BYTES, trial: int = MEMO_TRIAL) -> None:
+        self.limit, self.trial, self.size, self.hits = limit, trial, 0, 0
+        self.closed = False
         self._tables: dict[int, _Table] = {}
 
     def find(self, A: np.ndarray, hashes: np.ndarray) -> tuple[np.ndarray, tuple | None]:
@@ -126,13 +132,22 @@ class SpectraMemo:
         table = self._tables.get(A.shape[1])
         if table is None:
             return np.zeros(A.shape[0], dtype=bool), None
-        return table.find(A, hashes)
+        found, kept = table.find(A, hashes)
+        self.hits += int(found.sum())
+        return found, kept
 
     def keep(self, A: np.ndarray, hashes: np.ndarray, values: tuple) -> None:
-        """Keep the spectra ``values`` of the stack A, while there is room."""
+        """Keep the spectra ``values`` of the stack A, while there is room
+        (none once the trial's bytes passed without a hit)."""
         n = A.shape[1]
-        table = self._tables.setdefault(n, _Table(n))
         row_bytes = A[0].nbytes + 16 + sum(v[0].nbytes for v in values)
+        if self.closed:
+            return
+        if not self.hits and self.size + A.shape[0] * row_bytes > self.trial:
+            self.closed, self.size = True, 0        # nothing shared so far: let all go
+            self._tables.clear()
+            return
+        table = self._tables.setdefault(n, _Table(n))
         take = min(A.shape[0], max(self.limit - self.size, 0) // row_bytes)
         if take:
             table.keep(A[:take], hashes[:take], tuple(v[:take] for v in values))
