@@ -403,7 +403,7 @@ def _rowsum(a: np.ndarray) -> np.ndarray:
     width = a.shape[1]
     if width == 1:
         return a[:, 0]
-    if width >= 8:
+    if width == 0 or width >= 8:
         return a.sum(axis=1)
     out = a[:, 0] + a[:, 1]
     for j in range(2, width):
