@@ -88,7 +88,14 @@ def decompose(A: np.ndarray) -> tuple[np.ndarray, ...]:
     ``(lam, vr, mu, vl, by_inverse)``. Where ``by_inverse`` (V well
     conditioned, :data:`LEFT_COND`) μ = λ and the columns of ``vl`` are the
     rows of V⁻¹; elsewhere μ, W are ``np.linalg.eig`` of Aᵀ, in its order.
-    Each column of V and W has unit length."""
+    Each column of V and W has unit length.
+
+    Parameters
+    ----------
+    A : ndarray, shape (m, n, n)
+        The matrices, each decomposed alone (a matrix's results do not
+        depend on the others of the stack).
+    """
     lam, vr = np.linalg.eig(A)                 # real where all of the stack's are
     lam, vr = lam.astype(complex, copy=False), vr.astype(complex, copy=False)
     mu, vl = lam.copy(), np.empty_like(vr)
@@ -193,7 +200,16 @@ def spectra(A: np.ndarray, memo: SpectraMemo | None = None) -> tuple[np.ndarray,
     complex pair closer to the real axis than 10⁻⁵ of the scale, a value not
     finite, three nearly equal eigenvalues, or a nearly defective one (see
     ``batched_forms``' docstring); and ``twin``: True at the first of two
-    nearly equal eigenvalues (not equal to rounding)."""
+    nearly equal eigenvalues (not equal to rounding).
+
+    Parameters
+    ----------
+    A : ndarray, shape (k, n, n)
+        Each design's matrix (designs of equal A share one decomposition).
+    memo : SpectraMemo, optional
+        The run's spectra met so far: an A found there is not decomposed
+        again, a fresh one is kept there.
+    """
     k = A.shape[0]
     flat = np.ascontiguousarray(A.reshape(k, -1))
     first, inverse = first_of_equal(flat)
