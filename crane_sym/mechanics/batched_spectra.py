@@ -214,14 +214,16 @@ def spectra(A: np.ndarray, memo: SpectraMemo | None = None) -> tuple[np.ndarray,
     flat = np.ascontiguousarray(A.reshape(k, -1))
     first, inverse = first_of_equal(flat)
     distinct = A[first]
-    hashes = _hashes(flat[first])
     if memo is None:
         return (first, inverse) + _sorted_out(distinct)
+    hashes = _hashes(flat[first])
     found, kept = memo.find(distinct, hashes)
     fresh = np.flatnonzero(~found)
-    values = _sorted_out(distinct[fresh]) if fresh.size else None
-    if values is not None:
-        memo.keep(distinct[fresh], hashes[fresh], values)
+    values = None
+    if fresh.size:
+        new = distinct[fresh]
+        values = _sorted_out(new)
+        memo.keep(new, hashes[fresh], values)
     if kept is None:
         return (first, inverse) + values
     if values is None:
