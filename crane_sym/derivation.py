@@ -215,14 +215,19 @@ class SweepOutput:
         True where ``evaluate`` solves all the designs of a block together
         (a batched hybrid solver), so a sweep gives it blocks as large as its
         workers allow instead of many small ones.
-    threads : bool
+    threads : bool or tuple of str
         True where such a block spends its time in NumPy calls on whole
         arrays (which release the GIL), not in Python per design: a sweep
-        runs its blocks on threads, each of at least
-        ``crane_sym.sweep.blocks.THREAD_DESIGNS`` designs (fewer, larger
-        blocks: a block's Python per phase is paid once for more designs).
+        runs its blocks on threads, each of ``thread_block`` designs (fewer,
+        larger blocks: a block's Python per phase is paid once for more
+        designs). A tuple of names: so only where every swept parameter is
+        one of them (others swept, the block builds each design in Python).
         False (a block that assembles or switches each design in Python):
         processes, as for any simulated output.
+    thread_block : tuple of int, optional
+        (fewest, most) designs of a block on threads: the fewest where the
+        block's fixed cost is paid off, the most its memory allows (None:
+        ``crane_sym.sweep.blocks.THREAD_DESIGNS`` and ``THREAD_MAX_DESIGNS``).
     cap : int or None
         The most phases a design's run may take (a chattering contact):
         ``evaluate`` gives NaN for a design stopped there, and the sweep
@@ -237,8 +242,9 @@ class SweepOutput:
     options: tuple[str, ...]
     evaluate: Callable[[Mapping[str, Any], Mapping[str, Any]], Any]
     batched: bool = False
-    threads: bool = False
+    threads: bool | tuple[str, ...] = False
     cap: int | None = None
+    thread_block: tuple[int, int] | None = None
 
 
 @dataclass

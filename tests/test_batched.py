@@ -4,6 +4,8 @@ solver to 1e-9 of the peak; the vectorised event search against
 ``first_crossing``; refused designs counted and run per design; a cap stated."""
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -311,22 +313,35 @@ def test_a_numpy_bound_batched_output_gets_few_large_blocks_on_threads():
         assert local_scheduler(big, chunks) == "threads"
 
 
-def test_a_python_bound_batched_output_gets_one_block_per_worker_on_processes():
-    """003's start-up (``threads=False``): blocks of at most BATCH_DESIGNS,
-    one per worker, run on processes."""
+def test_003s_block_runs_on_threads_only_where_its_links_alone_are_swept():
+    """003's start-up (``threads=("c_l", "zeta")``, ``thread_block`` 2 500 to
+    10⁴): with only the links swept, a grid below 5 000 designs is one block
+    in this process, a larger one blocks of 2 500 to 10⁴ designs on
+    threads; with any other value swept (each design assembled in Python),
+    blocks of at most BATCH_DESIGNS, one per worker, on processes."""
     from crane_sym.scenes.reading import load_scene
-    from crane_sym.sweep.blocks import BATCH_DESIGNS, chunks_for, local_scheduler
+    from crane_sym.sweep.blocks import BATCH_DESIGNS, chunks_for, local_scheduler, thread_block
     from crane_sym.sweep.spec import plan
     scene = load_scene("fig12_startup_backlash")
-    small = plan(scene, ["c_l=2:8:40", "zeta=0.02:0.1:40"], ["peak_startup_link_force"],
-                 ["phi_b=3.14159"])
+    at = ["phi_b=3.14159"]
+
+    def blocks(chunks):
+        return [a * b for a in chunks[0] for b in chunks[1]]
+    small = plan(scene, ["c_l=2:8:40", "zeta=0.02:0.1:40"], ["peak_startup_link_force"], at)
+    assert thread_block(small) == (2_500, 10_000)
     chunks = chunks_for(small, workers=2)
-    blocks = [a * b for a in chunks[0] for b in chunks[1]]
-    assert max(blocks) >= 1600 // 4 and len(blocks) <= 6
-    big = plan(scene, ["c_l=2:8:300", "zeta=0.02:0.1:300"], ["peak_startup_link_force"],
-               ["phi_b=3.14159"])
+    assert blocks(chunks) == [1600] and local_scheduler(small, chunks) == "synchronous"
+    for n, count in ((100, 2), (300, 10)):           # 300 rows of 300: 30 a block
+        links = plan(scene, [f"c_l=2:8:{n}", f"zeta=0.02:0.1:{n}"],
+                     ["peak_startup_link_force"], at)
+        chunks = chunks_for(links, workers=2)
+        sizes = blocks(chunks)
+        assert len(sizes) == count and sum(sizes) == n * n
+        assert 2_500 <= min(sizes) and max(sizes) <= 10_000
+        assert local_scheduler(links, chunks) == "threads"
+    big = plan(scene, ["c_l=2:8:300", "m_k=1000:3000:300"], ["peak_startup_link_force"], at)
     chunks = chunks_for(big, workers=2)
-    assert max(a * b for a in chunks[0] for b in chunks[1]) <= BATCH_DESIGNS
+    assert max(blocks(chunks)) <= BATCH_DESIGNS
     assert local_scheduler(big, chunks) == "processes"
 
 
@@ -407,6 +422,31 @@ def test_a_batched_sweep_on_a_local_cluster_is_bit_for_bit_the_local_one(tmp_pat
     a, b = (xr.open_zarr(r.dataset).load()["peak_elastic_gearbox_torque"].values
             for r in (local, remote))
     assert np.array_equal(a.view(np.uint64), b.view(np.uint64)) and local.worst == remote.worst
+
+
+def test_003s_blocks_on_threads_are_bit_for_bit_its_one_block(tmp_path, monkeypatch):
+    """003's start-up with its links swept runs its blocks side by side on
+    Dask's threads (``threads``): each design's bits are the ones it gets in
+    one block in this process (no state shared between the threads' runs)."""
+    xr = pytest.importorskip("xarray")
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep import blocks
+    from crane_sym.sweep.grid import run_sweep
+    from crane_sym.sweep.spec import plan
+    from crane_sym.derivations.portal_travel import sweep_outputs
+    chosen = plan(load_scene("fig12_startup_backlash"), ["c_l=2:8:8", "zeta=0.02:0.1:6"],
+                  ["peak_startup_link_force"], ["phi_b=3.14159"])
+    one = run_sweep(chosen, tmp_path / "one")
+    monkeypatch.setattr(blocks.os, "cpu_count", lambda: 2)
+    spec = sweep_outputs.SWEEP_OUTPUTS["peak_startup_link_force"]
+    monkeypatch.setitem(sweep_outputs.SWEEP_OUTPUTS, "peak_startup_link_force",
+                        replace(spec, thread_block=(12, 12)))     # 4 blocks of 2 × 6
+    threaded = run_sweep(chosen, tmp_path / "threads")
+    assert one.blocks == 1 and one.scheduler == "synchronous"
+    assert threaded.blocks == 4 and threaded.scheduler == "threads"
+    a, b = (xr.open_zarr(r.dataset).load()["peak_startup_link_force"].values
+            for r in (one, threaded))
+    assert np.array_equal(a.view(np.uint64), b.view(np.uint64)) and one.worst == threaded.worst
 
 
 def test_with_out_each_simulated_block_is_computed_once(tmp_path, monkeypatch):

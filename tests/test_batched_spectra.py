@@ -159,3 +159,21 @@ def test_a_memo_without_hits_lets_its_spectra_go():
     assert memo.hits == 0 and not memo._tables
     for g, f in zip(got, spectra(A[5:60])):
         assert np.array_equal(g, f)
+
+
+def test_the_recorder_keeps_the_stacks_every_thread_decomposes():
+    """``decomposed`` lists what a sweep's Dask threads decompose (they share
+    no context with the bench that opened it), and lets go once closed."""
+    from concurrent.futures import ThreadPoolExecutor
+    rng = np.random.default_rng(3)
+    stacks = [rng.standard_normal((5, 3, 3)) for _ in range(4)]
+    with batched_spectra.decomposed() as kept:
+        with ThreadPoolExecutor(2) as pool:
+            list(pool.map(spectra, stacks))
+    assert len(kept) == 4
+    def matrices(stacks):                     # a stack's distinct A, in its own order
+        return sorted(a.tobytes() for A in stacks for a in A)
+    assert matrices(kept) == matrices(stacks)
+    assert not batched_spectra._DECOMPOSED
+    spectra(stacks[0])
+    assert len(kept) == 4

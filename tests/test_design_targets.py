@@ -42,7 +42,7 @@ def test_the_floor_is_the_blocks_own_eigen_decompositions_timed_alone():
     with batched_spectra.decomposed() as stacks:
         block.largest(case.output, values)
     assert stacks and all(A.ndim == 3 and A.shape[1] == A.shape[2] for A in stacks)
-    assert batched_spectra._DECOMPOSED.get() is None
+    assert not batched_spectra._DECOMPOSED
     floor = design_targets.eig_floor(stacks, repeats=1)
     assert floor["matrices"] == sum(len(A) for A in stacks) >= 4 and floor["seconds"] > 0
     row = {"name": "x", "designs": 4, "seconds": 0.1, "cpu_seconds": 0.1, "nan": 0,

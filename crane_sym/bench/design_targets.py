@@ -1,12 +1,15 @@
 """``crane-sym bench --sweep``, section (g): 10⁴ designs of a hybrid model
-built from components, one block, against the targets of issue 39 (item 3),
-each row printed with met / not met and the machine's load:
+built from components, as a sweep runs them, against the targets of issue 39
+(item 3), each row printed with met / not met and the machine's load:
 
 - a paper's batched case that declares ``block_target`` (003's start-up:
-  10⁴ designs in at most 1 s), its grid of ``n`` × ``n`` designs solved as one
-  block as a sweep's worker solves it (``crane_sym.sweep.grid.evaluate_block``);
+  10⁴ designs in at most 1 s), its grid of ``n`` × ``n`` designs cut into
+  blocks and scheduled as ``crane-sym sweep`` does on this machine
+  (``crane_sym.sweep.blocks``: 003's NumPy-bound blocks on threads), each
+  block solved by ``crane_sym.sweep.grid.evaluate_block``;
 - a component file of 5 bodies (:data:`FILE_CASES`: ``bridge_travel.toml``,
-  its two stiffnesses varied, 10⁴ designs in at most 2 s), one block through
+  its two stiffnesses varied, 10⁴ designs in at most 2 s), one block (as a
+  sweep of 10⁴ designs runs it: in its process) through
   ``crane_sym.components.designs.evaluate_block`` with Python's cycle
   collector paused as a sweep's worker pauses it
   (``crane_sym.sweep.compute.cycles_collected_after``), and the building of
@@ -21,6 +24,8 @@ makes them (``batched_spectra.decompose``: ``np.linalg.eig`` of each stack,
 its left vectors from V⁻¹ or from ``np.linalg.eig`` of Aᵀ; :func:`eig_floor`,
 the least of :data:`FLOOR_REPEATS`). A target below it
 cannot be met by this solver on this machine, however little the rest costs.
+Where the blocks run on threads, the floor's stacks are shared by as many
+threads (LAPACK releases the GIL).
 
 Each block is solved once (a run of a minute, not three). Where its time goes
 comes from cProfile on a grid of :data:`PROFILE_DESIGNS` designs of the same
@@ -106,7 +111,8 @@ def profile_top(solve: Callable[[], Any], top: int = TOP) -> list[tuple[str, flo
     return rows[:top]
 
 
-def eig_floor(stacks: list[np.ndarray], repeats: int = FLOOR_REPEATS) -> dict[str, Any]:
+def eig_floor(stacks: list[np.ndarray], repeats: int = FLOOR_REPEATS,
+              threads: int = 1) -> dict[str, Any]:
     """The eigen-decompositions of a block alone, as the batched closed forms
     make them (``batched_spectra.decompose``: right and left vectors), the
     least of ``repeats`` timings, and how many took their left vectors from
@@ -118,21 +124,30 @@ def eig_floor(stacks: list[np.ndarray], repeats: int = FLOOR_REPEATS) -> dict[st
         The stacks a block decomposed (``batched_spectra.decomposed``).
     repeats : int
         Timings; the least is kept (others on the machine only add time).
+    threads : int
+        Threads that share the stacks (Dask's threaded scheduler: LAPACK
+        releases the GIL), as a sweep's blocks share them.
     """
+    import dask
     times, transposed = [], 0
     for _ in range(repeats):
         start = time.perf_counter()
-        by_inverse = [decompose(A)[4] for A in stacks]
+        if threads > 1:
+            found = dask.compute(*[dask.delayed(decompose)(A) for A in stacks],
+                                 scheduler="threads", num_workers=threads)
+        else:
+            found = [decompose(A) for A in stacks]
         times.append(time.perf_counter() - start)
-        transposed = int(sum(np.sum(~b) for b in by_inverse))
+        transposed = int(sum(np.sum(~f[4]) for f in found))
     return {"seconds": min(times), "matrices": int(sum(A.shape[0] for A in stacks)),
-            "transposed": transposed,
+            "transposed": transposed, "threads": threads,
             "sizes": sorted({int(A.shape[1]) for A in stacks}), "stacks": len(stacks)}
 
 
-def _timed(solve: Callable[[], np.ndarray]) -> dict[str, Any]:
+def _timed(solve: Callable[[], np.ndarray], threads: int = 1) -> dict[str, Any]:
     """One solve: wall and CPU seconds, the load average before and after,
-    and the floor of its eigen-decompositions (:func:`eig_floor`)."""
+    and the floor of its eigen-decompositions (:func:`eig_floor`, on as many
+    ``threads`` as the solve's blocks, at most the cores)."""
     before = os.getloadavg()[0]
     with decomposed() as stacks:
         start, cpu = time.perf_counter(), time.process_time()
@@ -141,12 +156,30 @@ def _timed(solve: Callable[[], np.ndarray]) -> dict[str, Any]:
     return {"seconds": seconds, "cpu_seconds": cpu_seconds,
             "load_before": before, "load_after": os.getloadavg()[0],
             "designs": int(np.size(values)), "nan": int(np.isnan(values).sum()),
-            "eig_floor": eig_floor(stacks)}
+            "eig_floor": eig_floor(stacks, threads=min(threads, os.cpu_count() or 1))}
+
+
+def _as_swept(case: BatchedBenchCase, n: int) -> tuple[Callable[[], np.ndarray], int, str]:
+    """(solve, blocks, scheduler): the case's grid of ``n`` values an axis as
+    ``crane-sym sweep`` runs it on this machine (``sweep.blocks.chunks_for``,
+    ``local_scheduler``, Dask's local scheduler computing
+    ``sweep.grid.grid_arrays``), nothing written."""
+    import dask
+    from crane_sym.sweep.blocks import chunks_for, local_scheduler
+    from crane_sym.sweep.grid import grid_arrays
+    chosen = _grid(case, n)[0]
+    chunks = chunks_for(chosen)
+    local = local_scheduler(chosen, chunks)
+    field = grid_arrays(chosen, chunks)[case.output]
+    blocks = int(np.prod([len(c) for c in chunks]))
+    return lambda: dask.compute(field, scheduler=local)[0], blocks, local
 
 
 def paper_row(paper: str, case: BatchedBenchCase) -> dict[str, Any]:
-    """The case's grid of ``case.block_n`` ** 2 designs as one block against its
-    ``block_target``, and where a grid of :data:`PROFILE_DESIGNS` spends its time."""
+    """The case's grid of ``case.block_n`` ** 2 designs as a sweep runs it
+    (:func:`_as_swept`: its blocks, on threads where the output is
+    NumPy-bound) against its ``block_target``, and where a grid of
+    :data:`PROFILE_DESIGNS` designs, one block, spends its time."""
     say = progress.current()
 
     def solver(n: int) -> Callable[[], np.ndarray]:
@@ -155,9 +188,11 @@ def paper_row(paper: str, case: BatchedBenchCase) -> dict[str, Any]:
                 dict(chosen.fixed), dict(chosen.options))
         return lambda: evaluate_block(*call, *axes, cached=False)
     solver(2)()                                              # imports, the derivation
-    say.step(f"  {case.output}: {case.block_n ** len(case.axes)} designs as one block ...")
-    row = {"name": f"{paper} {case.output}", **_timed(solver(case.block_n)),
-           "target": case.block_target}
+    solve, blocks, local = _as_swept(case, case.block_n)
+    say.step(f"  {case.output}: {case.block_n ** len(case.axes)} designs as a sweep runs "
+             f"them ({blocks} block(s), {local}) ...")
+    row = {"name": f"{paper} {case.output}", **_timed(solve, threads=blocks),
+           "target": case.block_target, "blocks": blocks, "scheduler": local}
     row["met"] = row["seconds"] <= case.block_target
     say.step(f"  {case.output}: where the time goes ({PROFILE_DESIGNS} designs, cProfile) ...")
     row["profile"] = profile_top(solver(round(PROFILE_DESIGNS ** (1 / len(case.axes)))))
@@ -241,15 +276,20 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
     """
     if not rows:
         return []
-    lines = ["## (g) 10⁴ designs of a model from components, one block (issue 39)", "",
-             "Each block solved once, wall and CPU seconds of this process, the load "
-             "average before and after (the machine is shared).", "",
+    lines = ["## (g) 10⁴ designs of a model from components, as a sweep runs them "
+             "(issue 39)", "",
+             "Each grid solved once, cut into blocks and scheduled as ``crane-sym sweep`` "
+             "does here; wall and CPU seconds of this process, the load average before "
+             "and after (the machine is shared).", "",
              "| target | measured | limit | met |", "| --- | --- | --- | --- |"]
     for r in rows:
         if "skipped" in r:
             lines.append(f"| {r['name']} | skipped: {r['skipped']} | | |")
             continue
-        lines.append(f"| {r['designs']} designs of {r['name']}, one block | "
+        blocks = r.get("blocks", 1)
+        how = ("one block" if blocks == 1 else
+               f"{blocks} blocks on {r.get('scheduler', 'threads')}")
+        lines.append(f"| {r['designs']} designs of {r['name']}, {how} | "
                      f"{r['seconds']:.2f} s wall, {r['cpu_seconds']:.2f} s CPU "
                      f"({1e3 * r['seconds'] / r['designs']:.2f} ms a design; NaN "
                      f"{r['nan']}); load {r['load_before']:.1f} before, "
@@ -266,7 +306,9 @@ def markdown_rows(rows: list[dict[str, Any]]) -> list[str]:
                          f"``np.linalg.eig`` of each, its left vectors from V⁻¹ "
                          f"({floor['matrices'] - floor.get('transposed', 0)}) or from "
                          f"``np.linalg.eig`` of Aᵀ ({floor.get('transposed', 0)}): "
-                         f"{floor['seconds']:.2f} s, least of {FLOOR_REPEATS}; "
+                         f"{floor['seconds']:.2f} s"
+                         + (f" on {floor['threads']} threads" if floor.get("threads", 1) > 1
+                            else "") + f", least of {FLOOR_REPEATS}; "
                          + (f"the target of {r['target']:g} s is below it: this solver "
                             "cannot meet it on this machine, whatever the rest costs."
                             if below else f"{floor['seconds'] / r['target']:.0%} of the "

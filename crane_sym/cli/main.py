@@ -378,7 +378,7 @@ def parser() -> argparse.ArgumentParser:
                    "and a scaling curve of 1..16 workers, met / not met and why")
     p.add_argument("--designs", action="store_true",
                    help="bench section (g) of --sweep alone: 10^4 designs of a model from "
-                   "components (003's start-up, a 5-body file) as one block each, met / not "
+                   "components (003's start-up, a 5-body file) as a sweep runs them, met / not "
                    "met, and where the time goes")
     p.add_argument("--sweep", action="store_true", help="bench design sweeps (Dask) against "
                    "per-design integration; alone, only that")

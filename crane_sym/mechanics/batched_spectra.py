@@ -18,7 +18,7 @@ share A, and a design's A is decomposed once for both (bridge_travel.toml:
 from __future__ import annotations
 
 import contextlib
-import contextvars
+import threading
 from typing import Iterator
 
 import numpy as np
@@ -62,25 +62,29 @@ MEMO_BYTES = 1 << 27
 MEMO_TRIAL = 1 << 26
 
 
-#: The stacks of distinct A that :func:`spectra` decomposes, kept while
-#: :func:`decomposed` is open (None: not kept).
-_DECOMPOSED: contextvars.ContextVar[list | None] = contextvars.ContextVar(
-    "decomposed", default=None)
+#: The lists that keep the stacks of distinct A that :func:`spectra`
+#: decomposes, one per open :func:`decomposed` (every thread's stacks: a
+#: sweep's blocks run on Dask's threads, which do not share a context).
+_DECOMPOSED: list[list[np.ndarray]] = []
+_KEEPING = threading.Lock()
 
 
 @contextlib.contextmanager
 def decomposed() -> Iterator[list[np.ndarray]]:
     """The stacks of distinct A that the batched closed forms decompose while
-    the block runs (each (m, n, n), as ``np.linalg.eig`` takes it; those
-    found in a :class:`SpectraMemo` are not decomposed, so not listed): what
-    a bench times alone, by :func:`decompose`, as the floor of the method.
-    Nothing is copied; the list holds the stacks the solver made anyway."""
+    it is open, in any thread of the process (each (m, n, n), as
+    ``np.linalg.eig`` takes it; those found in a :class:`SpectraMemo` are
+    not decomposed, so not listed): what a bench times alone, by
+    :func:`decompose`, as the floor of the method. Nothing is copied; the
+    list holds the stacks the solver made anyway."""
     kept: list[np.ndarray] = []
-    token = _DECOMPOSED.set(kept)
+    with _KEEPING:
+        _DECOMPOSED.append(kept)
     try:
         yield kept
     finally:
-        _DECOMPOSED.reset(token)
+        with _KEEPING:                       # by identity: lists compare by content
+            del _DECOMPOSED[next(i for i, k in enumerate(_DECOMPOSED) if k is kept)]
 
 
 def decompose(A: np.ndarray) -> tuple[np.ndarray, ...]:
@@ -239,9 +243,10 @@ def spectra(A: np.ndarray, memo: SpectraMemo | None = None) -> tuple[np.ndarray,
 def _sorted_out(distinct: np.ndarray) -> tuple[np.ndarray, ...]:
     """λ, V, μ, W, categories, ``bad`` and ``twin`` of a stack of distinct A
     (:func:`spectra`)."""
-    kept = _DECOMPOSED.get()
-    if kept is not None:
-        kept.append(distinct)
+    if _DECOMPOSED:
+        with _KEEPING:
+            for kept in _DECOMPOSED:
+                kept.append(distinct)
     lam, vr, mu, vl, by_inverse = decompose(distinct)
     scale = np.maximum(np.abs(lam).max(axis=1), 1.0)[:, None]
     tol = 1e-6 * scale

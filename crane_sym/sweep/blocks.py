@@ -6,17 +6,21 @@ worker, on processes (their Python holds the GIL). Outputs that solve a
 block's designs together (``SweepOutput.batched``) come in two kinds, by the
 output's ``threads`` flag:
 
-- NumPy-bound (``threads=True``, 001's emergency stop): its time is in array
-  calls, and a block's Python per phase is paid once for all its designs,
-  so blocks are few and large (at least :data:`THREAD_DESIGNS` designs, at
-  most :data:`THREAD_MAX_DESIGNS`, ~6 kB a design while it runs) and run on
-  threads, which share them without pickling. Their parallel efficiency on
-  two threads is measured by ``crane-sym bench --parallel`` (the README
-  quotes its run), not kept here.
-- Python-bound (003's start-up, a component file's designs: each design
-  assembled and switched in Python): one block per worker, at most
-  :data:`BATCH_DESIGNS` designs, on processes; a grid of at most that many
-  is one block in this process (worker processes take ~3 s to start).
+- NumPy-bound (``SweepOutput.threads``: 001's emergency stop; 003's start-up
+  where only its links' stiffness and damping are swept): its time is in
+  array calls, and a block's Python per phase is paid once for all its
+  designs, so blocks are few and large (``SweepOutput.thread_block``: 001
+  at least :data:`THREAD_DESIGNS` designs, at most
+  :data:`THREAD_MAX_DESIGNS`, ~6 kB a design while it runs; 003 2 500 to
+  10 000, ~50 kB a design) and run on threads, which share them without
+  pickling. Their parallel efficiency on two threads is measured by
+  ``crane-sym bench --parallel`` (the README quotes its run), not kept here.
+- Python-bound (003's start-up with other values swept, each design
+  assembled; a component file's designs: its event search makes many small
+  NumPy calls, and two threads took as long as one block, measured): one
+  block per worker, at most :data:`BATCH_DESIGNS` designs, on processes; a
+  grid of at most that many is one block in this process (worker processes
+  take ~3 s to start).
 """
 from __future__ import annotations
 
@@ -29,7 +33,7 @@ from crane_sym import registry
 from crane_sym.sweep.plan import SweepPlan
 
 __all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "THREAD_DESIGNS", "THREAD_MAX_DESIGNS",
-           "chunks_for", "first_axis", "local_scheduler", "threaded"]
+           "chunks_for", "first_axis", "local_scheduler", "thread_block", "threaded"]
 
 #: Bytes of float64 output per block of the grid (closed forms).
 CHUNK_BYTES = 8 * 2**20
@@ -44,12 +48,32 @@ THREAD_MAX_DESIGNS = 50_000
 
 def threaded(plan: SweepPlan) -> bool:
     """True where every simulated output of ``plan`` is a NumPy-bound batched
-    one (``SweepOutput.threads``): its blocks run on threads."""
+    one for the parameters it sweeps (``SweepOutput.threads``: True, or a
+    tuple holding every swept name): its blocks run on threads."""
     simulated = [o for o in plan.outputs if o.kind != "closed"]
     if not simulated or any(o.kind == "component" for o in simulated):
         return False
     specs = registry.sweep_outputs(plan.derivation)
-    return all(getattr(specs.get(o.name), "threads", False) for o in simulated)
+    swept = {a.name for a in plan.axes}
+    return all(_on_threads(getattr(specs.get(o.name), "threads", False), swept)
+               for o in simulated)
+
+
+def _on_threads(threads: bool | tuple[str, ...], swept: set[str]) -> bool:
+    return threads is True or (isinstance(threads, tuple) and swept <= set(threads))
+
+
+def thread_block(plan: SweepPlan) -> tuple[int, int]:
+    """(fewest, most) designs of a block on threads for ``plan``'s simulated
+    outputs (``SweepOutput.thread_block``; the tightest where there are
+    several; :data:`THREAD_DESIGNS`, :data:`THREAD_MAX_DESIGNS` where none is
+    declared)."""
+    specs = registry.sweep_outputs(plan.derivation)
+    bounds = [getattr(specs.get(o.name), "thread_block", None) or
+              (THREAD_DESIGNS, THREAD_MAX_DESIGNS)
+              for o in plan.outputs if o.kind != "closed"]
+    fewest = max((b[0] for b in bounds), default=THREAD_DESIGNS)
+    return fewest, max(fewest, min((b[1] for b in bounds), default=THREAD_MAX_DESIGNS))
 
 
 def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
@@ -59,8 +83,8 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
     blocks; for a Python-bound batched output one block per worker, at most
     :data:`BATCH_DESIGNS` designs, and on the local machine (``workers`` not
     given) a grid of at most that many one block; for a NumPy-bound one
-    (:func:`threaded`) blocks of :data:`THREAD_DESIGNS` to
-    :data:`THREAD_MAX_DESIGNS` designs, cut along the first axis.
+    (:func:`threaded`) blocks of :func:`thread_block` designs, cut along the
+    first axis.
 
     Parameters
     ----------
@@ -92,13 +116,16 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
 
 
 def _rows(plan: SweepPlan, workers: int) -> tuple[tuple[int, ...], ...]:
-    """Blocks of a NumPy-bound batched output: as many as it takes to stay
-    within :data:`THREAD_MAX_DESIGNS` designs, at least one per worker where
-    each still holds :data:`THREAD_DESIGNS`, never one below that (unless the
-    grid is); the first axis cut into near-equal runs (the rest whole)."""
+    """Blocks of a NumPy-bound batched output (:func:`thread_block`: fewest
+    and most designs): as many as it takes to stay within the most, at least
+    one per worker where each still holds the fewest, never one below that
+    (unless the grid is); the first axis cut into near-equal runs (the rest
+    whole)."""
+    fewest, most = thread_block(plan)
     points = plan.points
-    count = max(math.ceil(points / THREAD_MAX_DESIGNS), min(workers, points // THREAD_DESIGNS))
-    return first_axis(plan.shape, max(1, min(count, points // THREAD_DESIGNS)))
+    row = points // plan.shape[0]                # designs a row of the first axis
+    count = max(math.ceil(plan.shape[0] / max(1, most // row)), min(workers, points // fewest))
+    return first_axis(plan.shape, max(1, min(count, points // fewest)))
 
 
 def first_axis(shape: tuple[int, ...], count: int) -> tuple[tuple[int, ...], ...]:

@@ -16,9 +16,10 @@ and damping (C_пр and ζ swept), the block is one
 ``crane_sym.components.design_block.DesignBlock``: one model, its values as
 arrays, a design's own model built only where the per-design route takes it
 (the same numbers, ``tests/test_design_block.py``); elsewhere each design's
-parts are assembled in Python. Its block is Python-bound (``threads`` not
-set): a sweep runs its blocks on processes, a grid of at most 10⁴ designs as
-one block in this process (``crane_sym.sweep.blocks``).
+parts are assembled in Python. A block of the first kind is NumPy-bound,
+and a sweep runs such blocks on threads (``threads``: only C_пр and ζ
+swept); a block of the second is Python-bound, on processes, a grid of at
+most 10⁴ designs as one block in this process (``crane_sym.sweep.blocks``).
 """
 from __future__ import annotations
 
@@ -53,6 +54,12 @@ def _models(values):
 #: The rim values a block of designs may vary (``drive_train.fig11_parts``:
 #: both links' stiffness and damping); any other varied value, a model a design.
 _LINK_KEYS = {"c_l": "stiffness", "b": "damping"}
+#: The parameters a sweep may vary for its blocks to be solved as one
+#: (:func:`_block`: the links' stiffness and damping ratio). Such a block is
+#: NumPy-bound: two of 5 000 designs on two threads took 0.57 of one of
+#: 10 000 (measured), so a sweep runs them on threads, 2 500 to 10 000 designs
+#: each (a block's fixed cost ~0.05 s; ~50 kB a design while it runs).
+_BLOCK_AXES = ("c_l", "zeta")
 
 
 def _block(values):
@@ -143,5 +150,6 @@ SWEEP_OUTPUTS = {
         "peak_startup_link_force", "N",
         "Largest F1 + F2 of the two links in the start-up with backlash (Fig. 12, Table 1's "
         "hold times, over 4 s), phases in closed form", _PARAMETERS, (),
-        _peak_startup_link_force, batched=True, cap=MAX_PHASES),
+        _peak_startup_link_force, batched=True, cap=MAX_PHASES,
+        threads=_BLOCK_AXES, thread_block=(2_500, 10_000)),
 }
