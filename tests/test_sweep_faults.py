@@ -364,8 +364,9 @@ def test_grid_size_is_checked_against_memory_and_blocks_before_any_work(monkeypa
 
 FIG9 = Path(__file__).parents[1] / "examples" / "drive_trains" / "hoist_fig9.toml"
 ESTIMATE = (r"estimate: [0-9.e+]+ designs x 1 output\(s\) on \d+ worker\(s\): about [0-9.e+-]+ s "
-            r"and [0-9.e+-]+ MiB \(a timed pilot of \d+ designs: [0-9.e+-]+ s a design, "
-            r"[0-9.e+-]+ s to start\)")
+            r"and [0-9.e+-]+ MiB \((?:a timed pilot of \d+ designs: [0-9.e+-]+ s a design|"
+            r"timed pilots of \d+ and \d+ designs: [0-9.e+-]+ s a design, [0-9.e+-]+ s a "
+            r"block), [0-9.e+-]+ s to start\)")
 
 
 @pytest.mark.harm("bounds")
@@ -384,7 +385,7 @@ def test_a_million_designs_of_a_component_file_are_estimated_and_refused(tmp_pat
     assert len(alone) == 1 and alone[0].startswith("crane-sym: error: --time-limit 900: ")
     assert re.fullmatch(ESTIMATE.replace("[0-9.e+]+ designs", "1e\\+06 designs"), estimate)
     assert re.fullmatch(r"crane-sym: error: --time-limit 900: the sweep of 1e\+06 designs would "
-                        r"take about [0-9.e+]+ s \(a timed pilot of \d+ designs\); give fewer "
+                        r"take about [0-9.e+]+ s \(timed pilots of 16 and 1024 designs\); give fewer "
                         r"designs or a larger limit", error)
     assert not out.exists()
 
@@ -446,3 +447,35 @@ def test_the_pilot_solves_afresh_what_the_process_has_solved_before(monkeypatch)
     found = estimate(chosen)
     assert len(solved) == 4 and found.per_design > 0
     assert set(designs._SOLVED) == kept
+
+
+def test_a_batched_outputs_estimate_is_a_time_a_block_and_a_time_a_design(monkeypatch):
+    """003's start-up solves a block's designs together: its estimate times two
+    pilots (16 and 1024 designs) and splits their times into a time a block
+    and a time a design, counted over the sweep's blocks and workers."""
+    from crane_sym.scenes.reading import load_scene
+    from crane_sym.sweep import blocks, estimate as est
+    from crane_sym.sweep.spec import plan
+    monkeypatch.setattr(blocks.os, "cpu_count", lambda: 2)
+    monkeypatch.setattr(est.os, "cpu_count", lambda: 2)
+    sizes = []
+
+    def affine(run, bs):                     # a block: 0.05 s, and 0.1 ms a design
+        n = int(np.prod([len(b) for b in bs]))
+        sizes.append(n)
+        return 0.05 + 1e-4 * n
+    monkeypatch.setattr(est, "_seconds", affine)
+    chosen = plan(load_scene("fig12_startup_backlash"), ["c_l=2:8:100", "zeta=0.02:0.1:100"],
+                  ["peak_startup_link_force"], ["phi_b=3.14159"])
+    found = est.estimate(chosen)
+    assert sizes == [16, 1024] and (found.pilot, found.second) == (16, 1024)
+    assert found.per_design == pytest.approx(1e-4) and found.per_block == pytest.approx(0.05)
+    assert found.workers == 2                # two blocks of 5 000 on two threads
+    assert found.seconds == pytest.approx(found.warmup + (2 * 0.05 + 1e-4 * 10_000) / 2)
+    assert "timed pilots of 16 and 1024 designs" in found.line()
+    small = plan(load_scene("fig12_startup_backlash"), ["c_l=2:8:20", "zeta=0.02:0.1:20"],
+                 ["peak_startup_link_force"], ["phi_b=3.14159"])
+    sizes.clear()
+    found = est.estimate(small)              # one block: one worker; too small for two pilots
+    assert sizes == [16] and found.workers == 1 and found.second == 0
+    assert found.seconds == pytest.approx(found.warmup + (0.05 + 1e-4 * 16) / 16 * 400)
