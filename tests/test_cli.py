@@ -322,7 +322,7 @@ def test_bench_designs_prints_its_targets_met_or_not(monkeypatch, tmp_path, caps
     out = tmp_path / "bench"
     assert main(["bench", "--designs", "--quiet", "--out", str(out)]) == 0
     text = capsys.readouterr().out
-    assert "## (g) 10⁴ designs of a model from components, one block (issue 39)" in text
+    assert "## (g) 10⁴ designs of a model from components, as a sweep runs them (issue 39)" in text
     rows = [line for line in text.splitlines() if line.startswith("| 9 designs of ")]
     assert len(rows) == 2
     assert "portal_travel peak_startup_link_force" in rows[0] and "| ≤ 1 s |" in rows[0]

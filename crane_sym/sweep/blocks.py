@@ -49,7 +49,13 @@ THREAD_MAX_DESIGNS = 50_000
 def threaded(plan: SweepPlan) -> bool:
     """True where every simulated output of ``plan`` is a NumPy-bound batched
     one for the parameters it sweeps (``SweepOutput.threads``: True, or a
-    tuple holding every swept name): its blocks run on threads."""
+    tuple holding every swept name): its blocks run on threads.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    """
     simulated = [o for o in plan.outputs if o.kind != "closed"]
     if not simulated or any(o.kind == "component" for o in simulated):
         return False
@@ -67,7 +73,13 @@ def thread_block(plan: SweepPlan) -> tuple[int, int]:
     """(fewest, most) designs of a block on threads for ``plan``'s simulated
     outputs (``SweepOutput.thread_block``; the tightest where there are
     several; :data:`THREAD_DESIGNS`, :data:`THREAD_MAX_DESIGNS` where none is
-    declared)."""
+    declared).
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    """
     specs = registry.sweep_outputs(plan.derivation)
     bounds = [getattr(specs.get(o.name), "thread_block", None) or
               (THREAD_DESIGNS, THREAD_MAX_DESIGNS)
@@ -152,7 +164,15 @@ def local_scheduler(plan: SweepPlan, chunks) -> str:
     """Dask's local scheduler for the sweep when none is named: closed forms
     on threads; a simulated grid of one block in this process (synchronous),
     as a component file's sweep (its blocks are kept in the process);
-    NumPy-bound batched outputs on threads; any other on processes."""
+    NumPy-bound batched outputs on threads; any other on processes.
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    chunks : tuple of tuple of int
+        Its blocks (:func:`chunks_for`).
+    """
     kinds = {o.kind for o in plan.outputs}
     if kinds == {"closed"}:
         return "threads"
