@@ -339,6 +339,9 @@ def test_003s_block_runs_on_threads_only_where_its_links_alone_are_swept():
         assert len(sizes) == count and sum(sizes) == n * n
         assert 2_500 <= min(sizes) and max(sizes) <= 10_000
         assert local_scheduler(links, chunks) == "threads"
+    long = plan(scene, ["c_l=2:8:2", "zeta=0.02:0.1:30000"], ["peak_startup_link_force"], at)
+    sizes = blocks(chunks_for(long, workers=2))          # a row alone past the most
+    assert sum(sizes) == 60_000 and max(sizes) <= 10_000
     big = plan(scene, ["c_l=2:8:300", "m_k=1000:3000:300"], ["peak_startup_link_force"], at)
     chunks = chunks_for(big, workers=2)
     assert max(blocks(chunks)) <= BATCH_DESIGNS

@@ -132,11 +132,15 @@ def _rows(plan: SweepPlan, workers: int) -> tuple[tuple[int, ...], ...]:
     and most designs): as many as it takes to stay within the most, at least
     one per worker where each still holds the fewest, never one below that
     (unless the grid is); the first axis cut into near-equal runs (the rest
-    whole)."""
+    whole), or, where one run of the first axis alone holds more than the
+    most, every axis cut by size (a block's memory grows with its designs)."""
+    from dask.array.core import normalize_chunks
     fewest, most = thread_block(plan)
     points = plan.points
     row = points // plan.shape[0]                # designs a row of the first axis
-    count = max(math.ceil(plan.shape[0] / max(1, most // row)), min(workers, points // fewest))
+    if row > most:
+        return normalize_chunks("auto", plan.shape, limit=8 * most, dtype=np.float64)
+    count = max(math.ceil(plan.shape[0] / (most // row)), min(workers, points // fewest))
     return first_axis(plan.shape, max(1, min(count, points // fewest)))
 
 
