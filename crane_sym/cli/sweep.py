@@ -107,7 +107,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("--limit", metavar="\"NAME<=VALUE UNIT\"",
                    help="count the designs within it, draw its contour")
     p.add_argument("--time-limit", type=float, default=DEFAULT_TIME_LIMIT, metavar="SECONDS",
-                   help="refuse a sweep whose estimate (a timed pilot block, printed before "
+                   help="refuse a sweep whose estimate (from timed pilot blocks, printed before "
                    f"the sweep starts) passes it (default {DEFAULT_TIME_LIMIT:g} s)")
     p.add_argument("--out", required=True, help="folder for the Zarr dataset and the PNG "
                    "(both replaced together, or neither)")
