@@ -54,6 +54,26 @@ def test_the_floor_is_the_blocks_own_eigen_decompositions_timed_alone():
     assert "is below it" not in "\n".join(design_targets.markdown_rows([row]))
 
 
+def test_the_floor_on_two_threads_decomposes_the_same_stacks():
+    """The floor of blocks that run on threads shares their stacks between as
+    many threads (Dask's threaded scheduler): the same matrices, the same
+    split between V⁻¹ and Aᵀ, and the Markdown says on how many threads."""
+    rng = np.random.default_rng(5)
+    stacks = [rng.standard_normal((40, 4, 4)) for _ in range(3)]
+    jordan = np.zeros((2, 4, 4))
+    jordan[:, 0, 1] = 1.0                            # x' = v, v' = 0: V singular, so Aᵀ
+    stacks.append(jordan)
+    one = design_targets.eig_floor(stacks, repeats=1)
+    two = design_targets.eig_floor(stacks, repeats=1, threads=2)
+    assert (one["matrices"], one["transposed"]) == (two["matrices"], two["transposed"]) == (122, 2)
+    assert (one["threads"], two["threads"]) == (1, 2)
+    row = {"name": "x", "designs": 4, "seconds": 0.1, "cpu_seconds": 0.1, "nan": 0,
+           "load_before": 1.0, "load_after": 1.0, "target": 1e3, "met": True,
+           "eig_floor": two, "blocks": 2, "scheduler": "threads"}
+    text = "\n".join(design_targets.markdown_rows([row]))
+    assert " on 2 threads, least of " in text and "| 4 designs of x, 2 blocks on threads |" in text
+
+
 def test_a_row_met_prints_no_profile_and_a_missing_file_is_skipped(tmp_path):
     row = {"name": "x", "designs": 4, "seconds": 0.1, "cpu_seconds": 0.1, "nan": 0,
            "load_before": 1.0, "load_after": 1.0, "target": 1.0, "met": True,
