@@ -33,7 +33,8 @@ from crane_sym import registry
 from crane_sym.sweep.plan import SweepPlan
 
 __all__ = ["BATCH_DESIGNS", "CHUNK_BYTES", "THREAD_DESIGNS", "THREAD_MAX_DESIGNS",
-           "chunks_for", "first_axis", "local_scheduler", "thread_block", "threaded"]
+           "batched", "chunks_for", "first_axis", "local_scheduler", "thread_block",
+           "threaded"]
 
 #: Bytes of float64 output per block of the grid (closed forms).
 CHUNK_BYTES = 8 * 2**20
@@ -62,6 +63,24 @@ def threaded(plan: SweepPlan) -> bool:
     specs = registry.sweep_outputs(plan.derivation)
     swept = {a.name for a in plan.axes}
     return all(_on_threads(getattr(specs.get(o.name), "threads", False), swept)
+               for o in simulated)
+
+
+def batched(plan: SweepPlan) -> bool:
+    """True where ``plan`` has simulated outputs and each solves a block's
+    designs together (a component file's; ``SweepOutput.batched``).
+
+    Parameters
+    ----------
+    plan : SweepPlan
+        The checked sweep.
+    """
+    simulated = [o for o in plan.outputs if o.kind != "closed"]
+    if not simulated:
+        return False
+    specs = ({} if all(o.kind == "component" for o in simulated)
+             else registry.sweep_outputs(plan.derivation))
+    return all(o.kind == "component" or getattr(specs.get(o.name), "batched", False)
                for o in simulated)
 
 
@@ -115,10 +134,7 @@ def chunks_for(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES,
     workers = workers or os.cpu_count() or 1
     if threaded(plan):
         return _rows(plan, workers)
-    specs = ({} if all(o.kind == "component" for o in simulated)
-             else registry.sweep_outputs(plan.derivation))
-    if all(o.kind == "component" or getattr(specs.get(o.name), "batched", False)
-           for o in simulated):
+    if batched(plan):
         designs = (plan.points if local and plan.points <= BATCH_DESIGNS
                    else min(BATCH_DESIGNS, math.ceil(plan.points / workers)))
     else:

@@ -36,8 +36,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from crane_sym import registry
-from crane_sym.sweep.blocks import chunks_for
+from crane_sym.sweep.blocks import batched, chunks_for
 from crane_sym.sweep.grid import CHUNK_BYTES, evaluate_block
 from crane_sym.sweep.plan import SweepError, SweepPlan
 
@@ -110,9 +109,9 @@ def estimate(plan: SweepPlan, chunk_bytes: int = CHUNK_BYTES) -> Estimate:
     size = PILOT_DESIGNS * (64 if kinds == {"closed"} else 1)
     blocks = _pilot_blocks(plan, size)
     pilot = math.prod(len(b) for b in blocks)
-    larger = _pilot_blocks(plan, min(BATCH_PILOT, plan.points // 8))
+    larger = _pilot_blocks(plan, min(BATCH_PILOT, plan.points // 8)) if batched(plan) else blocks
     second = math.prod(len(b) for b in larger)
-    two = _batched(plan) and second >= 4 * pilot     # a block's cost and a design's
+    two = second >= 4 * pilot                     # a block's cost and a design's
     names = tuple(a.name for a in plan.axes)
     warmup = per_design = per_block = 0.0
     for o in plan.outputs:
@@ -140,18 +139,6 @@ def _seconds(run, blocks: list[np.ndarray]) -> float:
     start = time.perf_counter()
     run(blocks)
     return time.perf_counter() - start
-
-
-def _batched(plan: SweepPlan) -> bool:
-    """Whether every simulated output of ``plan`` solves a block's designs
-    together (a component file's; ``SweepOutput.batched``), and there is one."""
-    simulated = [o for o in plan.outputs if o.kind != "closed"]
-    if not simulated:
-        return False
-    if all(o.kind == "component" for o in simulated):
-        return True
-    specs = registry.sweep_outputs(plan.derivation)
-    return all(getattr(specs.get(o.name), "batched", False) for o in simulated)
 
 
 def check_estimate(found: Estimate, time_limit: float) -> None:
