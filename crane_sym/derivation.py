@@ -285,6 +285,10 @@ class Derivation:
     latex_names : dict of Symbol to str
         The LaTeX the paper uses for symbols whose SymPy name differs
         (``Q_at0`` is printed ``Q(0)``): audit details and walkthroughs use it.
+    code : bool
+        False for a build without the parts only code and the bench read
+        (outputs, tabulated outputs, ODE systems, switches, bench
+        parameters): what the audit builds (``registry.get(..., code=False)``).
     """
 
     id: str
@@ -302,6 +306,7 @@ class Derivation:
     switches: dict[str, Switch] = field(default_factory=dict)
     bench_parameters: dict[sp.Symbol, sp.Expr] = field(default_factory=dict)
     latex_names: dict[sp.Basic, str] = field(default_factory=dict)
+    code: bool = True
     _clock: float = field(default_factory=time.perf_counter, repr=False, compare=False)
 
     def step(self, label: str) -> Step:

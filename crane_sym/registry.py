@@ -173,7 +173,7 @@ def value_units(name: str) -> dict[str, str]:
     return dict(getattr(module(name), "VALUE_UNITS", {}))
 
 
-def get(name: str) -> Derivation:
+def get(name: str, code: bool = True) -> Derivation:
     """The built derivation for ``name``: one build per process, whether it is
     asked for by id or by paper number (:func:`built`).
 
@@ -181,12 +181,21 @@ def get(name: str) -> Derivation:
     ----------
     name : str
         A derivation id or paper number (``000``).
+    code : bool, optional
+        False: the parts only code and the bench read may be left out
+        (``Derivation.code``), what the audit asks for; a build with them,
+        made before in this process, serves as well.
     """
-    return built(resolve(name))
+    key = resolve(name)
+    return built(key, code or key in _WITH_CODE)
+
+
+#: The ids built with their code parts in this process.
+_WITH_CODE: set[str] = set()
 
 
 @lru_cache(maxsize=None)
-def built(key: str) -> Derivation:
+def built(key: str, code: bool = True) -> Derivation:
     """The derivation registered as ``key`` built, once per process, under
     fixed SymPy draws (the same path and time in every process).
 
@@ -194,6 +203,12 @@ def built(key: str) -> Derivation:
     ----------
     key : str
         A derivation id (:func:`resolve` gives it for a paper number).
+    code : bool, optional
+        False: without the parts only code and the bench read (the paper's
+        ``build(code=False)``).
     """
     with fixed_sympy_draws():
-        return module(key).build()
+        d = module(key).build(code=code)
+    if code:
+        _WITH_CODE.add(key)
+    return d

@@ -7,8 +7,10 @@ import pytest
 pytest.importorskip("lark")
 
 from crane_sym import registry  # noqa: E402
-from crane_sym.audit.papers import (Slot, audit_papers, longest_first,  # noqa: E402
-                                    schedule_text, workers)
+from crane_sym.audit.papers import (Slot, audit_paper, audit_papers,  # noqa: E402
+                                    longest_first, schedule_text, workers)
+from crane_sym.audit.verdicts import audit  # noqa: E402
+from crane_sym.codegen.module import render_module  # noqa: E402
 from crane_sym.bench.audit_times import (CommandTime, PaperTimes, as_markdown,  # noqa: E402
                                          paper_times)
 
@@ -27,6 +29,23 @@ def test_two_processes_give_the_records_of_one_in_the_papers_order():
     assert all(0 <= s.start < s.end for s in slots)
     assert [a.slot.worker for a in serial] == [0, 0]        # this process, in order
     assert serial[0].slot.end <= serial[1].slot.start
+
+
+def test_the_audit_builds_a_paper_without_its_code_and_judges_it_alike(monkeypatch):
+    asked = []
+    get = registry.get
+    monkeypatch.setattr(registry, "get",
+                        lambda name, code=True: asked.append(code) or get(name, code=code))
+    audit_paper("travel_braking")
+    assert asked == [False]
+    light, full = registry.built("travel_braking", False), registry.get("travel_braking")
+    assert not light.code and not (light.outputs or light.ode_systems)
+    assert full.code and full.outputs and full.ode_systems
+    assert [s.label for s in light.steps] == [s.label for s in full.steps]
+    assert [r.as_dict() for r in audit(light)] == [r.as_dict() for r in audit(full)]
+    assert registry.get("travel_braking", code=False) is full   # a full build serves
+    with pytest.raises(ValueError, match="built without its outputs"):
+        render_module(light)
 
 
 def test_the_pool_takes_the_longest_paper_first():

@@ -24,7 +24,7 @@ def test_a_derivation_is_built_under_the_fixed_draws(monkeypatch):
     with fixed_sympy_draws():
         expected = rng.random()
     drawn = []
-    fake = SimpleNamespace(build=lambda: drawn.append(rng.random()) or "built")
+    fake = SimpleNamespace(build=lambda code=True: drawn.append(rng.random()) or "built")
     monkeypatch.setattr(registry, "module", lambda name: fake)
     rng.seed(1)                           # whatever state the caller left
     assert registry.built.__wrapped__("travel_braking") == "built"   # past the cache

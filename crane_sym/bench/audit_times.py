@@ -88,7 +88,7 @@ def paper_times(ids: Sequence[str]) -> list[PaperTimes]:
         parse_side.cache_clear()            # each paper's sides counted, as in a cold run
         found, fresh = table.found, table.fresh
         start = time.perf_counter()
-        d = registry.get(i)
+        d = registry.get(i, code=False)      # as the audit builds it
         built = time.perf_counter()
         for f in d.published:
             audit_formula(d, f)

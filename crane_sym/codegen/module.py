@@ -326,6 +326,9 @@ def render_module(d: Derivation, outputs: Iterable[Output] | None = None,
     constants : mapping of str to str, optional
         Module constants (name -> text).
     """
+    if not d.code:                           # an empty module would pass for one
+        raise ValueError(f"{d.id} was built without its outputs (code=False): "
+                         "build it with registry.get(id) to print its module")
     scene_note, regenerate = docstring_text(scene_note), docstring_text(regenerate)
     outputs = list(d.outputs if outputs is None else outputs)
     labels = sorted({lab for o in [*outputs, *(t for t, _ in tables)] for lab in o.labels},

@@ -35,7 +35,6 @@ import math
 from typing import Sequence
 
 import numpy as np
-import scipy.linalg
 
 from crane_sym.components import kinds
 from crane_sym.components.parts import Component, ComponentError
@@ -105,6 +104,7 @@ def frequencies(assembly: Assembly) -> np.ndarray:
     if np.all(inertia > 0):
         squares = _scaled_squares(K, inertia)[0]
     else:
+        import scipy.linalg                 # on use: SciPy's import costs ~0.5 s
         with np.errstate(all="ignore"):
             squares = scipy.linalg.eigvals(K[0], np.diag(inertia[0])).real
     return np.sqrt(squares[_kept(squares)])

@@ -28,7 +28,6 @@ import math
 from typing import Callable
 
 import numpy as np
-from scipy.optimize import brentq
 
 from crane_sym.mechanics.closed_forms import ClosedForm
 
@@ -72,6 +71,7 @@ def first_crossing(form: ClosedForm, x0: np.ndarray, weights: np.ndarray,
         # real crossing (a gap of 1e-9 closing from rest, backlash -> 0), at
         # its own root, not where g passes the band
         lo, level = 0.0, 0.0
+    from scipy.optimize import brentq      # on use: SciPy's import costs ~0.5 s
     return brentq(lambda t: g(t) + level, lo, hi, xtol=xtol, rtol=4 * np.finfo(float).eps)
 
 

@@ -19,7 +19,6 @@ many-mode signal (a chain of 20 bodies).
 from __future__ import annotations
 
 import numpy as np
-from scipy.optimize import brentq
 
 from crane_sym.mechanics.closed_forms import ClosedForm
 
@@ -107,6 +106,8 @@ def peak_candidates(form: ClosedForm, amps: np.ndarray, k: float, rate: np.ndarr
         turns = np.flatnonzero(np.sign(ra) * np.sign(rb) < 0)
         def slope(x: float) -> float:
             return float(_values(form, rate, rate_k, np.array([x]))[0])
+        if turns.size:
+            from scipy.optimize import brentq  # on use: SciPy's import costs ~0.5 s
         for i in turns:
             sa, sb = slope(a[i]), slope(b[i])
             if sa * sb < 0:                        # the same signs evaluated alone

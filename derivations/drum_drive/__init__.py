@@ -59,12 +59,16 @@ ID = "drum_drive"
 TITLE = "Dynamic model of a drive with a driving drum"
 
 
-def build() -> Derivation:
-    """Rebuild eqs (1)–(21) of the drum-drive model; attach the print and outputs."""
+def build(code: bool = True) -> Derivation:
+    """Rebuild eqs (1)–(21) of the drum-drive model; attach the print and outputs.
+
+    ``code=False`` leaves out the parts only code and the bench read (the audit's
+    build, ``Derivation.code``).
+    """
     d = Derivation(id=ID, paper=PAPER, title=TITLE,
                    citation="M.P. Martyntsiv, O.M. Udovytskyi, B.V. Sologub, Lviv, 2010",
                    model=MODEL, symbols=SymbolTable(MODEL_SYMBOLS + PRINT_SYMBOLS),
-                   latex_names=LATEX_NAMES | PRINT_LATEX_NAMES)
+                   latex_names=LATEX_NAMES | PRINT_LATEX_NAMES, code=code)
     e = model_energies()
     eqs = steps.lagrange(d, e)                # (1)
     steps.kinetic_energy(d, e)                # (2)–(7)
@@ -77,8 +81,9 @@ def build() -> Derivation:
     steps.initial_state(d, rest)
     d.published.extend(pub.published(e))
     d.printed_items.extend(PRINTED_ITEMS)
-    d.outputs.extend(outputs(d))
-    d.switches["damping"] = damping_switch()
-    d.ode_systems.append(load_response(d))
-    d.bench_parameters.update(BENCH_PARAMETERS)
+    if code:
+        d.outputs.extend(outputs(d))
+        d.switches["damping"] = damping_switch()
+        d.ode_systems.append(load_response(d))
+        d.bench_parameters.update(BENCH_PARAMETERS)
     return d

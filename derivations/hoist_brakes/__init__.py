@@ -58,10 +58,14 @@ __all__ = ["BATCHED_BENCH_CASES", "ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODE
            "build", "hard_cases", "scene_report", "VALUE_UNITS"]
 
 
-def build() -> Derivation:
-    """Rebuild (1)–(7) and the printed numbers from the physics of Table 1's hoist."""
+def build(code: bool = True) -> Derivation:
+    """Rebuild (1)–(7) and the printed numbers from the physics of Table 1's hoist.
+
+    ``code=False`` leaves out the parts only code and the bench read (the audit's
+    build, ``Derivation.code``).
+    """
     d = Derivation(id=ID, paper=PAPER, title=TITLE, citation=CITATION,
-                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES, code=code)
     steps.drive(d)
     steps.rigid_drive(d)                 # (1)–(5)
     steps.coordinated_brakes(d)          # (6)–(7)
@@ -70,6 +74,8 @@ def build() -> Derivation:
     elastic.fig9_steps(d)                # Fig. 9
     d.published.extend(PUBLISHED)
     d.printed_items.extend(PRINTED_ITEMS)
+    if not code:
+        return d
     d.outputs.extend(outputs(d))
     d.tabulated.extend(tabulated())
     # The bench's values of the factors: Table 1's own (from the scene's data), φ5 = 1.5.

@@ -67,11 +67,15 @@ def published_formulas() -> list[PublishedFormula]:
             *published_optimum.PUBLISHED, *tables.PUBLISHED]
 
 
-def build() -> Derivation:
-    """Rebuild eqs (1)–(66) and Tables 1–2 from the two-mass model."""
+def build(code: bool = True) -> Derivation:
+    """Rebuild eqs (1)–(66) and Tables 1–2 from the two-mass model.
+
+    ``code=False`` leaves out the parts only code and the bench read (the audit's
+    build, ``Derivation.code``).
+    """
     d = Derivation(id=ID, paper=PAPER, title=TITLE,
                    citation="Yu. Chovnyuk, M. Dykteruk, S. Komotska (Kyiv)",
-                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES, code=code)
     eq1, eq2 = equations_of_motion(d)
     initial_conditions(d, eq2)
     duhamel_integral(d)
@@ -83,6 +87,7 @@ def build() -> Derivation:
     tables.derive_tables(d)
     d.published.extend(published_formulas())
     d.printed_items.extend(PRINTED_ITEMS)
-    d.outputs.extend(outputs.code_outputs(d, loads))
-    outputs.attach(d)   # ODE systems and bench parameters for `crane-sym bench`
+    if code:
+        d.outputs.extend(outputs.code_outputs(d, loads))
+        outputs.attach(d)   # ODE systems and bench parameters for `crane-sym bench`
     return d

@@ -65,10 +65,14 @@ __all__ = ["BATCHED_BENCH_CASES", "ID", "AUTHORS", "HANDOUT_WORDS", "HYBRID_MODE
            "build", "hard_cases", "scene_report", "VALUE_UNITS"]
 
 
-def build() -> Derivation:
-    """Rebuild Form 1 from the involute and the rack, Fig. 10, and (3)–(4)."""
+def build(code: bool = True) -> Derivation:
+    """Rebuild Form 1 from the involute and the rack, Fig. 10, and (3)–(4).
+
+    ``code=False`` leaves out the parts only code and the bench read (the audit's
+    build, ``Derivation.code``).
+    """
     d = Derivation(id=ID, paper=PAPER, title=TITLE, citation=CITATION,
-                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES, code=code)
     steps.involute_and_rack(d)
     steps.mesh(d)
     steps.tips(d)
@@ -81,6 +85,7 @@ def build() -> Derivation:
     steps_startup.table1_model(d)
     d.published.extend(PUBLISHED + PUBLISHED_LOADS + PUBLISHED_MEASURED)
     d.printed_items.extend(PRINTED_ITEMS)
-    d.outputs.extend(outputs(d))
-    d.tabulated.extend(tabulated())
+    if code:
+        d.outputs.extend(outputs(d))
+        d.tabulated.extend(tabulated())
     return d

@@ -44,10 +44,14 @@ __all__ = ["SAMPLED_BENCH_CASES", "SWEEP_BENCH_CASES", "ID", "AUTHORS", "LATEX_N
            "scene_report", "VALUE_UNITS"]
 
 
-def build() -> Derivation:
-    """Rebuild eqs (1)–(14) from the energies and forces of the two-mass model."""
+def build(code: bool = True) -> Derivation:
+    """Rebuild eqs (1)–(14) from the energies and forces of the two-mass model.
+
+    ``code=False`` leaves out the parts only code and the bench read (the audit's
+    build, ``Derivation.code``).
+    """
     d = Derivation(id=ID, paper=PAPER, title=TITLE, citation=CITATION,
-                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES)
+                   model=MODEL, symbols=SYMBOLS, latex_names=LATEX_NAMES, code=code)
     T, V, forces = steps.energies(d)
     eq1, eq2 = steps.equations_of_motion(d, T, V, forces)              # (1)–(3)
     rel = steps.relative_equation(d, eq1, eq2)                         # (4)
@@ -60,6 +64,7 @@ def build() -> Derivation:
 
     d.published.extend(PUBLISHED)
     d.printed_items.extend(PRINTED_ITEMS)
-    d.outputs.extend(outputs(d, sp.sqrt(rel.omega2)))
-    d.ode_systems.extend(ode_systems(eq1, eq2, rel))
+    if code:
+        d.outputs.extend(outputs(d, sp.sqrt(rel.omega2)))
+        d.ode_systems.extend(ode_systems(eq1, eq2, rel))
     return d
