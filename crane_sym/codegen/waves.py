@@ -84,7 +84,8 @@ def grouped(expr: sp.Expr, x: sp.Symbol) -> dict[sp.Expr, sp.Expr]:
         by_function[g] += c * key
     out: dict[sp.Expr, sp.Expr] = defaultdict(lambda: sp.Integer(0))
     for g, key in by_function.items():
-        out[sp.factor(key)] += g        # keys equal once factored: one function
+        # keys equal once factored: one function (a product of powers is its own factoring)
+        out[sp.factor(key) if key.has(sp.Add) else key] += g
     return {key: sp.expand(f) for key, f in out.items() if sp.expand(f) != 0}
 
 
