@@ -11,8 +11,8 @@ from crane_sym.audit.papers import (Slot, audit_paper, audit_papers,  # noqa: E4
                                     longest_first, schedule_text, workers)
 from crane_sym.audit.verdicts import audit  # noqa: E402
 from crane_sym.codegen.module import render_module  # noqa: E402
-from crane_sym.bench.audit_times import (CommandTime, PaperTimes, as_markdown,  # noqa: E402
-                                         paper_times)
+from crane_sym.bench.audit_times import (CommandTime, PaperTimes, ShareTimes,  # noqa: E402
+                                         as_markdown, paper_times, share_times)
 
 PAPERS = ["hoist_brakes", "travel_braking"]
 
@@ -79,6 +79,26 @@ def test_the_targets_table_says_met_and_not_met():
     assert "| `crane-sym generate --check` | 31.0 | ≤ 20 s | not met |" in text
     assert "| all | 5 | 3.00 | 3.00 | 1.00 | 14 / 1 | 7.00 |" in text
     assert "- worker 1: a 0.1–9.0 s\n- makespan 9.0 s" in text
+
+
+def test_generates_stages_are_tabled_with_each_papers_slowest_scene():
+    shares = [ShareTimes("a", (("build", 1.0), ("module", 2.0), ("scene x", 0.5),
+                               ("scene y", 1.5), ("machine reading", 0.25))),
+              ShareTimes("b", (("build", 2.0), ("machine reading", 0.5)))]
+    assert shares[0].seconds("scene") == 2.0 and shares[0].total == 5.25
+    text = as_markdown([], [], shares)
+    assert "## Where generate --check's time goes (one fresh process, paper by paper)" in text
+    assert "| a | 1.00 | 2.00 | 2.00 | 0.25 | y 1.50 | 5.25 |" in text
+    assert "| b | 2.00 | 0.00 | 0.00 | 0.50 | — | 2.50 |" in text
+    assert "| all | 3.00 | 2.00 | 2.00 | 0.75 |  | 7.75 |" in text
+    assert "generate --check's time" not in as_markdown([], [])
+
+
+def test_a_papers_share_of_generate_is_timed_in_a_fresh_process():
+    (share,) = share_times(["travel_braking"])
+    names = [name for name, _ in share.stages]
+    assert names == ["build", "module", "scene overhead_crane_50t", "machine reading"]
+    assert all(t > 0 for _, t in share.stages)
 
 
 def test_a_papers_stages_are_timed():

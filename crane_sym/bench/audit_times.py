@@ -12,14 +12,19 @@ each time it is met) and how many sides the Earley parser read afresh
 (``crane_sym.audit.parse_table``). The audit's schedule (which paper ran on
 which worker, from when to when, and the makespan) is the one its own
 ``--profile`` printed in that run. The machine is shared, so each
-measurement is quoted with the load average before and after it.
+measurement is quoted with the load average before and after it. Where
+``generate --check``'s time goes is each paper's share of it
+(``scenes.generate.paper_files``: its build, its module, each scene's module,
+the machine reading of its prints) timed in one fresh process.
 """
 from __future__ import annotations
 
+import multiprocessing
 import os
 import subprocess
 import sys
 import time
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from typing import Sequence
 
@@ -29,8 +34,8 @@ from crane_sym.audit.machine_read import machine_read
 from crane_sym.audit.verdicts import audit_formula
 from crane_sym.markdown import markdown_table
 
-__all__ = ["AUDIT_TARGET", "CHECK_TARGET", "CommandTime", "PaperTimes", "as_markdown",
-           "command_time", "paper_times"]
+__all__ = ["AUDIT_TARGET", "CHECK_TARGET", "CommandTime", "PaperTimes", "ShareTimes",
+           "as_markdown", "command_time", "paper_times", "share_times"]
 
 #: Seconds: the audit of every paper from a cold process, and ``generate --check``.
 AUDIT_TARGET = 20.0
@@ -53,6 +58,25 @@ class PaperTimes:
     def total(self) -> float:
         """Build, checks and machine reading together."""
         return self.build + self.checks + self.reading
+
+
+@dataclass(frozen=True)
+class ShareTimes:
+    """One paper's share of ``generate --check``, stage by stage, in seconds
+    (wall): ``build``, ``module``, ``scene <name>`` a scene, ``machine reading``."""
+
+    paper: str
+    stages: tuple[tuple[str, float], ...]
+
+    def seconds(self, stage: str) -> float:
+        """The seconds of the stages named ``stage`` or ``stage <name>``."""
+        return sum(t for name, t in self.stages
+                   if name == stage or name.startswith(stage + " "))
+
+    @property
+    def total(self) -> float:
+        """Every stage together."""
+        return sum(t for _, t in self.stages)
 
 
 @dataclass(frozen=True)
@@ -101,6 +125,35 @@ def paper_times(ids: Sequence[str]) -> list[PaperTimes]:
     return out
 
 
+def _shares(ids: list[str]) -> list[ShareTimes]:
+    # imported on use: the bench's other sections need no scene machinery
+    from crane_sym.scenes.generate import paper_files
+    out = []
+    for i in ids:
+        stages: dict[str, float] = {}
+        paper_files(i, stages)
+        out.append(ShareTimes(i, tuple(stages.items())))
+    return out
+
+
+def share_times(ids: Sequence[str], fresh: bool = True) -> list[ShareTimes]:
+    """Each paper's share of ``generate --check``, stage by stage, the papers
+    one after another in one process: a fresh one (spawned, so nothing is
+    built or cached before it), or this one.
+
+    Parameters
+    ----------
+    ids : sequence of str
+        The papers, by id.
+    fresh : bool, optional
+        In a spawned process (default), else in this one.
+    """
+    if not fresh:
+        return _shares(list(ids))
+    with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
+        return pool.submit(_shares, list(ids)).result()
+
+
 def command_time(args: Sequence[str], target: float) -> CommandTime:
     """``python -m crane_sym ARGS`` run in a fresh process (its output discarded),
     timed; RuntimeError naming the command if it fails.
@@ -127,8 +180,9 @@ def command_time(args: Sequence[str], target: float) -> CommandTime:
                        os.getloadavg()[0], schedule)
 
 
-def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes]) -> str:
-    """The targets table (met / not met) and the stages table.
+def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes],
+                shares: Sequence[ShareTimes] = ()) -> str:
+    """The targets table (met / not met) and the stages tables.
 
     Parameters
     ----------
@@ -136,6 +190,8 @@ def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes]) -
         The commands timed in fresh processes.
     papers : sequence of PaperTimes
         The stages of each paper's audit.
+    shares : sequence of ShareTimes, optional
+        The stages of each paper's share of ``generate --check``.
     """
     targets = markdown_table(
         ["command (fresh process)", "seconds", "target", "met", "load before / after"],
@@ -157,5 +213,20 @@ def as_markdown(commands: Sequence[CommandTime], papers: Sequence[PaperTimes]) -
     stages = markdown_table(
         ["paper", "formulas", "build s", "checks s", "machine reading s",
          "table look-ups / sides parsed afresh", "total s"], rows)
-    return "\n".join(["## Targets", "", targets, *schedules, "", "## Where an audit's time goes "
-                      "(one process, paper by paper)", "", stages])
+    parts = ["## Targets", "", targets, *schedules, "", "## Where an audit's time goes "
+             "(one process, paper by paper)", "", stages]
+    if shares:
+        def slowest(share: ShareTimes) -> str:
+            scenes = [(t, name[len("scene "):]) for name, t in share.stages
+                      if name.startswith("scene ")]
+            return f"{max(scenes)[1]} {max(scenes)[0]:.2f}" if scenes else "—"
+        kinds = ("build", "module", "scene", "machine reading")
+        rows = [[s.paper, *(f"{s.seconds(k):.2f}" for k in kinds), slowest(s), f"{s.total:.2f}"]
+                for s in shares]
+        rows.append(["all", *(f"{sum(s.seconds(k) for s in shares):.2f}" for k in kinds), "",
+                     f"{sum(s.total for s in shares):.2f}"])
+        parts += ["", "## Where generate --check's time goes (one fresh process, paper by "
+                  "paper)", "", markdown_table(["paper", "build s", "module s", "scenes s",
+                                                "machine reading s", "slowest scene s",
+                                                "total s"], rows)]
+    return "\n".join(parts)

@@ -241,11 +241,13 @@ def _bench_audit(out_dir: Path, show: bool) -> Path:
         check = at.command_time(["generate", "--check", "--quiet"], at.CHECK_TARGET)
     with say.task("an audit stage by stage, paper by paper"):
         papers = at.paper_times(registry.ids())
+    with say.task("generate's share of each paper stage by stage, in a fresh process"):
+        shares = at.share_times(registry.ids())
     text = "\n".join(["# Bench: the main job (audit and generate --check)", "",
                       f"Absolute times are this machine's ({_machine()}, {os.cpu_count()} "
                       f"cores, shared), from this one run ({time.perf_counter() - start:.0f} "
                       "s); the one-minute load average is given with each command.", "",
-                      at.as_markdown([audit, check], papers), ""])
+                      at.as_markdown([audit, check], papers, shares), ""])
     return _write_section(text, out_dir / "bench_audit.md", show)
 
 

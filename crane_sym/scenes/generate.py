@@ -10,6 +10,10 @@ are the same bytes either way, assembled in the order one process gives.
 """
 from __future__ import annotations
 
+import contextlib
+import time
+from typing import Iterator
+
 from crane_sym import progress, registry
 from crane_sym.audit.machine_read import parse_table_text, table_entries
 from crane_sym.audit.papers import in_processes, workers
@@ -26,7 +30,19 @@ def _scenes_of(paper: str) -> list[str]:
             if read_toml(scene_path(name))["scene"]["derivation"] == paper]
 
 
-def paper_files(paper: str) -> tuple[dict[str, str], dict[str, dict[str, str]], dict]:
+@contextlib.contextmanager
+def _stage(stages: dict[str, float] | None, name: str) -> Iterator[None]:
+    """Wall seconds of the block into ``stages[name]`` (nothing when None)."""
+    start = time.perf_counter()
+    try:
+        yield
+    finally:
+        if stages is not None:
+            stages[name] = time.perf_counter() - start
+
+
+def paper_files(paper: str, stages: dict[str, float] | None = None
+                ) -> tuple[dict[str, str], dict[str, dict[str, str]], dict]:
     """One paper's share of ``generated/``: its module (if it has outputs), each
     of its scenes' files by scene name, and its prints' entries in the table
     of parses.
@@ -35,19 +51,24 @@ def paper_files(paper: str) -> tuple[dict[str, str], dict[str, dict[str, str]], 
     ----------
     paper : str
         The paper's id.
+    stages : dict, optional
+        Filled with each stage's wall seconds, in order: ``build``, ``module``,
+        ``scene <name>`` for each scene, ``machine reading``
+        (``crane-sym bench --audit``).
     """
     say = progress.current()
-    with say.task(f"building {paper}"):
+    with say.task(f"building {paper}"), _stage(stages, "build"):
         d = registry.get(paper)
     own = {}
     if d.outputs:
-        with say.task(f"printing {paper}.py"):
+        with say.task(f"printing {paper}.py"), _stage(stages, "module"):
             own[f"{paper}.py"] = codegen.render_module(d)
     scenes = {}
     for name in _scenes_of(paper):
-        with say.task(f"specializing scene {name}"):
+        with say.task(f"specializing scene {name}"), _stage(stages, f"scene {name}"):
             scenes[name] = specialize.scene_files(name)
-    with say.task(f"reading the prints of {paper} by machine"):
+    with say.task(f"reading the prints of {paper} by machine"), \
+            _stage(stages, "machine reading"):
         entries = table_entries(d)
     return own, scenes, entries
 
