@@ -136,20 +136,16 @@ def _shares(ids: list[str]) -> list[ShareTimes]:
     return out
 
 
-def share_times(ids: Sequence[str], fresh: bool = True) -> list[ShareTimes]:
+def share_times(ids: Sequence[str]) -> list[ShareTimes]:
     """Each paper's share of ``generate --check``, stage by stage, the papers
-    one after another in one process: a fresh one (spawned, so nothing is
-    built or cached before it), or this one.
+    one after another in one fresh process (spawned, so nothing is built or
+    cached before it).
 
     Parameters
     ----------
     ids : sequence of str
         The papers, by id.
-    fresh : bool, optional
-        In a spawned process (default), else in this one.
     """
-    if not fresh:
-        return _shares(list(ids))
     with ProcessPoolExecutor(1, mp_context=multiprocessing.get_context("spawn")) as pool:
         return pool.submit(_shares, list(ids)).result()
 
